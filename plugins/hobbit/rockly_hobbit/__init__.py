@@ -1,0 +1,1 @@
+"""HOBBIT, the care robot: Rockly's built-in robot profile."""

@@ -1,0 +1,181 @@
+"""HOBBIT's commands, bound as ``robot`` in programs.
+
+They read the same whether generated from blocks or written by hand::
+
+    robot.gripper('open')
+    robot.move_arm('floor')
+    robot.gripper('close')
+    robot.move_arm('table')
+    robot.gripper('open')
+
+Every command waits until the robot has done it (a drive, an arm motion, a question on
+the tablet), except ``show_emotion``, ``look`` and ``show_info``, which return at once.
+"""
+import math
+
+from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotCommands
+
+HEAD_POSITIONS = (
+    "center_center", "up_center", "down_center", "center_right", "center_left", "up_right",
+    "up_left", "down_right", "down_left", "littledown_center", "to_grasp", "to_turntable", "search_table",
+)
+EMOTIONS = ("HAPPY", "VHAPPY", "LTIRED", "VTIRED", "CONCERNED", "SAD", "WONDERING", "NEUTRAL", "SLEEPING")
+ARM_POSITIONS = {
+    "candle": "MoveToCandle", "home": "MoveToHome", "floor": "MoveToPreGraspFloor",
+    "table": "MoveToPreGraspTable", "tray": "MoveToTray",
+}
+TURNTABLE_ACTIONS = {
+    "learn": "MoveToLearning", "store": "StoreTurntable",
+    "clockwise": "TurnTurntableCW", "counterclockwise": "TurnTurntableCCW",
+}
+GRIPPER_ACTIONS = {"open": "OpenGripper", "close": "CloseGripper"}
+VOLUME_CHANGES = {"louder": "F_LOUDER", "quieter": "F_QUIETER"}
+DIRECTIONS = {"forward": 1.0, "backward": -1.0}
+TURN_DIRECTIONS = {"left": 1.0, "right": -1.0}
+MESSAGE_TYPES = {"String": "std_msgs/String", "Bool": "std_msgs/Bool", "Float64": "std_msgs/Float64",
+                 "Int64": "std_msgs/Int64", "UInt64": "std_msgs/UInt64"}
+
+ARM_ACTION, ARM_ACTION_TYPE = "hobbit_arm", "hobbit_msgs/ArmServerAction"
+NAV_ACTION, NAV_ACTION_TYPE = "move_base", "move_base_msgs/MoveBaseAction"
+MMUI_SERVICE, MMUI_TYPE = "/MMUI", "hobbit_msgs/Request"
+MOTION_TIMEOUT = 120.0
+DIALOG_TIMEOUT = 60.0
+
+
+class Hobbit(RobotCommands):
+    """Commands for HOBBIT: drive, head and eyes, arm, gripper, turntable and tablet."""
+
+    # --- base -------------------------------------------------------------------------
+
+    def drive(self, distance, direction="forward"):
+        """Drive ``distance`` metres straight, ``'forward'`` or ``'backward'``; waits until done."""
+        metres = self.number(distance, "the distance") * self.choose(direction, DIRECTIONS, "direction")
+        self._discrete_motion(f"Move {metres:g}")
+
+    def turn(self, angle, direction="left"):
+        """Turn on the spot by ``angle`` degrees, ``'left'`` (counter-clockwise) or ``'right'``; waits."""
+        degrees = self.number(angle, "the angle") * self.choose(direction, TURN_DIRECTIONS, "direction")
+        self._discrete_motion(f"Turn {degrees:g}")
+
+    def navigate_to(self, x, y, heading=0):
+        """Drive to the map position (``x``, ``y``) in metres, then face ``heading`` degrees; waits."""
+        yaw = math.radians(self.number(heading, "the heading"))
+        self.navigate_to_pose(x, y, 0.0, 0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2))
+
+    def navigate_to_pose(self, x, y, z, qx, qy, qz, qw):
+        """Drive to a full pose in the ``map`` frame (position and orientation quaternion); waits."""
+        values = [self.number(value, name) for value, name in
+                  ((x, "x"), (y, "y"), (z, "z"), (qx, "quat x"), (qy, "quat y"), (qz, "quat z"), (qw, "quat w"))]
+        pose = {"header": {"frame_id": "map"},
+                "pose": {"position": dict(zip("xyz", values[:3])), "orientation": dict(zip("xyzw", values[3:]))}}
+        self._run_goal(NAV_ACTION, NAV_ACTION_TYPE, {"target_pose": pose}, "navigation")
+
+    def stop(self):
+        """Stop the base at once."""
+        self.backend.publish("/DiscreteMotionCmd", "std_msgs/String", {"data": "Stop"})
+        self.backend.publish("/cmd_vel", "geometry_msgs/Twist", {})
+
+    # --- head ---------------------------------------------------------------------------
+
+    def look(self, position):
+        """Move the head to a named position, e.g. ``'center_center'`` (straight) or ``'up_left'``."""
+        self.choose(position, dict.fromkeys(HEAD_POSITIONS), "head position")
+        self.backend.publish("/head/move", "std_msgs/String", {"data": position})
+
+    def show_emotion(self, emotion):
+        """Show an emotion in the eyes: HAPPY, VHAPPY, LTIRED, VTIRED, CONCERNED, SAD, WONDERING, NEUTRAL, SLEEPING."""
+        self.choose(emotion, dict.fromkeys(EMOTIONS), "emotion")
+        self.backend.publish("/head/emo", "std_msgs/String", {"data": emotion})
+
+    # --- arm ----------------------------------------------------------------------------
+
+    def move_arm(self, position):
+        """Move the arm to ``'candle'``, ``'home'``, ``'floor'``, ``'table'`` or ``'tray'``; waits."""
+        self._arm(self.choose(position, ARM_POSITIONS, "arm position"))
+
+    def turntable(self, action):
+        """Use the turntable: ``'learn'``, ``'store'``, ``'clockwise'`` or ``'counterclockwise'``; waits."""
+        self._arm(self.choose(action, TURNTABLE_ACTIONS, "turntable action"))
+
+    def gripper(self, action):
+        """``'open'`` or ``'close'`` the gripper; waits."""
+        self._arm(self.choose(action, GRIPPER_ACTIONS, "gripper action"))
+
+    def move_arm_to_joints(self, joints):
+        """Move the arm to six joint values (degrees as the arm server expects them); waits."""
+        values = list(joints) if isinstance(joints, (list, tuple)) else None
+        if values is None or len(values) != 6:
+            raise RobotCommandError(f"the arm needs exactly 6 joint values, not {joints!r}")
+        self._arm("MoveToJointValues", [[self.number(v, "a joint value") for v in values]])
+
+    # --- tablet -------------------------------------------------------------------------
+
+    def show_info(self, text):
+        """Show ``text`` on the tablet (and say it)."""
+        self._tablet("D_PLAIN", text)
+
+    def show_info_and_wait(self, text):
+        """Show ``text`` and wait until the user confirms it."""
+        self._tablet("D_OK", text)
+
+    def ask_yes_no(self, question) -> bool:
+        """Ask a yes/no question on the tablet; True when the user answers yes."""
+        return self._tablet("D_YES_NO", question).strip().lower() == "yes"
+
+    def ask_text(self, question) -> str:
+        """Ask the user to type a text on the tablet; returns what they typed."""
+        return self._tablet("D_NAME", question)
+
+    def call_sos(self):
+        """Start an emergency (SOS) call."""
+        self._tablet_function("F_CALLSOS")
+
+    def change_volume(self, change):
+        """Make the voice ``'louder'`` or ``'quieter'`` (10 % a step)."""
+        self._tablet_function(self.choose(change, VOLUME_CHANGES, "volume change"))
+
+    # --- general ------------------------------------------------------------------------
+
+    def wait(self, seconds):
+        """Do nothing for ``seconds`` seconds."""
+        self.backend.sleep(max(0.0, self.number(seconds, "the waiting time")))
+
+    def publish(self, topic, message_type, value):
+        """Publish ``value`` on ``topic`` as a std_msgs type: String, Bool, Float64, Int64 or UInt64."""
+        msg_type = self.choose(message_type, MESSAGE_TYPES, "message type")
+        self.backend.publish(str(topic), msg_type, {"data": value})
+
+    def call_service(self, name, service_type, parameters=None, timeout=DIALOG_TIMEOUT):
+        """Call any service by name and type with a dict of request fields; returns the response dict."""
+        return self.backend.call_service(str(name), str(service_type), dict(parameters or {}), timeout)
+
+    # --- helpers ------------------------------------------------------------------------
+
+    def _discrete_motion(self, command):
+        self.backend.publish("/DiscreteMotionCmd", "std_msgs/String", {"data": command})
+        self.backend.wait_for_message("/DiscreteMotionState", "std_msgs/String", MOTION_TIMEOUT)
+        while (self.backend.latest("/DiscreteMotionState", "std_msgs/String") or {}).get("data") != "Idle":
+            self.backend.wait_for_message("/DiscreteMotionState", "std_msgs/String", MOTION_TIMEOUT)
+
+    def _arm(self, command, joints=()):
+        goal = {"command": {"data": command}, "velocity": 0.0,
+                "joints": [{"joint_values": vector} for vector in joints]}
+        self._run_goal(ARM_ACTION, ARM_ACTION_TYPE, goal, f"arm command {command}")
+
+    def _run_goal(self, action, action_type, goal, what):
+        outcome = self.backend.send_goal(action, action_type, goal).wait(MOTION_TIMEOUT)
+        if outcome.status is not GoalStatus.SUCCEEDED:
+            raise RobotCommandError(f"the robot could not finish the {what} ({outcome.status.value})")
+        return outcome
+
+    def _tablet(self, dialog_type, text, timeout=DIALOG_TIMEOUT):
+        params = [{"name": "type", "value": dialog_type}, {"name": "text", "value": str(text)},
+                  {"name": "speak", "value": str(text)}, {"name": "Timeout", "value": f"{timeout:g}"}]
+        response = self.backend.call_service(
+            MMUI_SERVICE, MMUI_TYPE, {"sessionID": "0", "requestText": "", "params": params}, timeout + 5)
+        answers = [p.get("value", "") for p in response.get("params", []) if p.get("name") != "type"]
+        return answers[0] if answers else ""
+
+    def _tablet_function(self, function_type):
+        params = [{"name": "type", "value": function_type}]
+        self.backend.call_service(MMUI_SERVICE, MMUI_TYPE, {"sessionID": "0", "requestText": "", "params": params}, DIALOG_TIMEOUT)

@@ -1,0 +1,143 @@
+/**
+ * The editor page: Blockly plus one narrow JSON channel to Rockly's Python side.
+ *
+ * Python -> page: {call, id, args} on the bridge's `toPage` signal.
+ * Page -> Python: {reply: id, result | error}, or {event: 'hello' | 'changed' | 'error', ...}
+ * through the bridge's `fromPage` slot. Python queues its calls until `setup` has run.
+ */
+'use strict';
+
+(() => {
+  let bridge = null;
+  let workspace = null;
+  let loading = false;
+  let changeTimer = null;
+  const CHANGE_DEBOUNCE_MS = 60;
+
+  function send(message) {
+    bridge.fromPage(JSON.stringify(message));
+  }
+
+  window.addEventListener('error', (event) => {
+    if (bridge) send({event: 'error', message: String(event.message), source: event.filename, line: event.lineno});
+  });
+
+  // Rockly writes every string as a Python literal that keeps newlines and quotes exactly.
+  python.pythonGenerator.quote_ = RocklyPython.string;
+  python.pythonGenerator.multiline_quote_ = RocklyPython.string;
+
+  function loadScript(src) {
+    return new Promise((resolve, reject) => {
+      const script = document.createElement('script');
+      script.src = src;
+      script.onload = resolve;
+      script.onerror = () => reject(new Error('cannot load ' + src));
+      document.head.appendChild(script);
+    });
+  }
+
+  function state() {
+    return {
+      workspace: Blockly.serialization.workspaces.save(workspace),
+      python: python.pythonGenerator.workspaceToCode(workspace),
+    };
+  }
+
+  function reportChange(origin) {
+    clearTimeout(changeTimer);
+    changeTimer = null;
+    send({event: 'changed', origin, ...state()});
+  }
+
+  function onWorkspaceEvent(event) {
+    if (loading || event.isUiEvent) return;
+    clearTimeout(changeTimer);
+    changeTimer = setTimeout(() => reportChange('user'), CHANGE_DEBOUNCE_MS);
+  }
+
+  /** Replace the workspace without the load counting as a user's edit. */
+  function replaceWorkspace(fill) {
+    loading = true;
+    Blockly.Events.disable();
+    try {
+      workspace.clear();
+      fill();
+    } finally {
+      Blockly.Events.enable();
+      loading = false;
+    }
+    workspace.clearUndo();
+    workspace.scrollCenter();
+    reportChange('load');
+  }
+
+  /** Like replaceWorkspace, but a program that fails to load leaves the old one in place. */
+  function replaceOrRestore(fill) {
+    const previous = Blockly.serialization.workspaces.save(workspace);
+    try {
+      replaceWorkspace(fill);
+    } catch (error) {
+      replaceWorkspace(() => Blockly.serialization.workspaces.load(previous, workspace));
+      throw error;
+    }
+  }
+
+  const calls = {
+    async setup({language, profile, media}) {
+      if (language !== 'en') await loadScript('vendor/msg/' + language + '.js');
+      RocklyTemplates.install(profile.blocks);
+      workspace = Blockly.inject('workspace', {
+        toolbox: profile.toolbox,
+        media,
+        renderer: 'zelos',
+        grid: {spacing: 24, length: 3, colour: '#dfe3ea', snap: true},
+        zoom: {controls: true, wheel: true, startScale: 0.8, maxScale: 2.5, minScale: 0.3, scaleSpeed: 1.15},
+        trashcan: true,
+        move: {scrollbars: true, drag: true, wheel: false},
+        sounds: false,
+      });
+      workspace.addChangeListener(onWorkspaceEvent);
+      return {blockTypes: Object.keys(Blockly.Blocks)};
+    },
+    load({workspace: json}) {
+      replaceOrRestore(() => Blockly.serialization.workspaces.load(json, workspace));
+      return true;
+    },
+    importXml({xml}) {
+      replaceOrRestore(() => Blockly.Xml.domToWorkspace(Blockly.utils.xml.textToDom(xml), workspace));
+      return state();
+    },
+    clear() {
+      replaceWorkspace(() => {});
+      return true;
+    },
+    getState() {
+      return state();
+    },
+    undo() {
+      workspace.undo(false);
+      return true;
+    },
+    redo() {
+      workspace.undo(true);
+      return true;
+    },
+  };
+
+  async function onCall(text) {
+    const {call, id, args} = JSON.parse(text);
+    try {
+      if (!calls[call]) throw new Error('unknown call ' + call);
+      const result = await calls[call](args || {});
+      send({reply: id, result});
+    } catch (error) {
+      send({reply: id, error: String(error && error.message || error)});
+    }
+  }
+
+  new QWebChannel(qt.webChannelTransport, (channel) => {
+    bridge = channel.objects.rocklyBridge;
+    bridge.toPage.connect(onCall);
+    send({event: 'hello'});
+  });
+})();

@@ -1,0 +1,1 @@
+"""The Blockly editor page and its one JSON channel to Python (QWebChannel)."""

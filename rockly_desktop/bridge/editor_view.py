@@ -1,0 +1,153 @@
+"""The Blockly workspace in a QWebEngineView, driven through PageChannel.
+
+``start()`` (re)loads the page with a profile's blocks and toolbox in one language;
+``sig_ready`` fires when the workspace exists; ``sig_changed`` carries every edit
+(workspace JSON + generated Python). Other calls are queued until the page is ready.
+"""
+import logging
+
+from PySide6.QtCore import QCoreApplication, QEventLoop, QTimer, QUrl, Signal
+from PySide6.QtWebChannel import QWebChannel
+from PySide6.QtWebEngineCore import QWebEnginePage, QWebEngineProfile
+from PySide6.QtWebEngineWidgets import QWebEngineView
+
+from rockly_desktop.bridge.channel import PageChannel
+from rockly_desktop.bridge.offline import LocalOnlyInterceptor
+from rockly_desktop.core import paths
+
+log = logging.getLogger(__name__)
+
+_shared_profile = None
+
+
+def offline_web_profile() -> QWebEngineProfile:
+    """One off-the-record web profile per process that refuses all network requests.
+
+    It is owned by the application so that it outlives every page using it.
+    """
+    global _shared_profile
+    if _shared_profile is None:
+        _shared_profile = QWebEngineProfile(QCoreApplication.instance())
+        interceptor = LocalOnlyInterceptor(_shared_profile)
+        _shared_profile.setUrlRequestInterceptor(interceptor)
+        _shared_profile.interceptor = interceptor
+    return _shared_profile
+
+
+class EditorPage(QWebEnginePage):
+    """A page that reports JavaScript errors instead of hiding them in the console."""
+
+    sig_js_error = Signal(str)
+
+    def javaScriptConsoleMessage(self, level, message, line, source):  # noqa: N802 - Qt override
+        """Qt override: log page messages; errors also go to ``sig_js_error``."""
+        if level == QWebEnginePage.JavaScriptConsoleMessageLevel.ErrorMessageLevel:
+            log.error("editor page: %s (%s:%s)", message, source, line)
+            self.sig_js_error.emit(f"{message} ({source}:{line})")
+        else:
+            log.debug("editor page: %s", message)
+
+
+class EditorView(QWebEngineView):
+    """The block editor: a web view showing Blockly, with a small Python API."""
+
+    sig_ready = Signal()
+    sig_changed = Signal(dict, str, str)  # workspace JSON, generated Python, origin: "user" | "load"
+    sig_page_error = Signal(str)
+
+    def __init__(self, parent=None):
+        super().__init__(parent)
+        web_profile = offline_web_profile()
+        self.interceptor = web_profile.interceptor
+        page = EditorPage(web_profile, self)
+        page.sig_js_error.connect(self.sig_page_error)
+        self.setPage(page)
+        self.channel = PageChannel(self)
+        web_channel = QWebChannel(page)
+        web_channel.registerObject("rocklyBridge", self.channel)
+        page.setWebChannel(web_channel)
+        self.channel.sig_hello.connect(self._on_hello)
+        self.channel.sig_event.connect(self._on_event)
+        self._setup_args = None
+        self.known_block_types = frozenset()
+        self.workspace = {}
+        self.python = ""
+
+    @property
+    def is_ready(self) -> bool:
+        """True when the workspace exists and calls go straight to the page."""
+        return self.channel.is_open
+
+    def start(self, editor_config: dict, language: str):
+        """(Re)load the page for a profile's ``editor_config`` in ``language``."""
+        self._setup_args = {
+            "language": language,
+            "profile": editor_config,
+            "media": QUrl.fromLocalFile(str(paths.blockly_vendor_dir() / "media") + "/").toString(),
+        }
+        self.channel.reset()
+        self.load(QUrl.fromLocalFile(str(paths.editor_page())))
+
+    def call(self, name: str, args=None, callback=None):
+        """Run a page call when the page is ready; ``callback(result, error)`` gets the answer."""
+        self.channel.call(name, args, callback)
+
+    def call_blocking(self, name: str, args=None, timeout_ms: int = 15000):
+        """Run a page call and wait for its answer; raises RuntimeError on a page error or timeout."""
+        loop = QEventLoop()
+        answer = {}
+
+        def on_answer(result, error):
+            answer.update(result=result, error=error, done=True)
+            loop.quit()
+
+        self.call(name, args, on_answer)
+        QTimer.singleShot(timeout_ms, loop.quit)
+        if not answer:
+            loop.exec()
+        if not answer.get("done"):
+            raise RuntimeError(f"the editor did not answer '{name}' within {timeout_ms / 1000:.0f} s")
+        if answer["error"]:
+            raise RuntimeError(answer["error"])
+        return answer["result"]
+
+    def load_workspace(self, workspace: dict, callback=None):
+        """Show a workspace (Blockly JSON); the page keeps the old one if this one fails."""
+        self.call("load", {"workspace": workspace}, callback)
+
+    def import_xml(self, xml: str, callback=None):
+        """Show a first-Rockly Blockly XML program; the answer is the new state."""
+        self.call("importXml", {"xml": xml}, callback)
+
+    def clear(self):
+        """Empty the workspace."""
+        self.call("clear")
+
+    def undo(self):
+        """Undo the last edit."""
+        self.call("undo")
+
+    def redo(self):
+        """Redo the last undone edit."""
+        self.call("redo")
+
+    def _on_hello(self):
+        if self._setup_args is not None:
+            self.channel.call("setup", self._setup_args, self._on_setup, immediately=True)
+
+    def _on_setup(self, result, error):
+        if error:
+            self.sig_page_error.emit(f"the editor could not start: {error}")
+            return
+        self.known_block_types = frozenset(result["blockTypes"])
+        self.channel.open()
+        self.sig_ready.emit()
+
+    def _on_event(self, message: dict):
+        event = message.get("event")
+        if event == "changed":
+            self.workspace = message["workspace"]
+            self.python = message["python"]
+            self.sig_changed.emit(self.workspace, self.python, message.get("origin", "user"))
+        elif event == "error":
+            self.sig_page_error.emit(f"{message.get('message')} ({message.get('source')}:{message.get('line')})")

@@ -1,0 +1,1 @@
+"""Pure-Python heart of Rockly: program files, errors, paths. Standard library only."""

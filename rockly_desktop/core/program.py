@@ -1,0 +1,125 @@
+"""The ``.rockly`` program file: a small JSON envelope around Blockly's workspace JSON.
+
+A file looks like::
+
+    {"format": "rockly-program", "version": 1, "profile": "hobbit",
+     "workspace": { ...Blockly's JSON serialization... }}
+
+Reading never changes the file; writing is atomic (temp file, fsync, rename).
+"""
+import json
+import os
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from rockly_desktop.core.errors import ProgramFileError
+
+FORMAT_NAME = "rockly-program"
+FORMAT_VERSION = 1
+PROGRAM_SUFFIX = ".rockly"
+
+
+@dataclass
+class Program:
+    """A program: the robot profile it is written for and its Blockly workspace."""
+
+    profile_id: str
+    workspace: dict = field(default_factory=dict)
+
+    def to_json(self) -> str:
+        """The file's text, stable and readable in a diff."""
+        document = {
+            "format": FORMAT_NAME,
+            "version": FORMAT_VERSION,
+            "profile": self.profile_id,
+            "workspace": self.workspace,
+        }
+        return json.dumps(document, indent=1, ensure_ascii=False, sort_keys=False) + "\n"
+
+
+def parse_program(text: str, path="<text>") -> Program:
+    """Parse a ``.rockly`` document; raise ProgramFileError saying what is wrong."""
+    if not text.strip():
+        raise ProgramFileError(path, "the file is empty")
+    try:
+        document = json.loads(text)
+    except json.JSONDecodeError as error:
+        raise ProgramFileError(
+            path, f"this is not a complete Rockly program (broken JSON at line {error.lineno}, column {error.colno}: {error.msg})"
+        ) from None
+    if not isinstance(document, dict) or document.get("format") != FORMAT_NAME:
+        raise ProgramFileError(path, "this is not a Rockly program (no \"format\": \"rockly-program\")")
+    version = document.get("version")
+    if not isinstance(version, int) or isinstance(version, bool):
+        raise ProgramFileError(path, "the program has no valid format version")
+    if version > FORMAT_VERSION:
+        raise ProgramFileError(
+            path, f"the program was saved by a newer Rockly (format version {version}; this Rockly reads up to {FORMAT_VERSION})"
+        )
+    profile_id = document.get("profile")
+    if not isinstance(profile_id, str) or not profile_id:
+        raise ProgramFileError(path, "the program does not say which robot profile it is for (\"profile\")")
+    workspace = document.get("workspace")
+    if not isinstance(workspace, dict):
+        raise ProgramFileError(path, "the program has no workspace (\"workspace\" must be an object)")
+    return Program(profile_id=profile_id, workspace=workspace)
+
+
+def read_text_file(path) -> str:
+    """Read a UTF-8 text file, turning every failure into a ProgramFileError."""
+    path = Path(path)
+    try:
+        data = path.read_bytes()
+    except FileNotFoundError:
+        raise ProgramFileError(path, "the file does not exist") from None
+    except IsADirectoryError:
+        raise ProgramFileError(path, "this is a folder, not a file") from None
+    except OSError as error:
+        raise ProgramFileError(path, f"the file cannot be read ({error.strerror})") from None
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        raise ProgramFileError(path, "the file is not text (it is not UTF-8)") from None
+
+
+def load_program(path) -> Program:
+    """Read a ``.rockly`` file from disk."""
+    return parse_program(read_text_file(path), path)
+
+
+def write_text_atomically(path, text: str) -> None:
+    """Replace ``path`` with ``text`` so that readers see the old or the new file, never half.
+
+    The text goes to a temporary file in the same folder, is flushed to disk and then
+    renamed over the target. An existing file keeps its permission bits.
+    """
+    path = Path(path)
+    folder = path.parent if str(path.parent) else Path(".")
+    try:
+        mode = path.stat().st_mode & 0o777
+    except OSError:
+        mode = None
+    try:
+        handle, temp_name = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=folder)
+    except OSError as error:
+        raise ProgramFileError(path, f"cannot write in this folder ({error.strerror})") from None
+    try:
+        with os.fdopen(handle, "w", encoding="utf-8") as stream:
+            stream.write(text)
+            stream.flush()
+            os.fsync(stream.fileno())
+        if mode is not None:
+            os.chmod(temp_name, mode)
+        os.replace(temp_name, path)
+    except OSError as error:
+        try:
+            os.unlink(temp_name)
+        except OSError:
+            pass
+        raise ProgramFileError(path, f"the file could not be saved ({error.strerror})") from None
+
+
+def save_program(path, program: Program) -> None:
+    """Write a program to disk atomically."""
+    write_text_atomically(path, program.to_json())

@@ -1,0 +1,67 @@
+"""Which block types a program uses, from Blockly's JSON or the first Rockly's XML."""
+import xml.etree.ElementTree as ElementTree
+from collections import Counter
+
+from rockly_desktop.core.errors import ProgramFileError
+
+
+def block_types_in_workspace(workspace: dict) -> Counter:
+    """Count the block types in a Blockly JSON workspace (blocks, shadows, nested)."""
+    counts = Counter()
+    pending = list((workspace.get("blocks") or {}).get("blocks") or [])
+    while pending:
+        block = pending.pop()
+        if not isinstance(block, dict):
+            continue
+        counts[block.get("type")] += 1
+        for connection in list((block.get("inputs") or {}).values()) + [block.get("next")]:
+            if isinstance(connection, dict):
+                pending.extend(connection.get(kind) for kind in ("block", "shadow") if connection.get(kind))
+    return counts
+
+
+def _local_name(tag: str) -> str:
+    return tag.rsplit("}", 1)[-1]
+
+
+def parse_blockly_xml(text: str, path="<text>") -> ElementTree.Element:
+    """Parse Blockly XML as the first Rockly saved it; raise ProgramFileError if it is not."""
+    if not text.strip():
+        raise ProgramFileError(path, "the file is empty")
+    try:
+        root = ElementTree.fromstring(text)
+    except ElementTree.ParseError as error:
+        raise ProgramFileError(path, f"this is not valid Blockly XML ({error})") from None
+    if _local_name(root.tag) != "xml":
+        raise ProgramFileError(path, f"this is not a Blockly program (the top element is <{_local_name(root.tag)}>, not <xml>)")
+    return root
+
+
+def block_types_in_xml(root: ElementTree.Element) -> Counter:
+    """Count the block types in parsed Blockly XML."""
+    return Counter(
+        element.get("type") for element in root.iter() if _local_name(element.tag) in ("block", "shadow")
+    )
+
+
+def rename_legacy_fields(root: ElementTree.Element, aliases: dict) -> int:
+    """Rewrite old field names/values in place; return how many fields were changed.
+
+    ``aliases`` maps block type -> old field name -> {"field": new name, "values": {old: new}}.
+    """
+    changed = 0
+    for element in root.iter():
+        if _local_name(element.tag) not in ("block", "shadow"):
+            continue
+        for old_name, alias in aliases.get(element.get("type"), {}).items():
+            for child in element:
+                if _local_name(child.tag) == "field" and child.get("name") == old_name:
+                    child.set("name", alias["field"])
+                    child.text = alias.get("values", {}).get(child.text, child.text)
+                    changed += 1
+    return changed
+
+
+def xml_to_text(root: ElementTree.Element) -> str:
+    """Serialise parsed XML back to text for the editor page."""
+    return ElementTree.tostring(root, encoding="unicode")

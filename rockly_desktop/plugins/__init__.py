@@ -1,0 +1,1 @@
+"""Robot profiles: manifest schema, discovery and the registry (profile code is imported lazily)."""

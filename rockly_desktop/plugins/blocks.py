@@ -1,0 +1,127 @@
+"""A profile's block file: Blockly JSON definitions, each with its Python as a template.
+
+A block's Python is data, for example::
+
+    python:
+      code: "robot.drive({speed}, {direction})"
+      values: {direction: {"+": forward, "-": backward}}
+      defaults: {speed: 0}
+
+``{name}`` is replaced by the field ``name`` rendered as a safely quoted Python literal
+(after mapping through ``values``), by the value input ``name`` as a sub-expression
+(``defaults`` when empty, else ``None``), or by the statement input ``name`` as an
+indented body. The editor page turns these templates into Blockly generators.
+"""
+import re
+import string
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from rockly_desktop.core.errors import ManifestError
+from rockly_desktop.plugins.i18n import localize
+from rockly_desktop.plugins.yaml_files import read_yaml_mapping
+
+_BLOCK_TYPE = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
+_FIELD_ARGS = {"field_dropdown", "field_input", "field_number", "field_checkbox", "field_angle",
+               "field_colour", "field_multilinetext", "field_variable", "field_label_serializable"}
+_INPUT_KINDS = {"input_value": "value", "input_statement": "statement"}
+
+
+@dataclass(frozen=True)
+class BlockSpec:
+    """One block: its Blockly definition (texts may be per language) and its Python template."""
+
+    type: str
+    definition: dict
+    code: str
+    values: dict = field(default_factory=dict)
+    defaults: dict = field(default_factory=dict)
+    slots: dict = field(default_factory=dict)
+
+    @property
+    def is_expression(self) -> bool:
+        """True when the block plugs into an input (it has an output) instead of stacking."""
+        return "output" in self.definition
+
+    def editor_config(self, language: str) -> dict:
+        """What the editor page needs: the localized definition and the generator template."""
+        return {
+            "definition": localize(self.definition, language),
+            "python": {"code": self.code, "values": self.values, "defaults": self.defaults,
+                       "slots": self.slots, "expression": self.is_expression},
+        }
+
+
+def _slots_of(definition: dict) -> dict:
+    """Map each named field/input of a definition to 'field', 'value' or 'statement'."""
+    slots = {}
+    for key, args in definition.items():
+        if not (key.startswith("args") and isinstance(args, list)):
+            continue
+        for arg in args:
+            if not isinstance(arg, dict) or "name" not in arg:
+                continue
+            kind = arg.get("type")
+            if kind in _INPUT_KINDS:
+                slots[arg["name"]] = _INPUT_KINDS[kind]
+            elif kind in _FIELD_ARGS or (isinstance(kind, str) and kind.startswith("field_")):
+                slots[arg["name"]] = "field"
+    return slots
+
+
+def _placeholders(code: str, where: str, path: Path) -> set:
+    try:
+        return {name for _, name, _, _ in string.Formatter().parse(code) if name is not None}
+    except ValueError as error:
+        raise ManifestError(path, where, f"the template is broken ({error}); write a literal brace as '{{{{' or '}}}}'") from None
+
+
+def _parse_block(raw, index: int, path: Path) -> BlockSpec:
+    where = f"blocks[{index}]"
+    if not isinstance(raw, dict):
+        raise ManifestError(path, where, "must be a mapping with 'type', 'message0' and 'python'")
+    block_type = raw.get("type")
+    if not isinstance(block_type, str) or not _BLOCK_TYPE.match(block_type):
+        raise ManifestError(path, f"{where}.type", "must be a block type name (letters, digits, '_')")
+    where = f"blocks[{block_type}]"
+    if "message0" not in raw:
+        raise ManifestError(path, f"{where}.message0", "is missing: the text shown on the block")
+    python = raw.get("python")
+    if isinstance(python, str):
+        python = {"code": python}
+    if not isinstance(python, dict) or not isinstance(python.get("code"), str) or not python["code"].strip():
+        raise ManifestError(path, f"{where}.python", "is missing: the Python the block becomes ('code: ...')")
+    unknown_keys = set(python) - {"code", "values", "defaults"}
+    if unknown_keys:
+        raise ManifestError(path, f"{where}.python", f"unknown key(s) {sorted(unknown_keys)} (use code, values, defaults)")
+    definition = {key: value for key, value in raw.items() if key != "python"}
+    slots = _slots_of(definition)
+    for name in sorted(_placeholders(python["code"], f"{where}.python.code", path)):
+        if name not in slots:
+            raise ManifestError(path, f"{where}.python.code",
+                                f"uses {{{name}}}, but the block has no field or input named '{name}' (it has: {sorted(slots) or 'none'})")
+    values = python.get("values", {})
+    for name, mapping in values.items():
+        if slots.get(name) != "field" or not isinstance(mapping, dict):
+            raise ManifestError(path, f"{where}.python.values.{name}", "must map the values of a field of this block")
+    defaults = python.get("defaults", {})
+    for name in defaults:
+        if slots.get(name) != "value":
+            raise ManifestError(path, f"{where}.python.defaults.{name}", "names no value input of this block")
+    return BlockSpec(block_type, definition, python["code"], values, defaults, slots)
+
+
+def read_blocks(path: Path) -> tuple:
+    """Read and validate a profile's block file; return its BlockSpecs in file order."""
+    data = read_yaml_mapping(path)
+    raw_blocks = data.get("blocks")
+    if not isinstance(raw_blocks, list) or not raw_blocks:
+        raise ManifestError(path, "blocks", "must be a non-empty list of block definitions")
+    specs, seen = [], set()
+    for index, raw in enumerate(raw_blocks):
+        spec = _parse_block(raw, index, path)
+        if spec.type in seen:
+            raise ManifestError(path, f"blocks[{spec.type}]", "is defined twice")
+        seen.add(spec.type)
+        specs.append(spec)
+    return tuple(specs)

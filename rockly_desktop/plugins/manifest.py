@@ -1,0 +1,159 @@
+"""The profile manifest (``profile.yaml``): its schema and validation.
+
+The manifest is static data, read without importing any profile code. Every field is
+described once in ``MANIFEST_FIELDS``; validation and the written reference both come
+from that table, so they cannot drift apart.
+"""
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+from rockly_desktop.core.errors import ManifestError
+from rockly_desktop.plugins.i18n import SUPPORTED_LANGUAGES, is_localized
+from rockly_desktop.plugins.yaml_files import read_yaml_mapping
+
+MANIFEST_NAME = "profile.yaml"
+SCHEMA_VERSION = 1
+
+_IDENTIFIER = re.compile(r"^[a-z][a-z0-9_]{0,39}$")
+_VERSION = re.compile(r"^\d+(\.\d+){0,2}([.-][0-9A-Za-z.]+)?$")
+_IMPORT_PATH = re.compile(r"^[A-Za-z_][\w]*(\.[A-Za-z_]\w*)*:[A-Za-z_]\w*$")
+
+
+@dataclass(frozen=True)
+class FieldSpec:
+    """One manifest field: its name, kind of value, whether it is required, and what it means."""
+
+    name: str
+    kind: str
+    required: bool
+    description: str
+
+
+MANIFEST_FIELDS = (
+    FieldSpec("schema", "schema", True, f"Manifest format version; this Rockly reads {SCHEMA_VERSION}."),
+    FieldSpec("id", "identifier", True, "Unique profile id: lower-case letters, digits, '_'. Saved in programs."),
+    FieldSpec("name", "text", True, "Name shown to users (may be translated)."),
+    FieldSpec("version", "version", True, "The profile's own version, e.g. 1.0.0."),
+    FieldSpec("description", "text", False, "One sentence about the robot (may be translated)."),
+    FieldSpec("languages", "languages", False, "Languages the profile's texts are written in; English first."),
+    FieldSpec("blocks", "file", True, "YAML file with the block definitions and each block's Python template."),
+    FieldSpec("toolbox", "file", True, "YAML file with the toolbox categories (own and shared ones by name)."),
+    FieldSpec("python_path", "folder", False, "Folder added to the import path for the profile's modules (default: the profile folder)."),
+    FieldSpec("api", "import", True, "module:Class with the robot's Python commands, bound as `robot` in programs."),
+    FieldSpec("simulator", "import", False, "module:Class of the built-in simulated robot."),
+    FieldSpec("messages", "folder", False, "Folder with ROS definitions the robot needs: <package>/msg|srv|action/*."),
+    FieldSpec("safe_stop", "safe_stop", False, "What 'stop' means for this robot: a list of {publish: ...}, {cancel_goals: ACTION}."),
+    FieldSpec("state", "list", False, "Topics and fields the live state panels show."),
+    FieldSpec("legacy_fields", "legacy_fields", False, "Old field names of saved programs: {block_type: {old_field: {field: new, values: {old: new}}}}."),
+)
+
+_FIELDS_BY_NAME = {spec.name: spec for spec in MANIFEST_FIELDS}
+
+
+def _check_text(value):
+    if isinstance(value, str) and value.strip():
+        return None
+    if is_localized(value) and all(isinstance(text, str) and text.strip() for text in value.values()):
+        return None
+    return "must be a non-empty text, or one text per language with English ('en') present"
+
+
+def _check_relative_path(value, root: Path, want_dir: bool):
+    if not isinstance(value, str) or not value.strip():
+        return "must be a path relative to the profile folder"
+    target = (root / value).resolve()
+    if root.resolve() not in (target, *target.parents):
+        return "must stay inside the profile folder"
+    exists = target.is_dir() if want_dir else target.is_file()
+    if not exists:
+        return f"names '{value}', which does not exist in the profile folder"
+    return None
+
+
+def _check_safe_stop(value):
+    if not isinstance(value, list):
+        return "must be a list of actions"
+    for index, action in enumerate(value):
+        if not isinstance(action, dict) or len(action) != 1:
+            return f"item {index + 1} must be one action: {{publish: ...}} or {{cancel_goals: ACTION}}"
+        (kind, body), = action.items()
+        if kind == "publish":
+            if not isinstance(body, dict) or not {"topic", "type"} <= set(body):
+                return f"item {index + 1}: publish needs 'topic' and 'type' (and optional 'message')"
+        elif kind == "cancel_goals":
+            if not isinstance(body, str) or not body:
+                return f"item {index + 1}: cancel_goals needs an action name"
+        else:
+            return f"item {index + 1}: unknown action '{kind}' (use publish or cancel_goals)"
+    return None
+
+
+def _check_legacy_fields(value):
+    if not isinstance(value, dict):
+        return "must map block types to their old field names"
+    for block_type, fields in value.items():
+        if not isinstance(fields, dict):
+            return f"'{block_type}' must map old field names to {{field: NEW, values: {{...}}}}"
+        for old_name, alias in fields.items():
+            if not isinstance(alias, dict) or not isinstance(alias.get("field"), str):
+                return f"'{block_type}.{old_name}' needs 'field: NEW_NAME'"
+            if not isinstance(alias.get("values", {}), dict):
+                return f"'{block_type}.{old_name}.values' must map old values to new ones"
+    return None
+
+
+def _check(spec: FieldSpec, value, root: Path):
+    """Return a problem description for one field's value, or None if it is fine."""
+    kind = spec.kind
+    if kind == "schema":
+        if value != SCHEMA_VERSION:
+            return f"must be {SCHEMA_VERSION} (this Rockly does not read schema {value!r})"
+    elif kind == "identifier":
+        if not isinstance(value, str) or not _IDENTIFIER.match(value):
+            return "must be lower-case letters, digits and '_', starting with a letter (at most 40)"
+    elif kind == "text":
+        return _check_text(value)
+    elif kind == "version":
+        if not isinstance(value, str) or not _VERSION.match(value):
+            return "must be a version text like '1.0.0' (quote it in YAML)"
+    elif kind == "languages":
+        if not isinstance(value, list) or not value or value[0] != "en":
+            return "must be a list of language codes starting with 'en'"
+        unknown = [lang for lang in value if lang not in SUPPORTED_LANGUAGES]
+        if unknown:
+            return f"unsupported language(s) {unknown}; Rockly speaks {list(SUPPORTED_LANGUAGES)}"
+    elif kind == "file":
+        return _check_relative_path(value, root, want_dir=False)
+    elif kind == "folder":
+        return _check_relative_path(value, root, want_dir=True)
+    elif kind == "import":
+        if not isinstance(value, str) or not _IMPORT_PATH.match(value):
+            return "must be 'package.module:Name'"
+    elif kind == "list":
+        if not isinstance(value, list):
+            return "must be a list"
+    elif kind == "safe_stop":
+        return _check_safe_stop(value)
+    elif kind == "legacy_fields":
+        return _check_legacy_fields(value)
+    return None
+
+
+def read_manifest(profile_dir: Path) -> dict:
+    """Read and validate ``profile.yaml`` in ``profile_dir``; raise ManifestError on the first problem."""
+    path = profile_dir / MANIFEST_NAME
+    data = read_yaml_mapping(path)
+    for name in data:
+        if name not in _FIELDS_BY_NAME:
+            known = ", ".join(_FIELDS_BY_NAME)
+            raise ManifestError(path, name, f"unknown field (known fields: {known})")
+    for spec in MANIFEST_FIELDS:
+        if spec.name not in data:
+            if spec.required:
+                raise ManifestError(path, spec.name, f"is missing: {spec.description}")
+            continue
+        problem = _check(spec, data[spec.name], profile_dir)
+        if problem:
+            raise ManifestError(path, spec.name, problem)
+    return data

@@ -1,0 +1,85 @@
+"""A loaded robot profile: validated data, with its Python code imported only on demand."""
+import importlib
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+from rockly_desktop.core.errors import ManifestError
+from rockly_desktop.plugins.blocks import BlockSpec, read_blocks
+from rockly_desktop.plugins.i18n import localize
+from rockly_desktop.plugins.manifest import MANIFEST_NAME, read_manifest
+from rockly_desktop.plugins.toolbox import read_toolbox, toolbox_json
+
+
+@dataclass(frozen=True)
+class Profile:
+    """A robot profile read from its folder (manifest, blocks, toolbox); no code imported."""
+
+    id: str
+    name: object
+    version: str
+    root: Path
+    source: str
+    manifest: dict
+    blocks: tuple
+    toolbox_categories: list
+
+    def display_name(self, language: str = "en") -> str:
+        """The profile's name for people, in ``language``."""
+        return localize(self.name, language)
+
+    @property
+    def block_types(self) -> set:
+        """Block types this profile defines."""
+        return {spec.type for spec in self.blocks}
+
+    def block(self, block_type: str) -> BlockSpec:
+        """The BlockSpec of one of this profile's blocks."""
+        return next(spec for spec in self.blocks if spec.type == block_type)
+
+    @property
+    def legacy_fields(self) -> dict:
+        """Old field names/values of saved programs, per block type."""
+        return self.manifest.get("legacy_fields", {})
+
+    def editor_config(self, language: str) -> dict:
+        """Everything the editor page needs for this profile, texts in ``language``."""
+        return {
+            "profile": self.id,
+            "blocks": [spec.editor_config(language) for spec in self.blocks],
+            "toolbox": toolbox_json(self.toolbox_categories, language),
+        }
+
+    def load_object(self, field_name: str):
+        """Import and return the object a manifest field names as ``module:Name``.
+
+        The profile's python_path is put on ``sys.path`` first. Raises ManifestError
+        naming the field when the module or the name cannot be imported.
+        """
+        target = self.manifest.get(field_name)
+        if not target:
+            raise ManifestError(self.root / MANIFEST_NAME, field_name, "is not set in this profile")
+        module_name, attr = target.split(":")
+        code_dir = str((self.root / self.manifest.get("python_path", ".")).resolve())
+        if code_dir not in sys.path:
+            sys.path.insert(0, code_dir)
+        try:
+            module = importlib.import_module(module_name)
+            return getattr(module, attr)
+        except Exception as error:  # noqa: BLE001 - any failure in profile code is reported, not raised
+            raise ManifestError(self.root / MANIFEST_NAME, field_name,
+                                f"cannot import {target}: {type(error).__name__}: {error}") from error
+
+
+def load_profile(profile_dir: Path, shared_toolboxes: Path, source: str = "folder") -> Profile:
+    """Read and validate a whole profile folder; raise ManifestError on the first problem."""
+    profile_dir = Path(profile_dir)
+    if not (profile_dir / MANIFEST_NAME).is_file():
+        raise ManifestError(profile_dir / MANIFEST_NAME, None, "no profile manifest here (profile.yaml is missing)")
+    manifest = read_manifest(profile_dir)
+    blocks = read_blocks(profile_dir / manifest["blocks"])
+    categories = read_toolbox(profile_dir / manifest["toolbox"], shared_toolboxes, {spec.type for spec in blocks})
+    return Profile(
+        id=manifest["id"], name=manifest["name"], version=manifest["version"], root=profile_dir,
+        source=source, manifest=manifest, blocks=blocks, toolbox_categories=categories,
+    )

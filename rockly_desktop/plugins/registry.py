@@ -1,0 +1,93 @@
+"""Finding robot profiles: built-in folder, the user's folder, and Python entry points.
+
+One loader serves all three. A broken profile is recorded with its error and skipped;
+the others still load.
+"""
+import importlib.metadata
+import importlib.util
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from rockly_desktop.core import paths
+from rockly_desktop.core.errors import ManifestError
+from rockly_desktop.plugins.manifest import MANIFEST_NAME
+from rockly_desktop.plugins.profile import Profile, load_profile
+
+ENTRY_POINT_GROUP = "rockly.profiles"
+DEFAULT_PROFILE = "hobbit"
+
+
+@dataclass(frozen=True)
+class ProfileLocation:
+    """A folder that may hold a profile, and where it was found."""
+
+    folder: Path
+    source: str
+
+
+def _folders_in(parent: Path, source: str) -> list:
+    if not parent.is_dir():
+        return []
+    return [ProfileLocation(child, source) for child in sorted(parent.iterdir())
+            if child.is_dir() and (child / MANIFEST_NAME).exists()]
+
+
+def _entry_point_locations() -> list:
+    """Profiles installed as Python packages: the entry point names a package holding profile.yaml."""
+    locations = []
+    for entry_point in importlib.metadata.entry_points(group=ENTRY_POINT_GROUP):
+        spec = importlib.util.find_spec(entry_point.value.split(":")[0])
+        if spec and spec.submodule_search_locations:
+            locations.append(ProfileLocation(Path(list(spec.submodule_search_locations)[0]), f"entry point {entry_point.name}"))
+    return locations
+
+
+def discover_locations(extra_dirs=()) -> list:
+    """Every place a profile may be, in priority order (built-in first)."""
+    locations = _folders_in(paths.builtin_profiles_dir(), "built-in")
+    locations += _folders_in(paths.user_profiles_dir(), "user")
+    for folder in extra_dirs:
+        locations += _folders_in(Path(folder), "extra")
+    return locations + _entry_point_locations()
+
+
+@dataclass
+class ProfileRegistry:
+    """The installed profiles that loaded, and the errors of those that did not."""
+
+    profiles: dict = field(default_factory=dict)
+    errors: list = field(default_factory=list)
+
+    @classmethod
+    def discover(cls, extra_dirs=()) -> "ProfileRegistry":
+        """Load every profile found; a broken or duplicate one is recorded and skipped."""
+        registry = cls()
+        shared = paths.shared_toolboxes_dir()
+        for location in discover_locations(extra_dirs):
+            try:
+                profile = load_profile(location.folder, shared, location.source)
+            except ManifestError as error:
+                registry.errors.append(error)
+                continue
+            if profile.id in registry.profiles:
+                first = registry.profiles[profile.id]
+                registry.errors.append(ManifestError(
+                    location.folder / MANIFEST_NAME, "id",
+                    f"'{profile.id}' is already provided by {first.root} ({first.source}); this copy is ignored"))
+                continue
+            registry.profiles[profile.id] = profile
+        return registry
+
+    def get(self, profile_id: str) -> Profile:
+        """The profile with this id; KeyError if it is not installed."""
+        return self.profiles[profile_id]
+
+    def default(self) -> Profile:
+        """The profile Rockly starts with: HOBBIT when present, else the first one."""
+        if DEFAULT_PROFILE in self.profiles:
+            return self.profiles[DEFAULT_PROFILE]
+        return next(iter(self.profiles.values()))
+
+    def profile_of_block(self, block_type: str):
+        """The installed profile that defines ``block_type``, or None."""
+        return next((profile for profile in self.profiles.values() if block_type in profile.block_types), None)

@@ -1,0 +1,86 @@
+"""Toolboxes: a profile's own categories plus shared ones from ``toolboxes/`` by name.
+
+A profile's ``toolbox.yaml``::
+
+    categories:
+      - name: {en: Drive, de: Fahren}
+        colour: "#4C97FF"
+        blocks:
+          - hobbit_move                       # a block by type
+          - type: hobbit_turn                 # or with Blockly toolbox JSON extras
+            inputs: {angle: {shadow: {type: math_number, fields: {NUM: 90}}}}
+      - shared: logic                         # toolboxes/logic.yaml
+
+A shared category file has ``name``, ``colour`` and either ``blocks`` or ``custom``
+(Blockly's dynamic VARIABLE / PROCEDURE categories).
+"""
+from pathlib import Path
+
+from rockly_desktop.core.errors import ManifestError
+from rockly_desktop.plugins.i18n import localize
+from rockly_desktop.plugins.yaml_files import read_yaml_mapping
+
+
+def _block_entry(item, path: Path, where: str) -> dict:
+    if isinstance(item, str):
+        return {"kind": "block", "type": item}
+    if isinstance(item, dict) and isinstance(item.get("type"), str):
+        return {"kind": "block", **item}
+    raise ManifestError(path, where, "must be a block type, or a mapping with 'type'")
+
+
+def _category(raw, path: Path, where: str) -> dict:
+    if not isinstance(raw, dict) or "name" not in raw:
+        raise ManifestError(path, where, "a category needs a 'name'")
+    category = {"kind": "category", "name": raw["name"]}
+    if "colour" in raw:
+        category["colour"] = str(raw["colour"])
+    if "custom" in raw:
+        category["custom"] = raw["custom"]
+        return category
+    blocks = raw.get("blocks")
+    if not isinstance(blocks, list) or not blocks:
+        raise ManifestError(path, f"{where}.blocks", "must list the blocks of the category")
+    category["contents"] = [_block_entry(item, path, f"{where}.blocks[{index}]") for index, item in enumerate(blocks)]
+    return category
+
+
+def read_shared_category(name: str, folder: Path) -> dict:
+    """Read ``toolboxes/NAME.yaml`` as a toolbox category."""
+    path = folder / f"{name}.yaml"
+    return _category(read_yaml_mapping(path), path, "category")
+
+
+def shared_category_names(folder: Path) -> list:
+    """Names of the shared categories available to every profile."""
+    return sorted(path.stem for path in folder.glob("*.yaml"))
+
+
+def read_toolbox(path: Path, shared_folder: Path, profile_block_types: set) -> list:
+    """Read and validate a profile's toolbox; shared categories are resolved here."""
+    data = read_yaml_mapping(path)
+    raw_categories = data.get("categories")
+    if not isinstance(raw_categories, list) or not raw_categories:
+        raise ManifestError(path, "categories", "must be a non-empty list of categories")
+    available = shared_category_names(shared_folder)
+    categories, shared_types = [], set()
+    for index, raw in enumerate(raw_categories):
+        where = f"categories[{index}]"
+        if isinstance(raw, dict) and "shared" in raw:
+            if raw["shared"] not in available:
+                raise ManifestError(path, f"{where}.shared", f"no shared category '{raw['shared']}' (there are: {', '.join(available)})")
+            category = read_shared_category(raw["shared"], shared_folder)
+            shared_types |= {entry["type"] for entry in category.get("contents", [])}
+        else:
+            category = _category(raw, path, where)
+            for position, entry in enumerate(category.get("contents", [])):
+                if entry["type"] not in profile_block_types:
+                    raise ManifestError(path, f"{where}.blocks[{position}]",
+                                        f"block '{entry['type']}' is not defined in the profile's block file")
+        categories.append(category)
+    return categories
+
+
+def toolbox_json(categories: list, language: str) -> dict:
+    """Blockly's category toolbox JSON with texts in ``language``."""
+    return {"kind": "categoryToolbox", "contents": localize(categories, language)}

@@ -1,0 +1,33 @@
+"""The base of every profile's robot commands (the object bound as ``robot`` in programs)."""
+from rockly_desktop.core.errors import RobotCommandError
+
+
+class RobotCommands:
+    """Commands of one kind of robot, written against a RobotBackend.
+
+    Subclasses add methods that read like what a person wants the robot to do
+    (``robot.gripper('open')``) and translate them into topics, services and actions.
+    """
+
+    def __init__(self, backend):
+        self._backend = backend
+
+    @property
+    def backend(self):
+        """The RobotBackend these commands drive."""
+        return self._backend
+
+    @staticmethod
+    def choose(value, choices, what: str):
+        """Return ``choices[value]``; a value not in ``choices`` raises a RobotCommandError listing them."""
+        if value not in choices:
+            listed = ", ".join(repr(choice) for choice in choices)
+            raise RobotCommandError(f"unknown {what} {value!r}; use one of {listed}")
+        return choices[value]
+
+    @staticmethod
+    def number(value, what: str) -> float:
+        """``value`` as a float; anything else raises a RobotCommandError naming ``what``."""
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise RobotCommandError(f"{what} must be a number, not {value!r}")
+        return float(value)

@@ -1,0 +1,67 @@
+"""What a robot backend offers: ROS-shaped topics, services and actions, by ROS names.
+
+Messages are plain dicts shaped like the ROS message (``{"linear": {"x": 0.2}}`` for a
+``geometry_msgs/Twist``); missing fields take the message type's defaults. The
+simulator and the ROS 1 backend implement the same interface, so a profile's commands
+run unchanged on both.
+"""
+from abc import ABC, abstractmethod
+from dataclasses import dataclass, field
+from enum import Enum
+
+
+class GoalStatus(Enum):
+    """How an action goal ended (actionlib's terminal states, simplified)."""
+
+    SUCCEEDED = "succeeded"
+    ABORTED = "aborted"
+    PREEMPTED = "preempted"
+    REJECTED = "rejected"
+
+
+@dataclass(frozen=True)
+class GoalOutcome:
+    """The end of an action goal: its status and the result message."""
+
+    status: GoalStatus
+    result: dict = field(default_factory=dict)
+
+
+class GoalHandle(ABC):
+    """A goal that was sent to an action server."""
+
+    @abstractmethod
+    def wait(self, timeout: float) -> GoalOutcome:
+        """Wait (interruptibly) for the goal to end; raise RobotTimeout after ``timeout`` s."""
+
+    @abstractmethod
+    def cancel(self) -> None:
+        """Ask the action server to stop working on this goal."""
+
+
+class RobotBackend(ABC):
+    """The robot as a program sees it. Every wait is interruptible by a stop request."""
+
+    @abstractmethod
+    def publish(self, topic: str, msg_type: str, message: dict) -> None:
+        """Publish ``message`` (a dict shaped like ``msg_type``) on ``topic``."""
+
+    @abstractmethod
+    def latest(self, topic: str, msg_type: str):
+        """The last message seen on ``topic`` as a dict, or None if none arrived yet."""
+
+    @abstractmethod
+    def wait_for_message(self, topic: str, msg_type: str, timeout: float) -> dict:
+        """Wait for the next message on ``topic``; raise RobotTimeout after ``timeout`` s."""
+
+    @abstractmethod
+    def call_service(self, name: str, srv_type: str, request: dict, timeout: float) -> dict:
+        """Call a service and return its response as a dict; raise RobotTimeout or RobotCommandError."""
+
+    @abstractmethod
+    def send_goal(self, action: str, action_type: str, goal: dict, feedback=None) -> GoalHandle:
+        """Send a goal to an action server; ``feedback(dict)`` is called for each feedback."""
+
+    @abstractmethod
+    def sleep(self, seconds: float) -> None:
+        """Wait ``seconds``; returns early only by raising when the program is stopped."""

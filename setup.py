@@ -1,0 +1,26 @@
+"""Install the editor page, shared toolboxes and built-in profiles as data files.
+
+Metadata lives in pyproject.toml; this file only lists the data folders, which
+setuptools cannot glob recursively on its own. They land in
+``<prefix>/share/rockly/`` where ``rockly_desktop.core.paths`` finds them.
+"""
+import os
+
+from setuptools import setup
+
+DATA_FOLDERS = ("resources", "toolboxes", "plugins")
+
+
+def data_files():
+    """Return (target folder, [files]) pairs for every file below DATA_FOLDERS."""
+    pairs = []
+    for top in DATA_FOLDERS:
+        for folder, dirs, files in os.walk(top):
+            dirs[:] = [d for d in dirs if d != "__pycache__"]
+            wanted = [os.path.join(folder, f) for f in files if not f.endswith(".pyc")]
+            if wanted:
+                pairs.append((os.path.join("share", "rockly", folder), wanted))
+    return pairs
+
+
+setup(data_files=data_files())
