@@ -25,21 +25,15 @@ const RocklyTemplates = (() => {
   /** The Python literal for a field's value: mapped through `values`, typed by the field. */
   function fieldLiteral(block, name, spec) {
     const field = block.getField(name);
-    let value = field.getValue();
+    const value = field.getValue();
     const mapping = spec.values[name];
     if (mapping && Object.prototype.hasOwnProperty.call(mapping, value)) {
       return RocklyPython.literal(mapping[value]);
     }
-    if (field instanceof Blockly.FieldNumber || field instanceof Blockly.FieldAngle) {
-      return RocklyPython.literal(Number(value));
-    }
+    if (field instanceof Blockly.FieldNumber) return RocklyPython.literal(Number(value));
     if (field instanceof Blockly.FieldCheckbox) return value === 'TRUE' ? 'True' : 'False';
-    if (field instanceof Blockly.FieldVariable) return generatorVariableName(block, field);
+    if (field instanceof Blockly.FieldVariable) return python.pythonGenerator.getVariableName(value);
     return RocklyPython.string(value);
-  }
-
-  function generatorVariableName(block, field) {
-    return python.pythonGenerator.getVariableName(field.getValue());
   }
 
   /** A Blockly generator function for one templated block. */

@@ -33,8 +33,10 @@ class UnknownBlocksError(RocklyError):
         self.profile_id = profile_id
         self.profile_installed = profile_installed
         listed = ", ".join(self.block_types)
-        if profile_installed:
-            hint = f"The robot profile '{profile_id}' does not provide them."
+        if profile_id is None:
+            hint = "Install the robot profile that provides them, then open the program again."
+        elif profile_installed:
+            hint = f"The robot profile '{profile_id}' does not provide them; a newer version of it may."
         else:
             hint = f"It was made for the robot profile '{profile_id}', which is not installed."
         super().__init__(f"This program uses blocks that no installed profile knows: {listed}. {hint}")

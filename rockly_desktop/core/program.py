@@ -48,10 +48,12 @@ def parse_program(text: str, path="<text>") -> Program:
         raise ProgramFileError(
             path, f"this is not a complete Rockly program (broken JSON at line {error.lineno}, column {error.colno}: {error.msg})"
         ) from None
+    except RecursionError:
+        raise ProgramFileError(path, "this is not a Rockly program (the JSON is nested too deeply)") from None
     if not isinstance(document, dict) or document.get("format") != FORMAT_NAME:
         raise ProgramFileError(path, "this is not a Rockly program (no \"format\": \"rockly-program\")")
     version = document.get("version")
-    if not isinstance(version, int) or isinstance(version, bool):
+    if not isinstance(version, int) or isinstance(version, bool) or version < 1:
         raise ProgramFileError(path, "the program has no valid format version")
     if version > FORMAT_VERSION:
         raise ProgramFileError(
@@ -97,27 +99,39 @@ def write_text_atomically(path, text: str) -> None:
     path = Path(path)
     folder = path.parent if str(path.parent) else Path(".")
     try:
+        data = text.encode("utf-8")
+    except UnicodeEncodeError as error:
+        raise ProgramFileError(path, f"the program contains text that cannot be saved ({error.reason})") from None
+    try:
         mode = path.stat().st_mode & 0o777
     except OSError:
-        mode = None
+        mode = _new_file_mode()
     try:
         handle, temp_name = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=folder)
     except OSError as error:
         raise ProgramFileError(path, f"cannot write in this folder ({error.strerror})") from None
     try:
-        with os.fdopen(handle, "w", encoding="utf-8") as stream:
-            stream.write(text)
+        with os.fdopen(handle, "wb") as stream:
+            stream.write(data)
             stream.flush()
             os.fsync(stream.fileno())
-        if mode is not None:
-            os.chmod(temp_name, mode)
+        os.chmod(temp_name, mode)
         os.replace(temp_name, path)
-    except OSError as error:
+    except BaseException as error:
         try:
             os.unlink(temp_name)
         except OSError:
             pass
-        raise ProgramFileError(path, f"the file could not be saved ({error.strerror})") from None
+        if isinstance(error, OSError):
+            raise ProgramFileError(path, f"the file could not be saved ({error.strerror})") from None
+        raise
+
+
+def _new_file_mode() -> int:
+    """The permission bits ``open()`` gives a new file: 0o666 less the umask (mkstemp's 0o600 is private)."""
+    umask = os.umask(0o022)
+    os.umask(umask)
+    return 0o666 & ~umask
 
 
 def save_program(path, program: Program) -> None:

@@ -13,7 +13,7 @@ def block_types_in_workspace(workspace: dict) -> Counter:
         block = pending.pop()
         if not isinstance(block, dict):
             continue
-        counts[block.get("type")] += 1
+        counts[block.get("type") or "(block without a type)"] += 1
         for connection in list((block.get("inputs") or {}).values()) + [block.get("next")]:
             if isinstance(connection, dict):
                 pending.extend(connection.get(kind) for kind in ("block", "shadow") if connection.get(kind))
@@ -40,7 +40,7 @@ def parse_blockly_xml(text: str, path="<text>") -> ElementTree.Element:
 def block_types_in_xml(root: ElementTree.Element) -> Counter:
     """Count the block types in parsed Blockly XML."""
     return Counter(
-        element.get("type") for element in root.iter() if _local_name(element.tag) in ("block", "shadow")
+        element.get("type") or "(block without a type)" for element in root.iter() if _local_name(element.tag) in ("block", "shadow")
     )
 
 

@@ -1,0 +1,52 @@
+"""The composition root: builds the Qt application, the profiles and the main window."""
+import os
+import sys
+
+from rockly_desktop.core import paths
+
+
+def prepare_qt_environment():
+    """Settings QtWebEngine needs before the QApplication exists.
+
+    Chromium's sandbox cannot start as root (fairs often run kiosk laptops as root),
+    so it is disabled there; everywhere else the sandbox stays on.
+    """
+    if hasattr(os, "geteuid") and os.geteuid() == 0:
+        os.environ.setdefault("QTWEBENGINE_DISABLE_SANDBOX", "1")
+
+
+def create_application(argv=None):
+    """The QApplication (created once), with Rockly's names and icon."""
+    prepare_qt_environment()
+    from PySide6.QtCore import QCoreApplication, Qt
+    from PySide6.QtGui import QIcon
+    from PySide6.QtWidgets import QApplication
+
+    app = QApplication.instance()
+    if app is None:
+        QCoreApplication.setAttribute(Qt.ApplicationAttribute.AA_ShareOpenGLContexts)
+        app = QApplication(list(argv or sys.argv[:1]))
+        app.setOrganizationName("Rockly")
+        app.setApplicationName("Rockly")
+        app.setDesktopFileName("rockly")
+        app.setWindowIcon(QIcon(str(paths.data_root() / "resources" / "icons" / "rockly.svg")))
+    return app
+
+
+def build_main_window(settings_path=None, extra_profile_dirs=()):
+    """The main window with every installed profile; ``settings_path`` picks a settings file."""
+    from rockly_desktop.plugins.registry import ProfileRegistry
+    from rockly_desktop.ui.main_window import MainWindow
+    from rockly_desktop.ui.settings import AppSettings
+
+    registry = ProfileRegistry.discover(extra_profile_dirs)
+    return MainWindow(registry, AppSettings(settings_path))
+
+
+def run_gui(open_path=None) -> int:
+    """Start Rockly's window and run until it closes."""
+    app = create_application()
+    window = build_main_window()
+    window.show()
+    window.start(open_path)
+    return app.exec()

@@ -1,0 +1,42 @@
+"""The block editor without a window: Blockly's own generator for command-line use."""
+from PySide6.QtCore import QEventLoop, QTimer
+
+from rockly_desktop.bridge.editor_view import EditorView
+
+
+class HeadlessEditor:
+    """An EditorView that is never shown, driven synchronously."""
+
+    def __init__(self, language: str = "en"):
+        self.language = language
+        self.view = EditorView()
+        self.profile = None
+        self.builtin_block_types = frozenset()
+        self._errors = []
+        self.view.sig_page_error.connect(self._errors.append)
+
+    def use_profile(self, profile, timeout_ms: int = 30000):
+        """Load the editor page with ``profile``'s blocks and wait until it is ready."""
+        if self.profile is not None and profile.id == self.profile.id:
+            return
+        loop = QEventLoop()
+        self.view.sig_ready.connect(loop.quit)
+        self.view.sig_page_error.connect(loop.quit)
+        QTimer.singleShot(timeout_ms, loop.quit)
+        self.view.start(profile.editor_config(self.language), self.language)
+        loop.exec()
+        self.view.sig_ready.disconnect(loop.quit)
+        self.view.sig_page_error.disconnect(loop.quit)
+        if not self.view.is_ready:
+            detail = self._errors[-1] if self._errors else f"no answer within {timeout_ms / 1000:.0f} s"
+            raise RuntimeError(f"the block editor did not start: {detail}")
+        self.profile = profile
+        self.builtin_block_types = frozenset(self.view.known_block_types - profile.block_types)
+
+    def python_for(self, program) -> str:
+        """The Python generated for a checked ProgramToOpen (its profile must be in use)."""
+        self.use_profile(program.profile)
+        if program.is_import:
+            return self.view.call_blocking("importXml", {"xml": program.xml})["python"]
+        self.view.call_blocking("load", {"workspace": program.workspace})
+        return self.view.call_blocking("getState")["python"]

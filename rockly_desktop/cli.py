@@ -1,0 +1,121 @@
+"""The ``rockly`` command: the window, and headless tools for profiles and programs.
+
+    rockly [PROGRAM]                    open the editor (optionally with a program)
+    rockly plugins list                 show installed robot profiles and broken ones
+    rockly plugins validate PATH        check one profile folder
+    rockly export PROGRAM -o OUT.py     write the Python generated from a program
+"""
+import argparse
+import os
+import sys
+from pathlib import Path
+
+from rockly_desktop import __version__
+
+SUBCOMMANDS = ("plugins", "export")
+
+
+def _tool_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="rockly", description="Program ROS robots with blocks.")
+    parser.add_argument("--version", action="version", version=f"rockly {__version__}")
+    commands = parser.add_subparsers(dest="command", required=True)
+
+    plugins = commands.add_parser("plugins", help="robot profiles")
+    plugin_commands = plugins.add_subparsers(dest="plugin_command", required=True)
+    plugin_commands.add_parser("list", help="list installed robot profiles")
+    validate = plugin_commands.add_parser("validate", help="check a robot profile folder")
+    validate.add_argument("path", type=Path)
+
+    export = commands.add_parser("export", help="write the Python generated from a program")
+    export.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
+    export.add_argument("-o", "--output", type=Path, required=True, help="the .py file to write")
+    export.add_argument("--language", default="en", choices=("en", "de"))
+    return parser
+
+
+def _gui_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="rockly", description="Program ROS robots with blocks.",
+                                     epilog="Tools: rockly plugins list | rockly plugins validate PATH | "
+                                            "rockly export PROGRAM -o OUT.py")
+    parser.add_argument("--version", action="version", version=f"rockly {__version__}")
+    parser.add_argument("program", nargs="?", type=Path, help="a program to open")
+    return parser
+
+
+def _plugins_list() -> int:
+    from rockly_desktop.plugins.registry import ProfileRegistry
+
+    registry = ProfileRegistry.discover()
+    for profile in registry.profiles.values():
+        print(f"{profile.id:<14} {profile.display_name():<20} {profile.version:<10} {profile.source:<12} {profile.root}")
+    if not registry.profiles:
+        print("No robot profiles are installed.")
+    for error in registry.errors:
+        print(f"BROKEN  {error}", file=sys.stderr)
+    return 1 if registry.errors else 0
+
+
+def _plugins_validate(path: Path) -> int:
+    from rockly_desktop.core import paths
+    from rockly_desktop.core.errors import ManifestError
+    from rockly_desktop.plugins.checks import check_commands
+    from rockly_desktop.plugins.profile import load_profile
+
+    try:
+        profile = load_profile(path, paths.shared_toolboxes_dir())
+        check_commands(profile)
+    except ManifestError as error:
+        print(f"INVALID  {error}", file=sys.stderr)
+        return 1
+    print(f"OK  {profile.id} {profile.version}: {len(profile.blocks)} blocks, "
+          f"{len(profile.toolbox_categories)} toolbox categories, commands {profile.manifest['api']}")
+    return 0
+
+
+def _export(program_path: Path, output: Path, language: str) -> int:
+    os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+    from rockly_desktop.app import create_application
+    from rockly_desktop.bridge.headless import HeadlessEditor
+    from rockly_desktop.core.errors import RocklyError
+    from rockly_desktop.core.export import python_module_text
+    from rockly_desktop.core.program import write_text_atomically
+    from rockly_desktop.plugins.opening import read_program_to_open
+    from rockly_desktop.plugins.registry import ProfileRegistry
+
+    create_application()
+    registry = ProfileRegistry.discover()
+    if not registry.profiles:
+        print("rockly export: no robot profile is installed", file=sys.stderr)
+        return 2
+    editor = HeadlessEditor(language)
+    try:
+        editor.use_profile(registry.default())
+        program = read_program_to_open(program_path, registry, editor.builtin_block_types, registry.default())
+        code = editor.python_for(program)
+        write_text_atomically(output, python_module_text(code, program.profile.id, program_path.name))
+    except (RocklyError, RuntimeError) as error:
+        print(f"rockly export: {error}", file=sys.stderr)
+        return 1
+    print(f"Wrote {output}")
+    return 0
+
+
+def main(argv=None) -> int:
+    """Entry point of the ``rockly`` command."""
+    argv = list(sys.argv[1:] if argv is None else argv)
+    if argv and argv[0] in SUBCOMMANDS:
+        args = _tool_parser().parse_args(argv)
+        if args.command == "plugins":
+            return _plugins_list() if args.plugin_command == "list" else _plugins_validate(args.path)
+        return _export(args.program, args.output, args.language)
+    args = _gui_parser().parse_args(argv)
+    return gui_main(args.program)
+
+
+def gui_main(program=None) -> int:
+    """Entry point of ``rockly-gui`` (the desktop launcher): the editor window."""
+    from rockly_desktop.app import run_gui
+
+    if program is None and len(sys.argv) > 1 and not sys.argv[1].startswith("-"):
+        program = Path(sys.argv[1])
+    return run_gui(program)

@@ -1,0 +1,183 @@
+"""The File menu's work: new, open, save, save as, recent files, import XML, export Python.
+
+Every failure is shown as a plain message; a failed open or import leaves the program
+on screen untouched, and a failed save leaves the file on disk untouched.
+"""
+from pathlib import Path
+
+from PySide6.QtCore import QObject, Signal
+from PySide6.QtWidgets import QFileDialog, QMessageBox
+
+from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.core.export import python_module_text
+from rockly_desktop.core.program import PROGRAM_SUFFIX, Program, save_program, write_text_atomically
+from rockly_desktop.plugins.opening import read_program_to_open
+from rockly_desktop.ui.texts import tr
+
+
+class ProgramFiles(QObject):
+    """Owns which file is open and whether it has unsaved changes."""
+
+    sig_document_changed = Signal()  # path or modified flag changed
+    sig_status = Signal(str)
+
+    def __init__(self, window):
+        super().__init__(window)
+        self.window = window
+        self.path = None
+        self.modified = False
+
+    # --- state --------------------------------------------------------------------------
+
+    def display_name(self) -> str:
+        """The file name for the title bar and prompts."""
+        return Path(self.path).name if self.path else tr("untitled", self.window.language)
+
+    def mark_modified(self):
+        """The user changed the program."""
+        if not self.modified:
+            self.modified = True
+            self.sig_document_changed.emit()
+
+    def _set_document(self, path, modified: bool):
+        self.path = str(path) if path else None
+        self.modified = modified
+        if self.path:
+            self.window.settings.add_recent_file(self.path)
+        self.sig_document_changed.emit()
+
+    # --- commands -----------------------------------------------------------------------
+
+    def new(self):
+        """Start an empty program for the active robot."""
+        if self.maybe_save():
+            self.window.editor.clear()
+            self._set_document(None, False)
+            self.window.settings.last_file = None
+
+    def open(self, path=None) -> bool:
+        """Open a ``.rockly`` (or first-Rockly ``.xml``) program; ask for the file when ``path`` is None."""
+        if not self.maybe_save():
+            return False
+        if path is None:
+            path, _ = QFileDialog.getOpenFileName(self.window, tr("open", self.window.language).replace("&", ""),
+                                                  self._start_folder(), tr("filter_open", self.window.language))
+            if not path:
+                return False
+        return self._open_checked(path)
+
+    def import_xml(self, path=None) -> bool:
+        """Import a program the first Rockly saved as Blockly XML."""
+        if not self.maybe_save():
+            return False
+        if path is None:
+            path, _ = QFileDialog.getOpenFileName(self.window, tr("import_xml", self.window.language).replace("&", ""),
+                                                  self._start_folder(), tr("filter_xml", self.window.language))
+            if not path:
+                return False
+        return self._open_checked(path)
+
+    def save(self) -> bool:
+        """Save to the current file, or ask for one."""
+        if self.path is None:
+            return self.save_as()
+        return self._write(self.path)
+
+    def save_as(self, path=None) -> bool:
+        """Save under a new name."""
+        if path is None:
+            suggestion = self.path or str(Path(self._start_folder()) / (self.display_name() + PROGRAM_SUFFIX))
+            path, _ = QFileDialog.getSaveFileName(self.window, tr("save_as", self.window.language).replace("&", ""),
+                                                  suggestion, tr("filter_program", self.window.language))
+            if not path:
+                return False
+        if not path.endswith(PROGRAM_SUFFIX):
+            path += PROGRAM_SUFFIX
+        return self._write(path)
+
+    def export_python(self, path=None) -> bool:
+        """Write the generated Python to a ``.py`` file."""
+        language = self.window.language
+        if path is None:
+            stem = Path(self.path).stem if self.path else tr("untitled", language)
+            path, _ = QFileDialog.getSaveFileName(self.window, tr("export_python", language).replace("&", ""),
+                                                  str(Path(self._start_folder()) / f"{stem}.py"), tr("filter_python", language))
+            if not path:
+                return False
+        try:
+            state = self.window.editor.call_blocking("getState")
+            text = python_module_text(state["python"], self.window.profile.id, self.path)
+            write_text_atomically(path, text)
+        except (RocklyError, RuntimeError) as error:
+            self._show_error("cannot_export", error, untouched=False)
+            return False
+        self.sig_status.emit(tr("exported", language, path=path))
+        return True
+
+    def maybe_save(self) -> bool:
+        """Ask to save unsaved changes; False when the user cancels (or saving failed)."""
+        if not self.modified:
+            return True
+        language = self.window.language
+        box = QMessageBox(QMessageBox.Icon.Warning, tr("save_changes_title", language),
+                          tr("save_changes", language, name=self.display_name()),
+                          QMessageBox.StandardButton.Save | QMessageBox.StandardButton.Discard
+                          | QMessageBox.StandardButton.Cancel, self.window)
+        box.setInformativeText(tr("save_changes_detail", language))
+        box.setDefaultButton(QMessageBox.StandardButton.Save)
+        answer = box.exec()
+        if answer == QMessageBox.StandardButton.Save:
+            return self.save()
+        return answer == QMessageBox.StandardButton.Discard
+
+    # --- helpers ------------------------------------------------------------------------
+
+    def _start_folder(self) -> str:
+        recent = self.window.settings.recent_files
+        return str(Path(recent[0]).parent) if recent else str(Path.home())
+
+    def _open_checked(self, path) -> bool:
+        window = self.window
+        try:
+            program = read_program_to_open(path, window.registry, window.builtin_block_types(), window.profile)
+        except RocklyError as error:
+            self._show_error("cannot_open", error)
+            return False
+
+        def on_loaded(result, error):
+            if error:
+                self._show_error("cannot_open", f"{path}: the editor could not show this program ({error})")
+                return
+            if program.is_import:
+                self._set_document(None, True)
+                self.sig_status.emit(tr("imported", window.language, path=path))
+            else:
+                self._set_document(path, False)
+                self.sig_status.emit(tr("opened", window.language, path=path))
+
+        window.activate_profile(program.profile)
+        if program.is_import:
+            window.editor.import_xml(program.xml, on_loaded)
+        else:
+            window.editor.load_workspace(program.workspace, on_loaded)
+        return True
+
+    def _write(self, path) -> bool:
+        try:
+            state = self.window.editor.call_blocking("getState")
+            save_program(path, Program(self.window.profile.id, state["workspace"]))
+        except (RocklyError, RuntimeError) as error:
+            self._show_error("cannot_save", error, untouched=False)
+            return False
+        self._set_document(path, False)
+        self.sig_status.emit(tr("saved", self.window.language, path=path))
+        return True
+
+    def _show_error(self, title_key: str, error, untouched: bool = True):
+        language = self.window.language
+        box = QMessageBox(QMessageBox.Icon.Critical, tr(title_key, language), str(error),
+                          QMessageBox.StandardButton.Ok, self.window)
+        if untouched:
+            box.setInformativeText(tr("nothing_changed", language))
+        box.setObjectName("error_box")
+        box.open()

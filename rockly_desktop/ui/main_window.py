@@ -1,0 +1,214 @@
+"""Rockly's main window: the block editor, the Code dock, menus and the status bar."""
+from PySide6.QtCore import Qt
+from PySide6.QtGui import QAction, QActionGroup, QIcon, QKeySequence
+from PySide6.QtWidgets import QLabel, QMainWindow, QMessageBox
+
+from rockly_desktop import __version__
+from rockly_desktop.bridge.editor_view import EditorView
+from rockly_desktop.ui.code_dock import CodeDock
+from rockly_desktop.ui.file_actions import ProgramFiles
+from rockly_desktop.ui.preferences import PreferencesDialog
+from rockly_desktop.ui.texts import tr
+
+
+class MainWindow(QMainWindow):
+    """The editor window. ``registry`` holds the profiles, ``settings`` what is remembered."""
+
+    def __init__(self, registry, settings, icon: QIcon = None):
+        super().__init__()
+        self.registry = registry
+        self.settings = settings
+        self.language = settings.language
+        self.profile = self._initial_profile()
+        self._builtin_types = None
+        self._started = False
+        self.setObjectName("main_window")
+        if icon is not None:
+            self.setWindowIcon(icon)
+
+        self.editor = EditorView(self)
+        self.setCentralWidget(self.editor)
+        self.code_dock = CodeDock(tr("code_dock", self.language), self)
+        self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.code_dock)
+        self.profile_label = QLabel(self)
+        self.statusBar().addPermanentWidget(self.profile_label)
+
+        self.files = ProgramFiles(self)
+        self.files.sig_document_changed.connect(self._update_title)
+        self.files.sig_status.connect(lambda text: self.statusBar().showMessage(text, 8000))
+        self.editor.sig_changed.connect(self._on_editor_changed)
+        self.editor.sig_ready.connect(self._on_editor_ready)
+        self.editor.sig_page_error.connect(
+            lambda message: self.statusBar().showMessage(tr("editor_error", self.language, message=message), 15000))
+
+        self._build_menus()
+        self.resize(1280, 800)
+        if settings.window_geometry is not None:
+            self.restoreGeometry(settings.window_geometry)
+        if settings.window_state is None or not self.restoreState(settings.window_state):
+            self.resizeDocks([self.code_dock], [440], Qt.Orientation.Horizontal)
+        self._update_title()
+
+    # --- start-up -----------------------------------------------------------------------
+
+    def _initial_profile(self):
+        remembered = self.settings.profile_id
+        if remembered in self.registry.profiles:
+            return self.registry.get(remembered)
+        return self.registry.default()
+
+    def start(self, open_path=None):
+        """Load the editor page; then open ``open_path`` or the last file, if any."""
+        self._pending_open = open_path or self.settings.last_file
+        self.statusBar().showMessage(tr("loading_editor", self.language))
+        self._restart_editor()
+        if self.registry.errors:
+            details = "\n\n".join(str(error) for error in self.registry.errors)
+            box = QMessageBox(QMessageBox.Icon.Warning, tr("profile_errors_title", self.language), details,
+                              QMessageBox.StandardButton.Ok, self)
+            box.setObjectName("profile_errors_box")
+            box.open()
+
+    def _restart_editor(self):
+        self.editor.start(self.profile.editor_config(self.language), self.language)
+        self.profile_label.setText(tr("robot_status", self.language, name=self.profile.display_name(self.language)))
+
+    def _on_editor_ready(self):
+        if self._builtin_types is None:
+            self._builtin_types = frozenset(self.editor.known_block_types - self.profile.block_types)
+        self.statusBar().clearMessage()
+        if not self._started:
+            self._started = True
+            path, self._pending_open = self._pending_open, None
+            if path:
+                self.files.open(path)
+
+    def builtin_block_types(self) -> frozenset:
+        """Block types Blockly itself defines (known once the editor has started)."""
+        return self._builtin_types or frozenset()
+
+    # --- profile and language -----------------------------------------------------------
+
+    def activate_profile(self, profile):
+        """Make ``profile`` the active robot (reloading the editor if it changes)."""
+        if profile.id == self.profile.id:
+            return
+        self.profile = profile
+        self.settings.profile_id = profile.id
+        self._restart_editor()
+        for action in self.profile_actions.actions():
+            action.setChecked(action.data() == profile.id)
+
+    def choose_profile(self, profile_id: str):
+        """The user picked a robot in the Robot menu: a new program for that robot."""
+        if profile_id == self.profile.id or not self.files.maybe_save():
+            self._check_active_profile_action()
+            return
+        self.activate_profile(self.registry.get(profile_id))
+        self.files.new()
+
+    def _check_active_profile_action(self):
+        for action in self.profile_actions.actions():
+            action.setChecked(action.data() == self.profile.id)
+
+    def set_language(self, language: str):
+        """Switch the window and the blocks to ``language``, keeping the program."""
+        if language == self.language:
+            return
+        workspace = self.editor.call_blocking("getState")["workspace"] if self.editor.is_ready else None
+        self.language = language
+        self.settings.language = language
+        self._restart_editor()
+        if workspace:
+            self.editor.load_workspace(workspace)
+        self.code_dock.setWindowTitle(tr("code_dock", language))
+        self.menuBar().clear()
+        self._build_menus()
+        self._update_title()
+
+    def show_preferences(self):
+        """Open the Preferences dialog and apply the chosen language."""
+        dialog = PreferencesDialog(self.language, self)
+        if dialog.exec():
+            self.set_language(dialog.language)
+
+    # --- editor events ------------------------------------------------------------------
+
+    def _on_editor_changed(self, workspace, python, origin):
+        self.code_dock.view.set_code(python)
+        if origin == "user":
+            self.files.mark_modified()
+
+    def _update_title(self):
+        self.setWindowTitle(f"{self.files.display_name()}[*] — {tr('app_name', self.language)}")
+        self.setWindowModified(self.files.modified)
+
+    # --- menus --------------------------------------------------------------------------
+
+    def _action(self, menu, key, slot, shortcut=None):
+        action = QAction(tr(key, self.language), self)
+        action.setObjectName(f"action_{key}")
+        if shortcut is not None:
+            action.setShortcut(shortcut)
+        action.triggered.connect(slot)
+        menu.addAction(action)
+        return action
+
+    def _build_menus(self):
+        language, bar = self.language, self.menuBar()
+        file_menu = bar.addMenu(tr("menu_file", language))
+        self._action(file_menu, "new", self.files.new, QKeySequence.StandardKey.New)
+        self._action(file_menu, "open", lambda: self.files.open(), QKeySequence.StandardKey.Open)
+        self.recent_menu = file_menu.addMenu(tr("open_recent", language))
+        self.recent_menu.aboutToShow.connect(self._fill_recent_menu)
+        file_menu.addSeparator()
+        self._action(file_menu, "save", self.files.save, QKeySequence.StandardKey.Save)
+        self._action(file_menu, "save_as", lambda: self.files.save_as(), QKeySequence.StandardKey.SaveAs)
+        file_menu.addSeparator()
+        self._action(file_menu, "import_xml", lambda: self.files.import_xml())
+        self._action(file_menu, "export_python", lambda: self.files.export_python(), "Ctrl+E")
+        file_menu.addSeparator()
+        self._action(file_menu, "quit", self.close, QKeySequence.StandardKey.Quit)
+
+        edit_menu = bar.addMenu(tr("menu_edit", language))
+        self._action(edit_menu, "undo", self.editor.undo, QKeySequence.StandardKey.Undo)
+        self._action(edit_menu, "redo", self.editor.redo, QKeySequence.StandardKey.Redo)
+
+        robot_menu = bar.addMenu(tr("menu_robot", language))
+        self.profile_actions = QActionGroup(self)
+        for profile in self.registry.profiles.values():
+            action = QAction(f"{profile.display_name(language)} ({profile.version})", self, checkable=True)
+            action.setData(profile.id)
+            action.setChecked(profile.id == self.profile.id)
+            action.triggered.connect(lambda _checked=False, pid=profile.id: self.choose_profile(pid))
+            self.profile_actions.addAction(action)
+            robot_menu.addAction(action)
+
+        view_menu = bar.addMenu(tr("menu_view", language))
+        view_menu.addAction(self.code_dock.toggleViewAction())
+
+        settings_menu = bar.addMenu(tr("menu_settings", language))
+        self._action(settings_menu, "preferences", self.show_preferences, QKeySequence.StandardKey.Preferences)
+
+        help_menu = bar.addMenu(tr("menu_help", language))
+        self._action(help_menu, "about", lambda: QMessageBox.about(
+            self, tr("app_name", language), tr("about_text", language, version=__version__)))
+
+    def _fill_recent_menu(self):
+        self.recent_menu.clear()
+        for path in self.settings.recent_files:
+            self.recent_menu.addAction(path, lambda p=path: self.files.open(p))
+        self.recent_menu.addSeparator()
+        self.recent_menu.addAction(tr("clear_recent", self.language), self.settings.clear_recent_files)
+
+    # --- closing ------------------------------------------------------------------------
+
+    def closeEvent(self, event):  # noqa: N802 - Qt override
+        """Qt override: ask to save changes, then remember the layout."""
+        if not self.files.maybe_save():
+            event.ignore()
+            return
+        self.settings.save_window(self.saveGeometry(), self.saveState())
+        self.settings.last_file = self.files.path
+        self.settings.sync()
+        event.accept()

@@ -1,0 +1,80 @@
+"""What Rockly remembers between starts: layout, language, profile, last and recent files."""
+from PySide6.QtCore import QSettings
+
+MAX_RECENT = 8
+
+
+class AppSettings:
+    """Typed access to Rockly's QSettings. ``path`` selects a settings file (tests use one)."""
+
+    def __init__(self, path=None):
+        if path is None:
+            self._store = QSettings("Rockly", "Rockly")
+        else:
+            self._store = QSettings(str(path), QSettings.Format.IniFormat)
+
+    def _get(self, key, default=None):
+        value = self._store.value(key)
+        return default if value is None else value
+
+    @property
+    def language(self) -> str:
+        """The window and block language: 'en' or 'de'."""
+        return str(self._get("language", "en"))
+
+    @language.setter
+    def language(self, value: str):
+        self._store.setValue("language", value)
+
+    @property
+    def profile_id(self):
+        """The robot profile used last, or None."""
+        return self._get("profile")
+
+    @profile_id.setter
+    def profile_id(self, value: str):
+        self._store.setValue("profile", value)
+
+    @property
+    def recent_files(self) -> list:
+        """Recently used program files, newest first."""
+        value = self._get("recent_files", [])
+        return [value] if isinstance(value, str) else list(value)
+
+    def add_recent_file(self, path: str):
+        """Put ``path`` at the top of the recent files (and remember it as the last file)."""
+        files = [path] + [item for item in self.recent_files if item != path]
+        self._store.setValue("recent_files", files[:MAX_RECENT])
+        self.last_file = path
+
+    def clear_recent_files(self):
+        """Forget the recent files."""
+        self._store.setValue("recent_files", [])
+
+    @property
+    def last_file(self):
+        """The program that was open when Rockly last closed, or None."""
+        return self._get("last_file") or None
+
+    @last_file.setter
+    def last_file(self, path):
+        self._store.setValue("last_file", path or "")
+
+    @property
+    def window_geometry(self):
+        """Saved window geometry (QByteArray) or None."""
+        return self._get("window/geometry")
+
+    @property
+    def window_state(self):
+        """Saved dock and toolbar layout (QByteArray) or None."""
+        return self._get("window/state")
+
+    def save_window(self, geometry, state):
+        """Remember the window geometry and dock layout."""
+        self._store.setValue("window/geometry", geometry)
+        self._store.setValue("window/state", state)
+
+    def sync(self):
+        """Write to disk now."""
+        self._store.sync()
