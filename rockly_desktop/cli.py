@@ -96,6 +96,8 @@ def _export(program_path: Path, output: Path, language: str) -> int:
     except (RocklyError, RuntimeError) as error:
         print(f"rockly export: {error}", file=sys.stderr)
         return 1
+    finally:
+        editor.close()
     print(f"Wrote {output}")
     return 0
 

@@ -6,7 +6,7 @@
 """
 import logging
 
-from PySide6.QtCore import QCoreApplication, QEventLoop, QTimer, QUrl, Signal
+from PySide6.QtCore import QEventLoop, QTimer, QUrl, Signal
 from PySide6.QtWebChannel import QWebChannel
 from PySide6.QtWebEngineCore import QWebEnginePage, QWebEngineProfile
 from PySide6.QtWebEngineWidgets import QWebEngineView
@@ -17,21 +17,25 @@ from rockly_desktop.core import paths
 
 log = logging.getLogger(__name__)
 
-_shared_profile = None
+_interceptor = None
 
 
 def offline_web_profile() -> QWebEngineProfile:
-    """One off-the-record web profile per process that refuses all network requests.
+    """The web profile of every editor page: refuses all network requests, keeps nothing on disk.
 
-    It is owned by the application so that it outlives every page using it.
+    It is Qt's default profile, which Qt itself keeps alive until every page is gone
+    (a profile of our own, deleted before a page, crashes the process at exit).
+    Its interceptor is ``offline_web_profile().interceptor``.
     """
-    global _shared_profile
-    if _shared_profile is None:
-        _shared_profile = QWebEngineProfile(QCoreApplication.instance())
-        interceptor = LocalOnlyInterceptor(_shared_profile)
-        _shared_profile.setUrlRequestInterceptor(interceptor)
-        _shared_profile.interceptor = interceptor
-    return _shared_profile
+    global _interceptor
+    profile = QWebEngineProfile.defaultProfile()
+    if _interceptor is None:
+        profile.setHttpCacheType(QWebEngineProfile.HttpCacheType.MemoryHttpCache)
+        profile.setPersistentCookiesPolicy(QWebEngineProfile.PersistentCookiesPolicy.NoPersistentCookies)
+        _interceptor = LocalOnlyInterceptor(profile)
+        profile.setUrlRequestInterceptor(_interceptor)
+    profile.interceptor = _interceptor
+    return profile
 
 
 class EditorPage(QWebEnginePage):

@@ -1,5 +1,5 @@
 """The block editor without a window: Blockly's own generator for command-line use."""
-from PySide6.QtCore import QEventLoop, QTimer
+from PySide6.QtCore import QCoreApplication, QEvent, QEventLoop, QTimer
 
 from rockly_desktop.bridge.editor_view import EditorView
 
@@ -40,3 +40,8 @@ class HeadlessEditor:
             return self.view.call_blocking("importXml", {"xml": program.xml})["python"]
         self.view.call_blocking("load", {"workspace": program.workspace})
         return self.view.call_blocking("getState")["python"]
+
+    def close(self):
+        """Delete the page now, before the application's web profile goes away."""
+        self.view.deleteLater()
+        QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)

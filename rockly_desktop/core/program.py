@@ -94,7 +94,8 @@ def write_text_atomically(path, text: str) -> None:
     """Replace ``path`` with ``text`` so that readers see the old or the new file, never half.
 
     The text goes to a temporary file in the same folder, is flushed to disk and then
-    renamed over the target. An existing file keeps its permission bits.
+    renamed over the target. An existing file keeps its permission bits; a new one gets
+    the usual ones (0o666 less the umask).
     """
     path = Path(path)
     folder = path.parent if str(path.parent) else Path(".")

@@ -1,4 +1,5 @@
 """Which block types a program uses, from Blockly's JSON or the first Rockly's XML."""
+import copy
 import xml.etree.ElementTree as ElementTree
 from collections import Counter
 
@@ -8,13 +9,17 @@ from rockly_desktop.core.errors import ProgramFileError
 def block_types_in_workspace(workspace: dict) -> Counter:
     """Count the block types in a Blockly JSON workspace (blocks, shadows, nested)."""
     counts = Counter()
-    pending = list((workspace.get("blocks") or {}).get("blocks") or [])
+    top = workspace.get("blocks")
+    top_blocks = top.get("blocks") if isinstance(top, dict) else None
+    pending = list(top_blocks) if isinstance(top_blocks, list) else []
     while pending:
         block = pending.pop()
         if not isinstance(block, dict):
             continue
-        counts[block.get("type") or "(block without a type)"] += 1
-        for connection in list((block.get("inputs") or {}).values()) + [block.get("next")]:
+        block_type = block.get("type")
+        counts[block_type if isinstance(block_type, str) and block_type else "(block without a type)"] += 1
+        inputs = block.get("inputs")
+        for connection in (list(inputs.values()) if isinstance(inputs, dict) else []) + [block.get("next")]:
             if isinstance(connection, dict):
                 pending.extend(connection.get(kind) for kind in ("block", "shadow") if connection.get(kind))
     return counts
@@ -63,5 +68,17 @@ def rename_legacy_fields(root: ElementTree.Element, aliases: dict) -> int:
 
 
 def xml_to_text(root: ElementTree.Element) -> str:
-    """Serialise parsed XML back to text for the editor page."""
-    return ElementTree.tostring(root, encoding="unicode")
+    """Serialise parsed XML back to text for the editor page.
+
+    Element names are written without a namespace prefix (ElementTree would write
+    ``<ns0:block>``, which Blockly does not recognise); a namespace the root had is kept
+    as its plain ``xmlns`` attribute.
+    """
+    plain = copy.deepcopy(root)
+    namespace = root.tag[1:].split("}", 1)[0] if root.tag.startswith("{") else None
+    for element in plain.iter():
+        if isinstance(element.tag, str):
+            element.tag = _local_name(element.tag)
+    if namespace:
+        plain.set("xmlns", namespace)
+    return ElementTree.tostring(plain, encoding="unicode")

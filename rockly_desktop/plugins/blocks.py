@@ -81,7 +81,7 @@ def _parse_block(raw, index: int, path: Path) -> BlockSpec:
     if not isinstance(raw, dict):
         raise ManifestError(path, where, "must be a mapping with 'type', 'message0' and 'python'")
     block_type = raw.get("type")
-    if not isinstance(block_type, str) or not _BLOCK_TYPE.match(block_type):
+    if not isinstance(block_type, str) or not _BLOCK_TYPE.fullmatch(block_type):
         raise ManifestError(path, f"{where}.type", "must be a block type name (letters, digits, '_')")
     where = f"blocks[{block_type}]"
     if "message0" not in raw:
@@ -101,10 +101,14 @@ def _parse_block(raw, index: int, path: Path) -> BlockSpec:
             raise ManifestError(path, f"{where}.python.code",
                                 f"uses {{{name}}}, but the block has no field or input named '{name}' (it has: {sorted(slots) or 'none'})")
     values = python.get("values", {})
+    if not isinstance(values, dict):
+        raise ManifestError(path, f"{where}.python.values", "must map field names to {value: Python value}")
     for name, mapping in values.items():
         if slots.get(name) != "field" or not isinstance(mapping, dict):
             raise ManifestError(path, f"{where}.python.values.{name}", "must map the values of a field of this block")
     defaults = python.get("defaults", {})
+    if not isinstance(defaults, dict):
+        raise ManifestError(path, f"{where}.python.defaults", "must map value input names to the Python used when they are empty")
     for name in defaults:
         if slots.get(name) != "value":
             raise ManifestError(path, f"{where}.python.defaults.{name}", "names no value input of this block")

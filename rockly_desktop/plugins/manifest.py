@@ -107,15 +107,15 @@ def _check(spec: FieldSpec, value, root: Path):
     """Return a problem description for one field's value, or None if it is fine."""
     kind = spec.kind
     if kind == "schema":
-        if value != SCHEMA_VERSION:
+        if isinstance(value, bool) or value != SCHEMA_VERSION:
             return f"must be {SCHEMA_VERSION} (this Rockly does not read schema {value!r})"
     elif kind == "identifier":
-        if not isinstance(value, str) or not _IDENTIFIER.match(value):
+        if not isinstance(value, str) or not _IDENTIFIER.fullmatch(value):
             return "must be lower-case letters, digits and '_', starting with a letter (at most 40)"
     elif kind == "text":
         return _check_text(value)
     elif kind == "version":
-        if not isinstance(value, str) or not _VERSION.match(value):
+        if not isinstance(value, str) or not _VERSION.fullmatch(value):
             return "must be a version text like '1.0.0' (quote it in YAML)"
     elif kind == "languages":
         if not isinstance(value, list) or not value or value[0] != "en":
@@ -128,7 +128,7 @@ def _check(spec: FieldSpec, value, root: Path):
     elif kind == "folder":
         return _check_relative_path(value, root, want_dir=True)
     elif kind == "import":
-        if not isinstance(value, str) or not _IMPORT_PATH.match(value):
+        if not isinstance(value, str) or not _IMPORT_PATH.fullmatch(value):
             return "must be 'package.module:Name'"
     elif kind == "list":
         if not isinstance(value, list):

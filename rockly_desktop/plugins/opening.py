@@ -32,8 +32,8 @@ class ProgramToOpen:
         return self.xml is not None
 
 
-def _profile_for_xml(block_types, registry: ProfileRegistry, fallback: Profile) -> Profile:
-    """The installed profile defining most of the XML's block types (the fallback if none)."""
+def _best_profile_for(block_types, registry: ProfileRegistry, fallback: Profile) -> Profile:
+    """The installed profile defining most of ``block_types`` (the fallback if none does)."""
     scored = [(len(block_types & profile.block_types), profile) for profile in registry.profiles.values()]
     best_score, best = max(scored, key=lambda pair: pair[0], default=(0, fallback))
     return best if best_score else fallback
@@ -50,7 +50,7 @@ def read_program_to_open(path, registry: ProfileRegistry, builtin_types, fallbac
     if path.suffix.lower() == XML_SUFFIX:
         root = parse_blockly_xml(read_text_file(path), path)
         types = set(block_types_in_xml(root))
-        profile = _profile_for_xml(types - builtin_types, registry, fallback)
+        profile = _best_profile_for(types - builtin_types, registry, fallback)
         unknown = types - builtin_types - profile.block_types
         if unknown:
             raise UnknownBlocksError(unknown, None, False)
@@ -60,8 +60,12 @@ def read_program_to_open(path, registry: ProfileRegistry, builtin_types, fallbac
     program = load_program(path)
     types = set(block_types_in_workspace(program.workspace))
     installed = program.profile_id in registry.profiles
-    profile = registry.get(program.profile_id) if installed else fallback
-    unknown = types - builtin_types - (profile.block_types if installed else set())
+    if installed:
+        profile = registry.get(program.profile_id)
+        unknown = types - builtin_types - profile.block_types
+    else:
+        profile = _best_profile_for(types - builtin_types, registry, fallback)
+        unknown = types - builtin_types - registry.all_block_types()
     if unknown:
         raise UnknownBlocksError(unknown, program.profile_id, installed)
     return ProgramToOpen(path, profile, workspace=program.workspace)

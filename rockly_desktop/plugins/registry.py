@@ -23,6 +23,7 @@ class ProfileLocation:
 
     folder: Path
     source: str
+    problem: str = None  # set when the place was named (an entry point) but holds no profile folder
 
 
 def _folders_in(parent: Path, source: str) -> list:
@@ -36,9 +37,21 @@ def _entry_point_locations() -> list:
     """Profiles installed as Python packages: the entry point names a package holding profile.yaml."""
     locations = []
     for entry_point in importlib.metadata.entry_points(group=ENTRY_POINT_GROUP):
-        spec = importlib.util.find_spec(entry_point.value.split(":")[0])
+        package = entry_point.value.split(":")[0].strip()
+        source = f"entry point {entry_point.name}"
+        try:
+            spec = importlib.util.find_spec(package)
+        except Exception as error:  # noqa: BLE001 - a broken third-party package must not stop discovery
+            spec, reason = None, f"{type(error).__name__}: {error}"
+        else:
+            reason = "no such package is installed"
         if spec and spec.submodule_search_locations:
-            locations.append(ProfileLocation(Path(list(spec.submodule_search_locations)[0]), f"entry point {entry_point.name}"))
+            locations.append(ProfileLocation(Path(list(spec.submodule_search_locations)[0]), source))
+        else:
+            if spec:
+                reason = "it is a module, not a package folder holding profile.yaml"
+            locations.append(ProfileLocation(Path(package), source,
+                                             f"'{entry_point.value}' ({ENTRY_POINT_GROUP}): {reason}"))
     return locations
 
 
@@ -64,6 +77,9 @@ class ProfileRegistry:
         registry = cls()
         shared = paths.shared_toolboxes_dir()
         for location in discover_locations(extra_dirs):
+            if location.problem:
+                registry.errors.append(ManifestError(location.source, None, location.problem))
+                continue
             try:
                 profile = load_profile(location.folder, shared, location.source)
             except ManifestError as error:
@@ -88,6 +104,6 @@ class ProfileRegistry:
             return self.profiles[DEFAULT_PROFILE]
         return next(iter(self.profiles.values()))
 
-    def profile_of_block(self, block_type: str):
-        """The installed profile that defines ``block_type``, or None."""
-        return next((profile for profile in self.profiles.values() if block_type in profile.block_types), None)
+    def all_block_types(self) -> set:
+        """Block types any installed profile defines."""
+        return set().union(*(profile.block_types for profile in self.profiles.values()))

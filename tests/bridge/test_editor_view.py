@@ -1,0 +1,125 @@
+"""The Blockly page in QtWebEngine: start-up, toolbox, the JSON channel, offline, undo."""
+import pytest
+from page_tools import add_block_as_user, block_types_on_page, run_js, toolbox_names
+from program_builder import block, number, workspace
+
+from PySide6.QtCore import QUrl
+from PySide6.QtWebEngineCore import QWebEnginePage
+
+from rockly_desktop.bridge.editor_view import EditorView, offline_web_profile
+
+
+@pytest.fixture
+def editor(qtbot, hobbit):
+    view = EditorView()
+    qtbot.addWidget(view)
+    view.resize(1000, 700)
+    view.show()  # a hidden page runs its timers too rarely for Blockly's event queue
+    errors = []
+    view.sig_page_error.connect(errors.append)
+    with qtbot.waitSignal(view.sig_ready, timeout=30000):
+        view.start(hobbit.editor_config("en"), "en")
+    yield view
+    assert errors == [], f"the page reported errors: {errors}"
+
+
+def call(qtbot, view, name, args=None):
+    answers = []
+    view.call(name, args, lambda result, error: answers.append((result, error)))
+    qtbot.waitUntil(lambda: bool(answers), timeout=10000)
+    return answers[0]
+
+
+def test_editor_starts_with_the_hobbit_toolbox(qtbot, editor, hobbit):
+    assert toolbox_names(qtbot, editor) == [
+        "Drive", "Head", "Arm", "Tablet", "Time", "ROS",
+        "Logic", "Loops", "Math", "Text", "Lists", "Variables", "Functions"]
+    assert hobbit.block_types <= editor.known_block_types
+
+
+def test_every_toolbox_block_exists_in_the_page(qtbot, editor, hobbit):
+    listed = run_js(qtbot, editor, """Blockly.getMainWorkspace().getToolbox().getToolboxItems()
+        .flatMap(i => (i.getContents && Array.isArray(i.getContents())) ? i.getContents() : [])
+        .filter(c => c.kind === 'block' || c.kind === 'BLOCK').map(c => c.type)""")
+    assert len(listed) > 60
+    assert set(listed) <= editor.known_block_types
+
+
+def test_german_editor_shows_german_categories_and_blocks(qtbot, hobbit):
+    view = EditorView()
+    qtbot.addWidget(view)
+    with qtbot.waitSignal(view.sig_ready, timeout=30000):
+        view.start(hobbit.editor_config("de"), "de")
+    assert toolbox_names(qtbot, view)[:4] == ["Fahren", "Kopf", "Arm", "Tablet"]
+    view.load_workspace(workspace(block("hobbit_move", {"direction": "+"}, {"speed": number(1)}),
+                                  block("controls_if", x=0, y=200)))
+    texts = run_js(qtbot, view, "Blockly.getMainWorkspace().getTopBlocks(true).map(b => b.toString())")
+    assert any("fahre" in text and "vorwärts" in text for text in texts)
+    assert any(text.startswith("falls") for text in texts)  # Blockly's own messages in German
+
+
+def test_calls_made_before_the_page_is_ready_are_queued_in_order(qtbot, hobbit):
+    view = EditorView()
+    qtbot.addWidget(view)
+    answers = []
+    view.start(hobbit.editor_config("en"), "en")
+    view.load_workspace(workspace(block("hobbit_sos")), lambda r, e: answers.append(("load", r, e)))
+    view.call("getState", None, lambda r, e: answers.append(("state", r, e)))
+    assert not view.is_ready
+    qtbot.waitUntil(lambda: len(answers) == 2, timeout=30000)
+    assert [name for name, _, _ in answers] == ["load", "state"]
+    assert answers[1][1]["python"] == "robot.call_sos()\n"
+
+
+def test_edits_reach_python_with_workspace_and_code(qtbot, editor):
+    with qtbot.waitSignal(editor.sig_changed, timeout=5000) as changed:
+        add_block_as_user(qtbot, editor, "hobbit_sos")
+    workspace_json, python, origin = changed.args
+    assert origin == "user"
+    assert python == "robot.call_sos()\n"
+    assert workspace_json["blocks"]["blocks"][0]["type"] == "hobbit_sos"
+
+
+def test_loading_a_program_is_not_a_user_edit(qtbot, editor):
+    with qtbot.waitSignal(editor.sig_changed, timeout=5000) as changed:
+        editor.load_workspace(workspace(block("hobbit_stop")))
+    assert changed.args[2] == "load"
+    assert changed.args[1] == "robot.stop()\n"
+
+
+def test_undo_and_redo(qtbot, editor):
+    add_block_as_user(qtbot, editor, "hobbit_sos")
+    qtbot.waitUntil(lambda: block_types_on_page(qtbot, editor) == ["hobbit_sos"])
+    editor.undo()
+    qtbot.waitUntil(lambda: block_types_on_page(qtbot, editor) == [])
+    editor.redo()
+    qtbot.waitUntil(lambda: block_types_on_page(qtbot, editor) == ["hobbit_sos"])
+
+
+def test_a_workspace_blockly_cannot_load_leaves_the_current_one(qtbot, editor):
+    assert call(qtbot, editor, "load", {"workspace": workspace(block("hobbit_stop"))}) == (True, None)
+    result, error = call(qtbot, editor, "load", {"workspace": workspace(block("no_such_block"))})
+    assert result is None and "no_such_block" in error
+    state, _ = call(qtbot, editor, "getState")
+    assert state["python"] == "robot.stop()\n"
+
+
+def test_unknown_page_call_is_an_error_not_a_hang(qtbot, editor):
+    result, error = call(qtbot, editor, "formatDisk")
+    assert result is None and "unknown call" in error
+
+
+def test_nothing_is_fetched_from_the_network(qtbot, editor):
+    interceptor = editor.interceptor
+    editor.load_workspace(workspace(block("hobbit_move", {"direction": "+"}, {"speed": number(1)})))
+    run_js(qtbot, editor, "Blockly.getMainWorkspace().getToolbox().selectItemByPosition(0)")
+    qtbot.waitUntil(lambda: any("sprites.svg" in url or "media" in url for url in interceptor.requested), timeout=5000)
+    assert any(url.endswith("blockly_compressed.js") for url in interceptor.requested)
+    assert interceptor.blocked == []
+    # The guard is real: anything using the editor's web profile cannot reach the network.
+    probe = QWebEnginePage(offline_web_profile())
+    probe.load(QUrl("http://example.invalid/blockly.js"))
+    qtbot.waitUntil(lambda: "http://example.invalid/blockly.js" in interceptor.blocked, timeout=5000)
+    probe.deleteLater()
+    local = [url for url in interceptor.requested if url not in interceptor.blocked]
+    assert all(url.startswith(("file:", "qrc:", "data:")) for url in local)

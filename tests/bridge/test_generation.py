@@ -1,0 +1,143 @@
+"""Blocks -> Python with the real Blockly generator in QtWebEngine: every HOBBIT block, and quoting."""
+import ast
+
+import pytest
+from program_builder import block, number, stack, text, workspace
+
+from rockly_desktop.plugins.opening import ProgramToOpen
+
+
+def generate(editor, profile, *top_blocks) -> str:
+    return editor.python_for(ProgramToOpen(path=None, profile=profile, workspace=workspace(*top_blocks)))
+
+
+STATEMENTS = [
+    (block("hobbit_move", {"direction": "+"}, {"speed": number(2)}), "robot.drive(2, 'forward')"),
+    (block("hobbit_move", {"direction": "-"}, {"speed": number(0.5)}), "robot.drive(0.5, 'backward')"),
+    (block("hobbit_move", {"direction": "+"}), "robot.drive(0, 'forward')"),
+    (block("hobbit_turn", {"direction": "+"}, {"angle": number(90)}), "robot.turn(90, 'left')"),
+    (block("hobbit_turn", {"direction": "-"}, {"angle": number(180)}), "robot.turn(180, 'right')"),
+    (block("hobbit_navigate", inputs={"x": number(1.5), "y": number(-2), "heading": number(90)}),
+     "robot.navigate_to(1.5, -2, 90)"),
+    (block("hobbit_stop"), "robot.stop()"),
+    (block("hobbit_head", {"head_position": "up_left"}), "robot.look('up_left')"),
+    (block("hobbit_head", {"head_position": "search_table"}), "robot.look('search_table')"),
+    (block("hobbit_emo", {"emotion": "VTIRED"}), "robot.show_emotion('VTIRED')"),
+    (block("hobbit_arm_gripper", {"movement": "OpenGripper"}), "robot.gripper('open')"),
+    (block("hobbit_arm_gripper", {"movement": "CloseGripper"}), "robot.gripper('close')"),
+    (block("hobbit_arm_move", {"movement": "MoveToCandle"}), "robot.move_arm('candle')"),
+    (block("hobbit_arm_move", {"movement": "MoveToHome"}), "robot.move_arm('home')"),
+    (block("hobbit_arm_move", {"movement": "MoveToPreGraspFloor"}), "robot.move_arm('floor')"),
+    (block("hobbit_arm_move", {"movement": "MoveToPreGraspTable"}), "robot.move_arm('table')"),
+    (block("hobbit_arm_move", {"movement": "MoveToTray"}), "robot.move_arm('tray')"),
+    (block("hobbit_arm_turntable", {"movement": "MoveToLearning"}), "robot.turntable('learn')"),
+    (block("hobbit_arm_turntable", {"movement": "StoreTurntable"}), "robot.turntable('store')"),
+    (block("hobbit_arm_turntable", {"movement": "TurnTurntableCW"}), "robot.turntable('clockwise')"),
+    (block("hobbit_arm_turntable", {"movement": "TurnTurntableCCW"}), "robot.turntable('counterclockwise')"),
+    (block("hobbit_arm_joints", inputs={f"joint{i}": number(i * 10) for i in range(1, 7)}),
+     "robot.move_arm_to_joints([10, 20, 30, 40, 50, 60])"),
+    (block("hobbit_navigation_test", inputs={"pos_x": number(1), "pos_y": number(2), "pos_z": number(0),
+                                            "quat_x": number(0), "quat_y": number(0), "quat_z": number(0.7071),
+                                            "quat_w": number(0.7071)}),
+     "robot.navigate_to_pose(1, 2, 0, 0, 0, 0.7071, 0.7071)"),
+    (block("hobbit_show_info", inputs={"text": text("Hello")}), "robot.show_info('Hello')"),
+    (block("hobbit_show_info_confirm", inputs={"text": text("Ready?")}), "robot.show_info_and_wait('Ready?')"),
+    (block("hobbit_volume", {"change": "louder"}), "robot.change_volume('louder')"),
+    (block("hobbit_volume", {"change": "quieter"}), "robot.change_volume('quieter')"),
+    (block("hobbit_sos"), "robot.call_sos()"),
+    (block("hobbit_wait", inputs={"seconds": number(3)}), "robot.wait(3)"),
+    (block("ROS_publisher", {"message_type": "Float64"}, {"message": number(1.5), "topic_name": text("/speed")}),
+     "robot.publish('/speed', 'Float64', 1.5)"),
+]
+
+
+@pytest.mark.parametrize(("program", "expected"), STATEMENTS, ids=[f"{b['type']}-{i}" for i, (b, _) in enumerate(STATEMENTS)])
+def test_statement_block_becomes_its_command(headless_editor, hobbit, program, expected):
+    assert generate(headless_editor, hobbit, program).strip() == expected
+
+
+def test_yes_no_block_compares_the_answer_with_the_chosen_one(headless_editor, hobbit):
+    asked_yes = block("controls_if", inputs={
+        "IF0": block("hobbit_yes_no", {"yes_no": "D_YES"}, {"text": text("Tea?")}),
+        "DO0": block("hobbit_sos")})
+    asked_no = block("controls_if", inputs={
+        "IF0": block("hobbit_yes_no", {"yes_no": "D_NO"}, {"text": text("Tea?")}),
+        "DO0": block("hobbit_sos")})
+    assert generate(headless_editor, hobbit, asked_yes).splitlines()[0] == "if robot.ask_yes_no('Tea?') == True:"
+    assert generate(headless_editor, hobbit, asked_no).splitlines()[0] == "if robot.ask_yes_no('Tea?') == False:"
+
+
+def test_expression_blocks_nest_inside_other_blocks(headless_editor, hobbit):
+    greeting = block("hobbit_show_info", inputs={"text": block("text_join", inputs={
+        "ADD0": text("Hi "), "ADD1": block("hobbit_user_input", inputs={"text": text("Name?")})},
+        extraState={"itemCount": 2})})
+    code = generate(headless_editor, hobbit, greeting)
+    assert "robot.show_info('Hi ' + str(robot.ask_text('Name?')))" in code
+
+
+def test_service_block_returns_the_response(headless_editor, hobbit):
+    program = block("variables_set", {"VAR": {"id": "v1"}}, {"VALUE": block(
+        "hobbit_call_service", {"has_parameters": "no_params"},
+        {"service_name": text("/trigger"), "service_type": text("std_srvs/Trigger")})})
+    ws = workspace(program)
+    ws["variables"] = [{"name": "answer", "id": "v1"}]
+    code = headless_editor.python_for(ProgramToOpen(path=None, profile=hobbit, workspace=ws))
+    assert "answer = robot.call_service('/trigger', 'std_srvs/Trigger', None)" in code
+
+
+def test_the_thesis_pick_up_program(headless_editor, hobbit):
+    program = stack(*(block(kind, {"movement": value}) for kind, value in (
+        ("hobbit_arm_gripper", "OpenGripper"), ("hobbit_arm_move", "MoveToPreGraspFloor"),
+        ("hobbit_arm_gripper", "CloseGripper"), ("hobbit_arm_move", "MoveToPreGraspTable"),
+        ("hobbit_arm_gripper", "OpenGripper"))))
+    assert generate(headless_editor, hobbit, program).split() == [
+        "robot.gripper('open')", "robot.move_arm('floor')", "robot.gripper('close')",
+        "robot.move_arm('table')", "robot.gripper('open')"]
+
+
+def test_every_hobbit_block_is_covered_here(hobbit):
+    covered = {b["type"] for b, _ in STATEMENTS} | {"hobbit_yes_no", "hobbit_user_input", "hobbit_call_service"}
+    assert covered == hobbit.block_types
+
+
+NASTY_TEXTS = [
+    "it's",
+    'say "hi"',
+    "back\\slash \\n not a newline",
+    "two\nlines\r\nand\ttab",
+    '"""triple"""',
+    "'''triple'''",
+    "'); import os #",
+    '"); __import__("os").system("echo pwned") #',
+    "{speed} {{braces}} %s",
+    "Grüße, 你好, مرحبا, 🤖👋, e\u0301",
+    "line\u2028separator\u2029paragraph\x00nul\x7fdel",
+    "\\",
+    "",
+]
+
+TEXT_INPUTS = [
+    ("hobbit_show_info", "text"), ("hobbit_show_info_confirm", "text"), ("hobbit_yes_no", "text"),
+    ("hobbit_user_input", "text"), ("ROS_publisher", "message"), ("ROS_publisher", "topic_name"),
+    ("hobbit_call_service", "service_name"), ("hobbit_call_service", "service_type"),
+]
+
+
+def _as_statement(block_type, input_name, value):
+    inner = block(block_type, inputs={input_name: text(value)})
+    if block_type in ("hobbit_yes_no", "hobbit_user_input", "hobbit_call_service"):
+        return block("text_print", inputs={"TEXT": inner})
+    return inner
+
+
+@pytest.mark.parametrize(("block_type", "input_name"), TEXT_INPUTS)
+def test_user_text_reaches_python_as_the_exact_string_never_as_code(headless_editor, hobbit, block_type, input_name):
+    for value in NASTY_TEXTS:
+        code = generate(headless_editor, hobbit, _as_statement(block_type, input_name, value))
+        tree = ast.parse(code)
+        strings = [node.value for node in ast.walk(tree) if isinstance(node, ast.Constant) and isinstance(node.value, str)]
+        assert value in strings, f"{value!r} not carried exactly by {code!r}"
+        assert not [node for node in ast.walk(tree) if isinstance(node, (ast.Import, ast.ImportFrom))]
+        calls = [node.func for node in ast.walk(tree) if isinstance(node, ast.Call)]
+        assert all(isinstance(func, (ast.Attribute, ast.Name)) for func in calls)
+        assert "system" not in {getattr(func, "attr", getattr(func, "id", None)) for func in calls}

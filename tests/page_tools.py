@@ -1,0 +1,35 @@
+"""Looking inside the editor page from tests (the app itself only uses the JSON channel)."""
+import json
+
+
+def run_js(qtbot, view, script: str):
+    """Evaluate ``script`` in the editor page and return its (JSON-able) value."""
+    holder = []
+    wrapped = f"(() => {{ try {{ return JSON.stringify({{value: ({script})}}); }} catch (e) {{ return JSON.stringify({{error: String(e)}}); }} }})()"
+    view.page().runJavaScript(wrapped, 0, holder.append)
+    qtbot.waitUntil(lambda: bool(holder), timeout=10000)
+    answer = json.loads(holder[0])
+    if "error" in answer:
+        raise AssertionError(f"page script failed: {answer['error']}")
+    return answer.get("value")
+
+
+def toolbox_names(qtbot, view) -> list:
+    """The toolbox category names as shown."""
+    return run_js(qtbot, view, "Blockly.getMainWorkspace().getToolbox().getToolboxItems()"
+                               ".filter(i => i.getName).map(i => i.getName())")
+
+
+def add_block_as_user(qtbot, view, block_type: str) -> str:
+    """Create a block the way a drag from the toolbox does (events on); return its id."""
+    return run_js(qtbot, view, f"""(() => {{
+        const ws = Blockly.getMainWorkspace();
+        const b = ws.newBlock({block_type!r});
+        b.initSvg(); b.render(); b.moveBy(40, 40);
+        Blockly.Events.fire(new (Blockly.Events.get(Blockly.Events.BLOCK_CREATE))(b));
+        return b.id; }})()""")
+
+
+def block_types_on_page(qtbot, view) -> list:
+    """Types of all blocks in the workspace."""
+    return run_js(qtbot, view, "Blockly.getMainWorkspace().getAllBlocks(false).map(b => b.type).sort()")

@@ -1,0 +1,190 @@
+"""Programs on disk through the window: open, save, round trip, bad files, import, export."""
+import json
+
+import pytest
+from conftest import error_boxes, state
+from page_tools import add_block_as_user
+from program_builder import block, number, rockly_document, stack, text
+from PySide6.QtWidgets import QMessageBox
+
+from rockly_desktop.core.program import load_program
+
+PICK_UP = stack(block("hobbit_arm_gripper", {"movement": "OpenGripper"}),
+                block("hobbit_arm_move", {"movement": "MoveToPreGraspFloor"}),
+                block("hobbit_arm_gripper", {"movement": "CloseGripper"}))
+
+
+@pytest.fixture
+def pick_up_file(tmp_path):
+    path = tmp_path / "pick-up.rockly"
+    path.write_text(rockly_document([PICK_UP]), encoding="utf-8")
+    return path
+
+
+def wait_for_code(qtbot, window, expected):
+    qtbot.waitUntil(lambda: window.code_dock.view.toPlainText() == expected, timeout=10000)
+
+
+def open_program(qtbot, window, path, importing=False):
+    """Open (or import) ``path`` and wait until the window has taken it over."""
+    with qtbot.waitSignal(window.files.sig_document_changed, timeout=10000):
+        assert (window.files.import_xml if importing else window.files.open)(str(path))
+
+
+def test_open_shows_blocks_and_their_python(qtbot, window, pick_up_file):
+    open_program(qtbot, window, pick_up_file)
+    wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
+    assert window.windowTitle().startswith("pick-up.rockly")
+    assert not window.isWindowModified()
+
+
+def test_an_edit_marks_the_program_modified_and_save_clears_it(qtbot, window, pick_up_file):
+    open_program(qtbot, window, pick_up_file)
+    wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
+    add_block_as_user(qtbot, window.editor, "hobbit_sos")
+    qtbot.waitUntil(window.isWindowModified, timeout=5000)
+    assert window.files.save()
+    assert not window.isWindowModified()
+    saved = load_program(pick_up_file)
+    assert saved.profile_id == "hobbit"
+    assert {b["type"] for b in saved.workspace["blocks"]["blocks"]} == {"hobbit_arm_gripper", "hobbit_sos"}
+
+
+def test_save_and_open_round_trip_keeps_every_character(qtbot, driver, tmp_path):
+    nasty = "say \"hi\"\nit's \\ '''\"\"\" 🤖 Grüße"
+    source = tmp_path / "source.rockly"
+    source.write_text(rockly_document([block("hobbit_show_info", inputs={"text": text(nasty)}, x=10, y=10)]), encoding="utf-8")
+    window = driver.open_window()
+    open_program(qtbot, window, source)
+    qtbot.waitUntil(lambda: "show_info" in window.code_dock.view.toPlainText(), timeout=10000)
+    target = tmp_path / "copy.rockly"
+    assert window.files.save_as(str(target))
+    first = state(window)
+
+    reopened = driver.open_window()
+    open_program(qtbot, reopened, target)
+    qtbot.waitUntil(lambda: "show_info" in reopened.code_dock.view.toPlainText(), timeout=10000)
+    assert state(reopened) == first
+    assert load_program(target).workspace["blocks"]["blocks"][0]["inputs"]["text"]["block"]["fields"]["TEXT"] == nasty
+
+
+BAD_FILES = {
+    "broken.rockly": (b'{"format": "rockly-program", "version": 1, "profile": "hobbit", "workspace": {"blo', "broken JSON"),
+    "empty.rockly": (b"", "empty"),
+    "foreign.rockly": (b'{"name": "my-package", "version": "1.0.0"}', "not a Rockly program"),
+    "list.rockly": (b"[1, 2, 3]", "not a Rockly program"),
+    "newer.rockly": (b'{"format": "rockly-program", "version": 99, "profile": "hobbit", "workspace": {}}', "newer Rockly"),
+    "binary.rockly": (b"\x89PNG\r\n\x1a\n\x00\x00\xff\xfe", "not text"),
+    "no-profile.rockly": (b'{"format": "rockly-program", "version": 1, "workspace": {}}', "robot profile"),
+    "page.xml": (b"<html><body>hello</body></html>", "not a Blockly program"),
+    "cut.xml": (b'<xml xmlns="https://developers.google.com/blockly/xml"><block type="hobbit_sos"', "not valid Blockly XML"),
+}
+
+
+@pytest.mark.parametrize("name", sorted(BAD_FILES))
+def test_a_bad_file_is_explained_and_changes_nothing(qtbot, window, pick_up_file, tmp_path, name):
+    open_program(qtbot, window, pick_up_file)
+    wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
+    before = state(window)
+    content, expected_words = BAD_FILES[name]
+    bad = tmp_path / name
+    bad.write_bytes(content)
+
+    assert not window.files.open(str(bad))
+    messages = error_boxes(window)
+    assert len(messages) == 1 and expected_words in messages[0] and name in messages[0]
+    assert state(window) == before
+    assert window.files.path == str(pick_up_file)
+    assert bad.read_bytes() == content
+
+
+def test_missing_file_is_explained(window, tmp_path):
+    assert not window.files.open(str(tmp_path / "gone.rockly"))
+    assert "does not exist" in error_boxes(window)[0]
+
+
+def test_unknown_blocks_are_named_with_their_missing_profile(qtbot, window, tmp_path):
+    path = tmp_path / "turtle.rockly"
+    path.write_text(rockly_document([block("turtle_drive"), block("turtle_scan"), block("hobbit_sos")], profile="turtle"))
+    assert not window.files.open(str(path))
+    message = error_boxes(window)[0]
+    assert "turtle_drive" in message and "turtle_scan" in message and "hobbit_sos" not in message
+    assert "'turtle'" in message and "not installed" in message
+
+
+def test_unknown_blocks_in_an_installed_profile_are_named(window, tmp_path):
+    path = tmp_path / "future.rockly"
+    path.write_text(rockly_document([block("hobbit_dance")]))
+    assert not window.files.open(str(path))
+    assert "hobbit_dance" in error_boxes(window)[0]
+
+
+FIRST_ROCKLY_XML = """<xml xmlns="https://developers.google.com/blockly/xml">
+  <variables><variable id="v1">name</variable></variables>
+  <block type="hobbit_emo" x="20" y="20"><field name="emotion">HAPPY</field>
+    <next><block type="hobbit_arm_gripper"><field name="gripper_position">close</field>
+    <next><block type="variables_set"><field name="VAR" id="v1">name</field>
+      <value name="VALUE"><block type="hobbit_user_input"><value name="text">
+        <block type="text"><field name="TEXT">What's your name?</field></block></value></block></value>
+    <next><block type="hobbit_move"><field name="direction">-</field>
+      <value name="speed"><block type="math_number"><field name="NUM">2</field></block></value>
+    </block></next></block></next></block></next></block>
+</xml>"""
+
+
+def test_import_of_a_first_rockly_xml_program(qtbot, window, tmp_path):
+    path = tmp_path / "old.xml"
+    path.write_text(FIRST_ROCKLY_XML, encoding="utf-8")
+    open_program(qtbot, window, path, importing=True)
+    wait_for_code(qtbot, window, "name = None\n\n\nrobot.show_emotion('HAPPY')\nrobot.gripper('close')\n"
+                                 "name = robot.ask_text('What\\'s your name?')\nrobot.drive(2, 'backward')\n")
+    assert window.files.path is None and window.isWindowModified()
+    assert path.read_text(encoding="utf-8") == FIRST_ROCKLY_XML
+
+
+def test_export_writes_the_generated_python(qtbot, window, pick_up_file, tmp_path):
+    open_program(qtbot, window, pick_up_file)
+    wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
+    target = tmp_path / "out.py"
+    assert window.files.export_python(str(target))
+    exported = target.read_text(encoding="utf-8")
+    assert exported.endswith("robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
+    assert exported.startswith("# Generated by Rockly")
+    compile(exported, str(target), "exec")
+
+
+def test_save_into_a_read_only_folder_fails_clearly_and_keeps_the_old_file(qtbot, window, pick_up_file, tmp_path):
+    open_program(qtbot, window, pick_up_file)
+    wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
+    assert not window.files.save_as(str(tmp_path / "missing-folder" / "x.rockly"))
+    assert "cannot write in this folder" in error_boxes(window)[0]
+    assert window.files.path == str(pick_up_file)
+
+
+def test_unsaved_changes_prompt_before_they_are_lost(qtbot, window, pick_up_file, answer_prompts):
+    add_block_as_user(qtbot, window.editor, "hobbit_sos")
+    qtbot.waitUntil(window.isWindowModified, timeout=5000)
+    asked = answer_prompts(QMessageBox.StandardButton.Cancel)
+    assert not window.files.open(str(pick_up_file))
+    assert asked and "Untitled" in asked[0]
+    assert "robot.call_sos()" in state(window)["python"]
+    answer_prompts(QMessageBox.StandardButton.Discard)
+    open_program(qtbot, window, pick_up_file)
+    wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
+
+
+def test_new_program_is_empty_and_unnamed(qtbot, window, pick_up_file):
+    open_program(qtbot, window, pick_up_file)
+    wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
+    window.files.new()
+    wait_for_code(qtbot, window, "")
+    assert window.files.path is None and window.windowTitle().startswith("Untitled")
+
+
+def test_a_large_program_opens(qtbot, window, tmp_path):
+    blocks = [block("hobbit_move", {"direction": "+"}, {"speed": number(i)}) for i in range(300)]
+    path = tmp_path / "large.rockly"
+    path.write_text(rockly_document([stack(*blocks)]))
+    open_program(qtbot, window, path)
+    qtbot.waitUntil(lambda: window.code_dock.view.toPlainText().count("\n") == 300, timeout=15000)
+    assert json.loads(path.read_text())["workspace"]["blocks"]["blocks"][0]["type"] == "hobbit_move"
