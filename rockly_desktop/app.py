@@ -1,4 +1,5 @@
 """The composition root: builds the Qt application, the profiles and the main window."""
+import logging
 import os
 import sys
 
@@ -13,6 +14,26 @@ def prepare_qt_environment():
     """
     if hasattr(os, "geteuid") and os.geteuid() == 0:
         os.environ.setdefault("QTWEBENGINE_DISABLE_SANDBOX", "1")
+    flags = os.environ.get("QTWEBENGINE_CHROMIUM_FLAGS", "")
+    if "--log-level" not in flags:
+        # Chromium's own log (D-Bus, GPU probing) means nothing to Rockly's users.
+        os.environ["QTWEBENGINE_CHROMIUM_FLAGS"] = f"{flags} --log-level=3".strip()
+
+
+def route_qt_messages_to_logging():
+    """Send Qt's messages to the ``qt`` logger: rendering fallbacks and the like are not
+    shown unless logging is turned up (``ROCKLY_LOG=debug``); real errors still are."""
+    from PySide6.QtCore import QtMsgType, qInstallMessageHandler
+
+    logger = logging.getLogger("qt")
+    levels = {QtMsgType.QtDebugMsg: logging.DEBUG, QtMsgType.QtInfoMsg: logging.DEBUG,
+              QtMsgType.QtWarningMsg: logging.INFO, QtMsgType.QtCriticalMsg: logging.ERROR,
+              QtMsgType.QtFatalMsg: logging.CRITICAL}
+
+    def handler(kind, _context, message):
+        logger.log(levels.get(kind, logging.INFO), "%s", message)
+
+    qInstallMessageHandler(handler)
 
 
 def create_application(argv=None):
@@ -24,6 +45,7 @@ def create_application(argv=None):
 
     app = QApplication.instance()
     if app is None:
+        route_qt_messages_to_logging()
         QCoreApplication.setAttribute(Qt.ApplicationAttribute.AA_ShareOpenGLContexts)
         app = QApplication(list(argv or sys.argv[:1]))
         app.setOrganizationName("Rockly")

@@ -6,6 +6,7 @@
     rockly export PROGRAM -o OUT.py     write the Python generated from a program
 """
 import argparse
+import logging
 import os
 import sys
 from pathlib import Path
@@ -73,7 +74,8 @@ def _plugins_validate(path: Path) -> int:
 
 
 def _export(program_path: Path, output: Path, language: str) -> int:
-    os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+    if not os.environ.get("QT_QPA_PLATFORM"):
+        os.environ["QT_QPA_PLATFORM"] = "offscreen"  # no window: works over ssh and in CI
     from rockly_desktop.app import create_application
     from rockly_desktop.bridge.headless import HeadlessEditor
     from rockly_desktop.core.errors import RocklyError
@@ -105,6 +107,7 @@ def _export(program_path: Path, output: Path, language: str) -> int:
 def main(argv=None) -> int:
     """Entry point of the ``rockly`` command."""
     argv = list(sys.argv[1:] if argv is None else argv)
+    logging.basicConfig(level=os.environ.get("ROCKLY_LOG", "warning").upper(), format="%(levelname)s %(name)s: %(message)s")
     if argv and argv[0] in SUBCOMMANDS:
         args = _tool_parser().parse_args(argv)
         if args.command == "plugins":
