@@ -28,7 +28,8 @@ class PageChannel(QObject):
         self._open = False
 
     def reset(self):
-        """Forget the page: a new one is loading. Pending callbacks will never be answered."""
+        """Forget the page: a new one is loading. Calls it was sent are never answered;
+        queued calls wait for the next page."""
         self._open = False
         self._callbacks.clear()
 
@@ -36,8 +37,13 @@ class PageChannel(QObject):
         """The page is set up: send everything queued, in order."""
         self._open = True
         queued, self._queued = self._queued, []
-        for message in queued:
-            self.toPage.emit(message)
+        for message, call_id, callback in queued:
+            self._send(message, call_id, callback)
+
+    def _send(self, message: str, call_id: int, callback):
+        if callback is not None:
+            self._callbacks[call_id] = callback
+        self.toPage.emit(message)
 
     @property
     def is_open(self) -> bool:
@@ -51,13 +57,11 @@ class PageChannel(QObject):
         for ``setup`` itself).
         """
         call_id = next(self._ids)
-        if callback is not None:
-            self._callbacks[call_id] = callback
         message = json.dumps({"call": name, "id": call_id, "args": args or {}})
         if self._open or immediately:
-            self.toPage.emit(message)
+            self._send(message, call_id, callback)
         else:
-            self._queued.append(message)
+            self._queued.append((message, call_id, callback))
 
     @Slot(str)
     def fromPage(self, text: str):  # noqa: N802 - name seen by the page's JavaScript

@@ -73,9 +73,12 @@ class EditorView(QWebEngineView):
         self.channel.sig_hello.connect(self._on_hello)
         self.channel.sig_event.connect(self._on_event)
         self._setup_args = None
+        self._page_state = "loading"  # -> "hello" (page waits for setup) -> "setup sent"
         self.known_block_types = frozenset()
         self.workspace = {}
         self.python = ""
+        # Chromium starts and loads Blockly while Python goes on building the window.
+        self.load(QUrl.fromLocalFile(str(paths.editor_page())))
 
     @property
     def is_ready(self) -> bool:
@@ -83,14 +86,22 @@ class EditorView(QWebEngineView):
         return self.channel.is_open
 
     def start(self, editor_config: dict, language: str):
-        """(Re)load the page for a profile's ``editor_config`` in ``language``."""
+        """Set the page up for a profile's ``editor_config`` in ``language``.
+
+        The first call configures the page that began loading when the view was made;
+        later calls (another profile or language) load a fresh page.
+        """
         self._setup_args = {
             "language": language,
             "profile": editor_config,
             "media": QUrl.fromLocalFile(str(paths.blockly_vendor_dir() / "media") + "/").toString(),
         }
-        self.channel.reset()
-        self.load(QUrl.fromLocalFile(str(paths.editor_page())))
+        if self._page_state == "hello":
+            self._send_setup()
+        elif self._page_state == "setup sent":
+            self.channel.reset()
+            self._page_state = "loading"
+            self.load(QUrl.fromLocalFile(str(paths.editor_page())))
 
     def call(self, name: str, args=None, callback=None):
         """Run a page call when the page is ready; ``callback(result, error)`` gets the answer."""
@@ -136,8 +147,14 @@ class EditorView(QWebEngineView):
         self.call("redo")
 
     def _on_hello(self):
+        self.channel.reset()
+        self._page_state = "hello"
         if self._setup_args is not None:
-            self.channel.call("setup", self._setup_args, self._on_setup, immediately=True)
+            self._send_setup()
+
+    def _send_setup(self):
+        self._page_state = "setup sent"
+        self.channel.call("setup", self._setup_args, self._on_setup, immediately=True)
 
     def _on_setup(self, result, error):
         if error:

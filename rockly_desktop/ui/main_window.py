@@ -1,6 +1,6 @@
 """Rockly's main window: the block editor, the Code dock, menus and the status bar."""
 from PySide6.QtCore import Qt
-from PySide6.QtGui import QAction, QActionGroup, QIcon, QKeySequence
+from PySide6.QtGui import QAction, QActionGroup, QKeySequence
 from PySide6.QtWidgets import QLabel, QMainWindow, QMessageBox
 
 from rockly_desktop import __version__
@@ -12,9 +12,10 @@ from rockly_desktop.ui.texts import tr
 
 
 class MainWindow(QMainWindow):
-    """The editor window. ``registry`` holds the profiles, ``settings`` what is remembered."""
+    """The editor window. ``registry`` holds the profiles, ``settings`` what is remembered;
+    ``editor`` may be passed in already loading its page (see ``app.build_main_window``)."""
 
-    def __init__(self, registry, settings, icon: QIcon = None):
+    def __init__(self, registry, settings, editor: EditorView = None):
         super().__init__()
         self.registry = registry
         self.settings = settings
@@ -23,10 +24,8 @@ class MainWindow(QMainWindow):
         self._builtin_types = None
         self._started = False
         self.setObjectName("main_window")
-        if icon is not None:
-            self.setWindowIcon(icon)
 
-        self.editor = EditorView(self)
+        self.editor = editor or EditorView()
         self.setCentralWidget(self.editor)
         self.code_dock = CodeDock(tr("code_dock", self.language), self)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.code_dock)

@@ -1,0 +1,15 @@
+"""Run every benchmark in this folder, one after the other (``make bench``)."""
+import subprocess
+import sys
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+
+if __name__ == "__main__":
+    failed = 0
+    for script in sorted(HERE.glob("*.py")):
+        if script.name == Path(__file__).name:
+            continue
+        print(f"== {script.name}", flush=True)
+        failed |= subprocess.call([sys.executable, str(script)])
+    sys.exit(1 if failed else 0)
