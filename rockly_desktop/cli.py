@@ -77,11 +77,11 @@ def _export(program_path: Path, output: Path, language: str) -> int:
     if not os.environ.get("QT_QPA_PLATFORM"):
         os.environ["QT_QPA_PLATFORM"] = "offscreen"  # no window: works over ssh and in CI
     from rockly_desktop.app import create_application
-    from rockly_desktop.bridge.headless import HeadlessEditor
+    from rockly_desktop.bridge.headless import HeadlessEditor, UnknownBlocks
     from rockly_desktop.core.errors import RocklyError
     from rockly_desktop.core.export import python_module_text
     from rockly_desktop.core.program import write_text_atomically
-    from rockly_desktop.plugins.opening import read_program_to_open
+    from rockly_desktop.plugins.opening import read_program_to_open, unknown_blocks_error
     from rockly_desktop.plugins.registry import ProfileRegistry
 
     create_application()
@@ -89,12 +89,18 @@ def _export(program_path: Path, output: Path, language: str) -> int:
     if not registry.profiles:
         print("rockly export: no robot profile is installed", file=sys.stderr)
         return 2
+    try:
+        program = read_program_to_open(program_path, registry, registry.default())
+    except RocklyError as error:
+        print(f"rockly export: {error}", file=sys.stderr)
+        return 1
     editor = HeadlessEditor(language)
     try:
-        editor.use_profile(registry.default())
-        program = read_program_to_open(program_path, registry, editor.builtin_block_types, registry.default())
         code = editor.python_for(program)
         write_text_atomically(output, python_module_text(code, program.profile.id, program_path.name))
+    except UnknownBlocks as refused:
+        print(f"rockly export: {unknown_blocks_error(program, refused.block_types, registry)}", file=sys.stderr)
+        return 1
     except (RocklyError, RuntimeError) as error:
         print(f"rockly export: {error}", file=sys.stderr)
         return 1

@@ -3,7 +3,9 @@
  *
  * Python -> page: {call, id, args} on the bridge's `toPage` signal.
  * Page -> Python: {reply: id, result | error}, or {event: 'hello' | 'changed' | 'error', ...}
- * through the bridge's `fromPage` slot. Python queues its calls until `setup` has run.
+ * through the bridge's `fromPage` slot. Python queues its calls until `setup` has run;
+ * `setup` may carry a first call (the program to open at start) so it shows in one go.
+ * A program with block types the page does not know is refused with `unknownTypes`.
  */
 'use strict';
 
@@ -82,8 +84,33 @@
     }
   }
 
+  /** Block types in a program (Blockly JSON or XML) that this page cannot create. */
+  function unknownTypes(types) {
+    return [...new Set(types)].filter((type) => !Blockly.Blocks[type]).sort();
+  }
+
+  function typesInJson(json) {
+    const types = [];
+    const pending = [...((json.blocks || {}).blocks || [])];
+    while (pending.length) {
+      const block = pending.pop();
+      if (!block || typeof block !== 'object') continue;
+      types.push(String(block.type));
+      for (const connection of [...Object.values(block.inputs || {}), block.next]) {
+        if (connection && typeof connection === 'object') {
+          for (const kind of ['block', 'shadow']) if (connection[kind]) pending.push(connection[kind]);
+        }
+      }
+    }
+    return types;
+  }
+
+  function typesInXml(dom) {
+    return [...dom.querySelectorAll('block, shadow')].map((element) => String(element.getAttribute('type')));
+  }
+
   const calls = {
-    async setup({language, profile, media}) {
+    async setup({language, profile, media, first}) {
       if (language !== 'en') await loadScript('vendor/msg/' + language + '.js');
       RocklyTemplates.install(profile.blocks);
       workspace = Blockly.inject('workspace', {
@@ -97,15 +124,21 @@
         sounds: false,
       });
       workspace.addChangeListener(onWorkspaceEvent);
-      return {blockTypes: Object.keys(Blockly.Blocks)};
+      const program = first ? calls[first.call](first.args) : null;
+      return {blockTypes: Object.keys(Blockly.Blocks), program};
     },
     load({workspace: json}) {
+      const unknown = unknownTypes(typesInJson(json));
+      if (unknown.length) return {unknownTypes: unknown};
       replaceOrRestore(() => Blockly.serialization.workspaces.load(json, workspace));
-      return true;
+      return {loaded: true};
     },
     importXml({xml}) {
-      replaceOrRestore(() => Blockly.Xml.domToWorkspace(Blockly.utils.xml.textToDom(xml), workspace));
-      return state();
+      const dom = Blockly.utils.xml.textToDom(xml);
+      const unknown = unknownTypes(typesInXml(dom));
+      if (unknown.length) return {unknownTypes: unknown};
+      replaceOrRestore(() => Blockly.Xml.domToWorkspace(dom, workspace));
+      return {loaded: true, ...state()};
     },
     clear() {
       replaceWorkspace(() => {});

@@ -73,6 +73,7 @@ class EditorView(QWebEngineView):
         self.channel.sig_hello.connect(self._on_hello)
         self.channel.sig_event.connect(self._on_event)
         self._setup_args = None
+        self._on_first_result = None
         self._page_state = "loading"  # -> "hello" (page waits for setup) -> "setup sent"
         self.known_block_types = frozenset()
         self.workspace = {}
@@ -85,17 +86,21 @@ class EditorView(QWebEngineView):
         """True when the workspace exists and calls go straight to the page."""
         return self.channel.is_open
 
-    def start(self, editor_config: dict, language: str):
+    def start(self, editor_config: dict, language: str, first_call=None, on_first_result=None):
         """Set the page up for a profile's ``editor_config`` in ``language``.
 
         The first call configures the page that began loading when the view was made;
-        later calls (another profile or language) load a fresh page.
+        later calls (another profile or language) load a fresh page. ``first_call``
+        (name, args) runs inside the set-up, before the first paint (a program to open);
+        ``on_first_result(result, error)`` gets its answer.
         """
         self._setup_args = {
             "language": language,
             "profile": editor_config,
             "media": QUrl.fromLocalFile(str(paths.blockly_vendor_dir() / "media") + "/").toString(),
+            "first": {"call": first_call[0], "args": first_call[1]} if first_call else None,
         }
+        self._on_first_result = on_first_result
         if self._page_state == "hello":
             self._send_setup()
         elif self._page_state == "setup sent":
@@ -127,11 +132,14 @@ class EditorView(QWebEngineView):
         return answer["result"]
 
     def load_workspace(self, workspace: dict, callback=None):
-        """Show a workspace (Blockly JSON); the page keeps the old one if this one fails."""
+        """Show a workspace (Blockly JSON); the page keeps the old one if this one fails.
+
+        The answer is ``{"loaded": True}`` or ``{"unknownTypes": [...]}`` (nothing changed).
+        """
         self.call("load", {"workspace": workspace}, callback)
 
     def import_xml(self, xml: str, callback=None):
-        """Show a first-Rockly Blockly XML program; the answer is the new state."""
+        """Show a first-Rockly Blockly XML program; answered like ``load_workspace``."""
         self.call("importXml", {"xml": xml}, callback)
 
     def clear(self):
@@ -159,10 +167,16 @@ class EditorView(QWebEngineView):
     def _on_setup(self, result, error):
         if error:
             self.sig_page_error.emit(f"the editor could not start: {error}")
+            callback, self._on_first_result = self._on_first_result, None
+            if callback is not None:
+                callback(None, error)
             return
         self.known_block_types = frozenset(result["blockTypes"])
         self.channel.open()
         self.sig_ready.emit()
+        callback, self._on_first_result = self._on_first_result, None
+        if callback is not None:
+            callback(result.get("program"), None)
 
     def _on_event(self, message: dict):
         event = message.get("event")

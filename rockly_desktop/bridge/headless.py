@@ -4,6 +4,14 @@ from PySide6.QtCore import QCoreApplication, QEvent, QEventLoop, QTimer
 from rockly_desktop.bridge.editor_view import EditorView
 
 
+class UnknownBlocks(Exception):
+    """The editor refused a program: it uses block types the page does not know."""
+
+    def __init__(self, block_types):
+        super().__init__(", ".join(block_types))
+        self.block_types = block_types
+
+
 class HeadlessEditor:
     """An EditorView that is never shown, driven synchronously."""
 
@@ -11,12 +19,11 @@ class HeadlessEditor:
         self.language = language
         self.view = EditorView()
         self.profile = None
-        self.builtin_block_types = frozenset()
         self._errors = []
         self.view.sig_page_error.connect(self._errors.append)
 
     def use_profile(self, profile, timeout_ms: int = 30000):
-        """Load the editor page with ``profile``'s blocks and wait until it is ready."""
+        """Set the editor page up with ``profile``'s blocks and wait until it is ready."""
         if self.profile is not None and profile.id == self.profile.id:
             return
         loop = QEventLoop()
@@ -31,14 +38,14 @@ class HeadlessEditor:
             detail = self._errors[-1] if self._errors else f"no answer within {timeout_ms / 1000:.0f} s"
             raise RuntimeError(f"the block editor did not start: {detail}")
         self.profile = profile
-        self.builtin_block_types = frozenset(self.view.known_block_types - profile.block_types)
 
     def python_for(self, program) -> str:
-        """The Python generated for a checked ProgramToOpen (its profile must be in use)."""
+        """The Python generated for a ProgramToOpen; raises UnknownBlocks if the page refuses it."""
         self.use_profile(program.profile)
-        if program.is_import:
-            return self.view.call_blocking("importXml", {"xml": program.xml})["python"]
-        self.view.call_blocking("load", {"workspace": program.workspace})
+        name, args = program.editor_call()
+        result = self.view.call_blocking(name, args)
+        if result.get("unknownTypes"):
+            raise UnknownBlocks(result["unknownTypes"])
         return self.view.call_blocking("getState")["python"]
 
     def close(self):

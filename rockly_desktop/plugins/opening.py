@@ -1,7 +1,8 @@
-"""Reading a program file for the editor: which profile it needs and whether every block is known.
+"""Reading a program file for the editor: the profile it needs and what the editor must do.
 
-Everything is checked before the editor is touched, so a bad file never replaces the
-program on screen.
+The file is read and checked here; whether every block exists is checked by the editor
+page itself (it knows Blockly's own blocks), which refuses a program with unknown
+blocks before touching the workspace. ``unknown_blocks_error`` words that refusal.
 """
 from dataclasses import dataclass
 from pathlib import Path
@@ -19,17 +20,24 @@ XML_SUFFIX = ".xml"
 
 @dataclass(frozen=True)
 class ProgramToOpen:
-    """A program file that passed every check: its profile and its content for the editor."""
+    """A program file that was read: the profile to show it with, and its content."""
 
     path: Path
     profile: Profile
     workspace: dict = None
     xml: str = None
+    declared_profile: str = None
 
     @property
     def is_import(self) -> bool:
         """True for a first-Rockly XML program (it becomes an unsaved Rockly program)."""
         return self.xml is not None
+
+    def editor_call(self) -> tuple:
+        """The editor page call that shows this program: (name, args)."""
+        if self.is_import:
+            return "importXml", {"xml": self.xml}
+        return "load", {"workspace": self.workspace}
 
 
 def _best_profile_for(block_types, registry: ProfileRegistry, fallback: Profile) -> Profile:
@@ -39,33 +47,27 @@ def _best_profile_for(block_types, registry: ProfileRegistry, fallback: Profile)
     return best if best_score else fallback
 
 
-def read_program_to_open(path, registry: ProfileRegistry, builtin_types, fallback: Profile) -> ProgramToOpen:
-    """Read a ``.rockly`` or first-Rockly ``.xml`` file and check it can be shown.
+def read_program_to_open(path, registry: ProfileRegistry, fallback: Profile) -> ProgramToOpen:
+    """Read a ``.rockly`` or first-Rockly ``.xml`` file; raise ProgramFileError if it is bad.
 
-    ``builtin_types`` are the block types Blockly itself defines. Raises
-    ProgramFileError for a bad file and UnknownBlocksError when blocks are missing.
+    The profile is the one the program names, or for XML (and programs of a profile that
+    is not installed) the installed one defining most of its blocks, else ``fallback``.
     """
     path = Path(path)
-    builtin_types = set(builtin_types)
     if path.suffix.lower() == XML_SUFFIX:
         root = parse_blockly_xml(read_text_file(path), path)
-        types = set(block_types_in_xml(root))
-        profile = _best_profile_for(types - builtin_types, registry, fallback)
-        unknown = types - builtin_types - profile.block_types
-        if unknown:
-            raise UnknownBlocksError(unknown, None, False)
+        profile = _best_profile_for(set(block_types_in_xml(root)), registry, fallback)
         rename_legacy_fields(root, profile.legacy_fields)
         return ProgramToOpen(path, profile, xml=xml_to_text(root))
-
     program = load_program(path)
-    types = set(block_types_in_workspace(program.workspace))
-    installed = program.profile_id in registry.profiles
-    if installed:
+    if program.profile_id in registry.profiles:
         profile = registry.get(program.profile_id)
-        unknown = types - builtin_types - profile.block_types
     else:
-        profile = _best_profile_for(types - builtin_types, registry, fallback)
-        unknown = types - builtin_types - registry.all_block_types()
-    if unknown:
-        raise UnknownBlocksError(unknown, program.profile_id, installed)
-    return ProgramToOpen(path, profile, workspace=program.workspace)
+        profile = _best_profile_for(set(block_types_in_workspace(program.workspace)), registry, fallback)
+    return ProgramToOpen(path, profile, workspace=program.workspace, declared_profile=program.profile_id)
+
+
+def unknown_blocks_error(program: ProgramToOpen, unknown_types, registry: ProfileRegistry) -> UnknownBlocksError:
+    """The error for a program the editor refused because of ``unknown_types``."""
+    declared = program.declared_profile
+    return UnknownBlocksError(unknown_types, declared, declared in registry.profiles if declared else False)

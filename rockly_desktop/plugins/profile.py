@@ -11,7 +11,7 @@ from rockly_desktop.plugins.manifest import MANIFEST_NAME, read_manifest
 from rockly_desktop.plugins.toolbox import read_toolbox, toolbox_json
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Profile:
     """A robot profile read from its folder (manifest, blocks, toolbox); no code imported."""
 
@@ -34,8 +34,11 @@ class Profile:
         return {spec.type for spec in self.blocks}
 
     def block(self, block_type: str) -> BlockSpec:
-        """The BlockSpec of one of this profile's blocks."""
-        return next(spec for spec in self.blocks if spec.type == block_type)
+        """The BlockSpec of one of this profile's blocks; KeyError if it has none of that type."""
+        for spec in self.blocks:
+            if spec.type == block_type:
+                return spec
+        raise KeyError(block_type)
 
     @property
     def legacy_fields(self) -> dict:

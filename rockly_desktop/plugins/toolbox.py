@@ -63,14 +63,13 @@ def read_toolbox(path: Path, shared_folder: Path, profile_block_types: set) -> l
     if not isinstance(raw_categories, list) or not raw_categories:
         raise ManifestError(path, "categories", "must be a non-empty list of categories")
     available = shared_category_names(shared_folder)
-    categories, shared_types = [], set()
+    categories = []
     for index, raw in enumerate(raw_categories):
         where = f"categories[{index}]"
         if isinstance(raw, dict) and "shared" in raw:
             if raw["shared"] not in available:
                 raise ManifestError(path, f"{where}.shared", f"no shared category '{raw['shared']}' (there are: {', '.join(available)})")
             category = read_shared_category(raw["shared"], shared_folder)
-            shared_types |= {entry["type"] for entry in category.get("contents", [])}
         else:
             category = _category(raw, path, where)
             for position, entry in enumerate(category.get("contents", [])):

@@ -1,4 +1,6 @@
 """The base of every profile's robot commands (the object bound as ``robot`` in programs)."""
+import math
+
 from rockly_desktop.core.errors import RobotCommandError
 
 
@@ -20,7 +22,11 @@ class RobotCommands:
     @staticmethod
     def choose(value, choices, what: str):
         """Return ``choices[value]``; a value not in ``choices`` raises a RobotCommandError listing them."""
-        if value not in choices:
+        try:
+            known = value in choices
+        except TypeError:  # an unhashable value, e.g. a list from a program
+            known = False
+        if not known:
             listed = ", ".join(repr(choice) for choice in choices)
             raise RobotCommandError(f"unknown {what} {value!r}; use one of {listed}")
         return choices[value]
@@ -28,6 +34,6 @@ class RobotCommands:
     @staticmethod
     def number(value, what: str) -> float:
         """``value`` as a float; anything else raises a RobotCommandError naming ``what``."""
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
             raise RobotCommandError(f"{what} must be a number, not {value!r}")
         return float(value)

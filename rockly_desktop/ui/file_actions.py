@@ -11,7 +11,7 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.export import python_module_text
 from rockly_desktop.core.program import PROGRAM_SUFFIX, Program, save_program, write_text_atomically
-from rockly_desktop.plugins.opening import read_program_to_open
+from rockly_desktop.plugins.opening import read_program_to_open, unknown_blocks_error
 from rockly_desktop.ui.texts import tr
 
 
@@ -139,27 +139,24 @@ class ProgramFiles(QObject):
     def _open_checked(self, path) -> bool:
         window = self.window
         try:
-            program = read_program_to_open(path, window.registry, window.builtin_block_types(), window.profile)
+            program = read_program_to_open(path, window.registry, window.profile)
         except RocklyError as error:
             self._show_error("cannot_open", error)
             return False
 
-        def on_loaded(result, error):
+        def on_shown(result, error):
             if error:
                 self._show_error("cannot_open", f"{path}: the editor could not show this program ({error})")
-                return
-            if program.is_import:
+            elif result.get("unknownTypes"):
+                self._show_error("cannot_open", unknown_blocks_error(program, result["unknownTypes"], window.registry))
+            elif program.is_import:
                 self._set_document(None, True)
                 self.sig_status.emit(tr("imported", window.language, path=path))
             else:
                 self._set_document(path, False)
                 self.sig_status.emit(tr("opened", window.language, path=path))
 
-        window.activate_profile(program.profile)
-        if program.is_import:
-            window.editor.import_xml(program.xml, on_loaded)
-        else:
-            window.editor.load_workspace(program.workspace, on_loaded)
+        window.show_program(program, on_shown)
         return True
 
     def _write(self, path) -> bool:

@@ -21,8 +21,8 @@ class MainWindow(QMainWindow):
         self.settings = settings
         self.language = settings.language
         self.profile = self._initial_profile()
-        self._builtin_types = None
-        self._started = False
+        self._starting = False
+        self._editor_started = False
         self.setObjectName("main_window")
 
         self.editor = editor or EditorView()
@@ -36,7 +36,7 @@ class MainWindow(QMainWindow):
         self.files.sig_document_changed.connect(self._update_title)
         self.files.sig_status.connect(lambda text: self.statusBar().showMessage(text, 8000))
         self.editor.sig_changed.connect(self._on_editor_changed)
-        self.editor.sig_ready.connect(self._on_editor_ready)
+        self.editor.sig_ready.connect(self.statusBar().clearMessage)
         self.editor.sig_page_error.connect(
             lambda message: self.statusBar().showMessage(tr("editor_error", self.language, message=message), 15000))
 
@@ -57,10 +57,15 @@ class MainWindow(QMainWindow):
         return self.registry.default()
 
     def start(self, open_path=None):
-        """Load the editor page; then open ``open_path`` or the last file, if any."""
-        self._pending_open = open_path or self.settings.last_file
+        """Start the editor, with ``open_path`` or the last file shown in its first frame."""
         self.statusBar().showMessage(tr("loading_editor", self.language))
-        self._restart_editor()
+        self._starting = True
+        path = open_path or self.settings.last_file
+        if path:
+            self.files.open(path)
+        self._starting = False
+        if not self._editor_started:
+            self._restart_editor()
         if self.registry.errors:
             details = "\n\n".join(str(error) for error in self.registry.errors)
             box = QMessageBox(QMessageBox.Icon.Warning, tr("profile_errors_title", self.language), details,
@@ -68,35 +73,33 @@ class MainWindow(QMainWindow):
             box.setObjectName("profile_errors_box")
             box.open()
 
-    def _restart_editor(self):
-        self.editor.start(self.profile.editor_config(self.language), self.language)
+    def _restart_editor(self, first_call=None, on_first_result=None):
+        self._editor_started = True
+        self.editor.start(self.profile.editor_config(self.language), self.language, first_call, on_first_result)
         self.profile_label.setText(tr("robot_status", self.language, name=self.profile.display_name(self.language)))
 
-    def _on_editor_ready(self):
-        if self._builtin_types is None:
-            self._builtin_types = frozenset(self.editor.known_block_types - self.profile.block_types)
-        self.statusBar().clearMessage()
-        if not self._started:
-            self._started = True
-            path, self._pending_open = self._pending_open, None
-            if path:
-                self.files.open(path)
-
-    def builtin_block_types(self) -> frozenset:
-        """Block types Blockly itself defines (known once the editor has started)."""
-        return self._builtin_types or frozenset()
+    def show_program(self, program, callback):
+        """Show a checked program (switching to its robot); ``callback(result, error)`` gets the page's answer."""
+        call = program.editor_call()
+        if self._starting:
+            self._set_profile(program.profile)
+            self._restart_editor(call, callback)
+        else:
+            self.activate_profile(program.profile)
+            self.editor.call(*call, callback)
 
     # --- profile and language -----------------------------------------------------------
 
     def activate_profile(self, profile):
         """Make ``profile`` the active robot (reloading the editor if it changes)."""
-        if profile.id == self.profile.id:
-            return
+        if profile.id != self.profile.id:
+            self._set_profile(profile)
+            self._restart_editor()
+
+    def _set_profile(self, profile):
         self.profile = profile
         self.settings.profile_id = profile.id
-        self._restart_editor()
-        for action in self.profile_actions.actions():
-            action.setChecked(action.data() == profile.id)
+        self._check_active_profile_action()
 
     def choose_profile(self, profile_id: str):
         """The user picked a robot in the Robot menu: a new program for that robot."""

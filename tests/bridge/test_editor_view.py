@@ -97,11 +97,33 @@ def test_undo_and_redo(qtbot, editor):
 
 
 def test_a_workspace_blockly_cannot_load_leaves_the_current_one(qtbot, editor):
-    assert call(qtbot, editor, "load", {"workspace": workspace(block("hobbit_stop"))}) == (True, None)
-    result, error = call(qtbot, editor, "load", {"workspace": workspace(block("no_such_block"))})
-    assert result is None and "no_such_block" in error
+    assert call(qtbot, editor, "load", {"workspace": workspace(block("hobbit_stop"))}) == ({"loaded": True}, None)
+    broken = workspace(block("hobbit_move", inputs={"no_such_input": number(1)}))
+    result, error = call(qtbot, editor, "load", {"workspace": broken})
+    assert result is None and "no_such_input" in error
     state, _ = call(qtbot, editor, "getState")
     assert state["python"] == "robot.stop()\n"
+
+
+def test_unknown_block_types_are_refused_before_the_workspace_changes(qtbot, editor):
+    call(qtbot, editor, "load", {"workspace": workspace(block("hobbit_stop"))})
+    program = workspace(block("turtle_go", next_block=block("hobbit_sos")), block("controls_if", inputs={"IF0": block("lidar_ok")}))
+    assert call(qtbot, editor, "load", {"workspace": program}) == ({"unknownTypes": ["lidar_ok", "turtle_go"]}, None)
+    xml = '<xml><block type="hobbit_sos"><next><block type="fly_away"></block></next></block></xml>'
+    assert call(qtbot, editor, "importXml", {"xml": xml}) == ({"unknownTypes": ["fly_away"]}, None)
+    assert call(qtbot, editor, "getState")[0]["python"] == "robot.stop()\n"
+
+
+def test_setup_can_show_a_program_in_its_first_frame(qtbot, hobbit):
+    view = EditorView()
+    qtbot.addWidget(view)
+    answers = []
+    with qtbot.waitSignal(view.sig_changed, timeout=30000) as changed:
+        view.start(hobbit.editor_config("en"), "en", ("load", {"workspace": workspace(block("hobbit_sos"))}),
+                   lambda result, error: answers.append((result, error)))
+    assert changed.args[1:] == ["robot.call_sos()\n", "load"]
+    qtbot.waitUntil(lambda: bool(answers))
+    assert answers == [({"loaded": True}, None)]
 
 
 def test_unknown_page_call_is_an_error_not_a_hang(qtbot, editor):

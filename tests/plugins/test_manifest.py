@@ -1,5 +1,6 @@
 """profile.yaml validation: each problem gives a ManifestError naming the file, the field and what is wrong."""
 import os
+import re
 
 import pytest
 from profile_copies import SHARED_TOOLBOXES, EditableProfile, copy_profile
@@ -218,17 +219,20 @@ def test_bad_legacy_fields_are_refused(profile, value, problem):
     assert_manifest_error(profile, "legacy_fields", problem)
 
 
-@pytest.mark.parametrize("text, line, column, problem", [
-    ('schema: 1\nid: hobbit\nname: HOBBIT\n  version: "1.0.0"\n', 4, 10, "mapping values are not allowed here"),
-    ('schema: 1\nid: hobbit\nname: [HOBBIT\nversion: "1.0.0"\n', 4, 8, "expected ',' or ']', but got ':'"),
-    ("schema: 1\n\tid: hobbit\n", 2, 1, "found character '\\t' that cannot start any token"),
+# The problem wording differs between libyaml and PyYAML's pure-Python parser; both name the place.
+@pytest.mark.parametrize("text, line, column, wording", [
+    ('schema: 1\nid: hobbit\nname: HOBBIT\n  version: "1.0.0"\n', 4, 10, r"mapping values are not allowed"),
+    ('schema: 1\nid: hobbit\nname: [HOBBIT\nversion: "1.0.0"\n', 4, 8, r"expected ',' or '\]'"),
+    ("schema: 1\n\tid: hobbit\n", 2, 1, r"tab|'\\t'"),
 ], ids=["bad indentation", "unclosed list", "tab"])
-def test_invalid_yaml_names_line_and_column(profile, text, line, column, problem):
+def test_invalid_yaml_names_line_and_column(profile, text, line, column, wording):
     profile.write_text("profile.yaml", text)
     error = load_error(profile)
     assert error.path == str(profile.path("profile.yaml"))
     assert error.field is None
-    assert error.problem == f"this is not valid YAML at line {line}, column {column}: {problem}"
+    prefix = f"this is not valid YAML at line {line}, column {column}: "
+    assert error.problem.startswith(prefix)
+    assert re.search(wording, error.problem[len(prefix):])
 
 
 @pytest.mark.parametrize("text", ["- schema: 1\n- id: hobbit\n", "hobbit\n", "", "# only a comment\n"],

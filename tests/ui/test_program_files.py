@@ -106,17 +106,21 @@ def test_missing_file_is_explained(window, tmp_path):
 def test_unknown_blocks_are_named_with_their_missing_profile(qtbot, window, tmp_path):
     path = tmp_path / "turtle.rockly"
     path.write_text(rockly_document([block("turtle_drive"), block("turtle_scan"), block("hobbit_sos")], profile="turtle"))
-    assert not window.files.open(str(path))
+    before = state(window)
+    window.files.open(str(path))
+    qtbot.waitUntil(lambda: bool(error_boxes(window)), timeout=10000)
+    assert state(window) == before and window.files.path is None
     message = error_boxes(window)[0]
     assert "turtle_drive" in message and "turtle_scan" in message and "hobbit_sos" not in message
     assert "'turtle'" in message and "not installed" in message
 
 
-def test_unknown_blocks_in_an_installed_profile_are_named(window, tmp_path):
+def test_unknown_blocks_in_an_installed_profile_are_named(qtbot, window, tmp_path):
     path = tmp_path / "future.rockly"
     path.write_text(rockly_document([block("hobbit_dance")]))
-    assert not window.files.open(str(path))
-    assert "hobbit_dance" in error_boxes(window)[0]
+    window.files.open(str(path))
+    qtbot.waitUntil(lambda: bool(error_boxes(window)), timeout=10000)
+    assert "hobbit_dance" in error_boxes(window)[0] and "'hobbit' does not provide them" in error_boxes(window)[0]
 
 
 FIRST_ROCKLY_XML = """<xml xmlns="https://developers.google.com/blockly/xml">
