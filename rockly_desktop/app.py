@@ -58,11 +58,12 @@ def create_application(argv=None):
 def build_main_window(settings_path=None, extra_profile_dirs=()):
     """The main window with every installed profile; ``settings_path`` picks a settings file."""
     from rockly_desktop.bridge.editor_view import EditorView
+
+    editor = EditorView()  # Chromium loads the page while Python reads profiles and builds the window
     from rockly_desktop.plugins.registry import ProfileRegistry
     from rockly_desktop.ui.main_window import MainWindow
     from rockly_desktop.ui.settings import AppSettings
 
-    editor = EditorView()  # its page loads while the profiles are read
     registry = ProfileRegistry.discover(extra_profile_dirs)
     return MainWindow(registry, AppSettings(settings_path), editor)
 
