@@ -27,6 +27,10 @@
   // Rockly writes every string as a Python literal that keeps newlines and quotes exactly.
   python.pythonGenerator.quote_ = RocklyPython.string;
   python.pythonGenerator.multiline_quote_ = RocklyPython.string;
+  // Block ids go into the instrumented code too; Blockly pastes them between quotes
+  // unescaped, so an id from a crafted file could become code. Quote them properly.
+  python.pythonGenerator.injectId = (message, block) =>
+    message.replace(/%1/g, () => RocklyPython.string(block.id));
 
   function loadScript(src) {
     return new Promise((resolve, reject) => {
@@ -63,6 +67,7 @@
     Blockly.Events.disable();
     try {
       workspace.clear();
+      breakpoints.clear();
       fill();
     } finally {
       Blockly.Events.enable();
@@ -81,6 +86,76 @@
     } catch (error) {
       replaceWorkspace(() => Blockly.serialization.workspaces.load(previous, workspace));
       throw error;
+    }
+  }
+
+  // --- running: instrumented code, the current block, breakpoints, errors -------------
+
+  const breakpoints = new Set();
+
+  function markBreakpoint(id, on) {
+    const block = workspace.getBlockById(id);
+    const root = block && block.getSvgRoot && block.getSvgRoot();
+    if (root) root.classList.toggle('rocklyBreakpoint', on);
+  }
+
+  function setBreakpoints(ids) {
+    for (const id of breakpoints) markBreakpoint(id, false);
+    breakpoints.clear();
+    for (const id of ids || []) {
+      if (workspace.getBlockById(id)) {
+        breakpoints.add(id);
+        markBreakpoint(id, true);
+      }
+    }
+  }
+
+  function toggleBreakpoint(id) {
+    const ids = new Set(breakpoints);
+    if (ids.has(id)) ids.delete(id); else ids.add(id);
+    setBreakpoints([...ids]);
+    send({event: 'breakpoints', ids: [...breakpoints]});
+  }
+
+  function registerContextMenu(texts) {
+    const registry = Blockly.ContextMenuRegistry.registry;
+    if (registry.getItem('rocklyBreakpoint')) registry.unregister('rocklyBreakpoint');
+    registry.register({
+      id: 'rocklyBreakpoint',
+      scopeType: Blockly.ContextMenuRegistry.ScopeType.BLOCK,
+      weight: 0,
+      displayText: (scope) => breakpoints.has(scope.block.id) ? texts.removeBreakpoint : texts.addBreakpoint,
+      preconditionFn: (scope) => scope.block.previousConnection || scope.block.nextConnection ? 'enabled' : 'hidden',
+      callback: (scope) => toggleBreakpoint(scope.block.id),
+    });
+  }
+
+  /** The program as it runs: a hook before every statement and in every loop, and its variables. */
+  function runCode() {
+    const generator = python.pythonGenerator;
+    generator.STATEMENT_PREFIX = '__rockly__.block(%1)\n';
+    generator.INFINITE_LOOP_TRAP = '__rockly__.check()\n';
+    try {
+      // The generator names variables while it runs; ask it the same way it will be asked.
+      generator.init(workspace);
+      const variables = {};
+      for (const variable of workspace.getVariableMap().getAllVariables()) {
+        variables[variable.getName()] = generator.getVariableName(variable.getId());
+      }
+      generator.finish('');
+      const code = generator.workspaceToCode(workspace);
+      return {code, variables, breakpoints: [...breakpoints]};
+    } finally {
+      generator.STATEMENT_PREFIX = null;
+      generator.INFINITE_LOOP_TRAP = null;
+    }
+  }
+
+  function clearMarks() {
+    workspace.highlightBlock(null);
+    for (const block of workspace.getAllBlocks(false)) {
+      if (block.getSvgRoot) block.getSvgRoot().classList.remove('rocklyError');
+      if (block.warning) block.setWarningText(null);
     }
   }
 
@@ -110,7 +185,7 @@
   }
 
   const calls = {
-    async setup({language, profile, media, first}) {
+    async setup({language, profile, media, first, texts}) {
       if (language !== 'en') await loadScript('vendor/msg/' + language + '.js');
       RocklyTemplates.install(profile.blocks);
       workspace = Blockly.inject('workspace', {
@@ -124,13 +199,15 @@
         sounds: false,
       });
       workspace.addChangeListener(onWorkspaceEvent);
+      registerContextMenu(texts || {addBreakpoint: 'Add breakpoint', removeBreakpoint: 'Remove breakpoint'});
       const program = first ? calls[first.call](first.args) : null;
       return {blockTypes: Object.keys(Blockly.Blocks), program};
     },
-    load({workspace: json}) {
+    load({workspace: json, breakpoints: ids}) {
       const unknown = unknownTypes(typesInJson(json));
       if (unknown.length) return {unknownTypes: unknown};
       replaceOrRestore(() => Blockly.serialization.workspaces.load(json, workspace));
+      setBreakpoints(ids);
       return {loaded: true};
     },
     importXml({xml}) {
@@ -146,6 +223,33 @@
     },
     getState() {
       return state();
+    },
+    getRunCode() {
+      return runCode();
+    },
+    highlight({id}) {
+      workspace.highlightBlock(id || null);
+      const block = id && workspace.getBlockById(id);
+      if (block) workspace.scrollBoundsIntoView(block.getBoundingRectangleWithoutChildren());
+      return true;
+    },
+    setBreakpoints({ids}) {
+      setBreakpoints(ids);
+      return [...breakpoints];
+    },
+    markError({id, message}) {
+      clearMarks();
+      const block = id && workspace.getBlockById(id);
+      if (!block) return false;
+      block.getSvgRoot().classList.add('rocklyError');
+      block.setWarningText(message);
+      block.select();
+      workspace.centerOnBlock(id);
+      return true;
+    },
+    clearMarks() {
+      clearMarks();
+      return true;
     },
     undo() {
       workspace.undo(false);

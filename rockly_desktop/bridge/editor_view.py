@@ -58,6 +58,7 @@ class EditorView(QWebEngineView):
     sig_ready = Signal()
     sig_changed = Signal(dict, str, str)  # workspace JSON, generated Python, origin: "user" | "load"
     sig_page_error = Signal(str)
+    sig_breakpoints = Signal(list)  # block ids, after the user toggled one
 
     def __init__(self, parent=None):
         super().__init__(parent)
@@ -86,19 +87,21 @@ class EditorView(QWebEngineView):
         """True when the workspace exists and calls go straight to the page."""
         return self.channel.is_open
 
-    def start(self, editor_config: dict, language: str, first_call=None, on_first_result=None):
+    def start(self, editor_config: dict, language: str, first_call=None, on_first_result=None, texts=None):
         """Set the page up for a profile's ``editor_config`` in ``language``.
 
         The first call configures the page that began loading when the view was made;
         later calls (another profile or language) load a fresh page. ``first_call``
         (name, args) runs inside the set-up, before the first paint (a program to open);
-        ``on_first_result(result, error)`` gets its answer.
+        ``on_first_result(result, error)`` gets its answer. ``texts`` are the page's own
+        menu texts (``addBreakpoint``, ``removeBreakpoint``) in ``language``.
         """
         self._setup_args = {
             "language": language,
             "profile": editor_config,
             "media": QUrl.fromLocalFile(str(paths.blockly_vendor_dir() / "media") + "/").toString(),
             "first": {"call": first_call[0], "args": first_call[1]} if first_call else None,
+            "texts": texts,
         }
         self._on_first_result = on_first_result
         if self._page_state == "hello":
@@ -131,12 +134,13 @@ class EditorView(QWebEngineView):
             raise RuntimeError(answer["error"])
         return answer["result"]
 
-    def load_workspace(self, workspace: dict, callback=None):
-        """Show a workspace (Blockly JSON); the page keeps the old one if this one fails.
+    def load_workspace(self, workspace: dict, callback=None, breakpoints=()):
+        """Show a workspace (Blockly JSON) with breakpoints on ``breakpoints`` (block ids).
 
-        The answer is ``{"loaded": True}`` or ``{"unknownTypes": [...]}`` (nothing changed).
+        The page keeps the old workspace if this one fails. The answer is
+        ``{"loaded": True}`` or ``{"unknownTypes": [...]}`` (nothing changed).
         """
-        self.call("load", {"workspace": workspace}, callback)
+        self.call("load", {"workspace": workspace, "breakpoints": list(breakpoints)}, callback)
 
     def import_xml(self, xml: str, callback=None):
         """Show a first-Rockly Blockly XML program; answered like ``load_workspace``."""
@@ -184,5 +188,7 @@ class EditorView(QWebEngineView):
             self.workspace = message["workspace"]
             self.python = message["python"]
             self.sig_changed.emit(self.workspace, self.python, message.get("origin", "user"))
+        elif event == "breakpoints":
+            self.sig_breakpoints.emit(message["ids"])
         elif event == "error":
             self.sig_page_error.emit(f"{message.get('message')} ({message.get('source')}:{message.get('line')})")

@@ -48,3 +48,7 @@ class RobotCommandError(RocklyError):
 
 class RobotTimeout(RobotCommandError):
     """The robot did not answer in time."""
+
+
+class ProgramStopped(RocklyError):
+    """Raised inside a running program (at a block or inside a robot wait) when it is stopped."""

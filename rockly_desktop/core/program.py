@@ -26,6 +26,7 @@ class Program:
 
     profile_id: str
     workspace: dict = field(default_factory=dict)
+    breakpoints: list = field(default_factory=list)
 
     def to_json(self) -> str:
         """The file's text, stable and readable in a diff."""
@@ -34,6 +35,7 @@ class Program:
             "version": FORMAT_VERSION,
             "profile": self.profile_id,
             "workspace": self.workspace,
+            "breakpoints": list(self.breakpoints),
         }
         return json.dumps(document, indent=1, ensure_ascii=False, sort_keys=False) + "\n"
 
@@ -65,7 +67,10 @@ def parse_program(text: str, path="<text>") -> Program:
     workspace = document.get("workspace")
     if not isinstance(workspace, dict):
         raise ProgramFileError(path, "the program has no workspace (\"workspace\" must be an object)")
-    return Program(profile_id=profile_id, workspace=workspace)
+    breakpoints = document.get("breakpoints", [])
+    if not isinstance(breakpoints, list) or not all(isinstance(item, str) for item in breakpoints):
+        raise ProgramFileError(path, "\"breakpoints\" must be a list of block ids")
+    return Program(profile_id=profile_id, workspace=workspace, breakpoints=breakpoints)
 
 
 def read_text_file(path) -> str:

@@ -27,6 +27,7 @@ class ProgramToOpen:
     workspace: dict = None
     xml: str = None
     declared_profile: str = None
+    breakpoints: tuple = ()
 
     @property
     def is_import(self) -> bool:
@@ -37,7 +38,7 @@ class ProgramToOpen:
         """The editor page call that shows this program: (name, args)."""
         if self.is_import:
             return "importXml", {"xml": self.xml}
-        return "load", {"workspace": self.workspace}
+        return "load", {"workspace": self.workspace, "breakpoints": list(self.breakpoints)}
 
 
 def _best_profile_for(block_types, registry: ProfileRegistry, fallback: Profile) -> Profile:
@@ -64,7 +65,8 @@ def read_program_to_open(path, registry: ProfileRegistry, fallback: Profile) -> 
         profile = registry.get(program.profile_id)
     else:
         profile = _best_profile_for(set(block_types_in_workspace(program.workspace)), registry, fallback)
-    return ProgramToOpen(path, profile, workspace=program.workspace, declared_profile=program.profile_id)
+    return ProgramToOpen(path, profile, workspace=program.workspace, declared_profile=program.profile_id,
+                         breakpoints=tuple(program.breakpoints))
 
 
 def unknown_blocks_error(program: ProgramToOpen, unknown_types, registry: ProfileRegistry) -> UnknownBlocksError:

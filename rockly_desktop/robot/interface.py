@@ -63,5 +63,9 @@ class RobotBackend(ABC):
         """Send a goal to an action server; ``feedback(dict)`` is called for each feedback."""
 
     @abstractmethod
+    def cancel_all_goals(self, action: str) -> None:
+        """Cancel every goal this backend sent to ``action`` that is still active."""
+
+    @abstractmethod
     def sleep(self, seconds: float) -> None:
         """Wait ``seconds``; returns early only by raising when the program is stopped."""

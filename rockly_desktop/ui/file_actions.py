@@ -51,6 +51,7 @@ class ProgramFiles(QObject):
     def new(self):
         """Start an empty program for the active robot."""
         if self.maybe_save():
+            self.window.breakpoints = []
             self.window.editor.clear()
             self._set_document(None, False)
             self.window.settings.last_file = None
@@ -150,9 +151,11 @@ class ProgramFiles(QObject):
             elif result.get("unknownTypes"):
                 self._show_error("cannot_open", unknown_blocks_error(program, result["unknownTypes"], window.registry))
             elif program.is_import:
+                window.breakpoints = []
                 self._set_document(None, True)
                 self.sig_status.emit(tr("imported", window.language, path=path))
             else:
+                window.breakpoints = list(program.breakpoints)
                 self._set_document(path, False)
                 self.sig_status.emit(tr("opened", window.language, path=path))
 
@@ -162,7 +165,7 @@ class ProgramFiles(QObject):
     def _write(self, path) -> bool:
         try:
             state = self.window.editor.call_blocking("getState")
-            save_program(path, Program(self.window.profile.id, state["workspace"]))
+            save_program(path, Program(self.window.profile.id, state["workspace"], self.window.breakpoints))
         except (RocklyError, RuntimeError) as error:
             self._show_error("cannot_save", error, untouched=False)
             return False

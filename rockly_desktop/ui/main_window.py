@@ -1,14 +1,22 @@
-"""Rockly's main window: the block editor, the Code dock, menus and the status bar."""
+"""Rockly's main window: the block editor, the run toolbar, the docks, menus and the status bar."""
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction, QActionGroup, QKeySequence
 from PySide6.QtWidgets import QLabel, QMainWindow, QMessageBox
 
 from rockly_desktop import __version__
 from rockly_desktop.bridge.editor_view import EditorView
+from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.executor.robot_link import SimulatedRobot
 from rockly_desktop.ui.code_dock import CodeDock
+from rockly_desktop.ui.console_dock import ConsoleDock
 from rockly_desktop.ui.file_actions import ProgramFiles
 from rockly_desktop.ui.preferences import PreferencesDialog
+from rockly_desktop.ui.run_session import RunSession
+from rockly_desktop.ui.run_toolbar import RunToolbar
+from rockly_desktop.ui.simulator_dock import SimulatorDock
+from rockly_desktop.ui.tablet import QtTablet
 from rockly_desktop.ui.texts import tr
+from rockly_desktop.ui.variables_dock import VariablesDock
 
 
 class MainWindow(QMainWindow):
@@ -25,18 +33,34 @@ class MainWindow(QMainWindow):
         self._editor_started = False
         self.setObjectName("main_window")
 
+        self.breakpoints = []
+        self._robot = None
         self.editor = editor or EditorView()
         self.setCentralWidget(self.editor)
+        self.simulator_dock = SimulatorDock(tr("simulator_dock", self.language), self)
         self.code_dock = CodeDock(tr("code_dock", self.language), self)
+        self.variables = VariablesDock(tr("variables_dock", self.language),
+                                       (tr("variable", self.language), tr("value", self.language)), self)
+        self.console = ConsoleDock(tr("console_dock", self.language), self)
+        self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.simulator_dock)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.code_dock)
+        self.tabifyDockWidget(self.code_dock, self.variables)
+        self.code_dock.raise_()
+        self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.console)
         self.profile_label = QLabel(self)
         self.statusBar().addPermanentWidget(self.profile_label)
+        self.tablet = QtTablet(self, self.profile.display_name())
+        self.tablet.sig_notice.connect(lambda _kind, text: self.console.append(
+            tr("robot_says", self.language, text=text), "robot"))
+        self.runs = RunSession(self)
+        self._build_run_toolbar()
 
         self.files = ProgramFiles(self)
         self.files.sig_document_changed.connect(self._update_title)
         self.files.sig_status.connect(lambda text: self.statusBar().showMessage(text, 8000))
         self.editor.sig_changed.connect(self._on_editor_changed)
         self.editor.sig_ready.connect(self.statusBar().clearMessage)
+        self.editor.sig_breakpoints.connect(self._on_breakpoints)
         self.editor.sig_page_error.connect(
             lambda message: self.statusBar().showMessage(tr("editor_error", self.language, message=message), 15000))
 
@@ -45,7 +69,9 @@ class MainWindow(QMainWindow):
         if settings.window_geometry is not None:
             self.restoreGeometry(settings.window_geometry)
         if settings.window_state is None or not self.restoreState(settings.window_state):
-            self.resizeDocks([self.code_dock], [440], Qt.Orientation.Horizontal)
+            self.resizeDocks([self.code_dock], [460], Qt.Orientation.Horizontal)
+            self.resizeDocks([self.simulator_dock, self.code_dock], [420, 300], Qt.Orientation.Vertical)
+            self.resizeDocks([self.console], [130], Qt.Orientation.Vertical)
         self._update_title()
 
     # --- start-up -----------------------------------------------------------------------
@@ -75,8 +101,61 @@ class MainWindow(QMainWindow):
 
     def _restart_editor(self, first_call=None, on_first_result=None):
         self._editor_started = True
-        self.editor.start(self.profile.editor_config(self.language), self.language, first_call, on_first_result)
+        texts = {"addBreakpoint": tr("add_breakpoint", self.language),
+                 "removeBreakpoint": tr("remove_breakpoint", self.language)}
+        self.editor.start(self.profile.editor_config(self.language), self.language, first_call, on_first_result, texts)
         self.profile_label.setText(tr("robot_status", self.language, name=self.profile.display_name(self.language)))
+        self._show_robot()
+
+    # --- the robot ----------------------------------------------------------------------
+
+    def robot(self):
+        """The robot programs run on: the active profile's built-in simulator."""
+        if self._robot is None or self._robot.profile.id != self.profile.id:
+            self._shutdown_robot()
+            self.tablet.robot_name = self.profile.display_name(self.language)
+            self._robot = SimulatedRobot(self.profile, tablet=self.tablet)
+        return self._robot
+
+    def _show_robot(self):
+        try:
+            robot = self.robot()
+            view_class = self.profile.load_object("simulator_view") if "simulator_view" in self.profile.manifest else None
+        except RocklyError as error:
+            self.console.append(str(error), "error")
+            return
+        if self.simulator_dock.robot is not robot:
+            self.simulator_dock.show_robot(robot, view_class(language=self.language) if view_class else None)
+
+    def _shutdown_robot(self):
+        if self._robot is not None:
+            self.simulator_dock.stop()
+            self._robot.shutdown()
+            self._robot = None
+
+    def _on_breakpoints(self, block_ids):
+        self.breakpoints = list(block_ids)
+        self.runs.set_breakpoints(block_ids)
+        self.files.mark_modified()
+
+    def _build_run_toolbar(self):
+        toolbar = RunToolbar(self.language, self)
+        toolbar.run_action.triggered.connect(lambda: self.runs.run())
+        toolbar.pause_action.triggered.connect(self.runs.pause)
+        toolbar.step_action.triggered.connect(self.runs.step)
+        toolbar.continue_action.triggered.connect(self.runs.resume)
+        toolbar.stop_action.triggered.connect(self.runs.stop)
+        toolbar.sig_delay_changed.connect(self.runs.set_delay)
+        toolbar.set_state(self.runs.state)
+        old = getattr(self, "run_toolbar", None)
+        if old is not None:
+            toolbar.speed.setValue(old.speed.value())
+            self.insertToolBar(old, toolbar)
+            self.removeToolBar(old)
+            old.deleteLater()
+        else:
+            self.addToolBar(Qt.ToolBarArea.TopToolBarArea, toolbar)
+        self.run_toolbar = toolbar
 
     def show_program(self, program, callback):
         """Show a checked program (switching to its robot); ``callback(result, error)`` gets the page's answer."""
@@ -120,10 +199,16 @@ class MainWindow(QMainWindow):
         workspace = self.editor.call_blocking("getState")["workspace"] if self.editor.is_ready else None
         self.language = language
         self.settings.language = language
+        self.simulator_dock.robot = None  # the simulator view is made anew in the new language
         self._restart_editor()
         if workspace:
-            self.editor.load_workspace(workspace)
+            self.editor.load_workspace(workspace, breakpoints=self.breakpoints)
         self.code_dock.setWindowTitle(tr("code_dock", language))
+        self.simulator_dock.setWindowTitle(tr("simulator_dock", language))
+        self.variables.setWindowTitle(tr("variables_dock", language))
+        self.variables.table.setHorizontalHeaderLabels([tr("variable", language), tr("value", language)])
+        self.console.setWindowTitle(tr("console_dock", language))
+        self._build_run_toolbar()
         self.menuBar().clear()
         self._build_menus()
         self._update_title()
@@ -187,7 +272,8 @@ class MainWindow(QMainWindow):
             robot_menu.addAction(action)
 
         view_menu = bar.addMenu(tr("menu_view", language))
-        view_menu.addAction(self.code_dock.toggleViewAction())
+        for dock in (self.simulator_dock, self.code_dock, self.variables, self.console):
+            view_menu.addAction(dock.toggleViewAction())
 
         settings_menu = bar.addMenu(tr("menu_settings", language))
         self._action(settings_menu, "preferences", self.show_preferences, QKeySequence.StandardKey.Preferences)
@@ -210,6 +296,8 @@ class MainWindow(QMainWindow):
         if not self.files.maybe_save():
             event.ignore()
             return
+        self.runs.shutdown()
+        self._shutdown_robot()
         self.settings.save_window(self.saveGeometry(), self.saveState())
         self.settings.last_file = self.files.path
         self.settings.sync()

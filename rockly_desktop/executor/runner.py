@@ -1,0 +1,141 @@
+"""Running a generated program in the current thread: no Qt, testable on its own.
+
+The page instruments the code: ``__rockly__.block('ID')`` before every statement block
+and ``__rockly__.check()`` at the top of every loop body. Those calls are where pause,
+step, breakpoints, slow motion and stop happen; robot waits watch the same Interrupt,
+so a stop also ends a long drive or a dialog.
+"""
+import builtins
+import logging
+import traceback
+
+from rockly_desktop.core.errors import ProgramStopped, RobotCommandError, RobotTimeout
+from rockly_desktop.executor.events import OutputPrinted, RunFinished, RunPaused, RunResumed, VariablesChanged
+
+log = logging.getLogger(__name__)
+PROGRAM_FILENAME = "<rockly program>"
+
+
+class BlockHooks:
+    """The ``__rockly__`` object the instrumented program calls."""
+
+    def __init__(self, control, emit, variables):
+        self._control = control
+        self._emit = emit
+        self._variables = variables
+        self.current_block = None
+
+    def block(self, block_id: str):
+        """Called before each statement block."""
+        self.current_block = block_id
+        if self._control.attention:
+            self._at_block(block_id)
+
+    def check(self):
+        """Called at the top of each loop body, so even an empty loop can be stopped."""
+        if self._control.attention:
+            self._control.interrupt.check()
+
+    def _at_block(self, block_id):
+        control = self._control
+        control.interrupt.check()
+        reason = control.pause_reason(block_id)
+        if reason is not None:
+            self._emit(self._variables())
+            self._emit(RunPaused(block_id, reason))
+            control.wait_for_release()
+            self._emit(RunResumed())
+        elif control.delay:
+            control.interrupt.sleep(control.delay)
+
+
+def plain_message(error: BaseException) -> str:
+    """What went wrong, in words a child or a teacher can act on."""
+    if isinstance(error, RobotTimeout):
+        return f"The robot did not answer in time: {error}"
+    if isinstance(error, RobotCommandError):
+        return f"The robot could not do this: {error}"
+    if isinstance(error, ZeroDivisionError):
+        return "Dividing by zero is not possible."
+    if isinstance(error, NameError):
+        return f"Something is used before it was given a value: {error}"
+    if isinstance(error, TypeError):
+        return f"These values do not fit together: {error}"
+    if isinstance(error, (IndexError, KeyError)):
+        return f"There is no item at that position in the list: {error}"
+    if isinstance(error, ValueError):
+        return f"This value cannot be used here: {error}"
+    if isinstance(error, RecursionError):
+        return "A function calls itself too often (endless repetition)."
+    return f"{type(error).__name__}: {error}"
+
+
+class ProgramRunner:
+    """Runs one program to its end and reports what happens through ``emit(event)``.
+
+    ``namespace`` holds what the program may use (``robot``); ``variables`` maps the
+    Blockly variable names to their Python names; ``on_end()`` (the robot's safe stop)
+    runs whenever the run ends, for any reason.
+    """
+
+    def __init__(self, code: str, namespace: dict, control, emit, variables=None, on_end=None):
+        self._code = code
+        self._control = control
+        self._emit = emit
+        self._variable_names = dict(variables or {})
+        self._on_end = on_end
+        self.hooks = BlockHooks(control, emit, self.variables_event)
+        self.globals = {"__builtins__": builtins, "__name__": "__rockly__",
+                        **namespace, "__rockly__": self.hooks, "print": self._print}
+
+    def _print(self, *values, sep=" ", end="\n", **_ignored):
+        for line in (sep.join(str(value) for value in values)).splitlines() or [""]:
+            self._emit(OutputPrinted(line))
+
+    def variables_snapshot(self) -> dict:
+        """The program's variables now: Blockly name -> repr of the value (unset ones: None)."""
+        values = {}
+        for display, python_name in self._variable_names.items():
+            try:
+                values[display] = repr(self.globals.get(python_name))
+            except Exception as error:  # noqa: BLE001 - a value whose repr fails is still shown
+                values[display] = f"<{type(error).__name__}>"
+        return values
+
+    def variables_event(self) -> VariablesChanged:
+        """The variables as an event."""
+        return VariablesChanged(self.variables_snapshot())
+
+    def run(self) -> RunFinished:
+        """Execute the program; always runs ``on_end`` and emits (and returns) RunFinished."""
+        try:
+            compiled = compile(self._code, PROGRAM_FILENAME, "exec")
+            exec(compiled, self.globals)  # noqa: S102 - running the user's program is the point
+            result = RunFinished("finished")
+        except ProgramStopped:
+            result = RunFinished("stopped", self.hooks.current_block)
+        except SyntaxError as error:
+            result = RunFinished("error", None, f"The program cannot be read: {error.msg}", traceback.format_exc())
+        except Exception as error:  # noqa: BLE001 - any error in the program ends the run with a message
+            result = RunFinished("error", self.hooks.current_block, plain_message(error), _program_traceback(error))
+        self._finish()
+        self._emit(self.variables_event())
+        self._emit(result)
+        return result
+
+    def _finish(self):
+        if self._on_end is None:
+            return
+        try:
+            self._on_end()
+        except Exception:  # noqa: BLE001 - the safe stop is attempted; its failure must not hide the run's end
+            log.exception("the safe stop failed")
+            self._emit(OutputPrinted("Warning: the robot could not be stopped safely."))
+
+
+def _program_traceback(error: BaseException) -> str:
+    """The traceback from the program's frames down (Rockly's own frames left out)."""
+    frames = traceback.extract_tb(error.__traceback__)
+    first = next((i for i, frame in enumerate(frames) if frame.filename == PROGRAM_FILENAME), 0)
+    lines = traceback.format_list(frames[first:]) + traceback.format_exception_only(type(error), error)
+    return "Traceback (most recent call last):\n" + "".join(lines)

@@ -1,0 +1,237 @@
+"""An in-process stand-in for a ROS graph, and the RobotBackend that drives it.
+
+A profile's simulator lives in a ``SimWorld``: it subscribes to topics, publishes
+others, and serves services and actions under their ROS names. A program talks to the
+same world through a ``SimBackend``, so its commands run exactly as they would against
+the robot. Messages are plain dicts shaped like the ROS messages; every subscriber,
+caller and goal gets its own copy, as if the message had crossed the wire.
+"""
+import copy
+import logging
+import threading
+import time
+from collections import defaultdict
+
+from rockly_desktop.core.errors import RobotCommandError, RobotTimeout, RocklyError
+from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
+
+log = logging.getLogger(__name__)
+
+POLL_SECONDS = 0.01
+
+
+class SimGoal:
+    """One goal on a simulated action server; ``outcome`` is set when it has ended."""
+
+    def __init__(self, action: str):
+        self.action = action
+        self.cancelled = threading.Event()
+        self.outcome = None
+
+
+class SimWorld:
+    """Topics, services and action servers of a simulated robot; safe to use from any thread.
+
+    Subscriber callbacks, service handlers and goal feedback run in the thread that
+    caused them (the publisher's, the caller's, the goal's) and must not block for long.
+    """
+
+    def __init__(self):
+        self._changed = threading.Condition(threading.RLock())
+        self._latest = {}
+        self._subscribers = defaultdict(list)
+        self._services = {}
+        self._actions = {}
+        self._goals = set()
+
+    # --- topics -----------------------------------------------------------------------
+
+    def publish(self, topic: str, msg_type: str, message: dict) -> None:
+        """Make ``message`` the topic's latest, hand it to every subscriber, wake waiters."""
+        with self._changed:
+            self._latest[topic] = (msg_type, copy.deepcopy(message))
+            callbacks = list(self._subscribers[topic])
+        for callback in callbacks:
+            callback(copy.deepcopy(message))
+        with self._changed:
+            self._changed.notify_all()
+
+    def subscribe(self, topic: str, callback):
+        """Call ``callback(message)`` for every later message on ``topic``; returns an unsubscribe function."""
+        with self._changed:
+            self._subscribers[topic].append(callback)
+
+        def unsubscribe():
+            with self._changed:
+                self._subscribers[topic].remove(callback)
+
+        return unsubscribe
+
+    def latest(self, topic: str):
+        """A copy of the last message published on ``topic``, or None."""
+        with self._changed:
+            entry = self._latest.get(topic)
+            return copy.deepcopy(entry[1]) if entry else None
+
+    def topics(self) -> list:
+        """Every topic that has had a message, as sorted ``(topic, msg_type)`` pairs."""
+        with self._changed:
+            return sorted((topic, msg_type) for topic, (msg_type, _message) in self._latest.items())
+
+    # --- services -----------------------------------------------------------------------
+
+    def advertise_service(self, name: str, handler) -> None:
+        """Serve ``name`` with ``handler(request, interrupt) -> response`` (replacing an older one)."""
+        with self._changed:
+            self._services[name] = handler
+            self._changed.notify_all()
+
+    def has_service(self, name: str) -> bool:
+        """True when a service ``name`` is advertised."""
+        with self._changed:
+            return name in self._services
+
+    def call_service(self, name: str, request: dict, interrupt) -> dict:
+        """Run the service's handler in this thread and return its response.
+
+        An error inside the handler reaches the caller as a RobotCommandError naming the
+        service, as a ROS service error would; Rockly's own errors (a stop) pass unchanged.
+        """
+        with self._changed:
+            handler = self._services.get(name)
+        if handler is None:
+            raise RobotCommandError(f"there is no service '{name}'")
+        try:
+            response = handler(copy.deepcopy(request), interrupt)
+        except RocklyError:
+            raise
+        except Exception as error:
+            raise RobotCommandError(f"the service '{name}' failed: {error}") from error
+        return copy.deepcopy(response)
+
+    # --- actions ------------------------------------------------------------------------
+
+    def advertise_action(self, name: str, handler) -> None:
+        """Serve the action ``name``: ``handler(goal, feedback, cancelled) -> (GoalStatus, result)``.
+
+        Each goal runs the handler in its own thread; ``feedback(dict)`` sends feedback and
+        ``cancelled`` (a threading.Event) is set when the goal is cancelled.
+        """
+        with self._changed:
+            self._actions[name] = handler
+
+    def send_goal(self, action: str, goal: dict, feedback=None) -> SimGoal:
+        """Start ``goal`` on the action server; ``feedback(dict)`` is called from the goal's thread."""
+        with self._changed:
+            handler = self._actions.get(action)
+            if handler is None:
+                raise RobotCommandError(f"there is no action server '{action}'")
+            sim_goal = SimGoal(action)
+            self._goals.add(sim_goal)
+        thread = threading.Thread(target=self._run_goal, args=(handler, sim_goal, copy.deepcopy(goal), feedback),
+                                  name=f"sim goal {action}", daemon=True)
+        thread.start()
+        return sim_goal
+
+    def cancel_goals(self, action: str) -> None:
+        """Cancel every active goal on the action server ``action``."""
+        with self._changed:
+            for sim_goal in self._goals:
+                if sim_goal.action == action:
+                    sim_goal.cancelled.set()
+
+    def _run_goal(self, handler, sim_goal: SimGoal, goal: dict, feedback):
+        def send_feedback(message):
+            if feedback is not None:
+                feedback(copy.deepcopy(message))
+
+        try:
+            status, result = handler(goal, send_feedback, sim_goal.cancelled)
+        except Exception:  # noqa: BLE001 - a failing server aborts its goal, as actionlib does
+            log.exception("the action server '%s' failed", sim_goal.action)
+            status, result = GoalStatus.ABORTED, {}
+        with self._changed:
+            sim_goal.outcome = GoalOutcome(status, copy.deepcopy(result))
+            self._goals.discard(sim_goal)
+            self._changed.notify_all()
+
+    # --- waiting ------------------------------------------------------------------------
+
+    def wait_for(self, predicate, timeout: float) -> bool:
+        """Wait until ``predicate()`` is true, re-checking whenever the world changes; False on timeout."""
+        with self._changed:
+            return self._changed.wait_for(predicate, timeout)
+
+
+class SimGoalHandle(GoalHandle):
+    """A program's handle on a goal running in a SimWorld."""
+
+    def __init__(self, sim_goal: SimGoal, backend: "SimBackend"):
+        self._goal = sim_goal
+        self._backend = backend
+
+    def wait(self, timeout: float) -> GoalOutcome:
+        """Wait for the goal's outcome; a stop request raises ProgramStopped, a timeout RobotTimeout."""
+        if not self._backend.wait_until(lambda: self._goal.outcome is not None, timeout):
+            raise RobotTimeout(f"the action '{self._goal.action}' did not finish within {timeout:g} s")
+        return self._goal.outcome
+
+    def cancel(self) -> None:
+        """Ask the action server to stop working on this goal."""
+        self._goal.cancelled.set()
+
+
+class SimBackend(RobotBackend):
+    """A RobotBackend on a SimWorld; every wait ends within ~10 ms of a stop request."""
+
+    def __init__(self, world: SimWorld, interrupt):
+        self._world = world
+        self._interrupt = interrupt
+
+    def publish(self, topic: str, msg_type: str, message: dict) -> None:
+        """Publish ``message`` on ``topic``."""
+        self._world.publish(topic, msg_type, message)
+
+    def latest(self, topic: str, msg_type: str):
+        """The last message on ``topic``, or None."""
+        return self._world.latest(topic)
+
+    def wait_for_message(self, topic: str, msg_type: str, timeout: float) -> dict:
+        """The first message published on ``topic`` after this call; RobotTimeout after ``timeout`` s."""
+        received = []
+        unsubscribe = self._world.subscribe(topic, received.append)
+        try:
+            if not self.wait_until(lambda: received, timeout):
+                raise RobotTimeout(f"no message arrived on the topic '{topic}' within {timeout:g} s")
+        finally:
+            unsubscribe()
+        return received[0]
+
+    def call_service(self, name: str, srv_type: str, request: dict, timeout: float) -> dict:
+        """Call ``name``, waiting up to ``timeout`` s for it to be advertised; RobotTimeout if it never is."""
+        if not self.wait_until(lambda: self._world.has_service(name), timeout):
+            raise RobotTimeout(f"the service '{name}' is not available (waited {timeout:g} s)")
+        return self._world.call_service(name, request, self._interrupt)
+
+    def send_goal(self, action: str, action_type: str, goal: dict, feedback=None) -> GoalHandle:
+        """Start ``goal`` on the action server ``action``; RobotCommandError if there is none."""
+        return SimGoalHandle(self._world.send_goal(action, goal, feedback), self)
+
+    def cancel_all_goals(self, action: str) -> None:
+        """Cancel every active goal on ``action``, whoever sent it (as actionlib's cancel_all_goals)."""
+        self._world.cancel_goals(action)
+
+    def sleep(self, seconds: float) -> None:
+        """Wait ``seconds``; a stop request raises ProgramStopped."""
+        self._interrupt.sleep(seconds)
+
+    def wait_until(self, predicate, timeout: float) -> bool:
+        """Wait until ``predicate()`` holds (True) or ``timeout`` passes (False); a stop request raises."""
+        deadline = time.monotonic() + timeout
+        while True:
+            self._interrupt.check()
+            remaining = deadline - time.monotonic()
+            if self._world.wait_for(predicate, min(POLL_SECONDS, max(0.0, remaining))):
+                return True
+            if remaining <= 0:
+                return False

@@ -1,0 +1,81 @@
+"""The run toolbar: Run, Pause, Step, Continue, a big red STOP, slow motion and the robot."""
+from PySide6.QtCore import Qt, Signal
+from PySide6.QtGui import QAction, QKeySequence
+from PySide6.QtWidgets import QComboBox, QLabel, QSlider, QToolBar
+
+from rockly_desktop.ui.texts import tr
+
+SLIDER_STEPS = 10
+SLOWEST_DELAY = 2.0  # seconds per block at the slowest setting
+
+
+class RunToolbar(QToolBar):
+    """Actions for running programs; ``set_state`` enables what makes sense."""
+
+    sig_delay_changed = Signal(float)
+
+    def __init__(self, language: str, parent=None):
+        super().__init__(tr("run", language), parent)
+        self._language = language
+        self.setObjectName("run_toolbar")
+        self.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextBesideIcon)
+        self.setStyleSheet("QToolButton { font-size: 15px; font-weight: bold; padding: 6px 12px; }")
+        self.run_action = self._action("run", "run_tip", "F5", "▶")
+        self.pause_action = self._action("pause", "pause_tip", "F6", "⏸")
+        self.step_action = self._action("step", "step_tip", "F10", "⤼")
+        self.continue_action = self._action("continue", "continue_tip", None, "⏵")
+        self.stop_action = QAction(f"■ {tr('stop', language)}", self)
+        self.stop_action.setObjectName("action_stop")
+        self.stop_action.setToolTip(tr("stop_tip", language))
+        self.stop_action.setShortcut(QKeySequence(Qt.Key.Key_Escape))
+        self.stop_action.setShortcutContext(Qt.ShortcutContext.WindowShortcut)
+        self.addAction(self.stop_action)
+        stop_button = self.widgetForAction(self.stop_action)
+        stop_button.setObjectName("stop_button")
+        stop_button.setStyleSheet("QToolButton { background: #d32f2f; color: white; font-size: 18px; font-weight: bold;"
+                                  " border-radius: 6px; padding: 6px 22px; margin: 2px 8px; }"
+                                  "QToolButton:disabled { background: #e8a0a0; }"
+                                  "QToolButton:hover { background: #b71c1c; }")
+        self.addSeparator()
+        self.addWidget(QLabel(f" {tr('speed', language)} 🐢 ", self))
+        self.speed = QSlider(Qt.Orientation.Horizontal, self)
+        self.speed.setRange(0, SLIDER_STEPS)
+        self.speed.setValue(SLIDER_STEPS)
+        self.speed.setFixedWidth(140)
+        self.speed.setToolTip(tr("speed_tip", language))
+        self.speed.valueChanged.connect(lambda _value: self.sig_delay_changed.emit(self.delay))
+        self.addWidget(self.speed)
+        self.addWidget(QLabel(" 🐇  ", self))
+        self.addSeparator()
+        self.addWidget(QLabel(f" {tr('backend', language)} ", self))
+        self.backend = QComboBox(self)
+        self.backend.addItem(tr("backend_simulator", language), "simulator")
+        self.addWidget(self.backend)
+        self.set_state("idle")
+
+    def _action(self, key, tip_key, shortcut, symbol):
+        language = self._language
+        action = QAction(f"{symbol} {tr(key, language)}", self)
+        action.setObjectName(f"action_{key}")
+        action.setToolTip(tr(tip_key, language))
+        if shortcut:
+            action.setShortcut(shortcut)
+        self.addAction(action)
+        return action
+
+    @property
+    def delay(self) -> float:
+        """Seconds to wait at each block for the slider's position."""
+        return (SLIDER_STEPS - self.speed.value()) * SLOWEST_DELAY / SLIDER_STEPS
+
+    def set_state(self, state: str):
+        """'idle', 'running' or 'paused': enable the actions that apply."""
+        self.run_action.setEnabled(state == "idle")
+        self.pause_action.setEnabled(state == "running")
+        self.step_action.setEnabled(state in ("idle", "paused"))
+        self.continue_action.setEnabled(state == "paused")
+        self.continue_action.setShortcut("F5" if state == "paused" else "")
+        self.run_action.setShortcut("F5" if state == "idle" else "")
+        self.stop_action.setEnabled(state != "idle")
+        self.backend.setEnabled(state == "idle")
+

@@ -1,0 +1,35 @@
+"""The Simulator dock: the profile's own view of its simulated robot, refreshed at 30 Hz."""
+from PySide6.QtCore import QTimer
+from PySide6.QtWidgets import QDockWidget, QLabel
+
+REFRESH_MS = 33
+
+
+class SimulatorDock(QDockWidget):
+    """Shows ``view`` (a QWidget with ``set_snapshot(dict)``) fed from ``robot.snapshot()``."""
+
+    def __init__(self, title: str, parent=None):
+        super().__init__(title, parent)
+        self.setObjectName("simulator_dock")
+        self.view = None
+        self.robot = None
+        self._timer = QTimer(self)
+        self._timer.setInterval(REFRESH_MS)
+        self._timer.timeout.connect(self.refresh)
+
+    def show_robot(self, robot, view):
+        """Show ``robot``'s simulation in ``view`` (None: a note that there is no view)."""
+        self.robot = robot
+        self.view = view
+        self.setWidget(view if view is not None else QLabel("—", self))
+        self.refresh()
+        self._timer.start()
+
+    def refresh(self):
+        """Give the view the robot's current state."""
+        if self.robot is not None and self.view is not None:
+            self.view.set_snapshot(self.robot.snapshot())
+
+    def stop(self):
+        """Stop refreshing (the robot is going away)."""
+        self._timer.stop()

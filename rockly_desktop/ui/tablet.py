@@ -1,0 +1,107 @@
+"""The simulated robot's tablet in the app: its questions appear as real dialogs.
+
+``QtTablet.ask`` is called from a simulator thread; the dialog is shown by the GUI
+thread and the caller waits (interruptibly) for the person's answer.
+"""
+import threading
+
+from PySide6.QtCore import QObject, Qt, Signal
+from PySide6.QtWidgets import QDialog, QDialogButtonBox, QLabel, QLineEdit, QVBoxLayout
+
+from rockly_desktop.core.errors import RobotTimeout
+from rockly_desktop.ui.texts import tr
+
+
+class TabletRequest:
+    """One question to the person, answered from the GUI thread."""
+
+    def __init__(self, kind: str, text: str):
+        self.kind = kind
+        self.text = text
+        self.answer = ""
+        self.done = threading.Event()
+
+
+class TabletDialog(QDialog):
+    """A big, friendly dialog showing the robot's text and the answer buttons it needs."""
+
+    def __init__(self, request: TabletRequest, title: str, language: str, parent=None):
+        super().__init__(parent)
+        self.request = request
+        self.setObjectName("tablet_dialog")
+        self.setWindowTitle(title)
+        self.setStyleSheet("QDialog { background: #e0f2f1; } QLabel { font-size: 20px; color: #004d40; }"
+                           "QPushButton { font-size: 18px; padding: 8px 24px; } QLineEdit { font-size: 18px; }")
+        layout = QVBoxLayout(self)
+        self.label = QLabel(request.text, self)
+        self.label.setTextFormat(Qt.TextFormat.PlainText)  # a program's text is shown, never interpreted
+        self.label.setWordWrap(True)
+        self.label.setMinimumWidth(380)
+        layout.addWidget(self.label)
+        self.entry = None
+        buttons = QDialogButtonBox(self)
+        if request.kind == "D_YES_NO":
+            yes = buttons.addButton(tr("yes", language), QDialogButtonBox.ButtonRole.YesRole)
+            no = buttons.addButton(tr("no", language), QDialogButtonBox.ButtonRole.NoRole)
+            yes.clicked.connect(lambda: self._answer("yes"))
+            no.clicked.connect(lambda: self._answer("no"))
+        else:
+            if request.kind == "D_NAME":
+                self.entry = QLineEdit(self)
+                layout.addWidget(self.entry)
+            ok = buttons.addButton(tr("ok", language), QDialogButtonBox.ButtonRole.AcceptRole)
+            ok.clicked.connect(lambda: self._answer(self.entry.text() if self.entry else ""))
+        layout.addWidget(buttons)
+
+    def _answer(self, answer: str):
+        self.request.answer = answer
+        self.accept()
+
+    def done(self, result):  # noqa: D401 - Qt override
+        """Qt override: whatever closes the dialog answers the request."""
+        super().done(result)
+        self.request.done.set()
+
+
+class QtTablet(QObject):
+    """The tablet port a simulator uses: ``ask`` (blocking) and ``notify``."""
+
+    _sig_show = Signal(object)
+    _sig_close = Signal(object)
+    sig_notice = Signal(str, str)  # kind, text
+
+    def __init__(self, window, robot_name: str):
+        super().__init__(window)
+        self.window = window
+        self.robot_name = robot_name
+        self.open_dialogs = {}
+        self._sig_show.connect(self._show, Qt.ConnectionType.QueuedConnection)
+        self._sig_close.connect(self._close, Qt.ConnectionType.QueuedConnection)
+
+    def ask(self, kind: str, text: str, timeout: float, interrupt) -> str:
+        """Show a dialog and wait for the answer ('yes'/'no', typed text, or '')."""
+        request = TabletRequest(kind, text)
+        self._sig_show.emit(request)
+        try:
+            if not interrupt.wait_until(request.done.is_set, timeout):
+                raise RobotTimeout(f"nobody answered the tablet within {timeout:g} s")
+        finally:
+            if not request.done.is_set():
+                self._sig_close.emit(request)
+        return request.answer
+
+    def notify(self, kind: str, text: str):
+        """A message or function without an answer (shown text, SOS, volume)."""
+        self.sig_notice.emit(kind, text)
+
+    def _show(self, request: TabletRequest):
+        language = self.window.language
+        dialog = TabletDialog(request, tr("tablet_title", language, robot=self.robot_name), language, self.window)
+        dialog.finished.connect(lambda _result: self.open_dialogs.pop(id(request), None))
+        self.open_dialogs[id(request)] = dialog
+        dialog.open()
+
+    def _close(self, request: TabletRequest):
+        dialog = self.open_dialogs.pop(id(request), None)
+        if dialog is not None:
+            dialog.reject()
