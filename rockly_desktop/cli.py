@@ -4,6 +4,7 @@
     rockly plugins list                 show installed robot profiles and broken ones
     rockly plugins validate PATH        check one profile folder
     rockly export PROGRAM -o OUT.py     write the Python generated from a program
+    rockly run PROGRAM [--answer A]...  run a program on the simulator, without a window
 """
 import argparse
 import logging
@@ -13,7 +14,7 @@ from pathlib import Path
 
 from rockly_desktop import __version__
 
-SUBCOMMANDS = ("plugins", "export")
+SUBCOMMANDS = ("plugins", "export", "run")
 
 
 def _tool_parser() -> argparse.ArgumentParser:
@@ -31,6 +32,12 @@ def _tool_parser() -> argparse.ArgumentParser:
     export.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
     export.add_argument("-o", "--output", type=Path, required=True, help="the .py file to write")
     export.add_argument("--language", default="en", choices=("en", "de"))
+
+    run = commands.add_parser("run", help="run a program without a window")
+    run.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
+    run.add_argument("--backend", default="sim", choices=("sim",), help="the robot to run on (default: the simulator)")
+    run.add_argument("--answer", action="append", default=[], help="an answer for the next tablet question (repeatable)")
+    run.add_argument("--speed", type=float, default=1.0, help="simulated time runs this many times faster")
     return parser
 
 
@@ -118,6 +125,10 @@ def main(argv=None) -> int:
         args = _tool_parser().parse_args(argv)
         if args.command == "plugins":
             return _plugins_list() if args.plugin_command == "list" else _plugins_validate(args.path)
+        if args.command == "run":
+            from rockly_desktop.run_command import run_program
+
+            return run_program(args.program, args.answer, args.speed)
         return _export(args.program, args.output, args.language)
     args = _gui_parser().parse_args(argv)
     return gui_main(args.program)

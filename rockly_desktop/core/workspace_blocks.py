@@ -6,9 +6,11 @@ from collections import Counter
 from rockly_desktop.core.errors import ProgramFileError
 
 
-def block_types_in_workspace(workspace: dict) -> Counter:
-    """Count the block types in a Blockly JSON workspace (blocks, shadows, nested)."""
-    counts = Counter()
+def iter_blocks(workspace: dict):
+    """Every block dict in a Blockly JSON workspace: top blocks, inputs, shadows, next blocks.
+
+    Malformed parts (a list where a mapping belongs, and so on) are skipped.
+    """
     top = workspace.get("blocks")
     top_blocks = top.get("blocks") if isinstance(top, dict) else None
     pending = list(top_blocks) if isinstance(top_blocks, list) else []
@@ -16,12 +18,19 @@ def block_types_in_workspace(workspace: dict) -> Counter:
         block = pending.pop()
         if not isinstance(block, dict):
             continue
-        block_type = block.get("type")
-        counts[block_type if isinstance(block_type, str) and block_type else "(block without a type)"] += 1
+        yield block
         inputs = block.get("inputs")
         for connection in (list(inputs.values()) if isinstance(inputs, dict) else []) + [block.get("next")]:
             if isinstance(connection, dict):
                 pending.extend(connection.get(kind) for kind in ("block", "shadow") if connection.get(kind))
+
+
+def block_types_in_workspace(workspace: dict) -> Counter:
+    """Count the block types in a Blockly JSON workspace (blocks, shadows, nested)."""
+    counts = Counter()
+    for block in iter_blocks(workspace):
+        block_type = block.get("type")
+        counts[block_type if isinstance(block_type, str) and block_type else "(block without a type)"] += 1
     return counts
 
 
@@ -82,3 +91,8 @@ def xml_to_text(root: ElementTree.Element) -> str:
     if namespace:
         plain.set("xmlns", namespace)
     return ElementTree.tostring(plain, encoding="unicode")
+
+
+def block_types_by_id(workspace: dict) -> dict:
+    """Map each block id in a Blockly JSON workspace to its type."""
+    return {block["id"]: block.get("type") for block in iter_blocks(workspace) if isinstance(block.get("id"), str)}

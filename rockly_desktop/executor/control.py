@@ -11,8 +11,10 @@ from rockly_desktop.robot.interrupt import Interrupt
 class RunControl:
     """Thread-safe run controls shared by the UI (or CLI) and the runner."""
 
-    def __init__(self, breakpoints=(), delay: float = 0.0):
+    def __init__(self, breakpoints=(), delay: float = 0.0, trace: bool = False):
+        """``trace``: report every block entered (BlockEntered), as the command line does."""
         self.interrupt = Interrupt()
+        self.trace = trace
         self._lock = threading.Condition()
         self._breakpoints = frozenset(breakpoints)
         self._delay = max(0.0, delay)
@@ -24,7 +26,7 @@ class RunControl:
 
     def _update_attention(self):
         self.attention = bool(self.interrupt.stop_requested or self._pause_requested or self._step_requested
-                              or self._breakpoints or self._delay)
+                              or self._breakpoints or self._delay or self.trace)
 
     @property
     def breakpoints(self) -> frozenset:

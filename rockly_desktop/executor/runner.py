@@ -10,7 +10,7 @@ import logging
 import traceback
 
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError, RobotTimeout
-from rockly_desktop.executor.events import OutputPrinted, RunFinished, RunPaused, RunResumed, VariablesChanged
+from rockly_desktop.executor.events import BlockEntered, OutputPrinted, RunFinished, RunPaused, RunResumed, VariablesChanged
 
 log = logging.getLogger(__name__)
 PROGRAM_FILENAME = "<rockly program>"
@@ -39,6 +39,8 @@ class BlockHooks:
     def _at_block(self, block_id):
         control = self._control
         control.interrupt.check()
+        if control.trace:
+            self._emit(BlockEntered(block_id))
         reason = control.pause_reason(block_id)
         if reason is not None:
             self._emit(self._variables())

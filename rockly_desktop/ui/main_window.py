@@ -23,6 +23,8 @@ class MainWindow(QMainWindow):
     """The editor window. ``registry`` holds the profiles, ``settings`` what is remembered;
     ``editor`` may be passed in already loading its page (see ``app.build_main_window``)."""
 
+    simulator_speed = 1.0  # how much faster than real time the built-in simulator runs
+
     def __init__(self, registry, settings, editor: EditorView = None):
         super().__init__()
         self.registry = registry
@@ -114,7 +116,7 @@ class MainWindow(QMainWindow):
         if self._robot is None or self._robot.profile.id != self.profile.id:
             self._shutdown_robot()
             self.tablet.robot_name = self.profile.display_name(self.language)
-            self._robot = SimulatedRobot(self.profile, tablet=self.tablet)
+            self._robot = SimulatedRobot(self.profile, tablet=self.tablet, speed=self.simulator_speed)
         return self._robot
 
     def _show_robot(self):

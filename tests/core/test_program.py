@@ -85,7 +85,7 @@ def test_saved_file_is_readable_utf8_json_with_the_envelope_first(tmp_path):
     assert "Grüße 😀".encode("utf-8") in raw, "non-ASCII text is stored as itself, not as \\u escapes"
     assert raw.endswith(b"\n")
     document = json.loads(raw.decode("utf-8"))
-    assert list(document) == ["format", "version", "profile", "workspace"]
+    assert list(document) == ["format", "version", "profile", "workspace", "breakpoints"]
     assert (document["format"], document["version"], document["profile"]) == ("rockly-program", 1, "hobbit")
 
 
@@ -386,3 +386,16 @@ def test_unknown_extra_keys_in_the_envelope_are_ignored(tmp_path):
     path = tmp_path / "extra.rockly"
     path.write_text(json.dumps(valid_document(saved_by="Rockly 0.1", comment="hi")), encoding="utf-8")
     assert load_program(path) == Program("hobbit", hobbit_workspace(["hello"]))
+
+
+def test_breakpoints_are_saved_with_the_program(tmp_path):
+    path = tmp_path / "with-breakpoints.rockly"
+    save_program(path, Program("hobbit", {"blocks": {"blocks": []}}, ["a'b", "c"]))
+    assert load_program(path).breakpoints == ["a'b", "c"]
+
+
+def test_breakpoints_that_are_not_block_ids_are_refused(tmp_path):
+    path = tmp_path / "bad-breakpoints.rockly"
+    path.write_text('{"format": "rockly-program", "version": 1, "profile": "hobbit", "workspace": {}, "breakpoints": [1]}')
+    with pytest.raises(ProgramFileError, match="breakpoints"):
+        load_program(path)

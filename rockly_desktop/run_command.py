@@ -1,0 +1,101 @@
+"""``rockly run PROGRAM``: run a program without a window, on the built-in simulator.
+
+Prints one line per block it enters (id and type) and what the program prints; tablet
+questions are answered from ``--answer`` options in the order they come. Ctrl+C stops
+the program (with the robot's safe stop). Exit status: 0 finished, 1 error, 130 stopped.
+"""
+import os
+import signal
+import sys
+
+from rockly_desktop.core.errors import RobotCommandError, RocklyError
+from rockly_desktop.core.workspace_blocks import block_types_by_id
+from rockly_desktop.executor.control import RunControl
+from rockly_desktop.executor.events import BlockEntered, OutputPrinted, RunFinished
+from rockly_desktop.executor.robot_link import SimulatedRobot
+from rockly_desktop.executor.run_setup import make_runner
+
+EXIT_STOPPED = 130
+
+
+class AnswerList:
+    """A tablet that answers from a list given on the command line."""
+
+    def __init__(self, answers, out):
+        self._answers = list(answers)
+        self._out = out
+
+    def ask(self, kind, text, timeout, interrupt) -> str:
+        """Take the next answer (OK dialogs need none); fail clearly when none is left."""
+        self._out(f"tablet  {kind}: {text!r}")
+        if kind == "D_OK":
+            return ""
+        if not self._answers:
+            raise RobotCommandError(f"the program asks on the tablet {text!r}, but no --answer is left for it")
+        answer = self._answers.pop(0)
+        self._out(f"answer  {answer!r}")
+        return answer
+
+    def notify(self, kind, text):
+        """Show a message or function on the terminal."""
+        self._out(f"tablet  {kind}: {text!r}")
+
+
+def run_program(program_path, answers=(), speed: float = 1.0, language: str = "en", out=print) -> int:
+    """Run ``program_path`` headless on its profile's simulator; returns the exit status."""
+    if not os.environ.get("QT_QPA_PLATFORM"):
+        os.environ["QT_QPA_PLATFORM"] = "offscreen"
+    from rockly_desktop.app import create_application
+    from rockly_desktop.bridge.headless import HeadlessEditor, UnknownBlocks
+    from rockly_desktop.plugins.opening import read_program_to_open, unknown_blocks_error
+    from rockly_desktop.plugins.registry import ProfileRegistry
+
+    create_application()
+    registry = ProfileRegistry.discover()
+    try:
+        program = read_program_to_open(program_path, registry, registry.default())
+    except RocklyError as error:
+        print(f"rockly run: {error}", file=sys.stderr)
+        return 1
+    editor = HeadlessEditor(language)
+    try:
+        editor.python_for(program)
+        run_code = editor.view.call_blocking("getRunCode")
+        types = block_types_by_id(editor.view.call_blocking("getState")["workspace"])
+    except UnknownBlocks as refused:
+        print(f"rockly run: {unknown_blocks_error(program, refused.block_types, registry)}", file=sys.stderr)
+        return 1
+    finally:
+        editor.close()
+    try:
+        robot = SimulatedRobot(program.profile, tablet=AnswerList(answers, out), speed=speed)
+    except RocklyError as error:
+        print(f"rockly run: {error}", file=sys.stderr)
+        return 1
+    control = RunControl(trace=True)
+
+    def report(event):
+        if isinstance(event, BlockEntered):
+            out(f"block   {event.block_id}  {types.get(event.block_id, '?')}")
+        elif isinstance(event, OutputPrinted):
+            out(f"print   {event.text}")
+
+    previous = signal.signal(signal.SIGINT, lambda *_: control.request_stop())
+    try:
+        result = make_runner(program.profile, robot, run_code, control, report).run()
+    finally:
+        signal.signal(signal.SIGINT, previous)
+        robot.shutdown()
+    return _report_end(result, types)
+
+
+def _report_end(result: RunFinished, types: dict) -> int:
+    if result.outcome == "finished":
+        print("finished")
+        return 0
+    if result.outcome == "stopped":
+        print("stopped (the robot was stopped safely)")
+        return EXIT_STOPPED
+    where = f"block {result.block_id} ({types.get(result.block_id, '?')})" if result.block_id else "the program"
+    print(f"error in {where}: {result.message}", file=sys.stderr)
+    return 1
