@@ -55,6 +55,7 @@ class MainWindow(QMainWindow):
         self.tablet.sig_notice.connect(lambda _kind, text: self.console.append(
             tr("robot_says", self.language, text=text), "robot"))
         self.runs = RunSession(self)
+        self.tablet.sig_dismissed.connect(self.runs.stop)
         self._build_run_toolbar()
 
         self.files = ProgramFiles(self)

@@ -104,6 +104,8 @@ class RunSession(QObject):
         self.stop()
         ended = self.thread.wait(timeout_ms)
         self._follow.stop()
+        if ended:
+            self._on_thread_finished()
         return ended
 
     # --- following the run --------------------------------------------------------------
@@ -160,6 +162,8 @@ class RunSession(QObject):
         window.statusBar().clearMessage()
 
     def _on_thread_finished(self):
+        if self.thread is None:  # already handled by shutdown()
+            return
         self.thread.deleteLater()
         self.thread = None
         self.control = None

@@ -69,12 +69,14 @@ class QtTablet(QObject):
     _sig_show = Signal(object)
     _sig_close = Signal(object)
     sig_notice = Signal(str, str)  # kind, text
+    sig_dismissed = Signal()  # the person closed a question without answering (Esc or the window's ×)
 
     def __init__(self, window, robot_name: str):
         super().__init__(window)
         self.window = window
         self.robot_name = robot_name
         self.open_dialogs = {}
+        self._closing = set()
         self._sig_show.connect(self._show, Qt.ConnectionType.QueuedConnection)
         self._sig_close.connect(self._close, Qt.ConnectionType.QueuedConnection)
 
@@ -98,10 +100,14 @@ class QtTablet(QObject):
         language = self.window.language
         dialog = TabletDialog(request, tr("tablet_title", language, robot=self.robot_name), language, self.window)
         dialog.finished.connect(lambda _result: self.open_dialogs.pop(id(request), None))
+        dialog.rejected.connect(lambda: id(request) in self._closing or self.sig_dismissed.emit())
         self.open_dialogs[id(request)] = dialog
-        dialog.open()
+        dialog.setModal(False)  # the big STOP button must stay reachable
+        dialog.show()
 
     def _close(self, request: TabletRequest):
         dialog = self.open_dialogs.pop(id(request), None)
         if dialog is not None:
+            self._closing.add(id(request))
             dialog.reject()
+            self._closing.discard(id(request))

@@ -70,6 +70,9 @@ class RecordingBackend(RobotBackend):
     def sleep(self, seconds):
         self.calls.append(("sleep", seconds))
 
+    def cancel_all_goals(self, action):
+        self.calls.append(("cancel_all_goals", action))
+
 
 @pytest.fixture
 def backend():

@@ -274,7 +274,12 @@ def codebot(tmp_path):
     """A profile whose commands live in code/testbot_commands.py (python_path: code)."""
     bot = copy_profile(tmp_path / "testbot", "testbot")
     (bot.root / "code").mkdir()
-    bot.edit("profile.yaml", lambda data: data.update(api="testbot_commands:TestBot", python_path="code"))
+    def use_own_code(data):
+        data.update(api="testbot_commands:TestBot", python_path="code")
+        data.pop("simulator", None)
+        data.pop("simulator_view", None)
+
+    bot.edit("profile.yaml", use_own_code)
     return bot
 
 

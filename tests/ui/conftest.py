@@ -6,6 +6,9 @@ from PySide6.QtWidgets import QMessageBox
 from rockly_desktop.app import build_main_window
 
 
+SIMULATOR_SPEED = 25.0  # simulated time runs this much faster in tests
+
+
 class WindowDriver:
     """Opens Rockly windows for a test and waits for their editor."""
 
@@ -20,12 +23,14 @@ class WindowDriver:
         for window in self.windows:
             window.files.modified = False
             window.close()
+            assert window.runs.thread is None, "a program was still running after the window closed"
             window.deleteLater()
         QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
 
-    def open_window(self, open_path=None):
+    def open_window(self, open_path=None, simulator_speed=SIMULATOR_SPEED):
         """A shown main window whose editor is ready (and whose start-up file is open)."""
         window = build_main_window(self.settings_path, self.extra_profile_dirs)
+        window.simulator_speed = simulator_speed
         self.windows.append(window)
         window.show()
         with self.qtbot.waitSignal(window.editor.sig_ready, timeout=30000):

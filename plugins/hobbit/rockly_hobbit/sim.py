@@ -1,0 +1,569 @@
+"""The built-in simulated HOBBIT: base, head and eyes, arm, gripper, turntable, battery, tablet.
+
+``SimHobbit`` serves HOBBIT's real ROS interface (the topics, the ``hobbit_arm`` and
+``move_base`` actions and the ``/MMUI`` service, with the names and values of the robot's
+reference) in a SimWorld, so HOBBIT's commands drive it unchanged. Its tables are taken
+from the reference, not from the commands, so a command that sends a wrong value is
+caught here. Simulated time runs ``speed`` times as fast as the clock.
+"""
+import logging
+import math
+import threading
+import time
+from collections import deque
+from dataclasses import dataclass
+
+from rockly_desktop.sdk import GoalStatus, RobotCommandError
+
+log = logging.getLogger(__name__)
+
+TICK_SECONDS = 1 / 30
+POLL_SECONDS = 0.01          # how often a goal's thread looks at the simulation
+LINEAR_SPEED = 0.3           # m/s, for discrete motions and navigation
+ANGULAR_SPEED = math.radians(45)   # rad/s
+ARRIVED = 0.001              # m: a navigation goal closer than this is reached
+BATTERY_DRAIN = 1.0 / 60     # % per simulated second while standing still
+BATTERY_DRAIN_BUSY = 3.0 / 60      # % per simulated second while the base or the arm moves
+TRAIL_POINTS = 500
+TRAIL_SPACING = 0.01         # m between trail points
+NOTICES_KEPT = 20
+VOLUME_STEP = 10
+TURNTABLE_STEP = 30.0        # degrees per turntable turn
+DIALOG_TIMEOUT = 60.0        # s, when a request has no usable Timeout param
+
+ARM_ACTION = "hobbit_arm"
+NAV_ACTION = "move_base"
+MOTION_STATE = ("/DiscreteMotionState", "std_msgs/String")
+MOTION_STATES = {"moving": "Moving", "turning": "Turning"}
+
+HEAD_POSITIONS = frozenset((
+    "center_center", "up_center", "down_center", "center_right", "center_left", "up_right", "up_left",
+    "down_right", "down_left", "littledown_center", "to_grasp", "to_turntable", "search_table",
+))
+EMOTIONS = frozenset(("HAPPY", "VHAPPY", "LTIRED", "VTIRED", "CONCERNED", "SAD", "WONDERING", "NEUTRAL", "SLEEPING"))
+DIALOGS = frozenset(("D_OK", "D_YES_NO", "D_NAME"))
+
+
+@dataclass(frozen=True)
+class ArmCommand:
+    """What one arm server command does: how long it takes and what it changes when done.
+
+    ``joints`` is None, ``'one'`` (exactly one joint vector) or ``'many'`` (a trajectory,
+    ``seconds`` per vector).
+    """
+
+    seconds: float
+    pose: str = None
+    gripper: str = None
+    turntable: str = None
+    turn: float = 0.0
+    joints: str = None
+
+
+ARM_COMMANDS = {
+    "MoveToCandle": ArmCommand(4.0, pose="candle"),
+    "MoveToHome": ArmCommand(4.0, pose="home"),
+    "MoveToPreGraspFloor": ArmCommand(5.0, pose="floor"),
+    "MoveToPreGraspTable": ArmCommand(4.0, pose="table"),
+    "MoveToTray": ArmCommand(3.5, pose="tray"),
+    "MoveToLearning": ArmCommand(5.0, pose="learning", turntable="out"),
+    "StoreTurntable": ArmCommand(5.0, pose="home", turntable="stored"),
+    "TurnTurntableCW": ArmCommand(2.0, turn=-TURNTABLE_STEP),
+    "TurnTurntableCCW": ArmCommand(2.0, turn=TURNTABLE_STEP),
+    "OpenGripper": ArmCommand(1.0, gripper="open"),
+    "CloseGripper": ArmCommand(1.0, gripper="closed"),
+    "MoveToJointValues": ArmCommand(4.0, pose="joints", joints="one"),
+    "MoveAlongTrajectory": ArmCommand(2.5, pose="joints", joints="many"),
+}
+
+
+# --- what the base can be doing ---------------------------------------------------------
+
+
+def _wrap(angle):
+    """``angle`` in radians, brought into [-pi, pi]."""
+    return math.remainder(angle, math.tau)
+
+
+def _turn(theta, target, dt):
+    """Turn from ``theta`` toward ``target`` for ``dt`` s: (new theta, angular velocity, arrived)."""
+    error = _wrap(target - theta)
+    step = min(ANGULAR_SPEED * dt, abs(error))
+    return _wrap(theta + math.copysign(step, error)), math.copysign(ANGULAR_SPEED, error), step == abs(error)
+
+
+class _Velocity:
+    """Driving at a fixed velocity, as ``/cmd_vel`` asks (zero: standing still). Never done."""
+
+    done = False
+
+    def __init__(self, linear=0.0, angular=0.0):
+        self.linear = linear
+        self.angular = angular
+        self.motion = "moving" if linear else "turning" if angular else "idle"
+
+    def step(self, x, y, theta, dt):
+        """Unicycle kinematics, integrated exactly over ``dt``."""
+        v, w = self.linear, self.angular
+        if abs(w) < 1e-9:
+            return x + v * dt * math.cos(theta), y + v * dt * math.sin(theta), theta, v, w
+        end = theta + w * dt
+        return (x + v / w * (math.sin(end) - math.sin(theta)), y - v / w * (math.cos(end) - math.cos(theta)),
+                _wrap(end), v, w)
+
+
+class _DiscreteMotion:
+    """A ``Move <metres>`` or ``Turn <degrees>`` of the base driver, at a fixed speed."""
+
+    def __init__(self, motion, amount):
+        self.motion = motion  # 'moving' (amount in metres) or 'turning' (radians)
+        self.remaining = amount
+
+    @property
+    def done(self):
+        """True once the whole distance or angle is covered."""
+        return self.remaining == 0
+
+    def step(self, x, y, theta, dt):
+        """Cover as much of the rest as ``dt`` allows."""
+        speed = LINEAR_SPEED if self.motion == "moving" else ANGULAR_SPEED
+        step = math.copysign(min(speed * dt, abs(self.remaining)), self.remaining)
+        self.remaining -= step
+        if self.motion == "moving":
+            return x + step * math.cos(theta), y + step * math.sin(theta), theta, math.copysign(speed, step), 0.0
+        return x, y, _wrap(theta + step), 0.0, math.copysign(speed, step)
+
+
+class _Navigation:
+    """Driving to a map pose as move_base does: turn toward it, drive there, turn to its heading."""
+
+    motion = "navigating"
+
+    def __init__(self, x, y, yaw):
+        self.x, self.y, self.yaw = x, y, yaw
+        self.phase = "aim"
+        self.done = False
+
+    def step(self, x, y, theta, dt):
+        """Advance the current phase by ``dt``."""
+        dx, dy = self.x - x, self.y - y
+        distance = math.hypot(dx, dy)
+        if self.phase == "aim":
+            if distance > ARRIVED:
+                theta, angular, aimed = _turn(theta, math.atan2(dy, dx), dt)
+                self.phase = "drive" if aimed else "aim"
+                return x, y, theta, 0.0, angular
+            self.phase = "face"
+        if self.phase == "drive":
+            travel = min(LINEAR_SPEED * dt, distance)
+            if travel == distance:
+                self.phase = "face"
+                return self.x, self.y, theta, LINEAR_SPEED, 0.0
+            return x + travel * dx / distance, y + travel * dy / distance, theta, LINEAR_SPEED, 0.0
+        theta, angular, self.done = _turn(theta, self.yaw, dt)
+        return x, y, theta, 0.0, angular
+
+
+def _target_of(pose_stamped):
+    """(x, y, yaw) of a PoseStamped dict; ValueError when its orientation is not a quaternion."""
+    pose = pose_stamped.get("pose") or {}
+    position, orientation = pose.get("position") or {}, pose.get("orientation") or {}
+    x, y = float(position.get("x", 0.0)), float(position.get("y", 0.0))
+    qx, qy, qz, qw = (float(orientation.get(axis, 0.0)) for axis in "xyzw")
+    if not all(map(math.isfinite, (x, y, qx, qy, qz, qw))) or math.hypot(qx, qy, qz, qw) < 1e-6:
+        raise ValueError(f"not a valid goal pose: {pose!r}")
+    return x, y, math.atan2(2 * (qw * qz + qx * qy), qw * qw + qx * qx - qy * qy - qz * qz)
+
+
+def _pose(x, y, theta):
+    """A geometry_msgs/Pose dict for a pose on the floor."""
+    return {"position": {"x": x, "y": y, "z": 0.0},
+            "orientation": {"x": 0.0, "y": 0.0, "z": math.sin(theta / 2), "w": math.cos(theta / 2)}}
+
+
+# --- the arm ----------------------------------------------------------------------------------
+
+
+class _ArmTask:
+    """One arm server command being carried out."""
+
+    def __init__(self, name, command: ArmCommand, seconds, start_angle):
+        self.name = name
+        self.command = command
+        self.seconds = seconds
+        self.start_angle = start_angle
+        self.progress = 0.0
+        self.done = False
+
+
+def _is_joint_vector(values):
+    return (isinstance(values, (list, tuple)) and len(values) == 6
+            and all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in values))
+
+
+def _arm_task_for(goal, turntable_angle):
+    """The _ArmTask an ``hobbit_arm`` goal asks for, or None (logged) when the arm server would refuse it."""
+    name = (goal.get("command") or {}).get("data")
+    command = ARM_COMMANDS.get(name)
+    if command is None:
+        log.warning("simulated HOBBIT: unknown arm command %r", name)
+        return None
+    seconds = command.seconds
+    if command.joints:
+        vectors = [entry.get("joint_values") for entry in goal.get("joints") or []]
+        count_ok = len(vectors) == 1 if command.joints == "one" else len(vectors) >= 1
+        if not count_ok or not all(map(_is_joint_vector, vectors)):
+            log.warning("simulated HOBBIT: %s needs %s vector(s) of 6 joint values, got %r",
+                        name, command.joints, vectors)
+            return None
+        seconds *= len(vectors)
+    return _ArmTask(name, command, seconds, turntable_angle)
+
+
+# --- the robot --------------------------------------------------------------------------------
+
+
+class SimHobbit:
+    """A simulated HOBBIT in a SimWorld, moving in simulated time ``speed`` times as fast as real time.
+
+    ``tablet`` answers dialogs: ``ask(kind, text, timeout, interrupt) -> str`` (blocking)
+    and ``notify(kind, text)``. Call ``start()`` to bring the robot up and ``shutdown()``
+    to stop its clock.
+    """
+
+    def __init__(self, world, tablet=None, speed=1.0):
+        if not speed > 0:
+            raise ValueError(f"the simulation speed must be positive, not {speed!r}")
+        self._world = world
+        self._tablet = tablet
+        self._speed = speed
+        self._lock = threading.RLock()
+        self._publishing = threading.RLock()
+        self._outbox = []
+        self._stopping = threading.Event()
+        self._thread = None
+        self._time = 0.0
+        self._x = self._y = self._theta = 0.0
+        self._linear = self._angular = 0.0
+        self._base = _Velocity()
+        self._trail = deque([(0.0, 0.0)], maxlen=TRAIL_POINTS)
+        self._head, self._emotion = "center_center", "NEUTRAL"
+        self._arm, self._arm_task = "home", None
+        self._gripper, self._turntable, self._turntable_angle = "closed", "stored", 0.0
+        self._battery, self._volume = 100.0, 50
+        self._shown, self._notices = None, deque(maxlen=NOTICES_KEPT)
+
+    # --- life cycle -------------------------------------------------------------------
+
+    def start(self):
+        """Subscribe and advertise HOBBIT's interface, publish the first state, start the clock."""
+        if self._thread is not None:
+            raise RuntimeError("the simulated HOBBIT is already running")
+        world = self._world
+        world.subscribe("/cmd_vel", self._on_velocity)
+        world.subscribe("/DiscreteMotionCmd", self._on_discrete_motion)
+        world.subscribe("/move_base_simple/goal", self._on_simple_goal)
+        world.subscribe("/head/move", self._on_head)
+        world.subscribe("/head/emo", self._on_emotion)
+        world.advertise_action(ARM_ACTION, self._serve_arm)
+        world.advertise_action(NAV_ACTION, self._serve_navigation)
+        world.advertise_service("/MMUI", self._serve_mmui)
+        with self._lock:
+            self._queue(*MOTION_STATE, {"data": "Idle"})
+            self._queue_sensors()
+        self._flush()
+        self._thread = threading.Thread(target=self._run, name="simulated HOBBIT", daemon=True)
+        self._thread.start()
+
+    def shutdown(self):
+        """Stop the simulation clock and wait for its thread."""
+        self._stopping.set()
+        if self._thread is not None:
+            self._thread.join()
+
+    def safe_stop(self):
+        """Stand still: zero velocity, no discrete motion, arm and navigation goals cancelled."""
+        with self._lock:
+            self._replace_base(_Velocity())
+            self._halt_arm()
+        self._flush()
+        self._world.cancel_goals(ARM_ACTION)
+        self._world.cancel_goals(NAV_ACTION)
+
+    def snapshot(self) -> dict:
+        """A copy of the robot's state for the simulator view."""
+        with self._lock:
+            task = self._arm_task
+            return {
+                "x": self._x, "y": self._y, "theta": self._theta, "trail": list(self._trail),
+                "linear": self._linear, "angular": self._angular, "motion": self._base.motion,
+                "nav_goal": (self._base.x, self._base.y) if isinstance(self._base, _Navigation) else None,
+                "head": self._head, "emotion": self._emotion,
+                "arm": self._arm, "arm_target": task.command.pose if task else None,
+                "arm_progress": task.progress if task else 0.0,
+                "gripper": self._gripper, "turntable": self._turntable, "turntable_angle": self._turntable_angle,
+                "battery": self._battery, "volume": self._volume,
+                "tablet": dict(self._shown) if self._shown else None, "notices": list(self._notices),
+                "time": self._time,
+            }
+
+    # --- the clock --------------------------------------------------------------------
+
+    def _run(self):
+        last = time.monotonic()
+        while not self._stopping.wait(TICK_SECONDS):
+            now = time.monotonic()
+            self._advance((now - last) * self._speed)
+            last = now
+
+    def _advance(self, dt):
+        with self._lock:
+            self._time += dt
+            base = self._base
+            self._x, self._y, self._theta, self._linear, self._angular = base.step(self._x, self._y, self._theta, dt)
+            if base.done:
+                self._replace_base(_Velocity())
+            if math.dist(self._trail[-1], (self._x, self._y)) >= TRAIL_SPACING:
+                self._trail.append((self._x, self._y))
+            self._advance_arm(dt)
+            busy = self._linear or self._angular or self._arm_task
+            self._battery = max(0.0, self._battery - dt * (BATTERY_DRAIN_BUSY if busy else BATTERY_DRAIN))
+            self._queue_sensors()
+        self._flush()
+
+    def _advance_arm(self, dt):
+        task = self._arm_task
+        if task is None:
+            return
+        task.progress = min(1.0, task.progress + dt / task.seconds)
+        self._turntable_angle = (task.start_angle + task.command.turn * task.progress) % 360
+        if task.progress == 1.0:
+            command = task.command
+            self._arm = command.pose or self._arm
+            self._gripper = command.gripper or self._gripper
+            self._turntable = command.turntable or self._turntable
+            task.done = True
+            self._arm_task = None
+
+    def _queue_sensors(self):
+        self._queue("/odom", "nav_msgs/Odometry", {
+            "header": {"frame_id": "odom"}, "child_frame_id": "base_link",
+            "pose": {"pose": _pose(self._x, self._y, self._theta)},
+            "twist": {"twist": {"linear": {"x": self._linear, "y": 0.0, "z": 0.0},
+                                "angular": {"x": 0.0, "y": 0.0, "z": self._angular}}}})
+        self._queue("/battery_state", "sensor_msgs/BatteryState", {"percentage": self._battery / 100, "present": True})
+        self._queue("/bumper", "std_msgs/Bool", {"data": False})
+
+    # --- publishing: queued under the lock, sent outside it, in order ---------------------
+
+    def _queue(self, topic, msg_type, message):
+        self._outbox.append((topic, msg_type, message))
+
+    def _flush(self):
+        with self._publishing:
+            with self._lock:
+                messages, self._outbox = self._outbox, []
+            for message in messages:
+                self._world.publish(*message)
+
+    # --- base -------------------------------------------------------------------------
+
+    def _replace_base(self, task):
+        """Make ``task`` what the base does; the newest base command always wins."""
+        old, self._base = self._base, task
+        self._linear = self._angular = 0.0
+        if isinstance(task, _DiscreteMotion):
+            self._queue(*MOTION_STATE, {"data": MOTION_STATES[task.motion]})
+        elif isinstance(old, _DiscreteMotion):
+            self._queue(*MOTION_STATE, {"data": "Idle"})
+
+    def _command_base(self, task):
+        with self._lock:
+            self._replace_base(task)
+        self._flush()
+
+    def _on_velocity(self, message):
+        try:
+            linear = float((message.get("linear") or {}).get("x", 0.0))
+            angular = float((message.get("angular") or {}).get("z", 0.0))
+        except (AttributeError, TypeError, ValueError):
+            linear = angular = math.nan
+        if not (math.isfinite(linear) and math.isfinite(angular)):
+            log.warning("simulated HOBBIT: ignored a /cmd_vel that is not a Twist: %r", message)
+            return
+        self._command_base(_Velocity(linear, angular))
+
+    def _on_discrete_motion(self, message):
+        words = str(message.get("data", "")).split()
+        if words == ["Stop"]:
+            self._command_base(_Velocity())
+            return
+        try:
+            kind, amount = words
+            amount = float(amount)
+        except ValueError:
+            kind, amount = None, math.nan
+        if kind not in ("Move", "Turn") or not math.isfinite(amount):
+            log.warning("simulated HOBBIT: ignored the discrete motion %r", message.get("data"))
+            return
+        if kind == "Move":
+            self._command_base(_DiscreteMotion("moving", amount))
+        else:
+            self._command_base(_DiscreteMotion("turning", math.radians(amount)))
+
+    def _on_simple_goal(self, message):
+        try:
+            self._command_base(_Navigation(*_target_of(message)))
+        except (AttributeError, TypeError, ValueError) as error:
+            log.warning("simulated HOBBIT: ignored the navigation goal: %s", error)
+
+    def _serve_navigation(self, goal, feedback, cancelled):
+        try:
+            task = _Navigation(*_target_of(goal.get("target_pose") or {}))
+        except (AttributeError, TypeError, ValueError) as error:
+            log.warning("simulated HOBBIT: aborted the navigation goal: %s", error)
+            return GoalStatus.ABORTED, {}
+        self._command_base(task)
+        last_sent = None
+
+        def base_position():
+            nonlocal last_sent
+            pose = (self._x, self._y, self._theta)
+            if pose == last_sent:
+                return None
+            last_sent = pose
+            return {"base_position": {"header": {"frame_id": "map"}, "pose": _pose(*pose)}}
+
+        status = self._follow(task, lambda: self._base is task, lambda: self._replace_base(_Velocity()),
+                              cancelled, feedback, base_position)
+        return status, {}
+
+    # --- head -------------------------------------------------------------------------
+
+    def _on_head(self, message):
+        position = message.get("data")
+        if not isinstance(position, str) or position not in HEAD_POSITIONS:
+            log.warning("simulated HOBBIT: unknown head position %r ignored", position)
+            return
+        with self._lock:
+            self._head = position
+
+    def _on_emotion(self, message):
+        emotion = message.get("data")
+        if not isinstance(emotion, str) or emotion not in EMOTIONS:
+            log.warning("simulated HOBBIT: unknown emotion %r ignored", emotion)
+            return
+        with self._lock:
+            self._emotion = emotion
+
+    # --- arm --------------------------------------------------------------------------
+
+    def _halt_arm(self):
+        """Stop the arm where it is; an arm stopped between two poses is at unnamed joint values."""
+        task = self._arm_task
+        if task is not None and task.command.pose and task.progress > 0:
+            self._arm = "joints"
+        self._arm_task = None
+
+    def _serve_arm(self, goal, feedback, cancelled):
+        with self._lock:
+            task = _arm_task_for(goal, self._turntable_angle)
+            if task is None:
+                return GoalStatus.ABORTED, {"result": {"data": False}}
+            self._halt_arm()
+            self._arm_task = task
+        reported = None
+
+        def progress():
+            nonlocal reported
+            quarter = int(task.progress * 4)
+            if quarter == reported:
+                return None
+            reported = quarter
+            return {"feedback": {"data": f"{task.name} {quarter * 25} %"}}
+
+        status = self._follow(task, lambda: self._arm_task is task, self._halt_arm, cancelled, feedback, progress)
+        return status, {"result": {"data": status is GoalStatus.SUCCEEDED}}
+
+    # --- goals ------------------------------------------------------------------------
+
+    def _follow(self, task, is_current, halt, cancelled, feedback, feedback_message):
+        """Follow a started task to its end: SUCCEEDED when done, PREEMPTED when replaced or cancelled.
+
+        ``feedback_message()`` (called under the lock) returns the feedback to send now, or None.
+        """
+        while True:
+            with self._lock:
+                message = feedback_message()
+                if task.done:
+                    status = GoalStatus.SUCCEEDED
+                elif not is_current():
+                    status = GoalStatus.PREEMPTED
+                elif cancelled.is_set():
+                    halt()
+                    status = GoalStatus.PREEMPTED
+                else:
+                    status = None
+            self._flush()
+            if message is not None:
+                feedback(message)
+            if status is not None:
+                return status
+            cancelled.wait(POLL_SECONDS)
+
+    # --- tablet -------------------------------------------------------------------------
+
+    def _serve_mmui(self, request, interrupt):
+        params = {param.get("name"): param.get("value") for param in request.get("params") or []}
+        kind, text = params.get("type"), str(params.get("text", ""))
+        with self._lock:
+            self._shown = None
+        if kind in DIALOGS:
+            return {"params": [{"name": "result", "value": self._ask(kind, text, _seconds(params.get("Timeout")),
+                                                                     interrupt)}]}
+        if kind == "D_PLAIN":
+            with self._lock:
+                self._shown = {"kind": kind, "text": text}
+            self._notify(kind, text)
+        elif kind == "F_CALLSOS":
+            self._notice(kind, "SOS call started")
+        elif kind in ("F_LOUDER", "F_QUIETER"):
+            with self._lock:
+                step = VOLUME_STEP if kind == "F_LOUDER" else -VOLUME_STEP
+                self._volume = min(100, max(0, self._volume + step))
+                volume = self._volume
+            self._notice(kind, f"volume {volume} %")
+        else:
+            raise RobotCommandError(f"the tablet does not know the request type {kind!r}")
+        return {"params": []}
+
+    def _ask(self, kind, text, timeout, interrupt):
+        if self._tablet is None:
+            raise RobotCommandError(f"nobody can answer the tablet: {text!r}")
+        shown = {"kind": kind, "text": text}
+        with self._lock:
+            self._shown = shown
+        try:
+            return str(self._tablet.ask(kind, text, timeout, interrupt))
+        finally:
+            with self._lock:
+                if self._shown is shown:
+                    self._shown = None
+
+    def _notice(self, kind, text):
+        with self._lock:
+            self._notices.append(text)
+        self._notify(kind, text)
+
+    def _notify(self, kind, text):
+        if self._tablet is not None:
+            self._tablet.notify(kind, text)
+
+
+def _seconds(value):
+    """A Timeout param as seconds; DIALOG_TIMEOUT when it is missing or not a positive number."""
+    try:
+        seconds = float(value)
+    except (TypeError, ValueError):
+        return DIALOG_TIMEOUT
+    return seconds if math.isfinite(seconds) and seconds > 0 else DIALOG_TIMEOUT

@@ -1,0 +1,172 @@
+"""Running programs in the window on the built-in simulator: run, step, breakpoints, stop, errors."""
+import pytest
+from conftest import state
+from page_tools import run_js
+from program_builder import block, number, stack, text, workspace
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QApplication, QMessageBox
+
+from rockly_desktop.ui.tablet import TabletDialog
+
+
+def load(qtbot, window, *blocks, variables=None):
+    ws = workspace(*blocks)
+    if variables:
+        ws["variables"] = [{"name": name, "id": name} for name in variables]
+    window.editor.call_blocking("load", {"workspace": ws})
+    return ws
+
+
+def finished(qtbot, window, timeout=20000):
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=timeout) as blocker:
+        pass
+    return blocker.args[0]
+
+
+def highlighted(qtbot, window):
+    return run_js(qtbot, window.editor, "Blockly.getMainWorkspace().getAllBlocks(false)"
+                                        ".filter(b => b.getSvgRoot().classList.contains('blocklyHighlighted')).map(b => b.id)")
+
+
+def tablet_dialogs(window):
+    return [dialog for dialog in window.findChildren(TabletDialog) if dialog.isVisible()]
+
+
+def test_run_moves_the_simulated_robot_and_reports_the_end(qtbot, window):
+    load(qtbot, window, stack(block("hobbit_emo", {"emotion": "HAPPY"}, id="emo"),
+                              block("hobbit_head", {"head_position": "up_left"}, id="head"),
+                              block("hobbit_move", {"direction": "+"}, {"speed": number(0.5)}, id="drive"),
+                              block("text_print", inputs={"TEXT": text("done")}, id="print")))
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=20000) as blocker:
+        assert window.runs.run()
+        assert window.run_toolbar.stop_action.isEnabled() and not window.run_toolbar.run_action.isEnabled()
+    assert blocker.args[0].outcome == "finished"
+    snapshot = window.robot().snapshot()
+    assert (snapshot["emotion"], snapshot["head"]) == ("HAPPY", "up_left")
+    assert snapshot["x"] == pytest.approx(0.5, abs=0.03)
+    assert window.console.lines()[-2:] == ["done", "Program finished"]
+    assert window.run_toolbar.run_action.isEnabled() and not window.run_toolbar.stop_action.isEnabled()
+
+
+def test_stepping_highlights_each_block_exactly_and_shows_variables(qtbot, window):
+    load(qtbot, window, stack(block("variables_set", {"VAR": {"id": "score"}}, {"VALUE": number(7)}, id="set"),
+                              block("hobbit_emo", {"emotion": "SAD"}, id="emo")), variables=["score"])
+    window.runs.step()
+    qtbot.waitUntil(lambda: window.runs.state == "paused", timeout=10000)
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["set"], timeout=5000)
+    assert window.variables.values() == {"score": "None"}
+    window.runs.step()
+    qtbot.waitUntil(lambda: window.runs.state == "paused" and highlighted(qtbot, window) == ["emo"], timeout=10000)
+    assert window.variables.values() == {"score": "7"}
+    assert window.run_toolbar.continue_action.isEnabled()
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=10000):
+        window.runs.resume()
+    assert window.robot().snapshot()["emotion"] == "SAD"
+    assert highlighted(qtbot, window) == []
+
+
+def test_a_breakpoint_set_from_the_block_menu_pauses_there_and_is_saved(qtbot, window, tmp_path):
+    load(qtbot, window, stack(block("hobbit_head", {"head_position": "up_center"}, id="first"),
+                              block("hobbit_head", {"head_position": "down_center"}, id="second")))
+    with qtbot.waitSignal(window.editor.sig_breakpoints, timeout=5000):
+        run_js(qtbot, window.editor, "Blockly.ContextMenuRegistry.registry.getItem('rocklyBreakpoint')"
+                                     ".callback({block: Blockly.getMainWorkspace().getBlockById('second')})")
+    assert window.breakpoints == ["second"]
+    assert run_js(qtbot, window.editor, "Blockly.getMainWorkspace().getBlockById('second').getSvgRoot()"
+                                        ".classList.contains('rocklyBreakpoint')")
+    window.runs.run()
+    qtbot.waitUntil(lambda: window.runs.state == "paused", timeout=10000)
+    assert window.robot().snapshot()["head"] == "up_center"
+    assert highlighted(qtbot, window) == ["second"]
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=10000):
+        window.runs.resume()
+    assert window.robot().snapshot()["head"] == "down_center"
+    path = tmp_path / "with-breakpoint.rockly"
+    assert window.files.save_as(str(path))
+    assert '"breakpoints": [\n  "second"\n ]' in path.read_text()
+
+
+def test_an_error_marks_its_block_with_a_plain_message_and_the_traceback_one_click_away(qtbot, window):
+    load(qtbot, window, stack(block("variables_set", {"VAR": {"id": "x"}}, {"VALUE": block(
+        "math_arithmetic", {"OP": "DIVIDE"}, {"A": number(1), "B": number(0)})}, id="divide"),
+        block("hobbit_sos", id="never")), variables=["x"])
+    window.runs.run()
+    result = finished(qtbot, window)
+    assert (result.outcome, result.block_id) == ("error", "divide")
+    boxes = [box for box in window.findChildren(QMessageBox) if box.objectName() == "run_error_box" and box.isVisible()]
+    assert boxes and boxes[0].text() == "Dividing by zero is not possible."
+    assert "ZeroDivisionError" in boxes[0].detailedText()
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "Blockly.getMainWorkspace().getBlockById('divide')"
+                                                         ".getSvgRoot().classList.contains('rocklyError')"), timeout=5000)
+    assert window.console.lines()[-1] == "Dividing by zero is not possible."
+    assert window.robot().snapshot()["notices"] == []
+
+
+def test_tablet_questions_appear_as_dialogs_with_the_exact_text(qtbot, window):
+    question = 'Do you like "tea"?\nSay \'yes\' \\ 🍵'
+    load(qtbot, window, block("controls_if", id="if", inputs={
+        "IF0": block("hobbit_yes_no", {"yes_no": "D_YES"}, {"text": text(question)}),
+        "DO0": block("hobbit_emo", {"emotion": "VHAPPY"})}))
+    window.runs.run()
+    qtbot.waitUntil(lambda: bool(tablet_dialogs(window)), timeout=10000)
+    dialog = tablet_dialogs(window)[0]
+    assert dialog.label.text() == question
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=10000):
+        dialog._answer("yes")
+    assert window.robot().snapshot()["emotion"] == "VHAPPY"
+
+
+@pytest.mark.parametrize(("name", "program"), [
+    ("sleep", block("hobbit_wait", inputs={"seconds": number(600)})),
+    ("drive", block("hobbit_move", {"direction": "+"}, {"speed": number(100)})),
+    ("arm", block("hobbit_arm_move", {"movement": "MoveToCandle"})),
+    ("dialog", block("hobbit_show_info_confirm", inputs={"text": text("wait for me")})),
+    ("tight loop", block("controls_whileUntil", {"MODE": "WHILE"}, {"BOOL": block("logic_boolean", {"BOOL": "TRUE"})})),
+])
+def test_stop_ends_the_run_anywhere_and_the_robot_stops(qtbot, driver, name, program):
+    window = driver.open_window(simulator_speed=1.0)
+    load(qtbot, window, program)
+    window.runs.run()
+    qtbot.wait(300)  # let the program get into its wait / motion / loop
+    assert window.runs.state == "running", window.runs.last_result
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=5000) as blocker:
+        qtbot.keyClick(QApplication.activeWindow() or window, Qt.Key.Key_Escape)  # Esc where the person is
+    assert blocker.args[0].outcome == "stopped"
+    snapshot = window.robot().snapshot()
+    assert snapshot["linear"] == 0 and snapshot["angular"] == 0 and snapshot["motion"] == "idle"
+    assert tablet_dialogs(window) == []
+    assert window.console.lines()[-1] == "Program stopped"
+
+
+def test_closing_the_window_stops_a_running_program(qtbot, driver):
+    window = driver.open_window()
+    load(qtbot, window, block("hobbit_move", {"direction": "+"}, {"speed": number(100)}))
+    window.runs.run()
+    qtbot.waitUntil(lambda: window.robot().snapshot()["motion"] == "moving", timeout=5000)
+    robot = window.robot()
+    window.files.modified = False
+    assert window.close()
+    assert window.runs.thread is None
+    assert robot.snapshot()["linear"] == 0
+
+
+def test_slow_motion_slider_delays_every_block(qtbot, window):
+    load(qtbot, window, stack(*(block("hobbit_emo", {"emotion": "NEUTRAL"}) for _ in range(3))))
+    window.run_toolbar.speed.setValue(window.run_toolbar.speed.maximum() - 1)
+    assert window.run_toolbar.delay == pytest.approx(0.2)
+    window.runs.run()
+    qtbot.wait(300)
+    assert window.runs.state == "running"
+    finished(qtbot, window)
+
+
+def test_the_stop_button_works_while_the_tablet_waits_for_an_answer(qtbot, window):
+    load(qtbot, window, block("text_print", inputs={"TEXT": block("hobbit_user_input", inputs={"text": text("Name?")})}))
+    window.runs.run()
+    qtbot.waitUntil(lambda: bool(tablet_dialogs(window)), timeout=10000)
+    stop_button = window.run_toolbar.widgetForAction(window.run_toolbar.stop_action)
+    assert stop_button.isEnabled() and not tablet_dialogs(window)[0].isModal()
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=5000) as blocker:
+        qtbot.mouseClick(stop_button, Qt.MouseButton.LeftButton)
+    assert blocker.args[0].outcome == "stopped"
+    qtbot.waitUntil(lambda: tablet_dialogs(window) == [], timeout=2000)
