@@ -65,6 +65,9 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
     except UnknownBlocks as refused:
         print(f"rockly run: {unknown_blocks_error(program, refused.block_types, registry)}", file=sys.stderr)
         return 1
+    except RuntimeError as error:
+        print(f"rockly run: {program_path}: the editor could not load this program ({error})", file=sys.stderr)
+        return 1
     finally:
         editor.close()
     try:

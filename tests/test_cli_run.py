@@ -1,0 +1,109 @@
+"""``rockly run``: programs run headless on the simulator, as a user runs them (a real process)."""
+import json
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from program_builder import block, number, rockly_document, stack, text
+
+REPO = Path(__file__).resolve().parents[1]
+
+
+def write(tmp_path, *blocks, name="program.rockly"):
+    path = tmp_path / name
+    path.write_text(rockly_document(list(blocks)))
+    return path
+
+
+def rockly_run(*args, timeout=120):
+    return subprocess.run([sys.executable, "-m", "rockly_desktop", "run", *map(str, args)],
+                          capture_output=True, text=True, timeout=timeout, cwd=REPO)
+
+
+def block_lines(stdout):
+    return [line.split()[1:] for line in stdout.splitlines() if line.startswith("block ")]
+
+
+def test_the_pick_up_program_runs_block_by_block(tmp_path):
+    program = write(tmp_path, stack(*(block(kind, {"movement": value}, id=f"b{i}") for i, (kind, value) in enumerate((
+        ("hobbit_arm_gripper", "OpenGripper"), ("hobbit_arm_move", "MoveToPreGraspFloor"),
+        ("hobbit_arm_gripper", "CloseGripper"), ("hobbit_arm_move", "MoveToPreGraspTable"),
+        ("hobbit_arm_gripper", "OpenGripper"))))))
+    result = rockly_run(program, "--speed", "50")
+    assert result.returncode == 0, result.stderr
+    assert block_lines(result.stdout) == [["b0", "hobbit_arm_gripper"], ["b1", "hobbit_arm_move"],
+                                          ["b2", "hobbit_arm_gripper"], ["b3", "hobbit_arm_move"],
+                                          ["b4", "hobbit_arm_gripper"]]
+    assert result.stdout.splitlines()[-1] == "finished"
+
+
+def test_tablet_questions_are_answered_in_order_from_the_command_line(tmp_path):
+    program = write(tmp_path, stack(
+        block("controls_if", id="if", inputs={"IF0": block("hobbit_yes_no", {"yes_no": "D_YES"}, {"text": text("Play?")}),
+                                              "DO0": block("text_print", inputs={"TEXT": text("playing")}, id="yes")}),
+        block("text_print", inputs={"TEXT": block("hobbit_user_input", inputs={"text": text("Name?")})}, id="name")))
+    result = rockly_run(program, "--answer", "yes", "--answer", "Ada 'the' \"first\"", "--speed", "50")
+    assert result.returncode == 0, result.stderr
+    assert "print   playing" in result.stdout
+    assert "print   Ada 'the' \"first\"" in result.stdout
+
+
+def test_a_missing_answer_fails_clearly_on_the_asking_block(tmp_path):
+    program = write(tmp_path, block("text_print", inputs={"TEXT": block("hobbit_user_input", inputs={"text": text("Name?")})}, id="ask"))
+    result = rockly_run(program, "--speed", "50")
+    assert result.returncode == 1
+    assert "error in block ask (text_print)" in result.stderr
+    assert "no --answer is left" in result.stderr and "Name?" in result.stderr
+
+
+def test_an_error_exits_non_zero_naming_the_block(tmp_path):
+    path = tmp_path / "typed.rockly"
+    ws_blocks = stack(block("variables_set", {"VAR": {"id": "d"}}, {"VALUE": block("text", {"TEXT": "far"})}, id="fine"),
+                      block("hobbit_move", {"direction": "+"}, {"speed": block("variables_get", {"VAR": {"id": "d"}})}, id="bad"))
+    document = json.loads(rockly_document([ws_blocks]))
+    document["workspace"]["variables"] = [{"name": "distance", "id": "d"}]
+    path.write_text(json.dumps(document))
+    result = rockly_run(path, "--speed", "50")
+    assert result.returncode == 1
+    assert "error in block bad (hobbit_move): The robot could not do this: the distance must be a number, not 'far'" in result.stderr
+
+
+def test_first_rockly_xml_runs_too(tmp_path):
+    path = tmp_path / "old.xml"
+    path.write_text('<xml xmlns="https://developers.google.com/blockly/xml"><block type="hobbit_head" id="h">'
+                    '<field name="head_position">to_grasp</field></block></xml>')
+    result = rockly_run(path)
+    assert result.returncode == 0, result.stderr
+    assert block_lines(result.stdout) == [["h", "hobbit_head"]]
+
+
+def test_a_broken_program_file_is_explained(tmp_path):
+    path = tmp_path / "broken.rockly"
+    path.write_text("{")
+    result = rockly_run(path)
+    assert result.returncode == 1 and result.stderr.startswith("rockly run: ")
+
+
+def test_ctrl_c_stops_the_program_with_the_safe_stop(tmp_path):
+    program = write(tmp_path, stack(block("hobbit_wait", inputs={"seconds": number(600)}, id="wait"),
+                                    block("hobbit_sos", id="never")))
+    process = subprocess.Popen([sys.executable, "-m", "rockly_desktop", "run", str(program)],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=REPO)
+    for line in process.stdout:
+        if line.startswith("block   wait"):
+            break
+    time.sleep(0.2)  # inside the wait now
+    process.send_signal(signal.SIGINT)
+    remaining, errors = process.communicate(timeout=20)
+    assert process.returncode == 130, errors
+    assert "stopped (the robot was stopped safely)" in remaining
+    assert "never" not in remaining
+
+
+def test_a_program_blockly_refuses_is_explained(tmp_path):
+    program = write(tmp_path, block("hobbit_move", {"direction": "+"}, {"speed": block("text", {"TEXT": "far"})}))
+    result = rockly_run(program)
+    assert result.returncode == 1
+    assert result.stderr.startswith("rockly run: ") and "could not load this program" in result.stderr
