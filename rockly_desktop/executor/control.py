@@ -22,6 +22,8 @@ class RunControl:
         self._step_requested = False
         self._release = False
         self.attention = False
+        self.on_hold = None  # set by the runner: shows a pause inside a block, waits for release
+        self.interrupt.hold_handler = self._hold
         self._update_attention()
 
     def _update_attention(self):
@@ -58,9 +60,10 @@ class RunControl:
             self._lock.notify_all()
 
     def request_pause(self):
-        """Pause before the next block."""
+        """Pause before the next block, or at once inside a motion that can be halted."""
         with self._lock:
             self._pause_requested = True
+            self.interrupt.set_pause_requested(True)
             self._update_attention()
 
     def step(self):
@@ -68,6 +71,7 @@ class RunControl:
         with self._lock:
             self._step_requested = True
             self._release = True
+            self.interrupt.set_pause_requested(False)
             self._update_attention()
             self._lock.notify_all()
 
@@ -77,6 +81,7 @@ class RunControl:
             self._pause_requested = False
             self._step_requested = False
             self._release = True
+            self.interrupt.set_pause_requested(False)
             self._update_attention()
             self._lock.notify_all()
 
@@ -99,6 +104,17 @@ class RunControl:
             self._release = False
             self._update_attention()
             return reason
+
+    def _hold(self):
+        """A command halted the robot for a pause, in the middle of a block."""
+        with self._lock:
+            self._pause_requested = False
+            self._release = False
+            self._update_attention()
+        if self.on_hold is not None:
+            self.on_hold()
+        else:
+            self.wait_for_release()
 
     def wait_for_release(self):
         """Block the program until resume(), step() or a stop (which raises ProgramStopped)."""

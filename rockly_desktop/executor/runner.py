@@ -36,6 +36,16 @@ class BlockHooks:
         if self._control.attention:
             self._control.interrupt.check()
 
+    def hold_inside_block(self):
+        """The robot was halted for a pause in the middle of the current block."""
+        self._pause_here(self.current_block, "pause")
+
+    def _pause_here(self, block_id, reason):
+        self._emit(self._variables())
+        self._emit(RunPaused(block_id, reason))
+        self._control.wait_for_release()
+        self._emit(RunResumed())
+
     def _at_block(self, block_id):
         control = self._control
         control.interrupt.check()
@@ -43,10 +53,7 @@ class BlockHooks:
             self._emit(BlockEntered(block_id))
         reason = control.pause_reason(block_id)
         if reason is not None:
-            self._emit(self._variables())
-            self._emit(RunPaused(block_id, reason))
-            control.wait_for_release()
-            self._emit(RunResumed())
+            self._pause_here(block_id, reason)
         elif control.delay:
             control.interrupt.sleep(control.delay)
 
@@ -87,6 +94,7 @@ class ProgramRunner:
         self._variable_names = dict(variables or {})
         self._on_end = on_end
         self.hooks = BlockHooks(control, emit, self.variables_event)
+        control.on_hold = self.hooks.hold_inside_block
         self.globals = {"__builtins__": builtins, "__name__": "__rockly__",
                         **namespace, "__rockly__": self.hooks, "print": self._print}
 

@@ -8,13 +8,37 @@ POLL_SECONDS = 0.01
 
 
 class Interrupt:
-    """A stop flag that waits can watch. ``request_stop`` may be called from any thread.
+    """A stop flag (and a pause request) that robot waits watch; any thread may set them.
 
-    ``sleep`` and ``wait_until`` raise ProgramStopped within ~10 ms of a stop request.
+    ``sleep`` and ``wait_until`` raise ProgramStopped within ~10 ms of a stop request. A
+    command in the middle of a motion checks ``pause_requested``, halts the robot, calls
+    ``hold()`` and then completes what is left of the motion.
     """
 
     def __init__(self):
         self._stopped = threading.Event()
+        self._pause = threading.Event()
+        self.hold_handler = None
+
+    @property
+    def pause_requested(self) -> bool:
+        """True while the person asked the program to pause (a long motion should halt)."""
+        return self._pause.is_set()
+
+    def set_pause_requested(self, requested: bool):
+        """Raise or lower the pause request (done by the run controls)."""
+        if requested:
+            self._pause.set()
+        else:
+            self._pause.clear()
+
+    def hold(self):
+        """Called by a command that halted the robot for a pause: returns when the program
+        may go on (the command then finishes its motion); a stop raises ProgramStopped."""
+        if self.hold_handler is not None:
+            self.hold_handler()
+        while self._pause.is_set():
+            self.sleep(POLL_SECONDS)
 
     def request_stop(self):
         """Make every current and future wait raise ProgramStopped."""
@@ -31,8 +55,20 @@ class Interrupt:
             raise ProgramStopped("the program was stopped")
 
     def sleep(self, seconds: float):
-        """Wait ``seconds``; raise ProgramStopped as soon as a stop is requested."""
-        if self._stopped.wait(max(0.0, seconds)):
+        """Wait ``seconds``; a stop raises ProgramStopped at once, a pause holds the clock."""
+        deadline = time.monotonic() + max(0.0, seconds)
+        while True:
+            if self._pause.is_set() and self.hold_handler is not None:
+                paused_at = time.monotonic()
+                self.hold()
+                deadline += time.monotonic() - paused_at
+            remaining = deadline - time.monotonic()
+            if remaining <= 0:
+                return
+            self._wait_for_stop(min(remaining, POLL_SECONDS) if self.hold_handler else remaining)
+
+    def _wait_for_stop(self, seconds: float):
+        if self._stopped.wait(seconds):
             raise ProgramStopped("the program was stopped")
 
     def wait_until(self, predicate, timeout: float) -> bool:
@@ -45,4 +81,4 @@ class Interrupt:
             remaining = deadline - time.monotonic()
             if remaining <= 0:
                 return False
-            self.sleep(min(POLL_SECONDS, remaining))
+            self._wait_for_stop(min(POLL_SECONDS, remaining))

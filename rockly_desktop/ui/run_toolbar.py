@@ -1,7 +1,7 @@
 """The run toolbar: Run, Pause, Step, Continue, a big red STOP, slow motion and the robot."""
 from PySide6.QtCore import Qt, Signal
 from PySide6.QtGui import QAction, QKeySequence
-from PySide6.QtWidgets import QComboBox, QLabel, QSlider, QToolBar
+from PySide6.QtWidgets import QComboBox, QLabel, QSlider, QStyle, QToolBar
 
 from rockly_desktop.ui.texts import tr
 
@@ -20,11 +20,12 @@ class RunToolbar(QToolBar):
         self.setObjectName("run_toolbar")
         self.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextBesideIcon)
         self.setStyleSheet("QToolButton { font-size: 15px; font-weight: bold; padding: 6px 12px; }")
-        self.run_action = self._action("run", "run_tip", "F5", "▶")
-        self.pause_action = self._action("pause", "pause_tip", "F6", "⏸")
-        self.step_action = self._action("step", "step_tip", "F10", "⤼")
-        self.continue_action = self._action("continue", "continue_tip", None, "⏵")
-        self.stop_action = QAction(f"■ {tr('stop', language)}", self)
+        icons = QStyle.StandardPixmap
+        self.run_action = self._action("run", "run_tip", "F5", icons.SP_MediaPlay)
+        self.pause_action = self._action("pause", "pause_tip", "F6", icons.SP_MediaPause)
+        self.step_action = self._action("step", "step_tip", "F10", icons.SP_MediaSkipForward)
+        self.continue_action = self._action("continue", "continue_tip", None, icons.SP_MediaSeekForward)
+        self.stop_action = QAction(self.style().standardIcon(icons.SP_MediaStop), tr("stop", language), self)
         self.stop_action.setObjectName("action_stop")
         self.stop_action.setToolTip(tr("stop_tip", language))
         self.stop_action.setShortcut(QKeySequence(Qt.Key.Key_Escape))
@@ -37,7 +38,7 @@ class RunToolbar(QToolBar):
                                   "QToolButton:disabled { background: #e8a0a0; }"
                                   "QToolButton:hover { background: #b71c1c; }")
         self.addSeparator()
-        self.addWidget(QLabel(f" {tr('speed', language)} 🐢 ", self))
+        self.addWidget(QLabel(f" {tr('speed', language)}:  {tr('slow', language)} ", self))
         self.speed = QSlider(Qt.Orientation.Horizontal, self)
         self.speed.setRange(0, SLIDER_STEPS)
         self.speed.setValue(SLIDER_STEPS)
@@ -45,7 +46,7 @@ class RunToolbar(QToolBar):
         self.speed.setToolTip(tr("speed_tip", language))
         self.speed.valueChanged.connect(lambda _value: self.sig_delay_changed.emit(self.delay))
         self.addWidget(self.speed)
-        self.addWidget(QLabel(" 🐇  ", self))
+        self.addWidget(QLabel(f" {tr('fast', language)}  ", self))
         self.addSeparator()
         self.addWidget(QLabel(f" {tr('backend', language)} ", self))
         self.backend = QComboBox(self)
@@ -53,9 +54,9 @@ class RunToolbar(QToolBar):
         self.addWidget(self.backend)
         self.set_state("idle")
 
-    def _action(self, key, tip_key, shortcut, symbol):
+    def _action(self, key, tip_key, shortcut, icon):
         language = self._language
-        action = QAction(f"{symbol} {tr(key, language)}", self)
+        action = QAction(self.style().standardIcon(icon), tr(key, language), self)
         action.setObjectName(f"action_{key}")
         action.setToolTip(tr(tip_key, language))
         if shortcut:

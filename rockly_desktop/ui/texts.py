@@ -63,6 +63,8 @@ _TEXTS = {
     "continue_tip": ("Continue the paused program (F5)", "Das angehaltene Programm fortsetzen (F5)"),
     "stop_tip": ("Stop the program and the robot (Esc)", "Programm und Roboter anhalten (Esc)"),
     "speed": ("Speed", "Tempo"),
+    "slow": ("slow", "langsam"),
+    "fast": ("fast", "schnell"),
     "speed_tip": ("Slow motion: wait at every block", "Zeitlupe: bei jedem Block warten"),
     "backend": ("Robot:", "Roboter:"),
     "backend_simulator": ("Simulator (built in)", "Simulator (eingebaut)"),

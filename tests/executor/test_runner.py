@@ -178,3 +178,21 @@ def test_a_failing_safe_stop_is_reported_but_the_run_still_ends():
 def test_variables_show_their_blockly_names():
     runner, recorder = run_to_end("my_name = 'Ada'\nscore = [1, 2]\n", variables={"my name": "my_name", "score": "score", "unset": "unset"})
     assert recorder.of(VariablesChanged)[-1].values == {"my name": "'Ada'", "score": "[1, 2]", "unset": "None"}
+
+
+def test_pause_inside_a_long_wait_holds_its_clock_until_continue():
+    control = RunControl()
+    code = "__rockly__.block('w')\nrobot_wait(0.3)\n__rockly__.block('after')\n"
+    runner, recorder, thread = start(code, control, namespace={"robot_wait": control.interrupt.sleep})
+    time.sleep(0.1)
+    control.request_pause()
+    recorder.wait_for(lambda e: isinstance(e, RunPaused))
+    assert recorder.of(RunPaused)[-1] == RunPaused("w", "pause")
+    time.sleep(0.4)  # longer than the whole wait: the clock must not run while paused
+    assert not recorder.of(RunFinished)
+    resumed = time.monotonic()
+    control.resume()
+    thread.join(5)
+    assert recorder.events[-1] == RunFinished("finished")
+    assert time.monotonic() - resumed >= 0.1  # the rest of the wait was still waited
+    assert len(recorder.of(RunPaused)) == 1  # the pause was not repeated at the next block

@@ -267,6 +267,17 @@ def test_drive_zero_metres_ends(world, sim, hobbit):
     assert states == ["Moving", "Idle"]
 
 
+def test_even_a_zero_motion_reports_idle_a_whole_control_cycle_after_the_command(world, sim):
+    """So a program that starts listening for Idle just after sending the command cannot miss it."""
+    idle_at = []
+    world.subscribe("/DiscreteMotionState", lambda message: idle_at.append(time.monotonic()))
+    commanded_at = time.monotonic()
+    world.publish("/DiscreteMotionCmd", "std_msgs/String", {"data": "Move 0"})
+    eventually(world, lambda: len(idle_at) == 2)
+    assert idle_at[1] - commanded_at >= sim_module.TICK_SECONDS * 0.9
+    assert world.latest("/DiscreteMotionState") == {"data": "Idle"}
+
+
 @pytest.mark.parametrize("direction, degrees", [("left", 90.0), ("right", -90.0)])
 def test_turn_ninety_degrees(world, sim, hobbit, direction, degrees):
     states = record(world, "/DiscreteMotionState")

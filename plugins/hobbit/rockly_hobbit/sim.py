@@ -118,14 +118,16 @@ class _DiscreteMotion:
     def __init__(self, motion, amount):
         self.motion = motion  # 'moving' (amount in metres) or 'turning' (radians)
         self.remaining = amount
+        self.stepped = False
 
     @property
     def done(self):
-        """True once the whole distance or angle is covered."""
-        return self.remaining == 0
+        """True once the whole distance or angle is covered (a zero one after one step)."""
+        return self.stepped and self.remaining == 0
 
     def step(self, x, y, theta, dt):
         """Cover as much of the rest as ``dt`` allows."""
+        self.stepped = True
         speed = LINEAR_SPEED if self.motion == "moving" else ANGULAR_SPEED
         step = math.copysign(min(speed * dt, abs(self.remaining)), self.remaining)
         self.remaining -= step
@@ -213,8 +215,8 @@ def _arm_task_for(goal, turntable_angle):
         vectors = [entry.get("joint_values") for entry in goal.get("joints") or []]
         count_ok = len(vectors) == 1 if command.joints == "one" else len(vectors) >= 1
         if not count_ok or not all(map(_is_joint_vector, vectors)):
-            log.warning("simulated HOBBIT: %s needs %s vector(s) of 6 joint values, got %r",
-                        name, command.joints, vectors)
+            wanted = "exactly one" if command.joints == "one" else "at least one"
+            log.warning("simulated HOBBIT: %s needs %s vector of 6 joint values, got %r", name, wanted, vectors)
             return None
         seconds *= len(vectors)
     return _ArmTask(name, command, seconds, turntable_angle)
@@ -319,10 +321,12 @@ class SimHobbit:
     def _advance(self, dt):
         with self._lock:
             self._time += dt
-            base = self._base
-            self._x, self._y, self._theta, self._linear, self._angular = base.step(self._x, self._y, self._theta, dt)
-            if base.done:
+            # a task found done now ended on the previous tick: its end is reported one control cycle after
+            # its last step, so even a zero-length motion reports Idle a whole tick after it was commanded
+            if self._base.done:
                 self._replace_base(_Velocity())
+            self._x, self._y, self._theta, self._linear, self._angular = self._base.step(
+                self._x, self._y, self._theta, dt)
             if math.dist(self._trail[-1], (self._x, self._y)) >= TRAIL_SPACING:
                 self._trail.append((self._x, self._y))
             self._advance_arm(dt)
@@ -488,23 +492,22 @@ class SimHobbit:
     # --- goals ------------------------------------------------------------------------
 
     def _follow(self, task, is_current, halt, cancelled, feedback, feedback_message):
-        """Follow a started task to its end: SUCCEEDED when done, PREEMPTED when replaced or cancelled.
+        """Follow a started task until the robot leaves it: SUCCEEDED when done, else PREEMPTED.
+
+        The task is left when it is done, replaced by a newer one, or halted because its goal was cancelled.
 
         ``feedback_message()`` (called under the lock) returns the feedback to send now, or None.
         """
         while True:
             with self._lock:
                 message = feedback_message()
-                if task.done:
-                    status = GoalStatus.SUCCEEDED
-                elif not is_current():
-                    status = GoalStatus.PREEMPTED
+                if not is_current():
+                    status = GoalStatus.SUCCEEDED if task.done else GoalStatus.PREEMPTED
                 elif cancelled.is_set():
                     halt()
                     status = GoalStatus.PREEMPTED
                 else:
                     status = None
-            self._flush()
             if message is not None:
                 feedback(message)
             if status is not None:

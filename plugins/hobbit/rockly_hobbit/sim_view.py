@@ -134,6 +134,10 @@ TEXTS = {
 MOTION_COLOURS = {"idle": "#9AA4BA", "moving": "#2FBF71", "turning": "#FFB020", "navigating": "#FF4B6E"}
 
 EASE_SECONDS = 0.07      # time constant of the easing toward the latest snapshot
+SLOW_EASE = {            # things that would look abrupt if they followed as quickly
+    "grip": 0.12, "tt_out": 0.3, "pan": 0.15, "look_len": 0.15, "look_alpha": 0.15, "look_width": 0.15,
+    "tilt": 0.15, "bx0": 0.3, "by0": 0.3, "bx1": 0.3, "by1": 0.3,
+}
 TELEPORT_METRES = 2.0    # farther jumps are drawn at once, not glided
 FRAME_MS = 16            # while something moves
 AMBIENT_MS = 66          # blinking, floating z, pulsing hints
@@ -415,7 +419,7 @@ class HobbitSimView(QWidget):
         self._last_tick = now
         if not self._settled:
             gaze_moving = any(self._shown[key] != self._target[key] for key in ("pan", "tilt"))
-            self._settled = self._ease(1.0 - math.exp(-dt / EASE_SECONDS))
+            self._settled = self._ease(dt)
             self._run_timer(AMBIENT_MS if self._settled else FRAME_MS)
             layout = self._layout()
             self.update(layout.map.adjusted(-2, -2, 2, 2).toAlignedRect())
@@ -428,10 +432,11 @@ class HobbitSimView(QWidget):
         else:
             self.update(self._layout().panel.toAlignedRect())
 
-    def _ease(self, k):
-        """Move the drawn values a step toward the targets; True when all have arrived."""
+    def _ease(self, dt):
+        """Move the drawn values ``dt`` seconds' worth toward the targets; True when all have arrived."""
         settled = True
         for key, target in self._target.items():
+            k = 1.0 - math.exp(-dt / SLOW_EASE.get(key, EASE_SECONDS))
             shown = self._shown.get(key, target)
             if key in ANGLE_KEYS:
                 diff, eps = _wrap_pi(target - shown), 1e-3
@@ -477,7 +482,7 @@ class HobbitSimView(QWidget):
         return QTransform(scale, 0, 0, -scale, cx - scale * mx, cy + scale * my)
 
     def _panel_sections(self, layout):
-        """Rects of the panel's parts: eyes card, face, label, status row, tablet, notices."""
+        """Rects of the panel's parts: eyes card, face, label, status row, tablet, notices, details."""
         u, panel = layout.u, layout.panel
         pad = max(6.0, 8.0 * u)
         label_h = QFontMetricsF(self._font(13 * u, True)).height()
@@ -666,6 +671,7 @@ class HobbitSimView(QWidget):
             t = hi / n
             r = radius * (0.65 + 0.35 * t)
             path = QPainterPath()
+            path.setFillRule(Qt.FillRule.WindingFill)
             for x, y in dots[lo:hi]:
                 path.addEllipse(QPointF(x, y), r, r)
             p.setBrush(_with_alpha(TRAIL, 0.12 + 0.78 * t))
