@@ -1468,7 +1468,7 @@ class HobbitSimView(QWidget):
             control = QPointF(c.x(), (inner.y() + outer.y()) / 2 - size * (0.15 - bend))
             path = QPainterPath(inner)
             path.quadTo(control, outer)
-            pen = QPen(QColor("#E6ECFF"), size * 0.2)
+            pen = QPen(QColor("#E6ECFF"), size * 0.24)
             pen.setCapStyle(Qt.PenCapStyle.RoundCap)
             p.setPen(pen)
             p.setBrush(Qt.BrushStyle.NoBrush)
