@@ -40,11 +40,34 @@ class GoalHandle(ABC):
 
 
 class RobotBackend(ABC):
-    """The robot as a program sees it. Every wait is interruptible by a stop request."""
+    """The robot as a program sees it. Every wait is interruptible by a stop request.
+
+    ``interrupt`` is the Interrupt its waits watch (set by implementations); a command in
+    the middle of a motion asks ``pause_requested()`` and, after halting, ``hold()``.
+    """
+
+    interrupt = None
+
+    def pause_requested(self) -> bool:
+        """True when the person pressed Pause: a long motion should halt now."""
+        return bool(self.interrupt is not None and self.interrupt.pause_requested)
+
+    def hold(self) -> None:
+        """Wait, after halting a motion for a pause, until the program may go on (stop raises)."""
+        if self.interrupt is not None:
+            self.interrupt.hold()
 
     @abstractmethod
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
         """Publish ``message`` (a dict shaped like ``msg_type``) on ``topic``."""
+
+    @abstractmethod
+    def subscribe(self, topic: str, msg_type: str, callback):
+        """Call ``callback(message dict)`` for every message on ``topic``; returns a function that unsubscribes."""
+
+    @abstractmethod
+    def wait_until(self, predicate, timeout: float) -> bool:
+        """Wait until ``predicate()`` is true (True) or ``timeout`` passes (False); a stop raises."""
 
     @abstractmethod
     def latest(self, topic: str, msg_type: str):
@@ -64,7 +87,7 @@ class RobotBackend(ABC):
 
     @abstractmethod
     def cancel_all_goals(self, action: str) -> None:
-        """Cancel every goal this backend sent to ``action`` that is still active."""
+        """Cancel every active goal on the action server ``action``, whoever sent it (actionlib's cancel_all_goals)."""
 
     @abstractmethod
     def sleep(self, seconds: float) -> None:

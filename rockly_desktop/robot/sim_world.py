@@ -187,6 +187,11 @@ class SimBackend(RobotBackend):
     def __init__(self, world: SimWorld, interrupt):
         self._world = world
         self._interrupt = interrupt
+        self.interrupt = interrupt
+
+    def subscribe(self, topic: str, msg_type: str, callback):
+        """Call ``callback`` for each message on ``topic``; returns the unsubscribe function."""
+        return self._world.subscribe(topic, callback)
 
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
         """Publish ``message`` on ``topic``."""

@@ -4,6 +4,8 @@ The program runs in a ProgramThread. Its events arrive as queued signals; the bl
 is at and its variables are polled every 33 ms, so a tight loop at full speed never
 floods the GUI, while a pause shows the exact block and values.
 """
+import sys
+
 from PySide6.QtCore import QObject, QTimer, Signal
 from PySide6.QtWidgets import QMessageBox
 
@@ -15,6 +17,7 @@ from rockly_desktop.executor.run_setup import make_runner
 from rockly_desktop.ui.texts import tr
 
 FOLLOW_MS = 33
+RUN_SWITCH_INTERVAL = 0.001  # seconds
 
 
 class RunSession(QObject):
@@ -30,6 +33,7 @@ class RunSession(QObject):
         self.control = None
         self.thread = None
         self.last_result = None
+        self._switch_interval = sys.getswitchinterval()
         self._shown_block = None
         self._follow = QTimer(self)
         self._follow.setInterval(FOLLOW_MS)
@@ -59,6 +63,10 @@ class RunSession(QObject):
         window.console.append(tr("run_started", window.language), "info")
         self._shown_block = None
         self._set_state("running")
+        # A program in a tight loop holds the GIL; hand it over more often so the window
+        # keeps drawing (Python's default is every 5 ms).
+        self._switch_interval = sys.getswitchinterval()
+        sys.setswitchinterval(RUN_SWITCH_INTERVAL)
         thread.start()
         self._follow.start()
         return True
@@ -167,5 +175,6 @@ class RunSession(QObject):
         self.thread.deleteLater()
         self.thread = None
         self.control = None
+        sys.setswitchinterval(self._switch_interval)
         self._set_state("idle")
         self.sig_finished.emit(self.last_result)

@@ -170,3 +170,23 @@ def test_the_stop_button_works_while_the_tablet_waits_for_an_answer(qtbot, windo
         qtbot.mouseClick(stop_button, Qt.MouseButton.LeftButton)
     assert blocker.args[0].outcome == "stopped"
     qtbot.waitUntil(lambda: tablet_dialogs(window) == [], timeout=2000)
+
+
+def test_pause_halts_a_drive_at_once_and_continue_drives_the_rest(qtbot, driver):
+    window = driver.open_window(simulator_speed=2.0)
+    load(qtbot, window, stack(block("hobbit_move", {"direction": "+"}, {"speed": number(1)}, id="drive"),
+                              block("hobbit_emo", {"emotion": "HAPPY"}, id="after")))
+    window.runs.run()
+    qtbot.waitUntil(lambda: window.robot().snapshot()["x"] > 0.2, timeout=10000)
+    window.runs.pause()
+    qtbot.waitUntil(lambda: window.runs.state == "paused", timeout=5000)
+    qtbot.waitUntil(lambda: window.robot().snapshot()["motion"] == "idle", timeout=5000)
+    halted_at = window.robot().snapshot()["x"]
+    assert 0.2 < halted_at < 0.95
+    assert highlighted(qtbot, window) == ["drive"]
+    qtbot.wait(300)
+    assert window.robot().snapshot()["x"] == pytest.approx(halted_at, abs=0.005)  # stays put while paused
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=20000):
+        window.runs.resume()
+    final = window.robot().snapshot()
+    assert final["x"] == pytest.approx(1.0, abs=0.02) and final["emotion"] == "HAPPY"

@@ -13,7 +13,7 @@ the tablet), except ``show_emotion``, ``look`` and ``show_info``, which return a
 """
 import math
 
-from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotCommands
+from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotCommands, RobotTimeout
 
 HEAD_POSITIONS = (
     "center_center", "up_center", "down_center", "center_right", "center_left", "up_right",
@@ -38,8 +38,46 @@ MESSAGE_TYPES = {"String": "std_msgs/String", "Bool": "std_msgs/Bool", "Float64"
 ARM_ACTION, ARM_ACTION_TYPE = "hobbit_arm", "hobbit_msgs/ArmServerAction"
 NAV_ACTION, NAV_ACTION_TYPE = "move_base", "move_base_msgs/MoveBaseAction"
 MMUI_SERVICE, MMUI_TYPE = "/MMUI", "hobbit_msgs/Request"
+MOTION_COMMAND, MOTION_STATE = "/DiscreteMotionCmd", "/DiscreteMotionState"
 MOTION_TIMEOUT = 120.0
+STOP_SETTLE_TIMEOUT = 2.0
+MOVE_TOLERANCE = 0.005  # metres
+TURN_TOLERANCE = 0.5  # degrees
 DIALOG_TIMEOUT = 60.0
+
+
+class _Progress:
+    """How far the base got during one discrete motion, from the odometry it publishes.
+
+    Moves count the distance along the starting heading; turns add up the heading changes
+    (so a turn of more than 180 degrees is measured right).
+    """
+
+    def __init__(self, kind):
+        self._kind = kind
+        self._start = None
+        self._last_yaw = None
+        self.done = 0.0
+        self.updates = 0
+
+    def add(self, odometry):
+        """Take one odometry message into account."""
+        self.updates += 1
+        pose = (odometry.get("pose") or {}).get("pose") or {}
+        position, orientation = pose.get("position") or {}, pose.get("orientation") or {}
+        x, y = position.get("x", 0.0), position.get("y", 0.0)
+        qx, qy, qz, qw = (orientation.get(axis, 0.0) for axis in "xyzw")
+        yaw = math.atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz))
+        if self._start is None:
+            self._start, self._last_yaw = (x, y, yaw), yaw
+            return
+        if self._kind == "Move":
+            start_x, start_y, heading = self._start
+            self.done = (x - start_x) * math.cos(heading) + (y - start_y) * math.sin(heading)
+        else:
+            step = (yaw - self._last_yaw + math.pi) % (2 * math.pi) - math.pi
+            self.done += math.degrees(step)
+            self._last_yaw = yaw
 
 
 class Hobbit(RobotCommands):
@@ -48,14 +86,20 @@ class Hobbit(RobotCommands):
     # --- base -------------------------------------------------------------------------
 
     def drive(self, distance, direction="forward"):
-        """Drive ``distance`` metres straight, ``'forward'`` or ``'backward'``; waits until done."""
+        """Drive ``distance`` metres straight, ``'forward'`` or ``'backward'``; waits until done.
+
+        A pause halts the base at once; on Continue it drives the rest of the way.
+        """
         metres = self.number(distance, "the distance") * self.choose(direction, DIRECTIONS, "direction")
-        self._discrete_motion(f"Move {metres:g}")
+        self._discrete_motion("Move", metres, MOVE_TOLERANCE)
 
     def turn(self, angle, direction="left"):
-        """Turn on the spot by ``angle`` degrees, ``'left'`` (counter-clockwise) or ``'right'``; waits."""
+        """Turn on the spot by ``angle`` degrees, ``'left'`` (counter-clockwise) or ``'right'``; waits.
+
+        A pause halts the turn at once; on Continue it turns the rest of the way.
+        """
         degrees = self.number(angle, "the angle") * self.choose(direction, TURN_DIRECTIONS, "direction")
-        self._discrete_motion(f"Turn {degrees:g}")
+        self._discrete_motion("Turn", degrees, TURN_TOLERANCE)
 
     def navigate_to(self, x, y, heading=0):
         """Drive to the map position (``x``, ``y``) in metres, then face ``heading`` degrees; waits."""
@@ -72,7 +116,7 @@ class Hobbit(RobotCommands):
 
     def stop(self):
         """Stop the base at once."""
-        self.backend.publish("/DiscreteMotionCmd", "std_msgs/String", {"data": "Stop"})
+        self.backend.publish(MOTION_COMMAND, "std_msgs/String", {"data": "Stop"})
         self.backend.publish("/cmd_vel", "geometry_msgs/Twist", {})
 
     # --- head ---------------------------------------------------------------------------
@@ -151,11 +195,41 @@ class Hobbit(RobotCommands):
 
     # --- helpers ------------------------------------------------------------------------
 
-    def _discrete_motion(self, command):
-        self.backend.publish("/DiscreteMotionCmd", "std_msgs/String", {"data": command})
-        self.backend.wait_for_message("/DiscreteMotionState", "std_msgs/String", MOTION_TIMEOUT)
-        while (self.backend.latest("/DiscreteMotionState", "std_msgs/String") or {}).get("data") != "Idle":
-            self.backend.wait_for_message("/DiscreteMotionState", "std_msgs/String", MOTION_TIMEOUT)
+    def _discrete_motion(self, kind, amount, tolerance):
+        """``Move <metres>`` / ``Turn <degrees>`` with the base driver, waiting for ``Idle``.
+
+        The state topic is listened to before the command goes out, so a fast ``Idle`` is
+        never missed. On a pause the base is stopped, the odometry tells how far it got,
+        and after Continue the remaining amount is sent.
+        """
+        remaining = amount
+        while abs(remaining) > tolerance:
+            states, progress = [], _Progress(kind)
+            start = self.backend.latest("/odom", "nav_msgs/Odometry")
+            if start is not None:
+                progress.add(start)  # where the motion starts
+            unsubscribe_state = self.backend.subscribe(
+                MOTION_STATE, "std_msgs/String", lambda message: states.append(message.get("data")))
+            unsubscribe_odom = self.backend.subscribe("/odom", "nav_msgs/Odometry", progress.add)
+            try:
+                self.backend.publish(MOTION_COMMAND, "std_msgs/String", {"data": f"{kind} {remaining:g}"})
+                if not self.backend.wait_until(lambda: "Idle" in states or self.backend.pause_requested(),
+                                               MOTION_TIMEOUT):
+                    raise RobotTimeout(f"the base did not finish '{kind} {remaining:g}' within {MOTION_TIMEOUT:g} s")
+                if "Idle" in states:
+                    return
+                self.stop()
+                self.backend.wait_until(lambda: states[-1:] == ["Idle"], STOP_SETTLE_TIMEOUT)
+                seen = progress.updates  # the odometry after the halt says where the base stopped
+                self.backend.wait_until(lambda: progress.updates > seen, STOP_SETTLE_TIMEOUT)
+            finally:
+                unsubscribe_state()
+                unsubscribe_odom()
+            if progress.updates < 2:
+                raise RobotCommandError(f"the base was halted for a pause, but without odometry (/odom) "
+                                        f"Rockly cannot tell how much of '{kind} {remaining:g}' is left")
+            remaining -= progress.done
+            self.backend.hold()
 
     def _arm(self, command, joints=()):
         goal = {"command": {"data": command}, "velocity": 0.0,

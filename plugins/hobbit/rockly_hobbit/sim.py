@@ -260,7 +260,7 @@ class SimHobbit:
     def start(self):
         """Subscribe and advertise HOBBIT's interface, publish the first state, start the clock."""
         if self._thread is not None:
-            raise RuntimeError("the simulated HOBBIT is already running")
+            raise RuntimeError("the simulated HOBBIT was already started")
         world = self._world
         world.subscribe("/cmd_vel", self._on_velocity)
         world.subscribe("/DiscreteMotionCmd", self._on_discrete_motion)
