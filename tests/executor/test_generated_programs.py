@@ -1,13 +1,10 @@
 """Real Blockly-generated, instrumented programs: stepping order through loops, functions, if/else."""
 import ast
-import threading
 
 from program_builder import block, number, stack, text, workspace
-from test_runner import Recorder
+from test_runner import step_through as step_through_code
 
-from rockly_desktop.executor.control import RunControl
-from rockly_desktop.executor.events import OutputPrinted, RunFinished, RunPaused
-from rockly_desktop.executor.runner import ProgramRunner
+from rockly_desktop.executor.events import OutputPrinted, RunFinished
 
 
 def run_code(editor, ws):
@@ -16,22 +13,8 @@ def run_code(editor, ws):
 
 
 def step_through(run):
-    """Run the program one block at a time on a thread; return the block ids in order."""
-    control = RunControl()
-    control.step()
-    recorder = Recorder()
-    runner = ProgramRunner(run["code"], {}, control, recorder, run["variables"])
-    thread = threading.Thread(target=runner.run)
-    thread.start()
-    visited = []
-    while True:
-        recorder.wait_for(lambda e: isinstance(e, (RunPaused, RunFinished)) and
-                          len(recorder.of(RunPaused)) + len(recorder.of(RunFinished)) > len(visited))
-        if recorder.of(RunFinished):
-            break
-        visited.append(recorder.of(RunPaused)[-1].block_id)
-        control.step()
-    thread.join(5)
+    """Step through a page's getRunCode answer; the run must finish."""
+    visited, recorder = step_through_code(run["code"], run["variables"])
     assert recorder.events[-1] == RunFinished("finished"), recorder.events[-1]
     return visited, recorder
 

@@ -79,10 +79,11 @@ def test_breakpoint_pauses_before_the_block_each_time_it_is_reached():
     assert len(recorder.of(RunResumed)) == 3
 
 
-def test_stepping_visits_every_block_in_order():
+def step_through(code, variables=None):
+    """Run ``code`` one block at a time (Step after each pause); return the block ids and the recorder."""
     control = RunControl()
     control.step()
-    runner, recorder, thread = start(PROGRAM, control)
+    runner, recorder, thread = start(code, control, variables=variables)
     visited = []
     while True:
         recorder.wait_for(lambda e: isinstance(e, (RunPaused, RunFinished)) and
@@ -92,8 +93,14 @@ def test_stepping_visits_every_block_in_order():
         visited.append(recorder.of(RunPaused)[-1].block_id)
         control.step()
     thread.join(5)
+    return visited, recorder
+
+
+def test_stepping_visits_every_block_in_order():
+    visited, recorder = step_through(PROGRAM)
     assert visited == ["a", "b", "c", "c", "c", "d"]
     assert {event.reason for event in recorder.of(RunPaused)} == {"step"}
+    assert recorder.events[-1] == RunFinished("finished")
 
 
 def test_pause_request_pauses_a_running_loop_and_continue_resumes_it():

@@ -1,97 +1,228 @@
-"""HOBBIT's commands (plugins/hobbit/rockly_hobbit/api.py): argument checks and what reaches the robot."""
+"""HOBBIT's commands (plugins/hobbit/rockly_hobbit/api.py): argument checks, the exact ROS values they send, pausing.
+
+The commands drive the built-in simulated HOBBIT (plugins/hobbit/rockly_hobbit/sim.py) in a
+real SimWorld. What they send is read where it reaches that world: topic messages through
+``world.subscribe`` (their types from ``world.topics()``), service calls and action goals
+noted by ``ObservedSimBackend`` on their way into the real SimBackend, and dialogs by the
+person at the tablet. What the simulator then does with them (poses, arm states, tablet
+views) is tested in test_hobbit_sim.py. Every wait is on a condition, never a fixed time.
+"""
+import copy
 import importlib.util
 import math
 import re
+import threading
+import time
 
 import pytest
 from profile_copies import HOBBIT_DIR, SHARED_TOOLBOXES
 
-from rockly_desktop.core.errors import RobotCommandError
+from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
+from rockly_desktop.executor.control import RunControl
 from rockly_desktop.plugins.profile import load_profile
-from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
+from rockly_desktop.robot.sim_world import SimBackend, SimWorld
 
 
-def _load_api_module():
-    """Import api.py by its path, leaving sys.path and sys.modules as they were."""
-    spec = importlib.util.spec_from_file_location("hobbit_api_under_test", HOBBIT_DIR / "rockly_hobbit" / "api.py")
+def _load(module_name, file_name):
+    """Import a HOBBIT module by its path, leaving sys.path and sys.modules as they were."""
+    spec = importlib.util.spec_from_file_location(module_name, HOBBIT_DIR / "rockly_hobbit" / file_name)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
 
 
-api = _load_api_module()
+api = _load("hobbit_api_under_test", "api.py")
+SimHobbit = _load("hobbit_sim_for_the_api", "sim.py").SimHobbit
 Hobbit = api.Hobbit
 
-
-class RecordingGoal(GoalHandle):
-    def __init__(self, status):
-        self.status = status
-
-    def wait(self, timeout):
-        return GoalOutcome(self.status, {})
-
-    def cancel(self):
-        pass
+SPEED = 20
+POSITION = 0.02  # m
+ANGLE = 2.0      # degrees
+TABLET_TEXTS = ['He said "hello"', "it's me", "first line\nsecond line", "Grüße, 日本語 😀", "a\\b {x} %s", ""]
 
 
-class RecordingBackend(RobotBackend):
-    """Records every call; answers services, goals and state topics as a test scripts them.
+class ObservedSimBackend(SimBackend):
+    """The real SimBackend; notes each service call and action goal, with its ROS type, then passes it on unchanged.
 
-    Minimal stand-in until the simulator exists.
+    The simulator answers them itself: tablet answers, goal outcomes and timing are real.
     """
 
-    def __init__(self, service_response=None, goal_status=GoalStatus.SUCCEEDED, motion_states=("Moving", "Idle")):
-        self.calls = []
-        self.service_response = service_response if service_response is not None else {"params": []}
-        self.goal_status = goal_status
-        self.motion_states = list(motion_states)
-        self.latest_messages = {}
-
-    def publish(self, topic, msg_type, message):
-        self.calls.append(("publish", topic, msg_type, message))
-
-    def latest(self, topic, msg_type):
-        return self.latest_messages.get(topic)
-
-    def wait_for_message(self, topic, msg_type, timeout):
-        self.calls.append(("wait_for_message", topic, msg_type))
-        message = {"data": self.motion_states.pop(0)}
-        self.latest_messages[topic] = message
-        return message
+    def __init__(self, world, interrupt):
+        super().__init__(world, interrupt)
+        self.service_calls = []
+        self.goals = []
 
     def call_service(self, name, srv_type, request, timeout):
-        self.calls.append(("call_service", name, srv_type, request, timeout))
-        return self.service_response
+        self.service_calls.append((name, srv_type, copy.deepcopy(request), timeout))
+        return super().call_service(name, srv_type, request, timeout)
 
     def send_goal(self, action, action_type, goal, feedback=None):
-        self.calls.append(("send_goal", action, action_type, goal))
-        return RecordingGoal(self.goal_status)
+        self.goals.append((action, action_type, copy.deepcopy(goal)))
+        return super().send_goal(action, action_type, goal, feedback)
 
-    def sleep(self, seconds):
-        self.calls.append(("sleep", seconds))
 
-    def cancel_all_goals(self, action):
-        self.calls.append(("cancel_all_goals", action))
+class AnsweringTablet:
+    """The person at the simulated tablet: answers from a list, notes every question and notice."""
+
+    def __init__(self):
+        self.answers = []
+        self.asked = []
+        self.notices = []
+
+    def ask(self, kind, text, timeout, interrupt):
+        self.asked.append((kind, text, timeout))
+        return self.answers.pop(0)
+
+    def notify(self, kind, text):
+        self.notices.append((kind, text))
+
+
+class HoldWatcher:
+    """``control.on_hold`` as the runner sets it, noting the robot's state when a paused command holds."""
+
+    def __init__(self, control, sim):
+        self._control = control
+        self._sim = sim
+        self.held = threading.Event()
+        self.snapshots = []
+
+    def __call__(self):
+        self.snapshots.append(self._sim.snapshot())
+        self.held.set()
+        self._control.wait_for_release()
+
+    def wait_until_held(self):
+        assert self.held.wait(10), "the command never held for the pause"
+        return self.snapshots[0]
+
+
+class Background:
+    """Runs ``function`` in a thread (a program) and records its error."""
+
+    def __init__(self, function):
+        self.error = None
+        self.thread = threading.Thread(target=self._run, args=(function,), daemon=True)
+        self.thread.start()
+
+    def _run(self, function):
+        try:
+            function()
+        except Exception as error:  # noqa: BLE001 - the test looks at it
+            self.error = error
+
+    def join(self, timeout=10.0):
+        self.thread.join(timeout)
+        assert not self.thread.is_alive(), "the program did not end"
+        return self
 
 
 @pytest.fixture
-def backend():
-    return RecordingBackend()
+def world():
+    return SimWorld()
 
 
 @pytest.fixture
-def robot(backend):
+def tablet():
+    return AnsweringTablet()
+
+
+@pytest.fixture
+def sim(world, tablet):
+    robot = SimHobbit(world, tablet=tablet, speed=SPEED)
+    robot.start()
+    yield robot
+    robot.safe_stop()
+    robot.shutdown()
+
+
+@pytest.fixture
+def control():
+    control = RunControl()
+    yield control
+    control.request_stop()  # ends a program a failed test left holding or waiting
+
+
+@pytest.fixture
+def backend(world, sim, control):
+    return ObservedSimBackend(world, control.interrupt)
+
+
+@pytest.fixture
+def hobbit(backend):
     return Hobbit(backend)
 
 
-def mmui_params(call) -> dict:
-    """The MMUI request's params as {name: value}."""
-    kind, name, srv_type, request, timeout = call
-    assert (kind, name, srv_type) == ("call_service", "/MMUI", "hobbit_msgs/Request")
-    return {param["name"]: param["value"] for param in request["params"]}
+@pytest.fixture
+def hold(control, sim):
+    watcher = HoldWatcher(control, sim)
+    control.on_hold = watcher
+    return watcher
 
 
-# --- refused arguments ------------------------------------------------------------------------
+def eventually(world, predicate, timeout=10.0):
+    """Wait until ``predicate()`` holds, checking again at every message (the simulator publishes at 30 Hz)."""
+    assert world.wait_for(predicate, timeout), "the simulated HOBBIT never got there"
+
+
+def later(world, sim, sim_seconds=1.0):
+    """The snapshot after ``sim_seconds`` more of simulated time."""
+    start = sim.snapshot()["time"]
+    eventually(world, lambda: sim.snapshot()["time"] >= start + sim_seconds)
+    return sim.snapshot()
+
+
+def pose(snapshot):
+    return snapshot["x"], snapshot["y"], snapshot["theta"]
+
+
+def record(world, *topics):
+    """Every later message on ``topics`` as ``(topic, message)``, in the order they were published."""
+    seen = []
+    for topic in topics:
+        world.subscribe(topic, lambda message, topic=topic: seen.append((topic, message)))
+    return seen
+
+
+def record_data(world, topic):
+    """The ``data`` of every later message on ``topic``, in order."""
+    seen = []
+    world.subscribe(topic, lambda message: seen.append(message.get("data")))
+    return seen
+
+
+def degrees_between(theta, degrees):
+    """The smallest angle, in degrees, from the heading ``theta`` (radians) to ``degrees``."""
+    return math.degrees(math.remainder(theta - math.radians(degrees), math.tau))
+
+
+def amount_of(command, kind):
+    """The number in a ``Move <metres>`` / ``Turn <degrees>`` discrete motion command."""
+    word, amount = command.split()
+    assert word == kind, command
+    return float(amount)
+
+
+def tablet_request(dialog_type, text):
+    """The /MMUI request that shows (and says) ``text`` as HOBBIT's tablet expects it."""
+    return {"sessionID": "0", "requestText": "", "params": [
+        {"name": "type", "value": dialog_type}, {"name": "text", "value": text},
+        {"name": "speak", "value": text}, {"name": "Timeout", "value": "60"}]}
+
+
+def tablet_function(function_type):
+    return {"sessionID": "0", "requestText": "", "params": [{"name": "type", "value": function_type}]}
+
+
+# --- refused arguments: an error naming what is wrong, and nothing reaches the robot -------------
+
+
+@pytest.fixture
+def nothing_reached_the_robot(world, sim, backend):
+    """After the test: no topic got its first message, no service was called, no goal was sent."""
+    topics_before = world.topics()
+    yield
+    assert world.topics() == topics_before, "a refused command published something"
+    assert (backend.service_calls, backend.goals) == ([], [])
 
 
 @pytest.mark.parametrize("command, argument, what, choices", [
@@ -105,13 +236,12 @@ def mmui_params(call) -> dict:
     ("gripper", "half", "gripper action", ["open", "close"]),
     ("change_volume", "max", "volume change", ["louder", "quieter"]),
 ])
-def test_unknown_choice_is_refused_listing_the_valid_ones(robot, backend, command, argument, what, choices):
+def test_unknown_choice_is_refused_listing_the_valid_ones(hobbit, nothing_reached_the_robot,
+                                                           command, argument, what, choices):
     with pytest.raises(RobotCommandError) as caught:
-        getattr(robot, command)(argument)
-    message = str(caught.value)
-    assert message.startswith(f"unknown {what} {argument!r}; use one of ")
-    assert message.endswith(", ".join(repr(choice) for choice in choices))
-    assert backend.calls == [], "a refused command sends nothing to the robot"
+        getattr(hobbit, command)(argument)
+    listed = ", ".join(repr(choice) for choice in choices)
+    assert str(caught.value) == f"unknown {what} {argument!r}; use one of {listed}"
 
 
 @pytest.mark.parametrize("command, args, what, bad, choices", [
@@ -120,12 +250,12 @@ def test_unknown_choice_is_refused_listing_the_valid_ones(robot, backend, comman
     ("turn", (90, "up"), "direction", "up", ["left", "right"]),
     ("publish", ("/chatter", "Int32", 1), "message type", "Int32", ["String", "Bool", "Float64", "Int64", "UInt64"]),
 ])
-def test_unknown_direction_or_type_is_refused_listing_the_valid_ones(robot, backend, command, args, what, bad, choices):
+def test_unknown_direction_or_type_is_refused_listing_the_valid_ones(hobbit, nothing_reached_the_robot,
+                                                                      command, args, what, bad, choices):
     with pytest.raises(RobotCommandError) as caught:
-        getattr(robot, command)(*args)
+        getattr(hobbit, command)(*args)
     listed = ", ".join(repr(choice) for choice in choices)
     assert str(caught.value) == f"unknown {what} {bad!r}; use one of {listed}"
-    assert backend.calls == []
 
 
 @pytest.mark.parametrize("command, args, what", [
@@ -138,39 +268,84 @@ def test_unknown_direction_or_type_is_refused_listing_the_valid_ones(robot, back
     ("navigate_to_pose", (0, 0, 0, 0, 0, 0, "one"), "quat w"),
     ("wait", ("5",), "the waiting time"),
 ])
-def test_non_number_is_refused_naming_what_it_should_be(robot, backend, command, args, what):
+def test_non_number_is_refused_naming_what_it_should_be(hobbit, nothing_reached_the_robot, command, args, what):
     with pytest.raises(RobotCommandError) as caught:
-        getattr(robot, command)(*args)
+        getattr(hobbit, command)(*args)
     bad = next(value for value in args if not isinstance(value, (int, float)) or isinstance(value, bool))
     assert str(caught.value) == f"{what} must be a number, not {bad!r}"
-    assert backend.calls == []
 
 
 @pytest.mark.parametrize("joints", [[0, 0, 0, 0, 0], [0] * 7, [], "123456", 6, None],
                          ids=["five", "seven", "none", "a string", "a number", "null"])
-def test_arm_joints_need_exactly_six_values(robot, backend, joints):
-    with pytest.raises(RobotCommandError, match=r"^the arm needs exactly 6 joint values, not "):
-        robot.move_arm_to_joints(joints)
-    assert backend.calls == []
+def test_arm_joints_need_exactly_six_values(hobbit, nothing_reached_the_robot, joints):
+    with pytest.raises(RobotCommandError) as caught:
+        hobbit.move_arm_to_joints(joints)
+    assert str(caught.value) == f"the arm needs exactly 6 joint values, not {joints!r}"
 
 
-def test_arm_joint_that_is_not_a_number_is_refused(robot, backend):
+def test_arm_joint_that_is_not_a_number_is_refused(hobbit, nothing_reached_the_robot):
     with pytest.raises(RobotCommandError, match=r"^a joint value must be a number, not 'x'$"):
-        robot.move_arm_to_joints([0, 0, "x", 0, 0, 0])
-    assert backend.calls == []
+        hobbit.move_arm_to_joints([0, 0, "x", 0, 0, 0])
 
 
-# --- what reaches the robot ------------------------------------------------------------------
+# --- topics -------------------------------------------------------------------------------------
 
 
-def test_look_publishes_the_head_position(robot, backend):
-    robot.look("up_left")
-    assert backend.calls == [("publish", "/head/move", "std_msgs/String", {"data": "up_left"})]
+@pytest.mark.parametrize("command, value, topic", [
+    ("look", "up_left", "/head/move"),
+    ("show_emotion", "VHAPPY", "/head/emo"),
+])
+def test_head_and_eyes_publish_the_value_as_a_string(world, hobbit, command, value, topic):
+    sent = record(world, topic)
+    getattr(hobbit, command)(value)
+    assert sent == [(topic, {"data": value})]
+    assert dict(world.topics())[topic] == "std_msgs/String"
 
 
-def test_show_emotion_publishes_the_emotion(robot, backend):
-    robot.show_emotion("VHAPPY")
-    assert backend.calls == [("publish", "/head/emo", "std_msgs/String", {"data": "VHAPPY"})]
+@pytest.mark.parametrize("command, args, motion", [
+    ("drive", (2, "forward"), "Move 2"),
+    ("drive", (0.5, "backward"), "Move -0.5"),
+    ("turn", (90, "left"), "Turn 90"),
+    ("turn", (180, "right"), "Turn -180"),
+])
+def test_drive_and_turn_send_one_discrete_motion_and_return_when_the_base_is_idle(world, sim, hobbit,
+                                                                                  command, args, motion):
+    commands = record_data(world, "/DiscreteMotionCmd")
+    states = record_data(world, "/DiscreteMotionState")
+    getattr(hobbit, command)(*args)
+    assert commands == [motion]
+    assert dict(world.topics())["/DiscreteMotionCmd"] == "std_msgs/String"
+    assert states[-1] == "Idle" and sim.snapshot()["motion"] == "idle"
+
+
+def test_stop_halts_discrete_motion_then_velocity(world, hobbit):
+    sent = record(world, "/DiscreteMotionCmd", "/cmd_vel")
+    hobbit.stop()
+    assert sent == [("/DiscreteMotionCmd", {"data": "Stop"}), ("/cmd_vel", {})]
+    types = dict(world.topics())
+    assert (types["/DiscreteMotionCmd"], types["/cmd_vel"]) == ("std_msgs/String", "geometry_msgs/Twist")
+
+
+@pytest.mark.parametrize("message_type, value, ros_type", [
+    ("String", "hi 😀", "std_msgs/String"),
+    ("Bool", True, "std_msgs/Bool"),
+    ("Float64", 1.5, "std_msgs/Float64"),
+    ("Int64", -3, "std_msgs/Int64"),
+    ("UInt64", 7, "std_msgs/UInt64"),
+])
+def test_publish_sends_the_value_as_a_std_msgs_message(world, hobbit, message_type, value, ros_type):
+    sent = record(world, "/chatter")
+    hobbit.publish("/chatter", message_type, value)
+    assert sent == [("/chatter", {"data": value})]
+    assert dict(world.topics())["/chatter"] == ros_type
+
+
+# --- actions ------------------------------------------------------------------------------------
+
+
+def arm_goal(command, joints=()):
+    return ("hobbit_arm", "hobbit_msgs/ArmServerAction",
+            {"command": {"data": command}, "velocity": 0.0, "joints": [{"joint_values": list(v)} for v in joints]})
 
 
 @pytest.mark.parametrize("command, argument, arm_command", [
@@ -181,122 +356,183 @@ def test_show_emotion_publishes_the_emotion(robot, backend):
     ("turntable", "counterclockwise", "TurnTurntableCCW"),
     ("turntable", "learn", "MoveToLearning"),
 ])
-def test_arm_commands_send_a_goal_to_the_arm_server(robot, backend, command, argument, arm_command):
-    getattr(robot, command)(argument)
-    assert backend.calls == [("send_goal", "hobbit_arm", "hobbit_msgs/ArmServerAction",
-                              {"command": {"data": arm_command}, "velocity": 0.0, "joints": []})]
+def test_arm_commands_send_one_goal_to_the_arm_server(sim, backend, hobbit, command, argument, arm_command):
+    getattr(hobbit, command)(argument)
+    assert backend.goals == [arm_goal(arm_command)]
+    assert sim.snapshot()["arm_target"] is None, "the command returned before the arm was done"
 
 
-def test_arm_joints_are_sent_as_one_joint_vector(robot, backend):
-    robot.move_arm_to_joints((10, 20.5, -30, 0, 45, 90))
-    assert backend.calls == [("send_goal", "hobbit_arm", "hobbit_msgs/ArmServerAction",
-                              {"command": {"data": "MoveToJointValues"}, "velocity": 0.0,
-                               "joints": [{"joint_values": [10.0, 20.5, -30.0, 0.0, 45.0, 90.0]}]})]
+def test_arm_joints_are_sent_as_one_vector_of_numbers(backend, hobbit):
+    hobbit.move_arm_to_joints((10, 20.5, -30, 0, 45, 90))
+    assert backend.goals == [arm_goal("MoveToJointValues", [[10.0, 20.5, -30.0, 0.0, 45.0, 90.0]])]
+    (_action, _type, goal), = backend.goals
+    assert all(type(value) is float for value in goal["joints"][0]["joint_values"])
 
 
-@pytest.mark.parametrize("status", [GoalStatus.ABORTED, GoalStatus.PREEMPTED, GoalStatus.REJECTED])
-def test_arm_goal_that_does_not_succeed_raises(status):
-    robot = Hobbit(RecordingBackend(goal_status=status))
-    with pytest.raises(RobotCommandError) as caught:
-        robot.gripper("close")
-    assert str(caught.value) == f"the robot could not finish the arm command CloseGripper ({status.value})"
+def test_arm_command_the_robot_does_not_finish_raises_naming_it(world, sim, hobbit):
+    moving = Background(lambda: hobbit.move_arm("floor"))
+    eventually(world, lambda: sim.snapshot()["arm_progress"] > 0)
+    sim.safe_stop()  # what ends a run: it cancels the arm goal
+    error = moving.join().error
+    assert isinstance(error, RobotCommandError), error
+    assert str(error) == "the robot could not finish the arm command MoveToPreGraspFloor (preempted)"
 
 
-@pytest.mark.parametrize("command, args, motion", [
-    ("drive", (2, "forward"), "Move 2"),
-    ("drive", (0.5, "backward"), "Move -0.5"),
-    ("turn", (90, "left"), "Turn 90"),
-    ("turn", (180, "right"), "Turn -180"),
-])
-def test_drive_and_turn_send_a_discrete_motion_and_wait_until_idle(robot, backend, command, args, motion):
-    getattr(robot, command)(*args)
-    assert backend.calls == [
-        ("publish", "/DiscreteMotionCmd", "std_msgs/String", {"data": motion}),
-        ("wait_for_message", "/DiscreteMotionState", "std_msgs/String"),
-        ("wait_for_message", "/DiscreteMotionState", "std_msgs/String"),
-    ]
-    assert backend.motion_states == []
-
-
-def test_stop_halts_discrete_motion_and_velocity(robot, backend):
-    robot.stop()
-    assert backend.calls == [("publish", "/DiscreteMotionCmd", "std_msgs/String", {"data": "Stop"}),
-                             ("publish", "/cmd_vel", "geometry_msgs/Twist", {})]
-
-
-def test_navigate_to_sends_a_map_pose_facing_the_heading(robot, backend):
-    robot.navigate_to(1.5, -2, 90)
-    (kind, action, action_type, goal), = backend.calls
-    assert (kind, action, action_type) == ("send_goal", "move_base", "move_base_msgs/MoveBaseAction")
-    pose = goal["target_pose"]
-    assert pose["header"] == {"frame_id": "map"}
-    assert pose["pose"]["position"] == {"x": 1.5, "y": -2.0, "z": 0.0}
-    orientation = pose["pose"]["orientation"]
+def test_navigate_to_sends_a_map_pose_facing_the_heading(backend, hobbit):
+    hobbit.navigate_to(1.5, -2, 90)
+    (action, action_type, goal), = backend.goals
+    assert (action, action_type) == ("move_base", "move_base_msgs/MoveBaseAction")
+    pose_stamped = goal["target_pose"]
+    assert pose_stamped["header"] == {"frame_id": "map"}
+    assert pose_stamped["pose"]["position"] == {"x": 1.5, "y": -2.0, "z": 0.0}
+    orientation = pose_stamped["pose"]["orientation"]
     assert (orientation["x"], orientation["y"]) == (0.0, 0.0)
     assert orientation["z"] == pytest.approx(math.sqrt(0.5))
     assert orientation["w"] == pytest.approx(math.sqrt(0.5))
 
 
-TABLET_TEXTS = ['He said "hello"', "it's me", "first line\nsecond line", "Grüße, 日本語 😀", "a\\b {x} %s", ""]
+def test_navigate_to_pose_sends_the_pose_as_given(backend, hobbit):
+    hobbit.navigate_to_pose(-1, 0.5, 0, 0, 0, -0.6, 0.8)
+    (_action, _type, goal), = backend.goals
+    assert goal == {"target_pose": {"header": {"frame_id": "map"}, "pose": {
+        "position": {"x": -1.0, "y": 0.5, "z": 0.0}, "orientation": {"x": 0.0, "y": 0.0, "z": -0.6, "w": 0.8}}}}
+
+
+def test_navigation_the_robot_refuses_raises_naming_it(hobbit):
+    with pytest.raises(RobotCommandError) as caught:
+        hobbit.navigate_to_pose(1, 1, 0, 0, 0, 0, 0)  # no orientation at all
+    assert str(caught.value) == "the robot could not finish the navigation (aborted)"
+
+
+# --- tablet (/MMUI service) -----------------------------------------------------------------------
 
 
 @pytest.mark.parametrize("text", TABLET_TEXTS)
-def test_show_info_sends_the_text_exactly_as_given(robot, backend, text):
-    robot.show_info(text)
-    (call,) = backend.calls
-    params = mmui_params(call)
-    assert params["type"] == "D_PLAIN"
-    assert params["text"] == text
-    assert params["speak"] == text
-    assert call[3]["sessionID"] == "0"
+def test_show_info_sends_and_speaks_the_text_exactly_as_given(backend, hobbit, text):
+    hobbit.show_info(text)
+    (name, srv_type, request, _timeout), = backend.service_calls
+    assert (name, srv_type) == ("/MMUI", "hobbit_msgs/Request")
+    assert request == tablet_request("D_PLAIN", text)
 
 
-def test_show_info_and_wait_asks_for_ok(robot, backend):
-    robot.show_info_and_wait("Ready?")
-    assert mmui_params(backend.calls[0])["type"] == "D_OK"
+@pytest.mark.parametrize("command, dialog_type, answer", [
+    ("show_info", "D_PLAIN", None),
+    ("show_info_and_wait", "D_OK", ""),
+    ("ask_yes_no", "D_YES_NO", "yes"),
+    ("ask_text", "D_NAME", "Anna"),
+])
+def test_each_tablet_command_sends_its_dialog_type(tablet, backend, hobbit, command, dialog_type, answer):
+    text = 'Say "yes"\nor no: Grüße 😀'
+    tablet.answers = [] if answer is None else [answer]
+    getattr(hobbit, command)(text)
+    assert [request for _name, _type, request, _timeout in backend.service_calls] == [
+        tablet_request(dialog_type, text)]
+    assert tablet.asked == ([] if answer is None else [(dialog_type, text, api.DIALOG_TIMEOUT)])
+    assert tablet.answers == [], "the answer was not asked for"
 
 
-@pytest.mark.parametrize("answer, expected", [("yes", True), ("Yes ", True), ("no", False), ("", False)])
-def test_ask_yes_no_is_true_only_for_a_yes_answer(answer, expected):
-    backend = RecordingBackend(service_response={"params": [{"name": "type", "value": "D_YES_NO"},
-                                                            {"name": "result", "value": answer}]})
-    assert Hobbit(backend).ask_yes_no("Shall we play?") is expected
-    params = mmui_params(backend.calls[0])
-    assert (params["type"], params["text"]) == ("D_YES_NO", "Shall we play?")
+@pytest.mark.parametrize("answer, expected", [("Yes ", True), (" YES\n", True), ("", False), ("yes please", False)])
+def test_ask_yes_no_is_true_only_for_a_yes_answer(tablet, hobbit, answer, expected):
+    tablet.answers = [answer]
+    assert hobbit.ask_yes_no("Shall we play?") is expected
 
 
-def test_ask_yes_no_without_an_answer_is_false():
-    assert Hobbit(RecordingBackend(service_response={})).ask_yes_no("Hello?") is False
+@pytest.mark.parametrize("command, args, function_type", [
+    ("change_volume", ("louder",), "F_LOUDER"),
+    ("change_volume", ("quieter",), "F_QUIETER"),
+    ("call_sos", (), "F_CALLSOS"),
+])
+def test_tablet_functions_send_only_their_type(tablet, backend, hobbit, command, args, function_type):
+    getattr(hobbit, command)(*args)
+    (name, srv_type, request, _timeout), = backend.service_calls
+    assert (name, srv_type, request) == ("/MMUI", "hobbit_msgs/Request", tablet_function(function_type))
+    assert [kind for kind, _text in tablet.notices] == [function_type]
 
 
-def test_ask_text_returns_what_was_typed(backend):
-    backend.service_response = {"params": [{"name": "result", "value": "Anna Grüße"}]}
-    assert Hobbit(backend).ask_text("What is your name?") == "Anna Grüße"
-    assert mmui_params(backend.calls[0])["type"] == "D_NAME"
+def test_call_service_passes_the_request_unchanged_and_returns_the_response(tablet, backend, hobbit):
+    tablet.answers = ["Anna Grüße"]
+    request = {"sessionID": "7", "params": [{"name": "type", "value": "D_NAME"}, {"name": "text", "value": "Name?"}]}
+    response = hobbit.call_service("/MMUI", "hobbit_msgs/Request", request)
+    assert response == {"params": [{"name": "result", "value": "Anna Grüße"}]}
+    assert backend.service_calls == [("/MMUI", "hobbit_msgs/Request", request, api.DIALOG_TIMEOUT)]
+    assert tablet.asked == [("D_NAME", "Name?", 60.0)]
 
 
-@pytest.mark.parametrize("change, function", [("louder", "F_LOUDER"), ("quieter", "F_QUIETER")])
-def test_volume_change_calls_the_tablet_function(robot, backend, change, function):
-    robot.change_volume(change)
-    assert mmui_params(backend.calls[0]) == {"type": function}
+# --- waiting ------------------------------------------------------------------------------------
 
 
-def test_publish_sends_a_std_msgs_message(robot, backend):
-    robot.publish("/chatter", "Float64", 1.5)
-    assert backend.calls == [("publish", "/chatter", "std_msgs/Float64", {"data": 1.5})]
+def test_wait_for_a_negative_time_returns_at_once(hobbit):
+    started = time.monotonic()
+    hobbit.wait(-3)
+    assert time.monotonic() - started < 1.0
 
 
-def test_wait_sleeps_and_never_backwards(robot, backend):
-    robot.wait(2)
-    robot.wait(-3)
-    assert backend.calls == [("sleep", 2.0), ("sleep", 0.0)]
+# --- pausing a drive or a turn --------------------------------------------------------------------
 
 
-def test_call_service_passes_the_parameters_and_returns_the_answer(backend):
-    backend.service_response = {"success": True, "message": "done"}
-    answer = Hobbit(backend).call_service("/reset", "std_srvs/Trigger", {"force": 1})
-    assert answer == {"success": True, "message": "done"}
-    assert backend.calls == [("call_service", "/reset", "std_srvs/Trigger", {"force": 1}, api.DIALOG_TIMEOUT)]
+def test_pause_halts_a_drive_part_way_and_continue_drives_the_rest(world, sim, control, hold, hobbit):
+    commands = record_data(world, "/DiscreteMotionCmd")
+    drive = Background(lambda: hobbit.drive(1.0))
+    eventually(world, lambda: sim.snapshot()["x"] > 0.1)
+    control.request_pause()
+
+    held = hold.wait_until_held()
+    assert (held["motion"], held["linear"]) == ("idle", 0.0)
+    assert 0.1 < held["x"] < 1.0 - POSITION
+    assert pose(later(world, sim)) == pose(held), "the base moved while the program held"
+    assert drive.thread.is_alive()
+
+    control.resume()
+    assert drive.join().error is None
+    assert sim.snapshot()["x"] == pytest.approx(1.0, abs=POSITION)
+    first, stop, rest = commands
+    assert (first, stop) == ("Move 1", "Stop")
+    assert amount_of(rest, "Move") == pytest.approx(1.0 - held["x"], abs=0.001)
+
+
+def test_pause_halts_a_turn_past_half_way_round_and_continue_turns_the_rest(world, sim, control, hold, hobbit):
+    commands = record_data(world, "/DiscreteMotionCmd")
+    turn = Background(lambda: hobbit.turn(270, "left"))
+    eventually(world, lambda: sim.snapshot()["theta"] < 0)  # turning left from 0, so past 180 degrees
+    control.request_pause()
+
+    held = hold.wait_until_held()
+    assert (held["motion"], held["angular"]) == ("idle", 0.0)
+    turned = math.degrees(held["theta"]) % 360
+    assert 180 < turned < 270 - ANGLE
+    assert pose(later(world, sim)) == pose(held), "the base turned while the program held"
+
+    control.resume()
+    assert turn.join().error is None
+    assert degrees_between(sim.snapshot()["theta"], 270) == pytest.approx(0.0, abs=ANGLE)
+    first, stop, rest = commands
+    assert (first, stop) == ("Turn 270", "Stop")
+    assert amount_of(rest, "Turn") == pytest.approx(270 - turned, abs=0.1)
+
+
+def test_pause_of_a_backward_drive_continues_backward(world, sim, control, hold, hobbit):
+    drive = Background(lambda: hobbit.drive(1.0, "backward"))
+    eventually(world, lambda: sim.snapshot()["x"] < -0.1)
+    control.request_pause()
+    held = hold.wait_until_held()
+    assert -1.0 + POSITION < held["x"] < -0.1
+    control.resume()
+    assert drive.join().error is None
+    assert sim.snapshot()["x"] == pytest.approx(-1.0, abs=POSITION)
+
+
+def test_stop_while_a_drive_holds_ends_the_program_and_the_base_stays_where_it_halted(world, sim, control, hold,
+                                                                                     hobbit):
+    commands = record_data(world, "/DiscreteMotionCmd")
+    drive = Background(lambda: hobbit.drive(1.0))
+    eventually(world, lambda: sim.snapshot()["x"] > 0.1)
+    control.request_pause()
+    held = hold.wait_until_held()
+
+    control.request_stop()
+    assert isinstance(drive.join().error, ProgramStopped), drive.error
+    assert commands == ["Move 1", "Stop"], "the rest of the drive was sent after the stop"
+    assert pose(later(world, sim)) == pose(held)
 
 
 # --- blocks and commands agree -------------------------------------------------------------------
