@@ -5,6 +5,7 @@
     rockly plugins validate PATH        check one profile folder
     rockly export PROGRAM -o OUT.py     write the Python generated from a program
     rockly run PROGRAM [--answer A]...  run a program on the simulator, without a window
+    rockly sim PROFILE --ros            the profile's simulated robot as a ROS 1 node
 """
 import argparse
 import logging
@@ -14,7 +15,7 @@ from pathlib import Path
 
 from rockly_desktop import __version__
 
-SUBCOMMANDS = ("plugins", "export", "run")
+SUBCOMMANDS = ("plugins", "export", "run", "sim")
 
 
 def _tool_parser() -> argparse.ArgumentParser:
@@ -35,9 +36,17 @@ def _tool_parser() -> argparse.ArgumentParser:
 
     run = commands.add_parser("run", help="run a program without a window")
     run.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
-    run.add_argument("--backend", default="sim", choices=("sim",), help="the robot to run on (default: the simulator)")
+    run.add_argument("--backend", default="sim", choices=("sim", "ros1"), help="the robot to run on (default: the simulator)")
+    run.add_argument("--master", help="ROS master URI for --backend ros1 (default: $ROS_MASTER_URI)")
     run.add_argument("--answer", action="append", default=[], help="an answer for the next tablet question (repeatable)")
     run.add_argument("--speed", type=float, default=1.0, help="simulated time runs this many times faster")
+
+    sim = commands.add_parser("sim", help="run a profile's simulated robot as a ROS 1 node")
+    sim.add_argument("profile", help="the robot profile id, e.g. hobbit")
+    sim.add_argument("--ros", action="store_true", required=True, help="serve the robot's ROS interface")
+    sim.add_argument("--master", help="ROS master URI (default: $ROS_MASTER_URI)")
+    sim.add_argument("--answer", action="append", default=[], help="an answer for the next tablet question (repeatable)")
+    sim.add_argument("--speed", type=float, default=1.0, help="simulated time runs this many times faster")
     return parser
 
 
@@ -128,7 +137,11 @@ def main(argv=None) -> int:
         if args.command == "run":
             from rockly_desktop.run_command import run_program
 
-            return run_program(args.program, args.answer, args.speed)
+            return run_program(args.program, args.answer, args.speed, backend=args.backend, master_uri=args.master)
+        if args.command == "sim":
+            from rockly_desktop.run_command import serve_simulator
+
+            return serve_simulator(args.profile, args.master, args.speed, args.answer)
         return _export(args.program, args.output, args.language)
     args = _gui_parser().parse_args(argv)
     return gui_main(args.program)

@@ -1,4 +1,4 @@
-"""``rockly run PROGRAM``: run a program without a window, on the built-in simulator.
+"""``rockly run PROGRAM``: run a program without a window, on the built-in simulator or ROS 1.
 
 Prints one line per block it enters (id and type) and what the program prints; tablet
 questions are answered from ``--answer`` options in the order they come. Ctrl+C stops
@@ -12,7 +12,8 @@ from rockly_desktop.core.errors import RobotCommandError, RocklyError
 from rockly_desktop.core.workspace_blocks import block_types_by_id
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import BlockEntered, OutputPrinted, RunFinished
-from rockly_desktop.executor.robot_link import SimulatedRobot
+from rockly_desktop.executor.robot_link import RosRobot, SimulatedRobot
+from rockly_desktop.robot.ros1.connection import RosUnavailable
 from rockly_desktop.executor.run_setup import make_runner
 
 EXIT_STOPPED = 130
@@ -41,8 +42,9 @@ class AnswerList:
         self._out(f"tablet  {kind}: {text!r}")
 
 
-def run_program(program_path, answers=(), speed: float = 1.0, language: str = "en", out=print) -> int:
-    """Run ``program_path`` headless on its profile's simulator; returns the exit status."""
+def run_program(program_path, answers=(), speed: float = 1.0, language: str = "en", out=print,
+                backend: str = "sim", master_uri: str = None) -> int:
+    """Run ``program_path`` headless on its profile's simulator (or on ROS 1); returns the exit status."""
     if not os.environ.get("QT_QPA_PLATFORM"):
         os.environ["QT_QPA_PLATFORM"] = "offscreen"
     from rockly_desktop.app import create_application
@@ -71,8 +73,11 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
     finally:
         editor.close()
     try:
-        robot = SimulatedRobot(program.profile, tablet=AnswerList(answers, out), speed=speed)
-    except RocklyError as error:
+        if backend == "ros1":
+            robot = RosRobot(program.profile, master_uri)
+        else:
+            robot = SimulatedRobot(program.profile, tablet=AnswerList(answers, out), speed=speed)
+    except (RocklyError, RosUnavailable) as error:
         print(f"rockly run: {error}", file=sys.stderr)
         return 1
     control = RunControl(trace=True)
@@ -102,3 +107,32 @@ def _report_end(result: RunFinished, types: dict) -> int:
     where = f"block {result.block_id} ({types.get(result.block_id, '?')})" if result.block_id else "the program"
     print(f"error in {where}: {result.message}", file=sys.stderr)
     return 1
+
+
+def serve_simulator(profile_id: str, master_uri=None, speed: float = 1.0, answers=(), out=print) -> int:
+    """``rockly sim PROFILE --ros``: the profile's simulator as a ROS node until Ctrl+C (exit 0)."""
+    import threading
+
+    from rockly_desktop.plugins.registry import ProfileRegistry
+    from rockly_desktop.robot.ros1.messages import MessageTypes
+    from rockly_desktop.robot.ros1.sim_bridge import run_simulator_node
+    from rockly_desktop.executor.robot_link import profile_message_folders
+
+    registry = ProfileRegistry.discover()
+    if profile_id not in registry.profiles:
+        print(f"rockly sim: no robot profile '{profile_id}' (installed: {', '.join(registry.profiles)})", file=sys.stderr)
+        return 2
+    profile = registry.get(profile_id)
+    stop = threading.Event()
+    previous = signal.signal(signal.SIGINT, lambda *_: stop.set())
+    signal.signal(signal.SIGTERM, lambda *_: stop.set())
+    try:
+        types = MessageTypes(profile_message_folders(profile))
+        run_simulator_node(profile, types, master_uri, speed, AnswerList(answers, out), stop,
+                           on_ready=lambda: out(f"simulated {profile.display_name()} is up on ROS (Ctrl+C ends it)", flush=True))
+    except (RocklyError, RosUnavailable) as error:
+        print(f"rockly sim: {error}", file=sys.stderr)
+        return 1
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    return 0

@@ -52,3 +52,7 @@ class RobotTimeout(RobotCommandError):
 
 class ProgramStopped(RocklyError):
     """Raised inside a running program (at a block or inside a robot wait) when it is stopped."""
+
+
+class RobotConnectionLost(RobotCommandError):
+    """The robot (its ROS master or a node it needs) stopped answering."""

@@ -34,3 +34,45 @@ class SimulatedRobot:
         """Stop the simulator's threads."""
         self.safe_stop()
         self.simulator.shutdown()
+
+
+class RosRobot:
+    """A real robot (or a ROS-level simulator) on ROS 1, through this process's one node.
+
+    Raises RosUnavailable when rospy is missing or the master does not answer.
+    """
+
+    name = "ros1"
+
+    def __init__(self, profile, master_uri: str = None):
+        from rockly_desktop.robot.ros1.backend import RosGraph
+        from rockly_desktop.robot.ros1.connection import RosConnection
+        from rockly_desktop.robot.ros1.messages import MessageTypes
+
+        self.profile = profile
+        self.connection = RosConnection.get(master_uri)
+        self.graph = RosGraph(self.connection, MessageTypes(profile_message_folders(profile)))
+
+    def backend(self, interrupt: Interrupt):
+        """A backend whose waits end when ``interrupt`` is stopped or the master is lost."""
+        from rockly_desktop.robot.ros1.backend import Ros1Backend
+
+        return Ros1Backend(self.graph, interrupt)
+
+    def snapshot(self):
+        """A real robot has no simulator view."""
+        return None
+
+    def safe_stop(self) -> list:
+        """Do the profile's safe stop now; returns what failed."""
+        return run_safe_stop(self.profile.manifest.get("safe_stop", []), self.backend(Interrupt()))
+
+    def shutdown(self):
+        """Stop the robot safely; the node stays up for the next run."""
+        self.safe_stop()
+
+
+def profile_message_folders(profile) -> list:
+    """The folders of ROS definitions a profile ships (its manifest's ``messages``)."""
+    folder = profile.manifest.get("messages")
+    return [profile.root / folder] if folder else []

@@ -65,9 +65,10 @@ class Interrupt:
             remaining = deadline - time.monotonic()
             if remaining <= 0:
                 return
-            self._wait_for_stop(min(remaining, POLL_SECONDS) if self.hold_handler else remaining)
+            self.nap(min(remaining, POLL_SECONDS) if self.hold_handler else remaining)
 
-    def _wait_for_stop(self, seconds: float):
+    def nap(self, seconds: float):
+        """Wait up to ``seconds`` for a stop (then raise ProgramStopped); a pause does not hold it."""
         if self._stopped.wait(seconds):
             raise ProgramStopped("the program was stopped")
 
@@ -81,4 +82,4 @@ class Interrupt:
             remaining = deadline - time.monotonic()
             if remaining <= 0:
                 return False
-            self._wait_for_stop(min(POLL_SECONDS, remaining))
+            self.nap(min(POLL_SECONDS, remaining))

@@ -6,12 +6,13 @@ from PySide6.QtWidgets import QLabel, QMainWindow, QMessageBox
 from rockly_desktop import __version__
 from rockly_desktop.bridge.editor_view import EditorView
 from rockly_desktop.core.errors import RocklyError
-from rockly_desktop.executor.robot_link import SimulatedRobot
+from rockly_desktop.robot.ros1.connection import RosUnavailable
 from rockly_desktop.ui.code_dock import CodeDock
 from rockly_desktop.ui.console_dock import ConsoleDock
 from rockly_desktop.ui.file_actions import ProgramFiles
 from rockly_desktop.ui.preferences import PreferencesDialog
 from rockly_desktop.ui.run_session import RunSession
+from rockly_desktop.ui.robot_choice import RobotChoice
 from rockly_desktop.ui.run_toolbar import RunToolbar
 from rockly_desktop.ui.simulator_dock import SimulatorDock
 from rockly_desktop.ui.tablet import QtTablet
@@ -36,7 +37,6 @@ class MainWindow(QMainWindow):
         self.setObjectName("main_window")
 
         self.breakpoints = []
-        self._robot = None
         self.editor = editor or EditorView()
         self.setCentralWidget(self.editor)
         self.simulator_dock = SimulatorDock(tr("simulator_dock", self.language), self)
@@ -50,12 +50,14 @@ class MainWindow(QMainWindow):
         self.code_dock.raise_()
         self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.console)
         self.profile_label = QLabel(self)
-        self.statusBar().addPermanentWidget(self.profile_label)
         self.tablet = QtTablet(self, self.profile.display_name())
         self.tablet.sig_notice.connect(lambda _kind, text: self.console.append(
             tr("robot_says", self.language, text=text), "robot"))
         self.runs = RunSession(self)
+        self.robots = RobotChoice(self)
         self.tablet.sig_dismissed.connect(self.runs.stop)
+        self.statusBar().addPermanentWidget(self.robots.status)
+        self.statusBar().addPermanentWidget(self.profile_label)
         self._build_run_toolbar()
 
         self.files = ProgramFiles(self)
@@ -108,33 +110,35 @@ class MainWindow(QMainWindow):
                  "removeBreakpoint": tr("remove_breakpoint", self.language)}
         self.editor.start(self.profile.editor_config(self.language), self.language, first_call, on_first_result, texts)
         self.profile_label.setText(tr("robot_status", self.language, name=self.profile.display_name(self.language)))
-        self._show_robot()
+        self.show_robot()
 
     # --- the robot ----------------------------------------------------------------------
 
     def robot(self):
-        """The robot programs run on: the active profile's built-in simulator."""
-        if self._robot is None or self._robot.profile.id != self.profile.id:
-            self._shutdown_robot()
-            self.tablet.robot_name = self.profile.display_name(self.language)
-            self._robot = SimulatedRobot(self.profile, tablet=self.tablet, speed=self.simulator_speed)
-        return self._robot
+        """The robot programs run on: the profile's simulator, or a robot over ROS 1."""
+        return self.robots.robot()
 
-    def _show_robot(self):
+    def show_robot(self):
+        """Show the active robot in the Simulator dock (a note for a real robot)."""
         try:
             robot = self.robot()
             view_class = self.profile.load_object("simulator_view") if "simulator_view" in self.profile.manifest else None
-        except RocklyError as error:
+        except (RocklyError, RosUnavailable) as error:
             self.console.append(str(error), "error")
             return
-        if self.simulator_dock.robot is not robot:
+        if self.simulator_dock.robot is robot:
+            return
+        if robot.snapshot() is None:
+            self.simulator_dock.show_robot(None, None, tr("real_robot_view", self.language))
+        else:
             self.simulator_dock.show_robot(robot, view_class(language=self.language) if view_class else None)
 
-    def _shutdown_robot(self):
-        if self._robot is not None:
-            self.simulator_dock.stop()
-            self._robot.shutdown()
-            self._robot = None
+    def _choose_backend(self, index):
+        kind = self.run_toolbar.backend.itemData(index)
+        if not self.robots.choose(kind):
+            self.run_toolbar.backend.blockSignals(True)
+            self.run_toolbar.backend.setCurrentIndex(self.run_toolbar.backend.findData(self.robots.kind))
+            self.run_toolbar.backend.blockSignals(False)
 
     def _on_breakpoints(self, block_ids):
         self.breakpoints = list(block_ids)
@@ -150,6 +154,8 @@ class MainWindow(QMainWindow):
         toolbar.stop_action.triggered.connect(self.runs.stop)
         toolbar.sig_delay_changed.connect(self.runs.set_delay)
         toolbar.set_state(self.runs.state)
+        toolbar.backend.setCurrentIndex(toolbar.backend.findData(self.robots.kind))
+        toolbar.backend.currentIndexChanged.connect(self._choose_backend)
         old = getattr(self, "run_toolbar", None)
         if old is not None:
             toolbar.speed.setValue(old.speed.value())
@@ -300,7 +306,8 @@ class MainWindow(QMainWindow):
             event.ignore()
             return
         self.runs.shutdown()
-        self._shutdown_robot()
+        self.simulator_dock.stop()
+        self.robots.shutdown()
         self.settings.save_window(self.saveGeometry(), self.saveState())
         self.settings.last_file = self.files.path
         self.settings.sync()

@@ -51,6 +51,7 @@ class RunToolbar(QToolBar):
         self.addWidget(QLabel(f" {tr('backend', language)} ", self))
         self.backend = QComboBox(self)
         self.backend.addItem(tr("backend_simulator", language), "simulator")
+        self.backend.addItem(tr("backend_ros1", language), "ros1")
         self.addWidget(self.backend)
         self.set_state("idle")
 

@@ -75,6 +75,15 @@ class AppSettings:
         self._store.setValue("window/geometry", geometry)
         self._store.setValue("window/state", state)
 
+    def ros_connection(self, profile_id: str):
+        """The ROS master URI and host remembered for a robot profile: (uri or None, host or None)."""
+        return self._get(f"ros/{profile_id}/master") or None, self._get(f"ros/{profile_id}/host") or None
+
+    def remember_ros_connection(self, profile_id: str, master_uri: str, host: str):
+        """Remember how to reach this robot over ROS."""
+        self._store.setValue(f"ros/{profile_id}/master", master_uri)
+        self._store.setValue(f"ros/{profile_id}/host", host or "")
+
     def sync(self):
         """Write to disk now."""
         self._store.sync()

@@ -1,5 +1,5 @@
 """The Simulator dock: the profile's own view of its simulated robot, refreshed at 30 Hz."""
-from PySide6.QtCore import QTimer
+from PySide6.QtCore import Qt, QTimer
 from PySide6.QtWidgets import QDockWidget, QLabel
 
 REFRESH_MS = 33
@@ -17,11 +17,18 @@ class SimulatorDock(QDockWidget):
         self._timer.setInterval(REFRESH_MS)
         self._timer.timeout.connect(self.refresh)
 
-    def show_robot(self, robot, view):
-        """Show ``robot``'s simulation in ``view`` (None: a note that there is no view)."""
+    def show_robot(self, robot, view, note: str = "—"):
+        """Show ``robot``'s simulation in ``view``; without a view, show ``note`` instead."""
         self.robot = robot
         self.view = view
-        self.setWidget(view if view is not None else QLabel("—", self))
+        if view is None:
+            label = QLabel(note, self)
+            label.setWordWrap(True)
+            label.setAlignment(Qt.AlignmentFlag.AlignCenter)
+            self.setWidget(label)
+            self._timer.stop()
+            return
+        self.setWidget(view)
         self.refresh()
         self._timer.start()
 

@@ -217,12 +217,15 @@ def tablet_function(function_type):
 
 
 @pytest.fixture
-def nothing_reached_the_robot(world, sim, backend):
-    """After the test: no topic got its first message, no service was called, no goal was sent."""
+def assert_nothing_reached_the_robot(world, sim, backend):
+    """A check that since the test began no topic got its first message, no service was called, no goal sent."""
     topics_before = world.topics()
-    yield
-    assert world.topics() == topics_before, "a refused command published something"
-    assert (backend.service_calls, backend.goals) == ([], [])
+
+    def check():
+        assert world.topics() == topics_before, "a refused command published something"
+        assert (backend.service_calls, backend.goals) == ([], [])
+
+    return check
 
 
 @pytest.mark.parametrize("command, argument, what, choices", [
@@ -236,12 +239,13 @@ def nothing_reached_the_robot(world, sim, backend):
     ("gripper", "half", "gripper action", ["open", "close"]),
     ("change_volume", "max", "volume change", ["louder", "quieter"]),
 ])
-def test_unknown_choice_is_refused_listing_the_valid_ones(hobbit, nothing_reached_the_robot,
+def test_unknown_choice_is_refused_listing_the_valid_ones(hobbit, assert_nothing_reached_the_robot,
                                                            command, argument, what, choices):
     with pytest.raises(RobotCommandError) as caught:
         getattr(hobbit, command)(argument)
     listed = ", ".join(repr(choice) for choice in choices)
     assert str(caught.value) == f"unknown {what} {argument!r}; use one of {listed}"
+    assert_nothing_reached_the_robot()
 
 
 @pytest.mark.parametrize("command, args, what, bad, choices", [
@@ -250,12 +254,13 @@ def test_unknown_choice_is_refused_listing_the_valid_ones(hobbit, nothing_reache
     ("turn", (90, "up"), "direction", "up", ["left", "right"]),
     ("publish", ("/chatter", "Int32", 1), "message type", "Int32", ["String", "Bool", "Float64", "Int64", "UInt64"]),
 ])
-def test_unknown_direction_or_type_is_refused_listing_the_valid_ones(hobbit, nothing_reached_the_robot,
+def test_unknown_direction_or_type_is_refused_listing_the_valid_ones(hobbit, assert_nothing_reached_the_robot,
                                                                       command, args, what, bad, choices):
     with pytest.raises(RobotCommandError) as caught:
         getattr(hobbit, command)(*args)
     listed = ", ".join(repr(choice) for choice in choices)
     assert str(caught.value) == f"unknown {what} {bad!r}; use one of {listed}"
+    assert_nothing_reached_the_robot()
 
 
 @pytest.mark.parametrize("command, args, what", [
@@ -268,24 +273,27 @@ def test_unknown_direction_or_type_is_refused_listing_the_valid_ones(hobbit, not
     ("navigate_to_pose", (0, 0, 0, 0, 0, 0, "one"), "quat w"),
     ("wait", ("5",), "the waiting time"),
 ])
-def test_non_number_is_refused_naming_what_it_should_be(hobbit, nothing_reached_the_robot, command, args, what):
+def test_non_number_is_refused_naming_what_it_should_be(hobbit, assert_nothing_reached_the_robot, command, args, what):
     with pytest.raises(RobotCommandError) as caught:
         getattr(hobbit, command)(*args)
     bad = next(value for value in args if not isinstance(value, (int, float)) or isinstance(value, bool))
     assert str(caught.value) == f"{what} must be a number, not {bad!r}"
+    assert_nothing_reached_the_robot()
 
 
 @pytest.mark.parametrize("joints", [[0, 0, 0, 0, 0], [0] * 7, [], "123456", 6, None],
                          ids=["five", "seven", "none", "a string", "a number", "null"])
-def test_arm_joints_need_exactly_six_values(hobbit, nothing_reached_the_robot, joints):
+def test_arm_joints_need_exactly_six_values(hobbit, assert_nothing_reached_the_robot, joints):
     with pytest.raises(RobotCommandError) as caught:
         hobbit.move_arm_to_joints(joints)
     assert str(caught.value) == f"the arm needs exactly 6 joint values, not {joints!r}"
+    assert_nothing_reached_the_robot()
 
 
-def test_arm_joint_that_is_not_a_number_is_refused(hobbit, nothing_reached_the_robot):
+def test_arm_joint_that_is_not_a_number_is_refused(hobbit, assert_nothing_reached_the_robot):
     with pytest.raises(RobotCommandError, match=r"^a joint value must be a number, not 'x'$"):
         hobbit.move_arm_to_joints([0, 0, "x", 0, 0, 0])
+    assert_nothing_reached_the_robot()
 
 
 # --- topics -------------------------------------------------------------------------------------

@@ -13,10 +13,12 @@ def with_alpha(color, alpha):
     return c
 
 
-def round_pen(color, width):
-    """A pen with round caps."""
+def round_pen(color, width, round_joins=False):
+    """A pen with round caps (and joins)."""
     pen = QPen(color, width)
     pen.setCapStyle(Qt.PenCapStyle.RoundCap)
+    if round_joins:
+        pen.setJoinStyle(Qt.PenJoinStyle.RoundJoin)
     return pen
 
 

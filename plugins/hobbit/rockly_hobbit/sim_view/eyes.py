@@ -2,8 +2,9 @@
 import math
 
 from PySide6.QtCore import QPointF, QRectF, Qt
-from PySide6.QtGui import QBrush, QColor, QLinearGradient, QPainterPath, QPainterPathStroker, QPen, QPolygonF, \
-    QRadialGradient
+from PySide6.QtGui import (
+    QBrush, QColor, QLinearGradient, QPainterPath, QPainterPathStroker, QPolygonF, QRadialGradient,
+)
 
 from .drawing import arc, round_pen, rounded, star, with_alpha
 from .palette import FACE_BG, FACE_BG_SLEEP, IRIS, IRIS_DARK, LID_EDGE

@@ -24,8 +24,10 @@ def paint_furniture(p):
         piece(p, False)
 
 
-def _outline(p, is_shadow):
+def _silhouette(p, is_shadow, colour):
+    """Pen and brush for a piece's outer shape: outlined ``colour``, or plain shadow on the shadow pass."""
     p.setPen(Qt.PenStyle.NoPen if is_shadow else cosmetic_pen(OUTLINE, 1.0))
+    p.setBrush(SHADOW if is_shadow else QColor(colour))
 
 
 def _paint_rug(p):
@@ -51,8 +53,7 @@ def _cushion(p, x, y, degrees, colour):
 
 
 def _sofa(p, is_shadow):
-    _outline(p, is_shadow)
-    p.setBrush(SHADOW if is_shadow else QColor("#F2857A"))
+    _silhouette(p, is_shadow, "#F2857A")
     p.drawRoundedRect(QRectF(0.1, 1.6, 2.0, 0.82), 0.12, 0.12)
     if is_shadow:
         return
@@ -68,14 +69,13 @@ def _sofa(p, is_shadow):
 
 
 def _table(p, is_shadow):
-    _outline(p, is_shadow)
     for cx in (3.4, 4.0):   # chairs tucked in on the wall side
-        p.setBrush(SHADOW if is_shadow else QColor("#7DC4E4"))
+        _silhouette(p, is_shadow, "#7DC4E4")
         p.drawRoundedRect(QRectF(cx - 0.2, 1.55, 0.4, 0.45), 0.08, 0.08)
         if not is_shadow:
             p.setBrush(QColor("#5AA8CC"))
             p.drawRoundedRect(QRectF(cx - 0.2, 1.9, 0.4, 0.1), 0.04, 0.04)
-    p.setBrush(SHADOW if is_shadow else QColor("#C98A57"))
+    _silhouette(p, is_shadow, "#C98A57")
     p.drawRoundedRect(QRectF(3.1, 0.75, 1.2, 0.9), 0.08, 0.08)
     if is_shadow:
         return
@@ -92,8 +92,7 @@ def _table(p, is_shadow):
 
 def _shelf(p, is_shadow):
     """A bookshelf against the right wall, with books of varied colour, thickness and depth."""
-    _outline(p, is_shadow)
-    p.setBrush(SHADOW if is_shadow else QColor("#A8764E"))
+    _silhouette(p, is_shadow, "#A8764E")
     p.drawRect(QRectF(4.58, -2.0, 0.42, 1.5))
     if is_shadow:
         return

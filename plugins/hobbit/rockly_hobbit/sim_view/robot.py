@@ -40,9 +40,7 @@ def paint_robot(p, scene, scale):
     _paint_motion_hints(p, scene.snapshot, scale)
     line = max(0.012, 1.4 / scale)
     # base, bumper and a chevron
-    p.setPen(QPen(BASE_EDGE, line))
-    p.setBrush(BASE_COLOR)
-    p.drawEllipse(QPointF(0, 0), BASE_RADIUS, BASE_RADIUS)
+    _disc(p, QPointF(0, 0), BASE_RADIUS, BASE_COLOR, BASE_EDGE, line)
     p.setPen(round_pen(BUMPER, 0.045))
     p.setBrush(Qt.BrushStyle.NoBrush)
     p.drawPolyline(QPolygonF(arc(0, 0, BASE_RADIUS - 0.03, -55, 55, 20, y_down=False)))
@@ -62,6 +60,13 @@ def paint_robot(p, scene, scale):
     _paint_arm(p, s, line, theta)
     _paint_head(p, s, line, scene.emotion == "SLEEPING")
     p.restore()
+
+
+def _disc(p, centre, radius, fill, edge, width):
+    """A filled circle outlined ``width`` wide."""
+    p.setPen(QPen(edge, width))
+    p.setBrush(fill)
+    p.drawEllipse(centre, radius, radius)
 
 
 def _paint_motion_hints(p, snapshot, scale):
@@ -97,9 +102,7 @@ def _paint_turntable(p, s, line):
     p.save()
     p.setOpacity(min(1.0, out * 1.5))
     p.translate(cx, TURNTABLE[1])
-    p.setPen(QPen(QColor("#6E5BB8"), line))
-    p.setBrush(QColor("#C9BDF5"))
-    p.drawEllipse(QPointF(0, 0), radius, radius)
+    _disc(p, QPointF(0, 0), radius, QColor("#C9BDF5"), QColor("#6E5BB8"), line)
     p.rotate(s["tt_angle"])
     p.setPen(QPen(QColor("#8C7AD6"), line * 0.8))
     for k in range(6):
@@ -113,12 +116,6 @@ def _paint_turntable(p, s, line):
     p.restore()
 
 
-def _arm_pen(color, width):
-    pen = round_pen(color, width)
-    pen.setJoinStyle(Qt.PenJoinStyle.RoundJoin)
-    return pen
-
-
 def _paint_arm(p, s, line, theta):
     """Shoulder, elbow and tip with a shadow that shows how high the arm is, then the gripper or a raised cap."""
     shoulder, elbow, tip = QPointF(*SHOULDER), QPointF(s["ex"], s["ey"]), QPointF(s["tx"], s["ty"])
@@ -126,26 +123,21 @@ def _paint_arm(p, s, line, theta):
     off = 0.015 + 0.06 * s["height"]
     sx = off * (math.cos(-theta) * 0.6 - math.sin(-theta) * -0.8)
     sy = off * (math.sin(-theta) * 0.6 + math.cos(-theta) * -0.8)
-    p.setPen(_arm_pen(QColor(20, 30, 60, 45), 0.06))
+    p.setPen(round_pen(QColor(20, 30, 60, 45), 0.06, round_joins=True))
     p.setBrush(Qt.BrushStyle.NoBrush)
     p.drawPolyline(QPolygonF([shoulder + QPointF(sx, sy), elbow + QPointF(sx, sy), tip + QPointF(sx, sy)]))
     for width, color in ((0.062, ARM_EDGE), (0.045, ARM)):
-        p.setPen(_arm_pen(color, width))
+        p.setPen(round_pen(color, width, round_joins=True))
         p.drawPolyline(QPolygonF([shoulder, elbow, tip]))
-    p.setPen(QPen(ARM_EDGE, line))
-    p.setBrush(QColor("#FFC27A"))
-    p.drawEllipse(elbow, 0.032, 0.032)
-    p.setBrush(QColor("#9AA3BA"))
-    p.drawEllipse(shoulder, 0.04, 0.04)
+    _disc(p, elbow, 0.032, QColor("#FFC27A"), ARM_EDGE, line)
+    _disc(p, shoulder, 0.04, QColor("#9AA3BA"), ARM_EDGE, line)
     up = s["up"]
     if 1.0 - up > 0.05:
         _paint_gripper(p, s, elbow, tip, line, 1.0 - up)
     if up > 0.05:
         # arm straight up ("candle"): a round cap with an arrow pointing at the sky
         r = 0.06 * up
-        p.setPen(QPen(ARM_EDGE, line))
-        p.setBrush(ARM)
-        p.drawEllipse(tip, r, r)
+        _disc(p, tip, r, ARM, ARM_EDGE, line)
         p.setPen(Qt.PenStyle.NoPen)
         p.setBrush(QColor("#FFFFFF"))
         p.drawEllipse(tip, r * 0.55, r * 0.55)
@@ -165,9 +157,7 @@ def _paint_gripper(p, s, elbow, tip, line, fingers):
         mid = QPointF(tip.x() + math.cos(a) * length * 0.6, tip.y() + math.sin(a) * length * 0.6)
         end = QPointF(mid.x() + math.cos(direction) * length * 0.5, mid.y() + math.sin(direction) * length * 0.5)
         p.drawPolyline(QPolygonF([tip, mid, end]))
-    p.setPen(QPen(GRIPPER, line))
-    p.setBrush(QColor("#5B6584"))
-    p.drawEllipse(tip, 0.028, 0.028)
+    _disc(p, tip, 0.028, QColor("#5B6584"), GRIPPER, line)
 
 
 def _paint_view_cone(p, s, grow):
@@ -196,9 +186,7 @@ def _paint_head(p, s, line, sleeping):
     """The round head with a dark visor facing where it looks, and two lights that dim in sleep."""
     hx, hy = HEAD_CENTER
     pan = math.degrees(s["pan"])
-    p.setPen(QPen(BODY_EDGE, line))
-    p.setBrush(HEAD)
-    p.drawEllipse(QPointF(hx, hy), HEAD_RADIUS, HEAD_RADIUS)
+    _disc(p, QPointF(hx, hy), HEAD_RADIUS, HEAD, BODY_EDGE, line)
     p.setPen(Qt.PenStyle.NoPen)
     p.setBrush(VISOR)
     p.drawPath(wedge(hx, hy, HEAD_RADIUS * 0.86, pan - 58, pan + 58, 16))

@@ -5,7 +5,7 @@ It changes only with the map's size and visible area, so it is drawn once into a
 import math
 
 from PySide6.QtCore import QPointF, QRectF, Qt
-from PySide6.QtGui import QColor, QPainter, QPen, QPixmap, QPolygonF, QTransform
+from PySide6.QtGui import QColor, QPainter, QPixmap, QPolygonF, QTransform
 
 from .drawing import arc, cosmetic_pen, round_pen, rounded
 from .furniture import paint_furniture

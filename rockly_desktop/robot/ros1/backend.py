@@ -1,0 +1,211 @@
+"""The RobotBackend on ROS 1: rospy topics, services and actionlib, by ROS names and types.
+
+Every wait polls in 10 ms steps so a stop request ends it at once, and fails with
+RobotConnectionLost within ~2 s when the master stops answering. Publishers, subscribers,
+service proxies and action clients are made once per name and shared by all runs.
+"""
+import threading
+import time
+
+from rockly_desktop.core.errors import RobotCommandError, RobotConnectionLost, RobotTimeout
+from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
+
+POLL_SECONDS = 0.01
+FIRST_PUBLISH_WAIT = 1.0  # a new publisher waits this long for subscribers to connect
+LOST_GRACE_SECONDS = 0.5
+
+_ACTIONLIB_STATUS = {3: GoalStatus.SUCCEEDED, 4: GoalStatus.ABORTED, 2: GoalStatus.PREEMPTED,
+                     8: GoalStatus.PREEMPTED, 5: GoalStatus.REJECTED, 9: GoalStatus.ABORTED}
+
+
+class RosGraph:
+    """Shared rospy endpoints of this process, made on first use (thread-safe)."""
+
+    def __init__(self, connection, types):
+        import rospy
+
+        self._rospy = rospy
+        self.connection = connection
+        self.types = types
+        self._lock = threading.Lock()
+        self._publishers = {}
+        self._topics = {}
+        self._services = {}
+        self._actions = {}
+
+    def publisher(self, topic, msg_type):
+        with self._lock:
+            entry = self._publishers.get(topic)
+            if entry is None:
+                entry = self._publishers[topic] = self._rospy.Publisher(
+                    topic, self.types.message_class(msg_type), queue_size=10)
+                return entry, True
+            return entry, False
+
+    def topic(self, topic, msg_type):
+        """The shared subscription to ``topic``: latest message and callbacks."""
+        with self._lock:
+            entry = self._topics.get(topic)
+            if entry is None:
+                entry = self._topics[topic] = _Topic(self._rospy, topic, self.types.message_class(msg_type), self.types)
+            return entry
+
+    def service(self, name, srv_type):
+        with self._lock:
+            proxy = self._services.get(name)
+            if proxy is None:
+                proxy = self._services[name] = self._rospy.ServiceProxy(name, self.types.service_class(srv_type))
+            return proxy
+
+    def action_client(self, action, action_type):
+        import actionlib
+
+        with self._lock:
+            client = self._actions.get(action)
+            if client is None:
+                action_class = self.types.action_classes(action_type)[0]
+                client = self._actions[action] = actionlib.SimpleActionClient(action, action_class)
+            return client
+
+
+class _Topic:
+    """One shared rospy subscriber: keeps the latest message and fans out to callbacks."""
+
+    def __init__(self, rospy, topic, message_class, types):
+        self._types = types
+        self.latest = None
+        self.callbacks = []
+        self._subscriber = rospy.Subscriber(topic, message_class, self._on_message)
+
+    def _on_message(self, message):
+        data = self._types.from_message(message)
+        self.latest = data
+        for callback in list(self.callbacks):
+            callback(data)
+
+
+class Ros1GoalHandle(GoalHandle):
+    """A goal sent through an actionlib SimpleActionClient."""
+
+    def __init__(self, backend, client, action):
+        self._backend = backend
+        self._client = client
+        self._action = action
+
+    def wait(self, timeout: float) -> GoalOutcome:
+        """Wait for the goal's end (interruptible); its status and result."""
+        client = self._client
+        if not self._backend.wait_until(lambda: client.get_state() in _ACTIONLIB_STATUS, timeout):
+            raise RobotTimeout(f"the action '{self._action}' did not finish within {timeout:g} s")
+        result = client.get_result()
+        return GoalOutcome(_ACTIONLIB_STATUS[client.get_state()],
+                           self._backend.graph.types.from_message(result) if result is not None else {})
+
+    def cancel(self) -> None:
+        """Ask the action server to stop this goal."""
+        self._client.cancel_goal()
+
+
+class Ros1Backend(RobotBackend):
+    """A RobotBackend over a RosGraph; ``interrupt`` ends its waits."""
+
+    def __init__(self, graph: RosGraph, interrupt):
+        self.graph = graph
+        self.interrupt = interrupt
+
+    def _check(self):
+        self.interrupt.check()
+        if self.graph.connection.lost:
+            raise RobotConnectionLost(f"the connection to the robot was lost (no ROS master at "
+                                      f"{self.graph.connection.master_uri})")
+
+    def wait_until(self, predicate, timeout: float) -> bool:
+        """Poll ``predicate`` until true (True) or ``timeout`` (False); stop or a lost master raises."""
+        deadline = time.monotonic() + timeout
+        while True:
+            self._check()
+            if predicate():
+                return True
+            if time.monotonic() >= deadline:
+                return False
+            self.interrupt.nap(POLL_SECONDS)
+
+    def publish(self, topic: str, msg_type: str, message: dict) -> None:
+        """Publish on ``topic`` (a new publisher first waits briefly for its subscribers)."""
+        self._check()
+        publisher, new = self.graph.publisher(topic, msg_type)
+        if new:
+            self.wait_until(lambda: publisher.get_num_connections() > 0, FIRST_PUBLISH_WAIT)
+        publisher.publish(self.graph.types.to_message(publisher.data_class, message))
+
+    def subscribe(self, topic: str, msg_type: str, callback):
+        """Call ``callback(dict)`` per message; returns the unsubscribe function."""
+        entry = self.graph.topic(topic, msg_type)
+        entry.callbacks.append(callback)
+        return lambda: callback in entry.callbacks and entry.callbacks.remove(callback)
+
+    def latest(self, topic: str, msg_type: str):
+        """The last message seen on ``topic`` (subscribing on first use), or None."""
+        return self.graph.topic(topic, msg_type).latest
+
+    def wait_for_message(self, topic: str, msg_type: str, timeout: float) -> dict:
+        """The next message on ``topic``; RobotTimeout naming it after ``timeout``."""
+        received = []
+        unsubscribe = self.subscribe(topic, msg_type, received.append)
+        try:
+            if not self.wait_until(lambda: received, timeout):
+                raise RobotTimeout(f"no message arrived on the topic '{topic}' within {timeout:g} s")
+        finally:
+            unsubscribe()
+        return received[0]
+
+    def call_service(self, name: str, srv_type: str, request: dict, timeout: float) -> dict:
+        """Call a service in a helper thread so that Stop and a lost master end the wait."""
+        proxy = self.graph.service(name, srv_type)
+        available = []
+
+        def probe():
+            try:
+                proxy.wait_for_service(timeout=0.05)
+                available.append(True)
+            except Exception:  # noqa: BLE001 - not there yet
+                pass
+            return bool(available)
+
+        if not self.wait_until(probe, timeout):
+            raise RobotTimeout(f"the service '{name}' is not available (waited {timeout:g} s)")
+        outcome = {}
+
+        def call():
+            try:
+                outcome["response"] = proxy.call(self.graph.types.to_message(proxy.request_class, request))
+            except Exception as error:  # noqa: BLE001 - reported to the program below
+                outcome["error"] = error
+
+        threading.Thread(target=call, name=f"rockly-service {name}", daemon=True).start()
+        if not self.wait_until(lambda: outcome, timeout):
+            raise RobotTimeout(f"the service '{name}' did not answer within {timeout:g} s")
+        if "error" in outcome:
+            raise RobotCommandError(f"the service '{name}' failed: {outcome['error']}")
+        return self.graph.types.from_message(outcome["response"])
+
+    def send_goal(self, action: str, action_type: str, goal: dict, feedback=None) -> GoalHandle:
+        """Send a goal (waiting up to 5 s for the action server); feedback as dicts."""
+        client = self.graph.action_client(action, action_type)
+        import rospy
+
+        if not self.wait_until(lambda: client.wait_for_server(rospy.Duration(0.05)), 5.0):
+            raise RobotCommandError(f"there is no action server '{action}'")
+        goal_class = self.graph.types.action_classes(action_type)[1]
+        types = self.graph.types
+        callback = (lambda message: feedback(types.from_message(message))) if feedback else None
+        client.send_goal(types.to_message(goal_class, goal), feedback_cb=callback)
+        return Ros1GoalHandle(self, client, action)
+
+    def cancel_all_goals(self, action: str) -> None:
+        """Cancel every goal on the action server: an empty GoalID on ``<action>/cancel``."""
+        self.publish(f"{action}/cancel", "actionlib_msgs/GoalID", {})
+
+    def sleep(self, seconds: float) -> None:
+        """Wait ``seconds`` (pausable, stoppable)."""
+        self.interrupt.sleep(seconds)

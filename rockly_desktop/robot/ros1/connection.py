@@ -1,0 +1,117 @@
+"""The one ROS 1 node of a Rockly process, and whether its master is reachable.
+
+rospy allows ``init_node`` once per process, so the node is started on first use with
+the master chosen then (``ROS_MASTER_URI``, ``ROS_IP``/``ROS_HOSTNAME`` are read at that
+moment). A watchdog asks the master for its pid twice a second; waits in the backend
+fail within ~2 s of the master vanishing, and the status returns to connected when it
+is back.
+"""
+import logging
+import os
+import threading
+import time
+import xmlrpc.client
+
+log = logging.getLogger(__name__)
+
+CONNECTED, CONNECTING, LOST = "connected", "connecting", "lost"
+WATCH_SECONDS = 0.5
+PROBE_TIMEOUT = 1.0
+NODE_NAME = "rockly"
+
+
+class _QuickTransport(xmlrpc.client.Transport):
+    """XML-RPC that gives up after PROBE_TIMEOUT instead of hanging on a lost network."""
+
+    def make_connection(self, host):
+        connection = super().make_connection(host)
+        connection.timeout = PROBE_TIMEOUT
+        return connection
+
+
+def master_answers(master_uri: str) -> float:
+    """The master's round-trip time in seconds, or None when it does not answer."""
+    started = time.monotonic()
+    try:
+        code, _message, _pid = xmlrpc.client.ServerProxy(master_uri, transport=_QuickTransport()).getPid("/rockly")
+    except (OSError, xmlrpc.client.Error):
+        return None
+    return time.monotonic() - started if code == 1 else None
+
+
+class RosUnavailable(Exception):
+    """rospy is not installed here, or the master cannot be reached."""
+
+
+class RosConnection:
+    """The process's ROS node and its master's health (``status``: connected | connecting | lost)."""
+
+    _instance = None
+    _instance_lock = threading.Lock()
+
+    def __init__(self, master_uri: str, host: str = None):
+        self.master_uri = master_uri
+        self.host = host
+        self.status = CONNECTING
+        self.round_trip = None
+        self._listeners = []
+        self._stopped = threading.Event()
+        self._watchdog = None
+
+    @classmethod
+    def get(cls, master_uri: str = None, host: str = None, timeout: float = 5.0) -> "RosConnection":
+        """The process's connection, started (once) with ``master_uri``; RosUnavailable if it cannot be."""
+        with cls._instance_lock:
+            if cls._instance is None:
+                master_uri = master_uri or os.environ.get("ROS_MASTER_URI", "http://localhost:11311")
+                connection = cls(master_uri, host)
+                connection._start(timeout)
+                cls._instance = connection
+            elif master_uri and master_uri != cls._instance.master_uri:
+                raise RosUnavailable(f"this Rockly is already connected to {cls._instance.master_uri}; "
+                                     f"restart it to use {master_uri}")
+            return cls._instance
+
+    def _start(self, timeout: float):
+        try:
+            import rospy
+        except ImportError as error:
+            raise RosUnavailable(f"ROS 1 (rospy) is not installed on this computer ({error})") from None
+        os.environ["ROS_MASTER_URI"] = self.master_uri
+        if self.host:
+            os.environ["ROS_IP" if self.host.replace(".", "").isdigit() else "ROS_HOSTNAME"] = self.host
+        if not self._wait_for_master(timeout):
+            raise RosUnavailable(f"no ROS master answers at {self.master_uri}")
+        rospy.init_node(NODE_NAME, anonymous=True, disable_signals=True)
+        self.status = CONNECTED
+        self._watchdog = threading.Thread(target=self._watch, name="rockly-ros-watchdog", daemon=True)
+        self._watchdog.start()
+
+    def _wait_for_master(self, timeout: float) -> bool:
+        deadline = time.monotonic() + timeout
+        while True:
+            self.round_trip = master_answers(self.master_uri)
+            if self.round_trip is not None:
+                return True
+            if time.monotonic() >= deadline:
+                return False
+            time.sleep(0.1)
+
+    def _watch(self):
+        while not self._stopped.wait(WATCH_SECONDS):
+            self.round_trip = master_answers(self.master_uri)
+            status = CONNECTED if self.round_trip is not None else LOST
+            if status != self.status:
+                log.warning("ROS master %s: %s", self.master_uri, status)
+                self.status = status
+                for listener in list(self._listeners):
+                    listener(status)
+
+    def add_listener(self, callback):
+        """Call ``callback(status)`` (from the watchdog thread) whenever the status changes."""
+        self._listeners.append(callback)
+
+    @property
+    def lost(self) -> bool:
+        """True while the master does not answer."""
+        return self.status == LOST

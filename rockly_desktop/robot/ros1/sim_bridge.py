@@ -1,0 +1,94 @@
+"""Running a profile's simulator as a real ROS 1 node: its SimWorld bridged to ROS.
+
+The simulator declares ``ROS_INTERFACE`` (what the real robot subscribes, publishes,
+serves and offers as actions, with ROS types). Messages from ROS go into the world;
+what the simulator publishes goes out on ROS; services and actions are served by the
+simulator's own handlers, with feedback and preemption passed through.
+"""
+import logging
+import threading
+
+from rockly_desktop.robot.interface import GoalStatus
+from rockly_desktop.robot.interrupt import Interrupt
+
+log = logging.getLogger(__name__)
+
+
+class SimRosBridge:
+    """Connects ``world`` to ROS as ``interface`` says (rospy's node must already run)."""
+
+    def __init__(self, world, interface: dict, types):
+        import rospy
+
+        self._rospy = rospy
+        self._world = world
+        self._types = types
+        self._endpoints = []
+        for topic, msg_type in interface.get("subscribes", {}).items():
+            self._endpoints.append(rospy.Subscriber(
+                topic, types.message_class(msg_type),
+                lambda message, topic=topic, msg_type=msg_type: world.publish(topic, msg_type, types.from_message(message))))
+        for topic, msg_type in interface.get("publishes", {}).items():
+            publisher = rospy.Publisher(topic, types.message_class(msg_type), queue_size=50)
+            message_class = types.message_class(msg_type)
+            world.subscribe(topic, lambda data, publisher=publisher, message_class=message_class:
+                            publisher.publish(types.to_message(message_class, data)))
+            self._endpoints.append(publisher)
+        for name, srv_type in interface.get("services", {}).items():
+            self._endpoints.append(rospy.Service(name, types.service_class(srv_type),
+                                                 lambda request, name=name, srv_type=srv_type: self._serve(name, srv_type, request)))
+        self._action_servers = [self._serve_action(name, action_type)
+                                for name, action_type in interface.get("actions", {}).items()]
+
+    def _serve(self, name, srv_type, request):
+        response = self._world.call_service(name, self._types.from_message(request), Interrupt())
+        return self._types.to_message(self._types.service_class(srv_type)._response_class, response)
+
+    def _serve_action(self, name, action_type):
+        import actionlib
+
+        action_class, _goal_class, result_class, feedback_class = self._types.action_classes(action_type)
+        server = None
+
+        def execute(goal):
+            sim_goal = self._world.send_goal(name, self._types.from_message(goal),
+                                             lambda data: server.publish_feedback(self._types.to_message(feedback_class, data)))
+            while not self._world.wait_for(lambda: sim_goal.outcome is not None, 0.02):
+                if server.is_preempt_requested() or self._rospy.is_shutdown():
+                    sim_goal.cancelled.set()
+            outcome = sim_goal.outcome
+            result = self._types.to_message(result_class, outcome.result)
+            if outcome.status is GoalStatus.SUCCEEDED:
+                server.set_succeeded(result)
+            elif outcome.status is GoalStatus.PREEMPTED:
+                server.set_preempted(result)
+            else:
+                server.set_aborted(result)
+
+        server = actionlib.SimpleActionServer(name, action_class, execute_cb=execute, auto_start=False)
+        server.start()
+        return server
+
+
+def run_simulator_node(profile, types, master_uri=None, speed=1.0, tablet=None, stop_event=None, on_ready=None):
+    """Start ``profile``'s simulator as a ROS node and run until ``stop_event`` is set.
+
+    ``on_ready()`` is called once every topic, service and action server is up.
+    """
+    from rockly_desktop.robot.ros1.connection import RosConnection
+    from rockly_desktop.robot.sim_world import SimWorld
+
+    RosConnection.get(master_uri)
+    world = SimWorld()
+    simulator_class = profile.load_object("simulator")
+    simulator = simulator_class(world, tablet=tablet, speed=speed)
+    SimRosBridge(world, simulator_class.ROS_INTERFACE, types)
+    simulator.start()
+    if on_ready is not None:
+        on_ready()
+    stop_event = stop_event or threading.Event()
+    try:
+        while not stop_event.wait(0.2):
+            pass
+    finally:
+        simulator.shutdown()

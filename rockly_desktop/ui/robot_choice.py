@@ -1,0 +1,94 @@
+"""Which robot programs run on: the profile's built-in simulator, or a robot over ROS 1.
+
+Owns the robots it made (one simulator per profile, one ROS robot per profile), the ROS
+connection dialog and the connection indicator in the status bar.
+"""
+from PySide6.QtCore import QObject, QTimer
+from PySide6.QtWidgets import QLabel, QMessageBox
+
+from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.executor.robot_link import RosRobot, SimulatedRobot
+from rockly_desktop.robot.ros1.connection import RosUnavailable, master_answers
+from rockly_desktop.ui.connection_dialog import ConnectionDialog
+from rockly_desktop.ui.texts import tr
+
+SIMULATOR, ROS1 = "simulator", "ros1"
+STATUS_COLOURS = {"connected": "#2e7d32", "connecting": "#f9a825", "lost": "#c62828"}
+
+
+class RobotChoice(QObject):
+    """The active robot for the window's profile; ``kind`` is 'simulator' or 'ros1'."""
+
+    def __init__(self, window):
+        super().__init__(window)
+        self.window = window
+        self.kind = SIMULATOR
+        self._robots = {}
+        self.status = QLabel(window)
+        self.status.hide()
+        self._timer = QTimer(self)
+        self._timer.setInterval(500)
+        self._timer.timeout.connect(self._show_status)
+
+    def robot(self):
+        """The robot of the active kind for the window's profile (made on first use)."""
+        window = self.window
+        key = (self.kind, window.profile.id)
+        if key not in self._robots:
+            if self.kind == SIMULATOR:
+                window.tablet.robot_name = window.profile.display_name(window.language)
+                self._robots[key] = SimulatedRobot(window.profile, tablet=window.tablet, speed=window.simulator_speed)
+            else:
+                master_uri, _host = window.settings.ros_connection(window.profile.id)
+                self._robots[key] = RosRobot(window.profile, master_uri)
+        return self._robots[key]
+
+    def choose(self, kind: str) -> bool:
+        """Switch to ``kind``; for ROS asks where the robot is and connects. False if that failed."""
+        if kind == self.kind:
+            return True
+        if kind == ROS1 and not self._connect():
+            return False
+        self.kind = kind
+        self.status.setVisible(kind == ROS1)
+        if kind == ROS1:
+            self._timer.start()
+            self._show_status()
+        else:
+            self._timer.stop()
+        self.window.show_robot()
+        return True
+
+    def _connect(self) -> bool:
+        window = self.window
+        language = window.language
+        remembered_uri, remembered_host = window.settings.ros_connection(window.profile.id)
+        dialog = ConnectionDialog(language, window.profile.display_name(language), remembered_uri, remembered_host, window)
+        if not dialog.exec():
+            return False
+        try:
+            if master_answers(dialog.master_uri) is None:
+                raise RosUnavailable(f"no ROS master answers at {dialog.master_uri}")
+            from rockly_desktop.robot.ros1.connection import RosConnection
+
+            RosConnection.get(dialog.master_uri, dialog.host or None, timeout=1.0)
+        except (RosUnavailable, RocklyError) as error:
+            QMessageBox.warning(window, tr("connect_failed", language), str(error))
+            return False
+        window.settings.remember_ros_connection(window.profile.id, dialog.master_uri, dialog.host)
+        return True
+
+    def _show_status(self):
+        robot = self._robots.get((ROS1, self.window.profile.id))
+        status = robot.connection.status if robot is not None else "connecting"
+        self.status.setText(tr(f"ros_{status}", self.window.language))
+        self.status.setStyleSheet(f"color: {STATUS_COLOURS[status]}; font-weight: bold;")
+        if robot is not None and robot.connection.round_trip is not None:
+            self.status.setToolTip(f"{robot.connection.master_uri} — {robot.connection.round_trip * 1000:.1f} ms")
+
+    def shutdown(self):
+        """Stop every robot safely (the window is closing)."""
+        self._timer.stop()
+        for robot in self._robots.values():
+            robot.shutdown()
+        self._robots.clear()

@@ -1,0 +1,27 @@
+"""A real ROS master for this test run, and the ROS-level simulated HOBBIT on it."""
+import pytest
+from ros_helpers import RocklyProcess, RosMaster
+
+
+@pytest.fixture(scope="session")
+def ros_master(tmp_path_factory):
+    master = RosMaster(tmp_path_factory.mktemp("ros")).start()
+    yield master
+    master.stop()
+
+
+@pytest.fixture(scope="session")
+def hobbit_on_ros(ros_master):
+    """`rockly sim hobbit --ros` running against the session's master (fast simulated time)."""
+    process = RocklyProcess(["sim", "hobbit", "--ros", "--master", ros_master.uri, "--speed", "20",
+                             "--answer", "yes", "--answer", "Ada"], ros_master, ready_line="on ROS")
+    yield process
+    process.stop()
+
+
+@pytest.fixture(scope="session")
+def ros_robot(ros_master, hobbit_on_ros, hobbit):
+    """This test process as a Rockly node on the session's master, driving the ROS-level HOBBIT."""
+    from rockly_desktop.executor.robot_link import RosRobot
+
+    return RosRobot(hobbit, ros_master.uri)

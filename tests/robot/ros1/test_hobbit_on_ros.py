@@ -1,0 +1,116 @@
+"""HOBBIT's commands over real ROS 1: a real master, the ROS-level simulator in its own process."""
+import math
+import threading
+import time
+
+import pytest
+
+from rockly_desktop.core.errors import ProgramStopped
+from rockly_desktop.executor.control import RunControl
+from rockly_desktop.executor.run_setup import make_runner
+from rockly_desktop.robot.interrupt import Interrupt
+
+
+@pytest.fixture
+def hobbit_robot(ros_robot, hobbit):
+    return hobbit.load_object("api")(ros_robot.backend(Interrupt()))
+
+
+def record(ros_robot, topic, msg_type, pick):
+    seen = []
+    unsubscribe = ros_robot.backend(Interrupt()).subscribe(topic, msg_type, lambda message: seen.append(pick(message)))
+    return seen, unsubscribe
+
+
+def eventually(predicate, timeout=10.0):
+    deadline = time.monotonic() + timeout
+    while not predicate():
+        assert time.monotonic() < deadline, "condition not met in time"
+        time.sleep(0.01)
+
+
+def pose(ros_robot):
+    message = ros_robot.backend(Interrupt()).wait_for_message("/odom", "nav_msgs/Odometry", 5)
+    position, q = message["pose"]["pose"]["position"], message["pose"]["pose"]["orientation"]
+    return position["x"], position["y"], math.degrees(math.atan2(2 * q["w"] * q["z"], 1 - 2 * q["z"] ** 2))
+
+
+def test_the_thesis_pick_up_program_sends_exactly_that_goal_sequence(ros_robot, hobbit_robot):
+    goals, unsubscribe = record(ros_robot, "/hobbit_arm/goal", "hobbit_msgs/ArmServerActionGoal",
+                                lambda message: message["goal"]["command"]["data"])
+    try:
+        hobbit_robot.gripper("open")
+        hobbit_robot.move_arm("floor")
+        hobbit_robot.gripper("close")
+        hobbit_robot.move_arm("table")
+        hobbit_robot.gripper("open")
+    finally:
+        unsubscribe()
+    assert goals == ["OpenGripper", "MoveToPreGraspFloor", "CloseGripper", "MoveToPreGraspTable", "OpenGripper"]
+
+
+def test_head_and_emotion_reach_the_robot_as_strings(ros_robot, hobbit_robot):
+    heads, stop_heads = record(ros_robot, "/head/move", "std_msgs/String", lambda message: message["data"])
+    emotions, stop_emotions = record(ros_robot, "/head/emo", "std_msgs/String", lambda message: message["data"])
+    hobbit_robot.look("up_left")
+    hobbit_robot.show_emotion("WONDERING")
+    eventually(lambda: heads == ["up_left"] and emotions == ["WONDERING"])
+    stop_heads()
+    stop_emotions()
+
+
+def test_drive_and_turn_use_the_discrete_motion_commands(ros_robot, hobbit_robot):
+    commands, unsubscribe = record(ros_robot, "/DiscreteMotionCmd", "std_msgs/String", lambda message: message["data"])
+    x0, y0, _ = pose(ros_robot)
+    hobbit_robot.drive(0.5, "backward")
+    hobbit_robot.turn(90, "left")
+    unsubscribe()
+    assert commands == ["Move -0.5", "Turn 90"]
+    x1, y1, theta = pose(ros_robot)
+    assert math.hypot(x1 - x0, y1 - y0) == pytest.approx(0.5, abs=0.03)
+
+
+def test_navigation_goes_through_move_base(ros_robot, hobbit_robot):
+    targets, unsubscribe = record(ros_robot, "/move_base/goal", "move_base_msgs/MoveBaseActionGoal",
+                                  lambda message: message["goal"]["target_pose"])
+    hobbit_robot.navigate_to(1.0, 0.5, 90)
+    unsubscribe()
+    assert targets[0]["header"]["frame_id"] == "map"
+    assert (targets[0]["pose"]["position"]["x"], targets[0]["pose"]["position"]["y"]) == (1.0, 0.5)
+    x, y, theta = pose(ros_robot)
+    assert (x, y) == (pytest.approx(1.0, abs=0.05), pytest.approx(0.5, abs=0.05))
+
+
+def test_tablet_dialogs_go_through_mmui_and_come_back_answered(hobbit_robot):
+    hobbit_robot.show_info('Hello "world"\nnew line')
+    assert hobbit_robot.ask_yes_no("Tea?") is True          # the simulator answers from --answer yes
+    assert hobbit_robot.ask_text("Your name?") == "Ada"      # and --answer Ada
+    hobbit_robot.call_sos()
+    hobbit_robot.change_volume("louder")
+
+
+def test_stop_during_a_drive_publishes_a_zero_twist(ros_robot, hobbit):
+    twists, unsubscribe = record(ros_robot, "/cmd_vel", "geometry_msgs/Twist", lambda message: message)
+    control = RunControl()
+    runner = make_runner(hobbit, ros_robot, {"code": "robot.drive(30, 'forward')\n", "variables": {}}, control, lambda e: None)
+    thread = threading.Thread(target=runner.run)
+    thread.start()
+    time.sleep(0.5)
+    control.request_stop()
+    thread.join(10)
+    eventually(lambda: any(not t["linear"]["x"] and not t["angular"]["z"] for t in twists))
+    unsubscribe()
+
+
+def test_an_unknown_service_times_out_naming_it(ros_robot):
+    from rockly_desktop.core.errors import RobotTimeout
+
+    with pytest.raises(RobotTimeout, match="/no_such_service"):
+        ros_robot.backend(Interrupt()).call_service("/no_such_service", "std_srvs/Trigger", {}, 0.3)
+
+
+def test_stop_ends_a_wait_for_a_service(ros_robot):
+    interrupt = Interrupt()
+    threading.Timer(0.2, interrupt.request_stop).start()
+    with pytest.raises(ProgramStopped):
+        ros_robot.backend(interrupt).call_service("/no_such_service", "std_srvs/Trigger", {}, 30)

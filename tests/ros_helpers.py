@@ -1,0 +1,77 @@
+"""Real ROS 1 for tests: a rosmaster on a free port, the ROS-level simulator as a process."""
+import os
+import socket
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from rockly_desktop.robot.ros1.connection import master_answers
+
+REPO = Path(__file__).resolve().parents[1]
+
+
+def free_port() -> int:
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        return probe.getsockname()[1]
+
+
+def ros_environment(master_uri: str, home: Path) -> dict:
+    """Environment for a ROS process of this test run: its own master, home and logs."""
+    home.mkdir(parents=True, exist_ok=True)
+    return dict(os.environ, ROS_MASTER_URI=master_uri, ROS_IP="127.0.0.1", ROS_HOME=str(home),
+                ROS_LOG_DIR=str(home / "log"), PYTHONUNBUFFERED="1")
+
+
+class RosMaster:
+    """A rosmaster process on a free port; ``stop()`` kills it, ``start()`` brings it back on the same port."""
+
+    def __init__(self, home: Path):
+        self.port = free_port()
+        self.uri = f"http://127.0.0.1:{self.port}"
+        self.home = home
+        self.process = None
+
+    def start(self, timeout: float = 15.0):
+        self.process = subprocess.Popen(["rosmaster", "--core", "-p", str(self.port)],
+                                        env=ros_environment(self.uri, self.home),
+                                        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        deadline = time.monotonic() + timeout
+        while master_answers(self.uri) is None:
+            if time.monotonic() > deadline or self.process.poll() is not None:
+                raise RuntimeError("rosmaster did not start")
+            time.sleep(0.05)
+        return self
+
+    def stop(self):
+        if self.process is not None and self.process.poll() is None:
+            self.process.kill()
+            self.process.wait(10)
+
+
+class RocklyProcess:
+    """A ``rockly`` command running as its own process (a ROS node)."""
+
+    def __init__(self, args, master: RosMaster, ready_line: str = None, timeout: float = 60.0):
+        self.process = subprocess.Popen([sys.executable, "-m", "rockly_desktop", *map(str, args)], cwd=REPO,
+                                        env=ros_environment(master.uri, master.home), text=True,
+                                        stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+        if ready_line:
+            deadline = time.monotonic() + timeout
+            for line in self.process.stdout:
+                if ready_line in line:
+                    break
+                if time.monotonic() > deadline:
+                    break
+            else:
+                raise RuntimeError(f"'{ready_line}' never came: {self.process.stderr.read()}")
+
+    def stop(self):
+        if self.process.poll() is None:
+            self.process.terminate()
+            try:
+                self.process.wait(10)
+            except subprocess.TimeoutExpired:
+                self.process.kill()
+                self.process.wait(10)
