@@ -8,11 +8,17 @@ from pathlib import Path
 # Before anything reads them: no test run sees the real user's profiles or settings.
 os.environ["XDG_DATA_HOME"] = tempfile.mkdtemp(prefix="rockly-test-data-")
 os.environ["XDG_CONFIG_HOME"] = tempfile.mkdtemp(prefix="rockly-test-config-")
+# This test process becomes a ROS node in the ROS tests: its logs stay in a temp folder.
+os.environ["ROS_HOME"] = tempfile.mkdtemp(prefix="rockly-test-ros-")
+os.environ["ROS_LOG_DIR"] = os.path.join(os.environ["ROS_HOME"], "log")
+os.environ["ROS_IP"] = "127.0.0.1"
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 os.environ.setdefault("QTWEBENGINE_DISABLE_SANDBOX", "1")
 
 import PySide6.QtWebEngineWidgets  # noqa: E402,F401 - must be imported before the QApplication exists
 import pytest  # noqa: E402
+
+pytest_plugins = ["ros_fixtures"]
 
 REPO = Path(__file__).resolve().parents[1]
 HOBBIT_DIR = REPO / "plugins" / "hobbit"

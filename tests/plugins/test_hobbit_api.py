@@ -493,6 +493,7 @@ def test_pause_halts_a_drive_part_way_and_continue_drives_the_rest(world, sim, c
     control.resume()
     assert drive.join().error is None
     assert sim.snapshot()["x"] == pytest.approx(1.0, abs=POSITION)
+    assert len(hold.snapshots) == 1, "the rest of the drive held again"
     first, stop, rest = commands
     assert (first, stop) == ("Move 1", "Stop")
     assert amount_of(rest, "Move") == pytest.approx(1.0 - held["x"], abs=0.001)

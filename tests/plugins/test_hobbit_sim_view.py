@@ -1,8 +1,9 @@
-"""HOBBIT's simulator view (plugins/hobbit/rockly_hobbit/sim_view.py): it draws what a snapshot says, at any size."""
+"""HOBBIT's simulator view (plugins/hobbit/rockly_hobbit/sim_view/): it draws what a snapshot says, at any size."""
 import importlib.util
 import itertools
 import math
 import struct
+import sys
 
 import pytest
 from profile_copies import HOBBIT_DIR
@@ -11,11 +12,16 @@ from PySide6.QtGui import QImage
 
 
 def _load_sim_view_module():
-    """Import sim_view.py by its path, leaving sys.path and sys.modules as they were."""
-    path = HOBBIT_DIR / "rockly_hobbit" / "sim_view.py"
-    spec = importlib.util.spec_from_file_location("hobbit_sim_view_under_test", path)
+    """Import the sim_view package by its path, leaving sys.path and sys.modules as they were."""
+    name, path = "hobbit_sim_view_under_test", HOBBIT_DIR / "rockly_hobbit" / "sim_view"
+    spec = importlib.util.spec_from_file_location(name, path / "__init__.py", submodule_search_locations=[str(path)])
     module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
+    sys.modules[name] = module   # its modules import each other relatively
+    try:
+        spec.loader.exec_module(module)
+    finally:
+        for key in [key for key in sys.modules if key == name or key.startswith(name + ".")]:
+            del sys.modules[key]
     return module
 
 

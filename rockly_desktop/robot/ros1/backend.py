@@ -9,6 +9,7 @@ import time
 
 from rockly_desktop.core.errors import RobotCommandError, RobotConnectionLost, RobotTimeout
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
+from rockly_desktop.robot.ros1.messages import from_message, to_message
 
 POLL_SECONDS = 0.01
 FIRST_PUBLISH_WAIT = 1.0  # a new publisher waits this long for subscribers to connect
@@ -42,12 +43,22 @@ class RosGraph:
                 return entry, True
             return entry, False
 
+    def subscriber_count(self, topic) -> int:
+        """How many nodes the master lists as subscribers of ``topic``."""
+        import rosgraph
+
+        try:
+            _publishers, subscribers, _services = rosgraph.Master("/rockly").getSystemState()
+        except Exception:  # noqa: BLE001 - the master will be reported lost by the watchdog
+            return 0
+        return len(next((nodes for name, nodes in subscribers if name == topic), []))
+
     def topic(self, topic, msg_type):
         """The shared subscription to ``topic``: latest message and callbacks."""
         with self._lock:
             entry = self._topics.get(topic)
             if entry is None:
-                entry = self._topics[topic] = _Topic(self._rospy, topic, self.types.message_class(msg_type), self.types)
+                entry = self._topics[topic] = _Topic(self._rospy, topic, self.types.message_class(msg_type))
             return entry
 
     def service(self, name, srv_type):
@@ -71,14 +82,13 @@ class RosGraph:
 class _Topic:
     """One shared rospy subscriber: keeps the latest message and fans out to callbacks."""
 
-    def __init__(self, rospy, topic, message_class, types):
-        self._types = types
+    def __init__(self, rospy, topic, message_class):
         self.latest = None
         self.callbacks = []
         self._subscriber = rospy.Subscriber(topic, message_class, self._on_message)
 
     def _on_message(self, message):
-        data = self._types.from_message(message)
+        data = from_message(message)
         self.latest = data
         for callback in list(self.callbacks):
             callback(data)
@@ -99,7 +109,7 @@ class Ros1GoalHandle(GoalHandle):
             raise RobotTimeout(f"the action '{self._action}' did not finish within {timeout:g} s")
         result = client.get_result()
         return GoalOutcome(_ACTIONLIB_STATUS[client.get_state()],
-                           self._backend.graph.types.from_message(result) if result is not None else {})
+                           from_message(result) if result is not None else {})
 
     def cancel(self) -> None:
         """Ask the action server to stop this goal."""
@@ -134,9 +144,10 @@ class Ros1Backend(RobotBackend):
         """Publish on ``topic`` (a new publisher first waits briefly for its subscribers)."""
         self._check()
         publisher, new = self.graph.publisher(topic, msg_type)
-        if new:
-            self.wait_until(lambda: publisher.get_num_connections() > 0, FIRST_PUBLISH_WAIT)
-        publisher.publish(self.graph.types.to_message(publisher.data_class, message))
+        if new:  # let every subscriber the master knows connect, or the first message is lost
+            expected = self.graph.subscriber_count(topic)
+            self.wait_until(lambda: publisher.get_num_connections() >= expected, FIRST_PUBLISH_WAIT)
+        publisher.publish(to_message(publisher.data_class, message))
 
     def subscribe(self, topic: str, msg_type: str, callback):
         """Call ``callback(dict)`` per message; returns the unsubscribe function."""
@@ -178,7 +189,7 @@ class Ros1Backend(RobotBackend):
 
         def call():
             try:
-                outcome["response"] = proxy.call(self.graph.types.to_message(proxy.request_class, request))
+                outcome["response"] = proxy.call(to_message(proxy.request_class, request))
             except Exception as error:  # noqa: BLE001 - reported to the program below
                 outcome["error"] = error
 
@@ -187,7 +198,7 @@ class Ros1Backend(RobotBackend):
             raise RobotTimeout(f"the service '{name}' did not answer within {timeout:g} s")
         if "error" in outcome:
             raise RobotCommandError(f"the service '{name}' failed: {outcome['error']}")
-        return self.graph.types.from_message(outcome["response"])
+        return from_message(outcome["response"])
 
     def send_goal(self, action: str, action_type: str, goal: dict, feedback=None) -> GoalHandle:
         """Send a goal (waiting up to 5 s for the action server); feedback as dicts."""
@@ -197,9 +208,8 @@ class Ros1Backend(RobotBackend):
         if not self.wait_until(lambda: client.wait_for_server(rospy.Duration(0.05)), 5.0):
             raise RobotCommandError(f"there is no action server '{action}'")
         goal_class = self.graph.types.action_classes(action_type)[1]
-        types = self.graph.types
-        callback = (lambda message: feedback(types.from_message(message))) if feedback else None
-        client.send_goal(types.to_message(goal_class, goal), feedback_cb=callback)
+        callback = (lambda message: feedback(from_message(message))) if feedback else None
+        client.send_goal(to_message(goal_class, goal), feedback_cb=callback)
         return Ros1GoalHandle(self, client, action)
 
     def cancel_all_goals(self, action: str) -> None:

@@ -10,6 +10,7 @@ import threading
 
 from rockly_desktop.robot.interface import GoalStatus
 from rockly_desktop.robot.interrupt import Interrupt
+from rockly_desktop.robot.ros1.messages import from_message, to_message
 
 log = logging.getLogger(__name__)
 
@@ -27,12 +28,12 @@ class SimRosBridge:
         for topic, msg_type in interface.get("subscribes", {}).items():
             self._endpoints.append(rospy.Subscriber(
                 topic, types.message_class(msg_type),
-                lambda message, topic=topic, msg_type=msg_type: world.publish(topic, msg_type, types.from_message(message))))
+                lambda message, topic=topic, msg_type=msg_type: world.publish(topic, msg_type, from_message(message))))
         for topic, msg_type in interface.get("publishes", {}).items():
             publisher = rospy.Publisher(topic, types.message_class(msg_type), queue_size=50)
             message_class = types.message_class(msg_type)
             world.subscribe(topic, lambda data, publisher=publisher, message_class=message_class:
-                            publisher.publish(types.to_message(message_class, data)))
+                            publisher.publish(to_message(message_class, data)))
             self._endpoints.append(publisher)
         for name, srv_type in interface.get("services", {}).items():
             self._endpoints.append(rospy.Service(name, types.service_class(srv_type),
@@ -41,8 +42,8 @@ class SimRosBridge:
                                 for name, action_type in interface.get("actions", {}).items()]
 
     def _serve(self, name, srv_type, request):
-        response = self._world.call_service(name, self._types.from_message(request), Interrupt())
-        return self._types.to_message(self._types.service_class(srv_type)._response_class, response)
+        response = self._world.call_service(name, from_message(request), Interrupt())
+        return to_message(self._types.service_class(srv_type)._response_class, response)
 
     def _serve_action(self, name, action_type):
         import actionlib
@@ -51,13 +52,13 @@ class SimRosBridge:
         server = None
 
         def execute(goal):
-            sim_goal = self._world.send_goal(name, self._types.from_message(goal),
-                                             lambda data: server.publish_feedback(self._types.to_message(feedback_class, data)))
+            sim_goal = self._world.send_goal(name, from_message(goal),
+                                             lambda data: server.publish_feedback(to_message(feedback_class, data)))
             while not self._world.wait_for(lambda: sim_goal.outcome is not None, 0.02):
                 if server.is_preempt_requested() or self._rospy.is_shutdown():
                     sim_goal.cancelled.set()
             outcome = sim_goal.outcome
-            result = self._types.to_message(result_class, outcome.result)
+            result = to_message(result_class, outcome.result)
             if outcome.status is GoalStatus.SUCCEEDED:
                 server.set_succeeded(result)
             elif outcome.status is GoalStatus.PREEMPTED:

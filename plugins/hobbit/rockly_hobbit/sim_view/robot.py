@@ -1,7 +1,8 @@
 """HOBBIT seen from above, in map metres: base and bumper, body and tray, turntable, arm with gripper,
 the head's view cone and the head itself, plus hints of how it moves and an SOS halo.
 
-The front is where the yellow bumper is; everything after the base is drawn in the robot frame.
+The SOS halo and the shadow are drawn unrotated, the rest in the robot frame (x forward):
+the front is where the yellow bumper is.
 """
 import math
 

@@ -1,4 +1,4 @@
-"""A real ROS master for this test run, and the ROS-level simulated HOBBIT on it."""
+"""Fixtures: a real ROS master for this test run, and the ROS-level simulated HOBBIT on it."""
 import pytest
 from ros_helpers import RocklyProcess, RosMaster
 

@@ -1,0 +1,43 @@
+"""The window on a robot over ROS 1 (the ROS-level simulator in its own process, a real master)."""
+import pytest
+from program_builder import block, number, stack, workspace
+
+from rockly_desktop.ui.connection_dialog import ConnectionDialog
+
+
+@pytest.fixture
+def ros_window(window, ros_master, hobbit_on_ros, monkeypatch):
+    window.settings.remember_ros_connection("hobbit", ros_master.uri, "127.0.0.1")
+    monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
+    backend = window.run_toolbar.backend
+    backend.setCurrentIndex(backend.findData("ros1"))
+    assert window.robots.kind == "ros1"
+    return window
+
+
+def test_choosing_ros_connects_and_shows_the_status(qtbot, ros_window):
+    qtbot.waitUntil(lambda: "ROS connected" in ros_window.robots.status.text(), timeout=5000)
+    assert ros_window.robots.status.isVisible()
+    assert "real robot" in ros_window.simulator_dock.widget().text()
+
+
+def test_a_program_runs_on_the_robot_over_ros(qtbot, ros_window):
+    ros_window.editor.call_blocking("load", {"workspace": workspace(stack(
+        block("hobbit_emo", {"emotion": "HAPPY"}), block("hobbit_move", {"direction": "+"}, {"speed": number(0.3)}),
+        block("hobbit_arm_gripper", {"movement": "OpenGripper"})))})
+    with qtbot.waitSignal(ros_window.runs.sig_finished, timeout=30000) as blocker:
+        ros_window.runs.run()
+    assert blocker.args[0].outcome == "finished", blocker.args[0]
+
+
+def test_an_unreachable_master_is_refused_and_the_simulator_stays(qtbot, window, monkeypatch):
+    from PySide6.QtWidgets import QMessageBox
+
+    window.settings.remember_ros_connection("hobbit", "http://127.0.0.1:9", "")
+    monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
+    warnings = []
+    monkeypatch.setattr(QMessageBox, "warning", lambda parent, title, text: warnings.append(text))
+    backend = window.run_toolbar.backend
+    backend.setCurrentIndex(backend.findData("ros1"))
+    assert warnings and "no ROS master answers at http://127.0.0.1:9" in warnings[0]
+    assert window.robots.kind == "simulator" and backend.currentData() == "simulator"
