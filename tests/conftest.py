@@ -8,6 +8,7 @@ from pathlib import Path
 # Before anything reads them: no test run sees the real user's profiles or settings.
 os.environ["XDG_DATA_HOME"] = tempfile.mkdtemp(prefix="rockly-test-data-")
 os.environ["XDG_CONFIG_HOME"] = tempfile.mkdtemp(prefix="rockly-test-config-")
+os.environ["XDG_CACHE_HOME"] = tempfile.mkdtemp(prefix="rockly-test-cache-")
 # This test process becomes a ROS node in the ROS tests: its logs stay in a temp folder.
 os.environ["ROS_HOME"] = tempfile.mkdtemp(prefix="rockly-test-ros-")
 os.environ["ROS_LOG_DIR"] = os.path.join(os.environ["ROS_HOME"], "log")

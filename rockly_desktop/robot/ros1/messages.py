@@ -178,17 +178,21 @@ def _read_text(path: Path) -> str:
 
 def _write_atomically(final: Path, fill) -> None:
     """Make folder ``final`` by filling a temporary sibling and renaming it (first writer wins)."""
-    final.parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=f".{final.name}-", dir=final.parent))
+    tmp = None
     try:
+        final.parent.mkdir(parents=True, exist_ok=True)
+        tmp = Path(tempfile.mkdtemp(prefix=f".{final.name}-", dir=final.parent))
         fill(tmp)
         try:
             os.rename(tmp, final)
         except OSError:
             if not final.is_dir():
                 raise
+    except OSError as e:
+        raise RobotCommandError(f"Cannot write generated ROS message code to {final.parent}: {e}") from e
     finally:
-        shutil.rmtree(tmp, ignore_errors=True)
+        if tmp is not None:
+            shutil.rmtree(tmp, ignore_errors=True)
 
 
 class _Source:
@@ -444,8 +448,10 @@ class MessageTypes:
             source = None
             for origin, folders in (("system", self.system_dirs), ("profile", self.definition_dirs)):
                 for folder in folders:
-                    if source is None and self._is_package_dir(folder / package):
-                        source = _Source(package, folder / package, origin)
+                    # a folder of packages, or (ROS_PACKAGE_PATH) the package itself
+                    for candidate in (folder / package, folder) if folder.name == package else (folder / package,):
+                        if source is None and self._is_package_dir(candidate):
+                            source = _Source(package, candidate, origin)
             self._sources[package] = source
         return self._sources[package]
 
@@ -582,8 +588,11 @@ class MessageTypes:
         for kind, full_type, path, blame in items:
             try:
                 generators[kind].generate(context, full_type, str(path), str(package_dir / kind), search)
+            except OSError:
+                raise
             except Exception as e:
-                raise MessageDefinitionError(blame, f"genpy cannot generate {full_type}: {self._problem(e, path)}") from e
+                problem = self._problem(e, path)
+                raise MessageDefinitionError(blame, f"genpy cannot generate {full_type}: {problem}") from e
         for kind in ("msg", "srv"):
             if (package_dir / kind).is_dir():
                 genpy.generate_initpy.write_modules(str(package_dir / kind))

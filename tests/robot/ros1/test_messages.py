@@ -7,6 +7,7 @@ the ones under test in sys.modules.
 """
 import io
 import json
+import re
 import shutil
 import subprocess
 import sys
@@ -157,7 +158,8 @@ def test_hobbit_msgs_generate_into_the_cache_and_import(types, cache):
 
 
 def test_hobbit_md5_sums_and_full_texts_equal_genpys_command_line_build(types, hobbit_reference):
-    ours = {f"hobbit_msgs.msg.{n}": types.message_class(f"hobbit_msgs/{n}") for n in ["Parameter", "arm_joints"] + ARM_SERVER}
+    ours = {f"hobbit_msgs.msg.{n}": types.message_class(f"hobbit_msgs/{n}")
+            for n in ["Parameter", "arm_joints"] + ARM_SERVER}
     service = types.service_class("hobbit_msgs/Request")
     ours.update({"hobbit_msgs.srv.Request": service, "hobbit_msgs.srv.RequestRequest": service._request_class,
                  "hobbit_msgs.srv.RequestResponse": service._response_class})
@@ -336,7 +338,7 @@ def test_a_broken_definition_names_the_file(hobbit_copy, tmp_path, file, text, p
 
 
 def test_a_missing_definitions_folder_is_named(tmp_path):
-    with pytest.raises(MessageDefinitionError, match=f"{tmp_path / 'nowhere'}: .*does not exist"):
+    with pytest.raises(MessageDefinitionError, match=re.escape(f"{tmp_path / 'nowhere'}: ") + ".*does not exist"):
         MessageTypes([tmp_path / "nowhere"], cache_dir=tmp_path / "cache")
 
 
@@ -410,7 +412,8 @@ def test_byte_arrays_are_lists_of_numbers(types):
 
 
 @pytest.mark.parametrize("type_name, data, error", [
-    ("geometry_msgs/PoseStamped", {"pose": {"position": {"x": "far"}}}, "pose.position.x: expected a number, got 'far'"),
+    ("geometry_msgs/PoseStamped", {"pose": {"position": {"x": "far"}}},
+     "pose.position.x: expected a number, got 'far'"),
     ("geometry_msgs/PoseStamped", {"pose": {"positon": {}}}, "pose.positon: geometry_msgs/Pose has no field 'positon'"),
     ("geometry_msgs/PoseStamped", {"header": {"seq": -1}}, "header.seq: -1 is out of range for uint32"),
     ("geometry_msgs/PoseStamped", {"header": {"stamp": "now"}}, "header.stamp: expected a time in seconds"),
@@ -451,3 +454,12 @@ def test_from_message_needs_a_message():
         from_message({"linear": {}})
     with pytest.raises(RobotCommandError, match="to_message needs a ROS message class"):
         to_message("geometry_msgs/Twist", {})
+
+
+def test_a_cache_that_cannot_be_written_is_named(tmp_path):
+    blocker = tmp_path / "a-file"
+    blocker.write_text("")
+    types = MessageTypes([HOBBIT_MSG], cache_dir=blocker / "cache")
+    expected = re.escape(f"Cannot write generated ROS message code to {blocker / 'cache'}")
+    with pytest.raises(RobotCommandError, match=expected):
+        types.message_class("hobbit_msgs/Parameter")
