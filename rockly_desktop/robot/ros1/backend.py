@@ -6,6 +6,7 @@ service proxies and action clients are made once per name and shared by all runs
 """
 import threading
 import time
+from concurrent.futures import ThreadPoolExecutor
 
 from rockly_desktop.core.errors import RobotCommandError, RobotConnectionLost, RobotTimeout
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
@@ -13,7 +14,7 @@ from rockly_desktop.robot.ros1.messages import from_message, to_message
 
 POLL_SECONDS = 0.01
 FIRST_PUBLISH_WAIT = 1.0  # a new publisher waits this long for subscribers to connect
-LOST_GRACE_SECONDS = 0.5
+SERVICE_WORKERS = 16
 
 _ACTIONLIB_STATUS = {3: GoalStatus.SUCCEEDED, 4: GoalStatus.ABORTED, 2: GoalStatus.PREEMPTED,
                      8: GoalStatus.PREEMPTED, 5: GoalStatus.REJECTED, 9: GoalStatus.ABORTED}
@@ -33,6 +34,10 @@ class RosGraph:
         self._topics = {}
         self._services = {}
         self._actions = {}
+        self.available_services = set()
+        # Service calls run here so a stop need not wait for them (an abandoned call, e.g. a
+        # question on the robot's tablet, finishes on its own).
+        self.service_calls = ThreadPoolExecutor(max_workers=SERVICE_WORKERS, thread_name_prefix="rockly-service")
 
     def publisher(self, topic, msg_type):
         with self._lock:
@@ -65,8 +70,17 @@ class RosGraph:
         with self._lock:
             proxy = self._services.get(name)
             if proxy is None:
-                proxy = self._services[name] = self._rospy.ServiceProxy(name, self.types.service_class(srv_type))
+                proxy = self._services[name] = self._rospy.ServiceProxy(
+                    name, self.types.service_class(srv_type), persistent=True)
             return proxy
+
+    def forget_service(self, name):
+        """Drop a service's connection after a failure; the next call connects anew."""
+        with self._lock:
+            proxy = self._services.pop(name, None)
+            self.available_services.discard(name)
+        if proxy is not None:
+            proxy.close()
 
     def action_client(self, action, action_type):
         import actionlib
@@ -105,7 +119,7 @@ class Ros1GoalHandle(GoalHandle):
     def wait(self, timeout: float) -> GoalOutcome:
         """Wait for the goal's end (interruptible); its status and result."""
         client = self._client
-        if not self._backend.wait_until(lambda: client.get_state() in _ACTIONLIB_STATUS, timeout):
+        if not self._backend.wait_until(lambda: client.wait_for_result(self._rospy_duration(0.005)), timeout):
             raise RobotTimeout(f"the action '{self._action}' did not finish within {timeout:g} s")
         result = client.get_result()
         return GoalOutcome(_ACTIONLIB_STATUS[client.get_state()],
@@ -114,6 +128,12 @@ class Ros1GoalHandle(GoalHandle):
     def cancel(self) -> None:
         """Ask the action server to stop this goal."""
         self._client.cancel_goal()
+
+    @staticmethod
+    def _rospy_duration(seconds):
+        import rospy
+
+        return rospy.Duration(seconds)
 
 
 class Ros1Backend(RobotBackend):
@@ -140,6 +160,17 @@ class Ros1Backend(RobotBackend):
                 return False
             self.interrupt.nap(POLL_SECONDS)
 
+    def _wait_for_event(self, event: threading.Event, timeout: float) -> bool:
+        """Like wait_until for an Event, but wakes the moment it is set (no polling delay)."""
+        deadline = time.monotonic() + timeout
+        while True:
+            self._check()
+            remaining = deadline - time.monotonic()
+            if event.wait(max(0.0, min(POLL_SECONDS, remaining))):
+                return True
+            if remaining <= 0:
+                return False
+
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
         """Publish on ``topic`` (a new publisher first waits briefly for its subscribers)."""
         self._check()
@@ -161,10 +192,10 @@ class Ros1Backend(RobotBackend):
 
     def wait_for_message(self, topic: str, msg_type: str, timeout: float) -> dict:
         """The next message on ``topic``; RobotTimeout naming it after ``timeout``."""
-        received = []
-        unsubscribe = self.subscribe(topic, msg_type, received.append)
+        received, arrived = [], threading.Event()
+        unsubscribe = self.subscribe(topic, msg_type, lambda message: (received.append(message), arrived.set()))
         try:
-            if not self.wait_until(lambda: received, timeout):
+            if not self._wait_for_event(arrived, timeout):
                 raise RobotTimeout(f"no message arrived on the topic '{topic}' within {timeout:g} s")
         finally:
             unsubscribe()
@@ -173,30 +204,31 @@ class Ros1Backend(RobotBackend):
     def call_service(self, name: str, srv_type: str, request: dict, timeout: float) -> dict:
         """Call a service in a helper thread so that Stop and a lost master end the wait."""
         proxy = self.graph.service(name, srv_type)
-        available = []
+        if name not in self.graph.available_services:
+            def probe():
+                try:
+                    proxy.wait_for_service(timeout=0.05)
+                except Exception:  # noqa: BLE001 - not there yet
+                    return False
+                return True
 
-        def probe():
-            try:
-                proxy.wait_for_service(timeout=0.05)
-                available.append(True)
-            except Exception:  # noqa: BLE001 - not there yet
-                pass
-            return bool(available)
-
-        if not self.wait_until(probe, timeout):
-            raise RobotTimeout(f"the service '{name}' is not available (waited {timeout:g} s)")
-        outcome = {}
+            if not self.wait_until(probe, timeout):
+                raise RobotTimeout(f"the service '{name}' is not available (waited {timeout:g} s)")
+            self.graph.available_services.add(name)
+        outcome, done = {}, threading.Event()
 
         def call():
             try:
                 outcome["response"] = proxy.call(to_message(proxy.request_class, request))
             except Exception as error:  # noqa: BLE001 - reported to the program below
                 outcome["error"] = error
+            done.set()
 
-        threading.Thread(target=call, name=f"rockly-service {name}", daemon=True).start()
-        if not self.wait_until(lambda: outcome, timeout):
+        self.graph.service_calls.submit(call)
+        if not self._wait_for_event(done, timeout):
             raise RobotTimeout(f"the service '{name}' did not answer within {timeout:g} s")
         if "error" in outcome:
+            self.graph.forget_service(name)
             raise RobotCommandError(f"the service '{name}' failed: {outcome['error']}")
         return from_message(outcome["response"])
 
