@@ -3,8 +3,8 @@
 rospy allows ``init_node`` once per process, so the node is started on first use with
 the master chosen then (``ROS_MASTER_URI``, ``ROS_IP``/``ROS_HOSTNAME`` are read at that
 moment). A watchdog asks the master for its pid twice a second; waits in the backend
-fail within ~2 s of the master vanishing, and the status returns to connected when it
-is back.
+fail within ~2 s of the master vanishing; when it is back, the node registers its
+endpoints with it again and the status returns to connected.
 """
 import logging
 import os
@@ -103,6 +103,8 @@ class RosConnection:
             status = CONNECTED if self.round_trip is not None else LOST
             if status != self.status:
                 log.warning("ROS master %s: %s", self.master_uri, status)
+                if status == CONNECTED:
+                    _register_again()
                 self.status = status
                 for listener in list(self._listeners):
                     listener(status)
@@ -115,3 +117,23 @@ class RosConnection:
     def lost(self) -> bool:
         """True while the master does not answer."""
         return self.status == LOST
+
+
+def _register_again():
+    """Tell a restarted master about this node's publishers, subscribers and services.
+
+    rospy registers each endpoint once, when it is made; a master that comes back empty
+    would otherwise never connect this node to anyone again.
+    """
+    from rospy.impl.registration import (
+        RegManager, Registration, get_registration_listeners, get_service_manager, get_topic_manager,
+    )
+
+    topics, services = get_topic_manager(), get_service_manager()
+    for manager in [listener for listener in get_registration_listeners().listeners if isinstance(listener, RegManager)]:
+        for topic, msg_type in topics.get_publications():
+            manager.reg_added(topic, msg_type, Registration.PUB)
+        for topic, msg_type in topics.get_subscriptions():
+            manager.reg_added(topic, msg_type, Registration.SUB)
+        for name, uri in services.get_services():
+            manager.reg_added(name, uri, Registration.SRV)

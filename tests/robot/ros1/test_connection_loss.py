@@ -37,3 +37,48 @@ def test_no_master_is_explained_at_once(tmp_path):
     run.process.wait(30)
     assert run.process.returncode == 1
     assert f"no ROS master answers at {master.uri}" in run.process.stderr.read()
+
+
+RECONNECTING_CLIENT = r"""
+import sys
+from rockly_desktop.plugins.registry import ProfileRegistry
+from rockly_desktop.executor.robot_link import RosRobot
+from rockly_desktop.robot.interrupt import Interrupt
+hobbit = ProfileRegistry.discover().get("hobbit")
+robot = RosRobot(hobbit, sys.argv[1])
+commands = hobbit.load_object("api")(robot.backend(Interrupt()))
+commands.drive(0.2)
+print("first drive done", flush=True)
+sys.stdin.readline()                       # the test restarts the master now
+Interrupt().wait_until(lambda: robot.connection.status == "connected", 20)
+commands = hobbit.load_object("api")(robot.backend(Interrupt()))
+commands.drive(0.2)
+commands.look("up_left")
+print("second drive done", robot.connection.status, flush=True)
+"""
+
+
+def test_after_the_master_comes_back_the_same_rockly_drives_again(tmp_path):
+    import subprocess
+    import sys
+
+    from ros_helpers import REPO, ros_environment
+
+    master = RosMaster(tmp_path / "ros").start()
+    simulator = RocklyProcess(["sim", "hobbit", "--ros", "--master", master.uri, "--speed", "10"], master, ready_line="on ROS")
+    client = subprocess.Popen([sys.executable, "-c", RECONNECTING_CLIENT, master.uri], cwd=REPO, text=True,
+                              env=ros_environment(master.uri, master.home), stdin=subprocess.PIPE,
+                              stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    try:
+        assert client.stdout.readline().strip() == "first drive done"
+        master.stop()
+        time.sleep(1.5)  # both nodes notice the master is gone
+        master.start()
+        client.stdin.write("go\n")
+        client.stdin.flush()
+        output, errors = client.communicate(timeout=60)
+        assert output.strip() == "second drive done connected", errors
+    finally:
+        client.kill()
+        simulator.stop()
+        master.stop()
