@@ -45,12 +45,15 @@ class RosRobot:
     name = "ros1"
 
     def __init__(self, profile, master_uri: str = None):
-        from rockly_desktop.robot.ros1.backend import RosGraph
-        from rockly_desktop.robot.ros1.connection import RosConnection
-        from rockly_desktop.robot.ros1.messages import MessageTypes
+        from rockly_desktop.robot.ros1.connection import RosConnection, RosUnavailable
 
         self.profile = profile
-        self.connection = RosConnection.get(master_uri)
+        self.connection = RosConnection.get(master_uri)  # RosUnavailable without rospy or a master
+        try:
+            from rockly_desktop.robot.ros1.backend import RosGraph
+            from rockly_desktop.robot.ros1.messages import MessageTypes
+        except ImportError as error:
+            raise RosUnavailable(f"the ROS 1 message tools (genpy, actionlib) are not installed ({error})") from None
         self.graph = RosGraph(self.connection, MessageTypes(profile_message_folders(profile)))
 
     def backend(self, interrupt: Interrupt):

@@ -41,3 +41,18 @@ def test_an_unreachable_master_is_refused_and_the_simulator_stays(qtbot, window,
     backend.setCurrentIndex(backend.findData("ros1"))
     assert warnings and "no ROS master answers at http://127.0.0.1:9" in warnings[0]
     assert window.robots.kind == "simulator" and backend.currentData() == "simulator"
+
+
+def test_the_status_shows_a_lost_master_and_its_return(qtbot, ros_window, ros_master):
+    qtbot.waitUntil(lambda: "ROS connected" in ros_window.robots.status.text(), timeout=5000)
+    ros_master.stop()
+    try:
+        qtbot.waitUntil(lambda: "lost" in ros_window.robots.status.text(), timeout=3000)
+        assert "#c62828" in ros_window.robots.status.styleSheet()
+    finally:
+        ros_master.start()
+    qtbot.waitUntil(lambda: "ROS connected" in ros_window.robots.status.text(), timeout=5000)
+    ros_window.editor.call_blocking("load", {"workspace": workspace(block("hobbit_emo", {"emotion": "SAD"}))})
+    with qtbot.waitSignal(ros_window.runs.sig_finished, timeout=30000) as blocker:
+        ros_window.runs.run()
+    assert blocker.args[0].outcome == "finished", blocker.args[0]

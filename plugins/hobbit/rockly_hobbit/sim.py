@@ -225,6 +225,19 @@ def _arm_task_for(goal, turntable_angle):
 # --- the robot --------------------------------------------------------------------------------
 
 
+# Joint angles (radians) of the arm's named poses, for /joint_states; illustrative, not HOBBIT's calibration.
+ARM_JOINT_NAMES = ("arm_joint_1", "arm_joint_2", "arm_joint_3", "arm_joint_4", "arm_joint_5", "arm_joint_6", "gripper")
+ARM_JOINTS = {
+    "home": (0.0, -1.4, 2.6, 0.0, 0.4, 0.0),
+    "candle": (0.0, 0.0, 0.0, 0.0, 0.0, 0.0),
+    "floor": (0.3, 0.9, 0.6, 0.0, 1.2, 0.0),
+    "table": (0.3, 0.2, 0.9, 0.0, 0.8, 0.0),
+    "tray": (1.6, -0.6, 2.0, 0.0, 0.9, 0.0),
+    "learning": (0.8, 0.4, 0.8, 0.0, 1.0, 0.0),
+}
+GRIPPER_OPENING = {"open": 0.08, "closed": 0.0}
+
+
 class SimHobbit:
     """A simulated HOBBIT in a SimWorld, moving in simulated time ``speed`` times as fast as real time.
 
@@ -239,7 +252,8 @@ class SimHobbit:
                        "/head/move": "std_msgs/String", "/head/emo": "std_msgs/String",
                        "/move_base_simple/goal": "geometry_msgs/PoseStamped"},
         "publishes": {"/odom": "nav_msgs/Odometry", "/DiscreteMotionState": "std_msgs/String",
-                      "/battery_state": "sensor_msgs/BatteryState", "/bumper": "std_msgs/Bool"},
+                      "/battery_state": "sensor_msgs/BatteryState", "/bumper": "std_msgs/Bool",
+                      "/joint_states": "sensor_msgs/JointState"},
         "services": {"/MMUI": "hobbit_msgs/Request"},
         "actions": {"hobbit_arm": "hobbit_msgs/ArmServerAction", "move_base": "move_base_msgs/MoveBaseAction"},
     }
@@ -262,6 +276,7 @@ class SimHobbit:
         self._trail = deque([(0.0, 0.0)], maxlen=TRAIL_POINTS)
         self._head, self._emotion = "center_center", "NEUTRAL"
         self._arm, self._arm_task = "home", None
+        self._last_joints = list(ARM_JOINTS["home"])
         self._gripper, self._turntable, self._turntable_angle = "closed", "stored", 0.0
         self._battery, self._volume = 100.0, 50
         self._shown, self._notices = None, deque(maxlen=NOTICES_KEPT)
@@ -368,6 +383,17 @@ class SimHobbit:
                                 "angular": {"x": 0.0, "y": 0.0, "z": self._angular}}}})
         self._queue("/battery_state", "sensor_msgs/BatteryState", {"percentage": self._battery / 100, "present": True})
         self._queue("/bumper", "std_msgs/Bool", {"data": False})
+        self._queue("/joint_states", "sensor_msgs/JointState",
+                    {"header": {"frame_id": "base_link"}, "name": list(ARM_JOINT_NAMES), "position": self._joint_positions()})
+
+    def _joint_positions(self):
+        """The arm's six joints (radians) and the gripper opening, following the arm's motion."""
+        here = ARM_JOINTS.get(self._arm, self._last_joints)
+        task = self._arm_task
+        there = ARM_JOINTS.get(task.command.pose, here) if task is not None and task.command.pose else here
+        fraction = task.progress if task is not None else 0.0
+        self._last_joints = [a + (b - a) * fraction for a, b in zip(here, there)]
+        return self._last_joints + [GRIPPER_OPENING[self._gripper]]
 
     # --- publishing: queued under the lock, sent outside it, in order ---------------------
 

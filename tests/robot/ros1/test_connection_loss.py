@@ -82,3 +82,23 @@ def test_after_the_master_comes_back_the_same_rockly_drives_again(tmp_path):
         client.kill()
         simulator.stop()
         master.stop()
+
+
+def test_without_rospy_the_ros_backend_says_so_and_the_simulator_still_runs(tmp_path):
+    import subprocess
+    import sys
+
+    from ros_helpers import REPO
+
+    blocker = tmp_path / "no_ros" / "rospy"
+    blocker.mkdir(parents=True)
+    (blocker / "__init__.py").write_text("raise ImportError('No module named rospy')\n")
+    program = tmp_path / "p.rockly"
+    program.write_text(rockly_document([block("hobbit_emo", {"emotion": "HAPPY"})]))
+    env = dict(__import__("os").environ, PYTHONPATH=str(blocker.parent))
+    on_ros = subprocess.run([sys.executable, "-m", "rockly_desktop", "run", str(program), "--backend", "ros1"],
+                            capture_output=True, text=True, cwd=REPO, env=env, timeout=60)
+    assert on_ros.returncode == 1 and "ROS 1 (rospy) is not installed on this computer" in on_ros.stderr
+    on_simulator = subprocess.run([sys.executable, "-m", "rockly_desktop", "run", str(program)],
+                                  capture_output=True, text=True, cwd=REPO, env=env, timeout=60)
+    assert on_simulator.returncode == 0, on_simulator.stderr

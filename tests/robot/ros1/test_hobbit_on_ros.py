@@ -17,8 +17,14 @@ def hobbit_robot(ros_robot, hobbit):
 
 
 def record(ros_robot, topic, msg_type, pick):
+    """Record what arrives on ``topic``, once connected to every publisher the master knows."""
+    import rosgraph
+
     seen = []
     unsubscribe = ros_robot.backend(Interrupt()).subscribe(topic, msg_type, lambda message: seen.append(pick(message)))
+    subscriber = ros_robot.graph.topic(topic, msg_type)._subscriber
+    publishers = dict(rosgraph.Master("/test").getSystemState()[0]).get(topic, [])
+    eventually(lambda: subscriber.get_num_connections() >= len(publishers), timeout=3)
     return seen, unsubscribe
 
 
@@ -114,3 +120,16 @@ def test_stop_ends_a_wait_for_a_service(ros_robot):
     threading.Timer(0.2, interrupt.request_stop).start()
     with pytest.raises(ProgramStopped):
         ros_robot.backend(interrupt).call_service("/no_such_service", "std_srvs/Trigger", {}, 30)
+
+
+def test_the_ros_level_simulator_publishes_odometry_battery_and_joint_states(ros_robot, hobbit_robot):
+    backend = ros_robot.backend(Interrupt())
+    hobbit_robot.move_arm("candle")
+    hobbit_robot.gripper("open")
+    joints = backend.wait_for_message("/joint_states", "sensor_msgs/JointState", 5)
+    assert joints["name"][:6] == [f"arm_joint_{i}" for i in range(1, 7)] and joints["name"][6] == "gripper"
+    assert joints["position"][:6] == pytest.approx([0.0] * 6, abs=1e-6) and joints["position"][6] > 0
+    battery = backend.wait_for_message("/battery_state", "sensor_msgs/BatteryState", 5)
+    assert 0 < battery["percentage"] <= 1 and battery["present"] is True
+    odometry = backend.wait_for_message("/odom", "nav_msgs/Odometry", 5)
+    assert odometry["header"]["frame_id"] == "odom" and odometry["child_frame_id"] == "base_link"
