@@ -1,4 +1,5 @@
 """The robot a program runs against. Today: the profile's built-in simulator, in-process."""
+from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.safe_stop import run_safe_stop
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
@@ -15,6 +16,8 @@ class SimulatedRobot:
     def __init__(self, profile, tablet=None, speed: float = 1.0):
         self.profile = profile
         self.world = SimWorld()
+        self.state = StateStore()
+        self.world.tap(self.state.record)
         self.simulator = profile.load_object("simulator")(self.world, tablet=tablet, speed=speed)
         self.simulator.start()
 

@@ -45,7 +45,7 @@ MANIFEST_FIELDS = (
     FieldSpec("simulator_view", "import", False, "module:Class of the QWidget drawing the simulator (set_snapshot(dict))."),
     FieldSpec("messages", "folder", False, "Folder with ROS definitions the robot needs: <package>/msg|srv|action/*."),
     FieldSpec("safe_stop", "safe_stop", False, "What 'stop' means for this robot: a list of {publish: ...}, {cancel_goals: ACTION}."),
-    FieldSpec("state", "list", False, "Topics and fields the live state panels show."),
+    FieldSpec("state", "state", False, "Live state panels: [{panel: TITLE, rows: [{label, topic, field, format?, transform?}]}]."),
     FieldSpec("legacy_fields", "legacy_fields", False, "Old field names of saved programs: {block_type: {old_field: {field: new, values: {old: new}}}}."),
 )
 
@@ -87,6 +87,26 @@ def _check_safe_stop(value):
                 return f"item {index + 1}: cancel_goals needs an action name"
         else:
             return f"item {index + 1}: unknown action '{kind}' (use publish or cancel_goals)"
+    return None
+
+
+STATE_TRANSFORMS = ("yaw_degrees", "percent", "goal_state")
+
+
+def _check_state(value):
+    if not isinstance(value, list):
+        return "must be a list of panels"
+    for index, panel in enumerate(value):
+        if not isinstance(panel, dict) or _check_text(panel.get("panel")) or not isinstance(panel.get("rows"), list):
+            return f"panel {index + 1} needs a 'panel' title and a list of 'rows'"
+        for number, row in enumerate(panel["rows"]):
+            where = f"panel {index + 1}, row {number + 1}"
+            if not isinstance(row, dict) or _check_text(row.get("label")):
+                return f"{where} needs a 'label'"
+            if not isinstance(row.get("topic"), str) or not isinstance(row.get("field"), str):
+                return f"{where} needs a 'topic' and a 'field' (e.g. pose.pose.position.x)"
+            if row.get("transform", "yaw_degrees") not in STATE_TRANSFORMS:
+                return f"{where}: unknown transform '{row['transform']}' (use {', '.join(STATE_TRANSFORMS)})"
     return None
 
 
@@ -138,6 +158,8 @@ def _check(spec: FieldSpec, value, root: Path):
         return _check_safe_stop(value)
     elif kind == "legacy_fields":
         return _check_legacy_fields(value)
+    elif kind == "state":
+        return _check_state(value)
     return None
 
 

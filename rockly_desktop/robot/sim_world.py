@@ -20,6 +20,10 @@ log = logging.getLogger(__name__)
 POLL_SECONDS = 0.01
 
 
+# actionlib_msgs/GoalStatus codes, as the real robot's action servers report them.
+_ACTIONLIB_CODES = {GoalStatus.PREEMPTED: 2, GoalStatus.SUCCEEDED: 3, GoalStatus.ABORTED: 4, GoalStatus.REJECTED: 5}
+
+
 class SimGoal:
     """One goal on a simulated action server; ``outcome`` is set when it has ended."""
 
@@ -43,6 +47,20 @@ class SimWorld:
         self._services = {}
         self._actions = {}
         self._goals = set()
+        self._taps = []
+
+    def tap(self, callback):
+        """Also show ``callback(topic, msg_type, message)`` everything that happens in the world.
+
+        Topics as they are published; a service call as ``<service>`` with its request and
+        response; an action goal as ``<action>/goal`` and its end as ``<action>/result``
+        (the topics actionlib uses on ROS), so state panels read both the same way.
+        """
+        self._taps.append(callback)
+
+    def _show_taps(self, topic, msg_type, message):
+        for callback in list(self._taps):
+            callback(topic, msg_type, copy.deepcopy(message))
 
     # --- topics -----------------------------------------------------------------------
 
@@ -53,6 +71,7 @@ class SimWorld:
             callbacks = list(self._subscribers[topic])
         for callback in callbacks:
             callback(copy.deepcopy(message))
+        self._show_taps(topic, msg_type, message)
         with self._changed:
             self._changed.notify_all()
 
@@ -107,6 +126,7 @@ class SimWorld:
             raise
         except Exception as error:
             raise RobotCommandError(f"the service '{name}' failed: {error}") from error
+        self._show_taps(name, "service", {"request": request, "response": response})
         return copy.deepcopy(response)
 
     # --- actions ------------------------------------------------------------------------
@@ -128,6 +148,7 @@ class SimWorld:
                 raise RobotCommandError(f"there is no action server '{action}'")
             sim_goal = SimGoal(action)
             self._goals.add(sim_goal)
+        self._show_taps(f"/{action.strip('/')}/goal", "action goal", {"goal": goal})
         thread = threading.Thread(target=self._run_goal, args=(handler, sim_goal, copy.deepcopy(goal), feedback),
                                   name=f"sim goal {action}", daemon=True)
         thread.start()
@@ -154,6 +175,8 @@ class SimWorld:
             sim_goal.outcome = GoalOutcome(status, copy.deepcopy(result))
             self._goals.discard(sim_goal)
             self._changed.notify_all()
+        self._show_taps(f"/{sim_goal.action.strip('/')}/result", "action result",
+                        {"status": {"status": _ACTIONLIB_CODES[status]}, "result": result})
 
     # --- waiting ------------------------------------------------------------------------
 

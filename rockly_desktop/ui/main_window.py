@@ -1,7 +1,7 @@
 """Rockly's main window: the block editor, the run toolbar, the docks, menus and the status bar."""
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction, QActionGroup, QKeySequence
-from PySide6.QtWidgets import QLabel, QMainWindow, QMessageBox
+from PySide6.QtWidgets import QDockWidget, QLabel, QMainWindow, QMessageBox
 
 from rockly_desktop import __version__
 from rockly_desktop.bridge.editor_view import EditorView
@@ -15,6 +15,7 @@ from rockly_desktop.ui.run_session import RunSession
 from rockly_desktop.ui.robot_choice import RobotChoice
 from rockly_desktop.ui.run_toolbar import RunToolbar
 from rockly_desktop.ui.simulator_dock import SimulatorDock
+from rockly_desktop.ui.state_panels import StatePanels
 from rockly_desktop.ui.tablet import QtTablet
 from rockly_desktop.ui.texts import tr
 from rockly_desktop.ui.variables_dock import VariablesDock
@@ -44,9 +45,12 @@ class MainWindow(QMainWindow):
         self.variables = VariablesDock(tr("variables_dock", self.language),
                                        (tr("variable", self.language), tr("value", self.language)), self)
         self.console = ConsoleDock(tr("console_dock", self.language), self)
+        self.state_dock = QDockWidget(tr("state_dock", self.language), self)
+        self.state_dock.setObjectName("state_dock")
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.simulator_dock)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.code_dock)
         self.tabifyDockWidget(self.code_dock, self.variables)
+        self.tabifyDockWidget(self.code_dock, self.state_dock)
         self.code_dock.raise_()
         self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.console)
         self.profile_label = QLabel(self)
@@ -128,6 +132,9 @@ class MainWindow(QMainWindow):
             return
         if self.simulator_dock.robot is robot:
             return
+        panels = StatePanels(self.profile.manifest.get("state", []), self.language, self.state_dock)
+        panels.set_store(getattr(robot, "state", None))
+        self.state_dock.setWidget(panels)
         if robot.snapshot() is None:
             self.simulator_dock.show_robot(None, None, tr("real_robot_view", self.language))
         else:
@@ -215,6 +222,7 @@ class MainWindow(QMainWindow):
         self.code_dock.setWindowTitle(tr("code_dock", language))
         self.simulator_dock.setWindowTitle(tr("simulator_dock", language))
         self.variables.setWindowTitle(tr("variables_dock", language))
+        self.state_dock.setWindowTitle(tr("state_dock", language))
         self.variables.table.setHorizontalHeaderLabels([tr("variable", language), tr("value", language)])
         self.console.setWindowTitle(tr("console_dock", language))
         self._build_run_toolbar()
@@ -281,7 +289,7 @@ class MainWindow(QMainWindow):
             robot_menu.addAction(action)
 
         view_menu = bar.addMenu(tr("menu_view", language))
-        for dock in (self.simulator_dock, self.code_dock, self.variables, self.console):
+        for dock in (self.simulator_dock, self.code_dock, self.variables, self.state_dock, self.console):
             view_menu.addAction(dock.toggleViewAction())
 
         settings_menu = bar.addMenu(tr("menu_settings", language))
