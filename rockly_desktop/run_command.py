@@ -13,7 +13,6 @@ from rockly_desktop.core.workspace_blocks import block_types_by_id
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import BlockEntered, OutputPrinted, RunFinished
 from rockly_desktop.executor.robot_link import RosRobot, SimulatedRobot
-from rockly_desktop.robot.ros1.connection import RosUnavailable
 from rockly_desktop.executor.run_setup import make_runner
 
 EXIT_STOPPED = 130
@@ -77,7 +76,7 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
             robot = RosRobot(program.profile, master_uri)
         else:
             robot = SimulatedRobot(program.profile, tablet=AnswerList(answers, out), speed=speed)
-    except (RocklyError, RosUnavailable) as error:
+    except RocklyError as error:
         print(f"rockly run: {error}", file=sys.stderr)
         return 1
     control = RunControl(trace=True)
@@ -130,7 +129,7 @@ def serve_simulator(profile_id: str, master_uri=None, speed: float = 1.0, answer
         types = MessageTypes(profile_message_folders(profile))
         run_simulator_node(profile, types, master_uri, speed, AnswerList(answers, out), stop,
                            on_ready=lambda: out(f"simulated {profile.display_name()} is up on ROS (Ctrl+C ends it)", flush=True))
-    except (RocklyError, RosUnavailable) as error:
+    except RocklyError as error:
         print(f"rockly sim: {error}", file=sys.stderr)
         return 1
     finally:

@@ -27,6 +27,12 @@
   // Rockly writes every string as a Python literal that keeps newlines and quotes exactly.
   python.pythonGenerator.quote_ = RocklyPython.string;
   python.pythonGenerator.multiline_quote_ = RocklyPython.string;
+  // Comments are written as "# ..." lines. Python also ends a line at a lone carriage
+  // return, so a comment holding one could start a line of code: every line break Python
+  // knows becomes "\n" (and so gets its own "# "), and NUL, which Python refuses, goes.
+  const prefixLines = python.pythonGenerator.prefixLines.bind(python.pythonGenerator);
+  python.pythonGenerator.prefixLines = (text, prefix) =>
+    prefixLines(String(text).replace(/\r\n?|[\u2028\u2029]/g, '\n').replace(/\0/g, ''), prefix);
   // Block ids go into the instrumented code too; Blockly pastes them between quotes
   // unescaped, so an id from a crafted file could become code. Quote them properly.
   python.pythonGenerator.injectId = (message, block) =>
@@ -78,13 +84,15 @@
     reportChange('load');
   }
 
-  /** Like replaceWorkspace, but a program that fails to load leaves the old one in place. */
+  /** Like replaceWorkspace, but a program that fails to load leaves the old one (and its breakpoints) in place. */
   function replaceOrRestore(fill) {
     const previous = Blockly.serialization.workspaces.save(workspace);
+    const previousBreakpoints = [...breakpoints];
     try {
       replaceWorkspace(fill);
     } catch (error) {
       replaceWorkspace(() => Blockly.serialization.workspaces.load(previous, workspace));
+      setBreakpoints(previousBreakpoints);
       throw error;
     }
   }

@@ -1,4 +1,4 @@
-"""The robot a program runs against. Today: the profile's built-in simulator, in-process."""
+"""The robot a program runs against: the profile's built-in simulator, or a robot over ROS 1."""
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.safe_stop import run_safe_stop
@@ -58,6 +58,19 @@ class RosRobot:
         except ImportError as error:
             raise RosUnavailable(f"the ROS 1 message tools (genpy, actionlib) are not installed ({error})") from None
         self.graph = RosGraph(self.connection, MessageTypes(profile_message_folders(profile)))
+        for action in profile.manifest.get("safe_stop", []):  # ready now, so a stop never waits for them
+            if "publish" in action:
+                self.graph.publisher(action["publish"]["topic"], action["publish"]["type"])
+        self.state = StateStore()
+        self._feed = None
+
+    def follow_graph(self):
+        """Start filling ``state`` from every topic of the graph (for the panels); idempotent."""
+        if self._feed is None:
+            from rockly_desktop.robot.ros1.state_feed import RosStateFeed
+
+            self._feed = RosStateFeed(self.graph, self.state)
+        return self._feed
 
     def backend(self, interrupt: Interrupt):
         """A backend whose waits end when ``interrupt`` is stopped or the master is lost."""
@@ -74,7 +87,10 @@ class RosRobot:
         return run_safe_stop(self.profile.manifest.get("safe_stop", []), self.backend(Interrupt()))
 
     def shutdown(self):
-        """Stop the robot safely; the node stays up for the next run."""
+        """Stop the robot safely and stop following the graph; the node stays up."""
+        if self._feed is not None:
+            self._feed.stop()
+            self._feed = None
         self.safe_stop()
 
 

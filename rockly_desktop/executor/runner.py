@@ -7,6 +7,7 @@ so a stop also ends a long drive or a dialog.
 """
 import builtins
 import logging
+import reprlib
 import traceback
 
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError, RobotTimeout
@@ -14,6 +15,12 @@ from rockly_desktop.executor.events import BlockEntered, OutputPrinted, RunFinis
 
 log = logging.getLogger(__name__)
 PROGRAM_FILENAME = "<rockly program>"
+
+# Values are shown while the program runs: long lists and texts are shortened.
+_SHORT = reprlib.Repr()
+_SHORT.maxlist = _SHORT.maxtuple = _SHORT.maxset = _SHORT.maxdict = 20
+_SHORT.maxstring = _SHORT.maxother = 200
+_SHORT.maxlevel = 3
 
 
 class BlockHooks:
@@ -107,7 +114,7 @@ class ProgramRunner:
         values = {}
         for display, python_name in self._variable_names.items():
             try:
-                values[display] = repr(self.globals.get(python_name))
+                values[display] = _SHORT.repr(self.globals.get(python_name))
             except Exception as error:  # noqa: BLE001 - a value whose repr fails is still shown
                 values[display] = f"<{type(error).__name__}>"
         return values

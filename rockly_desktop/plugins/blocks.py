@@ -70,10 +70,17 @@ def _slots_of(definition: dict) -> dict:
 
 
 def _placeholders(code: str, where: str, path: Path) -> set:
+    """The ``{name}`` placeholders of a template; only plain names (what the page fills in)."""
     try:
-        return {name for _, name, _, _ in string.Formatter().parse(code) if name is not None}
+        parts = [(name, spec, conversion) for _, name, spec, conversion in string.Formatter().parse(code)
+                 if name is not None]
     except ValueError as error:
         raise ManifestError(path, where, f"the template is broken ({error}); write a literal brace as '{{{{' or '}}}}'") from None
+    for name, spec, conversion in parts:
+        if spec or conversion or not name.isidentifier():
+            raise ManifestError(path, where, f"placeholders are plain names like {{speed}}; "
+                                             f"'{{{name}{'!' + conversion if conversion else ''}{':' + spec if spec else ''}}}' is not one")
+    return {name for name, _, _ in parts}
 
 
 def _parse_block(raw, index: int, path: Path) -> BlockSpec:

@@ -63,15 +63,21 @@ class Profile:
         if not target:
             raise ManifestError(self.root / MANIFEST_NAME, field_name, "is not set in this profile")
         module_name, attr = target.split(":")
-        code_dir = str((self.root / self.manifest.get("python_path", ".")).resolve())
-        if code_dir not in sys.path:
-            sys.path.insert(0, code_dir)
+        code_dir = (self.root / self.manifest.get("python_path", ".")).resolve()
+        if str(code_dir) not in sys.path:
+            sys.path.append(str(code_dir))  # after everything else: a profile cannot shadow other modules
         try:
             module = importlib.import_module(module_name)
-            return getattr(module, attr)
+            found = getattr(module, attr)
         except Exception as error:  # noqa: BLE001 - any failure in profile code is reported, not raised
             raise ManifestError(self.root / MANIFEST_NAME, field_name,
                                 f"cannot import {target}: {type(error).__name__}: {error}") from error
+        module_file = Path(getattr(module, "__file__", "") or "").resolve()
+        if code_dir not in module_file.parents:
+            raise ManifestError(self.root / MANIFEST_NAME, field_name,
+                                f"{module_name} was found at {module_file}, not in the profile's folder "
+                                f"(another profile or package uses the same name)")
+        return found
 
 
 def load_profile(profile_dir: Path, shared_toolboxes: Path, source: str = "folder") -> Profile:

@@ -12,6 +12,7 @@ from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.export import python_module_text
 from rockly_desktop.core.program import PROGRAM_SUFFIX, Program, save_program, write_text_atomically
 from rockly_desktop.plugins.opening import read_program_to_open, unknown_blocks_error
+from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.texts import tr
 
 
@@ -107,7 +108,7 @@ class ProgramFiles(QObject):
                 return False
         try:
             state = self.window.editor.call_blocking("getState")
-            text = python_module_text(state["python"], self.window.profile.id, self.path)
+            text = python_module_text(state["python"], self.window.profile.id, self.path and Path(self.path).name)
             write_text_atomically(path, text)
         except (RocklyError, RuntimeError) as error:
             self._show_error("cannot_export", error, untouched=False)
@@ -120,10 +121,10 @@ class ProgramFiles(QObject):
         if not self.modified:
             return True
         language = self.window.language
-        box = QMessageBox(QMessageBox.Icon.Warning, tr("save_changes_title", language),
-                          tr("save_changes", language, name=self.display_name()),
-                          QMessageBox.StandardButton.Save | QMessageBox.StandardButton.Discard
-                          | QMessageBox.StandardButton.Cancel, self.window)
+        box = plain_message_box(self.window, QMessageBox.Icon.Warning, tr("save_changes_title", language),
+                                tr("save_changes", language, name=self.display_name()),
+                                QMessageBox.StandardButton.Save | QMessageBox.StandardButton.Discard
+                                | QMessageBox.StandardButton.Cancel)
         box.setInformativeText(tr("save_changes_detail", language))
         box.setDefaultButton(QMessageBox.StandardButton.Save)
         answer = box.exec()
@@ -175,8 +176,7 @@ class ProgramFiles(QObject):
 
     def _show_error(self, title_key: str, error, untouched: bool = True):
         language = self.window.language
-        box = QMessageBox(QMessageBox.Icon.Critical, tr(title_key, language), str(error),
-                          QMessageBox.StandardButton.Ok, self.window)
+        box = plain_message_box(self.window, QMessageBox.Icon.Critical, tr(title_key, language), str(error))
         if untouched:
             box.setInformativeText(tr("nothing_changed", language))
         box.setObjectName("error_box")

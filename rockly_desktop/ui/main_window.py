@@ -6,10 +6,10 @@ from PySide6.QtWidgets import QDockWidget, QLabel, QMainWindow, QMessageBox
 from rockly_desktop import __version__
 from rockly_desktop.bridge.editor_view import EditorView
 from rockly_desktop.core.errors import RocklyError
-from rockly_desktop.robot.ros1.connection import RosUnavailable
 from rockly_desktop.ui.code_dock import CodeDock
 from rockly_desktop.ui.console_dock import ConsoleDock
 from rockly_desktop.ui.file_actions import ProgramFiles
+from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.preferences import PreferencesDialog
 from rockly_desktop.ui.run_session import RunSession
 from rockly_desktop.ui.robot_choice import RobotChoice
@@ -58,6 +58,7 @@ class MainWindow(QMainWindow):
         self.tablet.sig_notice.connect(lambda _kind, text: self.console.append(
             tr("robot_says", self.language, text=text), "robot"))
         self.runs = RunSession(self)
+        self.runs.sig_state_changed.connect(self._on_run_state)
         self.robots = RobotChoice(self)
         self.tablet.sig_dismissed.connect(self.runs.stop)
         self.statusBar().addPermanentWidget(self.robots.status)
@@ -103,8 +104,7 @@ class MainWindow(QMainWindow):
             self._restart_editor()
         if self.registry.errors:
             details = "\n\n".join(str(error) for error in self.registry.errors)
-            box = QMessageBox(QMessageBox.Icon.Warning, tr("profile_errors_title", self.language), details,
-                              QMessageBox.StandardButton.Ok, self)
+            box = plain_message_box(self, QMessageBox.Icon.Warning, tr("profile_errors_title", self.language), details)
             box.setObjectName("profile_errors_box")
             box.open()
 
@@ -127,13 +127,17 @@ class MainWindow(QMainWindow):
         try:
             robot = self.robot()
             view_class = self.profile.load_object("simulator_view") if "simulator_view" in self.profile.manifest else None
-        except (RocklyError, RosUnavailable) as error:
+        except RocklyError as error:
             self.console.append(str(error), "error")
             return
         if self.simulator_dock.robot is robot:
             return
+        if hasattr(robot, "follow_graph"):
+            robot.follow_graph()
         panels = StatePanels(self.profile.manifest.get("state", []), self.language, self.state_dock)
         panels.set_store(getattr(robot, "state", None))
+        if self.state_dock.widget() is not None:
+            self.state_dock.widget().deleteLater()
         self.state_dock.setWidget(panels)
         if robot.snapshot() is None:
             self.simulator_dock.show_robot(None, None, tr("real_robot_view", self.language))
@@ -146,6 +150,18 @@ class MainWindow(QMainWindow):
             self.run_toolbar.backend.blockSignals(True)
             self.run_toolbar.backend.setCurrentIndex(self.run_toolbar.backend.findData(self.robots.kind))
             self.run_toolbar.backend.blockSignals(False)
+
+    # Commands that replace the program or the editor page must wait until the run ends.
+    _IDLE_ONLY_ACTIONS = ("action_new", "action_open", "action_import_xml", "action_preferences")
+
+    def _on_run_state(self, state: str):
+        idle = state == "idle"
+        for action in self.findChildren(QAction):
+            if action.objectName() in self._IDLE_ONLY_ACTIONS:
+                action.setEnabled(idle)
+        self.recent_menu.setEnabled(idle)
+        for action in self.profile_actions.actions():
+            action.setEnabled(idle)
 
     def _on_breakpoints(self, block_ids):
         self.breakpoints = list(block_ids)

@@ -8,8 +8,9 @@ from PySide6.QtWidgets import QLabel, QMessageBox
 
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.executor.robot_link import RosRobot, SimulatedRobot
-from rockly_desktop.robot.ros1.connection import RosUnavailable, master_answers
+from rockly_desktop.robot.ros1.connection import RosConnection
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
+from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.texts import tr
 
 SIMULATOR, ROS1 = "simulator", "ros1"
@@ -67,13 +68,11 @@ class RobotChoice(QObject):
         if not dialog.exec():
             return False
         try:
-            if master_answers(dialog.master_uri) is None:
-                raise RosUnavailable(f"no ROS master answers at {dialog.master_uri}")
-            from rockly_desktop.robot.ros1.connection import RosConnection
-
             RosConnection.get(dialog.master_uri, dialog.host or None, timeout=1.0)
-        except (RosUnavailable, RocklyError) as error:
-            QMessageBox.warning(window, tr("connect_failed", language), str(error))
+        except RocklyError as error:
+            box = plain_message_box(window, QMessageBox.Icon.Warning, tr("connect_failed", language), str(error))
+            box.setObjectName("connect_failed_box")
+            box.exec()
             return False
         window.settings.remember_ros_connection(window.profile.id, dialog.master_uri, dialog.host)
         return True

@@ -14,6 +14,7 @@ from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import OutputPrinted, RunFinished, RunPaused, RunResumed, VariablesChanged
 from rockly_desktop.executor.qt_adapter import ProgramThread
 from rockly_desktop.executor.run_setup import make_runner
+from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.texts import tr
 
 FOLLOW_MS = 33
@@ -21,7 +22,7 @@ RUN_SWITCH_INTERVAL = 0.001  # seconds
 
 
 class RunSession(QObject):
-    """The window's one program run at a time; ``state`` is 'idle', 'running' or 'paused'."""
+    """The window's one program run at a time; ``state`` is 'idle', 'starting', 'running' or 'paused'."""
 
     sig_state_changed = Signal(str)
     sig_finished = Signal(object)  # RunFinished, once the run's thread has ended
@@ -46,6 +47,7 @@ class RunSession(QObject):
         window = self.window
         if self.state != "idle":
             return False
+        self._set_state("starting")  # asking the page for the code runs a nested event loop
         try:
             run_code = window.editor.call_blocking("getRunCode")
             control = RunControl(run_code["breakpoints"], window.run_toolbar.delay)
@@ -53,6 +55,7 @@ class RunSession(QObject):
             thread = ProgramThread(lambda emit: make_runner(window.profile, robot, run_code, control, emit), self)
         except (RocklyError, RuntimeError) as error:
             window.console.append(str(error), "error")
+            self._set_state("idle")
             return False
         if step_first:
             control.step()
@@ -159,8 +162,7 @@ class RunSession(QObject):
         if result.outcome == "error":
             window.console.append(result.message, "error")
             window.editor.call("markError", {"id": result.block_id, "message": result.message})
-            box = QMessageBox(QMessageBox.Icon.Warning, tr("error_title", window.language), result.message,
-                              QMessageBox.StandardButton.Ok, window)
+            box = plain_message_box(window, QMessageBox.Icon.Warning, tr("error_title", window.language), result.message)
             box.setObjectName("run_error_box")
             box.setDetailedText(result.details or "")
             box.open()

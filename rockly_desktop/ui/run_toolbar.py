@@ -71,7 +71,7 @@ class RunToolbar(QToolBar):
         return (SLIDER_STEPS - self.speed.value()) * SLOWEST_DELAY / SLIDER_STEPS
 
     def set_state(self, state: str):
-        """'idle', 'running' or 'paused': enable the actions that apply."""
+        """'idle', 'starting', 'running' or 'paused': enable the actions that apply."""
         self.run_action.setEnabled(state == "idle")
         self.pause_action.setEnabled(state == "running")
         self.step_action.setEnabled(state in ("idle", "paused"))

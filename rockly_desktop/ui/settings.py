@@ -1,6 +1,8 @@
 """What Rockly remembers between starts: layout, language, profile, last and recent files."""
 from PySide6.QtCore import QSettings
 
+from rockly_desktop.plugins.i18n import SUPPORTED_LANGUAGES
+
 MAX_RECENT = 8
 
 
@@ -19,8 +21,9 @@ class AppSettings:
 
     @property
     def language(self) -> str:
-        """The window and block language: 'en' or 'de'."""
-        return str(self._get("language", "en"))
+        """The window and block language: 'en' or 'de' (anything else stored reads as 'en')."""
+        language = str(self._get("language", "en"))
+        return language if language in SUPPORTED_LANGUAGES else "en"
 
     @language.setter
     def language(self, value: str):

@@ -21,6 +21,9 @@ class SimulatorDock(QDockWidget):
         """Show ``robot``'s simulation in ``view``; without a view, show ``note`` instead."""
         self.robot = robot
         self.view = view
+        old = self.widget()
+        if old is not None:
+            old.deleteLater()
         if view is None:
             label = QLabel(note, self)
             label.setWordWrap(True)

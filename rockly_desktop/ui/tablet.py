@@ -29,6 +29,7 @@ class TabletDialog(QDialog):
         super().__init__(parent)
         self.request = request
         self.setObjectName("tablet_dialog")
+        self.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose)
         self.setWindowTitle(title)
         self.setStyleSheet("QDialog { background: #e0f2f1; } QLabel { font-size: 20px; color: #004d40; }"
                            "QPushButton { font-size: 18px; padding: 8px 24px; } QLineEdit { font-size: 18px; }")

@@ -141,3 +141,23 @@ def test_user_text_reaches_python_as_the_exact_string_never_as_code(headless_edi
         calls = [node.func for node in ast.walk(tree) if isinstance(node, ast.Call)]
         assert all(isinstance(func, (ast.Attribute, ast.Name)) for func in calls)
         assert "system" not in {getattr(func, "attr", getattr(func, "id", None)) for func in calls}
+
+
+HOSTILE_COMMENTS = [
+    "note\rprint('INJECTED')",
+    "note\r\nprint('INJECTED')",
+    "note\u2028print('INJECTED')\u2029x = 1",
+    "note\nprint('INJECTED')",
+    "nul\x00byte",
+]
+
+
+def test_block_comments_never_become_code(headless_editor, hobbit):
+    for comment in HOSTILE_COMMENTS:
+        program = block("hobbit_sos", icons={"comment": {"text": comment, "pinned": False, "height": 80, "width": 160}})
+        for code in (generate(headless_editor, hobbit, program), headless_editor.view.call_blocking("getRunCode")["code"]):
+            tree = ast.parse(code)
+            calls = [node.func.attr if isinstance(node.func, ast.Attribute) else node.func.id
+                     for node in ast.walk(tree) if isinstance(node, ast.Call)]
+            assert "print" not in calls, (comment, code)
+            assert [line for line in code.replace("\r", "\n").splitlines() if "INJECTED" in line and not line.lstrip().startswith("#")] == []

@@ -511,3 +511,9 @@ def test_localize_resolves_texts_anywhere_inside_a_definition_without_changing_i
                                  "options": [["fröhlich", "HAPPY"], ["SAD", "SAD"]]}],
                       "previousStatement": None, "extra": 3}
     assert definition == original
+
+
+@pytest.mark.parametrize("template", ["robot.drive({speed!r})", "robot.drive({speed:>5})", "robot.drive({speed.real})"])
+def test_templates_accept_only_plain_placeholders(profile, template):
+    profile.edit_block("hobbit_move", lambda raw: raw["python"].update(code=template))
+    assert_error(profile, "blocks.yaml", "blocks[hobbit_move].python.code", "placeholders are plain names")

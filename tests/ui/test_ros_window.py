@@ -36,7 +36,7 @@ def test_an_unreachable_master_is_refused_and_the_simulator_stays(qtbot, window,
     window.settings.remember_ros_connection("hobbit", "http://127.0.0.1:9", "")
     monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
     warnings = []
-    monkeypatch.setattr(QMessageBox, "warning", lambda parent, title, text: warnings.append(text))
+    monkeypatch.setattr(QMessageBox, "exec", lambda box: warnings.append(box.text()))
     backend = window.run_toolbar.backend
     backend.setCurrentIndex(backend.findData("ros1"))
     assert warnings and "no ROS master answers at http://127.0.0.1:9" in warnings[0]

@@ -6,10 +6,12 @@ service proxies and action clients are made once per name and shared by all runs
 """
 import threading
 import time
+import xmlrpc.client
 from concurrent.futures import ThreadPoolExecutor
 
 from rockly_desktop.core.errors import RobotCommandError, RobotConnectionLost, RobotTimeout
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
+from rockly_desktop.robot.ros1.connection import ask_master
 from rockly_desktop.robot.ros1.messages import from_message, to_message
 
 POLL_SECONDS = 0.01
@@ -49,12 +51,10 @@ class RosGraph:
             return entry, False
 
     def subscriber_count(self, topic) -> int:
-        """How many nodes the master lists as subscribers of ``topic``."""
-        import rosgraph
-
+        """How many nodes the master lists as subscribers of ``topic`` (0 if it does not answer)."""
         try:
-            _publishers, subscribers, _services = rosgraph.Master("/rockly").getSystemState()
-        except Exception:  # noqa: BLE001 - the master will be reported lost by the watchdog
+            _publishers, subscribers, _services = ask_master(self.connection.master_uri, "getSystemState")
+        except (OSError, xmlrpc.client.Error):
             return 0
         return len(next((nodes for name, nodes in subscribers if name == topic), []))
 
@@ -182,12 +182,14 @@ class Ros1Backend(RobotBackend):
 
     def subscribe(self, topic: str, msg_type: str, callback):
         """Call ``callback(dict)`` per message; returns the unsubscribe function."""
+        self._check()
         entry = self.graph.topic(topic, msg_type)
         entry.callbacks.append(callback)
         return lambda: callback in entry.callbacks and entry.callbacks.remove(callback)
 
     def latest(self, topic: str, msg_type: str):
         """The last message seen on ``topic`` (subscribing on first use), or None."""
+        self._check()
         return self.graph.topic(topic, msg_type).latest
 
     def wait_for_message(self, topic: str, msg_type: str, timeout: float) -> dict:
@@ -203,6 +205,7 @@ class Ros1Backend(RobotBackend):
 
     def call_service(self, name: str, srv_type: str, request: dict, timeout: float) -> dict:
         """Call a service in a helper thread so that Stop and a lost master end the wait."""
+        self._check()
         proxy = self.graph.service(name, srv_type)
         if name not in self.graph.available_services:
             def probe():
@@ -225,7 +228,12 @@ class Ros1Backend(RobotBackend):
             done.set()
 
         self.graph.service_calls.submit(call)
-        if not self._wait_for_event(done, timeout):
+        try:
+            answered = self._wait_for_event(done, timeout)
+        finally:
+            if not done.is_set():  # the abandoned call still owns the connection: the next call needs its own
+                self.graph.forget_service(name)
+        if not answered:
             raise RobotTimeout(f"the service '{name}' did not answer within {timeout:g} s")
         if "error" in outcome:
             self.graph.forget_service(name)
@@ -234,6 +242,7 @@ class Ros1Backend(RobotBackend):
 
     def send_goal(self, action: str, action_type: str, goal: dict, feedback=None) -> GoalHandle:
         """Send a goal (waiting up to 5 s for the action server); feedback as dicts."""
+        self._check()
         client = self.graph.action_client(action, action_type)
         import rospy
 

@@ -12,6 +12,8 @@ import threading
 import time
 import xmlrpc.client
 
+from rockly_desktop.core.errors import RocklyError
+
 log = logging.getLogger(__name__)
 
 CONNECTED, CONNECTING, LOST = "connected", "connecting", "lost"
@@ -29,17 +31,29 @@ class _QuickTransport(xmlrpc.client.Transport):
         return connection
 
 
+def ask_master(master_uri: str, method: str, *args):
+    """Call the master's XML-RPC ``method`` (caller id filled in), giving up after PROBE_TIMEOUT.
+
+    Returns the value, or raises OSError / xmlrpc.client.Error when the master does not answer.
+    """
+    code, message, value = getattr(xmlrpc.client.ServerProxy(master_uri, transport=_QuickTransport()), method)(
+        "/rockly", *args)
+    if code != 1:
+        raise xmlrpc.client.Fault(code, message)
+    return value
+
+
 def master_answers(master_uri: str) -> float:
     """The master's round-trip time in seconds, or None when it does not answer."""
     started = time.monotonic()
     try:
-        code, _message, _pid = xmlrpc.client.ServerProxy(master_uri, transport=_QuickTransport()).getPid("/rockly")
+        ask_master(master_uri, "getPid")
     except (OSError, xmlrpc.client.Error):
         return None
-    return time.monotonic() - started if code == 1 else None
+    return time.monotonic() - started
 
 
-class RosUnavailable(Exception):
+class RosUnavailable(RocklyError):
     """rospy is not installed here, or the master cannot be reached."""
 
 
@@ -54,7 +68,6 @@ class RosConnection:
         self.host = host
         self.status = CONNECTING
         self.round_trip = None
-        self._listeners = []
         self._stopped = threading.Event()
         self._watchdog = None
 
@@ -106,12 +119,6 @@ class RosConnection:
                 if status == CONNECTED:
                     _register_again()
                 self.status = status
-                for listener in list(self._listeners):
-                    listener(status)
-
-    def add_listener(self, callback):
-        """Call ``callback(status)`` (from the watchdog thread) whenever the status changes."""
-        self._listeners.append(callback)
 
     @property
     def lost(self) -> bool:

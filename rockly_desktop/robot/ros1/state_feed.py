@@ -1,0 +1,63 @@
+"""Filling a StateStore from a ROS 1 graph: every topic, decoded to dicts, and the graph itself.
+
+A thread asks the master once a second which topics exist (with their types and
+publisher counts) and subscribes to new ones through the shared RosGraph; rospy's
+callback threads then record every message. Widgets read the store, never rospy.
+"""
+import logging
+import threading
+
+log = logging.getLogger(__name__)
+
+POLL_SECONDS = 1.0
+
+
+class RosStateFeed:
+    """Keeps ``store`` filled from the graph of ``ros_graph``'s master until ``stop()``."""
+
+    def __init__(self, ros_graph, store):
+        self._ros_graph = ros_graph
+        self._store = store
+        self._subscribed = set()
+        self._unknown = set()
+        self._topics = []
+        self._stopped = threading.Event()
+        self._thread = threading.Thread(target=self._poll, name="rockly-ros-graph", daemon=True)
+        self._thread.start()
+
+    def graph_topics(self) -> list:
+        """(topic, type, publisher count) of every topic the master knows, as of the last poll."""
+        return list(self._topics)
+
+    def stop(self):
+        """Stop watching the graph (subscriptions stay with the shared RosGraph)."""
+        self._stopped.set()
+
+    def _poll(self):
+        import rosgraph
+
+        while not self._stopped.is_set():
+            if not self._ros_graph.connection.lost:
+                try:
+                    master = rosgraph.Master("/rockly_graph")
+                    types = dict(master.getTopicTypes())
+                    publishers = dict(master.getSystemState()[0])
+                    self._topics = sorted((topic, msg_type, len(publishers.get(topic, [])))
+                                          for topic, msg_type in types.items())
+                    for topic, msg_type in types.items():
+                        self._follow(topic, msg_type)
+                except Exception as error:  # noqa: BLE001 - the watchdog reports a lost master
+                    log.debug("reading the ROS graph failed: %s", error)
+            self._stopped.wait(POLL_SECONDS)
+
+    def _follow(self, topic, msg_type):
+        if topic in self._subscribed or (topic, msg_type) in self._unknown:
+            return
+        try:
+            entry = self._ros_graph.topic(topic, msg_type)
+        except Exception as error:  # noqa: BLE001 - a type this machine cannot decode is shown without messages
+            log.info("cannot follow %s (%s): %s", topic, msg_type, error)
+            self._unknown.add((topic, msg_type))
+            return
+        entry.callbacks.append(lambda message: self._store.record(topic, msg_type, message))
+        self._subscribed.add(topic)

@@ -1,0 +1,586 @@
+"""The Plot panel: live curves of numeric message fields, for people who measure their robot.
+
+Each curve is one numeric field of one topic (``/odom`` ``pose.pose.position.x``). The panel
+reads the :class:`~rockly_desktop.core.state_store.StateStore` on a timer, copies only the
+samples it has not seen yet into its own bounded buffer per curve (the store keeps a short
+history; the panel keeps up to 5 minutes), and draws the last 10 s / 30 s / 60 s / 5 min with
+pyqtgraph, time on the x axis in seconds relative to now (0 = now, -30 = 30 s ago).
+
+Fields arrive by drag and drop (text ``"topic|field.path"``, see :func:`field_mime_text`) or
+through the "Add…" menu. Clicking a curve's legend entry hides or shows it.
+"""
+import csv
+import os
+import time
+
+import numpy as np
+from PySide6.QtCore import Qt, QTimer
+from PySide6.QtGui import QColor
+from PySide6.QtWidgets import (QComboBox, QCompleter, QFileDialog, QFormLayout, QHBoxLayout, QLabel, QLineEdit, QMenu,
+                               QMessageBox, QPushButton, QToolButton, QVBoxLayout, QWidget, QWidgetAction)
+
+from rockly_desktop.ui.texts import tr
+
+os.environ.setdefault("PYQTGRAPH_QT_LIB", "PySide6")
+import pyqtgraph as pg  # noqa: E402 - after choosing its Qt binding
+
+WINDOWS = ((10, "10 s"), (30, "30 s"), (60, "60 s"), (300, "5 min"))
+"""The time windows on offer: (seconds, label)."""
+
+DEFAULT_WINDOW = 30
+MAX_SAMPLES = 300_000
+"""Samples kept per curve: 5 minutes of a 1 kHz topic."""
+
+REFRESH_INTERVAL_MS = 33
+"""At most ~30 redraws a second."""
+
+# Okabe & Ito's colour-blind-safe palette (without its yellow, which vanishes on white).
+_COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000")
+_FOREGROUND = "#333333"
+_MAX_INDEXED_ITEMS = 32  # list elements offered by the field completer
+
+
+def field_mime_text(topic: str, path: str) -> str:
+    """The drag text for one field (what a Topic monitor offers): ``"topic|field.path"``."""
+    return f"{topic}|{path}"
+
+
+def parse_mime_text(text: str) -> list:
+    """The (topic, path) pairs in a drag text: one ``topic|field.path`` a line; malformed lines are skipped."""
+    fields = []
+    for line in (text or "").splitlines():
+        topic, bar, path = line.strip().partition("|")
+        if bar and topic.strip() and path.strip():
+            fields.append((topic.strip(), path.strip()))
+    return fields
+
+
+def numeric_paths(message, prefix: str = "") -> list:
+    """The paths of the numeric fields in a message dict (the first few elements of lists), for completion."""
+    paths = []
+    if isinstance(message, dict):
+        for key, value in message.items():
+            paths += numeric_paths(value, f"{prefix}.{key}" if prefix else str(key))
+    elif isinstance(message, (list, tuple)) and prefix:
+        for index, value in enumerate(message[:_MAX_INDEXED_ITEMS]):
+            paths += numeric_paths(value, f"{prefix}[{index}]")
+    elif isinstance(message, (int, float)) and not isinstance(message, bool) and prefix:
+        paths.append(prefix)
+    return paths
+
+
+class SampleBuffer:
+    """The (time, value) samples of one curve, oldest first, never more than ``bound`` of them.
+
+    Two preallocated numpy arrays with a little spare room: appending writes behind the newest
+    sample, and when the room runs out the kept samples move back to the front. Memory is fixed
+    at creation; ``times`` and ``values`` are views without copying.
+    """
+
+    def __init__(self, bound: int):
+        if bound < 1:
+            raise ValueError("a sample buffer holds at least one sample")
+        self.bound = bound
+        capacity = bound + bound // 4 + 1
+        self._times = np.empty(capacity)
+        self._values = np.empty(capacity)
+        self._start = 0
+        self._end = 0
+        self.last_time = None  # newest time ever appended (kept when trimmed away)
+        self.at_last_time = 0  # how many appended samples carry exactly that time
+
+    def __len__(self):
+        return self._end - self._start
+
+    @property
+    def capacity(self) -> int:
+        """The size of the preallocated arrays."""
+        return len(self._times)
+
+    @property
+    def times(self):
+        return self._times[self._start:self._end]
+
+    @property
+    def values(self):
+        return self._values[self._start:self._end]
+
+    def extend(self, times, values):
+        """Append samples (times not older than the newest so far); the oldest go when over the bound."""
+        times = np.asarray(times, dtype=float)
+        values = np.asarray(values, dtype=float)
+        if not len(times):
+            return
+        newest = times[-1]
+        at_newest = len(times) - int(np.searchsorted(times, newest, "left"))
+        self.at_last_time = at_newest + (self.at_last_time if newest == self.last_time else 0)
+        self.last_time = float(newest)
+        if len(times) >= self.bound:
+            times, values = times[-self.bound:], values[-self.bound:]
+            self._start = 0
+            self._end = 0
+        count = len(times)
+        self._start += max(0, len(self) + count - self.bound)
+        if self._end + count > self.capacity:
+            kept = len(self)
+            self._times[:kept] = self._times[self._start:self._end]
+            self._values[:kept] = self._values[self._start:self._end]
+            self._start, self._end = 0, kept
+        self._times[self._end:self._end + count] = times
+        self._values[self._end:self._end + count] = values
+        self._end += count
+
+    def trim_before(self, oldest: float):
+        """Forget the samples older than ``oldest``."""
+        self._start += int(np.searchsorted(self.times, oldest, "left"))
+
+    def between(self, first: float, last: float):
+        """(times, values) views of the samples with ``first <= time <= last``."""
+        times = self.times
+        low = int(np.searchsorted(times, first, "left"))
+        high = int(np.searchsorted(times, last, "right"))
+        return times[low:high], self.values[low:high]
+
+    def clear(self):
+        self._start = self._end = 0
+        self.last_time = None
+        self.at_last_time = 0
+
+
+class _Curve:
+    def __init__(self, topic, path, item, bound):
+        self.topic = topic
+        self.path = path
+        self.item = item
+        self.buffer = SampleBuffer(bound)
+
+    @property
+    def name(self):
+        return f"{self.topic} {self.path}"
+
+
+class _TopicCombo(QComboBox):
+    """An editable topic box that re-reads the store's topics whenever it opens."""
+
+    def __init__(self, reload, parent=None):
+        super().__init__(parent)
+        self._reload = reload
+        self.setEditable(True)
+        self.setInsertPolicy(QComboBox.InsertPolicy.NoInsert)
+        self.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToContents)
+        self.setMinimumContentsLength(16)
+
+    def showPopup(self):
+        self._reload()
+        super().showPopup()
+
+
+class PlotPanel(QWidget):
+    """Live plots of numeric fields from a :class:`StateStore`.
+
+    ``add_curve(topic, path)`` / ``remove_curve(topic, path)`` / ``clear()`` choose the curves
+    (each gets its own colour and a legend entry "topic path"); ``set_window(seconds)`` picks
+    one of :data:`WINDOWS`; ``pause()`` freezes the view while the store keeps recording and
+    ``resume()`` catches up with what the store still holds; ``refresh()`` reads the new samples
+    and redraws (the panel's timer calls it ~30 times a second while the panel is visible, not
+    paused and has curves; while paused ``refresh()`` does nothing).
+
+    ``export_csv(path)`` writes what the plot shows, long ("tidy") format, one row per sample::
+
+        time,topic,field,value
+        0.000000,/odom,pose.pose.position.x,0.0
+        0.000000,/odom,twist.twist.angular.z,0.5
+        0.010000,/odom,pose.pose.position.x,0.0099998
+
+    ``time`` is in seconds since the first sample shown (microsecond resolution), ``value`` the
+    exact float. Rows are ordered by time, then by curve in the order they were added. Long
+    format because curves from different topics rarely share timestamps: a wide table would be
+    mostly empty cells, while this one needs no resampling and pivots in one step in a
+    spreadsheet, pandas (``df.pivot_table(index="time", columns=["topic", "field"])``) or R.
+
+    ``export_png(path)`` saves the plot as it is on screen.
+
+    ``clock`` must be the store's clock (the default reads it from the store); ``max_samples``
+    bounds each curve's buffer.
+    """
+
+    def __init__(self, store, language: str = "en", parent=None, *, clock=None, max_samples: int = MAX_SAMPLES):
+        super().__init__(parent)
+        self.setObjectName("plot_panel")
+        self._store = store
+        self._language = language
+        # StateStore stamps samples with its clock and has no public accessor for it.
+        self._clock = clock or getattr(store, "_clock", time.monotonic)
+        self._max_samples = max_samples
+        self._curves = []
+        self._window = DEFAULT_WINDOW
+        self._paused = False
+        self._now = None  # the moment the plot shows as 0 s
+
+        self.timer = QTimer(self)
+        self.timer.setInterval(REFRESH_INTERVAL_MS)
+        self.timer.timeout.connect(self.refresh)
+
+        self._build_toolbar()
+        self._build_plot()
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(4, 4, 4, 4)
+        layout.setSpacing(4)
+        layout.addLayout(self._toolbar)
+        layout.addWidget(self.plot_widget, 1)
+        self.setAcceptDrops(True)
+        self._show_hint()
+
+    # --- building ---
+
+    def _t(self, key):
+        return tr(key, self._language)
+
+    def _build_toolbar(self):
+        self.window_label = QLabel(self._t("plot_window"))
+        self.window_box = QComboBox()
+        self.window_box.setToolTip(self._t("plot_window_tip"))
+        for seconds, label in WINDOWS:
+            self.window_box.addItem(label, seconds)
+        self.window_box.setCurrentIndex(self.window_box.findData(self._window))
+        self.window_box.currentIndexChanged.connect(lambda index: self.set_window(self.window_box.itemData(index)))
+        self.window_label.setBuddy(self.window_box)
+
+        self.pause_button = QPushButton(self._t("plot_pause"))
+        self.pause_button.setCheckable(True)
+        self.pause_button.setToolTip(self._t("plot_pause_tip"))
+        self.pause_button.toggled.connect(self.set_paused)
+
+        self.clear_button = QPushButton(self._t("plot_clear"))
+        self.clear_button.setToolTip(self._t("plot_clear_tip"))
+        self.clear_button.clicked.connect(self.clear)
+
+        self.add_button = QToolButton()
+        self.add_button.setText(self._t("plot_add"))
+        self.add_button.setToolTip(self._t("plot_add_tip"))
+        self.add_button.setPopupMode(QToolButton.ToolButtonPopupMode.InstantPopup)
+        self.add_menu = QMenu(self.add_button)
+        form = QWidget()
+        form_layout = QFormLayout(form)
+        self.topic_box = _TopicCombo(self.reload_topics)
+        self.topic_box.currentTextChanged.connect(self._offer_fields)
+        self.field_edit = QLineEdit()
+        self.field_edit.setPlaceholderText(self._t("plot_field_hint"))
+        self.field_edit.setMinimumWidth(220)
+        self.field_completer = QCompleter([], self.field_edit)
+        self.field_completer.setCaseSensitivity(Qt.CaseSensitivity.CaseInsensitive)
+        self.field_completer.setFilterMode(Qt.MatchFlag.MatchContains)
+        self.field_edit.setCompleter(self.field_completer)
+        self.field_edit.returnPressed.connect(self._add_from_form)
+        self.add_form_button = QPushButton(self._t("plot_add_button"))
+        self.add_form_button.clicked.connect(self._add_from_form)
+        form_layout.addRow(self._t("plot_topic"), self.topic_box)
+        form_layout.addRow(self._t("plot_field"), self.field_edit)
+        form_layout.addRow("", self.add_form_button)
+        form_action = QWidgetAction(self.add_menu)
+        form_action.setDefaultWidget(form)
+        self.add_menu.addAction(form_action)
+        self.add_menu.aboutToShow.connect(self.reload_topics)
+        self.add_button.setMenu(self.add_menu)
+
+        self.export_button = QToolButton()
+        self.export_button.setText(self._t("plot_export"))
+        self.export_button.setPopupMode(QToolButton.ToolButtonPopupMode.InstantPopup)
+        export_menu = QMenu(self.export_button)
+        self.export_csv_action = export_menu.addAction(self._t("plot_export_csv"), self._ask_export_csv)
+        self.export_png_action = export_menu.addAction(self._t("plot_export_png"), self._ask_export_png)
+        self.export_button.setMenu(export_menu)
+        for button in (self.add_button, self.export_button):  # the "…" says that a menu opens
+            button.setStyleSheet("QToolButton::menu-indicator { image: none; width: 0px; }")
+
+        self._toolbar = QHBoxLayout()
+        for widget in (self.add_button, self.window_label, self.window_box, self.pause_button, self.clear_button):
+            self._toolbar.addWidget(widget)
+        self._toolbar.addStretch(1)
+        self._toolbar.addWidget(self.export_button)
+
+    def _build_plot(self):
+        self.plot_widget = pg.PlotWidget(background="w")
+        # Drags go to the panel, not to the graphics view (which would swallow them).
+        self.plot_widget.setAcceptDrops(False)
+        self.plot_widget.viewport().setAcceptDrops(False)
+        self.plot_item = self.plot_widget.getPlotItem()
+        self.plot_item.setMenuEnabled(False)
+        self.plot_item.hideButtons()
+        self.plot_item.showGrid(x=True, y=True, alpha=0.15)
+        for name in ("left", "bottom"):
+            axis = self.plot_item.getAxis(name)
+            axis.setPen(_FOREGROUND)
+            axis.setTextPen(_FOREGROUND)
+        bottom = self.plot_item.getAxis("bottom")
+        bottom.enableAutoSIPrefix(False)
+        self.plot_item.setLabel("bottom", self._t("plot_time_axis"), units="s", color=_FOREGROUND)
+        self.plot_item.setLabel("left", self._t("plot_value_axis"), color=_FOREGROUND)
+        view = self.plot_item.getViewBox()
+        view.setMouseEnabled(x=False, y=True)
+        view.enableAutoRange(x=False, y=True)
+        view.setAutoVisible(y=True)
+        self._show_window()
+        self.legend = self.plot_item.addLegend(offset=(10, 10), labelTextColor=_FOREGROUND,
+                                               brush=pg.mkBrush(255, 255, 255, 210), pen=pg.mkPen("#bbbbbb"))
+
+    # --- curves ---
+
+    def curves(self) -> list:
+        """The plotted (topic, path) pairs, in the order they were added."""
+        return [(curve.topic, curve.path) for curve in self._curves]
+
+    def _find(self, topic, path):
+        for curve in self._curves:
+            if curve.topic == topic and curve.path == path:
+                return curve
+        return None
+
+    def curve_item(self, topic: str, path: str):
+        """The pyqtgraph PlotDataItem drawing a field (``getData()`` gives what is drawn), or None."""
+        curve = self._find(topic, path)
+        return curve.item if curve else None
+
+    def buffer(self, topic: str, path: str):
+        """The :class:`SampleBuffer` of a field, or None."""
+        curve = self._find(topic, path)
+        return curve.buffer if curve else None
+
+    def _next_colour(self):
+        used = {curve.item.opts["pen"].color().name().upper() for curve in self._curves}
+        for colour in _COLOURS:
+            if colour.upper() not in used:
+                return QColor(colour)
+        return pg.intColor(len(self._curves))
+
+    def add_curve(self, topic: str, path: str) -> bool:
+        """Plot the numeric field ``path`` of ``topic``; False if it is already plotted."""
+        topic, path = topic.strip(), path.strip()
+        if not topic or not path or self._find(topic, path):
+            return False
+        item = pg.PlotDataItem(pen=pg.mkPen(self._next_colour(), width=2), name=f"{topic} {path}")
+        item.setClipToView(True)
+        item.setDownsampling(auto=True, method="peak")
+        self.plot_item.addItem(item)
+        curve = _Curve(topic, path, item, self._max_samples)
+        self._curves.append(curve)
+        self._show_hint()
+        if self._paused:
+            if self._now is None:
+                self._now = self._clock()
+            self._read(curve)
+            self._draw()
+        else:
+            self.refresh()
+        self._update_timer()
+        return True
+
+    def remove_curve(self, topic: str, path: str) -> bool:
+        """Stop plotting a field; False if it was not plotted."""
+        curve = self._find(topic, path)
+        if curve is None:
+            return False
+        self._curves.remove(curve)
+        self.plot_item.removeItem(curve.item)  # also takes it out of the legend
+        self._show_hint()
+        self._update_timer()
+        return True
+
+    def clear(self):
+        """Remove every curve."""
+        for topic, path in self.curves():
+            self.remove_curve(topic, path)
+
+    def add_from_mime_text(self, text: str) -> list:
+        """Add the fields in a drag text (``topic|field.path`` a line); returns those newly added."""
+        return [field for field in parse_mime_text(text) if self.add_curve(*field)]
+
+    def _show_hint(self):
+        if self._curves:
+            self.plot_item.setTitle(None)
+        else:
+            self.plot_item.setTitle(self._t("plot_hint"), color="#777777", size="10pt")
+
+    # --- time window and pausing ---
+
+    @property
+    def window(self) -> int:
+        """The seconds shown."""
+        return self._window
+
+    def set_window(self, seconds: int):
+        """Show the last ``seconds`` (one of :data:`WINDOWS`)."""
+        index = self.window_box.findData(seconds)
+        if index < 0:
+            raise ValueError(f"no {seconds} s window; choose one of {[s for s, _ in WINDOWS]}")
+        self._window = seconds
+        if self.window_box.currentIndex() != index:
+            self.window_box.setCurrentIndex(index)  # calls back here, changing nothing
+        self._draw()
+
+    @property
+    def paused(self) -> bool:
+        return self._paused
+
+    def set_paused(self, paused: bool):
+        """Freeze (True) or follow the data again (False)."""
+        paused = bool(paused)
+        if self.pause_button.isChecked() != paused:
+            self.pause_button.setChecked(paused)  # calls back here
+            return
+        if paused == self._paused:
+            return
+        self._paused = paused
+        self.pause_button.setText(self._t("plot_resume" if paused else "plot_pause"))
+        if not paused:
+            self.refresh()
+        self._update_timer()
+
+    def pause(self):
+        self.set_paused(True)
+
+    def resume(self):
+        self.set_paused(False)
+
+    # --- reading and drawing ---
+
+    def refresh(self):
+        """Read the samples that arrived since the last refresh and redraw (nothing while paused)."""
+        if self._paused:
+            return
+        self._now = self._clock()
+        oldest_kept = self._now - WINDOWS[-1][0]
+        for curve in self._curves:
+            self._read(curve)
+            curve.buffer.trim_before(oldest_kept)
+        self._draw()
+
+    def _read(self, curve):
+        buffer = curve.buffer
+        since = buffer.last_time
+        points = self._store.series(curve.topic, curve.path, since=since)
+        if since is not None:
+            # ``since`` is inclusive: skip the samples at that time that are already in the buffer.
+            skip = 0
+            while skip < len(points) and skip < buffer.at_last_time and points[skip][0] == since:
+                skip += 1
+            points = points[skip:]
+        if points:
+            samples = np.array(points, dtype=float)
+            buffer.extend(samples[:, 0], samples[:, 1])
+
+    def _shown(self, curve):
+        """(times, values) of a curve's samples inside the window ending at the shown moment."""
+        if self._now is None:
+            return np.empty(0), np.empty(0)
+        return curve.buffer.between(self._now - self._window, self._now)
+
+    def _draw(self):
+        for curve in self._curves:
+            times, values = self._shown(curve)
+            # Copies: the buffer reuses its memory, pyqtgraph keeps what it gets.
+            curve.item.setData(times - self._now if len(times) else times, np.array(values))
+        self._show_window()
+
+    def _show_window(self):
+        # A little room on both sides so that the "0" and "-window" tick labels show.
+        self.plot_item.setXRange(-self._window, 0, padding=0.015)
+
+    def _update_timer(self):
+        if self.isVisible() and not self._paused and self._curves:
+            if not self.timer.isActive():
+                self.timer.start()
+        else:
+            self.timer.stop()
+
+    def showEvent(self, event):
+        super().showEvent(event)
+        self.refresh()
+        self._update_timer()
+
+    def hideEvent(self, event):
+        super().hideEvent(event)
+        self.timer.stop()
+
+    # --- the Add… form ---
+
+    def reload_topics(self):
+        """Offer the store's topics in the Add… form (keeping what is typed)."""
+        typed = self.topic_box.currentText()
+        names = [info.topic for info in self._store.topics()]
+        if names != [self.topic_box.itemText(i) for i in range(self.topic_box.count())]:
+            self.topic_box.blockSignals(True)
+            self.topic_box.clear()
+            self.topic_box.addItems(names)
+            self.topic_box.setCurrentText(typed or (names[0] if names else ""))
+            self.topic_box.blockSignals(False)
+        self._offer_fields(self.topic_box.currentText())
+
+    def _offer_fields(self, topic):
+        message = self._store.latest(topic.strip()) if topic.strip() else None
+        self.field_completer.model().setStringList(numeric_paths(message) if message is not None else [])
+
+    def _add_from_form(self):
+        if self.add_curve(self.topic_box.currentText(), self.field_edit.text()):
+            self.field_edit.clear()
+            self.add_menu.close()
+
+    # --- drag and drop ---
+
+    def dragEnterEvent(self, event):
+        if event.mimeData().hasText() and parse_mime_text(event.mimeData().text()):
+            event.acceptProposedAction()
+        else:
+            event.ignore()
+
+    def dragMoveEvent(self, event):
+        self.dragEnterEvent(event)
+
+    def dropEvent(self, event):
+        if event.mimeData().hasText() and parse_mime_text(event.mimeData().text()):
+            self.add_from_mime_text(event.mimeData().text())
+            event.acceptProposedAction()
+        else:
+            event.ignore()
+
+    # --- export ---
+
+    def export_csv(self, path) -> int:
+        """Write the samples shown to ``path`` (format in the class docstring); returns the number of rows."""
+        if not self._paused:
+            self.refresh()
+        parts = [(self._shown(curve), index) for index, curve in enumerate(self._curves)]
+        times = np.concatenate([shown[0] for shown, _ in parts] or [np.empty(0)])
+        values = np.concatenate([shown[1] for shown, _ in parts] or [np.empty(0)])
+        owners = np.concatenate([np.full(len(shown[0]), index) for shown, index in parts] or [np.empty(0, int)])
+        order = np.lexsort((owners, times))
+        start = times.min() if len(times) else 0.0
+        with open(path, "w", newline="", encoding="utf-8") as file:
+            writer = csv.writer(file)
+            writer.writerow(["time", "topic", "field", "value"])
+            for row in order:
+                curve = self._curves[owners[row]]
+                writer.writerow([f"{times[row] - start:.6f}", curve.topic, curve.path, repr(float(values[row]))])
+        return len(order)
+
+    def export_png(self, path):
+        """Save the plot (axes, curves, legend) as it is on screen to ``path`` as PNG; OSError if that fails."""
+        if not self.plot_widget.grab().save(str(path), "PNG"):
+            raise OSError(f"cannot write {path}")
+
+    def _ask_export_csv(self):
+        self._ask_export("plot_export_csv", "plot_filter_csv", ".csv", self.export_csv)
+
+    def _ask_export_png(self):
+        self._ask_export("plot_export_png", "plot_filter_png", ".png", self.export_png)
+
+    def _ask_export(self, title_key, filter_key, suffix, export):
+        path, _ = QFileDialog.getSaveFileName(self, self._t(title_key).rstrip("…"), "", self._t(filter_key))
+        if not path:
+            return
+        if not path.lower().endswith(suffix):
+            path += suffix
+        try:
+            export(path)
+        except OSError as error:
+            QMessageBox.warning(self, self._t("plot_export_failed"), str(error))
