@@ -29,6 +29,10 @@ class SimulatedRobot:
         """The simulated robot's state, for the simulator view."""
         return self.simulator.snapshot()
 
+    def graph_topics(self) -> list:
+        """(topic, type, publisher count) of the simulated robot's topics."""
+        return [(topic, msg_type, 1) for topic, msg_type in self.world.topics()]
+
     def safe_stop(self) -> list:
         """Do the profile's safe stop now; returns what failed."""
         return run_safe_stop(self.profile.manifest.get("safe_stop", []), self.backend(Interrupt()))
@@ -81,6 +85,10 @@ class RosRobot:
     def snapshot(self):
         """A real robot has no simulator view."""
         return None
+
+    def graph_topics(self) -> list:
+        """(topic, type, publisher count) of the ROS graph (once ``follow_graph`` runs)."""
+        return self._feed.graph_topics() if self._feed is not None else []
 
     def safe_stop(self) -> list:
         """Do the profile's safe stop now; returns what failed."""

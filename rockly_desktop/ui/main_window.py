@@ -18,6 +18,7 @@ from rockly_desktop.ui.simulator_dock import SimulatorDock
 from rockly_desktop.ui.state_panels import StatePanels
 from rockly_desktop.ui.tablet import QtTablet
 from rockly_desktop.ui.texts import tr
+from rockly_desktop.ui.topic_monitor import TopicMonitor
 from rockly_desktop.ui.variables_dock import VariablesDock
 
 
@@ -47,10 +48,15 @@ class MainWindow(QMainWindow):
         self.console = ConsoleDock(tr("console_dock", self.language), self)
         self.state_dock = QDockWidget(tr("state_dock", self.language), self)
         self.state_dock.setObjectName("state_dock")
+        self.monitor_dock = QDockWidget(tr("monitor_dock", self.language), self)
+        self.monitor_dock.setObjectName("monitor_dock")
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.simulator_dock)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.code_dock)
         self.tabifyDockWidget(self.code_dock, self.variables)
         self.tabifyDockWidget(self.code_dock, self.state_dock)
+        self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.monitor_dock)
+        self.tabifyDockWidget(self.console, self.monitor_dock)
+        self.console.raise_()
         self.code_dock.raise_()
         self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.console)
         self.profile_label = QLabel(self)
@@ -135,10 +141,9 @@ class MainWindow(QMainWindow):
         if hasattr(robot, "follow_graph"):
             robot.follow_graph()
         panels = StatePanels(self.profile.manifest.get("state", []), self.language, self.state_dock)
-        panels.set_store(getattr(robot, "state", None))
-        if self.state_dock.widget() is not None:
-            self.state_dock.widget().deleteLater()
-        self.state_dock.setWidget(panels)
+        panels.set_store(robot.state)
+        self._replace_dock_widget(self.state_dock, panels)
+        self._replace_dock_widget(self.monitor_dock, TopicMonitor(robot.state, robot.graph_topics, self.language))
         if robot.snapshot() is None:
             self.simulator_dock.show_robot(None, None, tr("real_robot_view", self.language))
         else:
@@ -150,6 +155,12 @@ class MainWindow(QMainWindow):
             self.run_toolbar.backend.blockSignals(True)
             self.run_toolbar.backend.setCurrentIndex(self.run_toolbar.backend.findData(self.robots.kind))
             self.run_toolbar.backend.blockSignals(False)
+
+    @staticmethod
+    def _replace_dock_widget(dock, widget):
+        if dock.widget() is not None:
+            dock.widget().deleteLater()
+        dock.setWidget(widget)
 
     # Commands that replace the program or the editor page must wait until the run ends.
     _IDLE_ONLY_ACTIONS = ("action_new", "action_open", "action_import_xml", "action_preferences")
@@ -239,6 +250,7 @@ class MainWindow(QMainWindow):
         self.simulator_dock.setWindowTitle(tr("simulator_dock", language))
         self.variables.setWindowTitle(tr("variables_dock", language))
         self.state_dock.setWindowTitle(tr("state_dock", language))
+        self.monitor_dock.setWindowTitle(tr("monitor_dock", language))
         self.variables.table.setHorizontalHeaderLabels([tr("variable", language), tr("value", language)])
         self.console.setWindowTitle(tr("console_dock", language))
         self._build_run_toolbar()
@@ -305,7 +317,7 @@ class MainWindow(QMainWindow):
             robot_menu.addAction(action)
 
         view_menu = bar.addMenu(tr("menu_view", language))
-        for dock in (self.simulator_dock, self.code_dock, self.variables, self.state_dock, self.console):
+        for dock in (self.simulator_dock, self.code_dock, self.variables, self.state_dock, self.console, self.monitor_dock):
             view_menu.addAction(dock.toggleViewAction())
 
         settings_menu = bar.addMenu(tr("menu_settings", language))

@@ -101,6 +101,7 @@ _TEXTS = {
     "ok": ("OK", "OK"),
     "robot_says": ("Robot: {text}", "Roboter: {text}"),
     "state_dock": ("Robot state", "Roboterzustand"),
+    "monitor_dock": ("Topic monitor", "Topic-Monitor"),
     "goal_pending": ("waiting", "wartet"),
     "goal_active": ("working", "läuft"),
     "goal_preempted": ("cancelled", "abgebrochen"),

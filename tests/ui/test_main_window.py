@@ -60,7 +60,7 @@ def test_language_layout_and_last_file_are_remembered(qtbot, driver, tmp_path):
         first.files.open(str(path))
     with qtbot.waitSignal(first.editor.sig_ready, timeout=30000):
         first.set_language("de")
-    first.resize(733, 511)
+    first.resize(760, 580)
     first.code_dock.hide()
     first.close()
 
@@ -69,7 +69,7 @@ def test_language_layout_and_last_file_are_remembered(qtbot, driver, tmp_path):
         window = second.open_window()
         qtbot.waitUntil(lambda: window.files.path == str(path), timeout=10000)
         assert window.language == "de"
-        assert (window.width(), window.height()) == (733, 511)
+        assert (window.width(), window.height()) == (760, 580)
         assert not window.code_dock.isVisible()
         assert window.settings.recent_files[0] == str(path)
         qtbot.waitUntil(lambda: window.code_dock.view.toPlainText() == "robot.call_sos()\n", timeout=10000)

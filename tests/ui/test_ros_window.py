@@ -39,7 +39,8 @@ def test_an_unreachable_master_is_refused_and_the_simulator_stays(qtbot, window,
     monkeypatch.setattr(QMessageBox, "exec", lambda box: warnings.append(box.text()))
     backend = window.run_toolbar.backend
     backend.setCurrentIndex(backend.findData("ros1"))
-    assert warnings and "no ROS master answers at http://127.0.0.1:9" in warnings[0]
+    # Either nothing answers there, or this process's one ROS node already uses the session's master.
+    assert warnings and "http://127.0.0.1:9" in warnings[0]
     assert window.robots.kind == "simulator" and backend.currentData() == "simulator"
 
 
