@@ -50,6 +50,21 @@ STATEMENTS = [
      "robot.publish('/speed', 'Float64', 1.5)"),
 ]
 
+EXPRESSIONS = [
+    (block("hobbit_battery"), "robot.battery_level()"),
+    (block("hobbit_position", {"coordinate": "heading"}), "robot.position('heading')"),
+    (block("hobbit_head_position"), "robot.head_position()"),
+    (block("hobbit_emotion"), "robot.emotion()"),
+    (block("hobbit_arm_moving"), "robot.arm_is_moving()"),
+    (block("ros_latest_value", inputs={"topic": text("/odom"), "field": text("pose.pose.position.x")}),
+     "robot.latest_value('/odom', 'pose.pose.position.x')"),
+]
+
+
+@pytest.mark.parametrize(("expression", "expected"), EXPRESSIONS, ids=[b["type"] for b, _ in EXPRESSIONS])
+def test_sensor_blocks_become_their_queries(headless_editor, hobbit, expression, expected):
+    assert generate(headless_editor, hobbit, block("text_print", inputs={"TEXT": expression})).strip() == f"print({expected})"
+
 
 @pytest.mark.parametrize(("program", "expected"), STATEMENTS, ids=[f"{b['type']}-{i}" for i, (b, _) in enumerate(STATEMENTS)])
 def test_statement_block_becomes_its_command(headless_editor, hobbit, program, expected):
@@ -96,7 +111,8 @@ def test_the_thesis_pick_up_program(headless_editor, hobbit):
 
 
 def test_every_hobbit_block_is_covered_here(hobbit):
-    covered = {b["type"] for b, _ in STATEMENTS} | {"hobbit_yes_no", "hobbit_user_input", "hobbit_call_service"}
+    covered = ({b["type"] for b, _ in STATEMENTS + EXPRESSIONS}
+               | {"hobbit_yes_no", "hobbit_user_input", "hobbit_call_service"})
     assert covered == hobbit.block_types
 
 

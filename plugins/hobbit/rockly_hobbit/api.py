@@ -13,7 +13,7 @@ the tablet), except ``show_emotion``, ``look`` and ``show_info``, which return a
 """
 import math
 
-from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotCommands, RobotTimeout
+from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotCommands, RobotTimeout, field_value
 
 HEAD_POSITIONS = (
     "center_center", "up_center", "down_center", "center_right", "center_left", "up_right",
@@ -44,6 +44,7 @@ STOP_SETTLE_TIMEOUT = 2.0
 MOVE_TOLERANCE = 0.005  # metres
 TURN_TOLERANCE = 0.5  # degrees
 DIALOG_TIMEOUT = 60.0
+SENSOR_TIMEOUT = 3.0
 
 
 class _Progress:
@@ -178,6 +179,41 @@ class Hobbit(RobotCommands):
         """Make the voice ``'louder'`` or ``'quieter'`` (10 % a step)."""
         self._tablet_function(self.choose(change, VOLUME_CHANGES, "volume change"))
 
+    # --- what the robot knows ----------------------------------------------------------
+
+    def battery_level(self) -> float:
+        """The battery charge in percent (0-100)."""
+        return self._latest("/battery_state", "sensor_msgs/BatteryState", "percentage") * 100
+
+    def position(self, coordinate="x"):
+        """Where the robot is on its odometry: ``'x'`` or ``'y'`` in metres, ``'heading'`` in degrees."""
+        self.choose(coordinate, dict.fromkeys(("x", "y", "heading")), "coordinate")
+        pose = self._latest("/odom", "nav_msgs/Odometry", "pose.pose")
+        if coordinate == "heading":
+            q = pose["orientation"]
+            return math.degrees(math.atan2(2 * (q["w"] * q["z"] + q["x"] * q["y"]), 1 - 2 * (q["y"] ** 2 + q["z"] ** 2)))
+        return pose["position"][coordinate]
+
+    def head_position(self) -> str:
+        """Where the head was last told to look (``'center_center'`` until then)."""
+        message = self.backend.latest("/head/move", "std_msgs/String")
+        return message["data"] if message else "center_center"
+
+    def emotion(self) -> str:
+        """The emotion the eyes were last told to show (``'NEUTRAL'`` until then)."""
+        message = self.backend.latest("/head/emo", "std_msgs/String")
+        return message["data"] if message else "NEUTRAL"
+
+    def arm_is_moving(self) -> bool:
+        """True when the arm's joints move (two joint-state messages differ)."""
+        first = self.backend.wait_for_message("/joint_states", "sensor_msgs/JointState", SENSOR_TIMEOUT)
+        second = self.backend.wait_for_message("/joint_states", "sensor_msgs/JointState", SENSOR_TIMEOUT)
+        return any(abs(a - b) > 1e-4 for a, b in zip(first.get("position", [])[:6], second.get("position", [])[:6]))
+
+    def latest_value(self, topic, field):
+        """The newest value of ``field`` (e.g. ``pose.pose.position.x``) on any ``topic``."""
+        return self._latest(str(topic), None, str(field))
+
     # --- general ------------------------------------------------------------------------
 
     def wait(self, seconds):
@@ -194,6 +230,16 @@ class Hobbit(RobotCommands):
         return self.backend.call_service(str(name), str(service_type), dict(parameters or {}), timeout)
 
     # --- helpers ------------------------------------------------------------------------
+
+    def _latest(self, topic, msg_type, field):
+        """A field of the newest message on ``topic``, waiting briefly for a first one."""
+        message = self.backend.latest(topic, msg_type)
+        if message is None:
+            message = self.backend.wait_for_message(topic, msg_type, SENSOR_TIMEOUT)
+        try:
+            return field_value(message, field)
+        except KeyError:
+            raise RobotCommandError(f"the messages on '{topic}' have no field '{field}'") from None
 
     def _discrete_motion(self, kind, amount, tolerance):
         """``Move <metres>`` / ``Turn <degrees>`` with the base driver, waiting for ``Idle``.

@@ -37,6 +37,7 @@ class RosGraph:
         self._services = {}
         self._actions = {}
         self.available_services = set()
+        self.sent = {}  # the last message this node published per topic (commands like /head/move)
         # Service calls run here so a stop need not wait for them (an abandoned call, e.g. a
         # question on the robot's tablet, finishes on its own).
         self.service_calls = ThreadPoolExecutor(max_workers=SERVICE_WORKERS, thread_name_prefix="rockly-service")
@@ -179,18 +180,32 @@ class Ros1Backend(RobotBackend):
             expected = self.graph.subscriber_count(topic)
             self.wait_until(lambda: publisher.get_num_connections() >= expected, FIRST_PUBLISH_WAIT)
         publisher.publish(to_message(publisher.data_class, message))
+        self.graph.sent[topic] = message
+
+    def _type_of(self, topic: str, msg_type):
+        """``msg_type``, or (when None) the type the master knows for ``topic``."""
+        if msg_type:
+            return msg_type
+        try:
+            types = dict(ask_master(self.graph.connection.master_uri, "getTopicTypes"))
+        except (OSError, xmlrpc.client.Error):
+            types = {}
+        if topic not in types:
+            raise RobotTimeout(f"there is no topic '{topic}' (nobody publishes it)")
+        return types[topic]
 
     def subscribe(self, topic: str, msg_type: str, callback):
         """Call ``callback(dict)`` per message; returns the unsubscribe function."""
         self._check()
-        entry = self.graph.topic(topic, msg_type)
+        entry = self.graph.topic(topic, self._type_of(topic, msg_type))
         entry.callbacks.append(callback)
         return lambda: callback in entry.callbacks and entry.callbacks.remove(callback)
 
     def latest(self, topic: str, msg_type: str):
-        """The last message seen on ``topic`` (subscribing on first use), or None."""
+        """The last message seen on ``topic`` (subscribing on first use) or sent by this node, or None."""
         self._check()
-        return self.graph.topic(topic, msg_type).latest
+        latest = self.graph.topic(topic, self._type_of(topic, msg_type)).latest
+        return latest if latest is not None else self.graph.sent.get(topic)
 
     def wait_for_message(self, topic: str, msg_type: str, timeout: float) -> dict:
         """The next message on ``topic``; RobotTimeout naming it after ``timeout``."""

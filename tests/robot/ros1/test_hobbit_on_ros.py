@@ -133,3 +133,15 @@ def test_the_ros_level_simulator_publishes_odometry_battery_and_joint_states(ros
     assert 0 < battery["percentage"] <= 1 and battery["present"] is True
     odometry = backend.wait_for_message("/odom", "nav_msgs/Odometry", 5)
     assert odometry["header"]["frame_id"] == "odom" and odometry["child_frame_id"] == "base_link"
+
+
+def test_sensor_commands_work_over_ros(hobbit_robot):
+    hobbit_robot.look("to_grasp")
+    assert hobbit_robot.head_position() == "to_grasp"       # what this node last commanded
+    assert 0 < hobbit_robot.battery_level() <= 100
+    x = hobbit_robot.position("x")
+    assert hobbit_robot.latest_value("/odom", "pose.pose.position.x") == pytest.approx(x, abs=0.05)  # type looked up
+    from rockly_desktop.core.errors import RobotTimeout
+
+    with pytest.raises(RobotTimeout, match="no topic '/nowhere'"):
+        hobbit_robot.latest_value("/nowhere", "data")
