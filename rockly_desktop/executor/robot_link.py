@@ -1,5 +1,6 @@
 """The robot a program runs against: the profile's built-in simulator, or a robot over ROS 1."""
 from rockly_desktop.core.state_store import StateStore
+from rockly_desktop.executor.health import GREEN, RED, HealthItem, server_health, topic_health
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.safe_stop import run_safe_stop
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
@@ -32,6 +33,13 @@ class SimulatedRobot:
     def graph_topics(self) -> list:
         """(topic, type, publisher count) of the simulated robot's topics."""
         return [(topic, msg_type, 1) for topic, msg_type in self.world.topics()]
+
+    def health(self) -> list:
+        """HealthItems of the simulated robot (its interface as the manifest declares it)."""
+        interface = self.profile.manifest.get("ros_interface", {})
+        link = HealthItem("simulator", GREEN, "the built-in simulator is running")
+        return [link] + topic_health(interface, self.state.topics()) + server_health(
+            interface, lambda kind, name: self.world.has_service(name) if kind == "services" else self.world.has_action(name))
 
     def safe_stop(self) -> list:
         """Do the profile's safe stop now; returns what failed."""
@@ -89,6 +97,20 @@ class RosRobot:
     def graph_topics(self) -> list:
         """(topic, type, publisher count) of the ROS graph (once ``follow_graph`` runs)."""
         return self._feed.graph_topics() if self._feed is not None else []
+
+    def health(self) -> list:
+        """HealthItems: the master (with its round trip), the robot's topics, services and action servers."""
+        interface = self.profile.manifest.get("ros_interface", {})
+        connection = self.connection
+        if connection.lost:
+            return [HealthItem("ROS master", RED, f"{connection.master_uri} does not answer")]
+        link = HealthItem("ROS master", GREEN, f"{connection.master_uri}, round trip "
+                          f"{(connection.round_trip or 0) * 1000:.1f} ms")
+        feed = self.follow_graph()
+        publishers = {topic: count for topic, _type, count in feed.graph_topics()}
+        return [link] + topic_health(interface, self.state.topics()) + server_health(
+            interface, lambda kind, name: name in feed.services() if kind == "services"
+            else publishers.get(f"/{name.strip('/')}/status", 0) > 0)
 
     def safe_stop(self) -> list:
         """Do the profile's safe stop now; returns what failed."""

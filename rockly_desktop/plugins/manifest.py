@@ -44,6 +44,7 @@ MANIFEST_FIELDS = (
     FieldSpec("simulator", "import", False, "module:Class of the built-in simulated robot: Class(world, tablet=, speed=)."),
     FieldSpec("simulator_view", "import", False, "module:Class of the QWidget drawing the simulator (set_snapshot(dict))."),
     FieldSpec("messages", "folder", False, "Folder with ROS definitions the robot needs: <package>/msg|srv|action/*."),
+    FieldSpec("ros_interface", "ros_interface", False, "The robot's ROS interface: {subscribes: {TOPIC: TYPE}, publishes: {...}, services: {NAME: TYPE}, actions: {NAME: TYPE}, streams: [TOPIC, ...]}."),
     FieldSpec("safe_stop", "safe_stop", False, "What 'stop' means for this robot: a list of {publish: ...}, {cancel_goals: ACTION}."),
     FieldSpec("state", "state", False, "Live state panels: [{panel: TITLE, rows: [{label, topic, field, format?, transform?}]}]."),
     FieldSpec("legacy_fields", "legacy_fields", False, "Old field names of saved programs: {block_type: {old_field: {field: new, values: {old: new}}}}."),
@@ -110,6 +111,21 @@ def _check_state(value):
     return None
 
 
+def _check_ros_interface(value):
+    if not isinstance(value, dict) or set(value) - {"subscribes", "publishes", "services", "actions", "streams"}:
+        return "must be a mapping with subscribes, publishes, services, actions and streams"
+    streams = value.get("streams", [])
+    if not isinstance(streams, list) or not set(streams) <= set(value.get("publishes", {})):
+        return "'streams' must list published topics that arrive continuously (the health light watches them)"
+    for part, names in value.items():
+        if part == "streams":
+            continue
+        if not isinstance(names, dict) or not all(isinstance(k, str) and isinstance(v, str) and "/" in v
+                                                  for k, v in names.items()):
+            return f"'{part}' must map ROS names to types like geometry_msgs/Twist"
+    return None
+
+
 def _check_legacy_fields(value):
     if not isinstance(value, dict):
         return "must map block types to their old field names"
@@ -160,6 +176,8 @@ def _check(spec: FieldSpec, value, root: Path):
         return _check_legacy_fields(value)
     elif kind == "state":
         return _check_state(value)
+    elif kind == "ros_interface":
+        return _check_ros_interface(value)
     return None
 
 

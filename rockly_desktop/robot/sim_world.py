@@ -131,6 +131,11 @@ class SimWorld:
 
     # --- actions ------------------------------------------------------------------------
 
+    def has_action(self, name: str) -> bool:
+        """True when an action server ``name`` is up."""
+        with self._changed:
+            return name in self._actions
+
     def advertise_action(self, name: str, handler) -> None:
         """Serve the action ``name``: ``handler(goal, feedback, cancelled) -> (GoalStatus, result)``.
 

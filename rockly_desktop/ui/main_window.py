@@ -9,6 +9,7 @@ from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.ui.code_dock import CodeDock
 from rockly_desktop.ui.console_dock import ConsoleDock
 from rockly_desktop.ui.file_actions import ProgramFiles
+from rockly_desktop.ui.health_bar import HealthBar
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.preferences import PreferencesDialog
 from rockly_desktop.ui.run_session import RunSession
@@ -67,6 +68,8 @@ class MainWindow(QMainWindow):
         self.runs.sig_state_changed.connect(self._on_run_state)
         self.robots = RobotChoice(self)
         self.tablet.sig_dismissed.connect(self.runs.stop)
+        self.health = HealthBar(self.language, self)
+        self.statusBar().addPermanentWidget(self.health)
         self.statusBar().addPermanentWidget(self.robots.status)
         self.statusBar().addPermanentWidget(self.profile_label)
         self._build_run_toolbar()
@@ -142,6 +145,7 @@ class MainWindow(QMainWindow):
             robot.follow_graph()
         panels = StatePanels(self.profile.manifest.get("state", []), self.language, self.state_dock)
         panels.set_store(robot.state)
+        self.health.show_robot(robot)
         self._replace_dock_widget(self.state_dock, panels)
         self._replace_dock_widget(self.monitor_dock, TopicMonitor(robot.state, robot.graph_topics, self.language))
         if robot.snapshot() is None:
@@ -250,6 +254,7 @@ class MainWindow(QMainWindow):
         self.simulator_dock.setWindowTitle(tr("simulator_dock", language))
         self.variables.setWindowTitle(tr("variables_dock", language))
         self.state_dock.setWindowTitle(tr("state_dock", language))
+        self.health.language = language
         self.monitor_dock.setWindowTitle(tr("monitor_dock", language))
         self.variables.table.setHorizontalHeaderLabels([tr("variable", language), tr("value", language)])
         self.console.setWindowTitle(tr("console_dock", language))
@@ -343,6 +348,7 @@ class MainWindow(QMainWindow):
             return
         self.runs.shutdown()
         self.simulator_dock.stop()
+        self.health.stop()
         self.robots.shutdown()
         self.settings.save_window(self.saveGeometry(), self.saveState())
         self.settings.last_file = self.files.path

@@ -57,3 +57,19 @@ def test_the_status_shows_a_lost_master_and_its_return(qtbot, ros_window, ros_ma
     with qtbot.waitSignal(ros_window.runs.sig_finished, timeout=30000) as blocker:
         ros_window.runs.run()
     assert blocker.args[0].outcome == "finished", blocker.args[0]
+
+
+def test_health_turns_red_within_2_s_when_the_master_dies_and_green_when_it_returns(qtbot, ros_window, ros_master):
+    import time
+
+    health = ros_window.health
+    qtbot.waitUntil(lambda: health.level == "green", timeout=8000)
+    assert "/odom" in health.toolTip() and "/MMUI" in health.toolTip() and "hobbit_arm" in health.toolTip()
+    ros_master.stop()
+    killed = time.monotonic()
+    try:
+        qtbot.waitUntil(lambda: health.level == "red", timeout=3000)
+        assert time.monotonic() - killed < 2.0
+    finally:
+        ros_master.start()
+    qtbot.waitUntil(lambda: health.level == "green", timeout=10000)

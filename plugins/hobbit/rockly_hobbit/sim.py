@@ -246,18 +246,6 @@ class SimHobbit:
     to stop its clock.
     """
 
-    # What the real HOBBIT offers on ROS 1, for running this simulator as a ROS node.
-    ROS_INTERFACE = {
-        "subscribes": {"/cmd_vel": "geometry_msgs/Twist", "/DiscreteMotionCmd": "std_msgs/String",
-                       "/head/move": "std_msgs/String", "/head/emo": "std_msgs/String",
-                       "/move_base_simple/goal": "geometry_msgs/PoseStamped"},
-        "publishes": {"/odom": "nav_msgs/Odometry", "/DiscreteMotionState": "std_msgs/String",
-                      "/battery_state": "sensor_msgs/BatteryState", "/bumper": "std_msgs/Bool",
-                      "/joint_states": "sensor_msgs/JointState"},
-        "services": {"/MMUI": "hobbit_msgs/Request"},
-        "actions": {"hobbit_arm": "hobbit_msgs/ArmServerAction", "move_base": "move_base_msgs/MoveBaseAction"},
-    }
-
     def __init__(self, world, tablet=None, speed=1.0):
         if not speed > 0:
             raise ValueError(f"the simulation speed must be positive, not {speed!r}")

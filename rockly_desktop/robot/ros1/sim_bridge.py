@@ -1,7 +1,7 @@
 """Running a profile's simulator as a real ROS 1 node: its SimWorld bridged to ROS.
 
-The simulator declares ``ROS_INTERFACE`` (what the real robot subscribes, publishes,
-serves and offers as actions, with ROS types). Messages from ROS go into the world;
+The profile's manifest declares ``ros_interface`` (what the real robot subscribes,
+publishes, serves and offers as actions, with ROS types). Messages from ROS go into the world;
 what the simulator publishes goes out on ROS; services and actions are served by the
 simulator's own handlers, with feedback and preemption passed through.
 """
@@ -81,9 +81,8 @@ def run_simulator_node(profile, types, master_uri=None, speed=1.0, tablet=None, 
 
     RosConnection.get(master_uri)
     world = SimWorld()
-    simulator_class = profile.load_object("simulator")
-    simulator = simulator_class(world, tablet=tablet, speed=speed)
-    SimRosBridge(world, simulator_class.ROS_INTERFACE, types)
+    simulator = profile.load_object("simulator")(world, tablet=tablet, speed=speed)
+    SimRosBridge(world, profile.manifest.get("ros_interface", {}), types)
     simulator.start()
     if on_ready is not None:
         on_ready()

@@ -7,6 +7,8 @@ callback threads then record every message. Widgets read the store, never rospy.
 import logging
 import threading
 
+from rockly_desktop.robot.ros1.connection import ask_master
+
 log = logging.getLogger(__name__)
 
 POLL_SECONDS = 1.0
@@ -21,6 +23,7 @@ class RosStateFeed:
         self._subscribed = set()
         self._unknown = set()
         self._topics = []
+        self._services = set()
         self._stopped = threading.Event()
         self._thread = threading.Thread(target=self._poll, name="rockly-ros-graph", daemon=True)
         self._thread.start()
@@ -29,19 +32,23 @@ class RosStateFeed:
         """(topic, type, publisher count) of every topic the master knows, as of the last poll."""
         return list(self._topics)
 
+    def services(self) -> set:
+        """Names of the services the master knows, as of the last poll."""
+        return set(self._services)
+
     def stop(self):
         """Stop watching the graph (subscriptions stay with the shared RosGraph)."""
         self._stopped.set()
 
     def _poll(self):
-        import rosgraph
-
+        uri = self._ros_graph.connection.master_uri
         while not self._stopped.is_set():
             if not self._ros_graph.connection.lost:
                 try:
-                    master = rosgraph.Master("/rockly_graph")
-                    types = dict(master.getTopicTypes())
-                    publishers = dict(master.getSystemState()[0])
+                    types = dict(ask_master(uri, "getTopicTypes"))
+                    publisher_list, _subscribers, services = ask_master(uri, "getSystemState")
+                    publishers = dict(publisher_list)
+                    self._services = {name for name, _nodes in services}
                     self._topics = sorted((topic, msg_type, len(publishers.get(topic, [])))
                                           for topic, msg_type in types.items())
                     for topic, msg_type in types.items():

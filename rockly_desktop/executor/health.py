@@ -1,0 +1,48 @@
+"""How healthy the connection to the robot is: green, amber or red per part, with details.
+
+A part is the link itself (the ROS master, or the built-in simulator), each topic the
+robot streams (fresh, late or silent), each of its services and action servers.
+"""
+from dataclasses import dataclass
+
+GREEN, AMBER, RED = "green", "amber", "red"
+FRESH_SECONDS, LATE_SECONDS = 2.0, 10.0
+
+
+@dataclass(frozen=True)
+class HealthItem:
+    """One part of the robot's link: its name, level (green | amber | red) and a detail text."""
+
+    name: str
+    level: str
+    detail: str
+
+
+def topic_health(interface: dict, topics: list) -> list:
+    """Items for the topics the robot streams continuously, from the state store's TopicInfo list."""
+    seen = {info.topic: info for info in topics}
+    items = []
+    for topic in interface.get("streams", []):
+        info = seen.get(topic)
+        if info is None:
+            items.append(HealthItem(topic, RED, "no message yet"))
+            continue
+        level = GREEN if info.age < FRESH_SECONDS else AMBER if info.age < LATE_SECONDS else RED
+        items.append(HealthItem(topic, level, f"{info.rate:.1f} Hz, last {info.age:.1f} s ago"))
+    return items
+
+
+def server_health(interface: dict, available) -> list:
+    """Items for the robot's services and action servers; ``available(kind, name)`` says if one is up."""
+    items = []
+    for kind in ("services", "actions"):
+        for name in interface.get(kind, {}):
+            up = available(kind, name)
+            items.append(HealthItem(name, GREEN if up else RED, "available" if up else "not available"))
+    return items
+
+
+def overall(items: list) -> str:
+    """The worst level among ``items`` (green when there are none)."""
+    levels = {item.level for item in items}
+    return RED if RED in levels else AMBER if AMBER in levels else GREEN
