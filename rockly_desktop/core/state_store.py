@@ -34,13 +34,21 @@ class _Topic:
 
 
 def field_value(message, path: str):
-    """The value at ``path`` in a message dict (``pose.pose.position.x``, ``ranges[3]``); KeyError if absent."""
+    """The value at ``path`` (``pose.pose.position.x``, ``ranges[3]``) in a message dict, or in a
+    message object with those attributes (a ROS message not yet decoded); KeyError if absent."""
     value = message
     for part in path.split("."):
         match = _PATH_PART.fullmatch(part)
-        if match is None or not isinstance(value, dict) or match.group(1) not in value:
+        if match is None:
             raise KeyError(path)
-        value = value[match.group(1)]
+        if isinstance(value, dict):
+            if match.group(1) not in value:
+                raise KeyError(path)
+            value = value[match.group(1)]
+        elif match.group(1) in getattr(value, "__slots__", ()):
+            value = getattr(value, match.group(1))
+        else:
+            raise KeyError(path)
         if match.group(2) is not None:
             index = int(match.group(2))
             if not isinstance(value, (list, tuple)) or index >= len(value):
@@ -52,8 +60,11 @@ def field_value(message, path: str):
 class StateStore:
     """Thread-safe latest messages, history and rates per topic."""
 
-    def __init__(self, history: int = 2000, rate_window: float = 2.0, clock=time.monotonic):
+    def __init__(self, history: int = 2000, rate_window: float = 2.0, clock=time.monotonic, decode=None):
+        """``decode(message) -> dict`` turns recorded message objects into dicts when they are read
+        (a ROS feed records messages undecoded, so a 1 kHz topic costs little until someone looks)."""
         self._lock = threading.Lock()
+        self._decode = decode
         self._topics = {}
         self._history = history
         self._rate_window = rate_window
@@ -76,10 +87,16 @@ class StateStore:
             self.version += 1
 
     def latest(self, topic: str):
-        """The newest message on ``topic``, or None."""
+        """The newest message on ``topic`` as a dict, or None."""
         with self._lock:
             entry = self._topics.get(topic)
-            return entry.last[1] if entry and entry.last else None
+            if not entry or not entry.last:
+                return None
+            stamp, message = entry.last
+            if self._decode is not None and not isinstance(message, dict):
+                message = self._decode(message)
+                entry.last = (stamp, message)
+            return message
 
     def value(self, topic: str, path: str, default=None):
         """The newest value of a field, or ``default`` when there is none (yet)."""

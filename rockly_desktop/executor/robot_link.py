@@ -73,7 +73,9 @@ class RosRobot:
         for action in profile.manifest.get("safe_stop", []):  # ready now, so a stop never waits for them
             if "publish" in action:
                 self.graph.publisher(action["publish"]["topic"], action["publish"]["type"])
-        self.state = StateStore()
+        from rockly_desktop.robot.ros1.messages import from_message
+
+        self.state = StateStore(decode=from_message)
         self._feed = None
 
     def follow_graph(self):

@@ -307,6 +307,9 @@ class PlotPanel(QWidget):
         self.plot_item = self.plot_widget.getPlotItem()
         self.plot_item.setMenuEnabled(False)
         self.plot_item.hideButtons()
+        # Draw only the visible samples, a few per pixel (min and max of each bin): a 1 kHz minute is 60,000 samples.
+        self.plot_item.setClipToView(True)
+        self.plot_item.setDownsampling(auto=True, mode="peak")
         self.plot_item.showGrid(x=True, y=True, alpha=0.15)
         for name in ("left", "bottom"):
             axis = self.plot_item.getAxis(name)
@@ -359,9 +362,7 @@ class PlotPanel(QWidget):
         if not topic or not path or self._find(topic, path):
             return False
         item = pg.PlotDataItem(pen=pg.mkPen(self._next_colour(), width=2), name=f"{topic} {path}")
-        item.setClipToView(True)
-        item.setDownsampling(auto=True, method="peak")
-        self.plot_item.addItem(item)
+        self.plot_item.addItem(item)  # gives the item the plot's clip-to-view and downsampling modes
         curve = _Curve(topic, path, item, self._max_samples)
         self._curves.append(curve)
         self._show_hint()

@@ -95,18 +95,32 @@ class RosGraph:
 
 
 class _Topic:
-    """One shared rospy subscriber: keeps the latest message and fans out to callbacks."""
+    """One shared rospy subscriber: keeps the latest message and fans out to callbacks.
+
+    Messages are decoded to dicts only when someone asks: ``callbacks`` get dicts,
+    ``raw_callbacks`` the rospy message objects (a state feed at 1 kHz stays cheap).
+    """
 
     def __init__(self, rospy, topic, message_class):
-        self.latest = None
+        self._latest = None
         self.callbacks = []
+        self.raw_callbacks = []
         self._subscriber = rospy.Subscriber(topic, message_class, self._on_message)
 
+    @property
+    def latest(self):
+        """The newest message as a dict, or None."""
+        message = self._latest
+        return from_message(message) if message is not None else None
+
     def _on_message(self, message):
-        data = from_message(message)
-        self.latest = data
-        for callback in list(self.callbacks):
-            callback(data)
+        self._latest = message
+        for callback in list(self.raw_callbacks):
+            callback(message)
+        if self.callbacks:
+            data = from_message(message)
+            for callback in list(self.callbacks):
+                callback(data)
 
 
 class Ros1GoalHandle(GoalHandle):

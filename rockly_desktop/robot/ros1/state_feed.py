@@ -2,7 +2,8 @@
 
 A thread asks the master once a second which topics exist (with their types and
 publisher counts) and subscribes to new ones through the shared RosGraph; rospy's
-callback threads then record every message. Widgets read the store, never rospy.
+callback threads then record every message, undecoded (the store decodes what is read).
+Widgets read the store, never rospy.
 """
 import logging
 import threading
@@ -66,5 +67,5 @@ class RosStateFeed:
             log.info("cannot follow %s (%s): %s", topic, msg_type, error)
             self._unknown.add((topic, msg_type))
             return
-        entry.callbacks.append(lambda message: self._store.record(topic, msg_type, message))
+        entry.raw_callbacks.append(lambda message: self._store.record(topic, msg_type, message))
         self._subscribed.add(topic)
