@@ -70,9 +70,10 @@ class RosRobot:
         except ImportError as error:
             raise RosUnavailable(f"the ROS 1 message tools (genpy, actionlib) are not installed ({error})") from None
         self.graph = RosGraph(self.connection, MessageTypes(profile_message_folders(profile)))
-        for action in profile.manifest.get("safe_stop", []):  # ready now, so a stop never waits for them
+        safe_backend = self.backend(Interrupt())
+        for action in profile.manifest.get("safe_stop", []):  # connected now, so a stop never waits for them
             if "publish" in action:
-                self.graph.publisher(action["publish"]["topic"], action["publish"]["type"])
+                safe_backend.connect_publisher(action["publish"]["topic"], action["publish"]["type"])
         from rockly_desktop.robot.ros1.messages import from_message
 
         self.state = StateStore(decode=from_message)

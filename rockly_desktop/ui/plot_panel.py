@@ -33,6 +33,8 @@ MAX_SAMPLES = 300_000
 
 REFRESH_INTERVAL_MS = 33
 """At most ~30 redraws a second."""
+MAX_REFRESH_INTERVAL_MS = 250
+_BUSY_SHARE = 4  # reading and drawing may take at most a quarter of the time between refreshes
 
 # Okabe & Ito's colour-blind-safe palette (without its yellow, which vanishes on white).
 _COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000")
@@ -219,7 +221,7 @@ class PlotPanel(QWidget):
 
         self.timer = QTimer(self)
         self.timer.setInterval(REFRESH_INTERVAL_MS)
-        self.timer.timeout.connect(self.refresh)
+        self.timer.timeout.connect(self._tick)
 
         self._build_toolbar()
         self._build_plot()
@@ -315,6 +317,7 @@ class PlotPanel(QWidget):
             axis = self.plot_item.getAxis(name)
             axis.setPen(_FOREGROUND)
             axis.setTextPen(_FOREGROUND)
+            axis.setStyle(maxTickLevel=1)  # major and minor ticks: a calmer grid, drawn in half the time
         bottom = self.plot_item.getAxis("bottom")
         bottom.enableAutoSIPrefix(False)
         self.plot_item.setLabel("bottom", self._t("plot_time_axis"), units="s", color=_FOREGROUND)
@@ -362,6 +365,7 @@ class PlotPanel(QWidget):
         if not topic or not path or self._find(topic, path):
             return False
         item = pg.PlotDataItem(pen=pg.mkPen(self._next_colour(), width=2), name=f"{topic} {path}")
+        item.opts["autoDownsampleFactor"] = 2.0  # min and max per pixel look the same as pyqtgraph's 5 per pixel
         self.plot_item.addItem(item)  # gives the item the plot's clip-to-view and downsampling modes
         curve = _Curve(topic, path, item, self._max_samples)
         self._curves.append(curve)
@@ -397,6 +401,7 @@ class PlotPanel(QWidget):
         return [field for field in parse_mime_text(text) if self.add_curve(*field)]
 
     def _show_hint(self):
+        self.legend.setVisible(bool(self._curves))  # no empty legend frame
         if self._curves:
             self.plot_item.setTitle(None)
         else:
@@ -455,6 +460,13 @@ class PlotPanel(QWidget):
             self._read(curve)
             curve.buffer.trim_before(oldest_kept)
         self._draw()
+
+    def _tick(self):
+        started = time.perf_counter()
+        self.refresh()
+        # Refresh less often when a refresh is expensive (a huge store history, many curves): the window stays responsive.
+        cost_ms = (time.perf_counter() - started) * 1000
+        self.timer.setInterval(int(min(MAX_REFRESH_INTERVAL_MS, max(REFRESH_INTERVAL_MS, _BUSY_SHARE * cost_ms))))
 
     def _read(self, curve):
         buffer = curve.buffer

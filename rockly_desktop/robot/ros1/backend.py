@@ -33,6 +33,7 @@ class RosGraph:
         self.types = types
         self._lock = threading.Lock()
         self._publishers = {}
+        self._published = set()
         self._topics = {}
         self._services = {}
         self._actions = {}
@@ -43,13 +44,15 @@ class RosGraph:
         self.service_calls = ThreadPoolExecutor(max_workers=SERVICE_WORKERS, thread_name_prefix="rockly-service")
 
     def publisher(self, topic, msg_type):
+        """The shared publisher of ``topic``, and whether this is its first publish."""
         with self._lock:
-            entry = self._publishers.get(topic)
-            if entry is None:
-                entry = self._publishers[topic] = self._rospy.Publisher(
+            publisher = self._publishers.get(topic)
+            if publisher is None:
+                publisher = self._publishers[topic] = self._rospy.Publisher(
                     topic, self.types.message_class(msg_type), queue_size=10)
-                return entry, True
-            return entry, False
+            first = topic not in self._published
+            self._published.add(topic)
+            return publisher, first
 
     def subscriber_count(self, topic) -> int:
         """How many nodes the master lists as subscribers of ``topic`` (0 if it does not answer)."""
@@ -186,13 +189,19 @@ class Ros1Backend(RobotBackend):
             if remaining <= 0:
                 return False
 
-    def publish(self, topic: str, msg_type: str, message: dict) -> None:
-        """Publish on ``topic`` (a new publisher first waits briefly for its subscribers)."""
+    def connect_publisher(self, topic: str, msg_type: str):
+        """The publisher of ``topic``; on first use, or while nobody is connected yet, wait (≤ 1 s)
+        until the subscribers the master lists have connected."""
         self._check()
-        publisher, new = self.graph.publisher(topic, msg_type)
-        if new:  # let every subscriber the master knows connect, or the first message is lost
+        publisher, first = self.graph.publisher(topic, msg_type)
+        if first or publisher.get_num_connections() == 0:
             expected = self.graph.subscriber_count(topic)
             self.wait_until(lambda: publisher.get_num_connections() >= expected, FIRST_PUBLISH_WAIT)
+        return publisher
+
+    def publish(self, topic: str, msg_type: str, message: dict) -> None:
+        """Publish on ``topic`` (a new publisher first waits briefly for its subscribers)."""
+        publisher = self.connect_publisher(topic, msg_type)  # on first use, or its first message is lost
         publisher.publish(to_message(publisher.data_class, message))
         self.graph.sent[topic] = message
 
