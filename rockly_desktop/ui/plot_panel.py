@@ -192,7 +192,7 @@ class PlotPanel(QWidget):
         time,topic,field,value
         0.000000,/odom,pose.pose.position.x,0.0
         0.000000,/odom,twist.twist.angular.z,0.5
-        0.010000,/odom,pose.pose.position.x,0.0099998
+        0.010000,/odom,pose.pose.position.x,0.02
 
     ``time`` is in seconds since the first sample shown (microsecond resolution), ``value`` the
     exact float. Rows are ordered by time, then by curve in the order they were added. Long

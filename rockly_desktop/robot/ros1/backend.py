@@ -38,7 +38,7 @@ class RosGraph:
         self._services = {}
         self._actions = {}
         self.available_services = set()
-        self.sent = {}  # the last message this node published per topic (commands like /head/move)
+        self.sent = {}  # topic -> (when, message) this node last published (commands like /head/move)
         # Service calls run here so a stop need not wait for them (an abandoned call, e.g. a
         # question on the robot's tablet, finishes on its own).
         self.service_calls = ThreadPoolExecutor(max_workers=SERVICE_WORKERS, thread_name_prefix="rockly-service")
@@ -106,6 +106,7 @@ class _Topic:
 
     def __init__(self, rospy, topic, message_class):
         self._latest = None
+        self.received_at = None
         self.callbacks = []
         self.raw_callbacks = []
         self._subscriber = rospy.Subscriber(topic, message_class, self._on_message)
@@ -118,6 +119,7 @@ class _Topic:
 
     def _on_message(self, message):
         self._latest = message
+        self.received_at = time.monotonic()
         for callback in list(self.raw_callbacks):
             callback(message)
         if self.callbacks:
@@ -203,7 +205,7 @@ class Ros1Backend(RobotBackend):
         """Publish on ``topic`` (a new publisher first waits briefly for its subscribers)."""
         publisher = self.connect_publisher(topic, msg_type)  # on first use, or its first message is lost
         publisher.publish(to_message(publisher.data_class, message))
-        self.graph.sent[topic] = message
+        self.graph.sent[topic] = (time.monotonic(), message)
 
     def _type_of(self, topic: str, msg_type):
         """``msg_type``, or (when None) the type the master knows for ``topic``."""
@@ -227,8 +229,11 @@ class Ros1Backend(RobotBackend):
     def latest(self, topic: str, msg_type: str):
         """The last message seen on ``topic`` (subscribing on first use) or sent by this node, or None."""
         self._check()
-        latest = self.graph.topic(topic, self._type_of(topic, msg_type)).latest
-        return latest if latest is not None else self.graph.sent.get(topic)
+        entry = self.graph.topic(topic, self._type_of(topic, msg_type))
+        sent_at, sent = self.graph.sent.get(topic, (None, None))
+        if sent is not None and (entry.received_at is None or sent_at >= entry.received_at):
+            return sent  # our own command is newer than what came back (or nothing came yet)
+        return entry.latest
 
     def wait_for_message(self, topic: str, msg_type: str, timeout: float) -> dict:
         """The next message on ``topic``; RobotTimeout naming it after ``timeout``."""
