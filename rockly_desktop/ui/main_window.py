@@ -11,6 +11,7 @@ from rockly_desktop.ui.console_dock import ConsoleDock
 from rockly_desktop.ui.file_actions import ProgramFiles
 from rockly_desktop.ui.health_bar import HealthBar
 from rockly_desktop.ui.message_boxes import plain_message_box
+from rockly_desktop.ui.plot_panel import PlotPanel
 from rockly_desktop.ui.preferences import PreferencesDialog
 from rockly_desktop.ui.run_session import RunSession
 from rockly_desktop.ui.robot_choice import RobotChoice
@@ -51,12 +52,15 @@ class MainWindow(QMainWindow):
         self.state_dock.setObjectName("state_dock")
         self.monitor_dock = QDockWidget(tr("monitor_dock", self.language), self)
         self.monitor_dock.setObjectName("monitor_dock")
+        self.plot_dock = QDockWidget(tr("plot_dock", self.language), self)
+        self.plot_dock.setObjectName("plot_dock")
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.simulator_dock)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.code_dock)
         self.tabifyDockWidget(self.code_dock, self.variables)
         self.tabifyDockWidget(self.code_dock, self.state_dock)
         self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.monitor_dock)
         self.tabifyDockWidget(self.console, self.monitor_dock)
+        self.tabifyDockWidget(self.console, self.plot_dock)
         self.console.raise_()
         self.code_dock.raise_()
         self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.console)
@@ -147,7 +151,11 @@ class MainWindow(QMainWindow):
         panels.set_store(robot.state)
         self.health.show_robot(robot)
         self._replace_dock_widget(self.state_dock, panels)
-        self._replace_dock_widget(self.monitor_dock, TopicMonitor(robot.state, robot.graph_topics, self.language))
+        monitor = TopicMonitor(robot.state, robot.graph_topics, self.language)
+        plot = PlotPanel(robot.state, self.language)
+        monitor.sig_plot_requested.connect(lambda topic, path: (plot.add_curve(topic, path), self.plot_dock.raise_()))
+        self._replace_dock_widget(self.monitor_dock, monitor)
+        self._replace_dock_widget(self.plot_dock, plot)
         if robot.snapshot() is None:
             self.simulator_dock.show_robot(None, None, tr("real_robot_view", self.language))
         else:
@@ -256,6 +264,7 @@ class MainWindow(QMainWindow):
         self.state_dock.setWindowTitle(tr("state_dock", language))
         self.health.language = language
         self.monitor_dock.setWindowTitle(tr("monitor_dock", language))
+        self.plot_dock.setWindowTitle(tr("plot_dock", language))
         self.variables.table.setHorizontalHeaderLabels([tr("variable", language), tr("value", language)])
         self.console.setWindowTitle(tr("console_dock", language))
         self._build_run_toolbar()
@@ -322,7 +331,8 @@ class MainWindow(QMainWindow):
             robot_menu.addAction(action)
 
         view_menu = bar.addMenu(tr("menu_view", language))
-        for dock in (self.simulator_dock, self.code_dock, self.variables, self.state_dock, self.console, self.monitor_dock):
+        for dock in (self.simulator_dock, self.code_dock, self.variables, self.state_dock, self.console,
+                     self.monitor_dock, self.plot_dock):
             view_menu.addAction(dock.toggleViewAction())
 
         settings_menu = bar.addMenu(tr("menu_settings", language))

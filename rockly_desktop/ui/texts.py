@@ -102,6 +102,7 @@ _TEXTS = {
     "robot_says": ("Robot: {text}", "Roboter: {text}"),
     "state_dock": ("Robot state", "Roboterzustand"),
     "monitor_dock": ("Topic monitor", "Topic-Monitor"),
+    "plot_dock": ("Plot", "Diagramm"),
     "health_title": ("Connection to the robot", "Verbindung zum Roboter"),
     "health_green": ("Robot: all good", "Roboter: alles gut"),
     "health_amber": ("Robot: check the details", "Roboter: Details prüfen"),

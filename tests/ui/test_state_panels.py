@@ -44,3 +44,15 @@ def test_health_is_green_on_the_simulator_with_details(qtbot, window):
     assert [item.name for item in window.health.items] == [
         "simulator", "/odom", "/battery_state", "/joint_states", "/MMUI", "hobbit_arm", "move_base"]
     assert "Robot: all good" in window.health.text()
+
+
+def test_a_field_double_clicked_in_the_topic_monitor_is_plotted(qtbot, window):
+    monitor, plot = window.monitor_dock.widget(), window.plot_dock.widget()
+    qtbot.waitUntil(lambda: window.robot().state.latest("/odom") is not None, timeout=5000)
+    monitor.refresh()
+    assert monitor.select_topic("/odom")
+    monitor.refresh()
+    index = monitor.field_index("pose.pose.position.x")
+    assert index.isValid()
+    monitor.sig_plot_requested.emit("/odom", "pose.pose.position.x")
+    assert plot.curves() == [("/odom", "pose.pose.position.x")]
