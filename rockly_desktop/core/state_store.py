@@ -71,6 +71,10 @@ class StateStore:
         self._clock = clock
         self.version = 0
 
+    def now(self) -> float:
+        """The store's clock (the time its stamps are in)."""
+        return self._clock()
+
     def record(self, topic: str, msg_type: str, message: dict):
         """Take one message (any thread)."""
         now = self._clock()

@@ -212,7 +212,7 @@ class PlotPanel(QWidget):
         self._store = store
         self._language = language
         # StateStore stamps samples with its clock and has no public accessor for it.
-        self._clock = clock or getattr(store, "_clock", time.monotonic)
+        self._clock = clock or store.now
         self._max_samples = max_samples
         self._curves = []
         self._window = DEFAULT_WINDOW

@@ -1,7 +1,6 @@
 """The Plot panel: live curves of numeric fields from a real StateStore on a controlled clock."""
 import csv
 import math
-import time
 
 import numpy as np
 import pytest
@@ -362,8 +361,8 @@ def test_sample_buffer_keeps_order_across_wraps():
     assert len(buffer) == 0 and buffer.last_time is None
 
 
-def test_a_1khz_minute_stays_smooth(qtbot, clock):
-    """60 s at 1 kHz on two curves: each frame reads only its 33 new samples and draws a few thousand points."""
+def test_a_1khz_minute_is_kept_whole_but_drawn_downsampled(qtbot, clock):
+    """60 s at 1 kHz on two curves: every sample is kept, a few thousand points are drawn (speed: benchmarks/state.py)."""
     store = StateStore(history=2000, clock=clock)
     panel = PlotPanel(store)
     qtbot.addWidget(panel)
@@ -372,16 +371,12 @@ def test_a_1khz_minute_stays_smooth(qtbot, clock):
     panel.set_window(60)
     panel.add_curve("/odom", X)
     panel.add_curve("/odom", TURN)
-    costs = []
     for frame in range(1800):
         for _ in range(33):
             clock.now += 0.001
             store.record("/odom", "nav_msgs/Odometry", odom(math.sin(clock.now), math.cos(clock.now * 7)))
-        started = time.perf_counter()
         panel.refresh()
         panel.plot_widget.viewport().repaint()
-        costs.append(time.perf_counter() - started)
     item = panel.curve_item("/odom", X)
     assert len(item.getOriginalDataset()[0]) == 59400
     assert len(item.curve.getData()[0]) < 8000, "downsampled for the screen"
-    assert sorted(costs)[len(costs) // 2] < 0.030, f"median frame {sorted(costs)[len(costs) // 2] * 1000:.1f} ms"
