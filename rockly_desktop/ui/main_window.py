@@ -58,12 +58,11 @@ class MainWindow(QMainWindow):
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.code_dock)
         self.tabifyDockWidget(self.code_dock, self.variables)
         self.tabifyDockWidget(self.code_dock, self.state_dock)
-        self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.monitor_dock)
+        self.code_dock.raise_()
+        self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.console)
         self.tabifyDockWidget(self.console, self.monitor_dock)
         self.tabifyDockWidget(self.console, self.plot_dock)
         self.console.raise_()
-        self.code_dock.raise_()
-        self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.console)
         self.profile_label = QLabel(self)
         self.tablet = QtTablet(self, self.profile.display_name())
         self.tablet.sig_notice.connect(lambda _kind, text: self.console.append(
@@ -163,7 +162,12 @@ class MainWindow(QMainWindow):
 
     def _choose_backend(self, index):
         kind = self.run_toolbar.backend.itemData(index)
-        if not self.robots.choose(kind):
+        if self.robots.choose(kind):
+            # On a real robot its state panels take the simulator view's place.
+            self.simulator_dock.setVisible(kind != "ros1")
+            if kind == "ros1":
+                self.state_dock.raise_()
+        else:
             self.run_toolbar.backend.blockSignals(True)
             self.run_toolbar.backend.setCurrentIndex(self.run_toolbar.backend.findData(self.robots.kind))
             self.run_toolbar.backend.blockSignals(False)
