@@ -433,7 +433,7 @@ def test_toolbox_shadows_fill_real_value_inputs(hobbit):
 
 def test_toolbox_names_are_translated_and_shared_categories_resolved(hobbit):
     names = [localize(category["name"], "de") for category in hobbit.toolbox_categories]
-    assert names == ["Fahren", "Kopf", "Arm", "Tablet", "Zeit", "ROS",
+    assert names == ["Fahren", "Kopf", "Arm", "Tablet", "Sensoren", "Zeit", "ROS",
                      "Logik", "Schleifen", "Mathematik", "Text", "Listen", "Variablen", "Funktionen"]
     by_name = {localize(category["name"], "en"): category for category in hobbit.toolbox_categories}
     assert {"kind": "block", "type": "controls_if"} in by_name["Logic"]["contents"]
