@@ -23,4 +23,6 @@ def data_files():
     return pairs
 
 
+if not os.path.isfile(os.path.join("resources", "blockly", "vendor", ".version")):
+    raise SystemExit("Blockly is not fetched yet: run `make setup` (or scripts/fetch-blockly.sh) before installing.")
 setup(data_files=data_files())

@@ -3,6 +3,8 @@
     rockly [PROGRAM]                    open the editor (optionally with a program)
     rockly plugins list                 show installed robot profiles and broken ones
     rockly plugins validate PATH        check one profile folder
+    rockly plugins new NAME [--dir DIR] create a working skeleton profile to start from
+    rockly plugins reference            print the profile.yaml reference (Markdown)
     rockly export PROGRAM -o OUT.py     write the Python generated from a program
     rockly run PROGRAM [--answer A]...  run a program on the simulator, without a window
     rockly sim PROFILE --ros            the profile's simulated robot as a ROS 1 node
@@ -28,6 +30,10 @@ def _tool_parser() -> argparse.ArgumentParser:
     plugin_commands.add_parser("list", help="list installed robot profiles")
     validate = plugin_commands.add_parser("validate", help="check a robot profile folder")
     validate.add_argument("path", type=Path)
+    new = plugin_commands.add_parser("new", help="create a working skeleton robot profile")
+    new.add_argument("name", help="the profile id: lower-case letters, digits and _, e.g. my_robot")
+    new.add_argument("--dir", type=Path, help="create it in DIR/NAME (default: your profile folder)")
+    plugin_commands.add_parser("reference", help="print the profile.yaml reference (Markdown)")
 
     export = commands.add_parser("export", help="write the Python generated from a program")
     export.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
@@ -89,6 +95,26 @@ def _plugins_validate(path: Path) -> int:
     return 0
 
 
+def _plugins_new(name: str, folder: Path) -> int:
+    from rockly_desktop.core.errors import RocklyError
+    from rockly_desktop.plugins.skeleton import ProfileNameRefused, create_profile, next_steps
+
+    try:
+        profile_dir = create_profile(name, folder)
+    except RocklyError as error:
+        print(f"rockly plugins new: {error}", file=sys.stderr)
+        return 2 if isinstance(error, ProfileNameRefused) else 1
+    print(next_steps(profile_dir))
+    return 0
+
+
+def _plugins_reference() -> int:
+    from rockly_desktop.plugins.reference import manifest_reference_markdown
+
+    print(manifest_reference_markdown(), end="")
+    return 0
+
+
 def _export(program_path: Path, output: Path, language: str) -> int:
     if not os.environ.get("QT_QPA_PLATFORM"):
         os.environ["QT_QPA_PLATFORM"] = "offscreen"  # no window: works over ssh and in CI
@@ -133,6 +159,10 @@ def main(argv=None) -> int:
     if argv and argv[0] in SUBCOMMANDS:
         args = _tool_parser().parse_args(argv)
         if args.command == "plugins":
+            if args.plugin_command == "new":
+                return _plugins_new(args.name, args.dir)
+            if args.plugin_command == "reference":
+                return _plugins_reference()
             return _plugins_list() if args.plugin_command == "list" else _plugins_validate(args.path)
         if args.command == "run":
             from rockly_desktop.run_command import run_program
@@ -144,13 +174,15 @@ def main(argv=None) -> int:
             return serve_simulator(args.profile, args.master, args.speed, args.answer)
         return _export(args.program, args.output, args.language)
     args = _gui_parser().parse_args(argv)
-    return gui_main(args.program)
+    from rockly_desktop.app import run_gui
+
+    return run_gui(args.program)
 
 
 def gui_main(program=None) -> int:
-    """Entry point of ``rockly-gui`` (the desktop launcher): the editor window."""
+    """Entry point of ``rockly-gui`` (the desktop launcher): the editor window, with an optional program."""
     from rockly_desktop.app import run_gui
 
-    if program is None and len(sys.argv) > 1 and not sys.argv[1].startswith("-"):
-        program = Path(sys.argv[1])
+    if program is None:
+        program = _gui_parser().parse_args(sys.argv[1:]).program
     return run_gui(program)

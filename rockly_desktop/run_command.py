@@ -108,7 +108,8 @@ def _report_end(result: RunFinished, types: dict) -> int:
     return 1
 
 
-def serve_simulator(profile_id: str, master_uri=None, speed: float = 1.0, answers=(), out=print) -> int:
+def serve_simulator(profile_id: str, master_uri=None, speed: float = 1.0, answers=(),
+                    out=lambda text: print(text, flush=True)) -> int:
     """``rockly sim PROFILE --ros``: the profile's simulator as a ROS node until Ctrl+C (exit 0)."""
     import threading
 
@@ -124,14 +125,15 @@ def serve_simulator(profile_id: str, master_uri=None, speed: float = 1.0, answer
     profile = registry.get(profile_id)
     stop = threading.Event()
     previous = signal.signal(signal.SIGINT, lambda *_: stop.set())
-    signal.signal(signal.SIGTERM, lambda *_: stop.set())
+    previous_term = signal.signal(signal.SIGTERM, lambda *_: stop.set())
     try:
         types = MessageTypes(profile_message_folders(profile))
         run_simulator_node(profile, types, master_uri, speed, AnswerList(answers, out), stop,
-                           on_ready=lambda: out(f"simulated {profile.display_name()} is up on ROS (Ctrl+C ends it)", flush=True))
+                           on_ready=lambda: out(f"simulated {profile.display_name()} is up on ROS (Ctrl+C ends it)"))
     except RocklyError as error:
         print(f"rockly sim: {error}", file=sys.stderr)
         return 1
     finally:
         signal.signal(signal.SIGINT, previous)
+        signal.signal(signal.SIGTERM, previous_term)
     return 0

@@ -9,11 +9,14 @@ integrity='sha512-qAHFGMGTSF67Lupr3pjZz9LQu4JCFdN76CMZxegBKiveZreK08yXhaCz0g9q9/
 here=$(cd "$(dirname "$0")/.." && pwd)
 dest="$here/resources/blockly/vendor"
 stamp="$dest/.version"
-if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$version" ]; then exit 0; fi
+if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$version" ]; then touch "$stamp"; exit 0; fi
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-(cd "$work" && npm pack --silent "blockly@$version" >/dev/null 2>&1)
+if ! (cd "$work" && npm pack --silent "blockly@$version" >/dev/null); then
+  echo "Could not fetch Blockly $version with npm pack (is the npm registry reachable?)" >&2
+  exit 1
+fi
 tarball="$work/blockly-$version.tgz"
 actual="sha512-$(python3 -c 'import base64, hashlib, sys; print(base64.b64encode(hashlib.sha512(open(sys.argv[1], "rb").read()).digest()).decode())' "$tarball")"
 if [ "$actual" != "$integrity" ]; then

@@ -214,7 +214,6 @@ class SimBackend(RobotBackend):
 
     def __init__(self, world: SimWorld, interrupt):
         self._world = world
-        self._interrupt = interrupt
         self.interrupt = interrupt
 
     def subscribe(self, topic: str, msg_type: str, callback):
@@ -244,7 +243,7 @@ class SimBackend(RobotBackend):
         """Call ``name``, waiting up to ``timeout`` s for it to be advertised; RobotTimeout if it never is."""
         if not self.wait_until(lambda: self._world.has_service(name), timeout):
             raise RobotTimeout(f"the service '{name}' is not available (waited {timeout:g} s)")
-        return self._world.call_service(name, request, self._interrupt)
+        return self._world.call_service(name, request, self.interrupt)
 
     def send_goal(self, action: str, action_type: str, goal: dict, feedback=None) -> GoalHandle:
         """Start ``goal`` on the action server ``action``; RobotCommandError if there is none."""
@@ -256,13 +255,13 @@ class SimBackend(RobotBackend):
 
     def sleep(self, seconds: float) -> None:
         """Wait ``seconds``; a stop request raises ProgramStopped."""
-        self._interrupt.sleep(seconds)
+        self.interrupt.sleep(seconds)
 
     def wait_until(self, predicate, timeout: float) -> bool:
         """Wait until ``predicate()`` holds (True) or ``timeout`` passes (False); a stop request raises."""
         deadline = time.monotonic() + timeout
         while True:
-            self._interrupt.check()
+            self.interrupt.check()
             remaining = deadline - time.monotonic()
             if self._world.wait_for(predicate, min(POLL_SECONDS, max(0.0, remaining))):
                 return True

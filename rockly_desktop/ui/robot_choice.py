@@ -36,6 +36,8 @@ class RobotChoice(QObject):
         window = self.window
         key = (self.kind, window.profile.id)
         if key not in self._robots:
+            for other in [k for k in self._robots if k[0] == SIMULATOR and k != key]:
+                self._robots.pop(other).shutdown()  # one simulator ticking at a time
             if self.kind == SIMULATOR:
                 window.tablet.robot_name = window.profile.display_name(window.language)
                 self._robots[key] = SimulatedRobot(window.profile, tablet=window.tablet, speed=window.simulator_speed)
