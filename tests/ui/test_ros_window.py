@@ -73,3 +73,23 @@ def test_health_turns_red_within_2_s_when_the_master_dies_and_green_when_it_retu
     finally:
         ros_master.start()
     qtbot.waitUntil(lambda: health.level == "green", timeout=10000)
+
+
+def test_state_panels_and_topic_monitor_show_the_ros_robot(qtbot, ros_window):
+    ros_window.editor.call_blocking("load", {"workspace": workspace(stack(
+        block("hobbit_emo", {"emotion": "WONDERING"}), block("hobbit_head", {"head_position": "up_right"}),
+        block("hobbit_arm_move", {"movement": "MoveToTray"})))})
+    with qtbot.waitSignal(ros_window.runs.sig_finished, timeout=30000) as blocker:
+        ros_window.runs.run()
+    assert blocker.args[0].outcome == "finished"
+    panels = ros_window.state_dock.widget()
+    qtbot.waitUntil(lambda: panels.values()["Emotion"] == "WONDERING" and panels.values()["Looking"] == "up_right"
+                    and panels.values()["Last command"] == "MoveToTray" and panels.values()["Command state"] == "done",
+                    timeout=5000)
+    assert panels.values()["Charge"].endswith("%") and panels.values()["Position x"].endswith(" m")
+    monitor = ros_window.monitor_dock.widget()
+    qtbot.waitUntil(lambda: monitor.refresh() or monitor.table_model.row_of("/odom") is not None, timeout=5000)
+    row = monitor.table_model.row_of("/odom")
+    cells = [monitor.table_model.index(row, column).data() for column in range(monitor.table_model.columnCount())]
+    assert cells[1] == "nav_msgs/Odometry" and cells[2] == "1"
+    assert float(cells[3]) == pytest.approx(30.0, rel=0.10)
