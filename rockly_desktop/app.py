@@ -75,3 +75,36 @@ def run_gui(open_path=None) -> int:
     window.show()
     window.start(open_path)
     return app.exec()
+
+
+def generate_headless(program_path, language: str = "en"):
+    """Read a program file and let a windowless editor generate its Python.
+
+    Returns (ProgramToOpen, plain Python, instrumented run code, workspace JSON). Raises
+    RocklyError with a message for people: a bad file, no profile, unknown blocks, or a
+    program Blockly refuses.
+    """
+    if not os.environ.get("QT_QPA_PLATFORM"):
+        os.environ["QT_QPA_PLATFORM"] = "offscreen"  # no window: works over ssh and in CI
+    from rockly_desktop.bridge.headless import HeadlessEditor, UnknownBlocks
+    from rockly_desktop.core.errors import RocklyError
+    from rockly_desktop.plugins.opening import read_program_to_open, unknown_blocks_error
+    from rockly_desktop.plugins.registry import ProfileRegistry
+
+    create_application()
+    registry = ProfileRegistry.discover()
+    if not registry.profiles:
+        raise RocklyError("no robot profile is installed")
+    program = read_program_to_open(program_path, registry, registry.default())
+    editor = HeadlessEditor(language)
+    try:
+        python = editor.python_for(program)
+        run_code = editor.view.call_blocking("getRunCode")
+        workspace = editor.view.call_blocking("getState")["workspace"]
+    except UnknownBlocks as refused:
+        raise unknown_blocks_error(program, refused.block_types, registry) from None
+    except RuntimeError as error:
+        raise RocklyError(f"{program_path}: the editor could not load this program ({error})") from None
+    finally:
+        editor.close()
+    return program, python, run_code, workspace

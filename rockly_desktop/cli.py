@@ -116,38 +116,17 @@ def _plugins_reference() -> int:
 
 
 def _export(program_path: Path, output: Path, language: str) -> int:
-    if not os.environ.get("QT_QPA_PLATFORM"):
-        os.environ["QT_QPA_PLATFORM"] = "offscreen"  # no window: works over ssh and in CI
-    from rockly_desktop.app import create_application
-    from rockly_desktop.bridge.headless import HeadlessEditor, UnknownBlocks
+    from rockly_desktop.app import generate_headless
     from rockly_desktop.core.errors import RocklyError
     from rockly_desktop.core.export import python_module_text
     from rockly_desktop.core.program import write_text_atomically
-    from rockly_desktop.plugins.opening import read_program_to_open, unknown_blocks_error
-    from rockly_desktop.plugins.registry import ProfileRegistry
 
-    create_application()
-    registry = ProfileRegistry.discover()
-    if not registry.profiles:
-        print("rockly export: no robot profile is installed", file=sys.stderr)
-        return 2
     try:
-        program = read_program_to_open(program_path, registry, registry.default())
+        program, python, _run_code, _workspace = generate_headless(program_path, language)
+        write_text_atomically(output, python_module_text(python, program.profile.id, program_path.name))
     except RocklyError as error:
         print(f"rockly export: {error}", file=sys.stderr)
         return 1
-    editor = HeadlessEditor(language)
-    try:
-        code = editor.python_for(program)
-        write_text_atomically(output, python_module_text(code, program.profile.id, program_path.name))
-    except UnknownBlocks as refused:
-        print(f"rockly export: {unknown_blocks_error(program, refused.block_types, registry)}", file=sys.stderr)
-        return 1
-    except (RocklyError, RuntimeError) as error:
-        print(f"rockly export: {error}", file=sys.stderr)
-        return 1
-    finally:
-        editor.close()
     print(f"Wrote {output}")
     return 0
 

@@ -4,7 +4,6 @@ Prints one line per block it enters (id and type) and what the program prints; t
 questions are answered from ``--answer`` options in the order they come. Ctrl+C stops
 the program (with the robot's safe stop). Exit status: 0 finished, 1 error, 130 stopped.
 """
-import os
 import signal
 import sys
 
@@ -44,33 +43,14 @@ class AnswerList:
 def run_program(program_path, answers=(), speed: float = 1.0, language: str = "en", out=print,
                 backend: str = "sim", master_uri: str = None) -> int:
     """Run ``program_path`` headless on its profile's simulator (or on ROS 1); returns the exit status."""
-    if not os.environ.get("QT_QPA_PLATFORM"):
-        os.environ["QT_QPA_PLATFORM"] = "offscreen"
-    from rockly_desktop.app import create_application
-    from rockly_desktop.bridge.headless import HeadlessEditor, UnknownBlocks
-    from rockly_desktop.plugins.opening import read_program_to_open, unknown_blocks_error
-    from rockly_desktop.plugins.registry import ProfileRegistry
+    from rockly_desktop.app import generate_headless
 
-    create_application()
-    registry = ProfileRegistry.discover()
     try:
-        program = read_program_to_open(program_path, registry, registry.default())
+        program, _python, run_code, workspace = generate_headless(program_path, language)
     except RocklyError as error:
         print(f"rockly run: {error}", file=sys.stderr)
         return 1
-    editor = HeadlessEditor(language)
-    try:
-        editor.python_for(program)
-        run_code = editor.view.call_blocking("getRunCode")
-        types = block_types_by_id(editor.view.call_blocking("getState")["workspace"])
-    except UnknownBlocks as refused:
-        print(f"rockly run: {unknown_blocks_error(program, refused.block_types, registry)}", file=sys.stderr)
-        return 1
-    except RuntimeError as error:
-        print(f"rockly run: {program_path}: the editor could not load this program ({error})", file=sys.stderr)
-        return 1
-    finally:
-        editor.close()
+    types = block_types_by_id(workspace)
     try:
         if backend == "ros1":
             robot = RosRobot(program.profile, master_uri)

@@ -1,0 +1,247 @@
+"""``rockly plugins new NAME``: a small robot profile that works, as a starting point.
+
+The profile's files are templates kept here as data (``SKELETON_FILES``) and rendered
+with the name: ``$name`` (the profile id), ``$Title`` (shown to people) and ``$Class``
+(the start of its Python class names). The robot it describes has one command,
+``robot.say(text)``, which publishes a ``std_msgs/String`` on ``/NAME/say``; its
+simulator remembers the last text said. A folder that cannot be written completely is
+removed again.
+"""
+import importlib.util
+import re
+import shutil
+import string
+from pathlib import Path
+
+from rockly_desktop.core import paths
+from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.plugins.registry import ProfileRegistry
+
+# The manifest's rule for ``id`` (plugins/manifest.py), said once more to refuse a name before writing.
+_PROFILE_ID = re.compile(r"[a-z][a-z0-9_]{0,39}")
+
+SKELETON_FILES = {
+    "profile.yaml": '''\
+# The $Title robot profile, made by `rockly plugins new $name`.
+# Every field is explained in Rockly's docs/writing-a-robot-profile.md.
+schema: 1
+id: "$name"
+name: "$Title"
+version: "0.1.0"
+description:
+  en: "$Title says what it is told."
+  de: "$Title sagt, was man ihm sagt."
+languages: [en, de]
+blocks: blocks.yaml
+toolbox: toolbox.yaml
+api: rockly_$name.api:${Class}Commands
+simulator: rockly_$name.sim:Sim$Class
+ros_interface:
+  subscribes:
+    /$name/say: std_msgs/String
+    /$name/stop: std_msgs/Empty
+safe_stop:
+  - publish: {topic: /$name/stop, type: std_msgs/Empty, message: {}}
+state:
+  - panel: {en: Speech, de: Sprache}
+    rows:
+      - {label: {en: Last said, de: Zuletzt gesagt}, topic: /$name/say, field: data}
+''',
+    "blocks.yaml": '''\
+# $Title's blocks. Each block's `python` is the command it becomes (see rockly_$name/api.py).
+
+blocks:
+  - type: ${name}_say
+    message0: {en: "say %1", de: "sage %1"}
+    args0:
+      - {type: input_value, name: text, check: String}
+    previousStatement: null
+    nextStatement: null
+    colour: "#3d7fd6"
+    tooltip: {en: "$Title says this text.", de: "$Title sagt diesen Text."}
+    python:
+      code: "robot.say({text})"
+      defaults: {text: ""}
+''',
+    "toolbox.yaml": '''\
+categories:
+  - name: "$Title"
+    colour: "#3d7fd6"
+    blocks:
+      - type: ${name}_say
+        inputs: {text: {shadow: {type: text, fields: {TEXT: "Hello!"}}}}
+  - shared: logic
+  - shared: loops
+  - shared: math
+  - shared: text
+  - shared: variables
+''',
+    "rockly_$name/__init__.py": '''\
+"""$Title: a Rockly robot profile."""
+''',
+    "rockly_$name/api.py": '''\
+"""$Title's commands, bound as ``robot`` in programs::
+
+    robot.say('Hello!')
+"""
+from rockly_desktop.sdk import RobotCommands
+
+SAY_TOPIC, SAY_TYPE = "/$name/say", "std_msgs/String"
+
+
+class ${Class}Commands(RobotCommands):
+    """Commands for $Title."""
+
+    def say(self, text):
+        """Say ``text`` (published as a std_msgs/String on /$name/say)."""
+        self.backend.publish(SAY_TOPIC, SAY_TYPE, {"data": str(text)})
+''',
+    "rockly_$name/sim.py": '''\
+"""The simulated $Title: it listens where the real robot listens and remembers what it heard."""
+import threading
+
+SAY_TOPIC = "/$name/say"
+STOP_TOPIC = "/$name/stop"
+
+
+class Sim$Class:
+    """A simulated $Title in a SimWorld; ``tablet`` and ``speed`` are not needed by this robot."""
+
+    def __init__(self, world, tablet=None, speed=1.0):
+        self._world = world
+        self._lock = threading.Lock()
+        self._said = None
+        self._stops = 0
+        self._unsubscribe = []
+
+    def start(self):
+        """Listen on the robot's topics."""
+        self._unsubscribe = [self._world.subscribe(SAY_TOPIC, self._on_say),
+                             self._world.subscribe(STOP_TOPIC, self._on_stop)]
+
+    def shutdown(self):
+        """Stop listening."""
+        for unsubscribe in self._unsubscribe:
+            unsubscribe()
+        self._unsubscribe = []
+
+    def snapshot(self) -> dict:
+        """The robot's state: the last text said (None before the first) and how often it was stopped."""
+        with self._lock:
+            return {"said": self._said, "stops": self._stops}
+
+    def _on_say(self, message):
+        with self._lock:
+            self._said = message.get("data", "")
+
+    def _on_stop(self, message):
+        with self._lock:
+            self._stops += 1
+''',
+    "tests/test_$name.py": '''\
+"""$Title's profile works: it loads, its blocks call real commands, and the simulator hears them.
+
+Run it with the Python that has Rockly installed: ``python -m pytest tests``.
+"""
+from pathlib import Path
+
+from rockly_desktop.core import paths
+from rockly_desktop.plugins.checks import check_commands
+from rockly_desktop.plugins.profile import load_profile
+from rockly_desktop.robot.interrupt import Interrupt
+from rockly_desktop.robot.safe_stop import run_safe_stop
+from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+
+PROFILE_DIR = Path(__file__).resolve().parents[1]
+
+
+def load():
+    return load_profile(PROFILE_DIR, paths.shared_toolboxes_dir())
+
+
+def test_the_profile_loads_and_its_blocks_call_real_commands():
+    profile = load()
+    assert profile.id == "$name"
+    check_commands(profile)
+
+
+def test_the_simulator_hears_what_the_robot_is_told_to_say_and_the_safe_stop():
+    profile = load()
+    world = SimWorld()
+    simulator = profile.load_object("simulator")(world, tablet=None, speed=1.0)
+    simulator.start()
+    try:
+        backend = SimBackend(world, Interrupt())
+        robot = profile.load_object("api")(backend)
+        robot.say("Hello!")
+        assert simulator.snapshot() == {"said": "Hello!", "stops": 0}
+        assert run_safe_stop(profile.manifest["safe_stop"], backend) == []
+        assert simulator.snapshot() == {"said": "Hello!", "stops": 1}
+    finally:
+        simulator.shutdown()
+''',
+}
+
+
+class ProfileNameRefused(RocklyError):
+    """The name cannot be a new profile's id; the message says why."""
+
+
+def _check_name(name: str) -> None:
+    if not _PROFILE_ID.fullmatch(name):
+        raise ProfileNameRefused(f"'{name}' is not a profile id: use lower-case letters, digits and '_', "
+                                 f"starting with a letter (at most 40), e.g. my_robot")
+    package = f"rockly_{name}"
+    if importlib.util.find_spec(package) is not None:
+        raise ProfileNameRefused(f"'{name}' would name the profile's package {package}, which is already "
+                                 f"importable here; choose another name")
+    installed = ProfileRegistry.discover().profiles.get(name)
+    if installed is not None:
+        raise ProfileNameRefused(f"a profile with the id '{name}' is already installed ({installed.source}, "
+                                 f"{installed.root}); choose another name")
+
+
+def render(name: str) -> dict:
+    """The skeleton's files for the profile ``name``: {relative path: text}."""
+    words = [part for part in name.split("_") if part]
+    names = {"name": name, "Title": " ".join(word.capitalize() for word in words),
+             "Class": "".join(word.capitalize() for word in words)}
+    return {string.Template(path).substitute(names): string.Template(text).substitute(names)
+            for path, text in SKELETON_FILES.items()}
+
+
+def create_profile(name: str, parent: Path = None) -> Path:
+    """Write the skeleton profile ``name`` to ``parent/name`` (default: the user's profile folder).
+
+    Raises ProfileNameRefused for a name that cannot be a new profile's id, and
+    RocklyError when the folder exists already or cannot be written.
+    """
+    _check_name(name)
+    parent = Path(parent) if parent is not None else paths.user_profiles_dir()
+    target = parent / name
+    if target.exists():
+        raise RocklyError(f"{target} exists already; nothing was changed (choose another name or folder)")
+    created = False
+    try:
+        parent.mkdir(parents=True, exist_ok=True)
+        target.mkdir()
+        created = True
+        for relative, text in render(name).items():
+            path = target / relative
+            path.parent.mkdir(parents=True, exist_ok=True)
+            path.write_text(text, encoding="utf-8")
+    except OSError as error:
+        if created:
+            shutil.rmtree(target, ignore_errors=True)
+        raise RocklyError(f"cannot create {target}: {error}") from None
+    return target
+
+
+def next_steps(folder: Path) -> str:
+    """What to tell the person who just made the profile in ``folder``."""
+    lines = [f"Created the robot profile '{folder.name}' in {folder}", "Next:",
+             f"  rockly plugins validate {folder}", f"  python -m pytest {folder / 'tests'}"]
+    if folder.parent.resolve() != paths.user_profiles_dir().resolve():
+        lines.append(f"Rockly finds it once the folder is in {paths.user_profiles_dir()} "
+                     f"(see docs/writing-a-robot-profile.md)")
+    return "\n".join(lines)
