@@ -106,7 +106,11 @@ class ProgramRunner:
                         **namespace, "__rockly__": self.hooks, "print": self._print}
 
     def _print(self, *values, sep=" ", end="\n", **_ignored):
-        for line in (sep.join(str(value) for value in values)).splitlines() or [""]:
+        self.show_output(sep.join(str(value) for value in values))
+
+    def show_output(self, text: str):
+        """Show ``text`` in the run's output, one event per line."""
+        for line in str(text).splitlines() or [""]:
             self._emit(OutputPrinted(line))
 
     def variables_snapshot(self) -> dict:

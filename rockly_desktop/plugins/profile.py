@@ -8,7 +8,7 @@ from rockly_desktop.core.errors import ManifestError
 from rockly_desktop.plugins.blocks import BlockSpec, read_blocks
 from rockly_desktop.plugins.i18n import localize
 from rockly_desktop.plugins.manifest import MANIFEST_NAME, read_manifest
-from rockly_desktop.plugins.toolbox import read_toolbox, toolbox_json
+from rockly_desktop.plugins.toolbox import read_toolbox, shared_definition_files, toolbox_json
 
 
 @dataclass(frozen=True, eq=False)
@@ -88,6 +88,14 @@ def load_profile(profile_dir: Path, shared_toolboxes: Path, source: str = "folde
     manifest = read_manifest(profile_dir)
     blocks = read_blocks(profile_dir / manifest["blocks"])
     categories = read_toolbox(profile_dir / manifest["toolbox"], shared_toolboxes, {spec.type for spec in blocks})
+    own_types = {spec.type for spec in blocks}
+    for definitions in shared_definition_files(categories, shared_toolboxes):
+        shared = read_blocks(definitions)
+        clash = own_types & {spec.type for spec in shared}
+        if clash:
+            raise ManifestError(profile_dir / manifest["blocks"], f"blocks[{sorted(clash)[0]}]",
+                                f"is also defined by the shared blocks in {definitions.name}")
+        blocks += shared
     return Profile(
         id=manifest["id"], name=manifest["name"], version=manifest["version"], root=profile_dir,
         source=source, manifest=manifest, blocks=blocks, toolbox_categories=categories,

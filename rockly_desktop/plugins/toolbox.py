@@ -12,7 +12,8 @@ A profile's ``toolbox.yaml``::
       - shared: logic                         # toolboxes/logic.yaml
 
 A shared category file has ``name``, ``colour`` and either ``blocks`` or ``custom``
-(Blockly's dynamic VARIABLE / PROCEDURE categories).
+(Blockly's dynamic VARIABLE / PROCEDURE categories); ``definitions: FILE`` names a block
+file in ``toolboxes/`` whose blocks come with the category (the generic ROS blocks).
 """
 from pathlib import Path
 
@@ -33,6 +34,8 @@ def _category(raw, path: Path, where: str) -> dict:
     if not isinstance(raw, dict) or "name" not in raw:
         raise ManifestError(path, where, "a category needs a 'name'")
     category = {"kind": "category", "name": raw["name"]}
+    if "definitions" in raw:  # a shared category may bring its own block definitions
+        category["definitions"] = str(raw["definitions"])
     if "colour" in raw:
         category["colour"] = str(raw["colour"])
     if "custom" in raw:
@@ -80,6 +83,12 @@ def read_toolbox(path: Path, shared_folder: Path, profile_block_types: set) -> l
     return categories
 
 
+def shared_definition_files(categories: list, shared_folder: Path) -> list:
+    """Block files that shared categories in ``categories`` bring along (``definitions:``)."""
+    return [shared_folder / category["definitions"] for category in categories if "definitions" in category]
+
+
 def toolbox_json(categories: list, language: str) -> dict:
     """Blockly's category toolbox JSON with texts in ``language``."""
-    return {"kind": "categoryToolbox", "contents": localize(categories, language)}
+    contents = [{key: value for key, value in category.items() if key != "definitions"} for category in categories]
+    return {"kind": "categoryToolbox", "contents": localize(contents, language)}

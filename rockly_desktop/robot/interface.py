@@ -90,5 +90,13 @@ class RobotBackend(ABC):
         """Cancel every active goal on the action server ``action``, whoever sent it (actionlib's cancel_all_goals)."""
 
     @abstractmethod
+    def get_param(self, name: str, default=None):
+        """A ROS parameter's value, or ``default`` when it is not set."""
+
+    @abstractmethod
+    def set_param(self, name: str, value) -> None:
+        """Set a ROS parameter."""
+
+    @abstractmethod
     def sleep(self, seconds: float) -> None:
         """Wait ``seconds``; returns early only by raising when the program is stopped."""

@@ -48,6 +48,7 @@ class SimWorld:
         self._actions = {}
         self._goals = set()
         self._taps = []
+        self.params = {}  # the parameter server of the simulated robot
 
     def tap(self, callback):
         """Also show ``callback(topic, msg_type, message)`` everything that happens in the world.
@@ -252,6 +253,14 @@ class SimBackend(RobotBackend):
     def cancel_all_goals(self, action: str) -> None:
         """Cancel every active goal on ``action``, whoever sent it (as actionlib's cancel_all_goals)."""
         self._world.cancel_goals(action)
+
+    def get_param(self, name: str, default=None):
+        """A parameter of the simulated world, or ``default``."""
+        return self._world.params.get(name, default)
+
+    def set_param(self, name: str, value) -> None:
+        """Set a parameter of the simulated world."""
+        self._world.params[name] = value
 
     def sleep(self, seconds: float) -> None:
         """Wait ``seconds``; a stop request raises ProgramStopped."""

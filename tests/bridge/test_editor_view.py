@@ -32,7 +32,7 @@ def call(qtbot, view, name, args=None):
 
 def test_editor_starts_with_the_hobbit_toolbox(qtbot, editor, hobbit):
     assert toolbox_names(qtbot, editor) == [
-        "Drive", "Head", "Arm", "Tablet", "Sensors", "Time", "ROS",
+        "Drive", "Head", "Arm", "Tablet", "Sensors", "Time", "Expert", "ROS",
         "Logic", "Loops", "Math", "Text", "Lists", "Variables", "Functions"]
     assert hobbit.block_types <= editor.known_block_types
 

@@ -61,6 +61,40 @@ EXPRESSIONS = [
 ]
 
 
+ROS_STATEMENTS = [
+    (block("ros_publish_value", {"message_type": "Int64"}, {"value": number(3), "topic": text("/count")}),
+     "ros.publish('/count', 'Int64', 3)"),
+    (block("ros_publish_message", inputs={"topic": text("/cmd_vel"), "message_type": text("geometry_msgs/Twist"),
+                                          "fields": text('{"linear": {"x": 0.1}}')}),
+     "ros.publish_message('/cmd_vel', 'geometry_msgs/Twist', '{\"linear\": {\"x\": 0.1}}')"),
+    (block("ros_cancel_goals", inputs={"action": text("move_base")}), "ros.cancel_goals('move_base')"),
+    (block("ros_set_param", inputs={"name": text("/speed"), "value": number(2)}), "ros.set_param('/speed', 2)"),
+    (block("ros_wait", inputs={"seconds": number(2)}), "ros.wait(2)"),
+    (block("ros_log", {"level": "warn"}, {"text": text("careful")}), "ros.log('warn', 'careful')"),
+]
+ROS_EXPRESSIONS = [
+    (block("ros_wait_message", inputs={"topic": text("/odom"), "timeout": number(5)}), "ros.wait_for_message('/odom', 5)"),
+    (block("ros_message_field", inputs={"path": text("pose.pose.position.x"),
+                                        "message": block("ros_wait_message", inputs={"topic": text("/odom")})}),
+     "ros.field(ros.wait_for_message('/odom', 10), 'pose.pose.position.x')"),
+    (block("ros_call_service", inputs={"name": text("/trigger"), "service_type": text("std_srvs/Trigger"),
+                                       "request": text("{}")}), "ros.call_service('/trigger', 'std_srvs/Trigger', '{}')"),
+    (block("ros_send_goal", inputs={"action": text("hobbit_arm"), "action_type": text("hobbit_msgs/ArmServerAction"),
+                                    "goal": text("{}")}), "ros.send_goal('hobbit_arm', 'hobbit_msgs/ArmServerAction', '{}')"),
+    (block("ros_get_param", inputs={"name": text("/speed")}), "ros.get_param('/speed')"),
+]
+
+
+@pytest.mark.parametrize(("program", "expected"), ROS_STATEMENTS, ids=[b["type"] for b, _ in ROS_STATEMENTS])
+def test_generic_ros_statement_blocks(headless_editor, hobbit, program, expected):
+    assert generate(headless_editor, hobbit, program).strip() == expected
+
+
+@pytest.mark.parametrize(("expression", "expected"), ROS_EXPRESSIONS, ids=[b["type"] for b, _ in ROS_EXPRESSIONS])
+def test_generic_ros_value_blocks(headless_editor, hobbit, expression, expected):
+    assert generate(headless_editor, hobbit, block("text_print", inputs={"TEXT": expression})).strip() == f"print({expected})"
+
+
 @pytest.mark.parametrize(("expression", "expected"), EXPRESSIONS, ids=[b["type"] for b, _ in EXPRESSIONS])
 def test_sensor_blocks_become_their_queries(headless_editor, hobbit, expression, expected):
     assert generate(headless_editor, hobbit, block("text_print", inputs={"TEXT": expression})).strip() == f"print({expected})"
@@ -111,7 +145,7 @@ def test_the_thesis_pick_up_program(headless_editor, hobbit):
 
 
 def test_every_hobbit_block_is_covered_here(hobbit):
-    covered = ({b["type"] for b, _ in STATEMENTS + EXPRESSIONS}
+    covered = ({b["type"] for b, _ in STATEMENTS + EXPRESSIONS + ROS_STATEMENTS + ROS_EXPRESSIONS}
                | {"hobbit_yes_no", "hobbit_user_input", "hobbit_call_service"})
     assert covered == hobbit.block_types
 

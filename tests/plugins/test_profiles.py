@@ -169,7 +169,7 @@ def test_unknown_shared_category_lists_the_available_ones(profile):
     profile.edit("toolbox.yaml", lambda data: data["categories"].append({"shared": "robots"}))
     count = len(profile.read("toolbox.yaml")["categories"])
     assert_error(profile, "toolbox.yaml", f"categories[{count - 1}].shared",
-                 "no shared category 'robots' (there are: functions, lists, logic, loops, math, text, variables)")
+                 "no shared category 'robots' (there are: functions, lists, logic, loops, math, ros, text, variables)")
 
 
 @pytest.mark.parametrize("entry", ["hobbit_fly", {"type": "hobbit_fly", "inputs": {}}], ids=["by name", "as mapping"])
@@ -392,7 +392,7 @@ def test_every_block_has_german_texts(hobbit):
 
 
 # ROS type names are the same words in every language.
-UNTRANSLATED_DROPDOWNS = {("ROS_publisher", "message_type")}
+UNTRANSLATED_DROPDOWNS = {("ROS_publisher", "message_type"), ("ros_publish_value", "message_type")}  # ROS type names
 
 
 def test_every_dropdown_label_has_german(hobbit):
@@ -433,7 +433,7 @@ def test_toolbox_shadows_fill_real_value_inputs(hobbit):
 
 def test_toolbox_names_are_translated_and_shared_categories_resolved(hobbit):
     names = [localize(category["name"], "de") for category in hobbit.toolbox_categories]
-    assert names == ["Fahren", "Kopf", "Arm", "Tablet", "Sensoren", "Zeit", "ROS",
+    assert names == ["Fahren", "Kopf", "Arm", "Tablet", "Sensoren", "Zeit", "Profis", "ROS",
                      "Logik", "Schleifen", "Mathematik", "Text", "Listen", "Variablen", "Funktionen"]
     by_name = {localize(category["name"], "en"): category for category in hobbit.toolbox_categories}
     assert {"kind": "block", "type": "controls_if"} in by_name["Logic"]["contents"]

@@ -300,6 +300,20 @@ class Ros1Backend(RobotBackend):
         """Cancel every goal on the action server: an empty GoalID on ``<action>/cancel``."""
         self.publish(f"{action}/cancel", "actionlib_msgs/GoalID", {})
 
+    def get_param(self, name: str, default=None):
+        """A parameter from the ROS parameter server, or ``default``."""
+        self._check()
+        import rospy
+
+        return rospy.get_param(name, default)
+
+    def set_param(self, name: str, value) -> None:
+        """Set a parameter on the ROS parameter server."""
+        self._check()
+        import rospy
+
+        rospy.set_param(name, value)
+
     def sleep(self, seconds: float) -> None:
         """Wait ``seconds`` (pausable, stoppable)."""
         self.interrupt.sleep(seconds)

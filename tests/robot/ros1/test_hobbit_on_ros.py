@@ -145,3 +145,38 @@ def test_sensor_commands_work_over_ros(hobbit_robot):
 
     with pytest.raises(RobotTimeout, match="no topic '/nowhere'"):
         hobbit_robot.latest_value("/nowhere", "data")
+
+
+def test_generic_ros_commands_over_ros(ros_robot):
+    from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
+    from rockly_desktop.robot.ros_commands import RosCommands
+
+    said = []
+    ros = RosCommands(ros_robot.backend(Interrupt()), say=said.append)
+    heads, stop = record(ros_robot, "/head/move", "std_msgs/String", lambda message: message["data"])
+    ros.publish("/head/move", "String", "down_right")
+    eventually(lambda: heads[-1:] == ["down_right"])
+    stop()
+    odometry = ros.wait_for_message("/odom", 5)                      # from the separate simulator node
+    assert ros.field(odometry, "child_frame_id") == "base_link"
+    response = ros.call_service("/MMUI", "hobbit_msgs/Request",
+                                {"sessionID": "0", "params": [{"name": "type", "value": "D_PLAIN"},
+                                                              {"name": "text", "value": "generic"}]})
+    assert isinstance(response["params"], list)
+    assert ros.send_goal("hobbit_arm", "hobbit_msgs/ArmServerAction", {"command": {"data": "MoveToHome"}}) == "succeeded"
+    outcome = []
+    mover = threading.Thread(target=lambda: outcome.append(
+        ros.send_goal("hobbit_arm", "hobbit_msgs/ArmServerAction", {"command": {"data": "MoveToCandle"}})))
+    mover.start()
+    time.sleep(0.1)  # the goal is on its way; the cancel below is what is measured
+    ros.cancel_goals("hobbit_arm")
+    mover.join(10)
+    assert outcome == ["preempted"]
+    ros.set_param("/rockly_test/speed", 0.25)
+    assert ros.get_param("/rockly_test/speed") == 0.25
+    with pytest.raises(RobotTimeout, match="/no_such_topic"):
+        ros.wait_for_message("/no_such_topic", 0.5)
+    with pytest.raises(RobotTimeout, match="/no_such_service"):
+        ros.call_service("/no_such_service", "std_srvs/Trigger", {}, timeout=0.3)
+    with pytest.raises(RobotCommandError, match="no action server 'no_such_action'"):
+        ros.send_goal("no_such_action", "hobbit_msgs/ArmServerAction", {})

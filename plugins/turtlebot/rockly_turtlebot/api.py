@@ -1,0 +1,307 @@
+"""The TurtleBot's commands, bound as ``robot`` in programs.
+
+They read the same whether generated from blocks or written by hand::
+
+    for _ in range(20):
+        if robot.obstacle_closer_than(0.4, 'ahead'):
+            robot.turn(90, 'left')
+        else:
+            robot.drive(0.2, 'forward')
+
+Everything goes through the robot's standard topics: ``/cmd_vel`` (geometry_msgs/Twist) moves
+it, ``/odom`` (nav_msgs/Odometry) says where it is, ``/scan`` (sensor_msgs/LaserScan) what its
+laser sees and ``/battery_state`` (sensor_msgs/BatteryState) how full its battery is.
+
+``drive``, ``turn`` and ``drive_for`` are closed loops on the odometry: they send velocities
+until ``/odom`` says the robot got there, then stop it. Each new velocity is chosen so the
+robot does not pass the target before the next odometry message (it slows down for the last
+bit), and after stopping they check where the robot really halted and correct the rest. A
+pause halts the robot at once; Continue drives (turns, waits) the rest. Times are the robot's
+own, read from the odometry's time stamps, so a simulator running faster than the clock
+drives the same distances.
+"""
+import math
+import time
+
+from rockly_desktop.sdk import RobotCommandError, RobotCommands, RobotTimeout
+
+CMD_VEL, TWIST = "/cmd_vel", "geometry_msgs/Twist"
+ODOM, ODOMETRY = "/odom", "nav_msgs/Odometry"
+SCAN, LASER_SCAN = "/scan", "sensor_msgs/LaserScan"
+BATTERY, BATTERY_STATE = "/battery_state", "sensor_msgs/BatteryState"
+
+LINEAR_SPEED = 0.15            # m/s for drive()
+ANGULAR_SPEED = 0.8            # rad/s for turn()
+MAX_SPEED = 0.22               # m/s, the TurtleBot3's top speed: drive_for() refuses more
+DISTANCE_TOLERANCE = 0.003     # m: a drive is done this close to its target
+ANGLE_TOLERANCE = math.radians(0.5)
+TIME_TOLERANCE = 1e-3          # s of robot time, for drive_for()
+CORRECTIONS = 10               # at most this many corrections after a motion's stop
+SECTOR = math.radians(15)      # distance() looks this far to each side of its direction
+SENSOR_TIMEOUT = 3.0           # s without odometry or a scan: the robot is not answering
+SETTLE_TIMEOUT = 2.0           # s for the robot to stand still after a stop
+STALL_SECONDS = 1.0            # s of robot time without progress while driving: something blocks it
+STALL_DISTANCE = 0.001         # m ...
+STALL_ANGLE = math.radians(0.25)   # ... or radians that count as progress
+STILL_LINEAR = 1e-3            # m/s and
+STILL_ANGULAR = 1e-3           # rad/s below which odometry says the robot stands still
+
+DIRECTIONS = {"forward": 1.0, "backward": -1.0}
+TURN_DIRECTIONS = {"left": 1.0, "right": -1.0}
+SIDES = {"ahead": 0.0, "left": math.pi / 2, "behind": math.pi, "right": -math.pi / 2}
+
+
+def _wrap(angle):
+    """``angle`` (radians) in [-pi, pi]."""
+    return math.remainder(angle, math.tau)
+
+
+def _seconds(stamp):
+    """A time stamp (float seconds or ``{"secs": .., "nsecs": ..}``) in seconds; 0 when missing."""
+    if isinstance(stamp, dict):
+        return float(stamp.get("secs", 0)) + float(stamp.get("nsecs", 0)) * 1e-9
+    return float(stamp or 0.0)
+
+
+class _Pose:
+    """What one odometry message says: position, heading, velocities, and when (robot time)."""
+
+    __slots__ = ("x", "y", "yaw", "linear", "angular", "time")
+
+    def __init__(self, message):
+        pose = (message.get("pose") or {}).get("pose") or {}
+        position, q = pose.get("position") or {}, pose.get("orientation") or {}
+        twist = (message.get("twist") or {}).get("twist") or {}
+        self.x, self.y = float(position.get("x", 0.0)), float(position.get("y", 0.0))
+        qx, qy, qz, qw = (float(q.get(axis, 0.0)) for axis in "xyzw")
+        self.yaw = math.atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz))
+        self.linear = float((twist.get("linear") or {}).get("x", 0.0))
+        self.angular = float((twist.get("angular") or {}).get("z", 0.0))
+        stamp = _seconds((message.get("header") or {}).get("stamp"))
+        self.time = stamp if stamp > 0 else time.monotonic()   # a robot that stamps nothing: the clock
+
+    @property
+    def still(self):
+        return abs(self.linear) < STILL_LINEAR and abs(self.angular) < STILL_ANGULAR
+
+
+class _Progress:
+    """How far the robot got since ``start``, from the odometry messages given to ``add`` (any thread).
+
+    ``kind`` 'drive': metres along the starting heading; 'turn': radians turned (heading changes
+    added up, so more than half a turn is measured right); 'time': robot seconds passed.
+    ``state`` is replaced as a whole, so a reader always sees one consistent message.
+    """
+
+    def __init__(self, kind, start: _Pose):
+        self._kind = kind
+        self._start = start
+        self._turned = 0.0
+        self.state = (0, 0.0, start, None)   # (messages, done, latest pose, seconds between the last two)
+
+    def add(self, message):
+        count, _done, last, _step = self.state
+        pose = _Pose(message)
+        if self._kind == "drive":
+            start = self._start
+            done = (pose.x - start.x) * math.cos(start.yaw) + (pose.y - start.y) * math.sin(start.yaw)
+        elif self._kind == "turn":
+            self._turned += _wrap(pose.yaw - last.yaw)
+            done = self._turned
+        else:
+            done = pose.time - self._start.time
+        step = pose.time - last.time
+        self.state = (count + 1, done, pose, step if step > 0 else None)
+
+    @property
+    def count(self):
+        return self.state[0]
+
+    @property
+    def done(self):
+        return self.state[1]
+
+
+class TurtleBot(RobotCommands):
+    """Commands for a TurtleBot: drive and turn, its laser's distances, its battery."""
+
+    # --- driving ------------------------------------------------------------------------
+
+    def drive(self, distance, direction="forward"):
+        """Drive ``distance`` metres straight, ``'forward'`` or ``'backward'``, at 0.15 m/s; waits until there.
+
+        Raises a RobotCommandError when something blocks the way (the robot is stopped there).
+        """
+        metres = self.number(distance, "the distance") * self.choose(direction, DIRECTIONS, "direction")
+        self._move("drive", metres)
+
+    def turn(self, angle, direction="left"):
+        """Turn on the spot by ``angle`` degrees, ``'left'`` (counter-clockwise) or ``'right'``; waits until done."""
+        radians = math.radians(self.number(angle, "the angle")) * self.choose(direction, TURN_DIRECTIONS, "direction")
+        self._move("turn", radians)
+
+    def drive_for(self, speed, seconds):
+        """Drive straight at ``speed`` m/s (-0.22 to 0.22; negative is backward) for ``seconds``, then stop."""
+        speed = self.number(speed, "the speed")
+        if abs(speed) > MAX_SPEED + 1e-9:
+            raise RobotCommandError(f"the speed must be between -{MAX_SPEED:g} and {MAX_SPEED:g} m/s "
+                                    f"(the TurtleBot's top speed), not {speed:g}")
+        left = max(0.0, self.number(seconds, "the time"))
+        while left > TIME_TOLERANCE:
+            outcome, done = self._timed_run(speed, left)
+            left -= done
+            if outcome == "paused":
+                self.backend.hold()
+
+    def stop(self):
+        """Stop the wheels at once."""
+        self.backend.publish(CMD_VEL, TWIST, {})
+
+    # --- what the robot senses -----------------------------------------------------------
+
+    def distance(self, direction="ahead"):
+        """Metres to the nearest thing the laser sees ``'ahead'``, ``'left'``, ``'right'`` or ``'behind'``.
+
+        It looks 15 degrees to each side of that direction and measures from the robot's
+        centre. When nothing is in sight (farther than the laser reaches) it is infinity, so
+        ``robot.distance('ahead') < 0.5`` is simply false.
+        """
+        centre = self.choose(direction, SIDES, "direction")
+        scan = self._latest(SCAN, LASER_SCAN)
+        try:
+            angle_min, step = float(scan["angle_min"]), float(scan["angle_increment"])
+            near, far = float(scan["range_min"]), float(scan["range_max"])
+            ranges = scan["ranges"]
+        except (KeyError, TypeError, ValueError):
+            raise RobotCommandError(f"the messages on '{SCAN}' are not laser scans") from None
+        nearest = math.inf
+        for index, value in enumerate(ranges):
+            if abs(_wrap(angle_min + index * step - centre)) > SECTOR + 1e-6:
+                continue
+            if value == -math.inf:          # REP 117: something closer than the laser can measure
+                value = near
+            elif not near <= value <= far:  # nothing there (inf), or not a valid reading (0, nan)
+                continue
+            nearest = min(nearest, float(value))
+        return nearest
+
+    def obstacle_closer_than(self, metres, direction="ahead") -> bool:
+        """True when the laser sees something closer than ``metres`` in that direction (see ``distance``)."""
+        limit = self.number(metres, "the distance")
+        if limit < 0:
+            raise RobotCommandError(f"the distance must not be negative, not {limit:g}")
+        return self.distance(direction) < limit
+
+    def battery_level(self) -> float:
+        """The battery's charge in percent (0-100)."""
+        percentage = self._latest(BATTERY, BATTERY_STATE).get("percentage")
+        if not isinstance(percentage, (int, float)) or not math.isfinite(percentage):
+            raise RobotCommandError("the battery does not report its charge")
+        return float(percentage) * 100
+
+    # --- time ----------------------------------------------------------------------------
+
+    def wait(self, seconds):
+        """Do nothing for ``seconds`` seconds."""
+        self.backend.sleep(max(0.0, self.number(seconds, "the waiting time")))
+
+    # --- helpers -------------------------------------------------------------------------
+
+    def _latest(self, topic, msg_type):
+        """The newest message on ``topic``, waiting briefly for a first one."""
+        message = self.backend.latest(topic, msg_type)
+        if message is None:
+            message = self.backend.wait_for_message(topic, msg_type, SENSOR_TIMEOUT)
+        return message
+
+    def _twist(self, linear=0.0, angular=0.0):
+        self.backend.publish(CMD_VEL, TWIST, {"linear": {"x": float(linear)}, "angular": {"z": float(angular)}})
+
+    def _move(self, kind, amount):
+        """Drive (metres) or turn (radians) ``amount``, correcting after each stop, holding for pauses."""
+        tolerance = DISTANCE_TOLERANCE if kind == "drive" else ANGLE_TOLERANCE
+        remaining, done_total, corrections = amount, 0.0, 0
+        while abs(remaining) > tolerance and corrections <= CORRECTIONS:
+            outcome, done = self._run(kind, remaining, tolerance)
+            remaining -= done
+            done_total += done
+            if outcome == "stalled":
+                if kind == "drive":
+                    raise RobotCommandError(f"something blocks the way: the TurtleBot stopped after "
+                                            f"{abs(done_total):.2f} of {abs(amount):.2f} m")
+                raise RobotCommandError(f"something keeps the TurtleBot from turning: it stopped after "
+                                        f"{abs(math.degrees(done_total)):.0f} of {abs(math.degrees(amount)):.0f} degrees")
+            if outcome == "paused":
+                self.backend.hold()
+            else:
+                corrections += 1
+
+    def _run(self, kind, target, tolerance):
+        """One closed loop toward ``target``: ('reached' | 'paused' | 'stalled', how much was done).
+
+        The robot stands still when it returns (or as still as it got within SETTLE_TIMEOUT).
+        """
+        top = LINEAR_SPEED if kind == "drive" else ANGULAR_SPEED
+        stall_amount = STALL_DISTANCE if kind == "drive" else STALL_ANGLE
+
+        def command(left, step):
+            speed = math.copysign(min(top, abs(left) / step) if step else top, left)
+            if kind == "drive":
+                self._twist(linear=speed)
+            else:
+                self._twist(angular=speed)
+
+        return self._loop(kind, command, lambda left: abs(left) <= tolerance, target, stall_amount)
+
+    def _timed_run(self, speed, seconds):
+        """Drive at ``speed`` for ``seconds`` of robot time: ('reached' | 'paused', seconds driven)."""
+        def command(left, step):
+            # the last odometry step before the end gets only the fraction of the speed it needs
+            self._twist(linear=speed * min(1.0, left / step) if step else speed)
+
+        return self._loop("time", command, lambda left: left <= TIME_TOLERANCE, seconds, None)
+
+    def _loop(self, kind, command, arrived, target, stall_amount):
+        start = _Pose(self._latest(ODOM, ODOMETRY))
+        progress = _Progress(kind, start)
+        unsubscribe = self.backend.subscribe(ODOM, ODOMETRY, progress.add)
+        try:
+            try:
+                outcome = self._follow(progress, command, arrived, target, stall_amount)
+            except RobotCommandError:
+                self._try_to_stop()
+                raise
+            self.stop()
+            stopped_at = progress.count
+            self.backend.wait_until(lambda: progress.count > stopped_at and progress.state[2].still, SETTLE_TIMEOUT)
+            return outcome, progress.done
+        finally:
+            unsubscribe()
+
+    def _follow(self, progress, command, arrived, target, stall_amount):
+        """Send velocities until arrived, paused or stalled; each new odometry message gets a new one."""
+        seen, _, latest, step = progress.state
+        command(target, step)
+        moved_at, moved_done = latest.time, 0.0
+        while True:
+            if not self.backend.wait_until(lambda: progress.count > seen or self.backend.pause_requested(),
+                                           SENSOR_TIMEOUT):
+                raise RobotTimeout(f"no odometry arrived on '{ODOM}' for {SENSOR_TIMEOUT:g} s")
+            if self.backend.pause_requested():
+                return "paused"
+            seen, done, latest, step = progress.state
+            left = target - done
+            if arrived(left):
+                return "reached"
+            if stall_amount is not None:
+                if abs(done - moved_done) > stall_amount:
+                    moved_at, moved_done = latest.time, done
+                elif latest.time - moved_at > STALL_SECONDS:
+                    return "stalled"
+            command(left, step)
+
+    def _try_to_stop(self):
+        try:
+            self.stop()
+        except RobotCommandError:
+            pass  # the error being raised says more than this one

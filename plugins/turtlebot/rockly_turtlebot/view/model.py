@@ -1,0 +1,133 @@
+"""What a snapshot may say, its defaults, and reading it without trusting it.
+
+Any value may be missing, of the wrong type, NaN or endless; the readers here turn each
+into something drawable and never raise.
+"""
+import math
+
+ROOM = (-0.5, -1.5, 3.5, 1.5)
+RADIUS = 0.105
+RANGE_MIN, RANGE_MAX = 0.12, 3.5
+
+DEFAULT_SNAPSHOT = {
+    "x": 0.0, "y": 0.0, "theta": 0.0, "trail": [], "linear": 0.0, "angular": 0.0, "scan": [],
+    "range_min": RANGE_MIN, "range_max": RANGE_MAX, "room": ROOM, "boxes": [], "radius": RADIUS,
+    "bumped": False, "bumps": 0, "battery": 100.0, "voltage": 12.4, "time": 0.0,
+}
+
+
+def merged(snapshot):
+    """The defaults overlaid with ``snapshot`` (anything but a dict counts as empty)."""
+    result = dict(DEFAULT_SNAPSHOT)
+    if isinstance(snapshot, dict):
+        result.update(snapshot)
+    return result
+
+
+def num(value, default=0.0, lo=None, hi=None):
+    """``value`` as a finite float (else ``default``), clamped to lo..hi."""
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        return default
+    if not math.isfinite(number):
+        return default
+    if lo is not None:
+        number = max(lo, number)
+    if hi is not None:
+        number = min(hi, number)
+    return number
+
+
+def rectangle(value):
+    """(x0, y0, x1, y1) of finite floats with x0 < x1 and y0 < y1, or None."""
+    try:
+        x0, y0, x1, y1 = (float(v) for v in value)
+    except (TypeError, ValueError):
+        return None
+    if not all(map(math.isfinite, (x0, y0, x1, y1))) or x0 >= x1 or y0 >= y1:
+        return None
+    return x0, y0, x1, y1
+
+
+def room(snapshot):
+    return rectangle(snapshot.get("room")) or ROOM
+
+
+def boxes(snapshot):
+    try:
+        found = [rectangle(box) for box in list(snapshot.get("boxes") or [])[:50]]
+    except TypeError:
+        return []
+    return [box for box in found if box is not None]
+
+
+def pose(snapshot):
+    return num(snapshot.get("x")), num(snapshot.get("y")), num(snapshot.get("theta"))
+
+
+def trail(snapshot, limit=600):
+    """The last ``limit`` valid trail points, oldest first."""
+    points = []
+    try:
+        for value in list(snapshot.get("trail") or [])[-limit:]:
+            try:
+                x, y = float(value[0]), float(value[1])
+            except (TypeError, ValueError, IndexError, KeyError):
+                continue
+            if math.isfinite(x) and math.isfinite(y):
+                points.append((x, y))
+    except TypeError:
+        return []
+    return points
+
+
+def scan(snapshot):
+    """The laser's ranges as floats (a reading that is not a number becomes nan), at most 2000."""
+    values = snapshot.get("scan") or []
+    try:
+        values = list(values)[:2000]
+    except TypeError:
+        return []
+    result = []
+    for value in values:
+        try:
+            result.append(float(value))
+        except (TypeError, ValueError):
+            result.append(math.nan)
+    return result
+
+
+def limits(snapshot):
+    """(range_min, range_max) of the laser."""
+    near = num(snapshot.get("range_min"), RANGE_MIN, 0.0, 100.0)
+    far = num(snapshot.get("range_max"), RANGE_MAX, near + 0.01, 100.0)
+    return near, far
+
+
+def hit(value, near, far):
+    """What one reading means: the distance to draw, or None for nothing seen.
+
+    ``-inf`` (closer than the laser can measure) is drawn at ``near``; nan, +inf, and
+    anything outside near..far is nothing.
+    """
+    if value == -math.inf:
+        return near
+    if not (near <= value <= far):
+        return None
+    return value
+
+
+def nearest(ranges, near, far, centre=0.0, half_width=math.radians(15)):
+    """The nearest hit within ``half_width`` of the direction ``centre`` (radians, 0 = ahead), or None."""
+    if not ranges:
+        return None
+    step = 2 * math.pi / len(ranges)
+    best = None
+    for index, value in enumerate(ranges):
+        if abs(math.remainder(index * step - centre, math.tau)) > half_width + 1e-6:
+            continue
+        distance = hit(value, near, far)
+        if distance is not None and (best is None or distance < best):
+            best = distance
+    return best
