@@ -565,12 +565,15 @@ def dropdown(profile, block_type, name):
             for option in arg["options"]]
 
 
-def test_every_block_template_calls_a_public_hobbit_command(profile):
+def test_every_block_template_calls_a_public_hobbit_or_ros_command(profile):
+    from rockly_desktop.robot.ros_commands import RosCommands
+
     for spec in profile.blocks:
-        names = re.findall(r"\brobot\.(\w+)\(", spec.code)
-        assert names, spec.type
-        for name in names:
-            assert not name.startswith("_") and callable(getattr(Hobbit, name, None)), (spec.type, name)
+        calls = re.findall(r"\b(robot|ros)\.(\w+)\(", spec.code)
+        assert calls, spec.type
+        for owner, name in calls:
+            commands = Hobbit if owner == "robot" else RosCommands
+            assert not name.startswith("_") and callable(getattr(commands, name, None)), (spec.type, name)
 
 
 @pytest.mark.parametrize("block_type, field", sorted(CHOICES_BY_BLOCK))
