@@ -70,8 +70,16 @@ def build_main_window(settings_path=None, extra_profile_dirs=()):
 
 def run_gui(open_path=None) -> int:
     """Start Rockly's window and run until it closes."""
+    from rockly_desktop.core.errors import RocklyError
+
     app = create_application()
-    window = build_main_window()
+    try:
+        window = build_main_window()
+    except RocklyError as error:  # e.g. every installed profile is broken
+        from PySide6.QtWidgets import QMessageBox
+
+        QMessageBox.critical(None, "Rockly", f"Rockly cannot start: {error}")
+        return 1
     window.show()
     window.start(open_path)
     return app.exec()

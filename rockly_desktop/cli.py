@@ -48,7 +48,7 @@ def _tool_parser() -> argparse.ArgumentParser:
     run.add_argument("--speed", type=float, default=1.0, help="simulated time runs this many times faster")
 
     sim = commands.add_parser("sim", help="run a profile's simulated robot as a ROS 1 node")
-    sim.add_argument("profile", help="the robot profile id, e.g. hobbit")
+    sim.add_argument("profile", help="the robot profile id (see rockly plugins list)")
     sim.add_argument("--ros", action="store_true", required=True, help="serve the robot's ROS interface")
     sim.add_argument("--master", help="ROS master URI (default: $ROS_MASTER_URI)")
     sim.add_argument("--answer", action="append", default=[], help="an answer for the next tablet question (repeatable)")

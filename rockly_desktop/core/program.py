@@ -2,7 +2,7 @@
 
 A file looks like::
 
-    {"format": "rockly-program", "version": 1, "profile": "hobbit",
+    {"format": "rockly-program", "version": 1, "profile": "my_robot",
      "workspace": { ...Blockly's JSON serialization... }}
 
 Reading never changes the file; writing is atomic (temp file, fsync, rename).

@@ -9,12 +9,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from rockly_desktop.core import paths
-from rockly_desktop.core.errors import ManifestError
+from rockly_desktop.core.errors import ManifestError, RocklyError
 from rockly_desktop.plugins.manifest import MANIFEST_NAME
 from rockly_desktop.plugins.profile import Profile, load_profile
 
 ENTRY_POINT_GROUP = "rockly.profiles"
-DEFAULT_PROFILE = "hobbit"
 
 
 @dataclass(frozen=True)
@@ -99,9 +98,9 @@ class ProfileRegistry:
         return self.profiles[profile_id]
 
     def default(self) -> Profile:
-        """The profile Rockly starts with: HOBBIT when present, else the first one."""
-        if DEFAULT_PROFILE in self.profiles:
-            return self.profiles[DEFAULT_PROFILE]
+        """The profile Rockly starts with: the first one found (built-in ones first, by folder name)."""
+        if not self.profiles:
+            raise RocklyError("no robot profile is installed")
         return next(iter(self.profiles.values()))
 
     def all_block_types(self) -> set:

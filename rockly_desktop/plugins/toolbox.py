@@ -6,8 +6,8 @@ A profile's ``toolbox.yaml``::
       - name: {en: Drive, de: Fahren}
         colour: "#4C97FF"
         blocks:
-          - hobbit_move                       # a block by type
-          - type: hobbit_turn                 # or with Blockly toolbox JSON extras
+          - my_robot_drive                    # a block by type
+          - type: my_robot_turn               # or with Blockly toolbox JSON extras
             inputs: {angle: {shadow: {type: math_number, fields: {NUM: 90}}}}
       - shared: logic                         # toolboxes/logic.yaml
 

@@ -342,7 +342,7 @@ class MessageTypes:
     def message_class(self, type_name: str):
         """The genpy class of a message type, e.g. ``geometry_msgs/Twist``.
 
-        A service's halves resolve too: ``hobbit_msgs/RequestRequest``.
+        A service's halves resolve too: ``my_robot_msgs/AskRequest``.
         """
         package, name = self._split(type_name, "message")
         with self._lock:
@@ -358,7 +358,7 @@ class MessageTypes:
             return cls
 
     def service_class(self, type_name: str):
-        """The genpy class of a service type, e.g. ``hobbit_msgs/Request`` (with
+        """The genpy class of a service type, e.g. ``my_robot_msgs/Ask`` (with
         ``_request_class`` and ``_response_class``)."""
         package, name = self._split(type_name, "service")
         with self._lock:
