@@ -11,7 +11,6 @@ from rockly_desktop.ui.console_dock import ConsoleDock
 from rockly_desktop.ui.file_actions import ProgramFiles
 from rockly_desktop.ui.health_bar import HealthBar
 from rockly_desktop.ui.message_boxes import plain_message_box
-from rockly_desktop.ui.plot_panel import PlotPanel
 from rockly_desktop.ui.preferences import PreferencesDialog
 from rockly_desktop.ui.run_session import RunSession
 from rockly_desktop.ui.robot_choice import RobotChoice
@@ -38,6 +37,7 @@ class MainWindow(QMainWindow):
         self.profile = self._initial_profile()
         self._starting = False
         self._editor_started = False
+        self._robot_shown = False
         self.setObjectName("main_window")
 
         self.breakpoints = []
@@ -54,6 +54,8 @@ class MainWindow(QMainWindow):
         self.monitor_dock.setObjectName("monitor_dock")
         self.plot_dock = QDockWidget(tr("plot_dock", self.language), self)
         self.plot_dock.setObjectName("plot_dock")
+        self.plot_dock.visibilityChanged.connect(lambda visible: visible and self.plot_panel())
+        self._plot_store = None
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.simulator_dock)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.code_dock)
         self.tabifyDockWidget(self.code_dock, self.variables)
@@ -82,6 +84,7 @@ class MainWindow(QMainWindow):
         self.files.sig_status.connect(lambda text: self.statusBar().showMessage(text, 8000))
         self.editor.sig_changed.connect(self._on_editor_changed)
         self.editor.sig_ready.connect(self.statusBar().clearMessage)
+        self.editor.sig_ready.connect(self._first_show_robot)
         self.editor.sig_breakpoints.connect(self._on_breakpoints)
         self.editor.sig_page_error.connect(
             lambda message: self.statusBar().showMessage(tr("editor_error", self.language, message=message), 15000))
@@ -126,13 +129,19 @@ class MainWindow(QMainWindow):
                  "removeBreakpoint": tr("remove_breakpoint", self.language)}
         self.editor.start(self.profile.editor_config(self.language), self.language, first_call, on_first_result, texts)
         self.profile_label.setText(tr("robot_status", self.language, name=self.profile.display_name(self.language)))
-        self.show_robot()
+        if self._robot_shown:
+            self.show_robot()
 
     # --- the robot ----------------------------------------------------------------------
 
     def robot(self):
         """The robot programs run on: the profile's simulator, or a robot over ROS 1."""
         return self.robots.robot()
+
+    def _first_show_robot(self):
+        if not self._robot_shown:  # at start the simulator waits until the editor is up
+            self._robot_shown = True
+            self.show_robot()
 
     def show_robot(self):
         """Show the active robot in the Simulator dock (a note for a real robot)."""
@@ -151,14 +160,32 @@ class MainWindow(QMainWindow):
         self.health.show_robot(robot)
         self._replace_dock_widget(self.state_dock, panels)
         monitor = TopicMonitor(robot.state, robot.graph_topics, self.language)
-        plot = PlotPanel(robot.state, self.language)
-        monitor.sig_plot_requested.connect(lambda topic, path: (plot.add_curve(topic, path), self.plot_dock.raise_()))
+        monitor.sig_plot_requested.connect(self._plot)
         self._replace_dock_widget(self.monitor_dock, monitor)
-        self._replace_dock_widget(self.plot_dock, plot)
+        had_plot = self.plot_dock.widget() is not None and self.plot_dock.widget().objectName() == "plot_panel"
+        self._plot_store = robot.state
+        self._replace_dock_widget(self.plot_dock, QLabel(self.plot_dock))  # the plot is made when first shown
+        if had_plot:
+            self.plot_panel()
         if robot.snapshot() is None:
             self.simulator_dock.show_robot(None, None, tr("real_robot_view", self.language))
         else:
             self.simulator_dock.show_robot(robot, view_class(language=self.language) if view_class else None)
+
+    def plot_panel(self):
+        """The Plot dock's panel, made on first use (pyqtgraph takes a while to load)."""
+        widget = self.plot_dock.widget()
+        if widget is None or widget.objectName() != "plot_panel":
+            from rockly_desktop.ui.plot_panel import PlotPanel
+
+            widget = PlotPanel(self._plot_store, self.language)
+            widget.setObjectName("plot_panel")
+            self._replace_dock_widget(self.plot_dock, widget)
+        return widget
+
+    def _plot(self, topic: str, path: str):
+        self.plot_panel().add_curve(topic, path)
+        self.plot_dock.raise_()
 
     def _choose_backend(self, index):
         kind = self.run_toolbar.backend.itemData(index)

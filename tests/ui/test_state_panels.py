@@ -47,7 +47,7 @@ def test_health_is_green_on_the_simulator_with_details(qtbot, window):
 
 
 def test_a_field_double_clicked_in_the_topic_monitor_is_plotted(qtbot, window):
-    monitor, plot = window.monitor_dock.widget(), window.plot_dock.widget()
+    monitor, plot = window.monitor_dock.widget(), window.plot_panel()
     qtbot.waitUntil(lambda: window.robot().state.latest("/odom") is not None, timeout=5000)
     monitor.refresh()
     assert monitor.select_topic("/odom")
