@@ -345,10 +345,10 @@ def test_battery_level_is_a_percentage_that_drains(world, sim, robot):
     ("drive_for", ("fast", 2), "the speed must be a number, not 'fast'"),
     ("drive_for", (0.1, "long"), "the time must be a number, not 'long'"),
     ("drive_for", (0.1, math.inf), "the time must be a number, not inf"),
-    ("distance", ("up",), "unknown direction 'up'; use one of 'ahead', 'left', 'behind', 'right'"),
+    ("distance", ("up",), "unknown direction 'up'; use one of 'ahead', 'left', 'right', 'behind'"),
     ("obstacle_closer_than", (-1,), "the distance must not be negative, not -1"),
     ("obstacle_closer_than", ("near",), "the distance must be a number, not 'near'"),
-    ("obstacle_closer_than", (0.4, "front"), "unknown direction 'front'; use one of 'ahead', 'left', 'behind', 'right'"),
+    ("obstacle_closer_than", (0.4, "front"), "unknown direction 'front'; use one of 'ahead', 'left', 'right', 'behind'"),
     ("wait", ("5",), "the waiting time must be a number, not '5'"),
 ])
 def test_bad_arguments_are_refused_before_anything_moves(world, robot, command, args, message):

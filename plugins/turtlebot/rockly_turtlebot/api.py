@@ -48,7 +48,7 @@ STILL_ANGULAR = 1e-3           # rad/s below which odometry says the robot stand
 
 DIRECTIONS = {"forward": 1.0, "backward": -1.0}
 TURN_DIRECTIONS = {"left": 1.0, "right": -1.0}
-SIDES = {"ahead": 0.0, "left": math.pi / 2, "behind": math.pi, "right": -math.pi / 2}
+SIDES = {"ahead": 0.0, "left": math.pi / 2, "right": -math.pi / 2, "behind": math.pi}
 
 
 def _wrap(angle):
@@ -64,9 +64,9 @@ def _seconds(stamp):
 
 
 class _Pose:
-    """What one odometry message says: position, heading, velocities, and when (robot time)."""
+    """What one odometry message says: position, heading, velocities, its time stamp and when it arrived."""
 
-    __slots__ = ("x", "y", "yaw", "linear", "angular", "time")
+    __slots__ = ("x", "y", "yaw", "linear", "angular", "stamp", "arrival")
 
     def __init__(self, message):
         pose = (message.get("pose") or {}).get("pose") or {}
@@ -77,12 +77,19 @@ class _Pose:
         self.yaw = math.atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz))
         self.linear = float((twist.get("linear") or {}).get("x", 0.0))
         self.angular = float((twist.get("angular") or {}).get("z", 0.0))
-        stamp = _seconds((message.get("header") or {}).get("stamp"))
-        self.time = stamp if stamp > 0 else time.monotonic()   # a robot that stamps nothing: the clock
+        self.stamp = _seconds((message.get("header") or {}).get("stamp"))
+        self.arrival = time.monotonic()
 
     @property
     def still(self):
         return abs(self.linear) < STILL_LINEAR and abs(self.angular) < STILL_ANGULAR
+
+
+def _elapsed(earlier: _Pose, later: _Pose):
+    """Robot seconds between two odometry messages: their stamps; the clock when a robot stamps nothing."""
+    if earlier.stamp or later.stamp:
+        return later.stamp - earlier.stamp
+    return later.arrival - earlier.arrival
 
 
 class _Progress:
@@ -109,8 +116,8 @@ class _Progress:
             self._turned += _wrap(pose.yaw - last.yaw)
             done = self._turned
         else:
-            done = pose.time - self._start.time
-        step = pose.time - last.time
+            done = _elapsed(self._start, pose)
+        step = _elapsed(last, pose)
         self.state = (count + 1, done, pose, step if step > 0 else None)
 
     @property
@@ -271,10 +278,12 @@ class TurtleBot(RobotCommands):
             except RobotCommandError:
                 self._try_to_stop()
                 raise
+            driven = progress.done
             self.stop()
             stopped_at = progress.count
             self.backend.wait_until(lambda: progress.count > stopped_at and progress.state[2].still, SETTLE_TIMEOUT)
-            return outcome, progress.done
+            # a motion counts where the robot came to rest; time counts only while it was told to drive
+            return outcome, driven if kind == "time" else progress.done
         finally:
             unsubscribe()
 
@@ -282,7 +291,7 @@ class TurtleBot(RobotCommands):
         """Send velocities until arrived, paused or stalled; each new odometry message gets a new one."""
         seen, _, latest, step = progress.state
         command(target, step)
-        moved_at, moved_done = latest.time, 0.0
+        moved_at, moved_done = latest, 0.0
         while True:
             if not self.backend.wait_until(lambda: progress.count > seen or self.backend.pause_requested(),
                                            SENSOR_TIMEOUT):
@@ -295,8 +304,8 @@ class TurtleBot(RobotCommands):
                 return "reached"
             if stall_amount is not None:
                 if abs(done - moved_done) > stall_amount:
-                    moved_at, moved_done = latest.time, done
-                elif latest.time - moved_at > STALL_SECONDS:
+                    moved_at, moved_done = latest, done
+                elif _elapsed(moved_at, latest) > STALL_SECONDS:
                     return "stalled"
             command(left, step)
 
