@@ -131,7 +131,7 @@ def test_service_block_returns_the_response(headless_editor, hobbit):
     ws = workspace(program)
     ws["variables"] = [{"name": "answer", "id": "v1"}]
     code = headless_editor.python_for(ProgramToOpen(path=None, profile=hobbit, workspace=ws))
-    assert "answer = robot.call_service('/trigger', 'std_srvs/Trigger', None)" in code
+    assert "answer = robot.call_service('/trigger', 'std_srvs/Trigger', None, False)" in code
 
 
 def test_the_thesis_pick_up_program(headless_editor, hobbit):

@@ -599,3 +599,13 @@ def test_mapped_arm_values_reach_the_robot_as_the_same_arm_command(profile):
 def test_dropdown_values_passed_unmapped_are_valid_command_choices(profile, block_type, field, choices):
     assert field not in profile.block(block_type).values
     assert set(dropdown(profile, block_type, field)) == set(choices)
+
+
+def test_call_service_takes_json_parameters_and_can_leave_them_out(tablet, backend, hobbit):
+    hobbit.call_service("/MMUI", "hobbit_msgs/Request", '{"params": [{"name": "type", "value": "F_LOUDER"}]}')
+    with pytest.raises(RobotCommandError, match="request type None"):  # the tablet needs its parameters
+        hobbit.call_service("/MMUI", "hobbit_msgs/Request", '{"params": [{"name": "type", "value": "F_QUIETER"}]}',
+                            with_parameters=False)
+    assert [call[2] for call in backend.service_calls] == [{"params": [{"name": "type", "value": "F_LOUDER"}]}, {}]
+    with pytest.raises(RobotCommandError, match="not valid JSON"):
+        hobbit.call_service("/MMUI", "hobbit_msgs/Request", "{params")
