@@ -5,7 +5,8 @@ left): the robot starts at the origin facing +x, 0.5 m from the wall behind it. 
 boxes are axis-aligned rectangles ``(x_min, y_min, x_max, y_max)``.
 
 Laser rays are cast against every wall and box edge at once with numpy (360 rays x 16 edges:
-about 0.1 ms, against ~5 ms for the same in pure Python).
+about 0.2 ms, against about 2 ms for the same loops in pure Python; a whole 30 Hz tick with its
+three messages takes about 1 ms).
 """
 import math
 

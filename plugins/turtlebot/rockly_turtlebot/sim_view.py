@@ -23,7 +23,7 @@ from .view.palette import BUMP, INK, MAP_BORDER, PANEL_BG, PLATE
 from .view.panel import paint_panel
 from .view.robot import paint_robot, paint_trail
 from .view.room import RoomPixmap
-from .view.scan import paint_scan
+from .view.scan import Scan, paint_scan
 from .view.shapes import chip
 from .view.texts import TEXTS, decimal, sized_font
 
@@ -38,6 +38,7 @@ class TurtleBotSimView(QWidget):
         super().__init__(parent)
         self._language = language if language in TEXTS else "en"
         self._snapshot = dict(DEFAULT_SNAPSHOT)
+        self._scan = Scan(self._snapshot)
         self._room = RoomPixmap()
         self.setAttribute(Qt.WidgetAttribute.WA_OpaquePaintEvent)
         self.setMinimumSize(200, 150)
@@ -61,6 +62,7 @@ class TurtleBotSimView(QWidget):
     def set_snapshot(self, snapshot):
         """Show ``snapshot`` (a dict as ``SimTurtleBot.snapshot()`` returns; missing keys keep their defaults)."""
         self._snapshot = model.merged(snapshot)
+        self._scan = Scan(self._snapshot)
         self.update()
 
     def map_rect(self):
@@ -91,7 +93,7 @@ class TurtleBotSimView(QWidget):
         layout = self._layout()
         painter.fillRect(event.rect(), PANEL_BG)
         self._paint_map(painter, layout)
-        paint_panel(painter, layout, self._snapshot, TEXTS[self._language], self.font())
+        paint_panel(painter, layout, self._snapshot, self._scan, TEXTS[self._language], self.font())
         painter.end()
 
     def _paint_map(self, p, layout):
@@ -108,8 +110,8 @@ class TurtleBotSimView(QWidget):
         p.setClipPath(clip)
         p.setTransform(transform)
         paint_trail(p, snapshot, layout.u)
-        paint_scan(p, snapshot, layout.u)
-        paint_robot(p, snapshot, transform.m11())
+        paint_scan(p, self._scan, layout.u)
+        paint_robot(p, snapshot, self._scan, transform.m11())
         p.resetTransform()
         self._paint_chips(p, layout, transform)
         p.restore()

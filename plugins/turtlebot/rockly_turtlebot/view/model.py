@@ -103,31 +103,3 @@ def limits(snapshot):
     near = num(snapshot.get("range_min"), RANGE_MIN, 0.0, 100.0)
     far = num(snapshot.get("range_max"), RANGE_MAX, near + 0.01, 100.0)
     return near, far
-
-
-def hit(value, near, far):
-    """What one reading means: the distance to draw, or None for nothing seen.
-
-    ``-inf`` (closer than the laser can measure) is drawn at ``near``; nan, +inf, and
-    anything outside near..far is nothing.
-    """
-    if value == -math.inf:
-        return near
-    if not (near <= value <= far):
-        return None
-    return value
-
-
-def nearest(ranges, near, far, centre=0.0, half_width=math.radians(15)):
-    """The nearest hit within ``half_width`` of the direction ``centre`` (radians, 0 = ahead), or None."""
-    if not ranges:
-        return None
-    step = 2 * math.pi / len(ranges)
-    best = None
-    for index, value in enumerate(ranges):
-        if abs(math.remainder(index * step - centre, math.tau)) > half_width + 1e-6:
-            continue
-        distance = hit(value, near, far)
-        if distance is not None and (best is None or distance < best):
-            best = distance
-    return best

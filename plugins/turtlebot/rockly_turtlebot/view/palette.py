@@ -12,6 +12,7 @@ BOX_COLOURS = (("#FF6B6B", "#C94848"), ("#4D96FF", "#2F6CC4"), ("#FFC93C", "#D19
 SHADOW = QColor(30, 40, 70, 50)
 MAP_BORDER = QColor("#C7D3E3")
 TRAIL = QColor("#2E86DE")
+SEEN = QColor(255, 255, 255, 110)     # the floor the laser sees
 
 # --- the robot ----------------------------------------------------------------------------------
 PLATE = QColor("#2F3542")            # the TurtleBot's round plate; nothing else uses it (tests look for it)

@@ -14,7 +14,8 @@ from .palette import (
     BAR_BG, BATTERY_EMPTY, BATTERY_LOW, BATTERY_OK, DRIVE, INK, INK_SOFT, PLATE, RADAR_BG, RADAR_RING, TURN,
     distance_colour,
 )
-from .shapes import card, cosmetic_pen, with_alpha
+from .scan import paint_radar_hits
+from .shapes import card, with_alpha
 from .texts import decimal, sized_font
 
 RADAR_RINGS = (0.5, 1.0, 2.0, 3.5)    # metres; the radar's scale is the square root of the distance
@@ -55,13 +56,14 @@ def panel_cards(layout, fonts):
     return laser, speed, battery, pad
 
 
-def paint_panel(p, layout, snapshot, texts, base_font):
+def paint_panel(p, layout, snapshot, scan, texts, base_font):
+    """``scan`` is the snapshot's view.scan.Scan."""
     fonts = Fonts(base_font, layout.u)
     laser, speed, battery, pad = panel_cards(layout, fonts)
     for rect in (laser, speed, battery):
         if rect.height() > 8 and rect.width() > 8:
             card(p, rect, layout.radius)
-    _paint_laser(p, laser.adjusted(pad, pad, -pad, -pad), snapshot, texts, fonts)
+    _paint_laser(p, laser.adjusted(pad, pad, -pad, -pad), snapshot, scan, texts, fonts)
     _paint_speed(p, speed.adjusted(pad, pad, -pad, -pad), snapshot, texts, fonts, layout.u)
     _paint_battery(p, battery.adjusted(pad, 0, -pad, 0), snapshot, texts, fonts, layout.u)
 
@@ -74,19 +76,18 @@ def _title(p, rect, text, fonts):
     return rect.top() + fonts.title_h
 
 
-def _paint_laser(p, rect, snapshot, texts, fonts):
+def _paint_laser(p, rect, snapshot, scan, texts, fonts):
     """A round radar (ahead is up) with every hit as a dot, and the distance straight ahead in big."""
     if rect.height() < fonts.title_h:
         return
     top = _title(p, rect, texts["laser"], fonts)
-    near, far = model.limits(snapshot)
-    ranges = model.scan(snapshot)
-    ahead = model.nearest(ranges, near, far)
+    far = scan.far
+    ahead = scan.nearest()
     text_h = fonts.big_h
     size = max(0.0, min(rect.width(), rect.bottom() - top - text_h - 4))
     if size >= 30:
         top += max(0.0, (rect.bottom() - top - text_h - 4 - size) / 2)   # radar and number centred in the card
-        _paint_radar(p, QPointF(rect.center().x(), top + 2 + size / 2), size / 2, ranges, near, far)
+        _paint_radar(p, QPointF(rect.center().x(), top + 2 + size / 2), size / 2, scan, far)
         text_top = top + 4 + size
     else:
         text_top = top
@@ -103,7 +104,7 @@ def _radar_point(centre, radius, angle, distance, far):
     return QPointF(centre.x() + r * math.cos(angle), centre.y() - r * math.sin(angle))
 
 
-def _paint_radar(p, centre, radius, ranges, near, far):
+def _paint_radar(p, centre, radius, scan, far):
     p.setPen(Qt.PenStyle.NoPen)
     p.setBrush(RADAR_BG)
     p.drawEllipse(centre, radius, radius)
@@ -116,14 +117,7 @@ def _paint_radar(p, centre, radius, ranges, near, far):
     p.setPen(QPen(with_alpha(RADAR_RING, 0.6), 1.0))
     for side in (-1, 1):
         p.drawLine(centre, _radar_point(centre, radius, math.radians(90 + side * 15), far, far))
-    if ranges:
-        step = 2 * math.pi / len(ranges)
-        dot = max(2.0, radius / 30)
-        for index, value in enumerate(ranges):
-            distance = model.hit(value, near, far)
-            if distance is not None:
-                p.setPen(cosmetic_pen(distance_colour(distance), dot, round_caps=True))
-                p.drawPoint(_radar_point(centre, radius, math.pi / 2 + index * step, distance, far))
+    paint_radar_hits(p, scan, centre, radius, max(2.0, radius / 30))
     body = max(3.0, radius * math.sqrt(model.RADIUS / far))
     p.setPen(Qt.PenStyle.NoPen)
     p.setBrush(PLATE)

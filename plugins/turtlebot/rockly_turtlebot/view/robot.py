@@ -40,7 +40,8 @@ def paint_trail(p, snapshot, u):
         p.drawPolyline(QPolygonF([QPointF(x, y) for x, y in part]))
 
 
-def paint_robot(p, snapshot, scale):
+def paint_robot(p, snapshot, scan, scale):
+    """The robot at the snapshot's pose; ``scan`` (a view.scan.Scan) says where a bump touches."""
     x, y, theta = model.pose(snapshot)
     radius = model.num(snapshot.get("radius"), model.RADIUS, 0.02, 1.0)
     grow = grow_for(scale, radius)
@@ -80,7 +81,7 @@ def paint_robot(p, snapshot, scale):
     _paint_lidar(p, snapshot, r, line)
     p.restore()
     if snapshot.get("bumped") is True:
-        _paint_bump(p, x, y, theta, r, snapshot)
+        _paint_bump(p, x, y, theta + (scan.closest_angle() or 0.0), r)
 
 
 def _paint_lidar(p, snapshot, r, line):
@@ -97,9 +98,8 @@ def _paint_lidar(p, snapshot, r, line):
     p.drawLine(centre, tip)
 
 
-def _paint_bump(p, x, y, theta, r, snapshot):
-    """A yellow-and-red burst where the robot touches something (on its side nearest to it)."""
-    direction = _contact_direction(snapshot, theta)
+def _paint_bump(p, x, y, direction, r):
+    """A yellow-and-red burst on the robot's edge in the map ``direction`` of what it touches."""
     cx, cy = x + r * math.cos(direction), y + r * math.sin(direction)
     points = []
     for k in range(16):
@@ -112,15 +112,3 @@ def _paint_bump(p, x, y, theta, r, snapshot):
     p.setBrush(BUMP)
     p.setPen(Qt.PenStyle.NoPen)
     p.drawEllipse(QPointF(cx, cy), 0.13 * r, 0.13 * r)
-
-
-def _contact_direction(snapshot, theta):
-    """The map direction of the shortest laser reading: where the robot touches something."""
-    ranges = model.scan(snapshot)
-    near, far = model.limits(snapshot)
-    best, best_index = None, 0
-    for index, value in enumerate(ranges):
-        distance = model.hit(value, near, far)
-        if distance is not None and (best is None or distance < best):
-            best, best_index = distance, index
-    return theta + (2 * math.pi * best_index / len(ranges) if ranges else 0.0)
