@@ -48,7 +48,7 @@ def test_plugins_list_finds_a_profile_in_the_users_folder(isolated_user_folders)
 def test_plugins_validate_accepts_hobbit():
     result = rockly("plugins", "validate", REPO / "plugins" / "hobbit")
     assert result.returncode == 0, result.stderr
-    assert result.stdout.startswith("OK  hobbit 1.0.0: 37 blocks")
+    assert result.stdout.startswith("OK  hobbit 1.0.0: 26 blocks")
 
 
 def test_plugins_validate_finds_a_template_calling_a_missing_command(tmp_path):

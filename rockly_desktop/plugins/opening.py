@@ -43,7 +43,7 @@ class ProgramToOpen:
 
 def _best_profile_for(block_types, registry: ProfileRegistry, fallback: Profile) -> Profile:
     """The installed profile defining most of ``block_types`` (the fallback if none does)."""
-    scored = [(len(block_types & profile.block_types), profile) for profile in registry.profiles.values()]
+    scored = [(len(block_types & profile.own_block_types), profile) for profile in registry.profiles.values()]
     best_score, best = max(scored, key=lambda pair: pair[0], default=(0, fallback))
     return best if best_score else fallback
 

@@ -23,6 +23,7 @@ class Profile:
     manifest: dict
     blocks: tuple
     toolbox_categories: list
+    shared_blocks: tuple = ()
 
     def display_name(self, language: str = "en") -> str:
         """The profile's name for people, in ``language``."""
@@ -30,12 +31,17 @@ class Profile:
 
     @property
     def block_types(self) -> set:
-        """Block types this profile defines."""
+        """Block types this profile offers: its own and those its shared categories bring."""
+        return {spec.type for spec in self.blocks + self.shared_blocks}
+
+    @property
+    def own_block_types(self) -> set:
+        """Block types the profile's own block file defines."""
         return {spec.type for spec in self.blocks}
 
     def block(self, block_type: str) -> BlockSpec:
         """The BlockSpec of one of this profile's blocks; KeyError if it has none of that type."""
-        for spec in self.blocks:
+        for spec in self.blocks + self.shared_blocks:
             if spec.type == block_type:
                 return spec
         raise KeyError(block_type)
@@ -49,7 +55,7 @@ class Profile:
         """Everything the editor page needs for this profile, texts in ``language``."""
         return {
             "profile": self.id,
-            "blocks": [spec.editor_config(language) for spec in self.blocks],
+            "blocks": [spec.editor_config(language) for spec in self.blocks + self.shared_blocks],
             "toolbox": toolbox_json(self.toolbox_categories, language),
         }
 
@@ -88,15 +94,15 @@ def load_profile(profile_dir: Path, shared_toolboxes: Path, source: str = "folde
     manifest = read_manifest(profile_dir)
     blocks = read_blocks(profile_dir / manifest["blocks"])
     categories = read_toolbox(profile_dir / manifest["toolbox"], shared_toolboxes, {spec.type for spec in blocks})
-    own_types = {spec.type for spec in blocks}
+    own_types, shared_blocks = {spec.type for spec in blocks}, ()
     for definitions in shared_definition_files(categories, shared_toolboxes):
         shared = read_blocks(definitions)
         clash = own_types & {spec.type for spec in shared}
         if clash:
             raise ManifestError(profile_dir / manifest["blocks"], f"blocks[{sorted(clash)[0]}]",
                                 f"is also defined by the shared blocks in {definitions.name}")
-        blocks += shared
+        shared_blocks += shared
     return Profile(
         id=manifest["id"], name=manifest["name"], version=manifest["version"], root=profile_dir,
-        source=source, manifest=manifest, blocks=blocks, toolbox_categories=categories,
+        source=source, manifest=manifest, blocks=blocks, toolbox_categories=categories, shared_blocks=shared_blocks,
     )

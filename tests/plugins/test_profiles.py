@@ -444,7 +444,7 @@ def test_toolbox_names_are_translated_and_shared_categories_resolved(hobbit):
 def test_editor_config_in_german_has_german_block_texts_and_python_templates(hobbit):
     config = hobbit.editor_config("de")
     assert config["profile"] == "hobbit"
-    assert [block["definition"]["type"] for block in config["blocks"]] == [spec.type for spec in hobbit.blocks]
+    assert [block["definition"]["type"] for block in config["blocks"]] == [spec.type for spec in hobbit.blocks + hobbit.shared_blocks]
     head = next(block for block in config["blocks"] if block["definition"]["type"] == "hobbit_head")
     assert head["definition"]["message0"] == "schau %1"
     assert head["definition"]["args0"][0]["options"][0] == ["geradeaus", "center_center"]

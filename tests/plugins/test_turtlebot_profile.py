@@ -29,7 +29,7 @@ def rockly(*args):
 def test_rockly_plugins_validate_says_ok():
     result = rockly("plugins", "validate", TURTLEBOT_DIR)
     assert result.returncode == 0, result.stderr
-    assert result.stdout.strip() == ("OK  turtlebot 1.0.0: 8 blocks, 10 toolbox categories, "
+    assert result.stdout.strip() == ("OK  turtlebot 1.0.0: 8 blocks, 11 toolbox categories, "
                                      "commands rockly_turtlebot.api:TurtleBot")
 
 
@@ -48,7 +48,7 @@ def test_it_is_installed_next_to_hobbit_and_hobbit_stays_the_default():
     assert registry.errors == []
     assert registry.get("turtlebot").display_name() == "TurtleBot"
     assert registry.default().id == "hobbit"
-    assert not registry.get("turtlebot").block_types & registry.get("hobbit").block_types
+    assert not registry.get("turtlebot").own_block_types & registry.get("hobbit").own_block_types
 
 
 def test_the_ros_interface_is_the_turtlebots():
@@ -106,13 +106,13 @@ def test_toolbox_has_drive_sensors_time_and_the_shared_categories_in_their_colou
     assert [category["name"] for category in toolbox][:3] == ["Fahren", "Sensoren", "Zeit"]
     english = localize(PROFILE.toolbox_categories, "en")
     assert [category["name"] for category in english] == [
-        "Drive", "Sensors", "Time", "Logic", "Loops", "Math", "Text", "Lists", "Variables", "Functions"]
+        "Drive", "Sensors", "Time", "ROS", "Logic", "Loops", "Math", "Text", "Lists", "Variables", "Functions"]
     for category in english[:3]:
         assert category["colour"] == CATEGORY_COLOURS[category["name"]]
         for entry in category["contents"]:
             assert PROFILE.block(entry["type"]).definition["colour"] == category["colour"], entry["type"]
     listed = {entry["type"] for category in english[:3] for entry in category["contents"]}
-    assert listed == PROFILE.block_types
+    assert listed == PROFILE.own_block_types
 
 
 @pytest.mark.parametrize("block_type, choices", [
