@@ -15,6 +15,7 @@ import threading
 import time
 
 import pytest
+from background import Background
 from profile_copies import HOBBIT_DIR, SHARED_TOOLBOXES
 
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
@@ -94,26 +95,6 @@ class HoldWatcher:
     def wait_until_held(self):
         assert self.held.wait(10), "the command never held for the pause"
         return self.snapshots[0]
-
-
-class Background:
-    """Runs ``function`` in a thread (a program) and records its error."""
-
-    def __init__(self, function):
-        self.error = None
-        self.thread = threading.Thread(target=self._run, args=(function,), daemon=True)
-        self.thread.start()
-
-    def _run(self, function):
-        try:
-            function()
-        except Exception as error:  # noqa: BLE001 - the test looks at it
-            self.error = error
-
-    def join(self, timeout=10.0):
-        self.thread.join(timeout)
-        assert not self.thread.is_alive(), "the program did not end"
-        return self
 
 
 @pytest.fixture

@@ -10,6 +10,7 @@ import threading
 import time
 
 import pytest
+from background import Background
 from profile_copies import HOBBIT_DIR, SHARED_TOOLBOXES
 
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError, RobotTimeout
@@ -73,28 +74,6 @@ class SilentTablet:
 
     def notify(self, kind, text):
         pass
-
-
-class Background:
-    """Runs ``function`` in a thread (a program) and records its result or error and when it ended."""
-
-    def __init__(self, function):
-        self.result = self.error = self.ended_at = None
-        self.thread = threading.Thread(target=self._run, args=(function,), daemon=True)
-        self.thread.start()
-
-    def _run(self, function):
-        try:
-            self.result = function()
-        except Exception as error:  # noqa: BLE001 - the test looks at it
-            self.error = error
-        finally:
-            self.ended_at = time.monotonic()
-
-    def join(self, timeout=10.0):
-        self.thread.join(timeout)
-        assert not self.thread.is_alive(), "the program did not end"
-        return self
 
 
 @pytest.fixture

@@ -11,6 +11,7 @@ import threading
 import time
 
 import pytest
+from background import Background
 from profile_copies import REPO, SHARED_TOOLBOXES
 
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
@@ -31,28 +32,6 @@ POSITION = 0.02    # m
 ANGLE = 2.0        # degrees
 STOP_BOUND = 0.1   # s from a stop request to ProgramStopped in the program's thread
 EMPTY_ROOM = (-0.5, -1.5, 3.5, 1.5)
-
-
-class Background:
-    """Runs ``function`` in a thread (a program); records its result or error and when it ended."""
-
-    def __init__(self, function):
-        self.result = self.error = self.ended_at = None
-        self.thread = threading.Thread(target=self._run, args=(function,), daemon=True)
-        self.thread.start()
-
-    def _run(self, function):
-        try:
-            self.result = function()
-        except Exception as error:  # noqa: BLE001 - the test looks at it
-            self.error = error
-        finally:
-            self.ended_at = time.monotonic()
-
-    def join(self, timeout=20.0):
-        self.thread.join(timeout)
-        assert not self.thread.is_alive(), "the program did not end"
-        return self
 
 
 class HoldWatcher:

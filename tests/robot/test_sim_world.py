@@ -4,6 +4,7 @@ import time
 
 import pytest
 
+from background import Background
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError, RobotTimeout
 from rockly_desktop.robot.interface import GoalStatus
 from rockly_desktop.robot.interrupt import Interrupt
@@ -36,28 +37,6 @@ class ObservedWorld(SimWorld):
     def wait_for(self, predicate, timeout):
         self.waiting.set()
         return super().wait_for(predicate, timeout)
-
-
-class Background:
-    """Runs ``function`` in a thread and records its result or error and when it ended."""
-
-    def __init__(self, function):
-        self.result = self.error = self.ended_at = None
-        self.thread = threading.Thread(target=self._run, args=(function,), daemon=True)
-        self.thread.start()
-
-    def _run(self, function):
-        try:
-            self.result = function()
-        except Exception as error:  # noqa: BLE001 - the test looks at it
-            self.error = error
-        finally:
-            self.ended_at = time.monotonic()
-
-    def join(self, timeout=5.0):
-        self.thread.join(timeout)
-        assert not self.thread.is_alive(), "the background call did not end"
-        return self
 
 
 def held_until(event):
