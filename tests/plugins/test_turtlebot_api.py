@@ -214,7 +214,7 @@ def test_wait_waits_and_a_negative_time_returns_at_once(robot):
     assert time.monotonic() - started >= 0.2
     started = time.monotonic()
     robot.wait(-3)
-    assert time.monotonic() - started < 0.1
+    assert time.monotonic() - started < 1.0  # far from the 3 s a negative wait must not take
 
 
 # --- bumping --------------------------------------------------------------------------------
