@@ -18,6 +18,8 @@ packages=(
   python3-rospy python3-rosmaster python3-std-msgs python3-std-srvs python3-geometry-msgs
   python3-sensor-msgs python3-actionlib python3-genpy python3-genmsg
   ros-std-msgs ros-geometry-msgs ros-actionlib-msgs ros-nav-msgs
+  # their definition files: the typed ROS blocks read the fields from them
+  ros-sensor-msgs ros-std-srvs
 )
 
 missing=()

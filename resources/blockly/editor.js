@@ -195,6 +195,7 @@
   const calls = {
     async setup({language, profile, media, first, texts}) {
       if (language !== 'en') await loadScript('vendor/msg/' + language + '.js');
+      RocklyTypedFields.setCatalog(profile.types);
       RocklyTemplates.install(profile.blocks);
       workspace = Blockly.inject('workspace', {
         toolbox: profile.toolbox,

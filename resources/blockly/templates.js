@@ -1,7 +1,8 @@
 /**
  * Turns a profile's Python templates (declared as data in its block file) into Blockly
  * generators: fields become quoted literals, value inputs sub-expressions, statement
- * inputs indented bodies.
+ * inputs indented bodies (or, for handlers, functions defined before the program), and a
+ * typed-fields block's `{fields}` the dict of its field inputs.
  */
 'use strict';
 
@@ -36,6 +37,26 @@ const RocklyTemplates = (() => {
     return RocklyPython.string(value);
   }
 
+  /**
+   * A handler: the statement input as a function of one argument, defined before the
+   * program; the argument goes into the block's variable field. 'None' when it is empty.
+   */
+  function handlerFunction(block, generator, input, variableField) {
+    const body = generator.statementToCode(block, input);
+    if (!body) return 'None';
+    const names = generator.nameDB_;
+    const name = names.getDistinctName(input, Blockly.Names.NameType.PROCEDURE);
+    const argument = names.getDistinctName('received', Blockly.Names.NameType.VARIABLE);
+    const globals = Blockly.Variables.allUsedVarModels(block.workspace)
+        .map((variable) => generator.getVariableName(variable.getId()));
+    const target = generator.getVariableName(block.getFieldValue(variableField));
+    generator.definitions_['%handler_' + name] =
+        'def ' + name + '(' + argument + '):\n' +
+        (globals.length ? generator.INDENT + 'global ' + globals.join(', ') + '\n' : '') +
+        generator.INDENT + target + ' = ' + argument + '\n' + body;
+    return name;
+  }
+
   /** A Blockly generator function for one templated block. */
   function makeGenerator(spec) {
     const order = python.Order;
@@ -46,6 +67,10 @@ const RocklyTemplates = (() => {
         if (match === '}}') return '}';
         const slot = spec.slots[name];
         if (slot === 'field') return fieldLiteral(block, name, spec);
+        if (slot === 'typed_fields') return block.rocklyFieldsCode(generator);
+        if (slot === 'statement' && spec.handlers[name]) {
+          return handlerFunction(block, generator, name, spec.handlers[name]);
+        }
         if (slot === 'statement') {
           return generator.statementToCode(block, name) || generator.INDENT + 'pass\n';
         }

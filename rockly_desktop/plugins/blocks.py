@@ -11,6 +11,18 @@ A block's Python is data, for example::
 (after mapping through ``values``), by the value input ``name`` as a sub-expression
 (``defaults`` when empty, else ``None``), or by the statement input ``name`` as an
 indented body. The editor page turns these templates into Blockly generators.
+
+Two things the editor adds for ROS-shaped blocks:
+
+- ``mutator: rockly_typed_fields`` on a block with a dropdown named ``message_type``,
+  ``service_type`` or ``action_type``: the dropdown lists the ROS types the editor knows
+  (messages, service requests or action goals), the block grows one checked input per
+  field of the chosen type, and ``{fields}`` in the template becomes those fields as a
+  Python dict (inputs left empty keep the type's defaults).
+- ``handlers: {input: variable_field}``: a statement input that runs as a function the
+  command calls with one argument (for example each feedback of an action goal), which
+  the handler's blocks read from the named variable field. ``{input}`` becomes the
+  function's name, or ``None`` when the input is empty.
 """
 import re
 import string
@@ -25,6 +37,8 @@ _BLOCK_TYPE = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 _FIELD_ARGS = {"field_dropdown", "field_input", "field_number", "field_checkbox", "field_angle",
                "field_colour", "field_multilinetext", "field_variable", "field_label_serializable"}
 _INPUT_KINDS = {"input_value": "value", "input_statement": "statement"}
+TYPED_FIELDS_MUTATOR = "rockly_typed_fields"
+TYPE_DROPDOWNS = ("message_type", "service_type", "action_type")
 
 
 @dataclass(frozen=True)
@@ -37,6 +51,7 @@ class BlockSpec:
     values: dict = field(default_factory=dict)
     defaults: dict = field(default_factory=dict)
     slots: dict = field(default_factory=dict)
+    handlers: dict = field(default_factory=dict)
 
     @property
     def is_expression(self) -> bool:
@@ -48,7 +63,7 @@ class BlockSpec:
         return {
             "definition": localize(self.definition, language),
             "python": {"code": self.code, "values": self.values, "defaults": self.defaults,
-                       "slots": self.slots, "expression": self.is_expression},
+                       "slots": self.slots, "handlers": self.handlers, "expression": self.is_expression},
         }
 
 
@@ -67,6 +82,45 @@ def _slots_of(definition: dict) -> dict:
             elif kind in _FIELD_ARGS or (isinstance(kind, str) and kind.startswith("field_")):
                 slots[arg["name"]] = "field"
     return slots
+
+
+def _field_kinds(definition: dict) -> dict:
+    """Map each named field of a definition to its Blockly field type."""
+    return {arg["name"]: arg.get("type") for key, args in definition.items()
+            if key.startswith("args") and isinstance(args, list)
+            for arg in args if isinstance(arg, dict) and "name" in arg}
+
+
+def _typed_fields_slots(definition: dict, where: str, path: Path) -> dict:
+    """The extra ``fields`` slot of a block with the typed-fields mutator (checked)."""
+    mutator = definition.get("mutator")
+    if mutator is None:
+        return {}
+    if mutator != TYPED_FIELDS_MUTATOR:
+        raise ManifestError(path, f"{where}.mutator", f"'{mutator}' is not a mutator Rockly's editor has "
+                                                      f"(it has: {TYPED_FIELDS_MUTATOR})")
+    kinds = _field_kinds(definition)
+    dropdowns = [name for name in TYPE_DROPDOWNS if kinds.get(name) == "field_dropdown"]
+    if len(dropdowns) != 1:
+        raise ManifestError(path, f"{where}.mutator", f"{TYPED_FIELDS_MUTATOR} needs exactly one field_dropdown "
+                                                      f"named one of {list(TYPE_DROPDOWNS)}")
+    if "fields" in kinds:
+        raise ManifestError(path, f"{where}.mutator", f"{TYPED_FIELDS_MUTATOR} adds the slot 'fields'; "
+                                                      "the block may not have its own field or input of that name")
+    return {"fields": "typed_fields"}
+
+
+def _checked_handlers(python: dict, slots: dict, kinds: dict, where: str, path: Path) -> dict:
+    handlers = python.get("handlers", {})
+    if not isinstance(handlers, dict):
+        raise ManifestError(path, f"{where}.python.handlers", "must map statement inputs to a variable field")
+    for name, variable in handlers.items():
+        if slots.get(name) != "statement":
+            raise ManifestError(path, f"{where}.python.handlers.{name}", "names no statement input of this block")
+        if kinds.get(variable) != "field_variable":
+            raise ManifestError(path, f"{where}.python.handlers.{name}",
+                                f"'{variable}' is no field_variable of this block (the handler's argument goes there)")
+    return handlers
 
 
 def _placeholders(code: str, where: str, path: Path) -> set:
@@ -98,11 +152,13 @@ def _parse_block(raw, index: int, path: Path) -> BlockSpec:
         python = {"code": python}
     if not isinstance(python, dict) or not isinstance(python.get("code"), str) or not python["code"].strip():
         raise ManifestError(path, f"{where}.python", "is missing: the Python the block becomes ('code: ...')")
-    unknown_keys = set(python) - {"code", "values", "defaults"}
+    unknown_keys = set(python) - {"code", "values", "defaults", "handlers"}
     if unknown_keys:
-        raise ManifestError(path, f"{where}.python", f"unknown key(s) {sorted(unknown_keys)} (use code, values, defaults)")
+        raise ManifestError(path, f"{where}.python",
+                            f"unknown key(s) {sorted(unknown_keys)} (use code, values, defaults, handlers)")
     definition = {key: value for key, value in raw.items() if key != "python"}
-    slots = _slots_of(definition)
+    slots = {**_slots_of(definition), **_typed_fields_slots(definition, where, path)}
+    handlers = _checked_handlers(python, slots, _field_kinds(definition), where, path)
     for name in sorted(_placeholders(python["code"], f"{where}.python.code", path)):
         if name not in slots:
             raise ManifestError(path, f"{where}.python.code",
@@ -119,7 +175,7 @@ def _parse_block(raw, index: int, path: Path) -> BlockSpec:
     for name in defaults:
         if slots.get(name) != "value":
             raise ManifestError(path, f"{where}.python.defaults.{name}", "names no value input of this block")
-    return BlockSpec(block_type, definition, python["code"], values, defaults, slots)
+    return BlockSpec(block_type, definition, python["code"], values, defaults, slots, handlers)
 
 
 def read_blocks(path: Path) -> tuple:

@@ -2,9 +2,11 @@
 import importlib
 import sys
 from dataclasses import dataclass
+from functools import cached_property
 from pathlib import Path
 
 from rockly_desktop.core.errors import ManifestError
+from rockly_desktop.core.ros_definitions import DefinitionCatalog
 from rockly_desktop.plugins.blocks import BlockSpec, read_blocks
 from rockly_desktop.plugins.i18n import localize
 from rockly_desktop.plugins.manifest import MANIFEST_NAME, read_manifest
@@ -51,12 +53,19 @@ class Profile:
         """Old field names/values of saved programs, per block type."""
         return self.manifest.get("legacy_fields", {})
 
+    @cached_property
+    def ros_types(self) -> DefinitionCatalog:
+        """The ROS types typed blocks offer: the common installed packages and the profile's own."""
+        own = [self.root / self.manifest["messages"]] if self.manifest.get("messages") else []
+        return DefinitionCatalog(own)
+
     def editor_config(self, language: str) -> dict:
         """Everything the editor page needs for this profile, texts in ``language``."""
         return {
             "profile": self.id,
             "blocks": [spec.editor_config(language) for spec in self.blocks + self.shared_blocks],
             "toolbox": toolbox_json(self.toolbox_categories, language),
+            "types": self.ros_types.editor_catalog(),
         }
 
     def load_object(self, field_name: str):

@@ -9,20 +9,6 @@ from PySide6.QtWebEngineCore import QWebEnginePage
 from rockly_desktop.bridge.editor_view import EditorView, offline_web_profile
 
 
-@pytest.fixture
-def editor(qtbot, hobbit):
-    view = EditorView()
-    qtbot.addWidget(view)
-    view.resize(1000, 700)
-    view.show()  # a hidden page runs its timers too rarely for Blockly's event queue
-    errors = []
-    view.sig_page_error.connect(errors.append)
-    with qtbot.waitSignal(view.sig_ready, timeout=30000):
-        view.start(hobbit.editor_config("en"), "en")
-    yield view
-    assert errors == [], f"the page reported errors: {errors}"
-
-
 def call(qtbot, view, name, args=None):
     answers = []
     view.call(name, args, lambda result, error: answers.append((result, error)))

@@ -64,9 +64,9 @@ EXPRESSIONS = [
 ROS_STATEMENTS = [
     (block("ros_publish_value", {"message_type": "Int64"}, {"value": number(3), "topic": text("/count")}),
      "ros.publish('/count', 'Int64', 3)"),
-    (block("ros_publish_message", inputs={"topic": text("/cmd_vel"), "message_type": text("geometry_msgs/Twist"),
-                                          "fields": text('{"linear": {"x": 0.1}}')}),
-     "ros.publish_message('/cmd_vel', 'geometry_msgs/Twist', '{\"linear\": {\"x\": 0.1}}')"),
+    (block("ros_publish_message", {"message_type": "std_msgs/String"},
+           {"topic": text("/chatter"), "field:data": text("it's \"quoted\"\nand two lines")}),
+     "ros.publish_message('/chatter', 'std_msgs/String', {'data': 'it\\'s \"quoted\"\\nand two lines'})"),
     (block("ros_cancel_goals", inputs={"action": text("move_base")}), "ros.cancel_goals('move_base')"),
     (block("ros_set_param", inputs={"name": text("/speed"), "value": number(2)}), "ros.set_param('/speed', 2)"),
     (block("ros_wait", inputs={"seconds": number(2)}), "ros.wait(2)"),
@@ -77,10 +77,13 @@ ROS_EXPRESSIONS = [
     (block("ros_message_field", inputs={"path": text("pose.pose.position.x"),
                                         "message": block("ros_wait_message", inputs={"topic": text("/odom")})}),
      "ros.field(ros.wait_for_message('/odom', 10), 'pose.pose.position.x')"),
-    (block("ros_call_service", inputs={"name": text("/trigger"), "service_type": text("std_srvs/Trigger"),
-                                       "request": text("{}")}), "ros.call_service('/trigger', 'std_srvs/Trigger', '{}')"),
-    (block("ros_send_goal", inputs={"action": text("hobbit_arm"), "action_type": text("hobbit_msgs/ArmServerAction"),
-                                    "goal": text("{}")}), "ros.send_goal('hobbit_arm', 'hobbit_msgs/ArmServerAction', '{}')"),
+    (block("ros_call_service", {"service_type": "std_srvs/SetBool"},
+           {"name": text("/enable"), "field:data": block("logic_boolean", {"BOOL": "TRUE"})}),
+     "ros.call_service('/enable', 'std_srvs/SetBool', {'data': True})"),
+    (block("ros_send_goal", {"action_type": "hobbit_msgs/ArmServerAction"},
+           {"action": text("hobbit_arm"), "field:command.data": text("MoveToHome")}),
+     "ros.send_goal('hobbit_arm', 'hobbit_msgs/ArmServerAction', {'command': {'data': 'MoveToHome'}, 'velocity': 0}, "
+     "while_waiting=None)"),
     (block("ros_get_param", inputs={"name": text("/speed")}), "ros.get_param('/speed')"),
 ]
 
@@ -92,7 +95,8 @@ def test_generic_ros_statement_blocks(headless_editor, hobbit, program, expected
 
 @pytest.mark.parametrize(("expression", "expected"), ROS_EXPRESSIONS, ids=[b["type"] for b, _ in ROS_EXPRESSIONS])
 def test_generic_ros_value_blocks(headless_editor, hobbit, expression, expected):
-    assert generate(headless_editor, hobbit, block("text_print", inputs={"TEXT": expression})).strip() == f"print({expected})"
+    code = generate(headless_editor, hobbit, block("text_print", inputs={"TEXT": expression}))
+    assert code.strip().splitlines()[-1] == f"print({expected})"  # after the goal's feedback variable
 
 
 @pytest.mark.parametrize(("expression", "expected"), EXPRESSIONS, ids=[b["type"] for b, _ in EXPRESSIONS])

@@ -84,7 +84,7 @@ def test_missing_python_is_refused(profile, change):
 def test_unknown_python_keys_are_named(profile):
     profile.edit_block("hobbit_move", lambda raw: raw["python"].update(value={}, default={"speed": 1}))
     assert_error(profile, "blocks.yaml", "blocks[hobbit_move].python",
-                 "unknown key(s) ['default', 'value'] (use code, values, defaults)")
+                 "unknown key(s) ['default', 'value'] (use code, values, defaults, handlers)")
 
 
 def test_template_placeholder_naming_no_field_or_input_lists_what_there_is(profile):
@@ -155,6 +155,66 @@ def test_defaults_on_a_statement_input_are_refused(profile):
         raw["python"]["defaults"] = {"then": "pass"}
     profile.edit_block("hobbit_move", add_statement)
     assert_error(profile, "blocks.yaml", "blocks[hobbit_move].python.defaults.then", "names no value input")
+
+
+def typed(raw, dropdown="message_type", mutator="rockly_typed_fields"):
+    raw["message0"] = "publish %1 as %2"
+    raw["args0"] = [{"type": "input_value", "name": "topic"},
+                    {"type": "field_dropdown", "name": dropdown, "options": [["std_msgs/String", "std_msgs/String"]]}]
+    raw["mutator"] = mutator
+    raw["python"] = {"code": "robot.publish_any({topic}, {%s}, {fields})" % dropdown}
+
+
+@pytest.mark.parametrize("dropdown", ["message_type", "service_type", "action_type"])
+def test_a_typed_fields_block_gets_the_fields_slot(profile, dropdown):
+    profile.edit_block("hobbit_move", lambda raw: typed(raw, dropdown))
+    spec = load_profile(profile.root, SHARED_TOOLBOXES).block("hobbit_move")
+    assert spec.slots == {"topic": "value", dropdown: "field", "fields": "typed_fields"}
+
+
+def test_an_unknown_mutator_is_refused_naming_the_one_there_is(profile):
+    profile.edit_block("hobbit_move", lambda raw: typed(raw, mutator="my_mutator"))
+    assert_error(profile, "blocks.yaml", "blocks[hobbit_move].mutator",
+                 "'my_mutator' is not a mutator Rockly's editor has (it has: rockly_typed_fields)")
+
+
+def test_a_typed_fields_block_needs_its_type_dropdown(profile):
+    profile.edit_block("hobbit_move", lambda raw: typed(raw, dropdown="kind"))
+    assert_error(profile, "blocks.yaml", "blocks[hobbit_move].mutator",
+                 "needs exactly one field_dropdown named one of ['message_type', 'service_type', 'action_type']")
+
+
+def test_a_typed_fields_block_may_not_have_its_own_fields_input(profile):
+    def with_fields_input(raw):
+        typed(raw)
+        raw["message0"] += " %3"
+        raw["args0"].append({"type": "input_value", "name": "fields"})
+    profile.edit_block("hobbit_move", with_fields_input)
+    assert_error(profile, "blocks.yaml", "blocks[hobbit_move].mutator", "adds the slot 'fields'")
+
+
+def with_handler(raw, handlers, variable_type="field_variable"):
+    raw["message0"] = "drive %1 %2 seeing %3 do %4"
+    raw["args0"] += [{"type": variable_type, "name": "seen", "variable": "seen"},
+                     {"type": "input_statement", "name": "meanwhile"}]
+    raw["python"]["code"] = "robot.drive({speed}, {direction}, {meanwhile})"
+    raw["python"]["handlers"] = handlers
+
+
+def test_a_handler_names_a_statement_input_and_a_variable_field(profile):
+    profile.edit_block("hobbit_move", lambda raw: with_handler(raw, {"meanwhile": "seen"}))
+    assert load_profile(profile.root, SHARED_TOOLBOXES).block("hobbit_move").handlers == {"meanwhile": "seen"}
+
+
+@pytest.mark.parametrize("handlers, variable_type, field, problem", [
+    ({"speed": "seen"}, "field_variable", "python.handlers.speed", "names no statement input"),
+    ({"meanwhile": "seen"}, "field_input", "python.handlers.meanwhile", "'seen' is no field_variable of this block"),
+    ({"meanwhile": "nothing"}, "field_variable", "python.handlers.meanwhile", "'nothing' is no field_variable"),
+    (["meanwhile"], "field_variable", "python.handlers", "must map statement inputs to a variable field"),
+], ids=["value input", "text field", "missing field", "list"])
+def test_broken_handlers_are_explained(profile, handlers, variable_type, field, problem):
+    profile.edit_block("hobbit_move", lambda raw: with_handler(raw, handlers, variable_type))
+    assert_error(profile, "blocks.yaml", f"blocks[hobbit_move].{field}", problem)
 
 
 def test_duplicate_block_type_is_refused(profile):
@@ -449,8 +509,9 @@ def test_editor_config_in_german_has_german_block_texts_and_python_templates(hob
     assert head["definition"]["message0"] == "schau %1"
     assert head["definition"]["args0"][0]["options"][0] == ["geradeaus", "center_center"]
     assert head["python"] == {"code": "robot.look({head_position})", "values": {}, "defaults": {},
-                              "slots": {"head_position": "field"}, "expression": False}
+                              "slots": {"head_position": "field"}, "handlers": {}, "expression": False}
     assert config["toolbox"]["kind"] == "categoryToolbox"
+    assert config["types"]["actions"]["hobbit_msgs/ArmServerAction"] == [["command.data", "String"], ["velocity", "Number"]]
     assert config["toolbox"]["contents"][0]["name"] == "Fahren"
 
 

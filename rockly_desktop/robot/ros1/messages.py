@@ -51,6 +51,7 @@ import genpy.generate_initpy
 import genpy.generator
 
 from rockly_desktop.core.errors import RobotCommandError
+from rockly_desktop.core.ros_definitions import installed_definition_dirs
 
 # Bump when the layout or the generation changes, so older cache folders are not reused.
 CACHE_FORMAT = 1
@@ -109,17 +110,6 @@ def default_cache_dir() -> Path:
     """``$XDG_CACHE_HOME/rockly/ros1_messages`` (``~/.cache`` when the variable is unset)."""
     base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
     return Path(base) / "rockly" / "ros1_messages"
-
-
-def default_system_dirs() -> list:
-    """Folders holding installed ROS packages' definitions: ``ROS_PACKAGE_PATH``, then ``/usr/share``."""
-    dirs = [p for p in os.environ.get("ROS_PACKAGE_PATH", "").split(os.pathsep) if p]
-    dirs.append("/usr/share")
-    unique = []
-    for d in dirs:
-        if d not in unique:
-            unique.append(d)
-    return [Path(d) for d in unique]
 
 
 def expand_action(name: str, text: str, path="<action>") -> dict:
@@ -319,7 +309,7 @@ class MessageTypes:
     ``definition_dirs``: folders a robot profile ships, each holding ``<package>/msg``,
     ``<package>/srv`` and ``<package>/action``; earlier folders win. ``cache_dir``: where
     generated packages go (default :func:`default_cache_dir`). ``system_dirs``: folders
-    of installed definitions (default :func:`default_system_dirs`).
+    of installed definitions (default :func:`installed_definition_dirs`).
     """
 
     def __init__(self, definition_dirs=(), cache_dir=None, system_dirs=None):
@@ -330,7 +320,7 @@ class MessageTypes:
             if not folder.is_dir():
                 raise MessageDefinitionError(folder, "the ROS definitions folder does not exist")
         self.cache_dir = Path(cache_dir) if cache_dir is not None else default_cache_dir()
-        self.system_dirs = [Path(d) for d in (default_system_dirs() if system_dirs is None else system_dirs)]
+        self.system_dirs = [Path(d) for d in (installed_definition_dirs() if system_dirs is None else system_dirs)]
         self._lock = threading.RLock()
         self._packages = {}      # name -> _Package, or None when nowhere
         self._sources = {}       # name -> _Source or None
