@@ -57,14 +57,17 @@ const RocklyTypedFields = (() => {
         if (child && !child.isShadow()) child.unplug();  // moved aside, not deleted
         this.removeInput(input.name);
       }
-      const before = this.inputList.find((input) => input.type === Blockly.inputs.inputTypes.STATEMENT);
+      // The field inputs follow the input that holds the type dropdown, in the type's order.
+      let position = this.inputList.indexOf(this.getField(this.rocklyTypeField_).getParentInput()) + 1;
       for (const [name, check] of wanted) {
         if (!this.getInput(name)) {
           const input = this.appendValueInput(name).setCheck(check).setAlign(Blockly.inputs.Align.RIGHT)
               .appendField(name.slice(PREFIX.length));
           if (SHADOWS[check]) input.connection.setShadowState(SHADOWS[check]);
         }
-        if (before) this.moveInputBefore(name, before.name);
+        const current = this.inputList.indexOf(this.getInput(name));
+        if (current !== position) this.moveNumberedInputBefore(current, position);
+        position++;
       }
       this.rocklyFields_ = fields;
     },
