@@ -31,6 +31,10 @@ class GoalHandle(ABC):
     """A goal that was sent to an action server."""
 
     @abstractmethod
+    def done(self) -> bool:
+        """True once the goal has ended (its outcome is known); does not wait."""
+
+    @abstractmethod
     def wait(self, timeout: float) -> GoalOutcome:
         """Wait (interruptibly) for the goal to end; raise RobotTimeout after ``timeout`` s."""
 

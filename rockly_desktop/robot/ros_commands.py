@@ -6,12 +6,15 @@ text, since blocks have no dictionary block.
 """
 import json
 import logging
+import time
+from collections import deque
 
-from rockly_desktop.core.errors import RobotCommandError
+from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
 from rockly_desktop.core.state_store import field_value
 from rockly_desktop.robot.commands import RobotCommands
 
 log = logging.getLogger("rosout")  # on ROS 1, rospy sends this logger's records to /rosout
+_log = logging.getLogger(__name__)  # Rockly's own log, not the program's
 
 STD_TYPES = {"String": "std_msgs/String", "Bool": "std_msgs/Bool", "Float64": "std_msgs/Float64",
              "Int64": "std_msgs/Int64", "UInt64": "std_msgs/UInt64"}
@@ -72,10 +75,44 @@ class RosCommands(RobotCommands):
         return self.backend.call_service(str(name), str(service_type), _as_dict(request, "service request"),
                                          self.number(timeout, "the timeout"))
 
-    def send_goal(self, action, action_type, goal=None, timeout=GOAL_TIMEOUT):
-        """Send an action goal and wait: returns 'succeeded', 'aborted', 'preempted' or 'rejected'."""
-        handle = self.backend.send_goal(str(action), str(action_type), _as_dict(goal, "goal"))
-        return handle.wait(self.number(timeout, "the timeout")).status.value
+    def send_goal(self, action, action_type, goal=None, timeout=GOAL_TIMEOUT, while_waiting=None):
+        """Send an action goal and wait: returns 'succeeded', 'aborted', 'preempted' or 'rejected'.
+
+        ``while_waiting(feedback)``, if given, runs in this (the program's) thread with the
+        newest feedback while the goal is under way; feedback that arrives while it runs
+        is coalesced, so a slow handler sees the latest, not a backlog. If the wait ends
+        any other way than with the goal's end (a stop, the timeout, an error in the
+        handler), the goal is cancelled and the error passes on.
+        """
+        action, timeout = str(action), self.number(timeout, "the timeout")
+        if while_waiting is not None and not callable(while_waiting):
+            raise RobotCommandError(f"what to do while waiting must be a function, not {while_waiting!r}")
+        pending = deque(maxlen=1)  # only the newest feedback waits for the handler
+        handle = self.backend.send_goal(action, str(action_type), _as_dict(goal, "goal"),
+                                        feedback=pending.append if while_waiting is not None else None)
+        try:
+            if while_waiting is None:
+                return handle.wait(timeout).status.value
+            return self._wait_with_handler(handle, action, pending, while_waiting, timeout).status.value
+        except BaseException:
+            try:
+                handle.cancel()
+            except Exception:  # noqa: BLE001 - the error that ended the wait is the one to report
+                _log.exception("could not cancel the goal on the action '%s'", action)
+            raise
+
+    def _wait_with_handler(self, handle, action, pending, while_waiting, timeout):
+        """Call ``while_waiting`` with each newest feedback until the goal ends; its outcome."""
+        deadline = time.monotonic() + timeout
+        while True:
+            done = handle.done()  # before taking the feedback, so what came before the end is handed over
+            if pending:
+                while_waiting(pending.popleft())
+            if done:
+                return handle.wait(timeout)
+            remaining = deadline - time.monotonic()
+            if remaining <= 0 or not self.backend.wait_until(lambda: pending or handle.done(), remaining):
+                raise RobotTimeout(f"the action '{action}' did not finish within {timeout:g} s")
 
     def cancel_goals(self, action):
         """Cancel every goal of the action server ``action``."""

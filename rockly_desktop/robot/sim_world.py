@@ -199,9 +199,13 @@ class SimGoalHandle(GoalHandle):
         self._goal = sim_goal
         self._backend = backend
 
+    def done(self) -> bool:
+        """True once the action server has ended the goal."""
+        return self._goal.outcome is not None
+
     def wait(self, timeout: float) -> GoalOutcome:
         """Wait for the goal's outcome; a stop request raises ProgramStopped, a timeout RobotTimeout."""
-        if not self._backend.wait_until(lambda: self._goal.outcome is not None, timeout):
+        if not self._backend.wait_until(self.done, timeout):
             raise RobotTimeout(f"the action '{self._goal.action}' did not finish within {timeout:g} s")
         return self._goal.outcome
 

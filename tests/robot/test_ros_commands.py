@@ -3,20 +3,49 @@ import threading
 
 import pytest
 
-from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
+from rockly_desktop.core.errors import ProgramStopped, RobotCommandError, RobotTimeout
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.ros_commands import RosCommands
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
 
 
+ARM = ("hobbit_arm", "hobbit_msgs/ArmServerAction")
+PREEMPTED = 2  # actionlib_msgs/GoalStatus
+
+
 @pytest.fixture
-def sim(hobbit):
+def simulated(hobbit):
+    """A running simulated HOBBIT (20 times real time) and its world."""
     world = SimWorld()
     simulator = hobbit.load_object("simulator")(world, speed=20)
     simulator.start()
+    yield world, simulator
+    simulator.shutdown()
+
+
+@pytest.fixture
+def sim(simulated):
+    world, _ = simulated
     said = []
     yield RosCommands(SimBackend(world, Interrupt()), say=said.append), world, said
-    simulator.shutdown()
+
+
+def trajectory(points):
+    """An arm goal that takes ``points`` × 2.5 simulated seconds (1/8 s each at speed 20)."""
+    return {"command": {"data": "MoveAlongTrajectory"}, "joints": [{"joint_values": [0.1] * 6}] * points}
+
+
+def results_of(world):
+    """The actionlib status codes of the arm goals that end from now on."""
+    results = []
+    world.tap(lambda topic, _type, message: topic == "/hobbit_arm/result" and results.append(message["status"]["status"]))
+    return results
+
+
+def assert_arm_halted(world, simulator, results):
+    assert world.wait_for(lambda: results, 5)
+    assert results == [PREEMPTED]
+    assert simulator.snapshot()["arm_target"] is None   # the arm is no longer moving
 
 
 def test_publish_simple_and_any_message(sim):
@@ -74,3 +103,65 @@ def test_parameters_and_logging(sim):
     assert said == ["[warn] battery low"]
     with pytest.raises(RobotCommandError, match="log level"):
         ros.log("shout", "x")
+
+
+def test_while_waiting_gets_the_feedback_in_the_calling_thread(sim):
+    ros, _, _ = sim
+    calls = []
+    outcome = ros.send_goal(*ARM, {"command": {"data": "MoveToCandle"}},
+                            while_waiting=lambda feedback: calls.append((threading.get_ident(), feedback)))
+    assert outcome == "succeeded"
+    assert {thread for thread, _ in calls} == {threading.get_ident()}
+    assert calls[-1][1] == {"feedback": {"data": "MoveToCandle 100 %"}}
+
+
+def test_a_slow_handler_gets_the_newest_feedback_not_a_backlog(simulated):
+    world, _ = simulated
+    ros = RosCommands(SimBackend(world, Interrupt()))
+    results, seen = results_of(world), []
+
+    def slow(feedback):  # busy until the goal has ended: every later feedback arrives meanwhile
+        seen.append(feedback["feedback"]["data"])
+        assert world.wait_for(lambda: results, 10)
+
+    assert ros.send_goal(*ARM, trajectory(8), while_waiting=slow) == "succeeded"
+    # the simulator reported 0, 25, 50, 75 and 100 %; the handler saw the first and then only the newest
+    assert seen == ["MoveAlongTrajectory 0 %", "MoveAlongTrajectory 100 %"]
+
+
+def test_an_error_in_the_handler_cancels_the_goal_and_passes_on(simulated):
+    world, simulator = simulated
+    ros, results = RosCommands(SimBackend(world, Interrupt())), results_of(world)
+
+    def fail(feedback):
+        raise ValueError("no feedback wanted")
+
+    with pytest.raises(ValueError, match="no feedback wanted"):
+        ros.send_goal(*ARM, trajectory(40), while_waiting=fail)
+    assert_arm_halted(world, simulator, results)
+
+
+@pytest.mark.parametrize("with_handler", [True, False])
+def test_a_stop_during_the_wait_cancels_the_goal(simulated, with_handler):
+    world, simulator = simulated
+    interrupt = Interrupt()
+    ros, results = RosCommands(SimBackend(world, interrupt)), results_of(world)
+    if with_handler:
+        handler = lambda feedback: interrupt.request_stop()  # noqa: E731 - stop once the goal is under way
+    else:
+        handler = None
+        world.tap(lambda topic, _type, _message: topic == "/hobbit_arm/goal" and interrupt.request_stop())
+    with pytest.raises(ProgramStopped):
+        ros.send_goal(*ARM, trajectory(40), while_waiting=handler)
+    assert_arm_halted(world, simulator, results)
+
+
+def test_the_timeout_applies_with_a_handler_and_cancels_the_goal(simulated):
+    world, simulator = simulated
+    ros, results, seen = RosCommands(SimBackend(world, Interrupt())), results_of(world), []
+    with pytest.raises(RobotTimeout, match="the action 'hobbit_arm' did not finish within 0.3 s"):
+        ros.send_goal(*ARM, trajectory(40), timeout=0.3, while_waiting=seen.append)
+    assert seen  # feedback came while it waited
+    assert_arm_halted(world, simulator, results)
+    with pytest.raises(RobotCommandError, match="must be a function"):
+        ros.send_goal(*ARM, trajectory(1), while_waiting="MoveToHome")

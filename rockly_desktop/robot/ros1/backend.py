@@ -136,24 +136,23 @@ class Ros1GoalHandle(GoalHandle):
         self._client = client
         self._action = action
 
+    def done(self) -> bool:
+        """True once the goal reached a terminal state (the client's simple state is DONE)."""
+        from actionlib import SimpleGoalState
+
+        return self._client.simple_state == SimpleGoalState.DONE
+
     def wait(self, timeout: float) -> GoalOutcome:
         """Wait for the goal's end (interruptible); its status and result."""
-        client = self._client
-        if not self._backend.wait_until(lambda: client.wait_for_result(self._rospy_duration(0.005)), timeout):
+        if not self._backend.wait_until(self.done, timeout):
             raise RobotTimeout(f"the action '{self._action}' did not finish within {timeout:g} s")
-        result = client.get_result()
-        return GoalOutcome(_ACTIONLIB_STATUS[client.get_state()],
+        result = self._client.get_result()
+        return GoalOutcome(_ACTIONLIB_STATUS[self._client.get_state()],
                            from_message(result) if result is not None else {})
 
     def cancel(self) -> None:
         """Ask the action server to stop this goal."""
         self._client.cancel_goal()
-
-    @staticmethod
-    def _rospy_duration(seconds):
-        import rospy
-
-        return rospy.Duration(seconds)
 
 
 class Ros1Backend(RobotBackend):

@@ -180,3 +180,32 @@ def test_generic_ros_commands_over_ros(ros_robot):
         ros.call_service("/no_such_service", "std_srvs/Trigger", {}, timeout=0.3)
     with pytest.raises(RobotCommandError, match="no action server 'no_such_action'"):
         ros.send_goal("no_such_action", "hobbit_msgs/ArmServerAction", {})
+
+
+def test_a_goal_runs_its_while_waiting_handler_on_feedback_from_the_action_server(ros_robot):
+    from rockly_desktop.robot.ros_commands import RosCommands
+
+    ros, seen = RosCommands(ros_robot.backend(Interrupt())), []
+    outcome = ros.send_goal("hobbit_arm", "hobbit_msgs/ArmServerAction", {"command": {"data": "MoveToHome"}},
+                            while_waiting=lambda feedback: seen.append((threading.get_ident(), feedback)))
+    assert outcome == "succeeded"
+    assert seen and {thread for thread, _ in seen} == {threading.get_ident()}
+    assert all(feedback["feedback"]["data"].startswith("MoveToHome ") for _, feedback in seen)
+
+
+def test_a_stop_while_a_handler_waits_preempts_the_goal_on_the_server(ros_robot):
+    from rockly_desktop.robot.ros_commands import RosCommands
+
+    results, unsubscribe = record(ros_robot, "/hobbit_arm/result", "hobbit_msgs/ArmServerActionResult",
+                                  lambda message: message["status"]["status"])
+    interrupt = Interrupt()
+    ros = RosCommands(ros_robot.backend(interrupt))
+    long_motion = {"command": {"data": "MoveAlongTrajectory"}, "joints": [{"joint_values": [0.1] * 6}] * 40}  # 5 s
+    try:
+        with pytest.raises(ProgramStopped):
+            ros.send_goal("hobbit_arm", "hobbit_msgs/ArmServerAction", long_motion,
+                          while_waiting=lambda feedback: interrupt.request_stop())
+        eventually(lambda: results)
+    finally:
+        unsubscribe()
+    assert results == [2]  # actionlib's PREEMPTED: the server stopped the arm
