@@ -70,6 +70,21 @@ def test_an_error_exits_non_zero_naming_the_block(tmp_path):
     assert "error in block bad (hobbit_move): The robot could not do this: the distance must be a number, not 'far'" in result.stderr
 
 
+def test_a_typed_field_given_a_text_stops_on_its_block_before_publishing(tmp_path):
+    path = tmp_path / "twist.rockly"
+    ws_blocks = stack(block("variables_set", {"VAR": {"id": "s"}}, {"VALUE": text("fast")}, id="fine"),
+                      block("ros_publish_message", {"message_type": "geometry_msgs/Twist"},
+                            {"topic": text("/cmd_vel"), "field:linear.x": block("variables_get", {"VAR": {"id": "s"}})},
+                            id="bad"))
+    document = json.loads(rockly_document([ws_blocks]))
+    document["workspace"]["variables"] = [{"name": "speed", "id": "s"}]
+    path.write_text(json.dumps(document))
+    result = rockly_run(path)
+    assert result.returncode == 1
+    assert ("error in block bad (ros_publish_message): The robot could not do this: "
+            "the field linear.x needs a number, not 'fast'") in result.stderr
+
+
 def test_first_rockly_xml_runs_too(tmp_path):
     path = tmp_path / "old.xml"
     path.write_text('<xml xmlns="https://developers.google.com/blockly/xml"><block type="hobbit_head" id="h">'

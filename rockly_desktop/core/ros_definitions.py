@@ -10,11 +10,17 @@ A type's fields are flattened to paths (``linear.x``); each leaf is a primitive 
 can check (a number, a text, a yes/no) or an array of primitives (a list). Arrays of
 messages cannot be built from blocks and are left out, as is ``header.seq``, which ROS
 fills in itself.
+
+``check`` holds a program's message dict against its type before it is sent, so a wrong
+value gets the same clear message on the simulator as on a real robot.
 """
 import os
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
+
+from rockly_desktop.core.errors import RobotCommandError
 
 COMMON_PACKAGES = ("std_msgs", "geometry_msgs", "sensor_msgs", "nav_msgs", "std_srvs")
 
@@ -23,6 +29,7 @@ _NUMBERS = ("int8", "uint8", "int16", "uint16", "int32", "uint32", "int64", "uin
 _CHECKS = {**{name: "Number" for name in _NUMBERS}, "string": "String", "bool": "Boolean"}
 _FIELD_LINE = re.compile(r"^(?P<type>[A-Za-z_][\w/]*)(?P<array>\[\d*\])?\s+(?P<name>[A-Za-z_]\w*)\s*$")
 _MAX_DEPTH = 6
+_EXPECTED = {"Number": "a number", "String": "a text", "Boolean": "true or false"}
 
 
 @dataclass(frozen=True)
@@ -96,6 +103,20 @@ class DefinitionCatalog:
                 names += [f"{package}/{path.stem}" for path in sorted((directory / kind).glob(f"*.{kind}"))]
         return names
 
+    def _resolve(self, ros_type: str, package: str):
+        """``(full type name, declarations)`` of a field's message type, or None when not found."""
+        full = "std_msgs/Header" if ros_type == "Header" else ros_type if "/" in ros_type else f"{package}/{ros_type}"
+        text = self._definition(*full.split("/", 1), "msg")
+        return (full, _declarations(text)) if text is not None else None
+
+    def _top(self, type_name: str, kind: str):
+        """``(package, declarations)`` of a message, a service's request or an action's goal, or None."""
+        package, _, name = type_name.partition("/")
+        if kind == "action":
+            name = name[:-len("Action")] if name.endswith("Action") else name
+        text = self._definition(package, name, kind)
+        return (package, _declarations(_sections(text)[0])) if text is not None else None
+
     def _flatten(self, declarations, package: str, prefix: str = "", depth: int = 0) -> list:
         inputs = []
         for ros_type, is_array, name in declarations:
@@ -103,14 +124,11 @@ class DefinitionCatalog:
             if ros_type in _CHECKS:
                 inputs.append(FieldInput(path, ros_type + ("[]" if is_array else ""), "Array" if is_array else _CHECKS[ros_type]))
                 continue
-            if is_array or depth >= _MAX_DEPTH:
+            resolved = None if is_array or depth >= _MAX_DEPTH else self._resolve(ros_type, package)
+            if resolved is None:
                 continue
-            full = "std_msgs/Header" if ros_type == "Header" else ros_type if "/" in ros_type else f"{package}/{ros_type}"
-            sub_package, sub_name = full.split("/", 1)
-            text = self._definition(sub_package, sub_name, "msg")
-            if text is None:
-                continue
-            nested = self._flatten(_declarations(text), sub_package, path + ".", depth + 1)
+            full, nested_declarations = resolved
+            nested = self._flatten(nested_declarations, full.split("/")[0], path + ".", depth + 1)
             if full == "std_msgs/Header":
                 nested = [field for field in nested if field.path != path + ".seq"]
             inputs += nested
@@ -122,13 +140,53 @@ class DefinitionCatalog:
         Action types are named as programs name them, ``<package>/<Name>Action``.
         Returns [] for a type that is not found.
         """
-        package, _, name = type_name.partition("/")
-        if kind == "action":
-            name = name[:-len("Action")] if name.endswith("Action") else name
-        text = self._definition(package, name, kind)
-        if text is None:
-            return []
-        return self._flatten(_declarations(_sections(text)[0]), package)
+        top = self._top(type_name, kind)
+        return self._flatten(top[1], top[0]) if top else []
+
+    def check(self, type_name: str, kind: str, data) -> None:
+        """Raise RobotCommandError naming the field when ``data`` does not fit the type.
+
+        A type (or a nested type) that is not found is not checked: the robot's side
+        decides then.
+        """
+        top = self._top(str(type_name), kind)
+        if top is not None:
+            self._check_message(top[1], top[0], data, str(type_name), "")
+
+    def _check_message(self, declarations, package, data, type_name, prefix):
+        if not isinstance(data, Mapping):
+            raise RobotCommandError(f"{prefix.rstrip('.') or 'the message'} must be a {type_name} "
+                                    f"(a mapping of its fields), not {data!r}")
+        by_name = {name: (ros_type, is_array) for ros_type, is_array, name in declarations}
+        for key, value in data.items():
+            if key not in by_name:
+                subject = f"{prefix.rstrip('.')} (a {type_name})" if prefix else type_name
+                raise RobotCommandError(f"{subject} has no field '{key}' (it has: {', '.join(by_name) or 'none'})")
+            ros_type, is_array = by_name[key]
+            path = prefix + key
+            if is_array:
+                if not isinstance(value, (list, tuple)):
+                    raise RobotCommandError(f"the field {path} needs a list, not {value!r}")
+                for index, item in enumerate(value):
+                    self._check_value(ros_type, package, item, f"{path}[{index}]")
+            else:
+                self._check_value(ros_type, package, value, path)
+
+    def _check_value(self, ros_type, package, value, path):
+        check = _CHECKS.get(ros_type)
+        if check is None:
+            resolved = self._resolve(ros_type, package)
+            if resolved is not None:
+                full, declarations = resolved
+                self._check_message(declarations, full.split("/")[0], value, full, path + ".")
+            return
+        fits = {"Number": isinstance(value, (int, float)) and not isinstance(value, bool),
+                "String": isinstance(value, str),
+                "Boolean": isinstance(value, bool) or value in (0, 1)}[check]
+        if ros_type in ("time", "duration") and isinstance(value, Mapping):
+            fits = set(value) <= {"secs", "nsecs"}
+        if not fits:
+            raise RobotCommandError(f"the field {path} needs {_EXPECTED[check]}, not {value!r}")
 
     def editor_catalog(self) -> dict:
         """For the editor page: ``{messages|services|actions: {type: [[path, check], ...]}}``."""

@@ -12,7 +12,7 @@ def make_runner(profile, robot, run_code: dict, control, emit) -> ProgramRunner:
     """
     backend = robot.backend(control.interrupt)
     commands = profile.load_object("api")(backend)
-    ros = RosCommands(backend)
+    ros = RosCommands(backend, types=profile.ros_types)
 
     def on_end():
         failures = robot.safe_stop()

@@ -2,7 +2,9 @@
 
 They work by ROS names and types on whatever backend the program runs on (the simulator
 or ROS 1). Dict arguments (a service request, an action goal) may also be given as JSON
-text, since blocks have no dictionary block.
+text, since blocks have no dictionary block. With a DefinitionCatalog, messages, requests
+and goals are checked against their type before they leave, so a wrong value is named
+the same way on the simulator as on a real robot.
 """
 import json
 import logging
@@ -39,10 +41,17 @@ def _as_dict(value, what: str) -> dict:
 class RosCommands(RobotCommands):
     """Publish, listen, call services, send goals, parameters and logging on any robot."""
 
-    def __init__(self, backend, say=print):
-        """``say(text)`` shows log lines to the person (the run's console)."""
+    def __init__(self, backend, say=print, types=None):
+        """``say(text)`` shows log lines to the person (the run's console); ``types`` checks what is sent."""
         super().__init__(backend)
         self.say = say
+        self.types = types
+
+    def _checked(self, data, type_name, kind, what):
+        data = _as_dict(data, what)
+        if self.types is not None:
+            self.types.check(type_name, kind, data)
+        return data
 
     def publish(self, topic, message_type, value):
         """Publish ``value`` on ``topic`` as a std_msgs type (String, Bool, Float64, Int64, UInt64)."""
@@ -51,7 +60,7 @@ class RosCommands(RobotCommands):
 
     def publish_message(self, topic, message_type, fields):
         """Publish any message type, its fields given as a mapping (or JSON text)."""
-        self.backend.publish(str(topic), str(message_type), _as_dict(fields, "message"))
+        self.backend.publish(str(topic), str(message_type), self._checked(fields, message_type, "msg", "message"))
 
     def wait_for_message(self, topic, timeout=10):
         """Wait for the next message on ``topic`` (any type) and return it."""
@@ -72,8 +81,8 @@ class RosCommands(RobotCommands):
 
     def call_service(self, name, service_type, request=None, timeout=10):
         """Call a service; ``request`` is a mapping (or JSON text); returns the response."""
-        return self.backend.call_service(str(name), str(service_type), _as_dict(request, "service request"),
-                                         self.number(timeout, "the timeout"))
+        request = self._checked(request, service_type, "srv", "service request")
+        return self.backend.call_service(str(name), str(service_type), request, self.number(timeout, "the timeout"))
 
     def send_goal(self, action, action_type, goal=None, timeout=GOAL_TIMEOUT, while_waiting=None):
         """Send an action goal and wait: returns 'succeeded', 'aborted', 'preempted' or 'rejected'.
@@ -87,8 +96,9 @@ class RosCommands(RobotCommands):
         action, timeout = str(action), self.number(timeout, "the timeout")
         if while_waiting is not None and not callable(while_waiting):
             raise RobotCommandError(f"what to do while waiting must be a function, not {while_waiting!r}")
+        goal = self._checked(goal, action_type, "action", "goal")
         pending = deque(maxlen=1)  # only the newest feedback waits for the handler
-        handle = self.backend.send_goal(action, str(action_type), _as_dict(goal, "goal"),
+        handle = self.backend.send_goal(action, str(action_type), goal,
                                         feedback=pending.append if while_waiting is not None else None)
         try:
             if while_waiting is None:

@@ -85,6 +85,8 @@ ROS_EXPRESSIONS = [
      "ros.send_goal('hobbit_arm', 'hobbit_msgs/ArmServerAction', {'command': {'data': 'MoveToHome'}, 'velocity': 0}, "
      "while_waiting=None)"),
     (block("ros_get_param", inputs={"name": text("/speed")}), "ros.get_param('/speed')"),
+    (block("ros_latest_field", inputs={"path": text("percentage"), "topic": text("/battery_state")}),
+     "ros.latest('/battery_state', 'percentage')"),
 ]
 
 

@@ -165,3 +165,48 @@ def test_the_timeout_applies_with_a_handler_and_cancels_the_goal(simulated):
     assert_arm_halted(world, simulator, results)
     with pytest.raises(RobotCommandError, match="must be a function"):
         ros.send_goal(*ARM, trajectory(1), while_waiting="MoveToHome")
+
+
+@pytest.fixture
+def checked(simulated, hobbit):
+    """The generic commands as a program gets them: checking what it sends against the types."""
+    world, _ = simulated
+    return RosCommands(SimBackend(world, Interrupt()), say=lambda text: None, types=hobbit.ros_types), world
+
+
+@pytest.mark.parametrize("send, problem", [
+    (lambda ros: ros.publish_message("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": "fast"}}),
+     "the field linear.x needs a number, not 'fast'"),
+    (lambda ros: ros.publish_message("/cmd_vel", "geometry_msgs/Twist", {"linear": {"q": 1}}),
+     "linear (a geometry_msgs/Vector3) has no field 'q' (it has: x, y, z)"),
+    (lambda ros: ros.publish_message("/cmd_vel", "geometry_msgs/Twist", {"speed": 1}),
+     "geometry_msgs/Twist has no field 'speed' (it has: linear, angular)"),
+    (lambda ros: ros.publish_message("/cmd_vel", "geometry_msgs/Twist", {"linear": 3}),
+     "linear must be a geometry_msgs/Vector3 (a mapping of its fields), not 3"),
+    (lambda ros: ros.publish_message("/scan", "sensor_msgs/LaserScan", {"ranges": 1.0}), "the field ranges needs a list"),
+    (lambda ros: ros.publish_message("/scan", "sensor_msgs/LaserScan", {"ranges": [1.0, "far"]}),
+     "the field ranges[1] needs a number, not 'far'"),
+    (lambda ros: ros.call_service("/enable", "std_srvs/SetBool", {"data": "yes"}), "the field data needs true or false"),
+    (lambda ros: ros.send_goal(*ARM, {"command": {"data": 7}}), "the field command.data needs a text, not 7"),
+    (lambda ros: ros.send_goal(*ARM, {"joints": [{"joint_values": [0, "up"]}]}),
+     "the field joints[0].joint_values[1] needs a number, not 'up'"),
+], ids=["text for number", "unknown nested field", "unknown field", "number for message", "number for list", "text in list",
+        "service request", "goal", "nested list"])
+def test_a_wrong_value_is_named_before_anything_is_sent(checked, send, problem):
+    ros, world = checked
+    sent = []
+    world.tap(lambda topic, _type, message: sent.append(topic))
+    with pytest.raises(RobotCommandError) as caught:
+        send(ros)
+    assert problem in str(caught.value)
+    assert sent == []
+
+
+def test_right_values_and_unknown_types_pass_the_check(checked):
+    ros, world = checked
+    ros.publish_message("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.1}, "angular": {"z": -1}})
+    ros.publish_message("/scan", "sensor_msgs/LaserScan", {"header": {"stamp": 1.5, "frame_id": "laser"}, "ranges": [1, 2.5]})
+    ros.publish_message("/lab", "lab_msgs/Unknown", {"anything": "goes"})   # the robot's side decides
+    assert world.latest("/cmd_vel") == {"linear": {"x": 0.1}, "angular": {"z": -1}}
+    assert world.latest("/lab") == {"anything": "goes"}
+    assert ros.send_goal(*ARM, {"command": {"data": "MoveToHome"}, "velocity": 0}) == "succeeded"
