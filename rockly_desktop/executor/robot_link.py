@@ -77,6 +77,7 @@ class RosRobot:
         from rockly_desktop.robot.ros1.messages import from_message
 
         self.state = StateStore(decode=from_message)
+        self.graph.service_watchers.append(self.state.record)  # this node's calls, e.g. the tablet's questions
         self._feed = None
 
     def follow_graph(self):

@@ -39,6 +39,10 @@ class RosGraph:
         self._actions = {}
         self.available_services = set()
         self.sent = {}  # topic -> (when, message) this node last published (commands like /head/move)
+        # Told of each service call this node makes, as (service, "service", {request, response}):
+        # calls cannot be watched on the graph, so a panel showing one (a tablet's last question)
+        # learns of it here, as the simulator's world tap reports it.
+        self.service_watchers = []
         # Service calls run here so a stop need not wait for them (an abandoned call, e.g. a
         # question on the robot's tablet, finishes on its own).
         self.service_calls = ThreadPoolExecutor(max_workers=SERVICE_WORKERS, thread_name_prefix="rockly-service")
@@ -280,7 +284,10 @@ class Ros1Backend(RobotBackend):
         if "error" in outcome:
             self.graph.forget_service(name)
             raise RobotCommandError(f"the service '{name}' failed: {outcome['error']}")
-        return from_message(outcome["response"])
+        response = from_message(outcome["response"])
+        for watcher in list(self.graph.service_watchers):
+            watcher(name, "service", {"request": request, "response": response})
+        return response
 
     def send_goal(self, action: str, action_type: str, goal: dict, feedback=None) -> GoalHandle:
         """Send a goal (waiting up to 5 s for the action server); feedback as dicts."""

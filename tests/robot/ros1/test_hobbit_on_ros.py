@@ -87,10 +87,13 @@ def test_navigation_goes_through_move_base(ros_robot, hobbit_robot):
     assert (x, y) == (pytest.approx(1.0, abs=0.05), pytest.approx(0.5, abs=0.05))
 
 
-def test_tablet_dialogs_go_through_mmui_and_come_back_answered(hobbit_robot):
+def test_tablet_dialogs_go_through_mmui_and_come_back_answered(hobbit_robot, ros_robot):
     hobbit_robot.show_info('Hello "world"\nnew line')
     assert hobbit_robot.ask_yes_no("Tea?") is True          # the simulator answers from --answer yes
     assert hobbit_robot.ask_text("Your name?") == "Ada"      # and --answer Ada
+    # The Tablet panel's rows: this node's last /MMUI call, as on the simulator.
+    assert ros_robot.state.value("/MMUI", "request.params[1].value") == "Your name?"
+    assert ros_robot.state.value("/MMUI", "response.params[0].value") == "Ada"
     hobbit_robot.call_sos()
     hobbit_robot.change_volume("louder")
 
