@@ -1,14 +1,20 @@
 """The public SDK for robot profiles: the only Rockly module profile code imports.
 
 A profile's commands subclass ``RobotCommands`` and talk to the robot through the
-``RobotBackend`` they are given (topics, services and actions by ROS names).
+``RobotBackend`` they are given (topics, services and actions by ROS names). Its
+simulator subclasses ``RobotSimulator`` (lock, ordered publishing, clock thread, start
+and shutdown), and its view may read snapshots with ``with_defaults``, ``as_number``,
+``as_point`` and ``as_points``. Nothing here imports Qt.
 """
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
 from rockly_desktop.core.state_store import field_value
 from rockly_desktop.robot.commands import RobotCommands
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
+from rockly_desktop.robot.simulator import RobotSimulator
+from rockly_desktop.robot.snapshot_values import as_number, as_point, as_points, with_defaults
 
 __all__ = [
     "GoalHandle", "GoalOutcome", "GoalStatus", "RobotBackend", "RobotCommandError",
-    "RobotCommands", "RobotTimeout", "field_value",
+    "RobotCommands", "RobotSimulator", "RobotTimeout", "as_number", "as_point", "as_points",
+    "field_value", "with_defaults",
 ]

@@ -97,45 +97,46 @@ class ${Class}Commands(RobotCommands):
         self.backend.publish(SAY_TOPIC, SAY_TYPE, {"data": str(text)})
 ''',
     "rockly_$name/sim.py": '''\
-"""The simulated $Title: it listens where the real robot listens and remembers what it heard."""
-import threading
+"""The simulated $Title: it listens where the real robot listens and remembers what it heard.
+
+``RobotSimulator`` brings the lock, the clock thread, ordered publishing, ``start()`` and
+``shutdown()``; see "A simulator, and its view" in Rockly's docs/writing-a-robot-profile.md.
+"""
+from rockly_desktop.sdk import RobotSimulator
 
 SAY_TOPIC = "/$name/say"
 STOP_TOPIC = "/$name/stop"
 
 
-class Sim$Class:
-    """A simulated $Title in a SimWorld; ``tablet`` and ``speed`` are not needed by this robot."""
+class Sim$Class(RobotSimulator):
+    """A simulated $Title in a SimWorld; ``tablet`` and ``speed`` are not needed by this robot yet."""
+
+    NAME = "simulated $Title"
 
     def __init__(self, world, tablet=None, speed=1.0):
-        self._world = world
-        self._lock = threading.Lock()
+        super().__init__(world, tablet, speed)
         self._said = None
         self._stops = 0
-        self._unsubscribe = []
 
-    def start(self):
-        """Listen on the robot's topics."""
-        self._unsubscribe = [self._world.subscribe(SAY_TOPIC, self._on_say),
-                             self._world.subscribe(STOP_TOPIC, self._on_stop)]
+    def connect(self):
+        """Listen on the robot's topics (until ``shutdown()``)."""
+        self.subscribe(SAY_TOPIC, self._on_say)
+        self.subscribe(STOP_TOPIC, self._on_stop)
 
-    def shutdown(self):
-        """Stop listening."""
-        for unsubscribe in self._unsubscribe:
-            unsubscribe()
-        self._unsubscribe = []
+    # A robot that changes by itself also overrides advance(dt) (simulated seconds pass) and
+    # queue_sensors() (queue what its sensors publish); both are called holding self.lock.
 
     def snapshot(self) -> dict:
         """The robot's state: the last text said (None before the first) and how often it was stopped."""
-        with self._lock:
+        with self.lock:
             return {"said": self._said, "stops": self._stops}
 
     def _on_say(self, message):
-        with self._lock:
+        with self.lock:
             self._said = message.get("data", "")
 
     def _on_stop(self, message):
-        with self._lock:
+        with self.lock:
             self._stops += 1
 ''',
     "tests/test_$name.py": '''\

@@ -8,12 +8,10 @@ caught here. Simulated time runs ``speed`` times as fast as the clock.
 """
 import logging
 import math
-import threading
-import time
 from collections import deque
 from dataclasses import dataclass
 
-from rockly_desktop.sdk import GoalStatus, RobotCommandError
+from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotSimulator
 
 log = logging.getLogger(__name__)
 
@@ -238,7 +236,7 @@ ARM_JOINTS = {
 GRIPPER_OPENING = {"open": 0.08, "closed": 0.0}
 
 
-class SimHobbit:
+class SimHobbit(RobotSimulator):
     """A simulated HOBBIT in a SimWorld, moving in simulated time ``speed`` times as fast as real time.
 
     ``tablet`` answers dialogs: ``ask(kind, text, timeout, interrupt) -> str`` (blocking)
@@ -246,18 +244,11 @@ class SimHobbit:
     to stop its clock.
     """
 
+    NAME = "simulated HOBBIT"
+    TICK_SECONDS = TICK_SECONDS
+
     def __init__(self, world, tablet=None, speed=1.0):
-        if not speed > 0:
-            raise ValueError(f"the simulation speed must be positive, not {speed!r}")
-        self._world = world
-        self._tablet = tablet
-        self._speed = speed
-        self._lock = threading.RLock()
-        self._publishing = threading.RLock()
-        self._outbox = []
-        self._stopping = threading.Event()
-        self._thread = None
-        self._time = 0.0
+        super().__init__(world, tablet, speed)
         self._x = self._y = self._theta = 0.0
         self._linear = self._angular = 0.0
         self._base = _Velocity()
@@ -271,44 +262,30 @@ class SimHobbit:
 
     # --- life cycle -------------------------------------------------------------------
 
-    def start(self):
-        """Subscribe and advertise HOBBIT's interface, publish the first state, start the clock."""
-        if self._thread is not None:
-            raise RuntimeError("the simulated HOBBIT was already started")
-        world = self._world
-        world.subscribe("/cmd_vel", self._on_velocity)
-        world.subscribe("/DiscreteMotionCmd", self._on_discrete_motion)
-        world.subscribe("/move_base_simple/goal", self._on_simple_goal)
-        world.subscribe("/head/move", self._on_head)
-        world.subscribe("/head/emo", self._on_emotion)
-        world.advertise_action(ARM_ACTION, self._serve_arm)
-        world.advertise_action(NAV_ACTION, self._serve_navigation)
-        world.advertise_service("/MMUI", self._serve_mmui)
-        with self._lock:
-            self._queue(*MOTION_STATE, {"data": "Idle"})
-            self._queue_sensors()
-        self._flush()
-        self._thread = threading.Thread(target=self._run, name="simulated HOBBIT", daemon=True)
-        self._thread.start()
-
-    def shutdown(self):
-        """Stop the simulation clock and wait for its thread."""
-        self._stopping.set()
-        if self._thread is not None:
-            self._thread.join()
+    def connect(self):
+        """Subscribe and advertise HOBBIT's interface; the base motion starts Idle."""
+        self.subscribe("/cmd_vel", self._on_velocity)
+        self.subscribe("/DiscreteMotionCmd", self._on_discrete_motion)
+        self.subscribe("/move_base_simple/goal", self._on_simple_goal)
+        self.subscribe("/head/move", self._on_head)
+        self.subscribe("/head/emo", self._on_emotion)
+        self.world.advertise_action(ARM_ACTION, self._serve_arm)
+        self.world.advertise_action(NAV_ACTION, self._serve_navigation)
+        self.world.advertise_service("/MMUI", self._serve_mmui)
+        self.queue(*MOTION_STATE, {"data": "Idle"})
 
     def safe_stop(self):
         """Stand still: zero velocity, no discrete motion, arm and navigation goals cancelled."""
-        with self._lock:
+        with self.lock:
             self._replace_base(_Velocity())
             self._halt_arm()
-        self._flush()
-        self._world.cancel_goals(ARM_ACTION)
-        self._world.cancel_goals(NAV_ACTION)
+        self.flush()
+        self.world.cancel_goals(ARM_ACTION)
+        self.world.cancel_goals(NAV_ACTION)
 
     def snapshot(self) -> dict:
         """A copy of the robot's state for the simulator view."""
-        with self._lock:
+        with self.lock:
             task = self._arm_task
             return {
                 "x": self._x, "y": self._y, "theta": self._theta, "trail": list(self._trail),
@@ -320,34 +297,24 @@ class SimHobbit:
                 "gripper": self._gripper, "turntable": self._turntable, "turntable_angle": self._turntable_angle,
                 "battery": self._battery, "volume": self._volume,
                 "tablet": dict(self._shown) if self._shown else None, "notices": list(self._notices),
-                "time": self._time,
+                "time": self.time,
             }
 
     # --- the clock --------------------------------------------------------------------
 
-    def _run(self):
-        last = time.monotonic()
-        while not self._stopping.wait(TICK_SECONDS):
-            now = time.monotonic()
-            self._advance((now - last) * self._speed)
-            last = now
-
-    def _advance(self, dt):
-        with self._lock:
-            self._time += dt
-            # a task found done now ended on the previous tick: its end is reported one control cycle after
-            # its last step, so even a zero-length motion reports Idle a whole tick after it was commanded
-            if self._base.done:
-                self._replace_base(_Velocity())
-            self._x, self._y, self._theta, self._linear, self._angular = self._base.step(
-                self._x, self._y, self._theta, dt)
-            if math.dist(self._trail[-1], (self._x, self._y)) >= TRAIL_SPACING:
-                self._trail.append((self._x, self._y))
-            self._advance_arm(dt)
-            busy = self._linear or self._angular or self._arm_task
-            self._battery = max(0.0, self._battery - dt * (BATTERY_DRAIN_BUSY if busy else BATTERY_DRAIN))
-            self._queue_sensors()
-        self._flush()
+    def advance(self, dt):
+        """Move the base and the arm ``dt`` simulated seconds on and drain the battery (under the lock)."""
+        # a task found done now ended on the previous tick: its end is reported one control cycle after
+        # its last step, so even a zero-length motion reports Idle a whole tick after it was commanded
+        if self._base.done:
+            self._replace_base(_Velocity())
+        self._x, self._y, self._theta, self._linear, self._angular = self._base.step(
+            self._x, self._y, self._theta, dt)
+        if math.dist(self._trail[-1], (self._x, self._y)) >= TRAIL_SPACING:
+            self._trail.append((self._x, self._y))
+        self._advance_arm(dt)
+        busy = self._linear or self._angular or self._arm_task
+        self._battery = max(0.0, self._battery - dt * (BATTERY_DRAIN_BUSY if busy else BATTERY_DRAIN))
 
     def _advance_arm(self, dt):
         task = self._arm_task
@@ -363,16 +330,17 @@ class SimHobbit:
             task.done = True
             self._arm_task = None
 
-    def _queue_sensors(self):
-        self._queue("/odom", "nav_msgs/Odometry", {
+    def queue_sensors(self):
+        """Odometry, battery, bumper and joint states, as HOBBIT publishes them every control cycle."""
+        self.queue("/odom", "nav_msgs/Odometry", {
             "header": {"frame_id": "odom"}, "child_frame_id": "base_link",
             "pose": {"pose": _pose(self._x, self._y, self._theta)},
             "twist": {"twist": {"linear": {"x": self._linear, "y": 0.0, "z": 0.0},
                                 "angular": {"x": 0.0, "y": 0.0, "z": self._angular}}}})
-        self._queue("/battery_state", "sensor_msgs/BatteryState", {"percentage": self._battery / 100, "present": True})
-        self._queue("/bumper", "std_msgs/Bool", {"data": False})
-        self._queue("/joint_states", "sensor_msgs/JointState",
-                    {"header": {"frame_id": "base_link"}, "name": list(ARM_JOINT_NAMES), "position": self._joint_positions()})
+        self.queue("/battery_state", "sensor_msgs/BatteryState", {"percentage": self._battery / 100, "present": True})
+        self.queue("/bumper", "std_msgs/Bool", {"data": False})
+        self.queue("/joint_states", "sensor_msgs/JointState",
+                   {"header": {"frame_id": "base_link"}, "name": list(ARM_JOINT_NAMES), "position": self._joint_positions()})
 
     def _joint_positions(self):
         """The arm's six joints (radians) and the gripper opening, following the arm's motion."""
@@ -383,18 +351,6 @@ class SimHobbit:
         self._last_joints = [a + (b - a) * fraction for a, b in zip(here, there)]
         return self._last_joints + [GRIPPER_OPENING[self._gripper]]
 
-    # --- publishing: queued under the lock, sent outside it, in order ---------------------
-
-    def _queue(self, topic, msg_type, message):
-        self._outbox.append((topic, msg_type, message))
-
-    def _flush(self):
-        with self._publishing:
-            with self._lock:
-                messages, self._outbox = self._outbox, []
-            for message in messages:
-                self._world.publish(*message)
-
     # --- base -------------------------------------------------------------------------
 
     def _replace_base(self, task):
@@ -402,14 +358,14 @@ class SimHobbit:
         old, self._base = self._base, task
         self._linear = self._angular = 0.0
         if isinstance(task, _DiscreteMotion):
-            self._queue(*MOTION_STATE, {"data": MOTION_STATES[task.motion]})
+            self.queue(*MOTION_STATE, {"data": MOTION_STATES[task.motion]})
         elif isinstance(old, _DiscreteMotion):
-            self._queue(*MOTION_STATE, {"data": "Idle"})
+            self.queue(*MOTION_STATE, {"data": "Idle"})
 
     def _command_base(self, task):
-        with self._lock:
+        with self.lock:
             self._replace_base(task)
-        self._flush()
+        self.flush()
 
     def _on_velocity(self, message):
         try:
@@ -474,7 +430,7 @@ class SimHobbit:
         if not isinstance(position, str) or position not in HEAD_POSITIONS:
             log.warning("simulated HOBBIT: unknown head position %r ignored", position)
             return
-        with self._lock:
+        with self.lock:
             self._head = position
 
     def _on_emotion(self, message):
@@ -482,7 +438,7 @@ class SimHobbit:
         if not isinstance(emotion, str) or emotion not in EMOTIONS:
             log.warning("simulated HOBBIT: unknown emotion %r ignored", emotion)
             return
-        with self._lock:
+        with self.lock:
             self._emotion = emotion
 
     # --- arm --------------------------------------------------------------------------
@@ -495,7 +451,7 @@ class SimHobbit:
         self._arm_task = None
 
     def _serve_arm(self, goal, feedback, cancelled):
-        with self._lock:
+        with self.lock:
             task = _arm_task_for(goal, self._turntable_angle)
             if task is None:
                 return GoalStatus.ABORTED, {"result": {"data": False}}
@@ -524,7 +480,7 @@ class SimHobbit:
         ``feedback_message()`` (called under the lock) returns the feedback to send now, or None.
         """
         while True:
-            with self._lock:
+            with self.lock:
                 message = feedback_message()
                 if not is_current():
                     status = GoalStatus.SUCCEEDED if task.done else GoalStatus.PREEMPTED
@@ -544,19 +500,19 @@ class SimHobbit:
     def _serve_mmui(self, request, interrupt):
         params = {param.get("name"): param.get("value") for param in request.get("params") or []}
         kind, text = params.get("type"), str(params.get("text", ""))
-        with self._lock:
+        with self.lock:
             self._shown = None
         if kind in DIALOGS:
             return {"params": [{"name": "result", "value": self._ask(kind, text, _seconds(params.get("Timeout")),
                                                                      interrupt)}]}
         if kind == "D_PLAIN":
-            with self._lock:
+            with self.lock:
                 self._shown = {"kind": kind, "text": text}
             self._notify(kind, text)
         elif kind == "F_CALLSOS":
             self._notice(kind, "SOS call started")
         elif kind in ("F_LOUDER", "F_QUIETER"):
-            with self._lock:
+            with self.lock:
                 step = VOLUME_STEP if kind == "F_LOUDER" else -VOLUME_STEP
                 self._volume = min(100, max(0, self._volume + step))
                 volume = self._volume
@@ -566,26 +522,26 @@ class SimHobbit:
         return {"params": []}
 
     def _ask(self, kind, text, timeout, interrupt):
-        if self._tablet is None:
+        if self.tablet is None:
             raise RobotCommandError(f"nobody can answer the tablet: {text!r}")
         shown = {"kind": kind, "text": text}
-        with self._lock:
+        with self.lock:
             self._shown = shown
         try:
-            return str(self._tablet.ask(kind, text, timeout, interrupt))
+            return str(self.tablet.ask(kind, text, timeout, interrupt))
         finally:
-            with self._lock:
+            with self.lock:
                 if self._shown is shown:
                     self._shown = None
 
     def _notice(self, kind, text):
-        with self._lock:
+        with self.lock:
             self._notices.append(text)
         self._notify(kind, text)
 
     def _notify(self, kind, text):
-        if self._tablet is not None:
-            self._tablet.notify(kind, text)
+        if self.tablet is not None:
+            self.tablet.notify(kind, text)
 
 
 def _seconds(value):

@@ -15,9 +15,9 @@ sits at the robot's centre: 360 beams counter-clockwise from straight ahead, 0.1
 """
 import logging
 import math
-import threading
-import time
 from collections import deque
+
+from rockly_desktop.sdk import RobotSimulator
 
 from .arena import BOXES, ROOM, Arena
 
@@ -46,27 +46,21 @@ def _stamp(seconds):
     return {"secs": int(secs), "nsecs": int((seconds - secs) * 1e9)}
 
 
-class SimTurtleBot:
+class SimTurtleBot(RobotSimulator):
     """The simulated TurtleBot in ``world``; ``boxes`` and ``start`` (x, y, theta) change its room.
 
     ``tablet`` is accepted like every simulator's; a TurtleBot has none.
     """
 
+    NAME = "simulated TurtleBot"
+    TICK_SECONDS = TICK_SECONDS
+
     def __init__(self, world, tablet=None, speed=1.0, boxes=BOXES, start=(0.0, 0.0, 0.0), room=ROOM):
-        if not (isinstance(speed, (int, float)) and math.isfinite(speed) and speed > 0):
-            raise ValueError(f"the simulation speed must be a positive number, not {speed!r}")
-        self._world = world
-        self._speed = float(speed)
+        super().__init__(world, tablet, speed)
         self._arena = Arena(room, boxes)
         x, y, theta = (float(value) for value in start)
         if not self._arena.fits(x, y):
             raise ValueError(f"the TurtleBot does not fit at ({x:g}, {y:g}): it would overlap a wall or a box")
-        self._lock = threading.Lock()
-        self._publishing = threading.Lock()
-        self._outbox = []
-        self._stopping = threading.Event()
-        self._thread = None
-        self._time = 0.0
         self._x, self._y, self._theta = x, y, math.remainder(theta, math.tau)
         self._command = (0.0, 0.0)        # what /cmd_vel asks: (linear, angular)
         self._linear = self._angular = 0.0  # what the base really does
@@ -77,68 +71,45 @@ class SimTurtleBot:
 
     # --- life cycle -------------------------------------------------------------------
 
-    def start(self):
-        """Follow /cmd_vel, publish the first sensor messages, start the clock."""
-        if self._thread is not None:
-            raise RuntimeError("the simulated TurtleBot was already started")
-        self._world.subscribe("/cmd_vel", self._on_velocity)
-        with self._lock:
-            self._queue_sensors()
-        self._flush()
-        self._thread = threading.Thread(target=self._run, name="simulated TurtleBot", daemon=True)
-        self._thread.start()
-
-    def shutdown(self):
-        """Stop the clock and wait for its thread."""
-        self._stopping.set()
-        if self._thread is not None:
-            self._thread.join()
+    def connect(self):
+        """Follow /cmd_vel."""
+        self.subscribe("/cmd_vel", self._on_velocity)
 
     def safe_stop(self):
         """Stand still (what a zero /cmd_vel does)."""
-        with self._lock:
+        with self.lock:
             self._command = (0.0, 0.0)
 
     def snapshot(self) -> dict:
         """A copy of the robot's and the room's state, for the simulator view."""
-        with self._lock:
+        with self.lock:
             return {
                 "x": self._x, "y": self._y, "theta": self._theta, "trail": list(self._trail),
                 "linear": self._linear, "angular": self._angular,
                 "scan": list(self._scan), "range_min": RANGE_MIN, "range_max": RANGE_MAX,
                 "room": self._arena.room, "room_size": self._arena.size, "boxes": list(self._arena.boxes),
                 "radius": self._arena.radius, "bumped": self._arena.touching(self._x, self._y), "bumps": self._bumps,
-                "battery": self._battery, "voltage": self._volts(), "time": self._time,
+                "battery": self._battery, "voltage": self._volts(), "time": self.time,
             }
 
     # --- the clock --------------------------------------------------------------------
 
-    def _run(self):
-        last = time.monotonic()
-        while not self._stopping.wait(TICK_SECONDS):
-            now = time.monotonic()
-            self._advance((now - last) * self._speed)
-            last = now
-
-    def _advance(self, dt):
-        with self._lock:
-            self._time += dt
-            linear, angular = self._command
-            was_touching = self._arena.touching(self._x, self._y)
-            x, y, theta, blocked = self._arena.move(self._x, self._y, self._theta, linear, angular, dt)
-            if blocked:
-                self._bumps += 0 if was_touching else 1   # pushing on while touching is the same bump
-                self._command = (0.0, 0.0)      # the bumper stops the wheels
-                log.info("simulated TurtleBot: bumped into something at (%.2f, %.2f)", x, y)
-            self._linear, self._angular = (0.0, 0.0) if blocked else (linear, angular)
-            self._x, self._y, self._theta = x, y, theta
-            if math.dist(self._trail[-1], (x, y)) >= TRAIL_SPACING:
-                self._trail.append((x, y))
-            busy = self._linear or self._angular
-            self._battery = max(0.0, self._battery - dt * (BATTERY_DRAIN_BUSY if busy else BATTERY_DRAIN))
-            self._scan = self._cast()
-            self._queue_sensors()
-        self._flush()
+    def advance(self, dt):
+        """Drive ``dt`` simulated seconds on (stopping at whatever it bumps into), drain the battery, scan."""
+        linear, angular = self._command
+        was_touching = self._arena.touching(self._x, self._y)
+        x, y, theta, blocked = self._arena.move(self._x, self._y, self._theta, linear, angular, dt)
+        if blocked:
+            self._bumps += 0 if was_touching else 1   # pushing on while touching is the same bump
+            self._command = (0.0, 0.0)      # the bumper stops the wheels
+            log.info("simulated TurtleBot: bumped into something at (%.2f, %.2f)", x, y)
+        self._linear, self._angular = (0.0, 0.0) if blocked else (linear, angular)
+        self._x, self._y, self._theta = x, y, theta
+        if math.dist(self._trail[-1], (x, y)) >= TRAIL_SPACING:
+            self._trail.append((x, y))
+        busy = self._linear or self._angular
+        self._battery = max(0.0, self._battery - dt * (BATTERY_DRAIN_BUSY if busy else BATTERY_DRAIN))
+        self._scan = self._cast()
 
     def _cast(self):
         """The laser's ranges from the current pose (inf beyond range_max, -inf below range_min)."""
@@ -149,35 +120,29 @@ class SimTurtleBot:
     def _volts(self):
         return EMPTY_VOLTS + (FULL_VOLTS - EMPTY_VOLTS) * self._battery / 100
 
-    # --- publishing: queued under the lock, sent outside it, in order ---------------------
+    # --- sensors ----------------------------------------------------------------------
 
-    def _queue_sensors(self):
-        stamp = _stamp(self._time)
+    def queue_sensors(self):
+        """/odom, /scan and /battery_state, stamped with the simulated time."""
+        stamp = _stamp(self.time)
         theta = self._theta
-        self._outbox.append(("/odom", "nav_msgs/Odometry", {
+        self.queue("/odom", "nav_msgs/Odometry", {
             "header": {"stamp": stamp, "frame_id": "odom"}, "child_frame_id": "base_footprint",
             "pose": {"pose": {"position": {"x": self._x, "y": self._y, "z": 0.0},
                               "orientation": {"x": 0.0, "y": 0.0, "z": math.sin(theta / 2), "w": math.cos(theta / 2)}}},
             "twist": {"twist": {"linear": {"x": self._linear, "y": 0.0, "z": 0.0},
-                                "angular": {"x": 0.0, "y": 0.0, "z": self._angular}}}}))
-        self._outbox.append(("/scan", "sensor_msgs/LaserScan", {
+                                "angular": {"x": 0.0, "y": 0.0, "z": self._angular}}}})
+        self.queue("/scan", "sensor_msgs/LaserScan", {
             "header": {"stamp": stamp, "frame_id": "base_scan"},
             "angle_min": 0.0, "angle_max": (BEAMS - 1) * ANGLE_INCREMENT, "angle_increment": ANGLE_INCREMENT,
             "time_increment": 0.0, "scan_time": TICK_SECONDS, "range_min": RANGE_MIN, "range_max": RANGE_MAX,
-            "ranges": list(self._scan), "intensities": []}))
+            "ranges": list(self._scan), "intensities": []})
         busy = self._linear or self._angular
-        self._outbox.append(("/battery_state", "sensor_msgs/BatteryState", {
+        self.queue("/battery_state", "sensor_msgs/BatteryState", {
             "header": {"stamp": stamp, "frame_id": ""}, "voltage": self._volts(),
             "current": -1.2 if busy else -0.4, "charge": CAPACITY * self._battery / 100, "capacity": CAPACITY,
             "design_capacity": CAPACITY, "percentage": self._battery / 100,
-            "power_supply_status": 2, "power_supply_health": 1, "power_supply_technology": 3, "present": True}))
-
-    def _flush(self):
-        with self._publishing:
-            with self._lock:
-                messages, self._outbox = self._outbox, []
-            for message in messages:
-                self._world.publish(*message)
+            "power_supply_status": 2, "power_supply_health": 1, "power_supply_technology": 3, "present": True})
 
     # --- /cmd_vel ---------------------------------------------------------------------
 
@@ -190,5 +155,5 @@ class SimTurtleBot:
         if not (math.isfinite(linear) and math.isfinite(angular)):
             log.warning("simulated TurtleBot: ignored a /cmd_vel that is not a Twist: %r", message)
             return
-        with self._lock:
+        with self.lock:
             self._command = (_clamp(linear, MAX_LINEAR), _clamp(angular, MAX_ANGULAR))

@@ -3,7 +3,10 @@
 Any value may be missing, of the wrong type, NaN or endless; the readers here turn each
 into something drawable (a default, a clamped float, cleaned text) and never raise.
 """
-import math
+from rockly_desktop.sdk import as_number, as_point, as_points, with_defaults
+
+num = as_number    # value as a finite float, clamped: num(value, default=0.0, lo=None, hi=None)
+point = as_point   # an (x, y) pair of finite floats, or None
 
 EMOTIONS = ("HAPPY", "VHAPPY", "LTIRED", "VTIRED", "CONCERNED", "SAD", "WONDERING", "NEUTRAL", "SLEEPING")
 WAITING_KINDS = ("D_YES_NO", "D_OK", "D_NAME")
@@ -18,34 +21,7 @@ DEFAULT_SNAPSHOT = {
 
 def merged(snapshot):
     """The defaults overlaid with ``snapshot`` (anything but a dict counts as empty)."""
-    result = dict(DEFAULT_SNAPSHOT)
-    if isinstance(snapshot, dict):
-        result.update(snapshot)
-    return result
-
-
-def num(value, default=0.0, lo=None, hi=None):
-    """``value`` as a finite float (else ``default``), clamped to lo..hi."""
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        return default
-    if not math.isfinite(number):
-        return default
-    if lo is not None:
-        number = max(lo, number)
-    if hi is not None:
-        number = min(hi, number)
-    return number
-
-
-def point(value):
-    """An (x, y) pair of finite floats, or None."""
-    try:
-        x, y = float(value[0]), float(value[1])
-    except (TypeError, ValueError, IndexError, KeyError):
-        return None
-    return (x, y) if math.isfinite(x) and math.isfinite(y) else None
+    return with_defaults(snapshot, DEFAULT_SNAPSHOT)
 
 
 def clean_text(text):
@@ -56,10 +32,7 @@ def clean_text(text):
 
 def trail(snapshot):
     """The last 500 valid trail points, oldest first."""
-    try:
-        return [pt for pt in (point(v) for v in list(snapshot.get("trail") or [])[-500:]) if pt is not None]
-    except TypeError:
-        return []
+    return as_points(snapshot.get("trail"), 500)
 
 
 def emotion(snapshot):

@@ -5,6 +5,10 @@ into something drawable and never raise.
 """
 import math
 
+from rockly_desktop.sdk import as_number, as_points, with_defaults
+
+num = as_number    # value as a finite float, clamped: num(value, default=0.0, lo=None, hi=None)
+
 ROOM = (-0.5, -1.5, 3.5, 1.5)
 RADIUS = 0.105
 RANGE_MIN, RANGE_MAX = 0.12, 3.5
@@ -18,25 +22,7 @@ DEFAULT_SNAPSHOT = {
 
 def merged(snapshot):
     """The defaults overlaid with ``snapshot`` (anything but a dict counts as empty)."""
-    result = dict(DEFAULT_SNAPSHOT)
-    if isinstance(snapshot, dict):
-        result.update(snapshot)
-    return result
-
-
-def num(value, default=0.0, lo=None, hi=None):
-    """``value`` as a finite float (else ``default``), clamped to lo..hi."""
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        return default
-    if not math.isfinite(number):
-        return default
-    if lo is not None:
-        number = max(lo, number)
-    if hi is not None:
-        number = min(hi, number)
-    return number
+    return with_defaults(snapshot, DEFAULT_SNAPSHOT)
 
 
 def rectangle(value):
@@ -68,18 +54,7 @@ def pose(snapshot):
 
 def trail(snapshot, limit=600):
     """The last ``limit`` valid trail points, oldest first."""
-    points = []
-    try:
-        for value in list(snapshot.get("trail") or [])[-limit:]:
-            try:
-                x, y = float(value[0]), float(value[1])
-            except (TypeError, ValueError, IndexError, KeyError):
-                continue
-            if math.isfinite(x) and math.isfinite(y):
-                points.append((x, y))
-    except TypeError:
-        return []
-    return points
+    return as_points(snapshot.get("trail"), limit)
 
 
 def scan(snapshot):

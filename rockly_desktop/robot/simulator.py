@@ -1,0 +1,153 @@
+"""``RobotSimulator``: the scaffolding every profile's simulator shares.
+
+A simulator lives in a ``SimWorld`` (``robot/sim_world.py``): it subscribes to the robot's
+command topics, serves its services and actions, and publishes what its sensors report
+while simulated time runs ``speed`` times as fast as the clock. This base class owns the
+parts that are the same for every robot:
+
+* the **lock** (``self.lock``, re-entrant) that guards the robot's state;
+* the **outbox**: ``queue(topic, type, message)`` adds a message under the lock and
+  ``flush()`` publishes what is queued after the lock is released, in the order it was
+  queued. Subscriber callbacks run in the publisher's thread, so publishing while holding
+  the lock could deadlock with a program's thread; a flush that a subscriber causes inside
+  another flush in the same thread is sent by the outer one, so no two flushes interleave;
+* the **clock**: a daemon thread that every ``TICK_SECONDS`` of real time advances simulated
+  time by the real time elapsed times ``speed``, calls ``advance(dt)`` and
+  ``queue_sensors()`` under the lock, then flushes;
+* the **life cycle**: ``start()`` calls ``connect()``, publishes the first sensor messages
+  and starts the clock (once only); ``shutdown()`` stops the clock, waits for its thread and
+  ends the subscriptions made with ``subscribe()``.
+
+A subclass overrides the hooks ``connect()``, ``advance(dt)``, ``queue_sensors()`` and
+``snapshot()``, and sets ``NAME`` and ``TICK_SECONDS``.
+"""
+import math
+import numbers
+import threading
+import time
+
+
+def checked_speed(speed) -> float:
+    """``speed`` as a float; ValueError unless it is a finite number above zero."""
+    if isinstance(speed, bool) or not isinstance(speed, numbers.Real):
+        raise ValueError(f"the simulation speed must be a positive number, not {speed!r}")
+    if not (math.isfinite(speed) and speed > 0):
+        raise ValueError(f"the simulation speed must be positive, not {speed!r}")
+    return float(speed)
+
+
+class RobotSimulator:
+    """A simulated robot in ``world``: lock, ordered outbox, clock thread and life cycle.
+
+    Rockly creates a simulator as ``Class(world, tablet=..., speed=...)``, calls
+    ``start()``, then ``snapshot()`` about 30 times a second, and ``shutdown()`` at the end.
+    ``tablet`` answers the questions the robot asks a person (``ask``/``notify``; None when
+    nobody can answer); ``speed`` makes simulated time run that many times as fast as the
+    clock (a positive number).
+    """
+
+    NAME = "simulated robot"  # names the clock thread and the simulator in messages
+    TICK_SECONDS = 0.1        # real seconds between two ticks of the clock
+
+    def __init__(self, world, tablet=None, speed=1.0):
+        self.speed = checked_speed(speed)
+        self.world = world
+        self.tablet = tablet
+        self.lock = threading.RLock()
+        self._publishing = threading.RLock()
+        self._flushing = False   # True while this thread (the one holding _publishing) publishes the outbox
+        self._outbox = []
+        self._time = 0.0
+        self._stopping = threading.Event()
+        self._thread = None
+        self._unsubscribe = []
+
+    # --- the hooks a robot overrides ----------------------------------------------------
+
+    def connect(self):
+        """Subscribe to the robot's topics and advertise its services and actions (called by ``start()``)."""
+
+    def advance(self, dt):
+        """Let ``dt`` simulated seconds pass (called holding the lock; ``self.time`` already includes them)."""
+
+    def queue_sensors(self):
+        """Queue what the sensors publish now (called holding the lock, at start and after every tick)."""
+
+    def snapshot(self) -> dict:
+        """The robot's state for its view and for tests: a new dict, quick to make."""
+        return {"time": self.time}
+
+    # --- life cycle -------------------------------------------------------------------
+
+    def start(self):
+        """Connect, publish the first sensor messages, start the clock. A second start is refused."""
+        if self._thread is not None:
+            raise RuntimeError(f"the {self.NAME} was already started")
+        self._thread = threading.Thread(target=self._run, name=self.NAME, daemon=True)
+        self.connect()
+        with self.lock:
+            self.queue_sensors()
+        self.flush()
+        self._thread.start()
+
+    def shutdown(self):
+        """Stop the clock, wait for its thread, and end the subscriptions made with ``subscribe()``."""
+        self._stopping.set()
+        thread = self._thread
+        if thread is not None and thread.is_alive() and thread is not threading.current_thread():
+            thread.join()
+        unsubscribes, self._unsubscribe = self._unsubscribe, []
+        for unsubscribe in unsubscribes:
+            unsubscribe()
+
+    def subscribe(self, topic, callback):
+        """Call ``callback(message)`` for every message on ``topic`` until ``shutdown()``."""
+        unsubscribe = self.world.subscribe(topic, callback)
+        self._unsubscribe.append(unsubscribe)
+        return unsubscribe
+
+    # --- simulated time -------------------------------------------------------------------
+
+    @property
+    def time(self) -> float:
+        """Simulated seconds since the start."""
+        with self.lock:
+            return self._time
+
+    def _run(self):
+        last = time.monotonic()
+        while not self._stopping.wait(self.TICK_SECONDS):
+            now = time.monotonic()
+            self._tick((now - last) * self.speed)
+            last = now
+
+    def _tick(self, dt):
+        with self.lock:
+            self._time += dt
+            self.advance(dt)
+            self.queue_sensors()
+        self.flush()
+
+    # --- publishing: queued under the lock, sent outside it, in order -----------------------
+
+    def queue(self, topic, msg_type, message):
+        """Queue ``message`` for ``topic``; the next ``flush()`` publishes it, after everything queued before."""
+        with self.lock:
+            self._outbox.append((topic, msg_type, message))
+
+    def flush(self):
+        """Publish everything queued, in order; call it without holding the lock."""
+        with self._publishing:
+            if self._flushing:   # a subscriber of ours flushed again: the loop below sends its messages
+                return
+            self._flushing = True
+            try:
+                while True:
+                    with self.lock:
+                        messages, self._outbox = self._outbox, []
+                    if not messages:
+                        return
+                    for message in messages:
+                        self.world.publish(*message)
+            finally:
+                self._flushing = False
