@@ -7,7 +7,7 @@
     rockly plugins reference            print the profile.yaml reference (Markdown)
     rockly export PROGRAM -o OUT.py     write the Python generated from a program
     rockly run PROGRAM [--answer A]...  run a program on the simulator, without a window
-    rockly sim PROFILE --ros            the profile's simulated robot as a ROS 1 node
+    rockly sim PROFILE --ros            the profile's simulated robot as a ROS 1 node, in a small window
 """
 import argparse
 import logging
@@ -47,12 +47,16 @@ def _tool_parser() -> argparse.ArgumentParser:
     run.add_argument("--answer", action="append", default=[], help="an answer for the next tablet question (repeatable)")
     run.add_argument("--speed", type=float, default=1.0, help="simulated time runs this many times faster")
 
-    sim = commands.add_parser("sim", help="run a profile's simulated robot as a ROS 1 node")
+    sim = commands.add_parser("sim", help="run a profile's simulated robot as a ROS 1 node, in a small window")
     sim.add_argument("profile", help="the robot profile id (see rockly plugins list)")
     sim.add_argument("--ros", action="store_true", required=True, help="serve the robot's ROS interface")
     sim.add_argument("--master", help="ROS master URI (default: $ROS_MASTER_URI)")
-    sim.add_argument("--answer", action="append", default=[], help="an answer for the next tablet question (repeatable)")
+    sim.add_argument("--answer", action="append", default=[],
+                     help="an answer for the next tablet question (repeatable); when they run out, the window asks")
     sim.add_argument("--speed", type=float, default=1.0, help="simulated time runs this many times faster")
+    sim.add_argument("--no-window", dest="window", action="store_false",
+                     help="run without the window showing the robot and its tablet (servers, CI): "
+                          "tablet questions are then answered only from --answer")
     return parser
 
 
@@ -150,7 +154,7 @@ def main(argv=None) -> int:
         if args.command == "sim":
             from rockly_desktop.run_command import serve_simulator
 
-            return serve_simulator(args.profile, args.master, args.speed, args.answer)
+            return serve_simulator(args.profile, args.master, args.speed, args.answer, window=args.window)
         return _export(args.program, args.output, args.language)
     args = _gui_parser().parse_args(argv)
     from rockly_desktop.app import run_gui

@@ -12,8 +12,12 @@ def ros_master(tmp_path_factory):
 
 @pytest.fixture(scope="session")
 def hobbit_on_ros(ros_master):
-    """`rockly sim hobbit --ros` running against the session's master (fast simulated time)."""
-    process = RocklyProcess(["sim", "hobbit", "--ros", "--master", ros_master.uri, "--speed", "20",
+    """`rockly sim hobbit --ros` running against the session's master (fast simulated time).
+
+    Without its window: every question here is answered from --answer (one beyond them fails
+    at once instead of waiting for a person), and no Qt redraws compete with timed tests for the
+    whole session. The window has its own tests (robot/ros1/test_sim_window_on_ros.py)."""
+    process = RocklyProcess(["sim", "hobbit", "--ros", "--no-window", "--master", ros_master.uri, "--speed", "20",
                              "--answer", "yes", "--answer", "Ada"], ros_master, ready_line="on ROS")
     yield process
     process.stop()

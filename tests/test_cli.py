@@ -1,4 +1,5 @@
 """The ``rockly`` command, run as a user runs it (a real process)."""
+import os
 import shutil
 import subprocess
 import sys
@@ -123,3 +124,20 @@ def test_export_of_a_missing_file(tmp_path):
 def test_usage_errors_exit_non_zero():
     assert rockly("export").returncode == 2
     assert rockly("plugins", "frobnicate").returncode == 2
+
+
+def test_sim_help_documents_the_window_and_no_window():
+    result = rockly("sim", "hobbit", "--ros", "--help")
+    assert result.returncode == 0
+    help_text = " ".join(result.stdout.split())
+    assert "--no-window" in help_text and "--answer" in help_text
+    assert "when they run out, the window asks" in help_text
+    assert "tablet questions are then answered only from --answer" in help_text
+
+
+def test_sim_without_a_display_says_to_use_no_window():
+    env = {name: value for name, value in os.environ.items()
+           if name not in ("DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM")}
+    result = subprocess.run([sys.executable, "-m", "rockly_desktop", "sim", "hobbit", "--ros", "--master", "http://127.0.0.1:9"],
+                            capture_output=True, text=True, timeout=90, cwd=REPO, env=env)
+    assert result.returncode == 2 and "--no-window" in result.stderr

@@ -8,7 +8,7 @@ import threading
 from PySide6.QtCore import QObject, Qt, Signal
 from PySide6.QtWidgets import QDialog, QDialogButtonBox, QLabel, QLineEdit, QVBoxLayout
 
-from rockly_desktop.core.errors import RobotTimeout
+from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
 from rockly_desktop.ui.texts import tr
 
 
@@ -19,6 +19,7 @@ class TabletRequest:
         self.kind = kind
         self.text = text
         self.answer = ""
+        self.answered = False  # False when the dialog was closed without an answer
         self.done = threading.Event()
 
 
@@ -56,6 +57,7 @@ class TabletDialog(QDialog):
 
     def _answer(self, answer: str):
         self.request.answer = answer
+        self.request.answered = True
         self.accept()
 
     def done(self, result):  # noqa: D401 - Qt override
@@ -72,10 +74,14 @@ class QtTablet(QObject):
     sig_notice = Signal(str, str)  # kind, text
     sig_dismissed = Signal()  # the person closed a question without answering (Esc or the window's ×)
 
-    def __init__(self, window, robot_name: str):
+    def __init__(self, window, robot_name: str, unanswered: str = None):
+        """``window`` is the dialogs' parent and has a ``language``. With ``unanswered``, a
+        question closed without an answer raises RobotCommandError(``unanswered``); without,
+        it answers '' (the app stops the run on ``sig_dismissed`` instead)."""
         super().__init__(window)
         self.window = window
         self.robot_name = robot_name
+        self.unanswered = unanswered
         self.open_dialogs = {}
         self._closing = set()
         self._sig_show.connect(self._show, Qt.ConnectionType.QueuedConnection)
@@ -91,6 +97,8 @@ class QtTablet(QObject):
         finally:
             if not request.done.is_set():
                 self._sig_close.emit(request)
+        if self.unanswered is not None and not request.answered:
+            raise RobotCommandError(self.unanswered)
         return request.answer
 
     def notify(self, kind: str, text: str):

@@ -125,6 +125,14 @@ class RosConnection:
         """True while the master does not answer."""
         return self.status == LOST
 
+    def shutdown(self, reason: str):
+        """End this process's node for good: the master forgets its publishers, subscribers
+        and services (rospy cannot start a node again in the same process)."""
+        import rospy
+
+        self._stopped.set()
+        rospy.signal_shutdown(reason)
+
 
 def _register_again():
     """Tell a restarted master about this node's publishers, subscribers and services.

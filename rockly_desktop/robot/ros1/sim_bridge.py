@@ -4,15 +4,23 @@ The profile's manifest declares ``ros_interface`` (what the real robot subscribe
 publishes, serves and offers as actions, with ROS types). Messages from ROS go into the world;
 what the simulator publishes goes out on ROS; services and actions are served by the
 simulator's own handlers, with feedback and preemption passed through.
+
+``SimulatorNode`` is the whole of ``rockly sim PROFILE --ros``: the node, the world, the
+simulator and the bridge, and their orderly end (``shutdown``). It has no window of its
+own; whoever runs it may show ``node.simulator.snapshot()`` and answer its tablet.
 """
 import logging
 import threading
+import time
 
+from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.robot.interface import GoalStatus
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.ros1.messages import from_message, to_message
 
 log = logging.getLogger(__name__)
+
+CLOSE_WAIT_SECONDS = 2.0  # how long a shutdown waits for service calls in progress to answer
 
 
 class SimRosBridge:
@@ -25,6 +33,9 @@ class SimRosBridge:
         self._world = world
         self._types = types
         self._endpoints = []
+        self._interrupt = Interrupt()  # stopped by close(): a question waiting for a person ends
+        self._calls = 0
+        self._calls_changed = threading.Condition()
         for topic, msg_type in interface.get("subscribes", {}).items():
             self._endpoints.append(rospy.Subscriber(
                 topic, types.message_class(msg_type),
@@ -42,8 +53,33 @@ class SimRosBridge:
                                 for name, action_type in interface.get("actions", {}).items()]
 
     def _serve(self, name, srv_type, request):
-        response = self._world.call_service(name, from_message(request), Interrupt())
+        with self._calls_changed:
+            self._calls += 1
+        try:
+            response = self._world.call_service(name, from_message(request), self._interrupt)
+        except ProgramStopped:
+            raise RobotCommandError(f"the simulated robot shut down before '{name}' was answered") from None
+        finally:
+            with self._calls_changed:
+                self._calls -= 1
+                self._calls_changed.notify_all()
         return to_message(self._types.service_class(srv_type)._response_class, response)
+
+    @property
+    def closing(self) -> bool:
+        """True once ``close()`` was called."""
+        return self._interrupt.stop_requested
+
+    def close(self, timeout: float = CLOSE_WAIT_SECONDS):
+        """End every wait of a service call in progress (the caller gets an error) and every
+        goal (cancelled), waiting up to ``timeout`` s for the service calls to answer."""
+        self._interrupt.request_stop()
+        deadline = time.monotonic() + timeout
+        with self._calls_changed:
+            while self._calls and self._calls_changed.wait(max(0.0, deadline - time.monotonic())):
+                pass
+            if self._calls:
+                log.warning("%d service call(s) still running at shutdown", self._calls)
 
     def _serve_action(self, name, action_type):
         import actionlib
@@ -55,7 +91,7 @@ class SimRosBridge:
             sim_goal = self._world.send_goal(name, from_message(goal),
                                              lambda data: server.publish_feedback(to_message(feedback_class, data)))
             while not self._world.wait_for(lambda: sim_goal.outcome is not None, 0.02):
-                if server.is_preempt_requested() or self._rospy.is_shutdown():
+                if server.is_preempt_requested() or self.closing or self._rospy.is_shutdown():
                     sim_goal.cancelled.set()
             outcome = sim_goal.outcome
             result = to_message(result_class, outcome.result)
@@ -71,19 +107,46 @@ class SimRosBridge:
         return server
 
 
+class SimulatorNode:
+    """``profile``'s simulator served on ROS by this process's node; ``shutdown()`` ends it all.
+
+    ``tablet`` is the simulator's tablet port (``ask``/``notify``), called from ROS's
+    service threads. Raises RocklyError when ROS or the master is not there.
+    """
+
+    def __init__(self, profile, types, master_uri=None, speed=1.0, tablet=None):
+        from rockly_desktop.robot.ros1.connection import RosConnection
+        from rockly_desktop.robot.sim_world import SimWorld
+
+        self.connection = RosConnection.get(master_uri)
+        self.world = SimWorld()
+        self.simulator = profile.load_object("simulator")(self.world, tablet=tablet, speed=speed)
+        self._bridge = SimRosBridge(self.world, profile.manifest.get("ros_interface", {}), types)
+        self.simulator.start()
+        self._ended = False
+
+    def shutdown(self):
+        """End waiting questions and goals, stop the simulator (its safe stop first), and end the
+        node: its publishers, subscribers and services are taken off the master. Once only."""
+        if self._ended:
+            return
+        self._ended = True
+        self._bridge.close()
+        if hasattr(self.simulator, "safe_stop"):
+            try:
+                self.simulator.safe_stop()
+            except Exception:  # noqa: BLE001 - shutting down regardless
+                log.exception("the simulator's safe stop failed")
+        self.simulator.shutdown()
+        self.connection.shutdown("rockly sim ended")
+
+
 def run_simulator_node(profile, types, master_uri=None, speed=1.0, tablet=None, stop_event=None, on_ready=None):
     """Start ``profile``'s simulator as a ROS node and run until ``stop_event`` is set.
 
     ``on_ready()`` is called once every topic, service and action server is up.
     """
-    from rockly_desktop.robot.ros1.connection import RosConnection
-    from rockly_desktop.robot.sim_world import SimWorld
-
-    RosConnection.get(master_uri)
-    world = SimWorld()
-    simulator = profile.load_object("simulator")(world, tablet=tablet, speed=speed)
-    SimRosBridge(world, profile.manifest.get("ros_interface", {}), types)
-    simulator.start()
+    node = SimulatorNode(profile, types, master_uri, speed, tablet)
     if on_ready is not None:
         on_ready()
     stop_event = stop_event or threading.Event()
@@ -91,4 +154,4 @@ def run_simulator_node(profile, types, master_uri=None, speed=1.0, tablet=None, 
         while not stop_event.wait(0.2):
             pass
     finally:
-        simulator.shutdown()
+        node.shutdown()

@@ -1,0 +1,84 @@
+"""The small window of ``rockly sim PROFILE --ros``: the simulated robot, live, and its tablet.
+
+The simulator runs as a ROS node in this process (its service and action threads are
+rospy's); this window only reads ``simulator.snapshot()`` on a timer in the GUI thread and
+shows tablet questions through ``QtTablet``, which marshals them to the GUI thread and
+lets the ROS thread wait for the person's answer.
+"""
+from PySide6.QtCore import Qt, QTimer, Signal
+from PySide6.QtWidgets import QLabel, QMainWindow
+
+from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.ui.simulator_dock import REFRESH_MS
+from rockly_desktop.ui.tablet import QtTablet
+from rockly_desktop.ui.texts import tr
+
+# Goes back to the program that asked (in another process), like the robot's other errors: English.
+UNANSWERED = "the person at the simulator closed the tablet question without answering"
+
+
+class SimulatorWindow(QMainWindow):
+    """Shows ``profile``'s simulator view, fed once ``show_simulator`` is called; ``tablet`` is its port.
+
+    ``tablet.ask`` and ``tablet.notify`` may be called from any thread. Closing the
+    window emits ``sig_closed`` (whoever runs the node ends it then).
+    """
+
+    sig_closed = Signal()
+
+    def __init__(self, profile, language: str = "en", parent=None):
+        super().__init__(parent)
+        self.setObjectName("sim_window")
+        self.language = language
+        self.profile = profile
+        name = profile.display_name(language)
+        self.setWindowTitle(tr("sim_window_title", language, robot=name, master="…"))
+        self.tablet = QtTablet(self, name, unanswered=UNANSWERED)
+        self.tablet.sig_notice.connect(self._show_notice)
+        self.simulator = None
+        self.view = self._make_view()
+        self.setCentralWidget(self.view)
+        self.master_label = QLabel(self)
+        self.statusBar().addPermanentWidget(self.master_label)
+        self._timer = QTimer(self)
+        self._timer.setInterval(REFRESH_MS)
+        self._timer.timeout.connect(self.refresh)
+        self.resize(self.view.sizeHint().expandedTo(self.view.minimumSizeHint()))
+
+    def _make_view(self):
+        note = None
+        if "simulator_view" in self.profile.manifest:
+            try:
+                return self.profile.load_object("simulator_view")(language=self.language)
+            except RocklyError as error:
+                note = str(error)
+        label = QLabel(note or tr("sim_no_view", self.language), self)
+        label.setWordWrap(True)
+        label.setAlignment(Qt.AlignmentFlag.AlignCenter)
+        label.setMinimumSize(360, 120)
+        return label
+
+    def show_simulator(self, simulator, master_uri: str):
+        """Draw ``simulator.snapshot()`` in the view, 30 times a second; name ``master_uri``."""
+        self.simulator = simulator
+        self.setWindowTitle(tr("sim_window_title", self.language, robot=self.profile.display_name(self.language),
+                               master=master_uri))
+        self.master_label.setText(tr("sim_window_master", self.language, master=master_uri))
+        self.statusBar().showMessage(tr("sim_window_status", self.language))
+        if hasattr(self.view, "set_snapshot"):
+            self.refresh()
+            self._timer.start()
+
+    def refresh(self):
+        """Give the view the simulator's current state."""
+        if self.simulator is not None and hasattr(self.view, "set_snapshot"):
+            self.view.set_snapshot(self.simulator.snapshot())
+
+    def _show_notice(self, _kind: str, text: str):
+        self.statusBar().showMessage(tr("robot_says", self.language, text=text))
+
+    def closeEvent(self, event):  # noqa: N802 - Qt override
+        """Closing the window ends the simulated robot (``sig_closed``)."""
+        self._timer.stop()
+        super().closeEvent(event)
+        self.sig_closed.emit()
