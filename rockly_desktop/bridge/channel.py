@@ -18,7 +18,7 @@ class PageChannel(QObject):
 
     toPage = Signal(str)  # noqa: N815 - name seen by the page's JavaScript
     sig_hello = Signal()
-    sig_event = Signal(dict)
+    sig_event = Signal(object)  # a dict; "object" so numbers beyond 64 bits pass unconverted
 
     def __init__(self, parent=None):
         super().__init__(parent)

@@ -131,3 +131,14 @@ def test_nothing_is_fetched_from_the_network(qtbot, editor):
     probe.deleteLater()
     local = [url for url in interceptor.requested if url not in interceptor.blocked]
     assert all(url.startswith(("file:", "qrc:", "data:")) for url in local)
+
+
+def test_numbers_too_big_for_64_bits_still_reach_python(qtbot, editor):
+    # A child types 99999999999999999999: every later edit must still arrive (the app tracks changes by them).
+    with qtbot.waitSignal(editor.sig_changed, timeout=10000) as loaded:
+        editor.load_workspace(workspace(block("hobbit_move", {"direction": "+"}, {"speed": number(10 ** 20)}, id="m")))
+    assert "robot.drive(100000000000000000000, 'forward')" in loaded.args[1]
+    assert loaded.args[0]["blocks"]["blocks"][0]["inputs"]["speed"]["block"]["fields"]["NUM"] == 10 ** 20
+    with qtbot.waitSignal(editor.sig_changed, timeout=10000) as edited:
+        run_js(qtbot, editor, "Blockly.getMainWorkspace().getBlockById('m').setFieldValue('-', 'direction') || true")
+    assert edited.args[2] == "user" and "robot.drive(100000000000000000000, 'backward')" in edited.args[1]
