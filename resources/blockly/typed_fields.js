@@ -18,11 +18,12 @@ const RocklyTypedFields = (() => {
   }
 
   const sameFields = (a, b) => JSON.stringify(a) === JSON.stringify(b);
-  // What an empty field shows, ready to edit (lists have no such block: empty keeps the default).
+  // What an empty field shows, ready to edit, starting at `start` (lists have no such
+  // block: an empty one keeps the type's default).
   const SHADOWS = {
-    Number: {type: 'math_number', fields: {NUM: 0}},
-    String: {type: 'text', fields: {TEXT: ''}},
-    Boolean: {type: 'logic_boolean', fields: {BOOL: 'FALSE'}},
+    Number: (start) => ({type: 'math_number', fields: {NUM: Number(start) || 0}}),
+    String: (start) => ({type: 'text', fields: {TEXT: typeof start === 'string' ? start : ''}}),
+    Boolean: (start) => ({type: 'logic_boolean', fields: {BOOL: start ? 'TRUE' : 'FALSE'}}),
   };
 
   const mixin = {
@@ -46,9 +47,11 @@ const RocklyTypedFields = (() => {
     /** Make the field inputs match `fields`; inputs that stay keep their blocks. */
     rocklyShowFields_(fields) {
       fields = fields.filter((entry) => Array.isArray(entry) && typeof entry[0] === 'string')
-          .map(([path, check]) => [path, ['Number', 'String', 'Boolean', 'Array'].includes(check) ? check : null]);
+          .map(([path, check, start]) =>
+            [path, ['Number', 'String', 'Boolean', 'Array'].includes(check) ? check : null, start ?? null]);
       if (sameFields(fields, this.rocklyFields_)) return;
       const wanted = new Map(fields.map(([path, check]) => [PREFIX + path, check]));
+      const starts = new Map(fields.map(([path, , start]) => [PREFIX + path, start]));
       for (const input of [...this.inputList]) {
         if (!input.name.startsWith(PREFIX)) continue;
         const check = (input.connection.getCheck() || [null])[0];
@@ -63,7 +66,7 @@ const RocklyTypedFields = (() => {
         if (!this.getInput(name)) {
           const input = this.appendValueInput(name).setCheck(check).setAlign(Blockly.inputs.Align.RIGHT)
               .appendField(name.slice(PREFIX.length));
-          if (SHADOWS[check]) input.connection.setShadowState(SHADOWS[check]);
+          if (SHADOWS[check]) input.connection.setShadowState(SHADOWS[check](starts.get(name)));
         }
         const current = this.inputList.indexOf(this.getInput(name));
         if (current !== position) this.moveNumberedInputBefore(current, position);

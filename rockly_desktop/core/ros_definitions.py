@@ -17,7 +17,7 @@ value gets the same clear message on the simulator as on a real robot.
 import os
 import re
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from rockly_desktop.core.errors import RobotCommandError
@@ -30,15 +30,18 @@ _CHECKS = {**{name: "Number" for name in _NUMBERS}, "string": "String", "bool": 
 _FIELD_LINE = re.compile(r"^(?P<type>[A-Za-z_][\w/]*)(?P<array>\[\d*\])?\s+(?P<name>[A-Za-z_]\w*)\s*$")
 _MAX_DEPTH = 6
 _EXPECTED = {"Number": "a number", "String": "a text", "Boolean": "true or false"}
+_STARTS = {"Number": 0, "String": "", "Boolean": False}
 
 
 @dataclass(frozen=True)
 class FieldInput:
-    """One input of a typed block: the field's path, its ROS type, and the editor's check."""
+    """One input of a typed block: the field's path, its ROS type, the editor's check, and
+    the value a new block shows (ROS's default, except a quaternion's w: 1, turning nowhere)."""
 
     path: str
     ros_type: str
     check: str  # Number, String, Boolean or Array
+    start: object = None
 
 
 def installed_definition_dirs() -> list:
@@ -122,7 +125,8 @@ class DefinitionCatalog:
         for ros_type, is_array, name in declarations:
             path = prefix + name
             if ros_type in _CHECKS:
-                inputs.append(FieldInput(path, ros_type + ("[]" if is_array else ""), "Array" if is_array else _CHECKS[ros_type]))
+                check = "Array" if is_array else _CHECKS[ros_type]
+                inputs.append(FieldInput(path, ros_type + ("[]" if is_array else ""), check, _STARTS.get(check)))
                 continue
             resolved = None if is_array or depth >= _MAX_DEPTH else self._resolve(ros_type, package)
             if resolved is None:
@@ -131,6 +135,8 @@ class DefinitionCatalog:
             nested = self._flatten(nested_declarations, full.split("/")[0], path + ".", depth + 1)
             if full == "std_msgs/Header":
                 nested = [field for field in nested if field.path != path + ".seq"]
+            if full == "geometry_msgs/Quaternion":  # all zeros is no rotation at all, but an invalid one
+                nested = [replace(field, start=1) if field.path == path + ".w" else field for field in nested]
             inputs += nested
         return inputs
 
@@ -189,9 +195,10 @@ class DefinitionCatalog:
             raise RobotCommandError(f"the field {path} needs {_EXPECTED[check]}, not {value!r}")
 
     def editor_catalog(self) -> dict:
-        """For the editor page: ``{messages|services|actions: {type: [[path, check], ...]}}``."""
+        """For the editor page: ``{messages|services|actions: {type: [[path, check, start], ...]}}``."""
         def table(kind, names):
-            return {name: [[field.path, field.check] for field in self.fields(name, kind)] for name in names}
+            return {name: [[field.path, field.check, field.start] for field in self.fields(name, kind)]
+                    for name in names}
 
         return {
             "messages": table("msg", self._types("msg")),

@@ -31,6 +31,13 @@ def test_the_publish_block_grows_one_checked_input_per_field_of_the_chosen_type(
     assert battery["location"] == "String" and battery["cell_voltage"] == "Array"
 
 
+def test_a_new_pose_goal_starts_as_a_valid_pose(qtbot, editor):
+    block_id = add_block_as_user(qtbot, editor, "ros_send_goal")
+    choose_type(qtbot, editor, block_id, "action_type", "move_base_msgs/MoveBaseAction")
+    python = editor.call_blocking("getState")["python"]
+    assert "'orientation': {'x': 0, 'y': 0, 'z': 0, 'w': 1}" in python   # no rotation, not an invalid all-zero one
+
+
 def test_a_number_field_refuses_a_text_block(qtbot, editor):
     block_id = add_block_as_user(qtbot, editor, "ros_publish_message")
     fits = run_js(qtbot, editor, f"""(() => {{
@@ -62,7 +69,7 @@ def test_a_saved_typed_block_opens_with_its_fields_even_where_its_type_is_unknow
     state = editor.call_blocking("getState")
     assert state["python"].strip() == "ros.publish_message('/beep', 'lab_msgs/Beep', {'pitch': 440, 'label': 'say \"hi\"\\n'})"
     again = state["workspace"]["blocks"]["blocks"][0]
-    assert again["extraState"] == {"type": "lab_msgs/Beep", "fields": [["pitch", "Number"], ["label", "String"]]}
+    assert again["extraState"] == {"type": "lab_msgs/Beep", "fields": [["pitch", "Number", None], ["label", "String", None]]}
     assert again["fields"]["message_type"] == "lab_msgs/Beep"
 
 

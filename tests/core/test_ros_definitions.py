@@ -38,6 +38,7 @@ def test_nested_fields_flatten_to_paths_with_the_editors_checks(folders):
         ("started", "Number"),                                                # unknown types are left out
     ]
     assert catalog.fields("robo_msgs/Cart")[8] == FieldInput("load", "float32[]", "Array")
+    assert catalog.fields("robo_msgs/Cart")[2] == FieldInput("left.speed", "float64", "Number", 0)
 
 
 def test_a_service_offers_its_request_and_an_action_its_goal(folders):
@@ -50,9 +51,9 @@ def test_a_service_offers_its_request_and_an_action_its_goal(folders):
 def test_the_editor_catalog_offers_the_profiles_packages_and_the_common_ones(folders):
     catalog = DefinitionCatalog([folders[0]], installed_dirs=[folders[1]]).editor_catalog()
     assert sorted(catalog["messages"]) == ["robo_msgs/Cart", "robo_msgs/Wheel", "std_msgs/Bool", "std_msgs/Header"]
-    assert catalog["messages"]["std_msgs/Bool"] == [["data", "Boolean"]]
-    assert catalog["services"] == {"robo_msgs/Park": [["spot", "String"], ["tries", "Number"]]}
-    assert catalog["actions"] == {"robo_msgs/FetchAction": [["item", "String"]]}
+    assert catalog["messages"]["std_msgs/Bool"] == [["data", "Boolean", False]]
+    assert catalog["services"] == {"robo_msgs/Park": [["spot", "String", ""], ["tries", "Number", 0]]}
+    assert catalog["actions"] == {"robo_msgs/FetchAction": [["item", "String", ""]]}
 
 
 def test_a_profiles_own_package_wins_over_an_installed_one_of_the_same_name(folders, tmp_path):
@@ -69,6 +70,8 @@ def test_the_installed_common_packages_are_found(monkeypatch):
     assert [f.path for f in catalog.fields("geometry_msgs/Twist")] == [
         "linear.x", "linear.y", "linear.z", "angular.x", "angular.y", "angular.z"]
     assert {"std_srvs/Trigger", "std_srvs/SetBool"} <= set(catalog.editor_catalog()["services"])
+    pose = {f.path: f.start for f in catalog.fields("geometry_msgs/PoseStamped")}
+    assert pose["pose.orientation.w"] == 1 and pose["pose.orientation.z"] == 0   # a valid "no rotation"
 
 
 def test_ros_package_path_comes_before_the_system_folder(monkeypatch, tmp_path):

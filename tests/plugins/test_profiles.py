@@ -511,7 +511,7 @@ def test_editor_config_in_german_has_german_block_texts_and_python_templates(hob
     assert head["python"] == {"code": "robot.look({head_position})", "values": {}, "defaults": {},
                               "slots": {"head_position": "field"}, "handlers": {}, "expression": False}
     assert config["toolbox"]["kind"] == "categoryToolbox"
-    assert config["types"]["actions"]["hobbit_msgs/ArmServerAction"] == [["command.data", "String"], ["velocity", "Number"]]
+    assert config["types"]["actions"]["hobbit_msgs/ArmServerAction"] == [["command.data", "String", ""], ["velocity", "Number", 0]]
     assert config["toolbox"]["contents"][0]["name"] == "Fahren"
 
 
