@@ -1,5 +1,5 @@
 """Rockly's main window: the block editor, the run toolbar, the docks, menus and the status bar."""
-from PySide6.QtCore import Qt
+from PySide6.QtCore import Qt, QTimer
 from PySide6.QtGui import QAction, QActionGroup, QKeySequence
 from PySide6.QtWidgets import QDockWidget, QLabel, QMainWindow, QMessageBox
 
@@ -55,6 +55,9 @@ class MainWindow(QMainWindow):
         self.plot_dock = QDockWidget(tr("plot_dock", self.language), self)
         self.plot_dock.setObjectName("plot_dock")
         self.plot_dock.visibilityChanged.connect(lambda visible: visible and self.plot_panel())
+        for roomy in (self.monitor_dock, self.plot_dock):
+            roomy.visibilityChanged.connect(  # after the tab switch has been laid out
+                lambda visible, dock=roomy: visible and QTimer.singleShot(0, self, lambda: self._make_room_for(dock)))
         self._plot_store = None
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.simulator_dock)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.code_dock)
@@ -98,6 +101,13 @@ class MainWindow(QMainWindow):
             self.resizeDocks([self.simulator_dock, self.code_dock], [420, 300], Qt.Orientation.Vertical)
             self.resizeDocks([self.console], [130], Qt.Orientation.Vertical)
         self._update_title()
+
+    def _make_room_for(self, dock):
+        """Give a bottom dock that needs room (a message tree, a plot) a third of the window
+        when it is shown while the bottom area is only a console strip."""
+        wanted = self.height() // 3
+        if dock.height() < wanted:
+            self.resizeDocks([dock], [wanted], Qt.Orientation.Vertical)
 
     # --- start-up -----------------------------------------------------------------------
 
