@@ -8,6 +8,11 @@ from rockly_desktop.ui.texts import tr
 DEFAULT_MASTER = "http://localhost:11311"
 
 
+def edit_hint(edit: QLineEdit) -> str:
+    """The longer of a line edit's text and its placeholder."""
+    return max(edit.text(), edit.placeholderText(), key=len)
+
+
 class ConnectionDialog(QDialog):
     """Asks for ROS_MASTER_URI and ROS_IP/ROS_HOSTNAME; ``master_uri`` and ``host`` hold the answers."""
 
@@ -17,6 +22,8 @@ class ConnectionDialog(QDialog):
         self.master_edit = QLineEdit(master_uri or os.environ.get("ROS_MASTER_URI") or DEFAULT_MASTER, self)
         self.host_edit = QLineEdit(host or os.environ.get("ROS_IP") or os.environ.get("ROS_HOSTNAME") or "", self)
         self.host_edit.setPlaceholderText(tr("connect_host_hint", language))
+        for edit, longest in ((self.master_edit, "http://192.168.100.100:11311"), (self.host_edit, edit_hint(self.host_edit))):
+            edit.setMinimumWidth(edit.fontMetrics().horizontalAdvance(longest) + 24)  # the whole address shows
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel, self)
         buttons.accepted.connect(self.accept)
         buttons.rejected.connect(self.reject)

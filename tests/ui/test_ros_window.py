@@ -93,3 +93,15 @@ def test_state_panels_and_topic_monitor_show_the_ros_robot(qtbot, ros_window):
     cells = [monitor.table_model.index(row, column).data() for column in range(monitor.table_model.columnCount())]
     assert cells[1] == "nav_msgs/Odometry" and cells[2] == "1"
     assert float(cells[3]) > 0  # the rate arithmetic is checked with a fake clock in tests/core
+
+
+@pytest.mark.parametrize("language", ["en", "de"])
+def test_the_connection_dialog_shows_whole_addresses(qtbot, language):
+    from rockly_desktop.ui.connection_dialog import ConnectionDialog
+
+    dialog = ConnectionDialog(language, "HOBBIT", master_uri="http://192.168.100.100:11311")
+    qtbot.addWidget(dialog)
+    dialog.show()
+    for edit in (dialog.master_edit, dialog.host_edit):
+        shown = max(edit.text(), edit.placeholderText(), key=len)
+        assert edit.width() > edit.fontMetrics().horizontalAdvance(shown)
