@@ -97,8 +97,6 @@ def test_state_panels_and_topic_monitor_show_the_ros_robot(qtbot, ros_window):
 
 @pytest.mark.parametrize("language", ["en", "de"])
 def test_the_connection_dialog_shows_whole_addresses(qtbot, language):
-    from rockly_desktop.ui.connection_dialog import ConnectionDialog
-
     dialog = ConnectionDialog(language, "HOBBIT", master_uri="http://192.168.100.100:11311")
     qtbot.addWidget(dialog)
     dialog.show()
