@@ -5,7 +5,7 @@
     rockly plugins validate PATH        check one profile folder
     rockly plugins new NAME [--dir DIR] create a working skeleton profile to start from
     rockly plugins reference            print the profile.yaml reference (Markdown)
-    rockly export PROGRAM -o OUT.py     write the Python generated from a program
+    rockly export PROGRAM -o OUT.py     write the Python generated from a program (-o -: to standard output)
     rockly run PROGRAM [--answer A]...  run a program on the simulator, without a window
     rockly sim PROFILE --ros            the profile's simulated robot as a ROS 1 node, in a small window
 """
@@ -37,7 +37,7 @@ def _tool_parser() -> argparse.ArgumentParser:
 
     export = commands.add_parser("export", help="write the Python generated from a program")
     export.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
-    export.add_argument("-o", "--output", type=Path, required=True, help="the .py file to write")
+    export.add_argument("-o", "--output", type=Path, required=True, help="the .py file to write (- for standard output)")
     export.add_argument("--language", default="en", choices=("en", "de"))
 
     run = commands.add_parser("run", help="run a program without a window")
@@ -124,15 +124,36 @@ def _export(program_path: Path, output: Path, language: str) -> int:
     from rockly_desktop.core.errors import RocklyError
     from rockly_desktop.core.export import python_module_text
     from rockly_desktop.core.program import write_text_atomically
+    from rockly_desktop.plugins.opening import opening_warnings
 
+    to_stdout = str(output) == "-" or _is_standard_output(output)
     try:
         program, python, _run_code, _workspace = generate_headless(program_path, language)
-        write_text_atomically(output, python_module_text(python, program.profile.id, program_path.name))
+        for warning in opening_warnings(program):
+            print(f"rockly export: warning: {warning}", file=sys.stderr)
+        text = python_module_text(python, program.profile.id, program_path.name)
+        if to_stdout:
+            sys.stdout.write(text)
+            sys.stdout.flush()
+        else:
+            write_text_atomically(output, text)
     except RocklyError as error:
         print(f"rockly export: {error}", file=sys.stderr)
         return 1
-    print(f"Wrote {output}")
+    if not to_stdout:
+        print(f"Wrote {output}")
     return 0
+
+
+def _is_standard_output(path: Path) -> bool:
+    """True when ``path`` is this process's standard output (``/dev/stdout``, ``/dev/fd/1``, or
+    the file stdout is redirected to): the Python then goes there as a stream, with no
+    "Wrote" line mixed into it."""
+    try:
+        target, stdout = os.stat(path), os.fstat(sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):
+        return False
+    return (target.st_dev, target.st_ino) == (stdout.st_dev, stdout.st_ino)
 
 
 def main(argv=None) -> int:

@@ -60,12 +60,15 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
                 backend: str = "sim", master_uri: str = None) -> int:
     """Run ``program_path`` headless on its profile's simulator (or on ROS 1); returns the exit status."""
     from rockly_desktop.app import generate_headless
+    from rockly_desktop.plugins.opening import opening_warnings
 
     try:
         program, _python, run_code, workspace = generate_headless(program_path, language)
     except RocklyError as error:
         print(f"rockly run: {error}", file=sys.stderr)
         return 1
+    for warning in opening_warnings(program):
+        print(f"rockly run: warning: {warning}", file=sys.stderr)
     types = block_types_by_id(workspace)
     try:
         if backend == "ros1":

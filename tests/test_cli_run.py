@@ -122,3 +122,25 @@ def test_a_program_blockly_refuses_is_explained(tmp_path):
     result = rockly_run(program)
     assert result.returncode == 1
     assert result.stderr.startswith("rockly run: ") and "could not load this program" in result.stderr
+
+
+def test_run_warns_about_a_replaced_value_and_a_missing_profile_and_still_runs(tmp_path):
+    path = tmp_path / "pepper.rockly"
+    path.write_text(rockly_document([stack(block("hobbit_emo", {"emotion": "FURIOUS"}, id="emo"),
+                                           block("text_print", inputs={"TEXT": text("done")}))], profile="pepper"))
+    result = rockly_run(path, "--speed", "50")
+    assert result.returncode == 0, result.stderr
+    warnings = [line for line in result.stderr.splitlines() if line.startswith("rockly run: warning: ")]
+    assert len(warnings) == 2
+    assert "robot profile 'pepper', which is not installed (installed: hobbit, turtlebot)" in warnings[0]
+    assert warnings[1].endswith("block 1 (hobbit_emo): emotion 'FURIOUS' is not a value this block accepts; "
+                                "it was replaced by 'HAPPY'")
+    assert result.stdout.splitlines()[-1] == "finished"
+
+
+def test_a_block_without_a_type_is_a_broken_file_not_an_unknown_block(tmp_path):
+    path = tmp_path / "untyped.rockly"
+    path.write_text(rockly_document([stack(block("hobbit_sos"), {"inputs": {}})]))
+    result = rockly_run(path)
+    assert result.returncode == 1
+    assert "the file is broken: block 2 has no type" in result.stderr and "undefined" not in result.stderr

@@ -26,4 +26,5 @@ def test_example_runs_to_its_end(example):
     result = subprocess.run([sys.executable, "-m", "rockly_desktop", "run", str(REPO / "examples" / example),
                              "--speed", "25", *answers], capture_output=True, text=True, cwd=REPO, timeout=240)
     assert result.returncode == 0, result.stderr[-2000:]
+    assert "warning" not in result.stderr  # opens as written: its profile, every field value kept
     assert result.stdout.splitlines()[-1] == "finished"

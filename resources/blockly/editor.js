@@ -5,7 +5,9 @@
  * Page -> Python: {reply: id, result | error}, or {event: 'hello' | 'changed' | 'error', ...}
  * through the bridge's `fromPage` slot. Python queues its calls until `setup` has run;
  * `setup` may carry a first call (the program to open at start) so it shows in one go.
- * A program with block types the page does not know is refused with `unknownTypes`.
+ * A program with block types the page does not know is refused with `unknownTypes`, one
+ * with a block without a type with `untypedBlock` (its number); a program that loads
+ * answers with `replacedFields` when Blockly could not keep some of its field values.
  */
 'use strict';
 
@@ -172,24 +174,125 @@
     return [...new Set(types)].filter((type) => !Blockly.Blocks[type]).sort();
   }
 
-  function typesInJson(json) {
-    const types = [];
-    const pending = [...((json.blocks || {}).blocks || [])];
+  /**
+   * The blocks of a Blockly JSON program in the order the file's text has them: a block,
+   * then what its inputs and `next` hold, as written (core/workspace_blocks.py counts the
+   * same way), so that "block 3" is the third block a person finds in the file.
+   */
+  function blocksInFileOrder(json) {
+    const ordered = [];
+    const top = json && typeof json.blocks === 'object' && json.blocks ? json.blocks.blocks : null;
+    const pending = Array.isArray(top) ? [...top].reverse() : [];
     while (pending.length) {
       const block = pending.pop();
-      if (!block || typeof block !== 'object') continue;
-      types.push(String(block.type));
-      for (const connection of [...Object.values(block.inputs || {}), block.next]) {
-        if (connection && typeof connection === 'object') {
-          for (const kind of ['block', 'shadow']) if (connection[kind]) pending.push(connection[kind]);
+      if (!block || typeof block !== 'object' || Array.isArray(block)) continue;
+      ordered.push(block);
+      const children = [];
+      for (const connection of jsonConnections(block)) {
+        for (const [kind, child] of Object.entries(connection)) {
+          if ((kind === 'block' || kind === 'shadow') && child) children.push(child);
         }
       }
+      pending.push(...children.reverse());
     }
-    return types;
+    return ordered;
   }
 
-  function typesInXml(dom) {
-    return [...dom.querySelectorAll('block, shadow')].map((element) => String(element.getAttribute('type')));
+  /** A JSON block's connections as written: [{input (null for next), block, shadow}]. */
+  function jsonConnections(block) {
+    const connections = [];
+    for (const [key, value] of Object.entries(block)) {
+      const isObject = (item) => item && typeof item === 'object' && !Array.isArray(item);
+      if (key === 'inputs' && isObject(value)) {
+        for (const [input, connection] of Object.entries(value)) {
+          if (isObject(connection)) connections.push({...connection, input});
+        }
+      } else if (key === 'next' && isObject(value)) {
+        connections.push({...value, input: null});
+      }
+    }
+    return connections;
+  }
+
+  const JSON_PROGRAM = {
+    fields: (block) => (block.fields && typeof block.fields === 'object' ? Object.entries(block.fields) : []),
+    connections: jsonConnections,
+  };
+
+  function xmlChildren(element, ...names) {
+    return [...element.children].filter((child) => names.includes(child.nodeName.toLowerCase()));
+  }
+
+  const XML_PROGRAM = {
+    fields: (element) => xmlChildren(element, 'field').map((field) => [field.getAttribute('name'), field.textContent]),
+    connections: (element) => xmlChildren(element, 'value', 'statement', 'next').map((connection) => ({
+      input: connection.nodeName.toLowerCase() === 'next' ? null : connection.getAttribute('name'),
+      block: xmlChildren(connection, 'block')[0],
+      shadow: xmlChildren(connection, 'shadow')[0],
+    })),
+  };
+
+  /** Whether a field now holds the value the file asked for (numbers and booleans as Blockly stores them). */
+  function sameValue(wanted, now) {
+    if (wanted === now) return true;
+    if (wanted === null || now === null || typeof wanted === 'object' || typeof now === 'object') return false;
+    if (typeof wanted === 'boolean' || typeof now === 'boolean') {
+      return String(wanted).toUpperCase() === String(now).toUpperCase();
+    }
+    if (typeof wanted === 'number' || typeof now === 'number') {
+      return String(wanted).trim() !== '' && String(now).trim() !== '' && Number(wanted) === Number(now);
+    }
+    return String(wanted) === String(now);
+  }
+
+  /**
+   * The field values a just-loaded program asked for that its blocks do not hold: a
+   * dropdown choice the block does not offer, a number outside its range, a field the
+   * block does not have. Blockly replaces or drops those silently; Rockly says so.
+   * `pairs` are [block as in the file, the same block as Blockly now saves it] (a shadow
+   * covered by a block included: Blockly keeps its state, checked too); `numbers` maps
+   * the former to its number in the file.
+   */
+  function fieldsNotKept(program, pairs, numbers) {
+    const replaced = [];
+    pairs = [...pairs];
+    while (pairs.length) {
+      const [wanted, saved] = pairs.pop();
+      if (!wanted || !saved) continue;
+      const savedFields = saved.fields || {};
+      const block = workspace.getBlockById(saved.id);
+      for (const [name, value] of program.fields(wanted)) {
+        if (Object.prototype.hasOwnProperty.call(savedFields, name)) {
+          const now = savedFields[name];
+          // A variable field ({id}) makes the variable it names: nothing is replaced.
+          if ((now && typeof now === 'object') || sameValue(value, now)) continue;
+          replaced.push({number: numbers.get(wanted), id: saved.id, type: saved.type, field: name, requested: value, now});
+        } else if (!(block && block.getField(name))) {  // a field that is not saved (a label) is no loss
+          replaced.push({number: numbers.get(wanted), id: saved.id, type: saved.type, field: name, requested: value,
+                         missing: true});
+        }
+      }
+      const savedConnections = {...(saved.inputs || {}), [NEXT]: saved.next};
+      for (const {input, block: child, shadow} of program.connections(wanted)) {
+        const connection = savedConnections[input === null ? NEXT : input];
+        if (!connection) continue;
+        if (child) pairs.push([child, connection.block]);
+        if (shadow) pairs.push([shadow, connection.shadow]);
+      }
+    }
+    return replaced.sort((a, b) => a.number - b.number);
+  }
+
+  const NEXT = Symbol('next');
+
+  /** The blocks at the top of the workspace as Blockly saves them (with everything they hold). */
+  function savedTopBlocks() {
+    return workspace.getTopBlocks(false).map((block) => Blockly.serialization.blocks.save(block, {addCoordinates: false}));
+  }
+
+  /** The answer's `replacedFields` part: absent when every value was kept. */
+  function replacedFields(replaced) {
+    return replaced.length ? {replacedFields: replaced} : {};
   }
 
   const calls = {
@@ -213,18 +316,35 @@
       return {blockTypes: Object.keys(Blockly.Blocks), program};
     },
     load({workspace: json, breakpoints: ids}) {
-      const unknown = unknownTypes(typesInJson(json));
+      const blocks = blocksInFileOrder(json);
+      const untyped = blocks.findIndex((block) => typeof block.type !== 'string' || !block.type);
+      if (untyped >= 0) return {untypedBlock: untyped + 1};
+      const unknown = unknownTypes(blocks.map((block) => block.type));
       if (unknown.length) return {unknownTypes: unknown};
       replaceOrRestore(() => Blockly.serialization.workspaces.load(json, workspace));
       setBreakpoints(ids);
-      return {loaded: true};
+      // Blockly creates the top blocks in the file's order; pair each with its state.
+      const tops = (json.blocks || {}).blocks || [];
+      const pairs = savedTopBlocks().map((saved, index) => [tops[index], saved]);
+      const numbers = new Map(blocks.map((block, index) => [block, index + 1]));
+      return {loaded: true, ...replacedFields(fieldsNotKept(JSON_PROGRAM, pairs, numbers))};
     },
     importXml({xml}) {
       const dom = Blockly.utils.xml.textToDom(xml);
-      const unknown = unknownTypes(typesInXml(dom));
+      const elements = [...dom.querySelectorAll('block, shadow')];
+      const untyped = elements.findIndex((element) => !element.getAttribute('type'));
+      if (untyped >= 0) return {untypedBlock: untyped + 1};
+      const unknown = unknownTypes(elements.map((element) => element.getAttribute('type')));
       if (unknown.length) return {unknownTypes: unknown};
-      replaceOrRestore(() => Blockly.Xml.domToWorkspace(dom, workspace));
-      return {loaded: true, ...state()};
+      let topIds = [];
+      replaceOrRestore(() => { topIds = Blockly.Xml.domToWorkspace(dom, workspace); });
+      const blocksAtTop = xmlChildren(dom, 'block');
+      const tops = blocksAtTop.length === topIds.length ? blocksAtTop : xmlChildren(dom, 'block', 'shadow');
+      const saved = topIds.map((id) => workspace.getBlockById(id))
+          .map((block) => block && Blockly.serialization.blocks.save(block, {addCoordinates: false}));
+      const pairs = saved.map((state, index) => [tops[index], state]);
+      const numbers = new Map(elements.map((element, index) => [element, index + 1]));
+      return {loaded: true, ...replacedFields(fieldsNotKept(XML_PROGRAM, pairs, numbers)), ...state()};
     },
     clear() {
       replaceWorkspace(() => {});

@@ -2,6 +2,7 @@
 from PySide6.QtCore import QCoreApplication, QEvent, QEventLoop, QTimer
 
 from rockly_desktop.bridge.editor_view import EditorView
+from rockly_desktop.core.errors import ProgramFileError
 
 
 class UnknownBlocks(Exception):
@@ -40,12 +41,17 @@ class HeadlessEditor:
         self.profile = profile
 
     def python_for(self, program) -> str:
-        """The Python generated for a ProgramToOpen; raises UnknownBlocks if the page refuses it."""
+        """The Python generated for a ProgramToOpen; raises UnknownBlocks if the page refuses it,
+        ProgramFileError for a block without a type. Field values the page had to replace
+        are kept in ``program.replaced_fields``."""
         self.use_profile(program.profile)
         name, args = program.editor_call()
         result = self.view.call_blocking(name, args)
+        if result.get("untypedBlock"):
+            raise ProgramFileError(program.path or "the program", f"the file is broken: block {result['untypedBlock']} has no type")
         if result.get("unknownTypes"):
             raise UnknownBlocks(result["unknownTypes"])
+        program.take_load_result(result)
         return self.view.call_blocking("getState")["python"]
 
     def close(self):

@@ -5,10 +5,12 @@ A file looks like::
     {"format": "rockly-program", "version": 1, "profile": "my_robot",
      "workspace": { ...Blockly's JSON serialization... }}
 
-Reading never changes the file; writing is atomic (temp file, fsync, rename).
+Reading never changes the file; writing is atomic (temp file, fsync, rename), through
+symbolic links to their target.
 """
 import json
 import os
+import stat
 import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -98,22 +100,49 @@ def load_program(path) -> Program:
 def write_text_atomically(path, text: str) -> None:
     """Replace ``path`` with ``text`` so that readers see the old or the new file, never half.
 
-    The text goes to a temporary file in the same folder, is flushed to disk and then
+    The text goes to a temporary file in the target's folder, is flushed to disk and then
     renamed over the target. An existing file keeps its permission bits; a new one gets
-    the usual ones (0o666 less the umask).
+    the usual ones (0o666 less the umask). A symbolic link is written through: its target
+    is replaced (in the target's folder) and the link stays. Something that is not a
+    regular file (a terminal, a pipe, a FIFO, ``/dev/stdout``) cannot be renamed over
+    without destroying it, so the text is written into it directly.
     """
     path = Path(path)
-    folder = path.parent if str(path.parent) else Path(".")
     try:
         data = text.encode("utf-8")
     except UnicodeEncodeError as error:
         raise ProgramFileError(path, f"the program contains text that cannot be saved ({error.reason})") from None
     try:
-        mode = path.stat().st_mode & 0o777
-    except OSError:
-        mode = _new_file_mode()
+        existing = os.stat(path)  # follows links
+    except FileNotFoundError:
+        existing = None  # a new file (or a link to a file still to be made)
+    except OSError as error:  # a link loop, a folder we may not look into, ...
+        raise ProgramFileError(path, f"the file could not be saved ({error.strerror})") from None
+    if existing is not None and stat.S_ISDIR(existing.st_mode):
+        raise ProgramFileError(path, "the file could not be saved (this is a folder, not a file)")
+    if existing is not None and not stat.S_ISREG(existing.st_mode):
+        _write_directly(path, data)
+        return
+    target = Path(os.path.realpath(path)) if os.path.islink(path) else path
+    _replace_file(path, target, data, stat.S_IMODE(existing.st_mode) if existing else _new_file_mode())
+
+
+def _write_directly(path: Path, data: bytes) -> None:
+    """Write into a device or a FIFO as it is (opening a FIFO waits for its reader)."""
     try:
-        handle, temp_name = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=folder)
+        with open(path, "wb") as stream:
+            stream.write(data)
+            stream.flush()
+    except OSError as error:
+        raise ProgramFileError(path, f"the file could not be saved ({error.strerror})") from None
+
+
+def _replace_file(path: Path, target: Path, data: bytes, mode: int) -> None:
+    """Write ``data`` to a temporary file next to ``target`` and rename it over ``target``;
+    errors name ``path`` (what the person asked for)."""
+    folder = target.parent if str(target.parent) else Path(".")
+    try:
+        handle, temp_name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
     except OSError as error:
         raise ProgramFileError(path, f"cannot write in this folder ({error.strerror})") from None
     try:
@@ -122,7 +151,7 @@ def write_text_atomically(path, text: str) -> None:
             stream.flush()
             os.fsync(stream.fileno())
         os.chmod(temp_name, mode)
-        os.replace(temp_name, path)
+        os.replace(temp_name, target)
     except BaseException as error:
         try:
             os.unlink(temp_name)

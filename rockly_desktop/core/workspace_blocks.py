@@ -25,6 +25,35 @@ def iter_blocks(workspace: dict):
                 pending.extend(connection.get(kind) for kind in ("block", "shadow") if connection.get(kind))
 
 
+def blocks_in_file_order(workspace: dict):
+    """Every block dict in a Blockly JSON workspace in the order the file's text has them
+    (a block, then what its inputs and ``next`` hold, as written), so that "block 3" is the
+    third ``"type"`` a person finds reading the file. Malformed parts are skipped."""
+    top = workspace.get("blocks")
+    top_blocks = top.get("blocks") if isinstance(top, dict) else None
+    pending = list(reversed(top_blocks)) if isinstance(top_blocks, list) else []
+    while pending:
+        block = pending.pop()
+        if not isinstance(block, dict):
+            continue
+        yield block
+        children = []
+        for key, value in block.items():
+            connections = list(value.values()) if key == "inputs" and isinstance(value, dict) else [value] if key == "next" else []
+            for connection in connections:
+                if isinstance(connection, dict):
+                    children.extend(child for kind, child in connection.items() if kind in ("block", "shadow") and child)
+        pending.extend(reversed(children))
+
+
+def untyped_block_number(workspace: dict):
+    """The number (from 1, in file order) of the first block without a type, or None."""
+    for number, block in enumerate(blocks_in_file_order(workspace), start=1):
+        if not isinstance(block.get("type"), str) or not block.get("type"):
+            return number
+    return None
+
+
 def block_types_in_workspace(workspace: dict) -> Counter:
     """Count the block types in a Blockly JSON workspace (blocks, shadows, nested)."""
     counts = Counter()
@@ -56,6 +85,15 @@ def block_types_in_xml(root: ElementTree.Element) -> Counter:
     return Counter(
         element.get("type") or "(block without a type)" for element in root.iter() if _local_name(element.tag) in ("block", "shadow")
     )
+
+
+def untyped_xml_block_number(root: ElementTree.Element):
+    """The number (from 1, in document order) of the first ``<block>``/``<shadow>`` without a type, or None."""
+    elements = (element for element in root.iter() if _local_name(element.tag) in ("block", "shadow"))
+    for number, element in enumerate(elements, start=1):
+        if not element.get("type"):
+            return number
+    return None
 
 
 def rename_legacy_fields(root: ElementTree.Element, aliases: dict) -> int:

@@ -3,14 +3,20 @@
 The file is read and checked here; whether every block exists is checked by the editor
 page itself (it knows Blockly's own blocks), which refuses a program with unknown
 blocks before touching the workspace. ``unknown_blocks_error`` words that refusal.
+
+What opening changes without refusing is said, never done silently: a program for a
+profile that is not installed is shown with another one (``missing_profile``), and field
+values its blocks do not offer are replaced by the page (``replaced_fields``, filled in
+from the page's answer). ``opening_warnings`` words both for the command line.
 """
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
-from rockly_desktop.core.errors import UnknownBlocksError
+from rockly_desktop.core.errors import ProgramFileError, UnknownBlocksError
 from rockly_desktop.core.program import load_program, read_text_file
 from rockly_desktop.core.workspace_blocks import (
-    block_types_in_workspace, block_types_in_xml, parse_blockly_xml, rename_legacy_fields, xml_to_text,
+    block_types_in_workspace, block_types_in_xml, parse_blockly_xml, rename_legacy_fields, untyped_block_number,
+    untyped_xml_block_number, xml_to_text,
 )
 from rockly_desktop.plugins.profile import Profile
 from rockly_desktop.plugins.registry import ProfileRegistry
@@ -28,6 +34,15 @@ class ProgramToOpen:
     xml: str = None
     declared_profile: str = None
     breakpoints: tuple = ()
+    missing_profile: str = None  # the declared profile when it is not installed (``profile`` stands in for it)
+    installed_profiles: tuple = ()  # then: the installed profile ids
+    # What the editor page replaced when it showed the program: one dict per field value it
+    # could not keep ({number, id, type, field, requested, now}); set from the page's answer.
+    replaced_fields: list = field(default_factory=list, compare=False)
+
+    def take_load_result(self, result: dict):
+        """Keep what the page says it had to change while loading this program."""
+        self.replaced_fields[:] = (result or {}).get("replacedFields") or []
 
     @property
     def is_import(self) -> bool:
@@ -57,19 +72,48 @@ def read_program_to_open(path, registry: ProfileRegistry, fallback: Profile) -> 
     path = Path(path)
     if path.suffix.lower() == XML_SUFFIX:
         root = parse_blockly_xml(read_text_file(path), path)
+        _refuse_untyped(path, untyped_xml_block_number(root))
         profile = _best_profile_for(set(block_types_in_xml(root)), registry, fallback)
         rename_legacy_fields(root, profile.legacy_fields)
         return ProgramToOpen(path, profile, xml=xml_to_text(root))
     program = load_program(path)
+    _refuse_untyped(path, untyped_block_number(program.workspace))
     if program.profile_id in registry.profiles:
-        profile = registry.get(program.profile_id)
+        profile, missing = registry.get(program.profile_id), None
     else:
         profile = _best_profile_for(set(block_types_in_workspace(program.workspace)), registry, fallback)
+        missing = program.profile_id
     return ProgramToOpen(path, profile, workspace=program.workspace, declared_profile=program.profile_id,
-                         breakpoints=tuple(program.breakpoints))
+                         breakpoints=tuple(program.breakpoints), missing_profile=missing,
+                         installed_profiles=tuple(registry.profiles) if missing else ())
+
+
+def _refuse_untyped(path, number):
+    if number is not None:
+        raise ProgramFileError(path, f"the file is broken: block {number} has no type")
 
 
 def unknown_blocks_error(program: ProgramToOpen, unknown_types, registry: ProfileRegistry) -> UnknownBlocksError:
     """The error for a program the editor refused because of ``unknown_types``."""
     declared = program.declared_profile
     return UnknownBlocksError(unknown_types, declared, declared in registry.profiles if declared else False)
+
+
+def describe_replaced_field(entry: dict) -> str:
+    """One replaced field value in plain words: which block, which field, what became of it."""
+    where = f"block {entry.get('number')} ({entry.get('type')})"
+    requested = entry.get("requested")
+    if entry.get("missing"):
+        return f"{where}: the block has no field {entry.get('field')}; its value {requested!r} was left out"
+    return f"{where}: {entry.get('field')} {requested!r} is not a value this block accepts; it was replaced by {entry.get('now')!r}"
+
+
+def opening_warnings(program: ProgramToOpen) -> list:
+    """What opening ``program`` changed, in plain English (one line each; empty if nothing)."""
+    warnings = []
+    if program.missing_profile:
+        warnings.append(f"the program was made for the robot profile '{program.missing_profile}', which is not "
+                        f"installed (installed: {', '.join(program.installed_profiles)}); "
+                        f"it is used with '{program.profile.id}' instead")
+    warnings.extend(describe_replaced_field(entry) for entry in program.replaced_fields)
+    return warnings

@@ -1,8 +1,11 @@
 """The File menu's work: new, open, save, save as, recent files, import XML, export Python.
 
 Every failure is shown as a plain message; a failed open or import leaves the program
-on screen untouched, and a failed save leaves the file on disk untouched.
+on screen untouched, and a failed save leaves the file on disk untouched. A program that
+opens with changes (its profile is not installed, or its blocks could not take some of
+its values) is opened as changed, with a message saying what changed.
 """
+import json
 from pathlib import Path
 
 from PySide6.QtCore import QObject, Signal
@@ -149,19 +152,49 @@ class ProgramFiles(QObject):
         def on_shown(result, error):
             if error:
                 self._show_error("cannot_open", f"{path}: the editor could not show this program ({error})")
+            elif result.get("untypedBlock"):
+                self._show_error("cannot_open", f"{path}: the file is broken: block {result['untypedBlock']} has no type")
             elif result.get("unknownTypes"):
                 self._show_error("cannot_open", unknown_blocks_error(program, result["unknownTypes"], window.registry))
-            elif program.is_import:
-                window.breakpoints = []
-                self._set_document(None, True)
-                self.sig_status.emit(tr("imported", window.language, path=path))
             else:
-                window.breakpoints = list(program.breakpoints)
-                self._set_document(path, False)
-                self.sig_status.emit(tr("opened", window.language, path=path))
+                # What is shown differs from the file when the page replaced values or another
+                # profile stands in: the program counts as changed, and the person is told.
+                program.take_load_result(result)
+                changed = bool(program.missing_profile or program.replaced_fields)
+                if program.is_import:
+                    window.breakpoints = []
+                    self._set_document(None, True)
+                    self.sig_status.emit(tr("imported", window.language, path=path))
+                else:
+                    window.breakpoints = list(program.breakpoints)
+                    self._set_document(path, changed)
+                    self.sig_status.emit(tr("opened", window.language, path=path))
+                if changed:
+                    self._show_opening_changes(program)
 
         window.show_program(program, on_shown)
         return True
+
+    def _show_opening_changes(self, program):
+        """Say what opening ``program`` changed: a stand-in profile, replaced field values."""
+        language = self.window.language
+        parts = []
+        if program.missing_profile:
+            parts.append(tr("missing_profile", language, declared=program.missing_profile,
+                            installed=", ".join(program.installed_profiles), name=program.profile.display_name(language)))
+        if program.replaced_fields:
+            lines = [tr("replaced_fields", language)]
+            for entry in program.replaced_fields:
+                values = {"number": entry.get("number"), "type": entry.get("type"), "field": entry.get("field"),
+                          "requested": _shown(entry.get("requested")), "now": _shown(entry.get("now"))}
+                key = "field_left_out" if entry.get("missing") else "replaced_field"
+                lines.append("• " + tr(key, language, **values))
+            parts.append("\n".join(lines))
+        box = plain_message_box(self.window, QMessageBox.Icon.Warning, tr("opened_with_changes", language),
+                                "\n\n".join(parts))
+        box.setInformativeText(tr("opened_with_changes_detail", language))
+        box.setObjectName("opening_changes_box")
+        box.open()
 
     def _write(self, path) -> bool:
         try:
@@ -181,3 +214,10 @@ class ProgramFiles(QObject):
             box.setInformativeText(tr("nothing_changed", language))
         box.setObjectName("error_box")
         box.open()
+
+
+def _shown(value) -> str:
+    """A field value as a person reads it (text as it is, anything else as JSON would write it)."""
+    if isinstance(value, str):
+        return value
+    return json.dumps(value, ensure_ascii=False)

@@ -46,6 +46,24 @@ _TEXTS = {
     "imported": ("Imported {path} – save it as a Rockly program to keep it",
                  "Importiert: {path} – speichere es als Rockly-Programm, um es zu behalten"),
     "exported": ("Exported the Python code to {path}", "Python-Code exportiert nach {path}"),
+    "opened_with_changes": ("The program was opened with changes", "Das Programm wurde mit Änderungen geöffnet"),
+    "opened_with_changes_detail": (
+        "The file itself is unchanged. Saving writes the program as it is shown now; close it without saving "
+        "to keep the file as it was.",
+        "Die Datei selbst ist unverändert. Beim Speichern wird das Programm so geschrieben, wie es jetzt "
+        "angezeigt wird; schließe es ohne zu speichern, um die Datei so zu behalten."),
+    "missing_profile": (
+        "This program was made for the robot profile “{declared}”, which is not installed here (installed: "
+        "{installed}). It is shown with the blocks of {name}; saving it makes it a program for {name}.",
+        "Dieses Programm wurde für das Roboterprofil „{declared}“ gemacht, das hier nicht installiert ist "
+        "(installiert: {installed}). Es wird mit den Blöcken von {name} gezeigt; beim Speichern wird es ein "
+        "Programm für {name}."),
+    "replaced_fields": ("Some values in this program do not fit their blocks and were replaced:",
+                        "Einige Werte in diesem Programm passen nicht zu ihren Blöcken und wurden ersetzt:"),
+    "replaced_field": ("Block {number} ({type}), {field}: “{requested}” → “{now}”",
+                       "Block {number} ({type}), {field}: „{requested}“ → „{now}“"),
+    "field_left_out": ("Block {number} ({type}) has no field {field}: “{requested}” was left out",
+                       "Block {number} ({type}) hat kein Feld {field}: „{requested}“ wurde weggelassen"),
     "profile_errors_title": ("Some robot profiles could not be loaded", "Einige Roboterprofile konnten nicht geladen werden"),
     "editor_error": ("The block editor reported a problem: {message}", "Der Block-Editor meldet ein Problem: {message}"),
     "preferences_title": ("Preferences", "Einstellungen"),

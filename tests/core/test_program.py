@@ -4,6 +4,7 @@ import json
 import os
 import stat
 import tempfile
+import threading
 from pathlib import Path
 
 import pytest
@@ -278,6 +279,94 @@ def test_new_file_gets_the_usual_permissions_not_private_temp_file_ones(tmp_path
         os.umask(previous)
     assert stat.S_IMODE((tmp_path / "new.rockly").stat().st_mode) == 0o644
     assert stat.S_IMODE((tmp_path / "group.rockly").stat().st_mode) == 0o640
+
+
+# --- links, FIFOs and devices: written through, never replaced -----------------------------
+
+
+def test_saving_through_a_symlink_replaces_its_target_and_keeps_the_link(tmp_path):
+    real_folder = tmp_path / "programs"
+    real_folder.mkdir()
+    target = real_folder / "real.rockly"
+    save_program(target, Program("hobbit", hobbit_workspace(["old"])))
+    target.chmod(0o640)
+    link_folder = tmp_path / "desktop"
+    link_folder.mkdir()
+    link = link_folder / "link.rockly"
+    link.symlink_to(Path("..") / "programs" / "real.rockly")  # relative, as `ln -s` makes them
+
+    save_program(link, Program("hobbit", hobbit_workspace(["new"])))
+
+    assert link.is_symlink() and os.readlink(link) == str(Path("..") / "programs" / "real.rockly")
+    assert load_program(target).workspace == hobbit_workspace(["new"])
+    assert stat.S_IMODE(target.stat().st_mode) == 0o640
+    assert files_in(link_folder) == ["link.rockly"] and files_in(real_folder) == ["real.rockly"]
+
+
+def test_a_chain_of_links_is_followed_to_the_file_and_the_temp_file_is_made_beside_it(tmp_path, monkeypatch):
+    target = tmp_path / "a" / "real.py"
+    target.parent.mkdir()
+    target.write_text("old\n")
+    first, second = tmp_path / "first.py", tmp_path / "second.py"
+    second.symlink_to(target)
+    first.symlink_to(second)
+    folders = []
+    real_mkstemp = tempfile.mkstemp
+
+    def spy(*args, **kwargs):
+        folders.append(Path(kwargs["dir"]))
+        return real_mkstemp(*args, **kwargs)
+
+    monkeypatch.setattr(program_module.tempfile, "mkstemp", spy)
+    write_text_atomically(first, "new\n")
+    assert target.read_text() == "new\n"
+    assert first.is_symlink() and second.is_symlink()
+    assert folders == [target.parent]
+
+
+def test_a_dangling_link_gets_its_target_made(tmp_path):
+    link = tmp_path / "out.py"
+    link.symlink_to(tmp_path / "made.py")
+    write_text_atomically(link, "text\n")
+    assert link.is_symlink() and (tmp_path / "made.py").read_text() == "text\n"
+
+
+def test_a_link_loop_is_refused_and_stays_a_loop(tmp_path):
+    first, second = tmp_path / "first.py", tmp_path / "second.py"
+    first.symlink_to(second)
+    second.symlink_to(first)
+    with pytest.raises(ProgramFileError, match="could not be saved") as caught:
+        write_text_atomically(first, "text")
+    assert caught.value.path == str(first)
+    assert os.readlink(first) == str(second) and os.readlink(second) == str(first)
+    assert files_in(tmp_path) == ["first.py", "second.py"]
+
+
+def test_a_fifo_is_written_into_not_replaced(tmp_path):
+    fifo = tmp_path / "pipe"
+    os.mkfifo(fifo)
+    received = []
+    reader = threading.Thread(target=lambda: received.append(fifo.read_bytes()), daemon=True)
+    reader.start()
+    write_text_atomically(fifo, "print('hi') # Grüße\n")
+    reader.join(10)
+    assert received == ["print('hi') # Grüße\n".encode("utf-8")]
+    assert stat.S_ISFIFO(os.stat(fifo).st_mode)
+    assert files_in(tmp_path) == ["pipe"]
+
+
+def test_a_link_to_a_fifo_is_written_through(tmp_path):
+    fifo = tmp_path / "pipe"
+    os.mkfifo(fifo)
+    link = tmp_path / "out.py"
+    link.symlink_to(fifo)
+    received = []
+    reader = threading.Thread(target=lambda: received.append(fifo.read_bytes()), daemon=True)
+    reader.start()
+    save_program(link, Program("hobbit", {}))
+    reader.join(10)
+    assert json.loads(received[0])["profile"] == "hobbit"
+    assert link.is_symlink() and stat.S_ISFIFO(os.stat(fifo).st_mode)
 
 
 # --- bad files ----------------------------------------------------------------------------

@@ -8,7 +8,8 @@ import yaml
 
 from rockly_desktop.core.errors import ProgramFileError
 from rockly_desktop.core.workspace_blocks import (
-    block_types_in_workspace, block_types_in_xml, parse_blockly_xml, rename_legacy_fields, xml_to_text,
+    block_types_in_workspace, block_types_in_xml, blocks_in_file_order, parse_blockly_xml, rename_legacy_fields,
+    untyped_block_number, untyped_xml_block_number, xml_to_text,
 )
 
 REPO = Path(__file__).resolve().parents[2]
@@ -67,6 +68,30 @@ def test_a_very_long_chain_does_not_hit_the_recursion_limit():
 def test_block_without_a_type_is_counted_under_a_readable_name():
     counts = block_types_in_workspace({"blocks": {"blocks": [{"id": "a"}, {"type": ""}, {"type": ["x"]}]}})
     assert counts == Counter({"(block without a type)": 3})
+
+
+def test_blocks_are_numbered_in_the_order_the_file_has_them():
+    program = {"blocks": {"blocks": [
+        {"type": "a", "inputs": {"X": {"shadow": {"type": "b"}, "block": {"type": "c", "next": {"block": {"type": "d"}}}},
+                                 "Y": {"block": {"type": "e"}}},
+         "next": {"block": {"type": "f"}}},
+        {"next": {"block": {"type": "h"}}, "type": "g"},
+        "not a block",
+        {"type": "i"},
+    ]}}
+    assert [block["type"] for block in blocks_in_file_order(program)] == list("abcdefghi")
+
+
+def test_the_first_block_without_a_type_is_named_by_its_number():
+    assert untyped_block_number({"blocks": {"blocks": [{"type": "a", "next": {"block": {"type": "b"}}}]}}) is None
+    assert untyped_block_number({}) is None
+    for untyped in ({}, {"type": ""}, {"type": None}, {"type": ["x"]}):
+        program = {"blocks": {"blocks": [{"type": "a", "inputs": {"X": {"block": {"type": "b"}}},
+                                          "next": {"block": {**untyped, "next": {"block": {}}}}}]}}
+        assert untyped_block_number(program) == 3
+    assert untyped_xml_block_number(parse_blockly_xml('<xml><block type="a"><value name="V"><shadow type="b"/></value>'
+                                                      '<next><block><field name="f">x</field></block></next></block></xml>')) == 3
+    assert untyped_xml_block_number(parse_blockly_xml('<xml><block type="a"/></xml>')) is None
 
 
 @pytest.mark.parametrize("workspace", [

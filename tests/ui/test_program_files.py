@@ -1,5 +1,8 @@
 """Programs on disk through the window: open, save, round trip, bad files, import, export."""
 import json
+import os
+import stat
+import threading
 
 import pytest
 from conftest import error_boxes, state
@@ -8,6 +11,7 @@ from program_builder import block, number, rockly_document, stack, text
 from PySide6.QtWidgets import QMessageBox
 
 from rockly_desktop.core.program import load_program
+from rockly_desktop.ui.settings import AppSettings
 
 PICK_UP = stack(block("hobbit_arm_gripper", {"movement": "OpenGripper"}),
                 block("hobbit_arm_move", {"movement": "MoveToPreGraspFloor"}),
@@ -78,6 +82,10 @@ BAD_FILES = {
     "no-profile.rockly": (b'{"format": "rockly-program", "version": 1, "workspace": {}}', "robot profile"),
     "page.xml": (b"<html><body>hello</body></html>", "not a Blockly program"),
     "cut.xml": (b'<xml xmlns="https://developers.google.com/blockly/xml"><block type="hobbit_sos"', "not valid Blockly XML"),
+    "untyped.rockly": (rockly_document([stack(block("hobbit_sos"), {"fields": {"emotion": "HAPPY"}})]).encode(),
+                       "the file is broken: block 2 has no type"),
+    "untyped.xml": (b'<xml><block type="hobbit_sos"><next><block><field name="emotion">HAPPY</field></block></next>'
+                    b'</block></xml>', "the file is broken: block 2 has no type"),
 }
 
 
@@ -192,3 +200,112 @@ def test_a_large_program_opens(qtbot, window, tmp_path):
     open_program(qtbot, window, path)
     qtbot.waitUntil(lambda: window.code_dock.view.toPlainText().count("\n") == 300, timeout=15000)
     assert json.loads(path.read_text())["workspace"]["blocks"]["blocks"][0]["type"] == "hobbit_move"
+
+
+# --- opening with changes: said, never silent ---------------------------------------------
+
+
+def changes_box(qtbot, window):
+    """The warning shown when a program opened with changes (waits for it)."""
+    def find():
+        return [box for box in window.findChildren(QMessageBox) if box.objectName() == "opening_changes_box" and box.isVisible()]
+    qtbot.waitUntil(lambda: bool(find()), timeout=10000)
+    [box] = find()
+    return box
+
+
+def test_a_good_program_opens_without_a_warning(qtbot, window, pick_up_file):
+    open_program(qtbot, window, pick_up_file)
+    wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
+    qtbot.wait(200)
+    assert error_boxes(window) == [] and not window.isWindowModified()
+
+
+def test_a_value_its_block_does_not_offer_is_named_and_the_file_is_kept_until_saved(qtbot, window, tmp_path):
+    path = tmp_path / "furious.rockly"
+    path.write_text(rockly_document([stack(block("hobbit_sos"), block("hobbit_emo", {"emotion": "FURIOUS"}),
+                                           block("hobbit_stop", {"brakes": "hard"}))]), encoding="utf-8")
+    content = path.read_bytes()
+    open_program(qtbot, window, path)
+    box = changes_box(qtbot, window)
+    assert "Block 2 (hobbit_emo), emotion: “FURIOUS” → “HAPPY”" in box.text()
+    assert "Block 3 (hobbit_stop) has no field brakes: “hard” was left out" in box.text()
+    assert "The file itself is unchanged" in box.informativeText()
+    assert box.icon() == QMessageBox.Icon.Warning
+    # The program opens as it is shown, marked changed: closing asks before anything is lost.
+    wait_for_code(qtbot, window, "robot.call_sos()\nrobot.show_emotion('HAPPY')\nrobot.stop()\n")
+    assert window.files.path == str(path) and window.isWindowModified()
+    assert path.read_bytes() == content
+    # Saving (after being told) writes what is shown.
+    assert window.files.save()
+    assert load_program(path).workspace["blocks"]["blocks"][0]["next"]["block"]["fields"] == {"emotion": "HAPPY"}
+
+
+def test_an_imported_program_with_a_value_its_block_does_not_offer_is_named_too(qtbot, window, tmp_path):
+    path = tmp_path / "old.xml"
+    path.write_text('<xml><block type="hobbit_head"><field name="head_position">sideways</field></block></xml>')
+    open_program(qtbot, window, path, importing=True)
+    assert "Block 1 (hobbit_head), head_position: “sideways” → “center_center”" in changes_box(qtbot, window).text()
+
+
+def test_a_program_for_a_profile_that_is_not_installed_says_so_before_it_is_saved_as_another(qtbot, window, pick_up_file):
+    pepper = pick_up_file.with_name("pepper.rockly")
+    pepper.write_text(pick_up_file.read_text().replace('"profile": "hobbit"', '"profile": "pepper"'))
+    content = pepper.read_bytes()
+    open_program(qtbot, window, pepper)
+    text = changes_box(qtbot, window).text()
+    assert "robot profile “pepper”, which is not installed here (installed: hobbit, turtlebot)" in text
+    assert "It is shown with the blocks of HOBBIT; saving it makes it a program for HOBBIT." in text
+    wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
+    assert window.isWindowModified() and pepper.read_bytes() == content
+    assert window.files.save()
+    assert load_program(pepper).profile_id == "hobbit"
+
+
+def test_the_changes_are_named_in_german_too(qtbot, driver, tmp_path):
+    settings = AppSettings(driver.settings_path)
+    settings.language = "de"
+    settings.sync()
+    window = driver.open_window()
+    path = tmp_path / "pepper.rockly"
+    path.write_text(rockly_document([block("hobbit_emo", {"emotion": "FURIOUS"})], profile="pepper"))
+    window.files.open(str(path))
+    box = changes_box(qtbot, window)
+    assert box.windowTitle() == "Das Programm wurde mit Änderungen geöffnet"
+    assert "Roboterprofil „pepper“ gemacht, das hier nicht installiert ist (installiert: hobbit, turtlebot)" in box.text()
+    assert "Block 1 (hobbit_emo), emotion: „FURIOUS“ → „HAPPY“" in box.text()
+
+
+def test_saving_through_a_symlink_keeps_the_link_and_updates_its_target(qtbot, window, pick_up_file, tmp_path):
+    link = tmp_path / "shortcut.rockly"
+    link.symlink_to(pick_up_file.name)
+    open_program(qtbot, window, link)
+    wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
+    add_block_as_user(qtbot, window.editor, "hobbit_sos")
+    qtbot.waitUntil(window.isWindowModified, timeout=5000)
+    assert window.files.save()
+    assert link.is_symlink() and os.readlink(link) == pick_up_file.name
+    assert "hobbit_sos" in {b["type"] for b in load_program(pick_up_file).workspace["blocks"]["blocks"]}
+
+
+def test_export_into_a_fifo_writes_into_it(qtbot, window, pick_up_file, tmp_path):
+    open_program(qtbot, window, pick_up_file)
+    wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
+    fifo = tmp_path / "python.fifo"
+    os.mkfifo(fifo)
+    received = []
+    reader = threading.Thread(target=lambda: received.append(fifo.read_text()), daemon=True)
+    reader.start()
+    assert window.files.export_python(str(fifo))
+    reader.join(10)
+    assert received and received[0].endswith("robot.gripper('close')\n")
+    assert stat.S_ISFIFO(os.stat(fifo).st_mode)
+
+
+def test_a_program_opened_at_start_with_changes_says_so_too(qtbot, driver, tmp_path):
+    path = tmp_path / "furious.rockly"
+    path.write_text(rockly_document([block("hobbit_emo", {"emotion": "FURIOUS"})]))
+    window = driver.open_window(str(path))
+    assert "Block 1 (hobbit_emo), emotion: “FURIOUS” → “HAPPY”" in changes_box(qtbot, window).text()
+    qtbot.waitUntil(lambda: window.files.path == str(path), timeout=10000)
+    assert window.isWindowModified()
