@@ -62,10 +62,14 @@ def build_main_window(settings_path=None, extra_profile_dirs=()):
     editor = EditorView()  # Chromium loads the page while Python reads profiles and builds the window
     from rockly_desktop.plugins.registry import ProfileRegistry
     from rockly_desktop.ui.main_window import MainWindow
+    from rockly_desktop.ui.qt_language import use_language
     from rockly_desktop.ui.settings import AppSettings
 
     registry = ProfileRegistry.discover(extra_profile_dirs)
-    return MainWindow(registry, AppSettings(settings_path), editor)
+    settings = AppSettings(settings_path)
+    use_language(settings.language)  # Qt's own buttons and dialogs, now and whenever the language changes
+    settings.language_watchers.append(use_language)
+    return MainWindow(registry, settings, editor)
 
 
 def run_gui(open_path=None) -> int:

@@ -68,7 +68,8 @@ class RosRobot:
             from rockly_desktop.robot.ros1.backend import RosGraph
             from rockly_desktop.robot.ros1.messages import MessageTypes
         except ImportError as error:
-            raise RosUnavailable(f"the ROS 1 message tools (genpy, actionlib) are not installed ({error})") from None
+            raise RosUnavailable(f"the ROS 1 message tools (genpy, actionlib) are not installed ({error})",
+                                 "no_ros_tools") from None
         self.graph = RosGraph(self.connection, MessageTypes(profile_message_folders(profile)))
         safe_backend = self.backend(Interrupt())
         for action in profile.manifest.get("safe_stop", []):  # connected now, so a stop never waits for them

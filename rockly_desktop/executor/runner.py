@@ -6,12 +6,15 @@ step, breakpoints, slow motion and stop happen; robot waits watch the same Inter
 so a stop also ends a long drive or a dialog.
 """
 import builtins
+import io
 import logging
 import reprlib
+import tokenize
 import traceback
 
-from rockly_desktop.core.errors import ProgramStopped, RobotCommandError, RobotTimeout
+from rockly_desktop.core.errors import ProgramStopped
 from rockly_desktop.executor.events import BlockEntered, OutputPrinted, RunFinished, RunPaused, RunResumed, VariablesChanged
+from rockly_desktop.executor.problems import explain, text
 
 log = logging.getLogger(__name__)
 PROGRAM_FILENAME = "<rockly program>"
@@ -65,37 +68,18 @@ class BlockHooks:
             control.interrupt.sleep(control.delay)
 
 
-def plain_message(error: BaseException) -> str:
-    """What went wrong, in words a child or a teacher can act on."""
-    if isinstance(error, RobotTimeout):
-        return f"The robot did not answer in time: {error}"
-    if isinstance(error, RobotCommandError):
-        return f"The robot could not do this: {error}"
-    if isinstance(error, ZeroDivisionError):
-        return "Dividing by zero is not possible."
-    if isinstance(error, NameError):
-        return f"Something is used before it was given a value: {error}"
-    if isinstance(error, TypeError):
-        return f"These values do not fit together: {error}"
-    if isinstance(error, (IndexError, KeyError)):
-        return f"There is no item at that position in the list: {error}"
-    if isinstance(error, ValueError):
-        return f"This value cannot be used here: {error}"
-    if isinstance(error, RecursionError):
-        return "A function calls itself too often (endless repetition)."
-    return f"{type(error).__name__}: {error}"
-
-
 class ProgramRunner:
     """Runs one program to its end and reports what happens through ``emit(event)``.
 
     ``namespace`` holds what the program may use (``robot``); ``variables`` maps the
     Blockly variable names to their Python names; ``on_end()`` (the robot's safe stop)
-    runs whenever the run ends, for any reason.
+    runs whenever the run ends, for any reason. ``language`` ('en' or 'de') is the
+    language of the messages a run reports (an error, a failed safe stop).
     """
 
-    def __init__(self, code: str, namespace: dict, control, emit, variables=None, on_end=None):
+    def __init__(self, code: str, namespace: dict, control, emit, variables=None, on_end=None, language: str = "en"):
         self._code = code
+        self.language = language
         self._control = control
         self._emit = emit
         self._variable_names = dict(variables or {})
@@ -136,9 +120,9 @@ class ProgramRunner:
         except ProgramStopped:
             result = RunFinished("stopped", self.hooks.current_block)
         except SyntaxError as error:
-            result = RunFinished("error", None, f"The program cannot be read: {error.msg}", traceback.format_exc())
+            result = RunFinished("error", None, text("unreadable", self.language, detail=error.msg), traceback.format_exc())
         except Exception as error:  # noqa: BLE001 - any error in the program ends the run with a message
-            result = RunFinished("error", self.hooks.current_block, plain_message(error), _program_traceback(error))
+            result = RunFinished("error", self.hooks.current_block, self.explain(error), _program_traceback(error))
         self._finish()
         self._emit(self.variables_event())
         self._emit(result)
@@ -151,7 +135,44 @@ class ProgramRunner:
             self._on_end()
         except Exception:  # noqa: BLE001 - the safe stop is attempted; its failure must not hide the run's end
             log.exception("the safe stop failed")
-            self._emit(OutputPrinted("Warning: the robot could not be stopped safely."))
+            self._emit(OutputPrinted(text("unsafe_stop", self.language)))
+
+    def explain(self, error: BaseException) -> str:
+        """The run's error in plain words, naming the variables of the line that failed."""
+        names = {python: display for display, python in self._variable_names.items()}
+        return explain(error, self.language, self._variables_on_failing_line(error, names), names)
+
+    def _variables_on_failing_line(self, error: BaseException, names: dict) -> list:
+        """(Blockly name, value) of the program's variables on the line of the program where ``error`` happened."""
+        frame = lineno = None
+        tb = error.__traceback__
+        while tb is not None:  # the innermost frame of the program (not of Rockly or a robot command)
+            if tb.tb_frame.f_code.co_filename == PROGRAM_FILENAME:
+                frame, lineno = tb.tb_frame, tb.tb_lineno
+            tb = tb.tb_next
+        lines = self._code.splitlines()
+        if frame is None or not 0 < lineno <= len(lines):
+            return []
+        found = {}
+        for name in _names_in(lines[lineno - 1]):
+            if name in names and names[name] not in found:
+                scope = frame.f_locals if name in frame.f_locals else frame.f_globals
+                if name in scope:
+                    found[names[name]] = scope[name]
+        return list(found.items())
+
+
+def _names_in(line: str) -> list:
+    """The names a line of Python reads or writes, in order (attributes like ``robot.drive`` left out)."""
+    names, previous = [], None
+    try:
+        for token in tokenize.generate_tokens(io.StringIO(line.strip()).readline):
+            if token.type == tokenize.NAME and previous != ".":
+                names.append(token.string)
+            previous = token.string
+    except (tokenize.TokenError, SyntaxError):  # a line of a longer statement: the names so far
+        pass
+    return names
 
 
 def _program_traceback(error: BaseException) -> str:

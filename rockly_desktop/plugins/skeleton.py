@@ -69,7 +69,7 @@ categories:
     colour: "#3d7fd6"
     blocks:
       - type: ${name}_say
-        inputs: {text: {shadow: {type: text, fields: {TEXT: "Hello!"}}}}
+        inputs: {text: {shadow: {type: text, fields: {TEXT: {en: "Hello!", de: "Hallo!"}}}}}
   - shared: logic
   - shared: loops
   - shared: math

@@ -11,7 +11,7 @@ from rockly_desktop.executor.robot_link import RosRobot, SimulatedRobot
 from rockly_desktop.robot.ros1.connection import RosConnection
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
 from rockly_desktop.ui.message_boxes import plain_message_box
-from rockly_desktop.ui.texts import tr
+from rockly_desktop.ui.texts import robot_problem, tr
 
 SIMULATOR, ROS1 = "simulator", "ros1"
 STATUS_COLOURS = {"connected": "#2e7d32", "connecting": "#f9a825", "lost": "#c62828"}
@@ -72,7 +72,9 @@ class RobotChoice(QObject):
         try:
             RosConnection.get(dialog.master_uri, dialog.host or None, timeout=1.0)
         except RocklyError as error:
-            box = plain_message_box(window, QMessageBox.Icon.Warning, tr("connect_failed", language), str(error))
+            problem, next_step = robot_problem(error, language)
+            box = plain_message_box(window, QMessageBox.Icon.Warning, tr("connect_failed", language), problem)
+            box.setInformativeText(next_step)
             box.setObjectName("connect_failed_box")
             box.exec()
             return False

@@ -15,7 +15,7 @@ from rockly_desktop.executor.events import OutputPrinted, RunFinished, RunPaused
 from rockly_desktop.executor.qt_adapter import ProgramThread
 from rockly_desktop.executor.run_setup import make_runner
 from rockly_desktop.ui.message_boxes import plain_message_box
-from rockly_desktop.ui.texts import tr
+from rockly_desktop.ui.texts import robot_problem, tr
 
 FOLLOW_MS = 33
 RUN_SWITCH_INTERVAL = 0.001  # seconds
@@ -52,9 +52,10 @@ class RunSession(QObject):
             run_code = window.editor.call_blocking("getRunCode")
             control = RunControl(run_code["breakpoints"], window.run_toolbar.delay)
             robot = window.robot()
-            thread = ProgramThread(lambda emit: make_runner(window.profile, robot, run_code, control, emit), self)
+            language = window.language  # the run's messages are in the window's language
+            thread = ProgramThread(lambda emit: make_runner(window.profile, robot, run_code, control, emit, language), self)
         except (RocklyError, RuntimeError) as error:
-            window.console.append(str(error), "error")
+            window.console.append(" ".join(part for part in robot_problem(error, window.language) if part), "error")
             self._set_state("idle")
             return False
         if step_first:

@@ -14,6 +14,7 @@ class AppSettings:
             self._store = QSettings("Rockly", "Rockly")
         else:
             self._store = QSettings(str(path), QSettings.Format.IniFormat)
+        self.language_watchers = []  # called with the new language when it changes
 
     def _get(self, key, default=None):
         value = self._store.value(key)
@@ -27,7 +28,11 @@ class AppSettings:
 
     @language.setter
     def language(self, value: str):
+        changed = value != self.language
         self._store.setValue("language", value)
+        if changed:
+            for watcher in list(self.language_watchers):
+                watcher(self.language)
 
     @property
     def profile_id(self):

@@ -2,12 +2,16 @@
 
 Each panel is a group of rows "label: value"; a row reads one field of one topic from
 the StateStore, optionally transformed (heading from a quaternion, percent, the state of
-an action goal) and formatted. The widget redraws from the store on a timer, never
-from a robot thread.
+an action goal) and formatted: numbers with the decimal point and digit grouping of the
+window's language (1,60 m in German), the rest of the format as written. Texts such as
+"Idle" are the robot's own values and are shown as they come. The widget redraws from
+the store on a timer, never from a robot thread.
 """
+import functools
 import math
+import string
 
-from PySide6.QtCore import QTimer
+from PySide6.QtCore import QLocale, QTimer
 from PySide6.QtWidgets import QFormLayout, QGroupBox, QLabel, QScrollArea, QVBoxLayout, QWidget
 
 from rockly_desktop.core.state_store import field_value
@@ -23,6 +27,28 @@ GOAL_STATES = {0: "goal_pending", 1: "goal_active", 2: "goal_preempted", 3: "goa
 def _yaw_degrees(orientation):
     x, y, z, w = (orientation.get(axis, 0.0) for axis in "xyzw")
     return math.degrees(math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)))
+
+
+class LocalizedNumbers(string.Formatter):
+    """``str.format`` whose numbers use ``language``'s decimal point and group separator."""
+
+    def __init__(self, language: str):
+        super().__init__()
+        locale = QLocale(language)
+        self._separators = str.maketrans({".": locale.decimalPoint(), ",": locale.groupSeparator()})
+
+    def format_field(self, value, format_spec):
+        """``string.Formatter`` override: a number's text with this language's separators."""
+        text = super().format_field(value, format_spec)
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            return text.translate(self._separators)
+        return text
+
+
+@functools.lru_cache(maxsize=None)
+def number_format(language: str) -> LocalizedNumbers:
+    """The formatter for ``language`` (made once)."""
+    return LocalizedNumbers(language)
 
 
 def row_text(store, row: dict, language: str) -> str:
@@ -42,8 +68,8 @@ def row_text(store, row: dict, language: str) -> str:
             value = value * 100
         elif transform == "goal_state":
             return tr(GOAL_STATES.get(value, "goal_lost"), language)
-        return row["format"].format(value) if "format" in row else str(value)
-    except (TypeError, ValueError, AttributeError):
+        return number_format(language).format(row.get("format", "{}"), value)
+    except (TypeError, ValueError, AttributeError, IndexError, KeyError):
         return str(value)
 
 

@@ -94,6 +94,22 @@ _TEXTS = {
     "connect_host": ("This computer (ROS_IP or ROS_HOSTNAME)", "Dieser Computer (ROS_IP oder ROS_HOSTNAME)"),
     "connect_host_hint": ("e.g. 192.168.1.20 (empty: automatic)", "z. B. 192.168.1.20 (leer: automatisch)"),
     "connect_failed": ("Cannot connect to the robot", "Keine Verbindung zum Roboter"),
+    "ros_no_master": ("No ROS master answers at {master}.", "Unter {master} antwortet kein ROS-Master."),
+    "ros_no_master_hint": ("Is roscore running on that computer? Is the address right?",
+                           "Läuft dort roscore? Stimmt die Adresse?"),
+    "ros_no_rospy": ("ROS 1 is not installed on this computer, so Rockly cannot reach a real robot.",
+                     "ROS 1 ist auf diesem Computer nicht installiert, deshalb erreicht Rockly keinen echten Roboter."),
+    "ros_no_rospy_hint": ("Use the built-in simulator, or ask an adult to install ROS 1 (rospy).",
+                          "Nimm den eingebauten Simulator oder bitte einen Erwachsenen, ROS 1 (rospy) zu installieren."),
+    "ros_no_ros_tools": ("The ROS 1 message tools (genpy, actionlib) are not installed on this computer.",
+                         "Die ROS-1-Nachrichtenwerkzeuge (genpy, actionlib) sind auf diesem Computer nicht installiert."),
+    "ros_no_ros_tools_hint": ("Use the built-in simulator, or ask an adult to install them.",
+                              "Nimm den eingebauten Simulator oder bitte einen Erwachsenen, sie zu installieren."),
+    "ros_other_master": ("Rockly is already connected to the ROS master at {current}, so it cannot use {wanted}.",
+                         "Rockly ist schon mit dem ROS-Master unter {current} verbunden und kann deshalb "
+                         "{wanted} nicht nutzen."),
+    "ros_other_master_hint": ("Restart Rockly to use another ROS master.",
+                              "Starte Rockly neu, um einen anderen ROS-Master zu nutzen."),
     "ros_connected": ("● ROS connected", "● ROS verbunden"),
     "ros_connecting": ("● ROS connecting…", "● ROS verbindet…"),
     "ros_lost": ("● ROS connection lost", "● ROS-Verbindung verloren"),
@@ -192,3 +208,17 @@ def tr(key: str, language: str, **values) -> str:
     english, german = _TEXTS[key]
     text = german if language == "de" else english
     return text.format(**values) if values else text
+
+
+def robot_problem(error, language: str) -> tuple:
+    """(what went wrong, what to try next) for an error reaching the robot, in ``language``.
+
+    An error that names its ``reason`` (like RosUnavailable's 'no_master') is said with
+    the texts ``ros_REASON`` and ``ros_REASON_hint``; any other is shown as it is, with no hint.
+    """
+    key = f"ros_{getattr(error, 'reason', None)}"
+    if key not in _TEXTS:
+        return str(error), ""
+    values = getattr(error, "values", {})
+    hint = f"{key}_hint"
+    return tr(key, language, **values), tr(hint, language, **values) if hint in _TEXTS else ""

@@ -237,6 +237,15 @@ def test_german_texts(make_view):
     assert differing(english, grab(view)) == 0
 
 
+def test_numbers_on_the_map_use_the_languages_decimal_mark():
+    """As the Robot state panels write them: 1,60 in German, 1.60 in English."""
+    motion_label, texts, decimal = sim_view.map_painter._motion_label, sim_view.text.TEXTS, sim_view.text.decimal
+    snapshot = {"motion": "moving", "linear": -0.3}
+    assert motion_label(snapshot, texts["de"], "de") == ("moving", "fährt  0,30 m/s")
+    assert motion_label(snapshot, texts["en"], "en") == ("moving", "driving  0.30 m/s")
+    assert (decimal(1.6, 2, "de"), decimal(1.6, 2, "en"), decimal(12.25, 1, "de")) == ("1,60", "1.60", "12,2")
+
+
 def test_battery_levels_and_sos_notice_change_the_panel(make_view):
     view = make_view(battery=80)
     full = grab(view)

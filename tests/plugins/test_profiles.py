@@ -515,6 +515,48 @@ def test_editor_config_in_german_has_german_block_texts_and_python_templates(hob
     assert config["toolbox"]["contents"][0]["name"] == "Fahren"
 
 
+def toolbox_shadow_texts(config, category_name):
+    """The TEXT of every text shadow in one category of an editor config's toolbox."""
+    category = next(item for item in config["toolbox"]["contents"] if item["name"] == category_name)
+    return [connection["shadow"]["fields"]["TEXT"] for entry in category.get("contents", [])
+            for connection in entry.get("inputs", {}).values() if connection["shadow"]["type"] == "text"]
+
+
+def test_toolbox_default_texts_are_in_the_editor_language(hobbit):
+    assert toolbox_shadow_texts(hobbit.editor_config("en"), "Tablet") == [
+        "Hello!", "Ready?", "Shall we play?", "What is your name?"]
+    assert toolbox_shadow_texts(hobbit.editor_config("de"), "Tablet") == [
+        "Hallo!", "Bereit?", "Wollen wir spielen?", "Wie heißt du?"]
+    assert toolbox_shadow_texts(hobbit.editor_config("de"), "Text") == ["Hallo"]  # a shared category too
+    assert toolbox_shadow_texts(hobbit.editor_config("fr"), "Tablet")[0] == "Hello!"
+
+
+def test_every_default_text_in_hobbits_own_categories_has_german(hobbit):
+    """Words a child reads are translated; ROS names (Expert, ROS) are the same in every language."""
+    checked = 0
+    for category in hobbit.toolbox_categories:
+        if localize(category["name"], "en") in ("Expert", "ROS") or "contents" not in category:
+            continue
+        for entry in category["contents"]:
+            for name, connection in entry.get("inputs", {}).items():
+                if connection["shadow"]["type"] == "text":
+                    value = connection["shadow"]["fields"]["TEXT"]
+                    assert is_localized(value) and value.get("de"), (entry["type"], name)
+                    checked += 1
+    assert checked >= 4
+
+
+def test_any_toolbox_field_value_may_be_written_per_language(profile):
+    entry = {"type": "hobbit_show_info",
+             "inputs": {"text": {"shadow": {"type": "text", "fields": {"TEXT": {"en": "Hi", "de": "Hallo"}}}}}}
+    profile.edit("toolbox.yaml", lambda data: data["categories"][0]["blocks"].append(entry))
+    loaded = load_profile(profile.root, SHARED_TOOLBOXES)
+    drive = {language: loaded.editor_config(language)["toolbox"]["contents"][0]["contents"][-1]
+             for language in ("en", "de")}
+    assert drive["en"]["inputs"]["text"]["shadow"]["fields"] == {"TEXT": "Hi"}
+    assert drive["de"]["inputs"]["text"]["shadow"]["fields"] == {"TEXT": "Hallo"}
+
+
 def test_editor_config_in_an_unknown_language_falls_back_to_english(hobbit):
     config = hobbit.editor_config("fr")
     move = next(block for block in config["blocks"] if block["definition"]["type"] == "hobbit_move")

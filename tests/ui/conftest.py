@@ -4,6 +4,8 @@ from PySide6.QtCore import QCoreApplication, QEvent
 from PySide6.QtWidgets import QMessageBox
 
 from rockly_desktop.app import build_main_window
+from rockly_desktop.ui.qt_language import use_language
+from rockly_desktop.ui.settings import AppSettings
 
 
 SIMULATOR_SPEED = 25.0  # simulated time runs this much faster in tests
@@ -48,6 +50,22 @@ def driver(qtbot, tmp_path):
 @pytest.fixture
 def window(driver):
     return driver.open_window()
+
+
+@pytest.fixture
+def german_window(driver):
+    """A window started in German (as remembered from an earlier start)."""
+    settings = AppSettings(driver.settings_path)
+    settings.language = "de"
+    settings.sync()
+    return driver.open_window()
+
+
+@pytest.fixture(autouse=True)
+def qt_in_english_afterwards():
+    """Qt's own texts are process-wide: a test that switched them to German leaves them English."""
+    yield
+    use_language("en")
 
 
 @pytest.fixture

@@ -54,7 +54,16 @@ def master_answers(master_uri: str) -> float:
 
 
 class RosUnavailable(RocklyError):
-    """rospy is not installed here, or the master cannot be reached."""
+    """rospy is not installed here, or the master cannot be reached.
+
+    ``reason`` names the case for a window that says it in its own language ('no_master',
+    'no_rospy', 'other_master', 'no_ros_tools'); ``values`` are what the message names.
+    """
+
+    def __init__(self, message: str, reason: str = None, **values):
+        super().__init__(message)
+        self.reason = reason
+        self.values = values
 
 
 class RosConnection:
@@ -82,19 +91,20 @@ class RosConnection:
                 cls._instance = connection
             elif master_uri and master_uri != cls._instance.master_uri:
                 raise RosUnavailable(f"this Rockly is already connected to {cls._instance.master_uri}; "
-                                     f"restart it to use {master_uri}")
+                                     f"restart it to use {master_uri}", "other_master",
+                                     current=cls._instance.master_uri, wanted=master_uri)
             return cls._instance
 
     def _start(self, timeout: float):
         try:
             import rospy
         except ImportError as error:
-            raise RosUnavailable(f"ROS 1 (rospy) is not installed on this computer ({error})") from None
+            raise RosUnavailable(f"ROS 1 (rospy) is not installed on this computer ({error})", "no_rospy") from None
         os.environ["ROS_MASTER_URI"] = self.master_uri
         if self.host:
             os.environ["ROS_IP" if self.host.replace(".", "").isdigit() else "ROS_HOSTNAME"] = self.host
         if not self._wait_for_master(timeout):
-            raise RosUnavailable(f"no ROS master answers at {self.master_uri}")
+            raise RosUnavailable(f"no ROS master answers at {self.master_uri}", "no_master", master=self.master_uri)
         rospy.init_node(NODE_NAME, anonymous=True, disable_signals=True)
         self.status = CONNECTED
         self._watchdog = threading.Thread(target=self._watch, name="rockly-ros-watchdog", daemon=True)

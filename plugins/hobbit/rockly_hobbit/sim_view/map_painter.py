@@ -11,6 +11,7 @@ from .layout import map_transform
 from .palette import GOAL, INK, INK_SOFT, MAP_BORDER, MOTION_COLOURS, TRAIL
 from .robot import paint_robot
 from .snapshot import num, point, trail
+from .text import decimal
 
 TRAIL_AGES = 10   # the trail is drawn in this many steps from faint (old) to strong (new)
 
@@ -119,13 +120,13 @@ def _paint_flag(p, base, scale, phase):
     p.drawEllipse(top, max(2.5, 0.03 * scale), max(2.5, 0.03 * scale))
 
 
-def _motion_label(snapshot, texts):
+def _motion_label(snapshot, texts, language):
     """"driving  0.30 m/s", "turning  29°/s", "standing"..."""
     motion = str(snapshot.get("motion") or "idle")
     label = texts["motion"].get(motion, motion)
     linear, angular = num(snapshot.get("linear")), num(snapshot.get("angular"))
     if abs(linear) > 0.005:
-        label += f"  {abs(linear):.2f} m/s"
+        label += f"  {decimal(abs(linear), 2, language)} m/s"
     elif abs(angular) > 0.01:
         label += f"  {abs(math.degrees(angular)):.0f}°/s"
     return motion, label
@@ -136,7 +137,7 @@ def _paint_chips(p, scene, rect, u):
     font, small = scene.font(12 * u, True), scene.font(11 * u)
     fm, fm_small = QFontMetricsF(font), QFontMetricsF(small)
     pad = max(4.0, 6.0 * u)
-    motion, label = _motion_label(scene.snapshot, scene.texts)
+    motion, label = _motion_label(scene.snapshot, scene.texts, scene.language)
     dot = fm.height() * 0.55
     chip_h = fm.height() + pad
     chip_w = min(rect.width() - 2 * pad, fm.horizontalAdvance(label) + dot + 3 * pad + 4)
@@ -152,11 +153,13 @@ def _paint_chips(p, scene, rect, u):
                fm.elidedText(label, Qt.TextElideMode.ElideRight, text_rect.width()))
     # where exactly, for the grown-ups: the latest snapshot's pose, not the eased one
     target = scene.target
-    where = f"x {target['x']:.2f}  y {target['y']:.2f} m  θ {math.degrees(wrap_pi(target['theta'])):.0f}°"
+    language = scene.language
+    where = (f"x {decimal(target['x'], 2, language)}  y {decimal(target['y'], 2, language)} m  "
+             f"θ {math.degrees(wrap_pi(target['theta'])):.0f}°")
     where_w = fm_small.horizontalAdvance(where) + 2 * pad
     if box.right() + pad + where_w <= rect.right() - pad:
         _text_chip(p, QRectF(rect.right() - pad - where_w, rect.bottom() - pad - chip_h, where_w, chip_h), where, small)
-    clock = f"t {num(scene.snapshot.get('time')):.1f} s"
+    clock = f"t {decimal(num(scene.snapshot.get('time')), 1, language)} s"
     clock_w = fm_small.horizontalAdvance(clock) + 2 * pad
     if rect.width() > 3 * clock_w:
         _text_chip(p, QRectF(rect.right() - pad - clock_w, rect.top() + pad, clock_w, fm_small.height() + pad),

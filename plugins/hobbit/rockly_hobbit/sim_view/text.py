@@ -27,6 +27,12 @@ TEXTS = {
 }
 
 
+def decimal(value, places, language):
+    """``value`` with ``places`` decimals, with a decimal comma in German (as the state panels write it)."""
+    text = f"{value:.{places}f}"
+    return text.replace(".", ",") if language == "de" else text
+
+
 def sized_font(base, px, bold=False):
     """``base`` at ``px`` pixels (never below MIN_TEXT_PX)."""
     font = QFont(base)
