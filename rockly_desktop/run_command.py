@@ -88,7 +88,7 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
 
     previous = signal.signal(signal.SIGINT, lambda *_: control.request_stop())
     try:
-        result = make_runner(program.profile, robot, run_code, control, report).run()
+        result = make_runner(program.profile, robot, run_code, control, report, language).run()
     finally:
         signal.signal(signal.SIGINT, previous)
         robot.shutdown()

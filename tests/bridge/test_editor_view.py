@@ -76,6 +76,8 @@ def test_loading_a_program_is_not_a_user_edit(qtbot, editor):
 def test_undo_and_redo(qtbot, editor):
     add_block_as_user(qtbot, editor, "hobbit_sos")
     qtbot.waitUntil(lambda: block_types_on_page(qtbot, editor) == ["hobbit_sos"])
+    # Blockly records the creation for undo when its event queue fires, a moment later.
+    qtbot.waitUntil(lambda: run_js(qtbot, editor, "Blockly.getMainWorkspace().getUndoStack().length") > 0)
     editor.undo()
     qtbot.waitUntil(lambda: block_types_on_page(qtbot, editor) == [])
     editor.redo()

@@ -1,43 +1,10 @@
 """Main-window fixtures: a real window with the real editor page, settings in a temp file."""
 import pytest
-from PySide6.QtCore import QCoreApplication, QEvent
 from PySide6.QtWidgets import QMessageBox
+from window_tools import WindowDriver
 
-from rockly_desktop.app import build_main_window
 from rockly_desktop.ui.qt_language import use_language
 from rockly_desktop.ui.settings import AppSettings
-
-
-SIMULATOR_SPEED = 25.0  # simulated time runs this much faster in tests
-
-
-class WindowDriver:
-    """Opens Rockly windows for a test and waits for their editor."""
-
-    def __init__(self, qtbot, settings_path, extra_profile_dirs=()):
-        self.qtbot = qtbot
-        self.settings_path = settings_path
-        self.extra_profile_dirs = extra_profile_dirs
-        self.windows = []
-
-    def close_all(self):
-        """Delete every window now (a page left for interpreter exit crashes QtWebEngine)."""
-        for window in self.windows:
-            window.files.modified = False
-            window.close()
-            assert window.runs.thread is None, "a program was still running after the window closed"
-            window.deleteLater()
-        QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
-
-    def open_window(self, open_path=None, simulator_speed=SIMULATOR_SPEED):
-        """A shown main window whose editor is ready (and whose start-up file is open)."""
-        window = build_main_window(self.settings_path, self.extra_profile_dirs)
-        window.simulator_speed = simulator_speed
-        self.windows.append(window)
-        window.show()
-        with self.qtbot.waitSignal(window.editor.sig_ready, timeout=30000):
-            window.start(open_path)
-        return window
 
 
 @pytest.fixture
@@ -81,13 +48,3 @@ def answer_prompts(monkeypatch):
         return asked
 
     return set_answer
-
-
-def error_boxes(window) -> list:
-    """Texts of the error message boxes the window shows."""
-    return [box.text() for box in window.findChildren(QMessageBox) if box.isVisible()]
-
-
-def state(window) -> dict:
-    """The editor's current workspace and Python."""
-    return window.editor.call_blocking("getState")

@@ -1,7 +1,7 @@
 """The main window as a person meets it: toolbox, Code dock, status, languages, memory, profiles."""
 import shutil
 
-from conftest import WindowDriver, error_boxes, state
+from window_tools import WindowDriver, error_boxes, state
 from page_tools import toolbox_names
 from program_builder import block, number, rockly_document
 from PySide6.QtCore import QCoreApplication

@@ -5,7 +5,7 @@ import stat
 import threading
 
 import pytest
-from conftest import error_boxes, state
+from window_tools import error_boxes, state
 from page_tools import add_block_as_user
 from program_builder import block, number, rockly_document, stack, text
 from PySide6.QtWidgets import QMessageBox

@@ -1,6 +1,6 @@
 """Running programs in the window on the built-in simulator: run, step, breakpoints, stop, errors."""
 import pytest
-from conftest import state
+from window_tools import state
 from page_tools import run_js
 from program_builder import block, number, stack, text, workspace
 from PySide6.QtCore import Qt

@@ -43,7 +43,7 @@ def test_health_is_green_on_the_simulator_with_details(qtbot, window):
     qtbot.waitUntil(lambda: window.health.level == "green", timeout=5000)
     assert [item.name for item in window.health.items] == [
         "simulator", "/odom", "/battery_state", "/joint_states", "/MMUI", "hobbit_arm", "move_base"]
-    assert "Robot: all good" in window.health.text()
+    assert "Connection: all good" in window.health.text()
 
 
 def test_a_field_double_clicked_in_the_topic_monitor_is_plotted(qtbot, window):
