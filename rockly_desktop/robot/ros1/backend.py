@@ -135,20 +135,20 @@ class _Topic:
 class Ros1GoalHandle(GoalHandle):
     """A goal sent through an actionlib SimpleActionClient."""
 
-    def __init__(self, backend, client, action):
+    def __init__(self, backend, client, action, finished: threading.Event):
+        """``finished`` is set by the client's done callback (the goal reached a terminal state)."""
         self._backend = backend
         self._client = client
         self._action = action
+        self._finished = finished
 
     def done(self) -> bool:
-        """True once the goal reached a terminal state (the client's simple state is DONE)."""
-        from actionlib import SimpleGoalState
-
-        return self._client.simple_state == SimpleGoalState.DONE
+        """True once the goal reached a terminal state."""
+        return self._finished.is_set()
 
     def wait(self, timeout: float) -> GoalOutcome:
-        """Wait for the goal's end (interruptible); its status and result."""
-        if not self._backend.wait_until(self.done, timeout):
+        """Wait for the goal's end (interruptible, waking the moment it ends); its status and result."""
+        if not self._backend.wait_for_event(self._finished, timeout):
             raise RobotTimeout(f"the action '{self._action}' did not finish within {timeout:g} s")
         result = self._client.get_result()
         return GoalOutcome(_ACTIONLIB_STATUS[self._client.get_state()],
@@ -183,7 +183,7 @@ class Ros1Backend(RobotBackend):
                 return False
             self.interrupt.nap(POLL_SECONDS)
 
-    def _wait_for_event(self, event: threading.Event, timeout: float) -> bool:
+    def wait_for_event(self, event: threading.Event, timeout: float) -> bool:
         """Like wait_until for an Event, but wakes the moment it is set (no polling delay)."""
         deadline = time.monotonic() + timeout
         while True:
@@ -243,7 +243,7 @@ class Ros1Backend(RobotBackend):
         received, arrived = [], threading.Event()
         unsubscribe = self.subscribe(topic, msg_type, lambda message: (received.append(message), arrived.set()))
         try:
-            if not self._wait_for_event(arrived, timeout):
+            if not self.wait_for_event(arrived, timeout):
                 raise RobotTimeout(f"no message arrived on the topic '{topic}' within {timeout:g} s")
         finally:
             unsubscribe()
@@ -275,7 +275,7 @@ class Ros1Backend(RobotBackend):
 
         self.graph.service_calls.submit(call)
         try:
-            answered = self._wait_for_event(done, timeout)
+            answered = self.wait_for_event(done, timeout)
         finally:
             if not done.is_set():  # the abandoned call still owns the connection: the next call needs its own
                 self.graph.forget_service(name)
@@ -299,8 +299,10 @@ class Ros1Backend(RobotBackend):
             raise RobotCommandError(f"there is no action server '{action}'")
         goal_class = self.graph.types.action_classes(action_type)[1]
         callback = (lambda message: feedback(from_message(message))) if feedback else None
-        client.send_goal(to_message(goal_class, goal), feedback_cb=callback)
-        return Ros1GoalHandle(self, client, action)
+        finished = threading.Event()
+        client.send_goal(to_message(goal_class, goal), done_cb=lambda _state, _result: finished.set(),
+                         feedback_cb=callback)
+        return Ros1GoalHandle(self, client, action, finished)
 
     def cancel_all_goals(self, action: str) -> None:
         """Cancel every goal on the action server: an empty GoalID on ``<action>/cancel``."""
