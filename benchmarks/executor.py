@@ -160,7 +160,7 @@ def p99(values):
 
 
 def gui_responsiveness(tmp_settings):
-    from PySide6.QtCore import QEventLoop, QTimer
+    from PySide6.QtCore import QCoreApplication, QEvent, QEventLoop, QTimer
 
     from rockly_desktop.app import build_main_window, create_application
 
@@ -188,6 +188,8 @@ def gui_responsiveness(tmp_settings):
     window.files.modified = False
     window.close()
     window.deleteLater()
+    # Delete the window (and its web page) now: a page left for interpreter exit crashes QtWebEngine.
+    QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
 
 
 def main():
