@@ -246,7 +246,9 @@ def test_saving_onto_a_folder_fails_cleanly(tmp_path):
     assert files_in(tmp_path) == ["prog.rockly"]
 
 
-def test_temp_file_is_made_next_to_the_target_so_the_rename_is_atomic(tmp_path, monkeypatch):
+@pytest.fixture
+def temp_file_folders(monkeypatch) -> list:
+    """The folders the program module makes its temporary files in, as it makes them."""
     folders = []
     real_mkstemp = tempfile.mkstemp
 
@@ -255,8 +257,12 @@ def test_temp_file_is_made_next_to_the_target_so_the_rename_is_atomic(tmp_path, 
         return real_mkstemp(*args, **kwargs)
 
     monkeypatch.setattr(program_module.tempfile, "mkstemp", spy)
+    return folders
+
+
+def test_temp_file_is_made_next_to_the_target_so_the_rename_is_atomic(tmp_path, temp_file_folders):
     save_program(tmp_path / "prog.rockly", Program("hobbit", {}))
-    assert folders == [tmp_path]
+    assert temp_file_folders == [tmp_path]
 
 
 def test_existing_file_keeps_its_permission_bits(old_program):
@@ -303,25 +309,17 @@ def test_saving_through_a_symlink_replaces_its_target_and_keeps_the_link(tmp_pat
     assert files_in(link_folder) == ["link.rockly"] and files_in(real_folder) == ["real.rockly"]
 
 
-def test_a_chain_of_links_is_followed_to_the_file_and_the_temp_file_is_made_beside_it(tmp_path, monkeypatch):
+def test_a_chain_of_links_is_followed_to_the_file_and_the_temp_file_is_made_beside_it(tmp_path, temp_file_folders):
     target = tmp_path / "a" / "real.py"
     target.parent.mkdir()
     target.write_text("old\n")
     first, second = tmp_path / "first.py", tmp_path / "second.py"
     second.symlink_to(target)
     first.symlink_to(second)
-    folders = []
-    real_mkstemp = tempfile.mkstemp
-
-    def spy(*args, **kwargs):
-        folders.append(Path(kwargs["dir"]))
-        return real_mkstemp(*args, **kwargs)
-
-    monkeypatch.setattr(program_module.tempfile, "mkstemp", spy)
     write_text_atomically(first, "new\n")
     assert target.read_text() == "new\n"
     assert first.is_symlink() and second.is_symlink()
-    assert folders == [target.parent]
+    assert temp_file_folders == [target.parent]
 
 
 def test_a_dangling_link_gets_its_target_made(tmp_path):

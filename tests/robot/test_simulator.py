@@ -8,19 +8,13 @@ import threading
 import time
 
 import pytest
+from waiting import eventually
 
 from rockly_desktop.robot.sim_world import SimWorld
 from rockly_desktop.robot.simulator import RobotSimulator, checked_speed
 from rockly_desktop.sdk import RobotSimulator as SdkRobotSimulator
 
 WAIT = 10.0  # s, generous: how long a condition may take to come true
-
-
-def eventually(condition, timeout=WAIT):
-    deadline = time.monotonic() + timeout
-    while not condition():
-        assert time.monotonic() < deadline, "the condition did not come true"
-        time.sleep(0.005)
 
 
 def lock_is_free(lock):

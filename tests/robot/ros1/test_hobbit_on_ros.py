@@ -4,6 +4,7 @@ import threading
 import time
 
 import pytest
+from waiting import eventually
 
 from rockly_desktop.core.errors import ProgramStopped
 from rockly_desktop.executor.control import RunControl
@@ -26,13 +27,6 @@ def record(ros_robot, topic, msg_type, pick):
     publishers = dict(rosgraph.Master("/test").getSystemState()[0]).get(topic, [])
     eventually(lambda: subscriber.get_num_connections() >= len(publishers), timeout=3)
     return seen, unsubscribe
-
-
-def eventually(predicate, timeout=10.0):
-    deadline = time.monotonic() + timeout
-    while not predicate():
-        assert time.monotonic() < deadline, "condition not met in time"
-        time.sleep(0.01)
 
 
 def pose(ros_robot):

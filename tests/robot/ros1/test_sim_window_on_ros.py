@@ -6,11 +6,11 @@ headless HOBBIT (tests/ros_fixtures.py) serving /MMUI, and a second HOBBIT there
 take over its topics and service.
 """
 import signal
-import time
 
 import pytest
 from ros_helpers import RosMaster, ros_environment
 from sim_window_harness import RosCaller, SimWindowProcess
+from waiting import eventually
 
 
 @pytest.fixture(scope="module")
@@ -44,13 +44,6 @@ def started(own_master, env):
     yield start
     for process in processes:
         process.stop()
-
-
-def eventually(predicate, timeout=10.0):
-    deadline = time.monotonic() + timeout
-    while not predicate():
-        assert time.monotonic() < deadline, "condition not met in time"
-        time.sleep(0.05)
 
 
 def node_registrations(master_uri):

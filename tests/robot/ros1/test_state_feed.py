@@ -1,21 +1,14 @@
 """The state store fed from a real ROS graph: topics of a separate node, their types, rates."""
-import time
+from waiting import eventually
 
 from rockly_desktop.robot.interrupt import Interrupt
 
 
-def wait_for(predicate, timeout=10.0):
-    deadline = time.monotonic() + timeout
-    while not predicate():
-        assert time.monotonic() < deadline, "condition not met in time"
-        time.sleep(0.02)
-
-
 def test_topics_of_a_separate_node_are_listed_with_type_publishers_and_rate(ros_robot):
     feed = ros_robot.follow_graph()
-    wait_for(lambda: any(topic == "/odom" for topic, _, _ in feed.graph_topics()))
+    eventually(lambda: any(topic == "/odom" for topic, _, _ in feed.graph_topics()))
     assert ("/odom", "nav_msgs/Odometry", 1) in feed.graph_topics()
-    wait_for(lambda: any(info.topic == "/odom" and info.count > 60 for info in ros_robot.state.topics()))
+    eventually(lambda: any(info.topic == "/odom" and info.count > 60 for info in ros_robot.state.topics()))
     odom = next(info for info in ros_robot.state.topics() if info.topic == "/odom")
     assert odom.msg_type == "nav_msgs/Odometry"
     # Real rates and ages depend on the machine's load; the arithmetic is checked with a fake clock in tests/core.
@@ -26,6 +19,6 @@ def test_panel_fields_come_from_the_robot(ros_robot, hobbit):
     ros_robot.follow_graph()
     commands = hobbit.load_object("api")(ros_robot.backend(Interrupt()))
     commands.show_emotion("CONCERNED")
-    wait_for(lambda: ros_robot.state.value("/head/emo", "data") == "CONCERNED")
-    wait_for(lambda: ros_robot.state.value("/battery_state", "percentage") is not None)
+    eventually(lambda: ros_robot.state.value("/head/emo", "data") == "CONCERNED")
+    eventually(lambda: ros_robot.state.value("/battery_state", "percentage") is not None)
     assert 0 < ros_robot.state.value("/battery_state", "percentage") <= 1
