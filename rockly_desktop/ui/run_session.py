@@ -50,6 +50,10 @@ class RunSession(QObject):
         self._set_state("starting")  # asking the page for the code runs a nested event loop
         try:
             run_code = window.editor.call_blocking("getRunCode")
+            if not run_code["code"].strip():
+                window.console.append(tr("run_empty", window.language), "info")
+                self._set_state("idle")
+                return False
             control = RunControl(run_code["breakpoints"], window.run_toolbar.delay)
             robot = window.robot()
             language = window.language  # the run's messages are in the window's language

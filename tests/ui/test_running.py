@@ -190,3 +190,9 @@ def test_pause_halts_a_drive_at_once_and_continue_drives_the_rest(qtbot, driver)
         window.runs.resume()
     final = window.robot().snapshot()
     assert final["x"] == pytest.approx(1.0, abs=0.02) and final["emotion"] == "HAPPY"
+
+
+def test_run_on_an_empty_workspace_says_what_to_do(qtbot, window):
+    assert window.runs.run() is False
+    assert window.runs.state == "idle"
+    assert window.console.lines()[-1].startswith("There is nothing to run yet: drag blocks")
