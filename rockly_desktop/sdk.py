@@ -10,11 +10,11 @@ from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
 from rockly_desktop.core.state_store import field_value
 from rockly_desktop.robot.commands import RobotCommands
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
-from rockly_desktop.robot.simulator import RobotSimulator
+from rockly_desktop.robot.simulator import RobotSimulator, twist_velocity
 from rockly_desktop.robot.snapshot_values import as_number, as_point, as_points, with_defaults
 
 __all__ = [
     "GoalHandle", "GoalOutcome", "GoalStatus", "RobotBackend", "RobotCommandError",
     "RobotCommands", "RobotSimulator", "RobotTimeout", "as_number", "as_point", "as_points",
-    "field_value", "with_defaults",
+    "field_value", "twist_velocity", "with_defaults",
 ]

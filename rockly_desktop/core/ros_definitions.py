@@ -18,6 +18,7 @@ import os
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
+from functools import cached_property
 from pathlib import Path
 
 from rockly_desktop.core.errors import RobotCommandError
@@ -194,8 +195,10 @@ class DefinitionCatalog:
         if not fits:
             raise RobotCommandError(f"the field {path} needs {_EXPECTED[check]}, not {value!r}")
 
+    @cached_property
     def editor_catalog(self) -> dict:
-        """For the editor page: ``{messages|services|actions: {type: [[path, check, start], ...]}}``."""
+        """For the editor page: ``{messages|services|actions: {type: [[path, check, start], ...]}}``
+        (read once: the definition files are not expected to change while Rockly runs)."""
         def table(kind, names):
             return {name: [[field.path, field.check, field.start] for field in self.fields(name, kind)]
                     for name in names}

@@ -65,7 +65,7 @@ class Profile:
             "profile": self.id,
             "blocks": [spec.editor_config(language) for spec in self.blocks + self.shared_blocks],
             "toolbox": toolbox_json(self.toolbox_categories, language),
-            "types": self.ros_types.editor_catalog(),
+            "types": self.ros_types.editor_catalog,
         }
 
     def load_object(self, field_name: str):

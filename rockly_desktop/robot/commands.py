@@ -1,4 +1,5 @@
 """The base of every profile's robot commands (the object bound as ``robot`` in programs)."""
+import json
 import math
 
 from rockly_desktop.core.errors import RobotCommandError
@@ -37,3 +38,19 @@ class RobotCommands:
         if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
             raise RobotCommandError(f"{what} must be a number, not {value!r}")
         return float(value)
+
+    @staticmethod
+    def mapping(value, what: str) -> dict:
+        """``value`` as a dict of message fields: a mapping, JSON text of one (blocks have no
+        dictionary block), or empty for None or ''; anything else raises a RobotCommandError."""
+        if value is None or value == "":
+            return {}
+        if isinstance(value, dict):
+            return dict(value)
+        try:
+            parsed = json.loads(value) if isinstance(value, str) else None
+        except json.JSONDecodeError as error:
+            raise RobotCommandError(f"the {what} is not valid JSON ({error.msg})") from None
+        if not isinstance(parsed, dict):
+            raise RobotCommandError(f"the {what} must be a mapping like {{\"data\": 1}}, not {value!r}")
+        return parsed

@@ -6,7 +6,6 @@ text, since blocks have no dictionary block. With a DefinitionCatalog, messages,
 and goals are checked against their type before they leave, so a wrong value is named
 the same way on the simulator as on a real robot.
 """
-import json
 import logging
 import time
 from collections import deque
@@ -24,20 +23,6 @@ LEVELS = {"info": logging.INFO, "warn": logging.WARNING, "error": logging.ERROR}
 GOAL_TIMEOUT = 300.0
 
 
-def _as_dict(value, what: str) -> dict:
-    if value is None or value == "":
-        return {}
-    if isinstance(value, dict):
-        return value
-    try:
-        parsed = json.loads(value) if isinstance(value, str) else None
-    except json.JSONDecodeError as error:
-        raise RobotCommandError(f"the {what} is not valid JSON ({error.msg})") from None
-    if not isinstance(parsed, dict):
-        raise RobotCommandError(f"the {what} must be a mapping like {{\"data\": 1}}, not {value!r}")
-    return parsed
-
-
 class RosCommands(RobotCommands):
     """Publish, listen, call services, send goals, parameters and logging on any robot."""
 
@@ -48,7 +33,7 @@ class RosCommands(RobotCommands):
         self.types = types
 
     def _checked(self, data, type_name, kind, what):
-        data = _as_dict(data, what)
+        data = self.mapping(data, what)
         if self.types is not None:
             self.types.check(type_name, kind, data)
         return data

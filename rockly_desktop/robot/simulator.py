@@ -36,6 +36,17 @@ def checked_speed(speed) -> float:
     return float(speed)
 
 
+def twist_velocity(message):
+    """``(linear.x, angular.z)`` of a ``geometry_msgs/Twist`` dict (missing parts are 0), or
+    None when the message is no Twist or holds a value that is not a finite number."""
+    try:
+        linear = float((message.get("linear") or {}).get("x", 0.0))
+        angular = float((message.get("angular") or {}).get("z", 0.0))
+    except (AttributeError, TypeError, ValueError):
+        return None
+    return (linear, angular) if math.isfinite(linear) and math.isfinite(angular) else None
+
+
 class RobotSimulator:
     """A simulated robot in ``world``: lock, ordered outbox, clock thread and life cycle.
 

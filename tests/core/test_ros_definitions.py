@@ -49,7 +49,7 @@ def test_a_service_offers_its_request_and_an_action_its_goal(folders):
 
 
 def test_the_editor_catalog_offers_the_profiles_packages_and_the_common_ones(folders):
-    catalog = DefinitionCatalog([folders[0]], installed_dirs=[folders[1]]).editor_catalog()
+    catalog = DefinitionCatalog([folders[0]], installed_dirs=[folders[1]]).editor_catalog
     assert sorted(catalog["messages"]) == ["robo_msgs/Cart", "robo_msgs/Wheel", "std_msgs/Bool", "std_msgs/Header"]
     assert catalog["messages"]["std_msgs/Bool"] == [["data", "Boolean", False]]
     assert catalog["services"] == {"robo_msgs/Park": [["spot", "String", ""], ["tries", "Number", 0]]}
@@ -69,7 +69,7 @@ def test_the_installed_common_packages_are_found(monkeypatch):
     assert scan["ranges"] == "Array" and scan["angle_min"] == "Number" and scan["header.frame_id"] == "String"
     assert [f.path for f in catalog.fields("geometry_msgs/Twist")] == [
         "linear.x", "linear.y", "linear.z", "angular.x", "angular.y", "angular.z"]
-    assert {"std_srvs/Trigger", "std_srvs/SetBool"} <= set(catalog.editor_catalog()["services"])
+    assert {"std_srvs/Trigger", "std_srvs/SetBool"} <= set(catalog.editor_catalog["services"])
     pose = {f.path: f.start for f in catalog.fields("geometry_msgs/PoseStamped")}
     assert pose["pose.orientation.w"] == 1 and pose["pose.orientation.z"] == 0   # a valid "no rotation"
 

@@ -11,12 +11,12 @@ import copy
 import importlib.util
 import math
 import re
-import threading
 import time
 
 import pytest
 from background import Background
 from profile_copies import HOBBIT_DIR, SHARED_TOOLBOXES
+from sim_tools import HoldWatcher, eventually_in, later, pose
 
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.executor.control import RunControl
@@ -78,25 +78,6 @@ class AnsweringTablet:
         self.notices.append((kind, text))
 
 
-class HoldWatcher:
-    """``control.on_hold`` as the runner sets it, noting the robot's state when a paused command holds."""
-
-    def __init__(self, control, sim):
-        self._control = control
-        self._sim = sim
-        self.held = threading.Event()
-        self.snapshots = []
-
-    def __call__(self):
-        self.snapshots.append(self._sim.snapshot())
-        self.held.set()
-        self._control.wait_for_release()
-
-    def wait_until_held(self):
-        assert self.held.wait(10), "the command never held for the pause"
-        return self.snapshots[0]
-
-
 @pytest.fixture
 def world():
     return SimWorld()
@@ -138,22 +119,6 @@ def hold(control, sim):
     watcher = HoldWatcher(control, sim)
     control.on_hold = watcher
     return watcher
-
-
-def eventually(world, predicate, timeout=10.0):
-    """Wait until ``predicate()`` holds, checking again at every message (the simulator publishes at 30 Hz)."""
-    assert world.wait_for(predicate, timeout), "the simulated HOBBIT never got there"
-
-
-def later(world, sim, sim_seconds=1.0):
-    """The snapshot after ``sim_seconds`` more of simulated time."""
-    start = sim.snapshot()["time"]
-    eventually(world, lambda: sim.snapshot()["time"] >= start + sim_seconds)
-    return sim.snapshot()
-
-
-def pose(snapshot):
-    return snapshot["x"], snapshot["y"], snapshot["theta"]
 
 
 def record(world, *topics):
@@ -360,7 +325,7 @@ def test_arm_joints_are_sent_as_one_vector_of_numbers(backend, hobbit):
 
 def test_arm_command_the_robot_does_not_finish_raises_naming_it(world, sim, hobbit):
     moving = Background(lambda: hobbit.move_arm("floor"))
-    eventually(world, lambda: sim.snapshot()["arm_progress"] > 0)
+    eventually_in(world, lambda: sim.snapshot()["arm_progress"] > 0)
     sim.safe_stop()  # what ends a run: it cancels the arm goal
     error = moving.join().error
     assert isinstance(error, RobotCommandError), error
@@ -462,7 +427,7 @@ def test_wait_for_a_negative_time_returns_at_once(hobbit):
 def test_pause_halts_a_drive_part_way_and_continue_drives_the_rest(world, sim, control, hold, hobbit):
     commands = record_data(world, "/DiscreteMotionCmd")
     drive = Background(lambda: hobbit.drive(1.0))
-    eventually(world, lambda: sim.snapshot()["x"] > 0.1)
+    eventually_in(world, lambda: sim.snapshot()["x"] > 0.1)
     control.request_pause()
 
     held = hold.wait_until_held()
@@ -483,7 +448,7 @@ def test_pause_halts_a_drive_part_way_and_continue_drives_the_rest(world, sim, c
 def test_pause_halts_a_turn_past_half_way_round_and_continue_turns_the_rest(world, sim, control, hold, hobbit):
     commands = record_data(world, "/DiscreteMotionCmd")
     turn = Background(lambda: hobbit.turn(270, "left"))
-    eventually(world, lambda: sim.snapshot()["theta"] < 0)  # turning left from 0, so past 180 degrees
+    eventually_in(world, lambda: sim.snapshot()["theta"] < 0)  # turning left from 0, so past 180 degrees
     control.request_pause()
 
     held = hold.wait_until_held()
@@ -502,7 +467,7 @@ def test_pause_halts_a_turn_past_half_way_round_and_continue_turns_the_rest(worl
 
 def test_pause_of_a_backward_drive_continues_backward(world, sim, control, hold, hobbit):
     drive = Background(lambda: hobbit.drive(1.0, "backward"))
-    eventually(world, lambda: sim.snapshot()["x"] < -0.1)
+    eventually_in(world, lambda: sim.snapshot()["x"] < -0.1)
     control.request_pause()
     held = hold.wait_until_held()
     assert -1.0 + POSITION < held["x"] < -0.1
@@ -515,7 +480,7 @@ def test_stop_while_a_drive_holds_ends_the_program_and_the_base_stays_where_it_h
                                                                                      hobbit):
     commands = record_data(world, "/DiscreteMotionCmd")
     drive = Background(lambda: hobbit.drive(1.0))
-    eventually(world, lambda: sim.snapshot()["x"] > 0.1)
+    eventually_in(world, lambda: sim.snapshot()["x"] > 0.1)
     control.request_pause()
     held = hold.wait_until_held()
 

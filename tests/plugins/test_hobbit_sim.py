@@ -12,6 +12,7 @@ import time
 import pytest
 from background import Background
 from profile_copies import HOBBIT_DIR, SHARED_TOOLBOXES
+from sim_tools import eventually_in, later, pose
 
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError, RobotTimeout
 from rockly_desktop.plugins.profile import load_profile
@@ -109,22 +110,6 @@ def backend(world, interrupt, sim):
 @pytest.fixture
 def hobbit(backend):
     return Hobbit(backend)
-
-
-def eventually(world, predicate, timeout=10.0):
-    """Wait until ``predicate()`` holds, checking again at every message (the simulator publishes at 30 Hz)."""
-    assert world.wait_for(predicate, timeout), "the simulated HOBBIT never got there"
-
-
-def later(world, sim, sim_seconds=1.0):
-    """The snapshot after ``sim_seconds`` more of simulated time."""
-    start = sim.snapshot()["time"]
-    eventually(world, lambda: sim.snapshot()["time"] >= start + sim_seconds)
-    return sim.snapshot()
-
-
-def pose(snapshot):
-    return snapshot["x"], snapshot["y"], snapshot["theta"]
 
 
 def record(world, topic):
@@ -258,7 +243,7 @@ def test_even_a_zero_motion_reports_idle_a_whole_control_cycle_after_the_command
     world.subscribe("/DiscreteMotionState", lambda message: seen.append(message["data"]))
     world.subscribe("/odom", lambda message: seen.append("tick"))
     world.publish("/DiscreteMotionCmd", "std_msgs/String", {"data": "Move 0"})
-    eventually(world, lambda: "Idle" in seen)
+    eventually_in(world, lambda: "Idle" in seen)
     after_command = seen[seen.index("Moving"):]
     assert after_command[:2] == ["Moving", "tick"], after_command
     assert after_command.index("Idle") == 2
@@ -284,7 +269,7 @@ def test_drive_goes_the_way_the_robot_faces(sim, hobbit):
 def test_odometry_reports_the_pose(world, sim, hobbit):
     hobbit.turn(90, "left")
     hobbit.drive(1)
-    eventually(world, lambda: world.latest("/odom")["pose"]["pose"]["position"]["y"] > 0.98)
+    eventually_in(world, lambda: world.latest("/odom")["pose"]["pose"]["position"]["y"] > 0.98)
     odom = world.latest("/odom")["pose"]["pose"]
     assert odom["position"]["x"] == pytest.approx(0.0, abs=POSITION)
     assert odom["orientation"]["z"] == pytest.approx(math.sin(math.radians(45)), abs=0.01)
@@ -306,7 +291,7 @@ def test_malformed_discrete_motion_is_ignored_with_a_warning(world, sim, caplog)
 
 def test_velocity_command_drives_straight_and_shows_in_odometry(world, sim):
     world.publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.3}})
-    eventually(world, lambda: sim.snapshot()["x"] > 0.5)
+    eventually_in(world, lambda: sim.snapshot()["x"] > 0.5)
     state = sim.snapshot()
     assert (state["motion"], state["linear"], state["y"], state["theta"]) == ("moving", 0.3, 0.0, 0.0)
     assert world.latest("/odom")["twist"]["twist"]["linear"]["x"] == 0.3
@@ -314,14 +299,14 @@ def test_velocity_command_drives_straight_and_shows_in_odometry(world, sim):
 
 def test_velocity_command_turns_on_the_spot(world, sim):
     world.publish("/cmd_vel", "geometry_msgs/Twist", {"angular": {"z": 0.5}})
-    eventually(world, lambda: sim.snapshot()["theta"] > 0.5)
+    eventually_in(world, lambda: sim.snapshot()["theta"] > 0.5)
     state = sim.snapshot()
     assert (state["motion"], state["x"], state["y"], state["angular"]) == ("turning", 0.0, 0.0, 0.5)
 
 
 def test_velocity_command_follows_a_unicycle_arc(world, sim):
     world.publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.3}, "angular": {"z": 0.3}})
-    eventually(world, lambda: sim.snapshot()["theta"] > 1.0)
+    eventually_in(world, lambda: sim.snapshot()["theta"] > 1.0)
     x, y, theta = pose(sim.snapshot())
     assert math.hypot(x, y - 1.0) == pytest.approx(1.0, abs=1e-9)  # radius v / w around (0, 1)
     assert math.atan2(y - 1.0, x) == pytest.approx(theta - math.pi / 2, abs=1e-9)
@@ -329,7 +314,7 @@ def test_velocity_command_follows_a_unicycle_arc(world, sim):
 
 def test_stop_halts_a_velocity_command(world, sim, hobbit):
     world.publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.3}})
-    eventually(world, lambda: sim.snapshot()["x"] > 0.1)
+    eventually_in(world, lambda: sim.snapshot()["x"] > 0.1)
     hobbit.stop()
     stopped = sim.snapshot()
     assert (stopped["motion"], stopped["linear"]) == ("idle", 0.0)
@@ -338,7 +323,7 @@ def test_stop_halts_a_velocity_command(world, sim, hobbit):
 
 def test_stop_from_another_program_ends_a_drive_early(world, sim, hobbit):
     drive = Background(lambda: hobbit.drive(5))
-    eventually(world, lambda: sim.snapshot()["x"] > 0.2)
+    eventually_in(world, lambda: sim.snapshot()["x"] > 0.2)
     Hobbit(SimBackend(world, Interrupt())).stop()
     assert drive.join().error is None
     stopped = sim.snapshot()
@@ -388,7 +373,7 @@ def test_navigation_feedback_is_the_base_position(sim, backend):
 
 def test_cancelled_navigation_is_preempted_and_the_base_stops(world, sim, backend):
     handle = backend.send_goal(*NAV, nav_goal(10, 0, 0))
-    eventually(world, lambda: sim.snapshot()["x"] > 0.2)
+    eventually_in(world, lambda: sim.snapshot()["x"] > 0.2)
     handle.cancel()
     assert handle.wait(5).status is GoalStatus.PREEMPTED
     stopped = sim.snapshot()
@@ -405,8 +390,8 @@ def test_goal_without_a_valid_orientation_is_aborted(sim, backend):
 
 def test_simple_goal_topic_drives_there(world, sim):
     world.publish("/move_base_simple/goal", "geometry_msgs/PoseStamped", nav_goal(0.5, -0.5, 180)["target_pose"])
-    eventually(world, lambda: sim.snapshot()["motion"] == "navigating")
-    eventually(world, lambda: sim.snapshot()["motion"] == "idle")
+    eventually_in(world, lambda: sim.snapshot()["motion"] == "navigating")
+    eventually_in(world, lambda: sim.snapshot()["motion"] == "idle")
     state = sim.snapshot()
     assert (state["x"], state["y"]) == (pytest.approx(0.5, abs=POSITION), pytest.approx(-0.5, abs=POSITION))
     assert abs(math.degrees(state["theta"])) == pytest.approx(180.0, abs=ANGLE)
@@ -414,7 +399,7 @@ def test_simple_goal_topic_drives_there(world, sim):
 
 def test_a_newer_base_command_preempts_navigation(world, sim, backend):
     handle = backend.send_goal(*NAV, nav_goal(10, 0, 0))
-    eventually(world, lambda: sim.snapshot()["x"] > 0.2)
+    eventually_in(world, lambda: sim.snapshot()["x"] > 0.2)
     world.publish("/cmd_vel", "geometry_msgs/Twist", {})
     assert handle.wait(5).status is GoalStatus.PREEMPTED
     assert sim.snapshot()["motion"] == "idle"
@@ -537,7 +522,7 @@ def test_arm_goal_the_server_cannot_do_is_aborted(sim, backend, goal):
 
 def test_cancelled_arm_goal_is_preempted_and_the_arm_stays_where_it_was(world, sim, backend):
     handle = backend.send_goal(*ARM, arm_goal("MoveToCandle"))
-    eventually(world, lambda: sim.snapshot()["arm_progress"] > 0.2)
+    eventually_in(world, lambda: sim.snapshot()["arm_progress"] > 0.2)
     handle.cancel()
     outcome = handle.wait(5)
     assert (outcome.status, outcome.result) == (GoalStatus.PREEMPTED, {"result": {"data": False}})
@@ -548,7 +533,7 @@ def test_cancelled_arm_goal_is_preempted_and_the_arm_stays_where_it_was(world, s
 
 def test_cancelled_gripper_goal_leaves_the_gripper_as_it_was(world, sim, backend):
     handle = backend.send_goal(*ARM, arm_goal("OpenGripper"))
-    eventually(world, lambda: sim.snapshot()["arm_progress"] > 0.0)
+    eventually_in(world, lambda: sim.snapshot()["arm_progress"] > 0.0)
     handle.cancel()
     assert handle.wait(5).status is GoalStatus.PREEMPTED
     assert later(world, sim)["gripper"] == "closed"
@@ -717,7 +702,7 @@ def test_stop_request_during_a_wait(sim, hobbit, interrupt):
 def test_profile_safe_stop_from_its_own_backend_stops_arm_and_navigation(world, sim, backend):
     arm = backend.send_goal(*ARM, arm_goal("MoveToPreGraspFloor"))
     navigation = backend.send_goal(*NAV, nav_goal(10, 0, 0))
-    eventually(world, lambda: sim.snapshot()["x"] > 0.1 and sim.snapshot()["arm_progress"] > 0.1)
+    eventually_in(world, lambda: sim.snapshot()["x"] > 0.1 and sim.snapshot()["arm_progress"] > 0.1)
 
     actions = load_profile(HOBBIT_DIR, SHARED_TOOLBOXES).manifest["safe_stop"]
     assert run_safe_stop(actions, SimBackend(world, Interrupt())) == []
@@ -736,7 +721,7 @@ def test_profile_safe_stop_from_its_own_backend_stops_arm_and_navigation(world, 
 def test_battery_drains_slowly_while_standing(world, sim):
     state = later(world, sim, 6.0)
     assert state["battery"] == pytest.approx(100.0 - state["time"] / 60, abs=1e-9)
-    eventually(world, lambda: world.latest("/battery_state")["percentage"] < 0.999)
+    eventually_in(world, lambda: world.latest("/battery_state")["percentage"] < 0.999)
 
 
 def test_battery_drains_faster_while_moving(sim, hobbit):

@@ -7,12 +7,12 @@ ends up is read from the simulator's snapshot. Every wait is on a condition, nev
 """
 import math
 import sys
-import threading
 import time
 
 import pytest
 from background import Background
 from profile_copies import REPO, SHARED_TOOLBOXES
+from sim_tools import HoldWatcher, eventually_in, later, pose
 
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.executor.control import RunControl
@@ -32,24 +32,6 @@ POSITION = 0.02    # m
 ANGLE = 2.0        # degrees
 STOP_BOUND = 0.1   # s from a stop request to ProgramStopped in the program's thread
 EMPTY_ROOM = (-0.5, -1.5, 3.5, 1.5)
-
-
-class HoldWatcher:
-    """``control.on_hold`` as the runner sets it, noting the robot's state when a paused command holds."""
-
-    def __init__(self, control, sim):
-        self._control, self._sim = control, sim
-        self.held = threading.Event()
-        self.snapshots = []
-
-    def __call__(self):
-        self.snapshots.append(self._sim.snapshot())
-        self.held.set()
-        self._control.wait_for_release()
-
-    def wait_until_held(self):
-        assert self.held.wait(20), "the command never held for the pause"
-        return self.snapshots[0]
 
 
 @pytest.fixture
@@ -96,22 +78,6 @@ def hold(control, sim):
     watcher = HoldWatcher(control, sim)
     control.on_hold = watcher
     return watcher
-
-
-def eventually(world, predicate, timeout=20.0):
-    """Wait until ``predicate()`` holds, checking again at every message (the simulator publishes at 30 Hz)."""
-    assert world.wait_for(predicate, timeout), "the simulated TurtleBot never got there"
-
-
-def later(world, sim, sim_seconds=1.0):
-    """The snapshot after ``sim_seconds`` more of simulated time."""
-    start = sim.snapshot()["time"]
-    eventually(world, lambda: sim.snapshot()["time"] >= start + sim_seconds)
-    return sim.snapshot()
-
-
-def pose(snapshot):
-    return snapshot["x"], snapshot["y"], snapshot["theta"]
 
 
 def heading(snapshot):
@@ -201,7 +167,7 @@ def test_drive_for_backward_and_for_no_time(world, sim, robot):
 
 def test_stop_halts_a_robot_driving_on_its_own(world, sim, robot):
     world.publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.1}, "angular": {"z": 0.3}})
-    eventually(world, lambda: sim.snapshot()["linear"] == 0.1)
+    eventually_in(world, lambda: sim.snapshot()["linear"] == 0.1)
     robot.stop()
     halted = later(world, sim, 0.1)
     assert (halted["linear"], halted["angular"]) == (0.0, 0.0)
@@ -352,7 +318,7 @@ def test_commands_without_a_robot_time_out_naming_the_topic(monkeypatch):
 
 def test_stop_during_a_drive_ends_it_quickly_and_the_safe_stop_leaves_the_robot_still(world, sim, control, robot):
     drive = Background(lambda: robot.drive(1.5))
-    eventually(world, lambda: sim.snapshot()["x"] > 0.2)
+    eventually_in(world, lambda: sim.snapshot()["x"] > 0.2)
     assert sim.snapshot()["linear"] > 0
     asked = time.monotonic()
     control.request_stop()
@@ -374,7 +340,7 @@ def test_safe_stop_is_a_zero_velocity(world, sim):
 
 def test_pause_halts_a_drive_part_way_and_continue_drives_the_rest(world, sim, control, hold, robot):
     drive = Background(lambda: robot.drive(1.0))
-    eventually(world, lambda: sim.snapshot()["x"] > 0.1)
+    eventually_in(world, lambda: sim.snapshot()["x"] > 0.1)
     control.request_pause()
 
     held = hold.wait_until_held()
@@ -393,7 +359,7 @@ def test_pause_halts_a_drive_part_way_and_continue_drives_the_rest(world, sim, c
 
 def test_pause_halts_a_turn_past_half_way_round_and_continue_turns_the_rest(world, sim, control, hold, robot):
     turn = Background(lambda: robot.turn(270, "left"))
-    eventually(world, lambda: sim.snapshot()["theta"] < -0.2)   # turning left from 0, so past 180 degrees
+    eventually_in(world, lambda: sim.snapshot()["theta"] < -0.2)   # turning left from 0, so past 180 degrees
     control.request_pause()
     held = hold.wait_until_held()
     assert held["angular"] == 0.0
@@ -406,7 +372,7 @@ def test_pause_halts_a_turn_past_half_way_round_and_continue_turns_the_rest(worl
 
 def test_pause_holds_the_clock_of_drive_for(world, sim, control, hold, robot):
     drive = Background(lambda: robot.drive_for(0.1, 6))
-    eventually(world, lambda: sim.snapshot()["x"] > 0.1)
+    eventually_in(world, lambda: sim.snapshot()["x"] > 0.1)
     control.request_pause()
     held = hold.wait_until_held()
     assert held["linear"] == 0.0 and 0.1 < held["x"] < 0.6 - POSITION
@@ -418,7 +384,7 @@ def test_pause_holds_the_clock_of_drive_for(world, sim, control, hold, robot):
 
 def test_stop_while_a_drive_holds_ends_the_program_and_the_robot_stays(world, sim, control, hold, robot):
     drive = Background(lambda: robot.drive(1.0))
-    eventually(world, lambda: sim.snapshot()["x"] > 0.1)
+    eventually_in(world, lambda: sim.snapshot()["x"] > 0.1)
     control.request_pause()
     held = hold.wait_until_held()
     twists = record_twists(world)

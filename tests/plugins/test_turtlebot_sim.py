@@ -11,6 +11,7 @@ import threading
 
 import pytest
 from profile_copies import REPO, SHARED_TOOLBOXES
+from sim_tools import eventually_in, later
 
 from rockly_desktop.plugins.profile import load_profile
 from rockly_desktop.robot.sim_world import SimWorld
@@ -45,16 +46,6 @@ def make_sim(world):
         sim.shutdown()
 
 
-def eventually(world, predicate, timeout=20.0):
-    assert world.wait_for(predicate, timeout), "the simulated TurtleBot never got there"
-
-
-def later(world, sim, sim_seconds=1.0):
-    start = sim.snapshot()["time"]
-    eventually(world, lambda: sim.snapshot()["time"] >= start + sim_seconds)
-    return sim.snapshot()
-
-
 def drive(world, linear=0.0, angular=0.0):
     world.publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": linear}, "angular": {"z": angular}})
 
@@ -63,7 +54,7 @@ def next_message(world, topic):
     seen = []
     unsubscribe = world.subscribe(topic, seen.append)
     try:
-        eventually(world, lambda: seen)
+        eventually_in(world, lambda: seen)
     finally:
         unsubscribe()
     return seen[0]
@@ -151,7 +142,7 @@ def test_the_scan_sees_a_box_placed_ahead_at_its_distance(world, make_sim):
 def test_the_scan_follows_the_robot(world, make_sim):
     sim = make_sim(boxes=[(1.25, -0.2, 1.6, 0.2)])
     drive(world, 0.2)
-    eventually(world, lambda: sim.snapshot()["x"] > 0.5)
+    eventually_in(world, lambda: sim.snapshot()["x"] > 0.5)
     drive(world)
     stopped = later(world, sim, 0.2)
     assert stopped["scan"][0] == pytest.approx(1.25 - stopped["x"], abs=1e-6)
@@ -191,7 +182,7 @@ def test_velocity_commands_move_it_as_a_unicycle(world, make_sim):
 def test_velocities_are_limited_to_the_turtlebots(world, make_sim):
     sim = make_sim()
     drive(world, 1.0, -9.0)
-    eventually(world, lambda: sim.snapshot()["linear"] != 0)
+    eventually_in(world, lambda: sim.snapshot()["linear"] != 0)
     assert (sim.snapshot()["linear"], sim.snapshot()["angular"]) == (0.22, -2.84)
 
 
@@ -206,7 +197,7 @@ def test_a_bad_velocity_is_ignored(world, make_sim):
 def test_driving_into_a_wall_stops_the_robot_touching_it(world, make_sim, speed):
     sim = make_sim(boxes=[], speed=speed)
     drive(world, 0.22)
-    eventually(world, lambda: sim.snapshot()["bumped"], timeout=60)
+    eventually_in(world, lambda: sim.snapshot()["bumped"], timeout=60)
     stopped = later(world, sim, 0.5)
     assert stopped["x"] == pytest.approx(3.5 - RADIUS, abs=0.001)
     assert (stopped["linear"], stopped["angular"], stopped["bumps"]) == (0.0, 0.0, 1)
@@ -216,7 +207,7 @@ def test_driving_into_a_wall_stops_the_robot_touching_it(world, make_sim, speed)
 def test_driving_into_a_box_at_an_angle_stops_touching_it(world, make_sim):
     sim = make_sim(boxes=[(1.0, 0.3, 1.4, 0.7)], start=(0.0, 0.0, math.radians(20)))
     drive(world, 0.2)
-    eventually(world, lambda: sim.snapshot()["bumped"])
+    eventually_in(world, lambda: sim.snapshot()["bumped"])
     stopped = later(world, sim, 0.3)
     assert stopped["linear"] == 0.0
     gap = max(1.0 - stopped["x"], 0.0, stopped["x"] - 1.4), max(0.3 - stopped["y"], 0.0, stopped["y"] - 0.7)
@@ -226,18 +217,18 @@ def test_driving_into_a_box_at_an_angle_stops_touching_it(world, make_sim):
 def test_a_robot_at_a_wall_may_turn_and_drive_away(world, make_sim):
     sim = make_sim(boxes=[])
     drive(world, 0.22)
-    eventually(world, lambda: sim.snapshot()["bumped"])
+    eventually_in(world, lambda: sim.snapshot()["bumped"])
     drive(world, 0.0, 1.0)
-    eventually(world, lambda: sim.snapshot()["theta"] > 2.0)   # turning while touching is fine
+    eventually_in(world, lambda: sim.snapshot()["theta"] > 2.0)   # turning while touching is fine
     drive(world, 0.1)
-    eventually(world, lambda: sim.snapshot()["x"] < 3.2)
+    eventually_in(world, lambda: sim.snapshot()["x"] < 3.2)
     assert sim.snapshot()["bumps"] == 1 and sim.snapshot()["bumped"] is False
 
 
 def test_pushing_on_against_a_wall_is_the_same_bump(world, make_sim):
     sim = make_sim(boxes=[])
     drive(world, 0.22)
-    eventually(world, lambda: sim.snapshot()["bumped"])
+    eventually_in(world, lambda: sim.snapshot()["bumped"])
     for _ in range(3):
         drive(world, 0.1)
         later(world, sim, 0.2)
@@ -250,7 +241,7 @@ def test_pushing_on_against_a_wall_is_the_same_bump(world, make_sim):
 def test_odometry_says_where_the_robot_is_and_how_it_moves(world, make_sim):
     sim = make_sim()
     drive(world, 0.1, 0.2)
-    eventually(world, lambda: sim.snapshot()["x"] > 0.1)
+    eventually_in(world, lambda: sim.snapshot()["x"] > 0.1)
     odometry = next_message(world, "/odom")
     snapshot = sim.snapshot()
     position = odometry["pose"]["pose"]["position"]
@@ -267,7 +258,7 @@ def test_odometry_says_where_the_robot_is_and_how_it_moves(world, make_sim):
 def test_the_trail_follows_the_robot(world, make_sim):
     sim = make_sim()
     drive(world, 0.2)
-    eventually(world, lambda: sim.snapshot()["x"] > 0.5)
+    eventually_in(world, lambda: sim.snapshot()["x"] > 0.5)
     trail = sim.snapshot()["trail"]
     assert trail[0] == (0.0, 0.0)
     assert len(trail) >= 5 and all(b[0] > a[0] for a, b in zip(trail, trail[1:]))
@@ -280,7 +271,7 @@ def test_the_battery_drains_slowly_and_faster_while_driving(world, make_sim):
     standing = later(world, sim, 60)
     idle_drain = (start["battery"] - standing["battery"]) / (standing["time"] - start["time"])
     drive(world, 0.2)
-    eventually(world, lambda: sim.snapshot()["linear"] > 0)
+    eventually_in(world, lambda: sim.snapshot()["linear"] > 0)
     moving_start = sim.snapshot()
     moving = later(world, sim, 60)
     busy_drain = (moving_start["battery"] - moving["battery"]) / (moving["time"] - moving_start["time"])
@@ -298,7 +289,7 @@ def test_all_three_streams_arrive_every_tick(world, make_sim):
     for topic in counts:
         world.subscribe(topic, lambda _message, topic=topic: counts.__setitem__(topic, counts[topic] + 1))
     make_sim()
-    eventually(world, lambda: counts["/odom"] >= 10)
+    eventually_in(world, lambda: counts["/odom"] >= 10)
     assert abs(counts["/scan"] - counts["/odom"]) <= 1 and abs(counts["/battery_state"] - counts["/odom"]) <= 1
     assert sorted(topic for topic, _type in world.topics()) == ["/battery_state", "/odom", "/scan"]
 

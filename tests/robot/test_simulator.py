@@ -11,7 +11,7 @@ import pytest
 from waiting import eventually
 
 from rockly_desktop.robot.sim_world import SimWorld
-from rockly_desktop.robot.simulator import RobotSimulator, checked_speed
+from rockly_desktop.robot.simulator import RobotSimulator, checked_speed, twist_velocity
 from rockly_desktop.sdk import RobotSimulator as SdkRobotSimulator
 
 WAIT = 10.0  # s, generous: how long a condition may take to come true
@@ -259,3 +259,16 @@ def test_a_flush_with_nothing_queued_publishes_nothing(world):
     sim = RobotSimulator(world)
     sim.flush()
     assert world.topics() == []
+
+
+@pytest.mark.parametrize("message, velocity", [
+    ({"linear": {"x": 0.2}, "angular": {"z": -1}}, (0.2, -1.0)),
+    ({}, (0.0, 0.0)),
+    ({"linear": None}, (0.0, 0.0)),
+    ({"linear": {"x": "fast"}}, None),
+    ({"angular": {"z": float("nan")}}, None),
+    ({"linear": 3}, None),
+    ("stop", None),
+])
+def test_a_twist_gives_its_velocity_or_none(message, velocity):
+    assert twist_velocity(message) == velocity

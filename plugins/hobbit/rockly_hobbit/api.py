@@ -11,7 +11,6 @@ They read the same whether generated from blocks or written by hand::
 Every command waits until the robot has done it (a drive, an arm motion, a question on
 the tablet), except ``show_emotion``, ``look`` and ``show_info``, which return at once.
 """
-import json
 import math
 
 from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotCommands, RobotTimeout, field_value
@@ -229,7 +228,7 @@ class Hobbit(RobotCommands):
     def call_service(self, name, service_type, parameters=None, with_parameters=True, timeout=DIALOG_TIMEOUT):
         """Call any service by name and type; ``parameters`` are the request's fields (a mapping
         or JSON text), sent only ``with_parameters``; returns the response dict."""
-        request = _request_fields(parameters) if with_parameters else {}
+        request = self.mapping(parameters, "service parameters") if with_parameters else {}
         return self.backend.call_service(str(name), str(service_type), request, timeout)
 
     # --- helpers ------------------------------------------------------------------------
@@ -304,16 +303,3 @@ class Hobbit(RobotCommands):
         self.backend.call_service(MMUI_SERVICE, MMUI_TYPE, {"sessionID": "0", "requestText": "", "params": params}, DIALOG_TIMEOUT)
 
 
-def _request_fields(parameters) -> dict:
-    """A service request's fields from a mapping or JSON text (blocks have no dictionary block)."""
-    if parameters is None or parameters == "":
-        return {}
-    if isinstance(parameters, dict):
-        return dict(parameters)
-    try:
-        fields = json.loads(parameters) if isinstance(parameters, str) else None
-    except json.JSONDecodeError as error:
-        raise RobotCommandError(f"the service parameters are not valid JSON ({error.msg})") from None
-    if not isinstance(fields, dict):
-        raise RobotCommandError(f"the service parameters must be a mapping like {{\"data\": true}}, not {parameters!r}")
-    return fields

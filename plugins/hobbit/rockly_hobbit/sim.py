@@ -11,7 +11,7 @@ import math
 from collections import deque
 from dataclasses import dataclass
 
-from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotSimulator
+from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotSimulator, twist_velocity
 
 log = logging.getLogger(__name__)
 
@@ -368,15 +368,11 @@ class SimHobbit(RobotSimulator):
         self.flush()
 
     def _on_velocity(self, message):
-        try:
-            linear = float((message.get("linear") or {}).get("x", 0.0))
-            angular = float((message.get("angular") or {}).get("z", 0.0))
-        except (AttributeError, TypeError, ValueError):
-            linear = angular = math.nan
-        if not (math.isfinite(linear) and math.isfinite(angular)):
+        velocity = twist_velocity(message)
+        if velocity is None:
             log.warning("simulated HOBBIT: ignored a /cmd_vel that is not a Twist: %r", message)
             return
-        self._command_base(_Velocity(linear, angular))
+        self._command_base(_Velocity(*velocity))
 
     def _on_discrete_motion(self, message):
         words = str(message.get("data", "")).split()

@@ -17,7 +17,7 @@ import logging
 import math
 from collections import deque
 
-from rockly_desktop.sdk import RobotSimulator
+from rockly_desktop.sdk import RobotSimulator, twist_velocity
 
 from .arena import BOXES, ROOM, Arena
 
@@ -147,13 +147,10 @@ class SimTurtleBot(RobotSimulator):
     # --- /cmd_vel ---------------------------------------------------------------------
 
     def _on_velocity(self, message):
-        try:
-            linear = float((message.get("linear") or {}).get("x", 0.0))
-            angular = float((message.get("angular") or {}).get("z", 0.0))
-        except (AttributeError, TypeError, ValueError):
-            linear = angular = math.nan
-        if not (math.isfinite(linear) and math.isfinite(angular)):
+        velocity = twist_velocity(message)
+        if velocity is None:
             log.warning("simulated TurtleBot: ignored a /cmd_vel that is not a Twist: %r", message)
             return
+        linear, angular = velocity
         with self.lock:
             self._command = (_clamp(linear, MAX_LINEAR), _clamp(angular, MAX_ANGULAR))
