@@ -8,7 +8,7 @@ import os
 
 from setuptools import setup
 
-DATA_FOLDERS = ("resources", "toolboxes", "plugins")
+DATA_FOLDERS = ("resources", "toolboxes", "profiles")
 
 
 def data_files():

@@ -197,7 +197,7 @@ def main():
 
     from rockly_desktop.app import create_application
     from rockly_desktop.bridge.headless import HeadlessEditor
-    from rockly_desktop.plugins.registry import ProfileRegistry
+    from rockly_desktop.profiles.registry import ProfileRegistry
 
     create_application()
     hobbit = ProfileRegistry.discover().get("hobbit")

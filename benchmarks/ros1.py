@@ -73,7 +73,7 @@ def main():
     home = Path(tempfile.mkdtemp(prefix="rockly-bench-ros-"))
     master = RosMaster(home).start()
     os.environ.update(ros_environment(master.uri, home))
-    echo = subprocess.Popen(["/usr/bin/python3", "-c", ECHO_NODE, str(REPO), str(REPO / "plugins" / "hobbit" / "msg")],
+    echo = subprocess.Popen(["/usr/bin/python3", "-c", ECHO_NODE, str(REPO), str(REPO / "profiles" / "hobbit" / "msg")],
                             env=ros_environment(master.uri, home), stdout=subprocess.PIPE, text=True)
     assert echo.stdout.readline().startswith("ready")
     try:
@@ -88,7 +88,7 @@ def run_all(master):
     from std_msgs.msg import Float64
     from std_srvs.srv import Trigger
 
-    from rockly_desktop.plugins.registry import ProfileRegistry
+    from rockly_desktop.profiles.registry import ProfileRegistry
     from rockly_desktop.executor.robot_link import RosRobot
     from rockly_desktop.robot.interrupt import Interrupt
 

@@ -104,7 +104,7 @@ def main():
     try:
         from rockly_desktop.app import create_application
         from rockly_desktop.executor.robot_link import RosRobot
-        from rockly_desktop.plugins.registry import ProfileRegistry
+        from rockly_desktop.profiles.registry import ProfileRegistry
         from rockly_desktop.ui.plot_panel import PlotPanel
         from rockly_desktop.ui.topic_monitor import TopicMonitor
 

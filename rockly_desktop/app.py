@@ -60,7 +60,7 @@ def build_main_window(settings_path=None, extra_profile_dirs=()):
     from rockly_desktop.bridge.editor_view import EditorView
 
     editor = EditorView()  # Chromium loads the page while Python reads profiles and builds the window
-    from rockly_desktop.plugins.registry import ProfileRegistry
+    from rockly_desktop.profiles.registry import ProfileRegistry
     from rockly_desktop.ui.main_window import MainWindow
     from rockly_desktop.ui.qt_language import use_language
     from rockly_desktop.ui.settings import AppSettings
@@ -100,8 +100,8 @@ def generate_headless(program_path, language: str = "en"):
         os.environ["QT_QPA_PLATFORM"] = "offscreen"  # no window: works over ssh and in CI
     from rockly_desktop.bridge.headless import HeadlessEditor, UnknownBlocks
     from rockly_desktop.core.errors import RocklyError
-    from rockly_desktop.plugins.opening import read_program_to_open, unknown_blocks_error
-    from rockly_desktop.plugins.registry import ProfileRegistry
+    from rockly_desktop.profiles.opening import read_program_to_open, unknown_blocks_error
+    from rockly_desktop.profiles.registry import ProfileRegistry
 
     create_application()
     registry = ProfileRegistry.discover()

@@ -1,10 +1,11 @@
 """The ``rockly`` command: the window, and headless tools for profiles and programs.
 
     rockly [PROGRAM]                    open the editor (optionally with a program)
-    rockly plugins list                 show installed robot profiles and broken ones
-    rockly plugins validate PATH        check one profile folder
-    rockly plugins new NAME [--dir DIR] create a working skeleton profile to start from
-    rockly plugins reference            print the profile.yaml reference (Markdown)
+    rockly profiles list                show installed robot profiles and broken ones
+    rockly profiles validate PATH       check one profile folder
+    rockly profiles new NAME [--dir DIR] create a working skeleton profile to start from
+    rockly profiles reference           print the profile.yaml reference (Markdown)
+    (``rockly plugins ...`` is the older name of ``rockly profiles ...`` and still works)
     rockly export PROGRAM -o OUT.py     write the Python generated from a program (-o -: to standard output)
     rockly run PROGRAM [--answer A]...  run a program on the simulator, without a window
     rockly sim PROFILE --ros            the profile's simulated robot as a ROS 1 node, in a small window
@@ -17,7 +18,7 @@ from pathlib import Path
 
 from rockly_desktop import __version__
 
-SUBCOMMANDS = ("plugins", "export", "run", "sim")
+SUBCOMMANDS = ("profiles", "plugins", "export", "run", "sim")
 
 
 def _tool_parser() -> argparse.ArgumentParser:
@@ -25,15 +26,15 @@ def _tool_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"rockly {__version__}")
     commands = parser.add_subparsers(dest="command", required=True)
 
-    plugins = commands.add_parser("plugins", help="robot profiles")
-    plugin_commands = plugins.add_subparsers(dest="plugin_command", required=True)
-    plugin_commands.add_parser("list", help="list installed robot profiles")
-    validate = plugin_commands.add_parser("validate", help="check a robot profile folder")
+    profiles = commands.add_parser("profiles", aliases=["plugins"], help="robot profiles")
+    profile_commands = profiles.add_subparsers(dest="profile_command", required=True)
+    profile_commands.add_parser("list", help="list installed robot profiles")
+    validate = profile_commands.add_parser("validate", help="check a robot profile folder")
     validate.add_argument("path", type=Path)
-    new = plugin_commands.add_parser("new", help="create a working skeleton robot profile")
+    new = profile_commands.add_parser("new", help="create a working skeleton robot profile")
     new.add_argument("name", help="the profile id: lower-case letters, digits and _, e.g. my_robot")
     new.add_argument("--dir", type=Path, help="create it in DIR/NAME (default: your profile folder)")
-    plugin_commands.add_parser("reference", help="print the profile.yaml reference (Markdown)")
+    profile_commands.add_parser("reference", help="print the profile.yaml reference (Markdown)")
 
     export = commands.add_parser("export", help="write the Python generated from a program")
     export.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
@@ -48,7 +49,7 @@ def _tool_parser() -> argparse.ArgumentParser:
     run.add_argument("--speed", type=float, default=1.0, help="simulated time runs this many times faster")
 
     sim = commands.add_parser("sim", help="run a profile's simulated robot as a ROS 1 node, in a small window")
-    sim.add_argument("profile", help="the robot profile id (see rockly plugins list)")
+    sim.add_argument("profile", help="the robot profile id (see rockly profiles list)")
     sim.add_argument("--ros", action="store_true", required=True, help="serve the robot's ROS interface")
     sim.add_argument("--master", help="ROS master URI (default: $ROS_MASTER_URI)")
     sim.add_argument("--answer", action="append", default=[],
@@ -62,15 +63,15 @@ def _tool_parser() -> argparse.ArgumentParser:
 
 def _gui_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="rockly", description="Program ROS robots with blocks.",
-                                     epilog="Tools: rockly plugins list | rockly plugins validate PATH | "
+                                     epilog="Tools: rockly profiles list | rockly profiles validate PATH | "
                                             "rockly export PROGRAM -o OUT.py")
     parser.add_argument("--version", action="version", version=f"rockly {__version__}")
     parser.add_argument("program", nargs="?", type=Path, help="a program to open")
     return parser
 
 
-def _plugins_list() -> int:
-    from rockly_desktop.plugins.registry import ProfileRegistry
+def _profiles_list() -> int:
+    from rockly_desktop.profiles.registry import ProfileRegistry
 
     registry = ProfileRegistry.discover()
     for profile in registry.profiles.values():
@@ -82,11 +83,11 @@ def _plugins_list() -> int:
     return 1 if registry.errors else 0
 
 
-def _plugins_validate(path: Path) -> int:
+def _profiles_validate(path: Path) -> int:
     from rockly_desktop.core import paths
     from rockly_desktop.core.errors import ManifestError
-    from rockly_desktop.plugins.checks import check_commands
-    from rockly_desktop.plugins.profile import load_profile
+    from rockly_desktop.profiles.checks import check_commands
+    from rockly_desktop.profiles.profile import load_profile
 
     try:
         profile = load_profile(path, paths.shared_toolboxes_dir())
@@ -99,21 +100,21 @@ def _plugins_validate(path: Path) -> int:
     return 0
 
 
-def _plugins_new(name: str, folder: Path) -> int:
+def _profiles_new(name: str, folder: Path) -> int:
     from rockly_desktop.core.errors import RocklyError
-    from rockly_desktop.plugins.skeleton import ProfileNameRefused, create_profile, next_steps
+    from rockly_desktop.profiles.skeleton import ProfileNameRefused, create_profile, next_steps
 
     try:
         profile_dir = create_profile(name, folder)
     except RocklyError as error:
-        print(f"rockly plugins new: {error}", file=sys.stderr)
+        print(f"rockly profiles new: {error}", file=sys.stderr)
         return 2 if isinstance(error, ProfileNameRefused) else 1
     print(next_steps(profile_dir))
     return 0
 
 
-def _plugins_reference() -> int:
-    from rockly_desktop.plugins.reference import manifest_reference_markdown
+def _profiles_reference() -> int:
+    from rockly_desktop.profiles.reference import manifest_reference_markdown
 
     print(manifest_reference_markdown(), end="")
     return 0
@@ -124,7 +125,7 @@ def _export(program_path: Path, output: Path, language: str) -> int:
     from rockly_desktop.core.errors import RocklyError
     from rockly_desktop.core.export import python_module_text
     from rockly_desktop.core.program import write_text_atomically
-    from rockly_desktop.plugins.opening import opening_warnings
+    from rockly_desktop.profiles.opening import opening_warnings
 
     to_stdout = str(output) == "-" or _is_standard_output(output)
     try:
@@ -162,18 +163,18 @@ def main(argv=None) -> int:
     logging.basicConfig(level=os.environ.get("ROCKLY_LOG", "warning").upper(), format="%(levelname)s %(name)s: %(message)s")
     if argv and argv[0] in SUBCOMMANDS:
         args = _tool_parser().parse_args(argv)
-        if args.command == "plugins":
-            if args.plugin_command == "new":
-                return _plugins_new(args.name, args.dir)
-            if args.plugin_command == "reference":
-                return _plugins_reference()
-            return _plugins_list() if args.plugin_command == "list" else _plugins_validate(args.path)
+        if args.command in ("profiles", "plugins"):
+            if args.profile_command == "new":
+                return _profiles_new(args.name, args.dir)
+            if args.profile_command == "reference":
+                return _profiles_reference()
+            return _profiles_list() if args.profile_command == "list" else _profiles_validate(args.path)
         if args.command == "run":
             from rockly_desktop.run_command import run_program
 
             return run_program(args.program, args.answer, args.speed, backend=args.backend, master_uri=args.master)
         if args.command == "sim":
-            from rockly_desktop.run_command import serve_simulator
+            from rockly_desktop.sim_command import serve_simulator
 
             return serve_simulator(args.profile, args.master, args.speed, args.answer, window=args.window)
         return _export(args.program, args.output, args.language)

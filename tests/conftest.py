@@ -22,7 +22,7 @@ import pytest  # noqa: E402
 pytest_plugins = ["ros_fixtures"]
 
 REPO = Path(__file__).resolve().parents[1]
-HOBBIT_DIR = REPO / "plugins" / "hobbit"
+HOBBIT_DIR = REPO / "profiles" / "hobbit"
 SHARED_TOOLBOXES = REPO / "toolboxes"
 
 
@@ -38,7 +38,7 @@ def isolated_user_folders(tmp_path_factory, monkeypatch):
 @pytest.fixture(scope="session")
 def registry():
     """The installed profiles (HOBBIT is built in)."""
-    from rockly_desktop.plugins.registry import ProfileRegistry
+    from rockly_desktop.profiles.registry import ProfileRegistry
 
     return ProfileRegistry.discover()
 

@@ -5,7 +5,7 @@ from pathlib import Path
 import yaml
 
 REPO = Path(__file__).resolve().parents[1]
-HOBBIT_DIR = REPO / "plugins" / "hobbit"
+HOBBIT_DIR = REPO / "profiles" / "hobbit"
 SHARED_TOOLBOXES = REPO / "toolboxes"
 
 
@@ -44,7 +44,7 @@ class EditableProfile:
 
 
 def copy_profile(target: Path, profile_id: str = None) -> EditableProfile:
-    """Copy plugins/hobbit to ``target`` (created); optionally give the copy another id."""
+    """Copy profiles/hobbit to ``target`` (created); optionally give the copy another id."""
     shutil.copytree(HOBBIT_DIR, target, ignore=shutil.ignore_patterns("__pycache__"))
     copy = EditableProfile(target)
     if profile_id is not None:

@@ -22,60 +22,60 @@ def user_profiles(home: Path) -> Path:
     return home / "data" / "rockly" / "profiles"
 
 
-def test_plugins_list_shows_hobbit():
-    result = rockly("plugins", "list")
+def test_profiles_list_shows_hobbit():
+    result = rockly("profiles", "list")
     assert result.returncode == 0, result.stderr
     assert result.stdout.split()[:4] == ["hobbit", "HOBBIT", "1.0.0", "built-in"]
 
 
-def test_plugins_list_names_a_broken_profile_and_still_lists_the_others(isolated_user_folders):
+def test_profiles_list_names_a_broken_profile_and_still_lists_the_others(isolated_user_folders):
     broken = user_profiles(isolated_user_folders) / "mybot"
     broken.mkdir(parents=True)
     (broken / "profile.yaml").write_text("schema: 1\nid: My Bot\n")
-    result = rockly("plugins", "list")
+    result = rockly("profiles", "list")
     assert result.returncode == 1
     assert "hobbit" in result.stdout
     assert f"{broken / 'profile.yaml'}: id: must be lower-case letters" in result.stderr
 
 
-def test_plugins_list_finds_a_profile_in_the_users_folder(isolated_user_folders):
+def test_profiles_list_finds_a_profile_in_the_users_folder(isolated_user_folders):
     copy = user_profiles(isolated_user_folders) / "hobbit2"
-    shutil.copytree(REPO / "plugins" / "hobbit", copy, ignore=shutil.ignore_patterns("__pycache__"))
+    shutil.copytree(REPO / "profiles" / "hobbit", copy, ignore=shutil.ignore_patterns("__pycache__"))
     manifest = copy / "profile.yaml"
     manifest.write_text(manifest.read_text().replace("id: hobbit", "id: hobbit2"))
-    result = rockly("plugins", "list")
+    result = rockly("profiles", "list")
     assert result.returncode == 0, result.stderr
     assert any(line.split()[:1] == ["hobbit2"] and line.split()[3] == "user" for line in result.stdout.splitlines())
 
 
-def test_plugins_validate_accepts_hobbit():
-    result = rockly("plugins", "validate", REPO / "plugins" / "hobbit")
+def test_profiles_validate_accepts_hobbit():
+    result = rockly("profiles", "validate", REPO / "profiles" / "hobbit")
     assert result.returncode == 0, result.stderr
     assert result.stdout.startswith("OK  hobbit 1.0.0: 26 blocks")
 
 
-def test_plugins_validate_finds_a_template_calling_a_missing_command(tmp_path):
+def test_profiles_validate_finds_a_template_calling_a_missing_command(tmp_path):
     copy = tmp_path / "hobbit"
-    shutil.copytree(REPO / "plugins" / "hobbit", copy, ignore=shutil.ignore_patterns("__pycache__"))
+    shutil.copytree(REPO / "profiles" / "hobbit", copy, ignore=shutil.ignore_patterns("__pycache__"))
     blocks = copy / "blocks.yaml"
     blocks.write_text(blocks.read_text().replace('python: "robot.call_sos()"', 'python: "robot.call_sos_now()"'))
-    result = rockly("plugins", "validate", copy)
+    result = rockly("profiles", "validate", copy)
     assert result.returncode == 1
     assert "blocks[hobbit_sos].python.code: calls robot.call_sos_now(), which Hobbit does not have" in result.stderr
 
 
-def test_plugins_validate_reports_a_profile_whose_code_does_not_import(tmp_path):
+def test_profiles_validate_reports_a_profile_whose_code_does_not_import(tmp_path):
     copy = tmp_path / "hobbit"
-    shutil.copytree(REPO / "plugins" / "hobbit", copy, ignore=shutil.ignore_patterns("__pycache__"))
+    shutil.copytree(REPO / "profiles" / "hobbit", copy, ignore=shutil.ignore_patterns("__pycache__"))
     manifest = copy / "profile.yaml"
     manifest.write_text(manifest.read_text().replace("rockly_hobbit.api:Hobbit", "rockly_hobbit.api:Hobbot"))
-    result = rockly("plugins", "validate", copy)
+    result = rockly("profiles", "validate", copy)
     assert result.returncode == 1
     assert "api: cannot import rockly_hobbit.api:Hobbot" in result.stderr
 
 
-def test_plugins_validate_an_empty_folder(tmp_path):
-    result = rockly("plugins", "validate", tmp_path)
+def test_profiles_validate_an_empty_folder(tmp_path):
+    result = rockly("profiles", "validate", tmp_path)
     assert result.returncode == 1
     assert "profile.yaml is missing" in result.stderr
 
@@ -199,7 +199,7 @@ def test_export_of_a_missing_file(tmp_path):
 
 def test_usage_errors_exit_non_zero():
     assert rockly("export").returncode == 2
-    assert rockly("plugins", "frobnicate").returncode == 2
+    assert rockly("profiles", "frobnicate").returncode == 2
 
 
 def test_sim_help_documents_the_window_and_no_window():
@@ -217,3 +217,9 @@ def test_sim_without_a_display_says_to_use_no_window():
     result = subprocess.run([sys.executable, "-m", "rockly_desktop", "sim", "hobbit", "--ros", "--master", "http://127.0.0.1:9"],
                             capture_output=True, text=True, timeout=90, cwd=REPO, env=env)
     assert result.returncode == 2 and "--no-window" in result.stderr
+
+
+def test_the_older_plugins_verb_still_lists_the_profiles():
+    result = rockly("plugins", "list")
+    assert result.returncode == 0
+    assert "hobbit" in result.stdout

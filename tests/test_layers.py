@@ -32,7 +32,7 @@ def test_a_core_module_importing_qt_breaks_the_contracts(tmp_path):
 
 def test_no_rockly_module_mentions_a_particular_robot():
     """Robots are profiles: Rockly's own code must not know any of them by name."""
-    robots = [folder.name for folder in (REPO / "plugins").iterdir() if (folder / "profile.yaml").exists()]
+    robots = [folder.name for folder in (REPO / "profiles").iterdir() if (folder / "profile.yaml").exists()]
     assert len(robots) >= 2
     for path in (REPO / "rockly_desktop").rglob("*.py"):
         text = path.read_text(encoding="utf-8").lower()

@@ -7,7 +7,7 @@ _SOURCE_TREE = Path(__file__).resolve().parents[2]
 
 
 def data_root() -> Path:
-    """The folder holding ``resources/``, ``toolboxes/`` and ``plugins/``.
+    """The folder holding ``resources/``, ``toolboxes/`` and ``profiles/``.
 
     A source checkout (also an editable install) uses the checkout itself; a regular
     ``pip install .`` uses ``<prefix>/share/rockly``. ``ROCKLY_DATA_DIR`` overrides both.
@@ -37,7 +37,7 @@ def shared_toolboxes_dir() -> Path:
 
 def builtin_profiles_dir() -> Path:
     """Robot profiles shipped with Rockly."""
-    return data_root() / "plugins"
+    return data_root() / "profiles"
 
 
 def user_profiles_dir() -> Path:

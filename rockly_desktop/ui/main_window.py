@@ -8,7 +8,7 @@ from rockly_desktop.bridge.editor_view import EditorView
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.ui.code_dock import CodeDock
 from rockly_desktop.ui.console_dock import ConsoleDock
-from rockly_desktop.ui.file_actions import ProgramFiles
+from rockly_desktop.ui.program_files import ProgramFiles
 from rockly_desktop.ui.health_bar import HealthBar
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.preferences import PreferencesDialog

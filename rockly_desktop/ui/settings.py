@@ -1,7 +1,7 @@
 """What Rockly remembers between starts: layout, language, profile, last and recent files."""
 from PySide6.QtCore import QSettings
 
-from rockly_desktop.plugins.i18n import SUPPORTED_LANGUAGES
+from rockly_desktop.profiles.i18n import SUPPORTED_LANGUAGES
 
 MAX_RECENT = 8
 

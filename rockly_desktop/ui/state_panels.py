@@ -15,7 +15,7 @@ from PySide6.QtCore import QLocale, QTimer
 from PySide6.QtWidgets import QFormLayout, QGroupBox, QLabel, QScrollArea, QVBoxLayout, QWidget
 
 from rockly_desktop.core.state_store import field_value
-from rockly_desktop.plugins.i18n import localize
+from rockly_desktop.profiles.i18n import localize
 from rockly_desktop.ui.texts import tr
 
 REFRESH_MS = 100

@@ -4,7 +4,7 @@ import ast
 import pytest
 from program_builder import block, number, stack, text, workspace
 
-from rockly_desktop.plugins.opening import ProgramToOpen
+from rockly_desktop.profiles.opening import ProgramToOpen
 
 
 def generate(editor, profile, *top_blocks) -> str:

@@ -4,7 +4,7 @@ import ast
 from page_tools import add_block_as_user, run_js
 from program_builder import block, number, stack, text, workspace
 
-from rockly_desktop.plugins.opening import ProgramToOpen
+from rockly_desktop.profiles.opening import ProgramToOpen
 
 FIELD_INPUTS = """(() => {
     const b = Blockly.getMainWorkspace().getBlockById(%r);

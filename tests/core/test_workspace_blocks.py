@@ -207,7 +207,7 @@ def gripper_fields(root):
 
 
 def test_hobbit_profile_declares_the_gripper_alias_used_here():
-    manifest = yaml.safe_load((REPO / "plugins" / "hobbit" / "profile.yaml").read_text(encoding="utf-8"))
+    manifest = yaml.safe_load((REPO / "profiles" / "hobbit" / "profile.yaml").read_text(encoding="utf-8"))
     assert manifest["legacy_fields"] == GRIPPER_ALIAS
 
 

@@ -9,7 +9,7 @@ from PySide6.QtWidgets import QMessageBox
 
 from rockly_desktop.ui.preferences import PreferencesDialog
 
-REPO_HOBBIT = __import__("pathlib").Path(__file__).resolve().parents[2] / "plugins" / "hobbit"
+REPO_HOBBIT = __import__("pathlib").Path(__file__).resolve().parents[2] / "profiles" / "hobbit"
 
 
 def menu_titles(window) -> list:

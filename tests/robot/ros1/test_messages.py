@@ -21,7 +21,7 @@ from rockly_desktop.robot.ros1.messages import (MessageDefinitionError, MessageT
                                                 expand_action, from_message, to_message)
 
 REPO = Path(__file__).resolve().parents[3]
-HOBBIT_MSG = REPO / "plugins" / "hobbit" / "msg"
+HOBBIT_MSG = REPO / "profiles" / "hobbit" / "msg"
 SYSTEM_PYTHON = "/usr/bin/python3"
 GENMSG_PY = "/usr/lib/genpy/genmsg_py.py"
 GENSRV_PY = "/usr/lib/genpy/gensrv_py.py"

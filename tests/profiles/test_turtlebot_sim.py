@@ -1,4 +1,4 @@
-"""The simulated TurtleBot (plugins/turtlebot/rockly_turtlebot/sim.py and arena.py): its room, its laser,
+"""The simulated TurtleBot (profiles/turtlebot/rockly_turtlebot/sim.py and arena.py): its room, its laser,
 its bumper-like stops, its odometry and battery, and the messages it publishes.
 
 The simulator runs its own 30 Hz clock thread, SPEED times faster than real time; tests wait
@@ -13,10 +13,10 @@ import pytest
 from profile_copies import REPO, SHARED_TOOLBOXES
 from sim_tools import eventually_in, later
 
-from rockly_desktop.plugins.profile import load_profile
+from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.sim_world import SimWorld
 
-PROFILE = load_profile(REPO / "plugins" / "turtlebot", SHARED_TOOLBOXES)
+PROFILE = load_profile(REPO / "profiles" / "turtlebot", SHARED_TOOLBOXES)
 SimTurtleBot = PROFILE.load_object("simulator")
 sim_module = sys.modules[SimTurtleBot.__module__]
 arena_module = sys.modules[SimTurtleBot.__module__.rsplit(".", 1)[0] + ".arena"]

@@ -1,6 +1,6 @@
-"""HOBBIT's commands (plugins/hobbit/rockly_hobbit/api.py): argument checks, the exact ROS values they send, pausing.
+"""HOBBIT's commands (profiles/hobbit/rockly_hobbit/api.py): argument checks, the exact ROS values they send, pausing.
 
-The commands drive the built-in simulated HOBBIT (plugins/hobbit/rockly_hobbit/sim.py) in a
+The commands drive the built-in simulated HOBBIT (profiles/hobbit/rockly_hobbit/sim.py) in a
 real SimWorld. What they send is read where it reaches that world: topic messages through
 ``world.subscribe`` (their types from ``world.topics()``), service calls and action goals
 noted by ``ObservedSimBackend`` on their way into the real SimBackend, and dialogs by the
@@ -20,7 +20,7 @@ from sim_tools import HoldWatcher, eventually_in, later, pose
 
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.executor.control import RunControl
-from rockly_desktop.plugins.profile import load_profile
+from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
 
 

@@ -1,4 +1,4 @@
-"""``rockly plugins new NAME``: a small robot profile that works, as a starting point.
+"""``rockly profiles new NAME``: a small robot profile that works, as a starting point.
 
 The profile's files are templates kept here as data (``SKELETON_FILES``) and rendered
 with the name: ``$name`` (the profile id), ``$Title`` (shown to people) and ``$Class``
@@ -15,14 +15,14 @@ from pathlib import Path
 
 from rockly_desktop.core import paths
 from rockly_desktop.core.errors import RocklyError
-from rockly_desktop.plugins.registry import ProfileRegistry
+from rockly_desktop.profiles.registry import ProfileRegistry
 
-# The manifest's rule for ``id`` (plugins/manifest.py), said once more to refuse a name before writing.
+# The manifest's rule for ``id`` (profiles/manifest.py), said once more to refuse a name before writing.
 _PROFILE_ID = re.compile(r"[a-z][a-z0-9_]{0,39}")
 
 SKELETON_FILES = {
     "profile.yaml": '''\
-# The $Title robot profile, made by `rockly plugins new $name`.
+# The $Title robot profile, made by `rockly profiles new $name`.
 # Every field is explained in Rockly's docs/writing-a-robot-profile.md.
 schema: 1
 id: "$name"
@@ -147,8 +147,8 @@ Run it with the Python that has Rockly installed: ``python -m pytest tests``.
 from pathlib import Path
 
 from rockly_desktop.core import paths
-from rockly_desktop.plugins.checks import check_commands
-from rockly_desktop.plugins.profile import load_profile
+from rockly_desktop.profiles.checks import check_commands
+from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.safe_stop import run_safe_stop
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
@@ -241,7 +241,7 @@ def create_profile(name: str, parent: Path = None) -> Path:
 def next_steps(folder: Path) -> str:
     """What to tell the person who just made the profile in ``folder``."""
     lines = [f"Created the robot profile '{folder.name}' in {folder}", "Next:",
-             f"  rockly plugins validate {folder}", f"  python -m pytest {folder / 'tests'}"]
+             f"  rockly profiles validate {folder}", f"  python -m pytest {folder / 'tests'}"]
     if folder.parent.resolve() != paths.user_profiles_dir().resolve():
         lines.append(f"Rockly finds it once the folder is in {paths.user_profiles_dir()} "
                      f"(see docs/writing-a-robot-profile.md)")

@@ -1,4 +1,4 @@
-"""The TurtleBot's commands (plugins/turtlebot/rockly_turtlebot/api.py) on the real simulator.
+"""The TurtleBot's commands (profiles/turtlebot/rockly_turtlebot/api.py) on the real simulator.
 
 Each command drives the built-in simulated TurtleBot (rockly_turtlebot/sim.py) in a real
 SimWorld with its own 30 Hz clock thread, SPEED times faster than real time. What the
@@ -16,12 +16,12 @@ from sim_tools import HoldWatcher, eventually_in, later, pose
 
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.executor.control import RunControl
-from rockly_desktop.plugins.profile import load_profile
+from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.safe_stop import run_safe_stop
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
 
-TURTLEBOT_DIR = REPO / "plugins" / "turtlebot"
+TURTLEBOT_DIR = REPO / "profiles" / "turtlebot"
 PROFILE = load_profile(TURTLEBOT_DIR, SHARED_TOOLBOXES)
 TurtleBot = PROFILE.load_object("api")
 SimTurtleBot = PROFILE.load_object("simulator")

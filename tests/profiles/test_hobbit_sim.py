@@ -1,4 +1,4 @@
-"""The simulated HOBBIT (plugins/hobbit/rockly_hobbit/sim.py), driven through the real HOBBIT commands.
+"""The simulated HOBBIT (profiles/hobbit/rockly_hobbit/sim.py), driven through the real HOBBIT commands.
 
 Every test runs the simulator's own clock (real threads) at SPEED times real time and
 waits on conditions, never for a fixed time.
@@ -15,7 +15,7 @@ from profile_copies import HOBBIT_DIR, SHARED_TOOLBOXES
 from sim_tools import eventually_in, later, pose
 
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError, RobotTimeout
-from rockly_desktop.plugins.profile import load_profile
+from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.interface import GoalStatus
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.safe_stop import run_safe_stop

@@ -1,4 +1,4 @@
-"""The manifest reference: generated from MANIFEST_FIELDS, printed by ``rockly plugins reference``,
+"""The manifest reference: generated from MANIFEST_FIELDS, printed by ``rockly profiles reference``,
 and the same text in docs/writing-a-robot-profile.md."""
 import re
 import subprocess
@@ -6,8 +6,8 @@ import sys
 
 from profile_copies import REPO
 
-from rockly_desktop.plugins.manifest import MANIFEST_FIELDS
-from rockly_desktop.plugins.reference import REFERENCE_END, REFERENCE_START, manifest_reference_markdown
+from rockly_desktop.profiles.manifest import MANIFEST_FIELDS
+from rockly_desktop.profiles.reference import REFERENCE_END, REFERENCE_START, manifest_reference_markdown
 
 GUIDE = REPO / "docs" / "writing-a-robot-profile.md"
 
@@ -33,11 +33,11 @@ def test_the_guide_holds_the_generated_reference_exactly():
     section = text.split(REFERENCE_START + "\n", 1)[1].split(REFERENCE_END, 1)[0]
     assert section == manifest_reference_markdown(), (
         "docs/writing-a-robot-profile.md is out of date: put the output of "
-        "`rockly plugins reference` between its manifest-reference markers")
+        "`rockly profiles reference` between its manifest-reference markers")
 
 
-def test_plugins_reference_prints_it():
-    result = subprocess.run([sys.executable, "-m", "rockly_desktop", "plugins", "reference"],
+def test_profiles_reference_prints_it():
+    result = subprocess.run([sys.executable, "-m", "rockly_desktop", "profiles", "reference"],
                             capture_output=True, text=True, timeout=60, cwd=REPO)
     assert result.returncode == 0, result.stderr
     assert result.stdout == manifest_reference_markdown()

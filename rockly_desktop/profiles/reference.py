@@ -1,9 +1,9 @@
 """The manifest reference, written from ``MANIFEST_FIELDS`` so the docs cannot drift from it.
 
-``rockly plugins reference`` prints it; docs/writing-a-robot-profile.md holds the same
+``rockly profiles reference`` prints it; docs/writing-a-robot-profile.md holds the same
 text between ``REFERENCE_START`` and ``REFERENCE_END`` (a test keeps the two equal).
 """
-from rockly_desktop.plugins.manifest import MANIFEST_FIELDS
+from rockly_desktop.profiles.manifest import MANIFEST_FIELDS
 
 REFERENCE_START = "<!-- manifest-reference:start -->"
 REFERENCE_END = "<!-- manifest-reference:end -->"

@@ -1,4 +1,4 @@
-"""``rockly plugins new``: the skeleton profile it writes loads, validates and passes its own test.
+"""``rockly profiles new``: the skeleton profile it writes loads, validates and passes its own test.
 
 The command runs as a user runs it (a real process); the generated test runs under this
 repository's pytest in a process of its own.
@@ -11,8 +11,8 @@ from pathlib import Path
 import pytest
 from profile_copies import REPO, SHARED_TOOLBOXES
 
-from rockly_desktop.plugins.profile import load_profile
-from rockly_desktop.plugins.skeleton import create_profile
+from rockly_desktop.profiles.profile import load_profile
+from rockly_desktop.profiles.skeleton import create_profile
 
 SKELETON = {"profile.yaml", "blocks.yaml", "toolbox.yaml", "rockly_demo/__init__.py", "rockly_demo/api.py",
             "rockly_demo/sim.py", "tests/test_demo.py"}
@@ -30,9 +30,9 @@ def files_in(folder: Path) -> set:
 
 @pytest.fixture(scope="module")
 def demo(tmp_path_factory) -> Path:
-    """A profile made by ``rockly plugins new demo --dir TMP``."""
+    """A profile made by ``rockly profiles new demo --dir TMP``."""
     parent = tmp_path_factory.mktemp("profiles")
-    result = rockly("plugins", "new", "demo", "--dir", parent)
+    result = rockly("profiles", "new", "demo", "--dir", parent)
     assert result.returncode == 0, result.stderr
     assert f"Created the robot profile 'demo' in {parent / 'demo'}" in result.stdout
     return parent / "demo"
@@ -50,7 +50,7 @@ def test_new_writes_the_skeleton_files(demo):
 
 
 def test_the_new_profile_validates(demo):
-    result = rockly("plugins", "validate", demo)
+    result = rockly("profiles", "validate", demo)
     assert result.returncode == 0, result.stderr
     assert result.stdout.startswith("OK  demo 0.1.0: 1 blocks, 6 toolbox categories, "
                                     "commands rockly_demo.api:DemoCommands")
@@ -65,18 +65,18 @@ def test_the_generated_test_passes(demo):
 
 @pytest.mark.parametrize("name", ["Demo", "1robot", "my-robot", "../escape", "a" * 41, ""])
 def test_a_name_that_is_no_profile_id_is_refused(tmp_path, name):
-    result = rockly("plugins", "new", name, "--dir", tmp_path)
+    result = rockly("profiles", "new", name, "--dir", tmp_path)
     assert result.returncode == 2
     assert f"'{name}' is not a profile id: use lower-case letters, digits and '_'" in result.stderr
     assert list(tmp_path.iterdir()) == []
 
 
 def test_a_name_whose_package_exists_or_whose_id_is_installed_is_refused(tmp_path):
-    taken = rockly("plugins", "new", "desktop", "--dir", tmp_path)
-    installed = rockly("plugins", "new", "hobbit", "--dir", tmp_path)
+    taken = rockly("profiles", "new", "desktop", "--dir", tmp_path)
+    installed = rockly("profiles", "new", "hobbit", "--dir", tmp_path)
     assert taken.returncode == installed.returncode == 2
     assert "'desktop' would name the profile's package rockly_desktop, which is already importable" in taken.stderr
-    hobbit = REPO / "plugins" / "hobbit"
+    hobbit = REPO / "profiles" / "hobbit"
     assert f"a profile with the id 'hobbit' is already installed (built-in, {hobbit})" in installed.stderr
     assert list(tmp_path.iterdir()) == []
 
@@ -84,7 +84,7 @@ def test_a_name_whose_package_exists_or_whose_id_is_installed_is_refused(tmp_pat
 def test_an_existing_folder_is_refused_and_left_alone(tmp_path):
     (tmp_path / "demo").mkdir()
     (tmp_path / "demo" / "notes.txt").write_text("mine")
-    result = rockly("plugins", "new", "demo", "--dir", tmp_path)
+    result = rockly("profiles", "new", "demo", "--dir", tmp_path)
     assert result.returncode == 1
     assert f"{tmp_path / 'demo'} exists already; nothing was changed" in result.stderr
     assert files_in(tmp_path / "demo") == {"notes.txt"}
@@ -92,11 +92,11 @@ def test_an_existing_folder_is_refused_and_left_alone(tmp_path):
 
 def test_a_profile_made_in_the_users_folder_is_listed(tmp_path):
     env = {**os.environ, "XDG_DATA_HOME": str(tmp_path / "xdg")}
-    created = rockly("plugins", "new", "mybot", env=env)
+    created = rockly("profiles", "new", "mybot", env=env)
     assert created.returncode == 0, created.stderr
     folder = tmp_path / "xdg" / "rockly" / "profiles" / "mybot"
     assert (folder / "profile.yaml").is_file()
-    listed = rockly("plugins", "list", env=env)
+    listed = rockly("profiles", "list", env=env)
     assert listed.returncode == 0, listed.stderr
     rows = [line.split() for line in listed.stdout.splitlines()]
     assert ["mybot", "Mybot", "0.1.0", "user", str(folder)] in rows

@@ -18,8 +18,8 @@ from rockly_desktop.core.workspace_blocks import (
     block_types_in_workspace, block_types_in_xml, parse_blockly_xml, rename_legacy_fields, untyped_block_number,
     untyped_xml_block_number, xml_to_text,
 )
-from rockly_desktop.plugins.profile import Profile
-from rockly_desktop.plugins.registry import ProfileRegistry
+from rockly_desktop.profiles.profile import Profile
+from rockly_desktop.profiles.registry import ProfileRegistry
 
 XML_SUFFIX = ".xml"
 

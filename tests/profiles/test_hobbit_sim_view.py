@@ -1,4 +1,4 @@
-"""HOBBIT's simulator view (plugins/hobbit/rockly_hobbit/sim_view/): it draws what a snapshot says, at any size."""
+"""HOBBIT's simulator view (profiles/hobbit/rockly_hobbit/sim_view/): it draws what a snapshot says, at any size."""
 import importlib.util
 import itertools
 import math

@@ -7,8 +7,8 @@ import pytest
 from profile_copies import HOBBIT_DIR, SHARED_TOOLBOXES, EditableProfile, copy_profile
 
 from rockly_desktop.core.errors import ManifestError
-from rockly_desktop.plugins.i18n import is_localized, localize
-from rockly_desktop.plugins.profile import load_profile
+from rockly_desktop.profiles.i18n import is_localized, localize
+from rockly_desktop.profiles.profile import load_profile
 
 
 @pytest.fixture

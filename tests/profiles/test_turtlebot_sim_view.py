@@ -1,4 +1,4 @@
-"""The TurtleBot's simulator view (plugins/turtlebot/rockly_turtlebot/sim_view.py): it draws what a snapshot says.
+"""The TurtleBot's simulator view (profiles/turtlebot/rockly_turtlebot/sim_view.py): it draws what a snapshot says.
 
 Snapshots come from the real simulator (and a few hand-made odd ones); the view is grabbed
 offscreen and its pixels are looked at.
@@ -12,11 +12,11 @@ from profile_copies import REPO, SHARED_TOOLBOXES
 from PySide6.QtCore import QRect
 from PySide6.QtGui import QColor, QImage
 
-from rockly_desktop.plugins.profile import load_profile
+from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
 
-PROFILE = load_profile(REPO / "plugins" / "turtlebot", SHARED_TOOLBOXES)
+PROFILE = load_profile(REPO / "profiles" / "turtlebot", SHARED_TOOLBOXES)
 TurtleBotSimView = PROFILE.load_object("simulator_view")
 SimTurtleBot = PROFILE.load_object("simulator")
 TurtleBot = PROFILE.load_object("api")

@@ -1,4 +1,4 @@
-"""The TurtleBot profile (plugins/turtlebot/): it validates, and its manifest, blocks, toolbox and commands agree."""
+"""The TurtleBot profile (profiles/turtlebot/): it validates, and its manifest, blocks, toolbox and commands agree."""
 import inspect
 import re
 import shutil
@@ -8,11 +8,11 @@ import sys
 import pytest
 from profile_copies import REPO, SHARED_TOOLBOXES
 
-from rockly_desktop.plugins.i18n import is_localized, localize
-from rockly_desktop.plugins.profile import load_profile
-from rockly_desktop.plugins.registry import ProfileRegistry
+from rockly_desktop.profiles.i18n import is_localized, localize
+from rockly_desktop.profiles.profile import load_profile
+from rockly_desktop.profiles.registry import ProfileRegistry
 
-TURTLEBOT_DIR = REPO / "plugins" / "turtlebot"
+TURTLEBOT_DIR = REPO / "profiles" / "turtlebot"
 PROFILE = load_profile(TURTLEBOT_DIR, SHARED_TOOLBOXES)
 TurtleBot = PROFILE.load_object("api")
 api = sys.modules[TurtleBot.__module__]
@@ -27,7 +27,7 @@ def rockly(*args):
 
 
 def test_rockly_plugins_validate_says_ok():
-    result = rockly("plugins", "validate", TURTLEBOT_DIR)
+    result = rockly("profiles", "validate", TURTLEBOT_DIR)
     assert result.returncode == 0, result.stderr
     assert result.stdout.strip() == ("OK  turtlebot 1.0.0: 8 blocks, 11 toolbox categories, "
                                      "commands rockly_turtlebot.api:TurtleBot")
@@ -38,7 +38,7 @@ def test_validate_catches_a_template_calling_a_command_the_turtlebot_lacks(tmp_p
     shutil.copytree(TURTLEBOT_DIR, copy, ignore=shutil.ignore_patterns("__pycache__"))
     blocks = copy / "blocks.yaml"
     blocks.write_text(blocks.read_text().replace('python: "robot.stop()"', 'python: "robot.halt()"'))
-    result = rockly("plugins", "validate", copy)
+    result = rockly("profiles", "validate", copy)
     assert result.returncode == 1
     assert "calls robot.halt(), which TurtleBot does not have" in result.stderr
 

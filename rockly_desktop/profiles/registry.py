@@ -10,8 +10,8 @@ from pathlib import Path
 
 from rockly_desktop.core import paths
 from rockly_desktop.core.errors import ManifestError, RocklyError
-from rockly_desktop.plugins.manifest import MANIFEST_NAME
-from rockly_desktop.plugins.profile import Profile, load_profile
+from rockly_desktop.profiles.manifest import MANIFEST_NAME
+from rockly_desktop.profiles.profile import Profile, load_profile
 
 ENTRY_POINT_GROUP = "rockly.profiles"
 

@@ -18,8 +18,8 @@ file in ``toolboxes/`` whose blocks come with the category (the generic ROS bloc
 from pathlib import Path
 
 from rockly_desktop.core.errors import ManifestError
-from rockly_desktop.plugins.i18n import localize
-from rockly_desktop.plugins.yaml_files import read_yaml_mapping
+from rockly_desktop.profiles.i18n import localize
+from rockly_desktop.profiles.yaml_files import read_yaml_mapping
 
 
 def _block_entry(item, path: Path, where: str) -> dict:

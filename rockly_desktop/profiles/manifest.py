@@ -9,8 +9,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from rockly_desktop.core.errors import ManifestError
-from rockly_desktop.plugins.i18n import SUPPORTED_LANGUAGES, is_localized
-from rockly_desktop.plugins.yaml_files import read_yaml_mapping
+from rockly_desktop.profiles.i18n import SUPPORTED_LANGUAGES, is_localized
+from rockly_desktop.profiles.yaml_files import read_yaml_mapping
 
 MANIFEST_NAME = "profile.yaml"
 SCHEMA_VERSION = 1

@@ -14,7 +14,7 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.export import python_module_text
 from rockly_desktop.core.program import PROGRAM_SUFFIX, Program, save_program, write_text_atomically
-from rockly_desktop.plugins.opening import read_program_to_open, unknown_blocks_error
+from rockly_desktop.profiles.opening import read_program_to_open, unknown_blocks_error
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.texts import tr
 

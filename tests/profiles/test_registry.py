@@ -12,8 +12,8 @@ from profile_copies import HOBBIT_DIR, REPO, SHARED_TOOLBOXES, copy_profile
 
 from rockly_desktop.core import paths
 from rockly_desktop.core.errors import ManifestError
-from rockly_desktop.plugins.profile import load_profile
-from rockly_desktop.plugins.registry import ENTRY_POINT_GROUP, ProfileRegistry, discover_locations
+from rockly_desktop.profiles.profile import load_profile
+from rockly_desktop.profiles.registry import ENTRY_POINT_GROUP, ProfileRegistry, discover_locations
 
 
 @pytest.fixture(autouse=True)
@@ -163,7 +163,7 @@ def test_user_profile_wins_over_an_extra_folder_with_the_same_id(tmp_path, own_u
 
 def test_without_hobbit_the_first_profile_is_the_default(tmp_path, monkeypatch):
     data = tmp_path / "data"
-    copy_profile(data / "plugins" / "robo", "robo")
+    copy_profile(data / "profiles" / "robo", "robo")
     shutil.copytree(SHARED_TOOLBOXES, data / "toolboxes")
     monkeypatch.setenv("ROCKLY_DATA_DIR", str(data))
 
@@ -236,7 +236,7 @@ def test_entry_point_package_with_a_broken_profile_is_recorded(tmp_path, monkeyp
 def test_discovery_imports_no_profile_code_and_no_qt_in_a_fresh_interpreter(tmp_path):
     script = textwrap.dedent("""
         import json, sys
-        from rockly_desktop.plugins.registry import ProfileRegistry
+        from rockly_desktop.profiles.registry import ProfileRegistry
         registry = ProfileRegistry.discover()
         report = {"errors": [str(error) for error in registry.errors],
                   "after_discover": sorted(name for name in sys.modules if name.startswith("rockly_hobbit")),
@@ -334,4 +334,4 @@ def test_real_hobbit_api_is_a_robot_commands_class(restore_imports):
     commands = hobbit.load_object("api")
     assert issubclass(commands, RobotCommands)
     assert commands.__module__ == "rockly_hobbit.api"
-    assert sys.modules["rockly_hobbit.api"].__file__ == str(REPO / "plugins" / "hobbit" / "rockly_hobbit" / "api.py")
+    assert sys.modules["rockly_hobbit.api"].__file__ == str(REPO / "profiles" / "hobbit" / "rockly_hobbit" / "api.py")

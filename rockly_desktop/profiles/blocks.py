@@ -30,8 +30,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from rockly_desktop.core.errors import ManifestError
-from rockly_desktop.plugins.i18n import localize
-from rockly_desktop.plugins.yaml_files import read_yaml_mapping
+from rockly_desktop.profiles.i18n import localize
+from rockly_desktop.profiles.yaml_files import read_yaml_mapping
 
 _BLOCK_TYPE = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 _FIELD_ARGS = {"field_dropdown", "field_input", "field_number", "field_checkbox", "field_angle",

@@ -3,7 +3,7 @@ import inspect
 import re
 
 from rockly_desktop.core.errors import ManifestError
-from rockly_desktop.plugins.manifest import MANIFEST_NAME
+from rockly_desktop.profiles.manifest import MANIFEST_NAME
 
 _ROBOT_CALL = re.compile(r"\brobot\.(\w+)\s*\(")
 

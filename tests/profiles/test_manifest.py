@@ -6,8 +6,8 @@ import pytest
 from profile_copies import SHARED_TOOLBOXES, EditableProfile, copy_profile
 
 from rockly_desktop.core.errors import ManifestError
-from rockly_desktop.plugins.manifest import MANIFEST_FIELDS, read_manifest
-from rockly_desktop.plugins.profile import load_profile
+from rockly_desktop.profiles.manifest import MANIFEST_FIELDS, read_manifest
+from rockly_desktop.profiles.profile import load_profile
 
 
 @pytest.fixture

@@ -18,7 +18,7 @@ CLIENT = r"""
 import json, math, sys
 import rosgraph
 from rockly_desktop.executor.robot_link import RosRobot
-from rockly_desktop.plugins.registry import ProfileRegistry
+from rockly_desktop.profiles.registry import ProfileRegistry
 from rockly_desktop.robot.interrupt import Interrupt
 
 profile = ProfileRegistry.discover().get("turtlebot")

@@ -7,10 +7,10 @@ from pathlib import Path
 
 from rockly_desktop.core.errors import ManifestError
 from rockly_desktop.core.ros_definitions import DefinitionCatalog
-from rockly_desktop.plugins.blocks import BlockSpec, read_blocks
-from rockly_desktop.plugins.i18n import localize
-from rockly_desktop.plugins.manifest import MANIFEST_NAME, read_manifest
-from rockly_desktop.plugins.toolbox import read_toolbox, shared_definition_files, toolbox_json
+from rockly_desktop.profiles.blocks import BlockSpec, read_blocks
+from rockly_desktop.profiles.i18n import localize
+from rockly_desktop.profiles.manifest import MANIFEST_NAME, read_manifest
+from rockly_desktop.profiles.toolbox import read_toolbox, shared_definition_files, toolbox_json
 
 
 @dataclass(frozen=True, eq=False)
