@@ -1,5 +1,5 @@
 """Building Blockly JSON workspaces and .rockly documents in tests, readably."""
-import json
+from rockly_desktop.core import deep_json
 
 
 def block(block_type, fields=None, inputs=None, next_block=None, **extra):
@@ -38,5 +38,5 @@ def workspace(*top_blocks):
 
 def rockly_document(top_blocks, profile="hobbit") -> str:
     """The text of a .rockly file holding ``top_blocks``."""
-    return json.dumps({"format": "rockly-program", "version": 1, "profile": profile,
+    return deep_json.dumps({"format": "rockly-program", "version": 1, "profile": profile,
                        "workspace": workspace(*top_blocks)})

@@ -223,3 +223,28 @@ def test_the_older_plugins_verb_still_lists_the_profiles():
     result = rockly("plugins", "list")
     assert result.returncode == 0
     assert "hobbit" in result.stdout
+
+
+def test_a_program_of_600_blocks_in_one_stack_exports_and_runs(tmp_path):
+    blocks = [block("text_print", inputs={"TEXT": text(f"line {i}")}) for i in range(600)]
+    source = tmp_path / "long.rockly"
+    source.write_text(rockly_document([stack(*blocks)]), encoding="utf-8")
+
+    exported = rockly("export", source, "-o", "-")
+    ran = rockly("run", source)
+
+    assert exported.returncode == 0, exported.stderr
+    assert exported.stdout.count("print(") == 600
+    assert ran.returncode == 0, ran.stderr
+    assert "print   line 599" in ran.stdout
+
+
+def test_half_an_emoji_in_a_comment_exports_to_standard_output(tmp_path):
+    commented = block("hobbit_stop", icons={"comment": {"text": "half \ud83d an emoji", "pinned": False}})
+    source = tmp_path / "comment.rockly"
+    source.write_text(rockly_document([commented]), encoding="utf-8")
+
+    result = rockly("export", source, "-o", "-")
+
+    assert result.returncode == 0, result.stderr
+    assert "half \ufffd an emoji" in result.stdout

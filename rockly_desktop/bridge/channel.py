@@ -5,10 +5,11 @@ are matched to their callbacks by id; replies for a page that has since been rel
 are dropped.
 """
 import itertools
-import json
 import logging
 
 from PySide6.QtCore import QObject, QTimer, Signal, Slot
+
+from rockly_desktop.core import deep_json
 
 log = logging.getLogger(__name__)
 
@@ -57,7 +58,7 @@ class PageChannel(QObject):
         for ``setup`` itself).
         """
         call_id = next(self._ids)
-        message = json.dumps({"call": name, "id": call_id, "args": args or {}})
+        message = deep_json.dumps({"call": name, "id": call_id, "args": args or {}})
         if self._open or immediately:
             self._send(message, call_id, callback)
         else:
@@ -75,8 +76,8 @@ class PageChannel(QObject):
 
     def _dispatch(self, text: str):
         try:
-            message = json.loads(text)
-        except json.JSONDecodeError:
+            message = deep_json.loads(text)  # a stack of 500+ blocks is too deep for json.loads
+        except ValueError:
             log.error("editor page sent a message that is not JSON: %.200s", text)
             return
         if "reply" in message:

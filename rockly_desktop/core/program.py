@@ -8,18 +8,22 @@ A file looks like::
 Reading never changes the file; writing is atomic (temp file, fsync, rename), through
 symbolic links to their target.
 """
+import glob
 import json
 import os
 import stat
 import tempfile
+import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from rockly_desktop.core import deep_json
 from rockly_desktop.core.errors import ProgramFileError
 
 FORMAT_NAME = "rockly-program"
 FORMAT_VERSION = 1
 PROGRAM_SUFFIX = ".rockly"
+MAX_FILE_BYTES = 64 * 1024 * 1024  # a 10,000-block program is about 3 MB
 
 
 @dataclass
@@ -31,7 +35,10 @@ class Program:
     breakpoints: list = field(default_factory=list)
 
     def to_json(self) -> str:
-        """The file's text, stable and readable in a diff."""
+        """The file's text, stable and readable in a diff (compact when very deeply nested).
+
+        A lone surrogate (half of an emoji, from a broken paste) cannot be written as
+        UTF-8; such a document is written with ``\\u`` escapes instead."""
         document = {
             "format": FORMAT_NAME,
             "version": FORMAT_VERSION,
@@ -39,7 +46,12 @@ class Program:
             "workspace": self.workspace,
             "breakpoints": list(self.breakpoints),
         }
-        return json.dumps(document, indent=1, ensure_ascii=False, sort_keys=False) + "\n"
+        text = deep_json.dumps(document, indent=1, ensure_ascii=False)
+        try:
+            text.encode("utf-8")
+        except UnicodeEncodeError:
+            text = deep_json.dumps(document, indent=1, ensure_ascii=True)
+        return text + "\n"
 
 
 def parse_program(text: str, path="<text>") -> Program:
@@ -47,13 +59,14 @@ def parse_program(text: str, path="<text>") -> Program:
     if not text.strip():
         raise ProgramFileError(path, "the file is empty")
     try:
-        document = json.loads(text)
+        document = deep_json.loads(text)
     except json.JSONDecodeError as error:
         raise ProgramFileError(
-            path, f"this is not a complete Rockly program (broken JSON at line {error.lineno}, column {error.colno}: {error.msg})"
+            path, f"this is not a complete Rockly program (broken JSON at line {error.lineno}, "
+                  f"column {error.colno}: {error.msg})"
         ) from None
-    except RecursionError:
-        raise ProgramFileError(path, "this is not a Rockly program (the JSON is nested too deeply)") from None
+    except ValueError as error:  # a number that is not finite, or nesting past deep_json.MAX_DEPTH
+        raise ProgramFileError(path, f"this is not a Rockly program ({error})") from None
     if not isinstance(document, dict) or document.get("format") != FORMAT_NAME:
         raise ProgramFileError(path, "this is not a Rockly program (no \"format\": \"rockly-program\")")
     version = document.get("version")
@@ -75,17 +88,30 @@ def parse_program(text: str, path="<text>") -> Program:
     return Program(profile_id=profile_id, workspace=workspace, breakpoints=breakpoints)
 
 
-def read_text_file(path) -> str:
-    """Read a UTF-8 text file, turning every failure into a ProgramFileError."""
+def read_text_file(path, max_bytes: int = MAX_FILE_BYTES) -> str:
+    """Read a UTF-8 text file, turning every failure into a ProgramFileError.
+
+    Only regular files of at most ``max_bytes`` are read: a FIFO would block forever and
+    a link to ``/dev/zero`` would fill the memory.
+    """
     path = Path(path)
     try:
-        data = path.read_bytes()
+        info = os.stat(path)
+        if stat.S_ISDIR(info.st_mode):
+            raise ProgramFileError(path, "this is a folder, not a file")
+        if not stat.S_ISREG(info.st_mode):
+            raise ProgramFileError(path, "this is not a regular file (a device, a pipe or a socket), so it is not opened")
+        with open(path, "rb") as stream:
+            data = stream.read(max_bytes + 1)
     except FileNotFoundError:
         raise ProgramFileError(path, "the file does not exist") from None
     except IsADirectoryError:
         raise ProgramFileError(path, "this is a folder, not a file") from None
     except OSError as error:
         raise ProgramFileError(path, f"the file cannot be read ({error.strerror})") from None
+    if len(data) > max_bytes:
+        raise ProgramFileError(path, f"the file is larger than {max_bytes // (1024 * 1024)} MB; "
+                                     f"no Rockly program is that big")
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError:
@@ -141,6 +167,7 @@ def _replace_file(path: Path, target: Path, data: bytes, mode: int) -> None:
     """Write ``data`` to a temporary file next to ``target`` and rename it over ``target``;
     errors name ``path`` (what the person asked for)."""
     folder = target.parent if str(target.parent) else Path(".")
+    remove_stale_temp_files(target)
     try:
         handle, temp_name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
     except OSError as error:
@@ -160,6 +187,34 @@ def _replace_file(path: Path, target: Path, data: bytes, mode: int) -> None:
         if isinstance(error, OSError):
             raise ProgramFileError(path, f"the file could not be saved ({error.strerror})") from None
         raise
+
+
+STALE_TEMP_SECONDS = 60  # older than any save still writing
+
+
+def remove_stale_temp_files(target) -> int:
+    """Delete temporary files an interrupted save of ``target`` left beside it (a crash or
+    kill -9 between writing and renaming); returns how many. Only files of our own naming
+    (``.NAME.XXXXXXXX.tmp``) that no save can still be writing are touched."""
+    target = Path(target)
+    folder = target.parent if str(target.parent) else Path(".")
+    removed = 0
+    now = time.time()
+    try:
+        candidates = list(folder.glob(f".{glob.escape(target.name)}.*.tmp"))
+    except OSError:
+        return 0
+    for candidate in candidates:
+        middle = candidate.name[len(target.name) + 2:-len(".tmp")]
+        try:
+            info = candidate.lstat()
+            if (len(middle) == 8 and stat.S_ISREG(info.st_mode)
+                    and now - info.st_mtime > STALE_TEMP_SECONDS):
+                candidate.unlink()
+                removed += 1
+        except OSError:
+            continue
+    return removed
 
 
 def _new_file_mode() -> int:

@@ -1,7 +1,11 @@
-"""Which block types a program uses, from Blockly's JSON or the first Rockly's XML."""
-import copy
+"""Which block types a program uses, from Blockly's JSON or the first Rockly's XML.
+
+Everything here walks the blocks with an explicit stack, never by recursion: a program's
+blocks nest one level per ``next``, far deeper than Python's recursion limit.
+"""
 import xml.etree.ElementTree as ElementTree
 from collections import Counter
+from xml.sax.saxutils import escape, quoteattr
 
 from rockly_desktop.core.errors import ProgramFileError
 
@@ -19,10 +23,7 @@ def iter_blocks(workspace: dict):
         if not isinstance(block, dict):
             continue
         yield block
-        inputs = block.get("inputs")
-        for connection in (list(inputs.values()) if isinstance(inputs, dict) else []) + [block.get("next")]:
-            if isinstance(connection, dict):
-                pending.extend(connection.get(kind) for kind in ("block", "shadow") if connection.get(kind))
+        pending.extend(_child_blocks(block))
 
 
 def blocks_in_file_order(workspace: dict):
@@ -44,6 +45,45 @@ def blocks_in_file_order(workspace: dict):
                 if isinstance(connection, dict):
                     children.extend(child for kind, child in connection.items() if kind in ("block", "shadow") and child)
         pending.extend(reversed(children))
+
+
+# Blocks inside one another (a stack counts one level per block). The editor page's
+# JavaScript runs out of stack loading a stack of 1,200-1,600 blocks.
+MAX_BLOCK_DEPTH = 1000
+
+
+def _child_blocks(block: dict):
+    inputs = block.get("inputs")
+    for connection in (list(inputs.values()) if isinstance(inputs, dict) else []) + [block.get("next")]:
+        if isinstance(connection, dict):
+            for kind in ("block", "shadow"):
+                if isinstance(connection.get(kind), dict):
+                    yield connection[kind]
+
+
+def block_depth(workspace: dict) -> int:
+    """How many blocks deep the workspace nests at its deepest (a lone block is 1)."""
+    top = workspace.get("blocks")
+    top_blocks = top.get("blocks") if isinstance(top, dict) else None
+    pending = [(block, 1) for block in top_blocks if isinstance(block, dict)] if isinstance(top_blocks, list) else []
+    deepest = 0
+    while pending:
+        block, depth = pending.pop()
+        deepest = max(deepest, depth)
+        pending.extend((child, depth + 1) for child in _child_blocks(block))
+    return deepest
+
+
+def xml_block_depth(root: ElementTree.Element) -> int:
+    """How many ``<block>``/``<shadow>`` elements deep parsed Blockly XML nests at its deepest."""
+    pending, deepest = [(root, 0)], 0
+    while pending:
+        element, depth = pending.pop()
+        if _local_name(element.tag) in ("block", "shadow"):
+            depth += 1
+            deepest = max(deepest, depth)
+        pending.extend((child, depth) for child in element)
+    return deepest
 
 
 def untyped_block_number(workspace: dict):
@@ -121,14 +161,26 @@ def xml_to_text(root: ElementTree.Element) -> str:
     ``<ns0:block>``, which Blockly does not recognise); a namespace the root had is kept
     as its plain ``xmlns`` attribute.
     """
-    plain = copy.deepcopy(root)
     namespace = root.tag[1:].split("}", 1)[0] if root.tag.startswith("{") else None
-    for element in plain.iter():
-        if isinstance(element.tag, str):
-            element.tag = _local_name(element.tag)
-    if namespace:
-        plain.set("xmlns", namespace)
-    return ElementTree.tostring(plain, encoding="unicode")
+    parts = []
+    pending = [(root, False)]  # (element, its end tag is next)
+    while pending:
+        element, closing = pending.pop()
+        tag = _local_name(element.tag)
+        if closing:
+            parts.append(f"</{tag}>{escape(element.tail or '')}")
+            continue
+        attributes = {_local_name(name): value for name, value in element.attrib.items()}
+        if element is root and namespace:
+            attributes["xmlns"] = namespace
+        parts.append(f"<{tag}" + "".join(f" {name}={quoteattr(value)}" for name, value in attributes.items()))
+        if len(element) == 0 and not element.text:
+            parts.append(f" />{escape(element.tail or '')}")
+            continue
+        parts.append(">" + escape(element.text or ""))
+        pending.append((element, True))
+        pending.extend((child, False) for child in reversed(element))
+    return "".join(parts)
 
 
 def block_types_by_id(workspace: dict) -> dict:

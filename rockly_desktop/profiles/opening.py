@@ -15,8 +15,8 @@ from pathlib import Path
 from rockly_desktop.core.errors import ProgramFileError, UnknownBlocksError
 from rockly_desktop.core.program import load_program, read_text_file
 from rockly_desktop.core.workspace_blocks import (
-    block_types_in_workspace, block_types_in_xml, parse_blockly_xml, rename_legacy_fields, untyped_block_number,
-    untyped_xml_block_number, xml_to_text,
+    MAX_BLOCK_DEPTH, block_depth, block_types_in_workspace, block_types_in_xml, parse_blockly_xml,
+    rename_legacy_fields, untyped_block_number, untyped_xml_block_number, xml_block_depth, xml_to_text,
 )
 from rockly_desktop.profiles.profile import Profile
 from rockly_desktop.profiles.registry import ProfileRegistry
@@ -72,11 +72,13 @@ def read_program_to_open(path, registry: ProfileRegistry, fallback: Profile) -> 
     path = Path(path)
     if path.suffix.lower() == XML_SUFFIX:
         root = parse_blockly_xml(read_text_file(path), path)
+        _refuse_too_deep(path, xml_block_depth(root))
         _refuse_untyped(path, untyped_xml_block_number(root))
         profile = _best_profile_for(set(block_types_in_xml(root)), registry, fallback)
         rename_legacy_fields(root, profile.legacy_fields)
         return ProgramToOpen(path, profile, xml=xml_to_text(root))
     program = load_program(path)
+    _refuse_too_deep(path, block_depth(program.workspace))
     _refuse_untyped(path, untyped_block_number(program.workspace))
     if program.profile_id in registry.profiles:
         profile, missing = registry.get(program.profile_id), None
@@ -86,6 +88,12 @@ def read_program_to_open(path, registry: ProfileRegistry, fallback: Profile) -> 
     return ProgramToOpen(path, profile, workspace=program.workspace, declared_profile=program.profile_id,
                          breakpoints=tuple(program.breakpoints), missing_profile=missing,
                          installed_profiles=tuple(registry.profiles) if missing else ())
+
+
+def _refuse_too_deep(path, depth: int):
+    if depth > MAX_BLOCK_DEPTH:
+        raise ProgramFileError(path, f"the program has {depth:,} blocks inside or under one another; Rockly's "
+                                     f"editor takes up to {MAX_BLOCK_DEPTH:,} (split long stacks into functions)")
 
 
 def _refuse_untyped(path, number):
