@@ -106,6 +106,10 @@ def test_export_reads_first_rockly_xml(tmp_path):
     ('{"format": "rockly-program", "version": 1, "prof', "broken JSON"),
     ('{"format": "rockly-program", "version": 7, "profile": "hobbit", "workspace": {}}', "newer Rockly"),
     (rockly_document([block("hobbit_fly")]), "hobbit_fly"),
+    (rockly_document([block("math_number", {"NUM": 1})]).replace('1}', 'NaN}'), "NaN is not a number"),
+    (rockly_document([block("math_number", {"NUM": 1})]).replace('1}', '1e400}'), "1e400 is too large"),
+    (rockly_document([block("text_join", extraState={"itemCount": 100_000_000})]), "asks for 100,000,000"),
+    (rockly_document([block("text", {"TEXT": ["a"]})]), "block 1 (text): its field TEXT holds list"),
 ])
 def test_export_of_a_bad_program_fails_with_a_message_and_writes_nothing(tmp_path, content, message):
     program = tmp_path / "bad.rockly"

@@ -79,7 +79,7 @@ def xml_block_depth(root: ElementTree.Element) -> int:
     pending, deepest = [(root, 0)], 0
     while pending:
         element, depth = pending.pop()
-        if _local_name(element.tag) in ("block", "shadow"):
+        if local_name(element.tag) in ("block", "shadow"):
             depth += 1
             deepest = max(deepest, depth)
         pending.extend((child, depth) for child in element)
@@ -103,7 +103,8 @@ def block_types_in_workspace(workspace: dict) -> Counter:
     return counts
 
 
-def _local_name(tag: str) -> str:
+def local_name(tag: str) -> str:
+    """An XML tag or attribute name without its namespace."""
     return tag.rsplit("}", 1)[-1]
 
 
@@ -115,21 +116,21 @@ def parse_blockly_xml(text: str, path="<text>") -> ElementTree.Element:
         root = ElementTree.fromstring(text)
     except ElementTree.ParseError as error:
         raise ProgramFileError(path, f"this is not valid Blockly XML ({error})") from None
-    if _local_name(root.tag) != "xml":
-        raise ProgramFileError(path, f"this is not a Blockly program (the top element is <{_local_name(root.tag)}>, not <xml>)")
+    if local_name(root.tag) != "xml":
+        raise ProgramFileError(path, f"this is not a Blockly program (the top element is <{local_name(root.tag)}>, not <xml>)")
     return root
 
 
 def block_types_in_xml(root: ElementTree.Element) -> Counter:
     """Count the block types in parsed Blockly XML."""
     return Counter(
-        element.get("type") or "(block without a type)" for element in root.iter() if _local_name(element.tag) in ("block", "shadow")
+        element.get("type") or "(block without a type)" for element in root.iter() if local_name(element.tag) in ("block", "shadow")
     )
 
 
 def untyped_xml_block_number(root: ElementTree.Element):
     """The number (from 1, in document order) of the first ``<block>``/``<shadow>`` without a type, or None."""
-    elements = (element for element in root.iter() if _local_name(element.tag) in ("block", "shadow"))
+    elements = (element for element in root.iter() if local_name(element.tag) in ("block", "shadow"))
     for number, element in enumerate(elements, start=1):
         if not element.get("type"):
             return number
@@ -143,11 +144,11 @@ def rename_legacy_fields(root: ElementTree.Element, aliases: dict) -> int:
     """
     changed = 0
     for element in root.iter():
-        if _local_name(element.tag) not in ("block", "shadow"):
+        if local_name(element.tag) not in ("block", "shadow"):
             continue
         for old_name, alias in aliases.get(element.get("type"), {}).items():
             for child in element:
-                if _local_name(child.tag) == "field" and child.get("name") == old_name:
+                if local_name(child.tag) == "field" and child.get("name") == old_name:
                     child.set("name", alias["field"])
                     child.text = alias.get("values", {}).get(child.text, child.text)
                     changed += 1
@@ -166,11 +167,11 @@ def xml_to_text(root: ElementTree.Element) -> str:
     pending = [(root, False)]  # (element, its end tag is next)
     while pending:
         element, closing = pending.pop()
-        tag = _local_name(element.tag)
+        tag = local_name(element.tag)
         if closing:
             parts.append(f"</{tag}>{escape(element.tail or '')}")
             continue
-        attributes = {_local_name(name): value for name, value in element.attrib.items()}
+        attributes = {local_name(name): value for name, value in element.attrib.items()}
         if element is root and namespace:
             attributes["xmlns"] = namespace
         parts.append(f"<{tag}" + "".join(f" {name}={quoteattr(value)}" for name, value in attributes.items()))

@@ -14,6 +14,7 @@ from pathlib import Path
 
 from rockly_desktop.core.errors import ProgramFileError, UnknownBlocksError
 from rockly_desktop.core.program import load_program, read_text_file
+from rockly_desktop.core.workspace_checks import workspace_problem, xml_problem
 from rockly_desktop.core.workspace_blocks import (
     MAX_BLOCK_DEPTH, block_depth, block_types_in_workspace, block_types_in_xml, parse_blockly_xml,
     rename_legacy_fields, untyped_block_number, untyped_xml_block_number, xml_block_depth, xml_to_text,
@@ -74,12 +75,14 @@ def read_program_to_open(path, registry: ProfileRegistry, fallback: Profile) -> 
         root = parse_blockly_xml(read_text_file(path), path)
         _refuse_too_deep(path, xml_block_depth(root))
         _refuse_untyped(path, untyped_xml_block_number(root))
+        _refuse_broken(path, xml_problem(root))
         profile = _best_profile_for(set(block_types_in_xml(root)), registry, fallback)
         rename_legacy_fields(root, profile.legacy_fields)
         return ProgramToOpen(path, profile, xml=xml_to_text(root))
     program = load_program(path)
     _refuse_too_deep(path, block_depth(program.workspace))
     _refuse_untyped(path, untyped_block_number(program.workspace))
+    _refuse_broken(path, workspace_problem(program.workspace))
     if program.profile_id in registry.profiles:
         profile, missing = registry.get(program.profile_id), None
     else:
@@ -99,6 +102,11 @@ def _refuse_too_deep(path, depth: int):
 def _refuse_untyped(path, number):
     if number is not None:
         raise ProgramFileError(path, f"the file is broken: block {number} has no type")
+
+
+def _refuse_broken(path, problem):
+    if problem is not None:
+        raise ProgramFileError(path, f"the file is broken: {problem}")
 
 
 def unknown_blocks_error(program: ProgramToOpen, unknown_types, registry: ProfileRegistry) -> UnknownBlocksError:

@@ -403,6 +403,9 @@ BAD_CONTENTS = [
     ("workspace a string", json.dumps(valid_document(workspace="<xml/>")).encode(), '"workspace" must be an object'),
     ("workspace null", json.dumps(valid_document(workspace=None)).encode(), '"workspace" must be an object'),
     ("nested too deeply", b"[" * 200_000, "nested too deeply"),
+    ("NaN", json.dumps(valid_document(workspace={"x": float("nan")})).encode(), "NaN is not a number JSON allows"),
+    ("Infinity", json.dumps(valid_document(workspace={"x": float("inf")})).encode(), "Infinity is not a number"),
+    ("1e400", json.dumps(valid_document(workspace={"x": 1})).replace('1}', '1e400}').encode(), "1e400 is too large"),
 ]
 
 
