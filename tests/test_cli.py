@@ -1,4 +1,5 @@
 """The ``rockly`` command, run as a user runs it (a real process)."""
+import json
 import os
 import shutil
 import stat
@@ -252,3 +253,21 @@ def test_half_an_emoji_in_a_comment_exports_to_standard_output(tmp_path):
 
     assert result.returncode == 0, result.stderr
     assert "half \ufffd an emoji" in result.stdout
+
+
+@pytest.mark.parametrize("name", ["robot", "ros", "__rockly__"])
+def test_a_variable_named_like_what_a_run_binds_does_not_break_the_program(tmp_path, name):
+    document = json.loads(rockly_document([stack(
+        block("variables_set", {"VAR": {"id": "v1"}}, inputs={"VALUE": block("math_number", {"NUM": 5})}),
+        block("hobbit_emo", {"emotion": "HAPPY"}),
+        block("ros_wait", inputs={"seconds": block("math_number", {"NUM": 0})}),
+        block("text_print", inputs={"TEXT": block("variables_get", {"VAR": {"id": "v1"}})}),
+    )]))
+    document["workspace"]["variables"] = [{"name": name, "id": "v1"}]
+    source = tmp_path / "names.rockly"
+    source.write_text(json.dumps(document), encoding="utf-8")
+
+    result = rockly("run", source)
+
+    assert result.returncode == 0, result.stderr
+    assert "print   5" in result.stdout

@@ -39,6 +39,10 @@
   // unescaped, so an id from a crafted file could become code. Quote them properly.
   python.pythonGenerator.injectId = (message, block) =>
     message.replace(/%1/g, () => RocklyPython.string(block.id));
+  // The names a run binds for the program: a variable or function of the same name
+  // ("robot = 5") would replace them, so Blockly renames those ("robot2"), as it does
+  // for Python's keywords.
+  python.pythonGenerator.addReservedWords('robot,ros,__rockly__');
 
   function loadScript(src) {
     return new Promise((resolve, reject) => {
