@@ -271,3 +271,15 @@ def test_a_variable_named_like_what_a_run_binds_does_not_break_the_program(tmp_p
 
     assert result.returncode == 0, result.stderr
     assert "print   5" in result.stdout
+
+
+def test_a_whole_number_too_large_to_keep_exactly_is_warned_about(tmp_path):
+    source = tmp_path / "big-number.rockly"
+    source.write_text(rockly_document([block("text_print", inputs={"TEXT": block("math_number", {"NUM": 1})})])
+                      .replace('"NUM": 1', '"NUM": 12345678901234567890'), encoding="utf-8")
+
+    result = rockly("run", source)
+
+    assert result.returncode == 0, result.stderr
+    assert ("warning: block 2 (math_number): NUM 12345678901234567890 is too large to keep exactly; "
+            "it became 12345678901234567000") in result.stderr

@@ -10,6 +10,7 @@ import xml.etree.ElementTree as ElementTree
 from rockly_desktop.core.workspace_blocks import blocks_in_file_order, local_name
 
 MAX_EXTRA_ITEMS = 1000  # inputs a block may grow (text join items, else-ifs, parameters, typed fields)
+EXACT_INTEGERS = 2 ** 53  # JavaScript's numbers hold whole numbers exactly up to here
 
 _SCALAR = (str, int, float, bool)
 
@@ -84,6 +85,32 @@ def workspace_problem(workspace: dict):
         if problem:
             return f"{_where(number, block)}: {problem}"
     return None
+
+
+def _as_javascript_writes(value: float) -> str:
+    """A float as JavaScript's ``String(number)`` writes it (whole numbers below 1e21 in full)."""
+    text = repr(value)
+    if "e" not in text or abs(value) >= 1e21:
+        return text.removesuffix(".0")
+    mantissa, exponent = text.split("e")
+    sign, mantissa = ("-", mantissa[1:]) if mantissa.startswith("-") else ("", mantissa)
+    whole, _, fraction = mantissa.partition(".")
+    return sign + (whole + fraction).ljust(len(whole) + int(exponent), "0")
+
+
+def rounded_numbers(workspace: dict) -> list:
+    """Whole numbers in fields too large for the editor to keep exactly (above 2**53), as
+    ``{number, id, type, field, requested, now, rounded}`` like the page's replaced field values."""
+    rounded = []
+    for number, block in enumerate(blocks_in_file_order(workspace), start=1):
+        fields = block.get("fields")
+        for name, value in (fields.items() if isinstance(fields, dict) else ()):
+            if isinstance(value, int) and not isinstance(value, bool) and abs(value) > EXACT_INTEGERS:
+                now = _as_javascript_writes(float(value))
+                if now != str(value):
+                    rounded.append({"number": number, "id": block.get("id"), "type": block.get("type"),
+                                    "field": name, "requested": value, "now": now, "rounded": True})
+    return rounded
 
 
 def xml_problem(root: ElementTree.Element):

@@ -14,7 +14,7 @@ from pathlib import Path
 
 from rockly_desktop.core.errors import ProgramFileError, UnknownBlocksError
 from rockly_desktop.core.program import load_program, read_text_file
-from rockly_desktop.core.workspace_checks import workspace_problem, xml_problem
+from rockly_desktop.core.workspace_checks import rounded_numbers, workspace_problem, xml_problem
 from rockly_desktop.core.workspace_blocks import (
     MAX_BLOCK_DEPTH, block_depth, block_types_in_workspace, block_types_in_xml, parse_blockly_xml,
     rename_legacy_fields, untyped_block_number, untyped_xml_block_number, xml_block_depth, xml_to_text,
@@ -40,10 +40,12 @@ class ProgramToOpen:
     # What the editor page replaced when it showed the program: one dict per field value it
     # could not keep ({number, id, type, field, requested, now}); set from the page's answer.
     replaced_fields: list = field(default_factory=list, compare=False)
+    # Whole numbers too large for the editor to keep exactly, in the same form (known before the page).
+    rounded_numbers: tuple = ()
 
     def take_load_result(self, result: dict):
-        """Keep what the page says it had to change while loading this program."""
-        self.replaced_fields[:] = (result or {}).get("replacedFields") or []
+        """Keep what the page says it had to change while loading this program (and the numbers it rounds)."""
+        self.replaced_fields[:] = [*self.rounded_numbers, *((result or {}).get("replacedFields") or [])]
 
     @property
     def is_import(self) -> bool:
@@ -90,7 +92,8 @@ def read_program_to_open(path, registry: ProfileRegistry, fallback: Profile) -> 
         missing = program.profile_id
     return ProgramToOpen(path, profile, workspace=program.workspace, declared_profile=program.profile_id,
                          breakpoints=tuple(program.breakpoints), missing_profile=missing,
-                         installed_profiles=tuple(registry.profiles) if missing else ())
+                         installed_profiles=tuple(registry.profiles) if missing else (),
+                         rounded_numbers=tuple(rounded_numbers(program.workspace)))
 
 
 def _refuse_too_deep(path, depth: int):
@@ -121,6 +124,9 @@ def describe_replaced_field(entry: dict) -> str:
     requested = entry.get("requested")
     if entry.get("missing"):
         return f"{where}: the block has no field {entry.get('field')}; its value {requested!r} was left out"
+    if entry.get("rounded"):
+        return (f"{where}: {entry.get('field')} {requested} is too large to keep exactly; "
+                f"it became {entry.get('now')}")
     return f"{where}: {entry.get('field')} {requested!r} is not a value this block accepts; it was replaced by {entry.get('now')!r}"
 
 
