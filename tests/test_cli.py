@@ -283,3 +283,17 @@ def test_a_whole_number_too_large_to_keep_exactly_is_warned_about(tmp_path):
     assert result.returncode == 0, result.stderr
     assert ("warning: block 2 (math_number): NUM 12345678901234567890 is too large to keep exactly; "
             "it became 12345678901234567000") in result.stderr
+
+
+def test_a_power_too_large_to_compute_ends_the_run_with_a_plain_error(tmp_path):
+    power = block("math_arithmetic", {"OP": "POWER"}, inputs={"A": block("math_number", {"NUM": 9}),
+                                                              "B": block("math_number", {"NUM": 999999999})})
+    source = tmp_path / "power.rockly"
+    source.write_text(rockly_document([block("text_print", inputs={"TEXT": power})]), encoding="utf-8")
+
+    ran = rockly("run", source, timeout=60)
+    exported = rockly("export", source, "-o", "-")
+
+    assert ran.returncode == 1
+    assert "The number is too big." in ran.stderr
+    assert "print(9 ** 999999999)" in exported.stdout  # exported Python keeps the plain operator

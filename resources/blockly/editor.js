@@ -43,6 +43,7 @@
   // ("robot = 5") would replace them, so Blockly renames those ("robot2"), as it does
   // for Python's keywords.
   python.pythonGenerator.addReservedWords('robot,ros,__rockly__');
+  guardLargeResults(python.pythonGenerator, python.Order);
 
   function loadScript(src) {
     return new Promise((resolve, reject) => {
@@ -144,9 +145,33 @@
     });
   }
 
+  /**
+   * In the code Rockly runs, powers, products and repeated lists go through `__rockly__`,
+   * which refuses results too large to compute in a blink: one `9 ** 999999999` would hold
+   * Python for minutes, where no STOP can reach it. Exported Python keeps the operators.
+   */
+  function guardLargeResults(generator, Order) {
+    const arithmetic = generator.forBlock['math_arithmetic'];
+    generator.forBlock['math_arithmetic'] = function(block, gen) {
+      const guard = {POWER: 'power', MULTIPLY: 'times'}[block.getFieldValue('OP')];
+      if (!gen.rocklyGuarded || !guard) return arithmetic.call(this, block, gen);
+      const a = gen.valueToCode(block, 'A', Order.NONE) || '0';
+      const b = gen.valueToCode(block, 'B', Order.NONE) || '0';
+      return [`__rockly__.${guard}(${a}, ${b})`, Order.FUNCTION_CALL];
+    };
+    const repeat = generator.forBlock['lists_repeat'];
+    generator.forBlock['lists_repeat'] = function(block, gen) {
+      if (!gen.rocklyGuarded) return repeat.call(this, block, gen);
+      const item = gen.valueToCode(block, 'ITEM', Order.NONE) || 'None';
+      const count = gen.valueToCode(block, 'NUM', Order.NONE) || '0';
+      return [`__rockly__.times([${item}], ${count})`, Order.FUNCTION_CALL];
+    };
+  }
+
   /** The program as it runs: a hook before every statement and in every loop, and its variables. */
   function runCode() {
     const generator = python.pythonGenerator;
+    generator.rocklyGuarded = true;
     generator.STATEMENT_PREFIX = '__rockly__.block(%1)\n';
     generator.INFINITE_LOOP_TRAP = '__rockly__.check()\n';
     try {
@@ -160,6 +185,7 @@
       const code = generator.workspaceToCode(workspace);
       return {code, variables, breakpoints: [...breakpoints]};
     } finally {
+      generator.rocklyGuarded = false;
       generator.STATEMENT_PREFIX = null;
       generator.INFINITE_LOOP_TRAP = null;
     }

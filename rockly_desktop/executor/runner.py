@@ -13,6 +13,7 @@ import tokenize
 import traceback
 
 from rockly_desktop.core.errors import ProgramStopped
+from rockly_desktop.executor import large_results
 from rockly_desktop.executor.events import BlockEntered, OutputPrinted, RunFinished, RunPaused, RunResumed, VariablesChanged
 from rockly_desktop.executor.problems import explain, text
 
@@ -28,6 +29,9 @@ _SHORT.maxlevel = 3
 
 class BlockHooks:
     """The ``__rockly__`` object the instrumented program calls."""
+
+    power = staticmethod(large_results.power)
+    times = staticmethod(large_results.times)
 
     def __init__(self, control, emit, variables):
         self._control = control
