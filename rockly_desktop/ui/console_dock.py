@@ -22,13 +22,22 @@ class ConsoleDock(QDockWidget):
 
     def append(self, text: str, kind: str = "output"):
         """Add one line, stamped with the time of day."""
+        self.append_lines([text], kind)
+
+    def append_lines(self, lines, kind: str = "output"):
+        """Add several lines at once (one redraw), each stamped with the time of day."""
+        lines = list(lines)[-MAX_LINES:]
+        if not lines:
+            return
         text_format = QTextCharFormat()
         text_format.setForeground(QColor(_COLOURS.get(kind, _COLOURS["output"])))
         cursor = self.view.textCursor()
         cursor.movePosition(cursor.MoveOperation.End)
-        if not self.view.document().isEmpty():
-            cursor.insertBlock()
-        cursor.insertText(f"{time.strftime('%H:%M:%S')}  {text}", text_format)
+        stamp = time.strftime("%H:%M:%S")
+        for line in lines:
+            if not self.view.document().isEmpty():
+                cursor.insertBlock()
+            cursor.insertText(f"{stamp}  {line}", text_format)
         self.view.setTextCursor(cursor)
         self.view.ensureCursorVisible()
 

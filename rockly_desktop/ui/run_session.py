@@ -11,7 +11,7 @@ from PySide6.QtWidgets import QMessageBox
 
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.executor.control import RunControl
-from rockly_desktop.executor.events import OutputPrinted, RunFinished, RunPaused, RunResumed, VariablesChanged
+from rockly_desktop.executor.events import RunFinished, RunPaused, RunResumed, VariablesChanged
 from rockly_desktop.executor.qt_adapter import ProgramThread
 from rockly_desktop.executor.run_setup import make_runner
 from rockly_desktop.ui.message_boxes import plain_message_box
@@ -139,12 +139,23 @@ class RunSession(QObject):
     def _follow_run(self):
         if self.thread is None or self.state != "running":
             return
+        self._show_output()
         runner = self.thread.runner
         self._highlight(runner.hooks.current_block)
         self.window.variables.show_values(runner.variables_snapshot())
 
+    def _show_output(self):
+        """Show what the program printed since the last look, in one batch."""
+        if self.thread is None:
+            return
+        lines, skipped = self.thread.output.take()
+        if skipped:
+            self.window.console.append(tr("output_skipped", self.window.language, count=skipped), "info")
+        self.window.console.append_lines(lines)
+
     def _on_event(self, event):
         window = self.window
+        self._show_output()  # what was printed before the event comes first
         if isinstance(event, RunPaused):
             self._set_state("paused")
             self._highlight(event.block_id)
@@ -152,8 +163,6 @@ class RunSession(QObject):
             window.statusBar().showMessage(tr(key, window.language))
         elif isinstance(event, RunResumed):
             window.statusBar().clearMessage()
-        elif isinstance(event, OutputPrinted):
-            window.console.append(event.text)
         elif isinstance(event, VariablesChanged):
             window.variables.show_values(event.values)
         elif isinstance(event, RunFinished):

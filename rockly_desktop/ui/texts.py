@@ -123,6 +123,8 @@ _TEXTS = {
     "add_breakpoint": ("Pause here (breakpoint)", "Hier anhalten (Haltepunkt)"),
     "remove_breakpoint": ("Remove breakpoint", "Haltepunkt entfernen"),
     "run_started": ("Program started", "Programm gestartet"),
+    "output_skipped": ("… {count} more lines were printed too fast to show",
+                       "… {count} weitere Zeilen kamen zu schnell, um sie zu zeigen"),
     "run_empty": ("There is nothing to run yet: drag blocks from the list on the left into the workspace.",
                   "Noch gibt es nichts zu starten: Zieh Blöcke aus der Liste links auf die Arbeitsfläche."),
     "run_finished": ("Program finished", "Programm beendet"),
