@@ -8,8 +8,8 @@ from rockly_desktop.executor.events import OutputPrinted, RunFinished
 
 
 def run_code(editor, ws):
-    editor.view.call_blocking("load", {"workspace": ws})
-    return editor.view.call_blocking("getRunCode")
+    editor.call("load", {"workspace": ws})
+    return editor.call("getRunCode")
 
 
 def step_through(run):
