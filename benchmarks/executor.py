@@ -52,9 +52,9 @@ def time_run(code, control_factory, repeats=5):
 def per_block_overhead(editor):
     from rockly_desktop.executor.control import RunControl
 
-    editor.call("load", {"workspace": counting_loop()})
-    plain = editor.call("getState")["python"]
-    instrumented = editor.call("getRunCode")["code"]
+    editor.call_and_wait("load", {"workspace": counting_loop()})
+    plain = editor.call_and_wait("getState")["python"]
+    instrumented = editor.call_and_wait("getRunCode")["code"]
     baseline = time_run(plain, RunControl)
     measured = time_run(instrumented, RunControl)
     print(f"(a) {ITERATIONS:,}-iteration generated loop: plain {baseline * 1000:.1f} ms, instrumented "
@@ -178,7 +178,9 @@ def gui_responsiveness(tmp_settings):
     window.editor.call("load", {"workspace": ws}, lambda _result, _error: loop.quit())
     loop.exec()
     idle = event_loop_delays(app, 3)
-    window.runs.run()
+    window.runs.sig_state_changed.connect(lambda state: state == "running" and loop.quit())
+    window.runs.run()  # the run starts once the page has given its code
+    loop.exec()
     busy = event_loop_delays(app, 3)
     window.runs.stop()
     window.runs.shutdown()

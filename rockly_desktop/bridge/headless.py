@@ -51,15 +51,15 @@ class HeadlessEditor:
         are kept in ``program.replaced_fields``."""
         self.use_profile(program.profile)
         name, args = program.editor_call()
-        result = self.call(name, args)
+        result = self.call_and_wait(name, args)
         if result.get("untypedBlock"):
             raise ProgramFileError(program.path or "the program", f"the file is broken: block {result['untypedBlock']} has no type")
         if result.get("unknownTypes"):
             raise UnknownBlocks(result["unknownTypes"])
         program.take_load_result(result)
-        return self.call("getState")["python"]
+        return self.call_and_wait("getState")["python"]
 
-    def call(self, name: str, args=None, timeout_ms: int = ANSWER_TIMEOUT_MS):
+    def call_and_wait(self, name: str, args=None, timeout_ms: int = ANSWER_TIMEOUT_MS):
         """Run a page call and wait for its answer; raises RuntimeError on a page error or timeout."""
         if not self.view.is_ready:
             raise RuntimeError("the block editor is not set up (use_profile first)")
