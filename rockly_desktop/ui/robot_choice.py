@@ -74,7 +74,8 @@ class RobotChoice(QObject):
     def _connect(self) -> bool:
         language, profile = self.settings.language, self.document.profile
         remembered_uri, remembered_host = self.settings.ros_connection(profile.id)
-        dialog = ConnectionDialog(language, profile.display_name(language), remembered_uri, remembered_host, self.parent())
+        dialog = ConnectionDialog(language, profile.display_name(language), remembered_uri, remembered_host,
+                                  self.parent())
         if not dialog.exec():
             return False
         try:
