@@ -52,9 +52,9 @@ def time_run(code, control_factory, repeats=5):
 def per_block_overhead(editor):
     from rockly_desktop.executor.control import RunControl
 
-    editor.view.call_blocking("load", {"workspace": counting_loop()})
-    plain = editor.view.call_blocking("getState")["python"]
-    instrumented = editor.view.call_blocking("getRunCode")["code"]
+    editor.call_and_wait("load", {"workspace": counting_loop()})
+    plain = editor.call_and_wait("getState")["python"]
+    instrumented = editor.call_and_wait("getRunCode")["code"]
     baseline = time_run(plain, RunControl)
     measured = time_run(instrumented, RunControl)
     print(f"(a) {ITERATIONS:,}-iteration generated loop: plain {baseline * 1000:.1f} ms, instrumented "
@@ -175,9 +175,12 @@ def gui_responsiveness(tmp_settings):
                                                               "DO": block("math_change", {"VAR": {"id": "n"}}, {"DELTA": number(1)})})
     ws = workspace(stack(block("variables_set", {"VAR": {"id": "n"}}, {"VALUE": number(0)}), tight))
     ws["variables"] = [{"name": "n", "id": "n"}]
-    window.editor.call_blocking("load", {"workspace": ws})
+    window.editor.call("load", {"workspace": ws}, lambda _result, _error: loop.quit())
+    loop.exec()
     idle = event_loop_delays(app, 3)
-    window.runs.run()
+    window.runs.sig_state_changed.connect(lambda state: state == "running" and loop.quit())
+    window.runs.run()  # the run starts once the page has given its code
+    loop.exec()
     busy = event_loop_delays(app, 3)
     window.runs.stop()
     window.runs.shutdown()
@@ -185,7 +188,7 @@ def gui_responsiveness(tmp_settings):
     loop.exec()
     print(f"(c) GUI event-loop delay, idle window: p99 {p99(idle) * 1000:.1f} ms; while a tight loop runs at full "
           f"speed: p99 {p99(busy) * 1000:.1f} ms (aim <= 30 ms), ratio {p99(busy) / max(p99(idle), 1e-4):.1f}")
-    window.files.modified = False
+    window.document.modified = False
     window.close()
     window.deleteLater()
     # Delete the window (and its web page) now: a page left for interpreter exit crashes QtWebEngine.

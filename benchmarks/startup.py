@@ -80,7 +80,7 @@ def child_rockly(program: str, settings: str):
     def check():
         if code.toPlainText().count("\n") == BLOCK_COUNT // 2:
             print("READY", flush=True)
-            window.files.modified = False
+            window.document.modified = False
             app.quit()
 
     code.textChanged.connect(check)

@@ -111,8 +111,8 @@ def generate_headless(program_path, language: str = "en"):
     editor = HeadlessEditor(language)
     try:
         python = editor.python_for(program)
-        run_code = editor.view.call_blocking("getRunCode")
-        workspace = editor.view.call_blocking("getState")["workspace"]
+        run_code = editor.call_and_wait("getRunCode")
+        workspace = editor.call_and_wait("getState")["workspace"]
     except UnknownBlocks as refused:
         raise unknown_blocks_error(program, refused.block_types, registry) from None
     except RuntimeError as error:

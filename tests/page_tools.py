@@ -14,6 +14,17 @@ def run_js(qtbot, view, script: str):
     return answer.get("value")
 
 
+def call_page(qtbot, view, name: str, args=None, timeout=15000):
+    """Run a page call on an EditorView and wait for its answer (AssertionError on a page error)."""
+    answers = []
+    view.call(name, args, lambda result, error: answers.append((result, error)))
+    qtbot.waitUntil(lambda: bool(answers), timeout=timeout)
+    result, error = answers[0]
+    if error:
+        raise AssertionError(f"the page answered '{name}' with an error: {error}")
+    return result
+
+
 def toolbox_names(qtbot, view) -> list:
     """The toolbox category names as shown."""
     return run_js(qtbot, view, "Blockly.getMainWorkspace().getToolbox().getToolboxItems()"

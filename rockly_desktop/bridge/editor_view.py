@@ -6,16 +6,18 @@
 """
 import logging
 
-from PySide6.QtCore import QEventLoop, QTimer, QUrl, Signal
+from PySide6.QtCore import QUrl, Signal
 from PySide6.QtWebChannel import QWebChannel
 from PySide6.QtWebEngineCore import QWebEnginePage, QWebEngineProfile
 from PySide6.QtWebEngineWidgets import QWebEngineView
 
-from rockly_desktop.bridge.channel import PageChannel
+from rockly_desktop.bridge.channel import PAGE_RELOADED, PageChannel
 from rockly_desktop.bridge.offline import LocalOnlyInterceptor
 from rockly_desktop.core import paths
 
 log = logging.getLogger(__name__)
+
+ANSWER_TIMEOUT_MS = 15000  # for calls the page answers at once (its state, the run code)
 
 _interceptor = None
 
@@ -111,28 +113,14 @@ class EditorView(QWebEngineView):
             self._page_state = "loading"
             self.load(QUrl.fromLocalFile(str(paths.editor_page())))
 
-    def call(self, name: str, args=None, callback=None):
-        """Run a page call when the page is ready; ``callback(result, error)`` gets the answer."""
-        self.channel.call(name, args, callback)
+    def call(self, name: str, args=None, callback=None, timeout_ms=None):
+        """Run a page call when the page is ready; ``callback(result, error)`` gets the answer.
 
-    def call_blocking(self, name: str, args=None, timeout_ms: int = 15000):
-        """Run a page call and wait for its answer; raises RuntimeError on a page error or timeout."""
-        loop = QEventLoop()
-        answer = {}
-
-        def on_answer(result, error):
-            answer.update(result=result, error=error, done=True)
-            loop.quit()
-
-        self.call(name, args, on_answer)
-        QTimer.singleShot(timeout_ms, loop.quit)
-        if not answer:
-            loop.exec()
-        if not answer.get("done"):
-            raise RuntimeError(f"the editor did not answer '{name}' within {timeout_ms / 1000:.0f} s")
-        if answer["error"]:
-            raise RuntimeError(answer["error"])
-        return answer["result"]
+        The answer always comes later, from the event loop. A page reloaded before it
+        answered, or (with ``timeout_ms``) one that took longer than that once the call
+        was sent, answers with an error instead.
+        """
+        self.channel.call(name, args, callback, timeout_ms=timeout_ms)
 
     def load_workspace(self, workspace: dict, callback=None, breakpoints=()):
         """Show a workspace (Blockly JSON) with breakpoints on ``breakpoints`` (block ids).
@@ -169,6 +157,8 @@ class EditorView(QWebEngineView):
         self.channel.call("setup", self._setup_args, self._on_setup, immediately=True)
 
     def _on_setup(self, result, error):
+        if error == PAGE_RELOADED:  # a new page is loading; its own setup follows
+            return
         if error:
             self.sig_page_error.emit(f"the editor could not start: {error}")
             callback, self._on_first_result = self._on_first_result, None

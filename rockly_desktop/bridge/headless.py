@@ -1,7 +1,12 @@
-"""The block editor without a window: Blockly's own generator for command-line use."""
+"""The block editor without a window: Blockly's own generator for command-line use.
+
+Only here does Python wait for the page in a nested event loop: nothing else runs in
+a headless process, so no person's click can arrive while the loop spins. The window
+never waits; it goes on in a callback (see ``EditorView.call``).
+"""
 from PySide6.QtCore import QCoreApplication, QEvent, QEventLoop, QTimer
 
-from rockly_desktop.bridge.editor_view import EditorView
+from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS, EditorView
 from rockly_desktop.core.errors import ProgramFileError
 
 
@@ -46,13 +51,30 @@ class HeadlessEditor:
         are kept in ``program.replaced_fields``."""
         self.use_profile(program.profile)
         name, args = program.editor_call()
-        result = self.view.call_blocking(name, args)
+        result = self.call_and_wait(name, args)
         if result.get("untypedBlock"):
             raise ProgramFileError(program.path or "the program", f"the file is broken: block {result['untypedBlock']} has no type")
         if result.get("unknownTypes"):
             raise UnknownBlocks(result["unknownTypes"])
         program.take_load_result(result)
-        return self.view.call_blocking("getState")["python"]
+        return self.call_and_wait("getState")["python"]
+
+    def call_and_wait(self, name: str, args=None, timeout_ms: int = ANSWER_TIMEOUT_MS):
+        """Run a page call and wait for its answer; raises RuntimeError on a page error or timeout."""
+        if not self.view.is_ready:
+            raise RuntimeError("the block editor is not set up (use_profile first)")
+        loop = QEventLoop()
+        answer = {}
+
+        def on_answer(result, error):
+            answer.update(result=result, error=error)
+            loop.quit()
+
+        self.view.call(name, args, on_answer, timeout_ms=timeout_ms)
+        loop.exec()  # the channel always answers: with the result, an error, or a timeout
+        if answer["error"]:
+            raise RuntimeError(answer["error"])
+        return answer["result"]
 
     def close(self):
         """Delete the page now, before the application's web profile goes away."""

@@ -4,10 +4,11 @@ from PySide6.QtGui import QAction, QActionGroup, QKeySequence
 from PySide6.QtWidgets import QDockWidget, QLabel, QMainWindow, QMessageBox
 
 from rockly_desktop import __version__
-from rockly_desktop.bridge.editor_view import EditorView
+from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS, EditorView
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.ui.code_dock import CodeDock
 from rockly_desktop.ui.console_dock import ConsoleDock
+from rockly_desktop.ui.document import Document
 from rockly_desktop.ui.program_files import ProgramFiles
 from rockly_desktop.ui.health_bar import HealthBar
 from rockly_desktop.ui.message_boxes import plain_message_box
@@ -25,22 +26,26 @@ from rockly_desktop.ui.variables_dock import VariablesDock
 
 class MainWindow(QMainWindow):
     """The editor window. ``registry`` holds the profiles, ``settings`` what is remembered;
-    ``editor`` may be passed in already loading its page (see ``app.build_main_window``)."""
+    ``editor`` may be passed in already loading its page (see ``app.build_main_window``).
 
-    simulator_speed = 1.0  # how much faster than real time the built-in simulator runs
+    It builds the widgets and the helpers (file commands, run session, robot choice) and
+    wires them: the helpers share the ``document`` and report back with signals.
+    """
 
     def __init__(self, registry, settings, editor: EditorView = None):
         super().__init__()
         self.registry = registry
         self.settings = settings
         self.language = settings.language
-        self.profile = self._initial_profile()
+        self.document = Document(self._initial_profile(), self)
         self._starting = False
         self._editor_started = False
         self._robot_shown = False
+        self._close_waiting = False  # closing waits until the program is saved
+        self._close_approved = False
+        self._in_close_event = False
         self.setObjectName("main_window")
 
-        self.breakpoints = []
         self.editor = editor or EditorView()
         self.setCentralWidget(self.editor)
         self.simulator_dock = SimulatorDock(tr("simulator_dock", self.language), self)
@@ -72,9 +77,11 @@ class MainWindow(QMainWindow):
         self.tablet = QtTablet(self, self.profile.display_name())
         self.tablet.sig_notice.connect(lambda _kind, text: self.console.append(
             tr("robot_says", self.language, text=text), "robot"))
-        self.runs = RunSession(self)
+        self.robots = RobotChoice(self.document, self.tablet, settings, self)
+        self.robots.sig_robot_changed.connect(self.show_robot)
+        self.runs = RunSession(self.document, self.editor, self.robots, self.console, self.variables, settings, self)
         self.runs.sig_state_changed.connect(self._on_run_state)
-        self.robots = RobotChoice(self)
+        self.runs.sig_status.connect(lambda text: self.statusBar().showMessage(text))
         self.tablet.sig_dismissed.connect(self.runs.stop)
         self.health = HealthBar(self.language, self)
         self.statusBar().addPermanentWidget(self.health)
@@ -82,9 +89,10 @@ class MainWindow(QMainWindow):
         self.statusBar().addPermanentWidget(self.profile_label)
         self._build_run_toolbar()
 
-        self.files = ProgramFiles(self)
-        self.files.sig_document_changed.connect(self._update_title)
+        self.files = ProgramFiles(self.document, self.editor, settings, registry, self)
         self.files.sig_status.connect(lambda text: self.statusBar().showMessage(text, 8000))
+        self.files.sig_show_program.connect(self.show_program)
+        self.document.sig_changed.connect(self._update_title)
         self.editor.sig_changed.connect(self._on_editor_changed)
         self.editor.sig_ready.connect(self.statusBar().clearMessage)
         self.editor.sig_ready.connect(self._first_show_robot)
@@ -93,6 +101,7 @@ class MainWindow(QMainWindow):
             lambda message: self.statusBar().showMessage(tr("editor_error", self.language, message=message), 15000))
 
         self._build_menus()
+        self.document.sig_profile_changed.connect(self._on_profile_changed)
         self.resize(1280, 800)
         if settings.window_geometry is not None:
             self.restoreGeometry(settings.window_geometry)
@@ -108,6 +117,20 @@ class MainWindow(QMainWindow):
         wanted = self.height() // 3
         if dock.height() < wanted:
             self.resizeDocks([dock], [wanted], Qt.Orientation.Vertical)
+
+    @property
+    def profile(self):
+        """The robot profile of the program on screen (the document's)."""
+        return self.document.profile
+
+    @property
+    def simulator_speed(self) -> float:
+        """How much faster than real time the built-in simulator runs (for robots made from now on)."""
+        return self.robots.simulator_speed
+
+    @simulator_speed.setter
+    def simulator_speed(self, speed: float):
+        self.robots.simulator_speed = speed
 
     # --- start-up -----------------------------------------------------------------------
 
@@ -219,6 +242,7 @@ class MainWindow(QMainWindow):
     _IDLE_ONLY_ACTIONS = ("action_new", "action_open", "action_import_xml", "action_preferences")
 
     def _on_run_state(self, state: str):
+        self.run_toolbar.set_state(state)
         idle = state == "idle"
         for action in self.findChildren(QAction):
             if action.objectName() in self._IDLE_ONLY_ACTIONS:
@@ -228,9 +252,9 @@ class MainWindow(QMainWindow):
             action.setEnabled(idle)
 
     def _on_breakpoints(self, block_ids):
-        self.breakpoints = list(block_ids)
+        self.document.breakpoints = list(block_ids)
         self.runs.set_breakpoints(block_ids)
-        self.files.mark_modified()
+        self.document.mark_modified()
 
     def _build_run_toolbar(self):
         toolbar = RunToolbar(self.language, self)
@@ -252,12 +276,13 @@ class MainWindow(QMainWindow):
         else:
             self.addToolBar(Qt.ToolBarArea.TopToolBarArea, toolbar)
         self.run_toolbar = toolbar
+        self.runs.set_delay(toolbar.delay)
 
     def show_program(self, program, callback):
         """Show a checked program (switching to its robot); ``callback(result, error)`` gets the page's answer."""
         call = program.editor_call()
         if self._starting:
-            self._set_profile(program.profile)
+            self.document.profile = program.profile
             self._restart_editor(call, callback)
         else:
             self.activate_profile(program.profile)
@@ -268,37 +293,52 @@ class MainWindow(QMainWindow):
     def activate_profile(self, profile):
         """Make ``profile`` the active robot (reloading the editor if it changes)."""
         if profile.id != self.profile.id:
-            self._set_profile(profile)
+            self.document.profile = profile
             self._restart_editor()
 
-    def _set_profile(self, profile):
-        self.profile = profile
+    def _on_profile_changed(self, profile):
         self.settings.profile_id = profile.id
         self._check_active_profile_action()
 
     def choose_profile(self, profile_id: str):
-        """The user picked a robot in the Robot menu: a new program for that robot."""
-        if profile_id == self.profile.id or not self.files.maybe_save():
-            self._check_active_profile_action()
+        """The user picked a robot in the Robot menu: a new program for that robot (once the old one is saved)."""
+        self._check_active_profile_action()  # the old robot stays checked until the program is put away
+        if profile_id == self.profile.id:
             return
-        self.activate_profile(self.registry.get(profile_id))
-        self.files.new()
+        profile = self.registry.get(profile_id)
+        self.files.maybe_save(then=lambda ok: ok and self._new_program_for(profile))
+
+    def _new_program_for(self, profile):
+        self.activate_profile(profile)
+        self.files.new(ask=False)
 
     def _check_active_profile_action(self):
         for action in self.profile_actions.actions():
             action.setChecked(action.data() == self.profile.id)
 
     def set_language(self, language: str):
-        """Switch the window and the blocks to ``language``, keeping the program."""
+        """Switch the window and the blocks to ``language``, keeping the program (once the page has given it)."""
         if language == self.language:
             return
-        workspace = self.editor.call_blocking("getState")["workspace"] if self.editor.is_ready else None
+        if not self.editor.is_ready:
+            self._switch_language(language, None)
+            return
+
+        def answered(state, error):
+            if error:
+                self.statusBar().showMessage(tr("editor_error", self.language, message=error), 15000)
+            elif language != self.language:
+                self._switch_language(language, state["workspace"])
+
+        self.editor.call("getState", None, answered, timeout_ms=ANSWER_TIMEOUT_MS)
+
+    def _switch_language(self, language: str, workspace):
         self.language = language
         self.settings.language = language
         self.simulator_dock.robot = None  # the simulator view is made anew in the new language
         self._restart_editor()
         if workspace:
-            self.editor.load_workspace(workspace, breakpoints=self.breakpoints)
+            self.editor.load_workspace(workspace, breakpoints=self.document.breakpoints)
         self.code_dock.setWindowTitle(tr("code_dock", language))
         self.simulator_dock.setWindowTitle(tr("simulator_dock", language))
         self.variables.setWindowTitle(tr("variables_dock", language))
@@ -324,11 +364,11 @@ class MainWindow(QMainWindow):
     def _on_editor_changed(self, workspace, python, origin):
         self.code_dock.view.set_code(python)
         if origin == "user":
-            self.files.mark_modified()
+            self.document.mark_modified()
 
     def _update_title(self):
-        self.setWindowTitle(f"{self.files.display_name()}[*] — {tr('app_name', self.language)}")
-        self.setWindowModified(self.files.modified)
+        self.setWindowTitle(f"{self.document.display_name(self.language)}[*] — {tr('app_name', self.language)}")
+        self.setWindowModified(self.document.modified)
 
     # --- menus --------------------------------------------------------------------------
 
@@ -344,12 +384,12 @@ class MainWindow(QMainWindow):
     def _build_menus(self):
         language, bar = self.language, self.menuBar()
         file_menu = bar.addMenu(tr("menu_file", language))
-        self._action(file_menu, "new", self.files.new, QKeySequence.StandardKey.New)
+        self._action(file_menu, "new", lambda: self.files.new(), QKeySequence.StandardKey.New)
         self._action(file_menu, "open", lambda: self.files.open(), QKeySequence.StandardKey.Open)
         self.recent_menu = file_menu.addMenu(tr("open_recent", language))
         self.recent_menu.aboutToShow.connect(self._fill_recent_menu)
         file_menu.addSeparator()
-        self._action(file_menu, "save", self.files.save, QKeySequence.StandardKey.Save)
+        self._action(file_menu, "save", lambda: self.files.save(), QKeySequence.StandardKey.Save)
         self._action(file_menu, "save_as", lambda: self.files.save_as(), QKeySequence.StandardKey.SaveAs)
         file_menu.addSeparator()
         self._action(file_menu, "import_xml", lambda: self.files.import_xml())
@@ -393,15 +433,31 @@ class MainWindow(QMainWindow):
     # --- closing ------------------------------------------------------------------------
 
     def closeEvent(self, event):  # noqa: N802 - Qt override
-        """Qt override: ask to save changes, then remember the layout."""
-        if not self.files.maybe_save():
+        """Qt override: ask to save changes, then stop everything and remember the layout.
+
+        When the program must first be saved (or a save is still waiting for the page),
+        the event is ignored and the window closes itself once the file is written.
+        """
+        if not self._close_approved and not self._close_waiting:
+            self._close_waiting = True
+            self._in_close_event = True
+            self.files.maybe_save(then=self._close_decided)
+            self._in_close_event = False
+        if not self._close_approved:
             event.ignore()
             return
+        self._close_approved = False
         self.runs.shutdown()
         self.simulator_dock.stop()
         self.health.stop()
         self.robots.shutdown()
         self.settings.save_window(self.saveGeometry(), self.saveState())
-        self.settings.last_file = self.files.path
+        self.settings.last_file = self.document.path
         self.settings.sync()
         event.accept()
+
+    def _close_decided(self, may_close: bool):
+        self._close_waiting = False
+        self._close_approved = may_close
+        if may_close and not self._in_close_event:  # the save waited for the page: close now it is written
+            self.close()

@@ -11,6 +11,7 @@ from pathlib import Path
 from PySide6.QtCore import QObject, Signal
 from PySide6.QtWidgets import QFileDialog, QMessageBox
 
+from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.export import python_module_text
 from rockly_desktop.core.program import PROGRAM_SUFFIX, Program, save_program, write_text_atomically
@@ -20,164 +21,181 @@ from rockly_desktop.ui.texts import tr
 
 
 class ProgramFiles(QObject):
-    """Owns which file is open and whether it has unsaved changes."""
+    """The File menu's commands on the window's Document.
 
-    sig_document_changed = Signal()  # path or modified flag changed
+    Commands that need the page's answer (save, export, and whatever asks to save
+    first) carry on when it comes: they take ``then(ok)``, called once the command has
+    ended (at once when nothing had to wait; False when it failed or was cancelled).
+    ``parent`` is the widget the dialogs belong to.
+    """
+
     sig_status = Signal(str)
+    sig_show_program = Signal(object, object)  # ProgramToOpen, callback(result, error) with the page's answer
 
-    def __init__(self, window):
-        super().__init__(window)
-        self.window = window
-        self.path = None
-        self.modified = False
+    def __init__(self, document, editor, settings, registry, parent):
+        super().__init__(parent)
+        self.document = document
+        self.editor = editor
+        self.settings = settings
+        self.registry = registry
+        self._saves_waiting = 0
+        self._after_saves = []  # continuations waiting until no save waits for the page
 
-    # --- state --------------------------------------------------------------------------
-
-    def display_name(self) -> str:
-        """The file name for the title bar and prompts."""
-        return Path(self.path).name if self.path else tr("untitled", self.window.language)
-
-    def mark_modified(self):
-        """The user changed the program."""
-        if not self.modified:
-            self.modified = True
-            self.sig_document_changed.emit()
-
-    def _set_document(self, path, modified: bool):
-        self.path = str(path) if path else None
-        self.modified = modified
-        if self.path:
-            self.window.settings.add_recent_file(self.path)
-        self.sig_document_changed.emit()
+    @property
+    def saving(self) -> bool:
+        """True while a save waits for the page's answer."""
+        return self._saves_waiting > 0
 
     # --- commands -----------------------------------------------------------------------
 
-    def new(self):
-        """Start an empty program for the active robot."""
-        if self.maybe_save():
-            self.window.breakpoints = []
-            self.window.editor.clear()
-            self._set_document(None, False)
-            self.window.settings.last_file = None
+    def new(self, *, ask: bool = True):
+        """Start an empty program for the active robot (after asking to save changes, unless not ``ask``)."""
+        if ask:
+            self.maybe_save(then=lambda ok: ok and self.new(ask=False))
+            return
+        self.document.breakpoints = []
+        self.editor.clear()
+        self._set_file(None, False)
+        self.settings.last_file = None
 
-    def open(self, path=None) -> bool:
+    def open(self, path=None, then=None):
         """Open a ``.rockly`` (or first-Rockly ``.xml``) program; ask for the file when ``path`` is None."""
-        if not self.maybe_save():
-            return False
-        if path is None:
-            path, _ = QFileDialog.getOpenFileName(self.window, tr("open", self.window.language).replace("&", ""),
-                                                  self._start_folder(), tr("filter_open", self.window.language))
-            if not path:
-                return False
-        return self._open_checked(path)
+        self._open_after_asking(path, "open", "filter_open", then)
 
-    def import_xml(self, path=None) -> bool:
+    def import_xml(self, path=None, then=None):
         """Import a program the first Rockly saved as Blockly XML."""
-        if not self.maybe_save():
-            return False
-        if path is None:
-            path, _ = QFileDialog.getOpenFileName(self.window, tr("import_xml", self.window.language).replace("&", ""),
-                                                  self._start_folder(), tr("filter_xml", self.window.language))
-            if not path:
-                return False
-        return self._open_checked(path)
+        self._open_after_asking(path, "import_xml", "filter_xml", then)
 
-    def save(self) -> bool:
+    def save(self, then=None):
         """Save to the current file, or ask for one."""
-        if self.path is None:
-            return self.save_as()
-        return self._write(self.path)
+        if self.document.path is None:
+            self.save_as(then=then)
+        else:
+            self._write(self.document.path, then)
 
-    def save_as(self, path=None) -> bool:
+    def save_as(self, path=None, then=None):
         """Save under a new name."""
         if path is None:
-            suggestion = self.path or str(Path(self._start_folder()) / (self.display_name() + PROGRAM_SUFFIX))
-            path, _ = QFileDialog.getSaveFileName(self.window, tr("save_as", self.window.language).replace("&", ""),
-                                                  suggestion, tr("filter_program", self.window.language))
+            language = self.settings.language
+            suggestion = self.document.path or str(Path(self._start_folder()) / (self.document.display_name(language)
+                                                                               + PROGRAM_SUFFIX))
+            path, _ = QFileDialog.getSaveFileName(self.parent(), tr("save_as", language).replace("&", ""),
+                                                  suggestion, tr("filter_program", language))
             if not path:
-                return False
+                _report(then, False)
+                return
         if not path.endswith(PROGRAM_SUFFIX):
             path += PROGRAM_SUFFIX
-        return self._write(path)
+        self._write(path, then)
 
-    def export_python(self, path=None) -> bool:
+    def export_python(self, path=None, then=None):
         """Write the generated Python to a ``.py`` file."""
-        language = self.window.language
+        language = self.settings.language
         if path is None:
-            stem = Path(self.path).stem if self.path else tr("untitled", language)
-            path, _ = QFileDialog.getSaveFileName(self.window, tr("export_python", language).replace("&", ""),
-                                                  str(Path(self._start_folder()) / f"{stem}.py"), tr("filter_python", language))
+            stem = Path(self.document.path).stem if self.document.path else tr("untitled", language)
+            path, _ = QFileDialog.getSaveFileName(self.parent(), tr("export_python", language).replace("&", ""),
+                                                  str(Path(self._start_folder()) / f"{stem}.py"),
+                                                  tr("filter_python", language))
             if not path:
-                return False
-        try:
-            state = self.window.editor.call_blocking("getState")
-            text = python_module_text(state["python"], self.window.profile.id, self.path and Path(self.path).name)
-            write_text_atomically(path, text)
-        except (RocklyError, RuntimeError) as error:
-            self._show_error("cannot_export", error, untouched=False)
-            return False
-        self.sig_status.emit(tr("exported", language, path=path))
-        return True
+                _report(then, False)
+                return
+        source = self.document.path and Path(self.document.path).name
 
-    def maybe_save(self) -> bool:
-        """Ask to save unsaved changes; False when the user cancels (or saving failed)."""
-        if not self.modified:
-            return True
-        language = self.window.language
-        box = plain_message_box(self.window, QMessageBox.Icon.Warning, tr("save_changes_title", language),
-                                tr("save_changes", language, name=self.display_name()),
+        def write(state):
+            write_text_atomically(path, python_module_text(state["python"], self.document.profile.id, source))
+            self.sig_status.emit(tr("exported", self.settings.language, path=path))
+
+        self._with_page_state(write, "cannot_export", then)
+
+    def maybe_save(self, then):
+        """Ask to save unsaved changes, then ``then(ok)``: False when the person cancelled or saving failed.
+
+        A save still waiting for the page is waited for first, so nothing is lost.
+        """
+        if self._saves_waiting:
+            self._after_saves.append(lambda: self.maybe_save(then))
+            return
+        if not self.document.modified:
+            then(True)
+            return
+        language = self.settings.language
+        box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, tr("save_changes_title", language),
+                                tr("save_changes", language, name=self.document.display_name(language)),
                                 QMessageBox.StandardButton.Save | QMessageBox.StandardButton.Discard
                                 | QMessageBox.StandardButton.Cancel)
         box.setInformativeText(tr("save_changes_detail", language))
         box.setDefaultButton(QMessageBox.StandardButton.Save)
         answer = box.exec()
         if answer == QMessageBox.StandardButton.Save:
-            return self.save()
-        return answer == QMessageBox.StandardButton.Discard
+            self.save(then=then)
+        else:
+            then(answer == QMessageBox.StandardButton.Discard)
 
     # --- helpers ------------------------------------------------------------------------
 
+    def _set_file(self, path, modified: bool):
+        self.document.set_file(path, modified)
+        if path:
+            self.settings.add_recent_file(str(path))
+
     def _start_folder(self) -> str:
-        recent = self.window.settings.recent_files
+        recent = self.settings.recent_files
         return str(Path(recent[0]).parent) if recent else str(Path.home())
 
-    def _open_checked(self, path) -> bool:
-        window = self.window
+    def _open_after_asking(self, path, title_key: str, filter_key: str, then):
+        def go_on(may_replace: bool):
+            chosen = path
+            if may_replace and chosen is None:
+                language = self.settings.language
+                chosen, _ = QFileDialog.getOpenFileName(self.parent(), tr(title_key, language).replace("&", ""),
+                                                        self._start_folder(), tr(filter_key, language))
+            if may_replace and chosen:
+                self._open_checked(chosen, then)
+            else:
+                _report(then, False)
+
+        self.maybe_save(then=go_on)
+
+    def _open_checked(self, path, then):
         try:
-            program = read_program_to_open(path, window.registry, window.profile)
+            program = read_program_to_open(path, self.registry, self.document.profile)
         except RocklyError as error:
             self._show_error("cannot_open", error)
-            return False
+            _report(then, False)
+            return
 
         def on_shown(result, error):
+            language = self.settings.language
             if error:
                 self._show_error("cannot_open", f"{path}: the editor could not show this program ({error})")
             elif result.get("untypedBlock"):
                 self._show_error("cannot_open", f"{path}: the file is broken: block {result['untypedBlock']} has no type")
             elif result.get("unknownTypes"):
-                self._show_error("cannot_open", unknown_blocks_error(program, result["unknownTypes"], window.registry))
+                self._show_error("cannot_open", unknown_blocks_error(program, result["unknownTypes"], self.registry))
             else:
                 # What is shown differs from the file when the page replaced values or another
                 # profile stands in: the program counts as changed, and the person is told.
                 program.take_load_result(result)
                 changed = bool(program.missing_profile or program.replaced_fields)
                 if program.is_import:
-                    window.breakpoints = []
-                    self._set_document(None, True)
-                    self.sig_status.emit(tr("imported", window.language, path=path))
+                    self.document.breakpoints = []
+                    self._set_file(None, True)
+                    self.sig_status.emit(tr("imported", language, path=path))
                 else:
-                    window.breakpoints = list(program.breakpoints)
-                    self._set_document(path, changed)
-                    self.sig_status.emit(tr("opened", window.language, path=path))
+                    self.document.breakpoints = list(program.breakpoints)
+                    self._set_file(path, changed)
+                    self.sig_status.emit(tr("opened", language, path=path))
                 if changed:
                     self._show_opening_changes(program)
+                _report(then, True)
+                return
+            _report(then, False)
 
-        window.show_program(program, on_shown)
-        return True
+        self.sig_show_program.emit(program, on_shown)
 
     def _show_opening_changes(self, program):
         """Say what opening ``program`` changed: a stand-in profile, replaced field values."""
-        language = self.window.language
+        language = self.settings.language
         parts = []
         if program.missing_profile:
             parts.append(tr("missing_profile", language, declared=program.missing_profile,
@@ -190,30 +208,56 @@ class ProgramFiles(QObject):
                 key = "field_left_out" if entry.get("missing") else "replaced_field"
                 lines.append("• " + tr(key, language, **values))
             parts.append("\n".join(lines))
-        box = plain_message_box(self.window, QMessageBox.Icon.Warning, tr("opened_with_changes", language),
+        box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, tr("opened_with_changes", language),
                                 "\n\n".join(parts))
         box.setInformativeText(tr("opened_with_changes_detail", language))
         box.setObjectName("opening_changes_box")
         box.open()
 
-    def _write(self, path) -> bool:
-        try:
-            state = self.window.editor.call_blocking("getState")
-            save_program(path, Program(self.window.profile.id, state["workspace"], self.window.breakpoints))
-        except (RocklyError, RuntimeError) as error:
-            self._show_error("cannot_save", error, untouched=False)
-            return False
-        self._set_document(path, False)
-        self.sig_status.emit(tr("saved", self.window.language, path=path))
-        return True
+    def _write(self, path, then):
+        def write(state):
+            save_program(path, Program(self.document.profile.id, state["workspace"], self.document.breakpoints))
+            self._set_file(path, False)
+            self.sig_status.emit(tr("saved", self.settings.language, path=path))
+
+        self._saves_waiting += 1
+        self._with_page_state(write, "cannot_save", lambda ok: self._save_ended(ok, then))
+
+    def _save_ended(self, ok: bool, then):
+        self._saves_waiting -= 1
+        _report(then, ok)
+        if not self._saves_waiting:
+            waiting, self._after_saves = self._after_saves, []
+            for go_on in waiting:
+                go_on()
+
+    def _with_page_state(self, use, error_key: str, then):
+        """Ask the page for its state; ``use(state)`` when it comes, then ``then(ok)``."""
+        def answered(state, error):
+            if not error:
+                try:
+                    use(state)
+                except RocklyError as problem:
+                    error = problem
+            if error:
+                self._show_error(error_key, error, untouched=False)
+            _report(then, not error)
+
+        self.editor.call("getState", None, answered, timeout_ms=ANSWER_TIMEOUT_MS)
 
     def _show_error(self, title_key: str, error, untouched: bool = True):
-        language = self.window.language
-        box = plain_message_box(self.window, QMessageBox.Icon.Critical, tr(title_key, language), str(error))
+        language = self.settings.language
+        box = plain_message_box(self.parent(), QMessageBox.Icon.Critical, tr(title_key, language), str(error))
         if untouched:
             box.setInformativeText(tr("nothing_changed", language))
         box.setObjectName("error_box")
         box.open()
+
+
+def _report(then, ok: bool):
+    """Tell a command's continuation how it ended (if it has one)."""
+    if then is not None:
+        then(ok)
 
 
 def _shown(value) -> str:

@@ -3,7 +3,7 @@
 Owns the robots it made (one simulator per profile, one ROS robot per profile), the ROS
 connection dialog and the connection indicator in the status bar.
 """
-from PySide6.QtCore import QObject, QTimer
+from PySide6.QtCore import QObject, QTimer, Signal
 from PySide6.QtWidgets import QLabel, QMessageBox
 
 from rockly_desktop.core.errors import RocklyError
@@ -18,32 +18,41 @@ STATUS_COLOURS = {"connected": "#2e7d32", "connecting": "#f9a825", "lost": "#c62
 
 
 class RobotChoice(QObject):
-    """The active robot for the window's profile; ``kind`` is 'simulator' or 'ros1'."""
+    """The active robot for the document's profile; ``kind`` is 'simulator' or 'ros1'.
 
-    def __init__(self, window):
-        super().__init__(window)
-        self.window = window
+    Simulators answer tablet questions on ``tablet``; ROS connections are remembered in
+    ``settings``; ``parent`` is the widget the connection dialog belongs to.
+    """
+
+    sig_robot_changed = Signal()  # another kind of robot was chosen
+    simulator_speed = 1.0  # how much faster than real time the built-in simulator runs
+
+    def __init__(self, document, tablet, settings, parent):
+        super().__init__(parent)
+        self.document = document
+        self.tablet = tablet
+        self.settings = settings
         self.kind = SIMULATOR
         self._robots = {}
-        self.status = QLabel(window)
+        self.status = QLabel(parent)
         self.status.hide()
         self._timer = QTimer(self)
         self._timer.setInterval(500)
         self._timer.timeout.connect(self._show_status)
 
     def robot(self):
-        """The robot of the active kind for the window's profile (made on first use)."""
-        window = self.window
-        key = (self.kind, window.profile.id)
+        """The robot of the active kind for the document's profile (made on first use)."""
+        profile = self.document.profile
+        key = (self.kind, profile.id)
         if key not in self._robots:
             for other in [k for k in self._robots if k[0] == SIMULATOR and k != key]:
                 self._robots.pop(other).shutdown()  # one simulator ticking at a time
             if self.kind == SIMULATOR:
-                window.tablet.robot_name = window.profile.display_name(window.language)
-                self._robots[key] = SimulatedRobot(window.profile, tablet=window.tablet, speed=window.simulator_speed)
+                self.tablet.robot_name = profile.display_name(self.settings.language)
+                self._robots[key] = SimulatedRobot(profile, tablet=self.tablet, speed=self.simulator_speed)
             else:
-                master_uri, _host = window.settings.ros_connection(window.profile.id)
-                self._robots[key] = RosRobot(window.profile, master_uri)
+                master_uri, _host = self.settings.ros_connection(profile.id)
+                self._robots[key] = RosRobot(profile, master_uri)
         return self._robots[key]
 
     def choose(self, kind: str) -> bool:
@@ -59,32 +68,32 @@ class RobotChoice(QObject):
             self._show_status()
         else:
             self._timer.stop()
-        self.window.show_robot()
+        self.sig_robot_changed.emit()
         return True
 
     def _connect(self) -> bool:
-        window = self.window
-        language = window.language
-        remembered_uri, remembered_host = window.settings.ros_connection(window.profile.id)
-        dialog = ConnectionDialog(language, window.profile.display_name(language), remembered_uri, remembered_host, window)
+        language, profile = self.settings.language, self.document.profile
+        remembered_uri, remembered_host = self.settings.ros_connection(profile.id)
+        dialog = ConnectionDialog(language, profile.display_name(language), remembered_uri, remembered_host,
+                                  self.parent())
         if not dialog.exec():
             return False
         try:
             RosConnection.get(dialog.master_uri, dialog.host or None, timeout=1.0)
         except RocklyError as error:
             problem, next_step = robot_problem(error, language)
-            box = plain_message_box(window, QMessageBox.Icon.Warning, tr("connect_failed", language), problem)
+            box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, tr("connect_failed", language), problem)
             box.setInformativeText(next_step)
             box.setObjectName("connect_failed_box")
             box.exec()
             return False
-        window.settings.remember_ros_connection(window.profile.id, dialog.master_uri, dialog.host)
+        self.settings.remember_ros_connection(profile.id, dialog.master_uri, dialog.host)
         return True
 
     def _show_status(self):
-        robot = self._robots.get((ROS1, self.window.profile.id))
+        robot = self._robots.get((ROS1, self.document.profile.id))
         status = robot.connection.status if robot is not None else "connecting"
-        self.status.setText(tr(f"ros_{status}", self.window.language))
+        self.status.setText(tr(f"ros_{status}", self.settings.language))
         self.status.setStyleSheet(f"color: {STATUS_COLOURS[status]}; font-weight: bold;")
         if robot is not None and robot.connection.round_trip is not None:
             self.status.setToolTip(f"{robot.connection.master_uri} — {robot.connection.round_trip * 1000:.1f} ms")

@@ -1,14 +1,15 @@
 """Running the program on screen: start/pause/step/continue/stop, highlighting, variables, errors.
 
 The program runs in a ProgramThread. Its events arrive as queued signals; the block it
-is at and its variables are polled every 33 ms, so a tight loop at full speed never
-floods the GUI, while a pause shows the exact block and values.
+is at, its variables and what it printed are polled every 33 ms, so a tight loop at full
+speed never floods the GUI, while a pause shows the exact block and values.
 """
 import sys
 
 from PySide6.QtCore import QObject, QTimer, Signal
 from PySide6.QtWidgets import QMessageBox
 
+from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import RunFinished, RunPaused, RunResumed, VariablesChanged
@@ -22,18 +23,32 @@ RUN_SWITCH_INTERVAL = 0.001  # seconds
 
 
 class RunSession(QObject):
-    """The window's one program run at a time; ``state`` is 'idle', 'starting', 'running' or 'paused'."""
+    """One program run at a time; ``state`` is 'idle', 'starting' (waiting for the page's code),
+    'running' or 'paused'.
+
+    Collaborators: the ``document`` (profile), the ``editor`` (code, highlights, marks), the
+    ``robots`` (``robot()``), the ``console`` and ``variables`` docks, the ``settings``
+    (language) and ``parent``, the widget an error box belongs to.
+    """
 
     sig_state_changed = Signal(str)
     sig_finished = Signal(object)  # RunFinished, once the run's thread has ended
+    sig_status = Signal(str)  # a status-bar message; empty: clear it
 
-    def __init__(self, window):
-        super().__init__(window)
-        self.window = window
+    def __init__(self, document, editor, robots, console, variables, settings, parent):
+        super().__init__(parent)
+        self.document = document
+        self.editor = editor
+        self.robots = robots
+        self.console = console
+        self.variables = variables
+        self.settings = settings
         self.state = "idle"
         self.control = None
         self.thread = None
         self.last_result = None
+        self._delay = 0.0
+        self._start_request = None  # the run waiting for the page's code; None when cancelled
         self._switch_interval = sys.getswitchinterval()
         self._shown_block = None
         self._follow = QTimer(self)
@@ -43,32 +58,49 @@ class RunSession(QObject):
     # --- commands -----------------------------------------------------------------------
 
     def run(self, step_first: bool = False) -> bool:
-        """Run the program in the editor (pausing at its first block if ``step_first``)."""
-        window = self.window
+        """Start the program in the editor (pausing at its first block if ``step_first``).
+
+        The page is asked for the code; the run starts when it answers ('starting' until
+        then). False when a run is already under way.
+        """
         if self.state != "idle":
             return False
-        self._set_state("starting")  # asking the page for the code runs a nested event loop
-        try:
-            run_code = window.editor.call_blocking("getRunCode")
-            if not run_code["code"].strip():
-                window.console.append(tr("run_empty", window.language), "info")
-                self._set_state("idle")
-                return False
-            control = RunControl(run_code["breakpoints"], window.run_toolbar.delay)
-            robot = window.robot()
-            language = window.language  # the run's messages are in the window's language
-            thread = ProgramThread(lambda emit: make_runner(window.profile, robot, run_code, control, emit, language), self)
-        except (RocklyError, RuntimeError) as error:
-            window.console.append(" ".join(part for part in robot_problem(error, window.language) if part), "error")
+        request = object()
+        self._start_request = request
+        self._set_state("starting")
+        self.editor.call("getRunCode", None, lambda run_code, error: self._start(request, run_code, error, step_first),
+                         timeout_ms=ANSWER_TIMEOUT_MS)
+        return True
+
+    def _start(self, request, run_code, error, step_first: bool):
+        if request is not self._start_request:  # stopped (or the window closed) while the page answered
+            return
+        self._start_request = None
+        language = self.settings.language  # the run's messages are in the window's language
+        if error:
+            self.console.append(tr("run_not_started", language, error=error), "error")
             self._set_state("idle")
-            return False
+            return
+        if not run_code["code"].strip():
+            self.console.append(tr("run_empty", language), "info")
+            self._set_state("idle")
+            return
+        try:
+            control = RunControl(run_code["breakpoints"], self._delay)
+            robot = self.robots.robot()
+            profile = self.document.profile
+            thread = ProgramThread(lambda emit: make_runner(profile, robot, run_code, control, emit, language), self)
+        except (RocklyError, RuntimeError) as problem:
+            self.console.append(" ".join(part for part in robot_problem(problem, language) if part), "error")
+            self._set_state("idle")
+            return
         if step_first:
             control.step()
         self.control, self.thread = control, thread
         thread.sig_event.connect(self._on_event)
         thread.finished.connect(self._on_thread_finished)
-        window.editor.call("clearMarks")
-        window.console.append(tr("run_started", window.language), "info")
+        self.editor.call("clearMarks")
+        self.console.append(tr("run_started", language), "info")
         self._shown_block = None
         self._set_state("running")
         # A program in a tight loop holds the GIL; hand it over more often so the window
@@ -77,7 +109,6 @@ class RunSession(QObject):
         sys.setswitchinterval(RUN_SWITCH_INTERVAL)
         thread.start()
         self._follow.start()
-        return True
 
     def pause(self):
         """Pause before the next block."""
@@ -99,9 +130,15 @@ class RunSession(QObject):
             self.control.resume()
 
     def stop(self):
-        """Stop the program; the robot's safe stop follows."""
-        if self.control is not None and self.state != "idle":
+        """Stop the program; the robot's safe stop follows. A run still waiting for its code never starts."""
+        if self.state == "starting":
+            self._cancel_start()
+        elif self.control is not None and self.state != "idle":
             self.control.request_stop()
+
+    def _cancel_start(self):
+        self._start_request = None
+        self._set_state("idle")
 
     def set_breakpoints(self, block_ids):
         """Breakpoints changed in the editor (also while running)."""
@@ -109,12 +146,18 @@ class RunSession(QObject):
             self.control.set_breakpoints(block_ids)
 
     def set_delay(self, seconds: float):
-        """The slow-motion slider moved."""
+        """The slow-motion slider moved (or was made): wait ``seconds`` at every block."""
+        self._delay = seconds
         if self.control is not None:
             self.control.set_delay(seconds)
 
     def shutdown(self, timeout_ms: int = 5000) -> bool:
-        """Stop any run and wait for its thread (the app is closing); True when it ended."""
+        """Stop any run and wait for its thread (the app is closing); True when it ended.
+
+        A run still waiting for the page's code is cancelled: it never starts.
+        """
+        if self.state == "starting":
+            self._cancel_start()
         if self.thread is None:
             return True
         self.stop()
@@ -128,13 +171,12 @@ class RunSession(QObject):
 
     def _set_state(self, state: str):
         self.state = state
-        self.window.run_toolbar.set_state(state)
         self.sig_state_changed.emit(state)
 
     def _highlight(self, block_id):
         if block_id != self._shown_block:
             self._shown_block = block_id
-            self.window.editor.call("highlight", {"id": block_id})
+            self.editor.call("highlight", {"id": block_id})
 
     def _follow_run(self):
         if self.thread is None or self.state != "running":
@@ -142,7 +184,7 @@ class RunSession(QObject):
         self._show_output()
         runner = self.thread.runner
         self._highlight(runner.hooks.current_block)
-        self.window.variables.show_values(runner.variables_snapshot())
+        self.variables.show_values(runner.variables_snapshot())
 
     def _show_output(self):
         """Show what the program printed since the last look, in one batch."""
@@ -150,40 +192,38 @@ class RunSession(QObject):
             return
         lines, skipped = self.thread.output.take()
         if skipped:
-            self.window.console.append(tr("output_skipped", self.window.language, count=skipped), "info")
-        self.window.console.append_lines(lines)
+            self.console.append(tr("output_skipped", self.settings.language, count=skipped), "info")
+        self.console.append_lines(lines)
 
     def _on_event(self, event):
-        window = self.window
         self._show_output()  # what was printed before the event comes first
         if isinstance(event, RunPaused):
             self._set_state("paused")
             self._highlight(event.block_id)
             key = "paused_breakpoint" if event.reason == "breakpoint" else "paused"
-            window.statusBar().showMessage(tr(key, window.language))
+            self.sig_status.emit(tr(key, self.settings.language))
         elif isinstance(event, RunResumed):
-            window.statusBar().clearMessage()
+            self.sig_status.emit("")
         elif isinstance(event, VariablesChanged):
-            window.variables.show_values(event.values)
+            self.variables.show_values(event.values)
         elif isinstance(event, RunFinished):
             self._on_finished(event)
 
     def _on_finished(self, result: RunFinished):
-        window = self.window
+        language = self.settings.language
         self._follow.stop()
         self.last_result = result
         self._highlight(None)
         if result.outcome == "error":
-            window.console.append(result.message, "error")
-            window.editor.call("markError", {"id": result.block_id, "message": result.message})
-            box = plain_message_box(window, QMessageBox.Icon.Warning, tr("error_title", window.language), result.message)
+            self.console.append(result.message, "error")
+            self.editor.call("markError", {"id": result.block_id, "message": result.message})
+            box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, tr("error_title", language), result.message)
             box.setObjectName("run_error_box")
             box.setDetailedText(result.details or "")
             box.open()
         else:
-            window.console.append(tr("run_finished" if result.outcome == "finished" else "run_stopped",
-                                     window.language), "info")
-        window.statusBar().clearMessage()
+            self.console.append(tr("run_finished" if result.outcome == "finished" else "run_stopped", language), "info")
+        self.sig_status.emit("")
 
     def _on_thread_finished(self):
         if self.thread is None:  # already handled by shutdown()

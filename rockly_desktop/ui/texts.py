@@ -127,6 +127,8 @@ _TEXTS = {
                        "… {count} weitere Zeilen kamen zu schnell, um sie zu zeigen"),
     "run_empty": ("There is nothing to run yet: drag blocks from the list on the left into the workspace.",
                   "Noch gibt es nichts zu starten: Zieh Blöcke aus der Liste links auf die Arbeitsfläche."),
+    "run_not_started": ("The program was not started: the block editor did not give its code ({error}).",
+                        "Das Programm wurde nicht gestartet: Der Block-Editor hat seinen Code nicht geliefert ({error})."),
     "run_finished": ("Program finished", "Programm beendet"),
     "run_stopped": ("Program stopped", "Programm gestoppt"),
     "run_failed": ("Program stopped because of an error", "Programm wegen eines Fehlers gestoppt"),

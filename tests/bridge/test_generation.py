@@ -211,7 +211,7 @@ HOSTILE_COMMENTS = [
 def test_block_comments_never_become_code(headless_editor, hobbit):
     for comment in HOSTILE_COMMENTS:
         program = block("hobbit_sos", icons={"comment": {"text": comment, "pinned": False, "height": 80, "width": 160}})
-        for code in (generate(headless_editor, hobbit, program), headless_editor.view.call_blocking("getRunCode")["code"]):
+        for code in (generate(headless_editor, hobbit, program), headless_editor.call_and_wait("getRunCode")["code"]):
             tree = ast.parse(code)
             calls = [node.func.attr if isinstance(node.func, ast.Attribute) else node.func.id
                      for node in ast.walk(tree) if isinstance(node, ast.Call)]

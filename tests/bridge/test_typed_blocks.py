@@ -1,7 +1,7 @@
 """Typed ROS blocks in the real editor: inputs per field of the chosen type, checks, saving, handlers."""
 import ast
 
-from page_tools import add_block_as_user, run_js
+from page_tools import add_block_as_user, call_page, run_js
 from program_builder import block, number, stack, text, workspace
 
 from rockly_desktop.profiles.opening import ProgramToOpen
@@ -34,7 +34,7 @@ def test_the_publish_block_grows_one_checked_input_per_field_of_the_chosen_type(
 def test_a_new_pose_goal_starts_as_a_valid_pose(qtbot, editor):
     block_id = add_block_as_user(qtbot, editor, "ros_send_goal")
     choose_type(qtbot, editor, block_id, "action_type", "move_base_msgs/MoveBaseAction")
-    python = editor.call_blocking("getState")["python"]
+    python = call_page(qtbot, editor, "getState")["python"]
     assert "'orientation': {'x': 0, 'y': 0, 'z': 0, 'w': 1}" in python   # no rotation, not an invalid all-zero one
 
 
@@ -49,12 +49,12 @@ def test_a_number_field_refuses_a_text_block(qtbot, editor):
 
 
 def test_changing_the_type_keeps_the_blocks_of_fields_both_types_have_and_sets_the_others_aside(qtbot, editor):
-    editor.call_blocking("load", {"workspace": workspace(block(
+    call_page(qtbot, editor, "load", {"workspace": workspace(block(
         "ros_publish_message", {"message_type": "geometry_msgs/Vector3"},
         {"topic": text("/v"), "field:x": block("math_arithmetic", {"OP": "ADD"}, {"A": number(1), "B": number(2)}),
          "field:y": block("text_length", inputs={"VALUE": text("abc")})}, id="pub"))})
     choose_type(qtbot, editor, "pub", "message_type", "geometry_msgs/Point")       # also x, y, z
-    assert "{'x': 1 + 2, 'y': len('abc'), 'z': 0}" in editor.call_blocking("getState")["python"]
+    assert "{'x': 1 + 2, 'y': len('abc'), 'z': 0}" in call_page(qtbot, editor, "getState")["python"]
     choose_type(qtbot, editor, "pub", "message_type", "std_msgs/String")
     assert run_js(qtbot, editor, FIELD_INPUTS % "pub") == [["data", "String"]]
     top = run_js(qtbot, editor, "Blockly.getMainWorkspace().getTopBlocks(true).map(b => b.type).sort()")
@@ -65,8 +65,8 @@ def test_a_saved_typed_block_opens_with_its_fields_even_where_its_type_is_unknow
     saved = block("ros_publish_message", {"message_type": "lab_msgs/Beep"},
                   {"topic": text("/beep"), "field:pitch": number(440), "field:label": text('say "hi"\n')},
                   id="beep", extraState={"type": "lab_msgs/Beep", "fields": [["pitch", "Number"], ["label", "String"]]})
-    editor.call_blocking("load", {"workspace": workspace(saved)})
-    state = editor.call_blocking("getState")
+    call_page(qtbot, editor, "load", {"workspace": workspace(saved)})
+    state = call_page(qtbot, editor, "getState")
     assert state["python"].strip() == "ros.publish_message('/beep', 'lab_msgs/Beep', {'pitch': 440, 'label': 'say \"hi\"\\n'})"
     again = state["workspace"]["blocks"]["blocks"][0]
     assert again["extraState"] == {"type": "lab_msgs/Beep", "fields": [["pitch", "Number", None], ["label", "String", None]]}

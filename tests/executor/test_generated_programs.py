@@ -8,8 +8,8 @@ from rockly_desktop.executor.events import OutputPrinted, RunFinished
 
 
 def run_code(editor, ws):
-    editor.view.call_blocking("load", {"workspace": ws})
-    return editor.view.call_blocking("getRunCode")
+    editor.call_and_wait("load", {"workspace": ws})
+    return editor.call_and_wait("getRunCode")
 
 
 def step_through(run):

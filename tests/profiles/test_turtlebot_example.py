@@ -65,7 +65,7 @@ def test_the_same_program_in_the_editor_and_runner_never_touches_a_box_or_a_wall
         "  else:",
         "    robot.drive(0.2, 'forward')",
     ]
-    run_code = editor.view.call_blocking("getRunCode")
+    run_code = editor.call_and_wait("getRunCode")
 
     robot = SimulatedRobot(program.profile, speed=20)
     arena = robot.simulator._arena

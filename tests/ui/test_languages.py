@@ -1,5 +1,5 @@
 """The window in German: Qt's own buttons, run errors, the ROS connection failure, state panels, toolbox texts."""
-from page_tools import run_js
+from page_tools import call_page, run_js
 from program_builder import block, number, stack, text, workspace
 from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QApplication, QMessageBox
@@ -35,9 +35,11 @@ def answer_save_prompt(window) -> list:
         seen.extend(button_texts(box))
         box.button(QMessageBox.StandardButton.Cancel).click()
 
-    window.files.mark_modified()
+    window.document.mark_modified()
     QTimer.singleShot(0, cancel)
-    assert window.files.maybe_save() is False
+    outcomes = []
+    window.files.maybe_save(then=outcomes.append)
+    assert outcomes == [False]
     return seen
 
 
@@ -82,7 +84,7 @@ def test_a_run_error_is_explained_in_german_naming_the_variable(qtbot, german_wi
             "A": block("variables_get", {"VAR": {"id": "name"}}), "B": number(7)})}, id="print"),
         block("hobbit_sos", id="never")))
     ws["variables"] = [{"name": "name", "id": "name"}]
-    window.editor.call_blocking("load", {"workspace": ws})
+    call_page(qtbot, window.editor, "load", {"workspace": ws})
     with qtbot.waitSignal(window.runs.sig_finished, timeout=20000) as blocker:
         window.runs.run()
     result = blocker.args[0]
@@ -165,7 +167,7 @@ def test_numbers_follow_the_language_and_the_rest_of_a_format_stays():
 
 def test_panels_follow_a_run_in_german(qtbot, german_window):
     window = german_window
-    window.editor.call_blocking("load", {"workspace": workspace(
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(
         block("hobbit_move", {"direction": "+"}, {"speed": number(0.5)}))})
     with qtbot.waitSignal(window.runs.sig_finished, timeout=20000):
         window.runs.run()

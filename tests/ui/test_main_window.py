@@ -26,14 +26,14 @@ def test_window_shows_hobbit_toolbox_code_dock_and_robot(qtbot, window):
 def test_switching_to_german_translates_window_and_blocks_and_keeps_the_program(qtbot, window, tmp_path):
     path = tmp_path / "p.rockly"
     path.write_text(rockly_document([block("hobbit_move", {"direction": "+"}, {"speed": number(2)})]))
-    with qtbot.waitSignal(window.files.sig_document_changed):
+    with qtbot.waitSignal(window.document.sig_changed):
         window.files.open(str(path))
     qtbot.waitUntil(lambda: window.code_dock.view.toPlainText() == "robot.drive(2, 'forward')\n")
-    before = state(window)["workspace"]
+    before = state(qtbot, window)["workspace"]
 
     with qtbot.waitSignal(window.editor.sig_ready, timeout=30000):
         window.set_language("de")
-    qtbot.waitUntil(lambda: state(window)["workspace"] == before, timeout=10000)
+    qtbot.waitUntil(lambda: state(qtbot, window)["workspace"] == before, timeout=10000)
     assert toolbox_names(qtbot, window.editor)[:4] == ["Fahren", "Kopf", "Arm", "Tablet"]
     assert menu_titles(window) == ["&Datei", "&Bearbeiten", "&Roboter", "&Ansicht", "&Einstellungen", "&Hilfe"]
     assert window.code_dock.windowTitle() == "Python-Code"
@@ -56,7 +56,7 @@ def test_language_layout_and_last_file_are_remembered(qtbot, driver, tmp_path):
     path = tmp_path / "remember-me.rockly"
     path.write_text(rockly_document([block("hobbit_sos")]))
     first = driver.open_window()
-    with qtbot.waitSignal(first.files.sig_document_changed):
+    with qtbot.waitSignal(first.document.sig_changed):
         first.files.open(str(path))
     with qtbot.waitSignal(first.editor.sig_ready, timeout=30000):
         first.set_language("de")
@@ -67,7 +67,7 @@ def test_language_layout_and_last_file_are_remembered(qtbot, driver, tmp_path):
     second = WindowDriver(qtbot, driver.settings_path)
     try:
         window = second.open_window()
-        qtbot.waitUntil(lambda: window.files.path == str(path), timeout=10000)
+        qtbot.waitUntil(lambda: window.document.path == str(path), timeout=10000)
         assert window.language == "de"
         assert (window.width(), window.height()) == (760, 580)
         assert not window.code_dock.isVisible()
@@ -81,13 +81,13 @@ def test_a_remembered_file_that_is_gone_does_not_stop_the_start(qtbot, driver, t
     gone = tmp_path / "deleted.rockly"
     gone.write_text(rockly_document([block("hobbit_sos")]))
     window = driver.open_window(str(gone))
-    qtbot.waitUntil(lambda: window.files.path == str(gone), timeout=10000)
+    qtbot.waitUntil(lambda: window.document.path == str(gone), timeout=10000)
     window.close()
     gone.unlink()
     again = driver.open_window()
     qtbot.waitUntil(lambda: bool(error_boxes(again)), timeout=10000)
     assert "does not exist" in error_boxes(again)[0]
-    assert again.files.path is None and state(again)["python"] == ""
+    assert again.document.path is None and state(qtbot, again)["python"] == ""
 
 
 def test_a_broken_profile_is_reported_and_the_app_still_starts(qtbot, tmp_path):
@@ -109,7 +109,7 @@ def test_a_broken_profile_is_reported_and_the_app_still_starts(qtbot, tmp_path):
 
 
 def test_closing_with_unsaved_changes_asks_first(qtbot, window, answer_prompts):
-    window.files.mark_modified()
+    window.document.mark_modified()
     asked = answer_prompts(QMessageBox.StandardButton.Cancel)
     assert not window.close()
     assert window.isVisible() and asked

@@ -5,7 +5,7 @@ import stat
 import threading
 
 import pytest
-from window_tools import error_boxes, state
+from window_tools import completed, error_boxes, state
 from page_tools import add_block_as_user
 from program_builder import block, number, rockly_document, stack, text
 from PySide6.QtWidgets import QMessageBox
@@ -31,8 +31,7 @@ def wait_for_code(qtbot, window, expected):
 
 def open_program(qtbot, window, path, importing=False):
     """Open (or import) ``path`` and wait until the window has taken it over."""
-    with qtbot.waitSignal(window.files.sig_document_changed, timeout=10000):
-        assert (window.files.import_xml if importing else window.files.open)(str(path))
+    assert completed(qtbot, window.files.import_xml if importing else window.files.open, str(path))
 
 
 def test_open_shows_blocks_and_their_python(qtbot, window, pick_up_file):
@@ -47,7 +46,7 @@ def test_an_edit_marks_the_program_modified_and_save_clears_it(qtbot, window, pi
     wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
     add_block_as_user(qtbot, window.editor, "hobbit_sos")
     qtbot.waitUntil(window.isWindowModified, timeout=5000)
-    assert window.files.save()
+    assert completed(qtbot, window.files.save)
     assert not window.isWindowModified()
     saved = load_program(pick_up_file)
     assert saved.profile_id == "hobbit"
@@ -62,13 +61,13 @@ def test_save_and_open_round_trip_keeps_every_character(qtbot, driver, tmp_path)
     open_program(qtbot, window, source)
     qtbot.waitUntil(lambda: "show_info" in window.code_dock.view.toPlainText(), timeout=10000)
     target = tmp_path / "copy.rockly"
-    assert window.files.save_as(str(target))
-    first = state(window)
+    assert completed(qtbot, window.files.save_as, str(target))
+    first = state(qtbot, window)
 
     reopened = driver.open_window()
     open_program(qtbot, reopened, target)
     qtbot.waitUntil(lambda: "show_info" in reopened.code_dock.view.toPlainText(), timeout=10000)
-    assert state(reopened) == first
+    assert state(qtbot, reopened) == first
     assert load_program(target).workspace["blocks"]["blocks"][0]["inputs"]["text"]["block"]["fields"]["TEXT"] == nasty
 
 
@@ -93,31 +92,31 @@ BAD_FILES = {
 def test_a_bad_file_is_explained_and_changes_nothing(qtbot, window, pick_up_file, tmp_path, name):
     open_program(qtbot, window, pick_up_file)
     wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
-    before = state(window)
+    before = state(qtbot, window)
     content, expected_words = BAD_FILES[name]
     bad = tmp_path / name
     bad.write_bytes(content)
 
-    assert not window.files.open(str(bad))
+    assert not completed(qtbot, window.files.open, str(bad))
     messages = error_boxes(window)
     assert len(messages) == 1 and expected_words in messages[0] and name in messages[0]
-    assert state(window) == before
-    assert window.files.path == str(pick_up_file)
+    assert state(qtbot, window) == before
+    assert window.document.path == str(pick_up_file)
     assert bad.read_bytes() == content
 
 
-def test_missing_file_is_explained(window, tmp_path):
-    assert not window.files.open(str(tmp_path / "gone.rockly"))
+def test_missing_file_is_explained(qtbot, window, tmp_path):
+    assert not completed(qtbot, window.files.open, str(tmp_path / "gone.rockly"))
     assert "does not exist" in error_boxes(window)[0]
 
 
 def test_unknown_blocks_are_named_with_their_missing_profile(qtbot, window, tmp_path):
     path = tmp_path / "turtle.rockly"
     path.write_text(rockly_document([block("turtle_drive"), block("turtle_scan"), block("hobbit_sos")], profile="turtle"))
-    before = state(window)
+    before = state(qtbot, window)
     window.files.open(str(path))
     qtbot.waitUntil(lambda: bool(error_boxes(window)), timeout=10000)
-    assert state(window) == before and window.files.path is None
+    assert state(qtbot, window) == before and window.document.path is None
     message = error_boxes(window)[0]
     assert "turtle_drive" in message and "turtle_scan" in message and "hobbit_sos" not in message
     assert "'turtle'" in message and "not installed" in message
@@ -150,7 +149,7 @@ def test_import_of_a_first_rockly_xml_program(qtbot, window, tmp_path):
     open_program(qtbot, window, path, importing=True)
     wait_for_code(qtbot, window, "name = None\n\n\nrobot.show_emotion('HAPPY')\nrobot.gripper('close')\n"
                                  "name = robot.ask_text('What\\'s your name?')\nrobot.drive(2, 'backward')\n")
-    assert window.files.path is None and window.isWindowModified()
+    assert window.document.path is None and window.isWindowModified()
     assert path.read_text(encoding="utf-8") == FIRST_ROCKLY_XML
 
 
@@ -158,7 +157,7 @@ def test_export_writes_the_generated_python(qtbot, window, pick_up_file, tmp_pat
     open_program(qtbot, window, pick_up_file)
     wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
     target = tmp_path / "out.py"
-    assert window.files.export_python(str(target))
+    assert completed(qtbot, window.files.export_python, str(target))
     exported = target.read_text(encoding="utf-8")
     assert exported.endswith("robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
     assert exported.startswith("# Generated by Rockly")
@@ -168,18 +167,18 @@ def test_export_writes_the_generated_python(qtbot, window, pick_up_file, tmp_pat
 def test_save_into_a_read_only_folder_fails_clearly_and_keeps_the_old_file(qtbot, window, pick_up_file, tmp_path):
     open_program(qtbot, window, pick_up_file)
     wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
-    assert not window.files.save_as(str(tmp_path / "missing-folder" / "x.rockly"))
+    assert not completed(qtbot, window.files.save_as, str(tmp_path / "missing-folder" / "x.rockly"))
     assert "cannot write in this folder" in error_boxes(window)[0]
-    assert window.files.path == str(pick_up_file)
+    assert window.document.path == str(pick_up_file)
 
 
 def test_unsaved_changes_prompt_before_they_are_lost(qtbot, window, pick_up_file, answer_prompts):
     add_block_as_user(qtbot, window.editor, "hobbit_sos")
     qtbot.waitUntil(window.isWindowModified, timeout=5000)
     asked = answer_prompts(QMessageBox.StandardButton.Cancel)
-    assert not window.files.open(str(pick_up_file))
+    assert not completed(qtbot, window.files.open, str(pick_up_file))
     assert asked and "Untitled" in asked[0]
-    assert "robot.call_sos()" in state(window)["python"]
+    assert "robot.call_sos()" in state(qtbot, window)["python"]
     answer_prompts(QMessageBox.StandardButton.Discard)
     open_program(qtbot, window, pick_up_file)
     wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
@@ -190,7 +189,7 @@ def test_new_program_is_empty_and_unnamed(qtbot, window, pick_up_file):
     wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
     window.files.new()
     wait_for_code(qtbot, window, "")
-    assert window.files.path is None and window.windowTitle().startswith("Untitled")
+    assert window.document.path is None and window.windowTitle().startswith("Untitled")
 
 
 def test_a_large_program_opens(qtbot, window, tmp_path):
@@ -234,10 +233,10 @@ def test_a_value_its_block_does_not_offer_is_named_and_the_file_is_kept_until_sa
     assert box.icon() == QMessageBox.Icon.Warning
     # The program opens as it is shown, marked changed: closing asks before anything is lost.
     wait_for_code(qtbot, window, "robot.call_sos()\nrobot.show_emotion('HAPPY')\nrobot.stop()\n")
-    assert window.files.path == str(path) and window.isWindowModified()
+    assert window.document.path == str(path) and window.isWindowModified()
     assert path.read_bytes() == content
     # Saving (after being told) writes what is shown.
-    assert window.files.save()
+    assert completed(qtbot, window.files.save)
     assert load_program(path).workspace["blocks"]["blocks"][0]["next"]["block"]["fields"] == {"emotion": "HAPPY"}
 
 
@@ -258,7 +257,7 @@ def test_a_program_for_a_profile_that_is_not_installed_says_so_before_it_is_save
     assert "It is shown with the blocks of HOBBIT; saving it makes it a program for HOBBIT." in text
     wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
     assert window.isWindowModified() and pepper.read_bytes() == content
-    assert window.files.save()
+    assert completed(qtbot, window.files.save)
     assert load_program(pepper).profile_id == "hobbit"
 
 
@@ -283,7 +282,7 @@ def test_saving_through_a_symlink_keeps_the_link_and_updates_its_target(qtbot, w
     wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
     add_block_as_user(qtbot, window.editor, "hobbit_sos")
     qtbot.waitUntil(window.isWindowModified, timeout=5000)
-    assert window.files.save()
+    assert completed(qtbot, window.files.save)
     assert link.is_symlink() and os.readlink(link) == pick_up_file.name
     assert "hobbit_sos" in {b["type"] for b in load_program(pick_up_file).workspace["blocks"]["blocks"]}
 
@@ -296,7 +295,7 @@ def test_export_into_a_fifo_writes_into_it(qtbot, window, pick_up_file, tmp_path
     received = []
     reader = threading.Thread(target=lambda: received.append(fifo.read_text()), daemon=True)
     reader.start()
-    assert window.files.export_python(str(fifo))
+    assert completed(qtbot, window.files.export_python, str(fifo))
     reader.join(10)
     assert received and received[0].endswith("robot.gripper('close')\n")
     assert stat.S_ISFIFO(os.stat(fifo).st_mode)
@@ -307,5 +306,5 @@ def test_a_program_opened_at_start_with_changes_says_so_too(qtbot, driver, tmp_p
     path.write_text(rockly_document([block("hobbit_emo", {"emotion": "FURIOUS"})]))
     window = driver.open_window(str(path))
     assert "Block 1 (hobbit_emo), emotion: “FURIOUS” → “HAPPY”" in changes_box(qtbot, window).text()
-    qtbot.waitUntil(lambda: window.files.path == str(path), timeout=10000)
+    qtbot.waitUntil(lambda: window.document.path == str(path), timeout=10000)
     assert window.isWindowModified()

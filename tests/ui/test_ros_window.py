@@ -1,5 +1,6 @@
 """The window on a robot over ROS 1 (the ROS-level simulator in its own process, a real master)."""
 import pytest
+from page_tools import call_page
 from program_builder import block, number, stack, workspace
 
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
@@ -22,7 +23,7 @@ def test_choosing_ros_connects_and_shows_the_status(qtbot, ros_window):
 
 
 def test_a_program_runs_on_the_robot_over_ros(qtbot, ros_window):
-    ros_window.editor.call_blocking("load", {"workspace": workspace(stack(
+    call_page(qtbot, ros_window.editor, "load", {"workspace": workspace(stack(
         block("hobbit_emo", {"emotion": "HAPPY"}), block("hobbit_move", {"direction": "+"}, {"speed": number(0.3)}),
         block("hobbit_arm_gripper", {"movement": "OpenGripper"})))})
     with qtbot.waitSignal(ros_window.runs.sig_finished, timeout=30000) as blocker:
@@ -53,7 +54,7 @@ def test_the_status_shows_a_lost_master_and_its_return(qtbot, ros_window, ros_ma
     finally:
         ros_master.start()
     qtbot.waitUntil(lambda: "ROS connected" in ros_window.robots.status.text(), timeout=5000)
-    ros_window.editor.call_blocking("load", {"workspace": workspace(block("hobbit_emo", {"emotion": "SAD"}))})
+    call_page(qtbot, ros_window.editor, "load", {"workspace": workspace(block("hobbit_emo", {"emotion": "SAD"}))})
     with qtbot.waitSignal(ros_window.runs.sig_finished, timeout=30000) as blocker:
         ros_window.runs.run()
     assert blocker.args[0].outcome == "finished", blocker.args[0]
@@ -76,7 +77,7 @@ def test_health_turns_red_within_2_s_when_the_master_dies_and_green_when_it_retu
 
 
 def test_state_panels_and_topic_monitor_show_the_ros_robot(qtbot, ros_window):
-    ros_window.editor.call_blocking("load", {"workspace": workspace(stack(
+    call_page(qtbot, ros_window.editor, "load", {"workspace": workspace(stack(
         block("hobbit_emo", {"emotion": "WONDERING"}), block("hobbit_head", {"head_position": "up_right"}),
         block("hobbit_arm_move", {"movement": "MoveToTray"})))})
     with qtbot.waitSignal(ros_window.runs.sig_finished, timeout=30000) as blocker:

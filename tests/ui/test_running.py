@@ -1,7 +1,7 @@
 """Running programs in the window on the built-in simulator: run, step, breakpoints, stop, errors."""
 import pytest
-from window_tools import state
-from page_tools import run_js
+from window_tools import completed
+from page_tools import call_page, run_js
 from program_builder import block, number, stack, text, workspace
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QApplication, QMessageBox
@@ -13,7 +13,7 @@ def load(qtbot, window, *blocks, variables=None):
     ws = workspace(*blocks)
     if variables:
         ws["variables"] = [{"name": name, "id": name} for name in variables]
-    window.editor.call_blocking("load", {"workspace": ws})
+    call_page(qtbot, window.editor, "load", {"workspace": ws})
     return ws
 
 
@@ -71,7 +71,7 @@ def test_a_breakpoint_set_from_the_block_menu_pauses_there_and_is_saved(qtbot, w
     with qtbot.waitSignal(window.editor.sig_breakpoints, timeout=5000):
         run_js(qtbot, window.editor, "Blockly.ContextMenuRegistry.registry.getItem('rocklyBreakpoint')"
                                      ".callback({block: Blockly.getMainWorkspace().getBlockById('second')})")
-    assert window.breakpoints == ["second"]
+    assert window.document.breakpoints == ["second"]
     assert run_js(qtbot, window.editor, "Blockly.getMainWorkspace().getBlockById('second').getSvgRoot()"
                                         ".classList.contains('rocklyBreakpoint')")
     window.runs.run()
@@ -82,7 +82,7 @@ def test_a_breakpoint_set_from_the_block_menu_pauses_there_and_is_saved(qtbot, w
         window.runs.resume()
     assert window.robot().snapshot()["head"] == "down_center"
     path = tmp_path / "with-breakpoint.rockly"
-    assert window.files.save_as(str(path))
+    assert completed(qtbot, window.files.save_as, str(path))
     assert '"breakpoints": [\n  "second"\n ]' in path.read_text()
 
 
@@ -127,6 +127,7 @@ def test_stop_ends_the_run_anywhere_and_the_robot_stops(qtbot, driver, name, pro
     window = driver.open_window(simulator_speed=1.0)
     load(qtbot, window, program)
     window.runs.run()
+    qtbot.waitUntil(lambda: window.runs.state == "running", timeout=10000)
     qtbot.wait(300)  # let the program get into its wait / motion / loop
     assert window.runs.state == "running", window.runs.last_result
     with qtbot.waitSignal(window.runs.sig_finished, timeout=5000) as blocker:
@@ -144,7 +145,7 @@ def test_closing_the_window_stops_a_running_program(qtbot, driver):
     window.runs.run()
     qtbot.waitUntil(lambda: window.robot().snapshot()["motion"] == "moving", timeout=5000)
     robot = window.robot()
-    window.files.modified = False
+    window.document.modified = False
     assert window.close()
     assert window.runs.thread is None
     assert robot.snapshot()["linear"] == 0
@@ -155,6 +156,7 @@ def test_slow_motion_slider_delays_every_block(qtbot, window):
     window.run_toolbar.speed.setValue(window.run_toolbar.speed.maximum() - 1)
     assert window.run_toolbar.delay == pytest.approx(0.2)
     window.runs.run()
+    qtbot.waitUntil(lambda: window.runs.state == "running", timeout=10000)
     qtbot.wait(300)
     assert window.runs.state == "running"
     finished(qtbot, window)
@@ -193,6 +195,7 @@ def test_pause_halts_a_drive_at_once_and_continue_drives_the_rest(qtbot, driver)
 
 
 def test_run_on_an_empty_workspace_says_what_to_do(qtbot, window):
-    assert window.runs.run() is False
-    assert window.runs.state == "idle"
+    assert window.runs.run()
+    qtbot.waitUntil(lambda: window.runs.state == "idle", timeout=10000)
+    assert window.runs.thread is None
     assert window.console.lines()[-1].startswith("There is nothing to run yet: drag blocks")

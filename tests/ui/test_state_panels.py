@@ -1,5 +1,6 @@
 """The HOBBIT state panels, from the manifest, fed by the built-in simulator during a run."""
 import pytest
+from page_tools import call_page
 from program_builder import block, number, stack, text, workspace
 
 from rockly_desktop.core.state_store import StateStore
@@ -24,7 +25,7 @@ def test_each_row_shows_its_field_transformed_and_formatted(qtbot, hobbit):
 
 
 def test_panels_follow_a_run_on_the_simulator(qtbot, window):
-    window.editor.call_blocking("load", {"workspace": workspace(stack(
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(stack(
         block("hobbit_head", {"head_position": "up_left"}), block("hobbit_emo", {"emotion": "SAD"}),
         block("hobbit_arm_move", {"movement": "MoveToCandle"}), block("hobbit_show_info", inputs={"text": text("Hi there")}),
         block("hobbit_move", {"direction": "+"}, {"speed": number(0.5)})))})

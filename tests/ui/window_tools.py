@@ -1,4 +1,5 @@
 """Driving real Rockly windows from tests (a module of its own: test files import it by name)."""
+from page_tools import call_page
 from PySide6.QtCore import QCoreApplication, QEvent
 from PySide6.QtWidgets import QMessageBox
 
@@ -19,7 +20,7 @@ class WindowDriver:
     def close_all(self):
         """Delete every window now (a page left for interpreter exit crashes QtWebEngine)."""
         for window in self.windows:
-            window.files.modified = False
+            window.document.modified = False
             window.close()
             assert window.runs.thread is None, "a program was still running after the window closed"
             window.deleteLater()
@@ -41,6 +42,14 @@ def error_boxes(window) -> list:
     return [box.text() for box in window.findChildren(QMessageBox) if box.isVisible()]
 
 
-def state(window) -> dict:
+def state(qtbot, window) -> dict:
     """The editor's current workspace and Python."""
-    return window.editor.call_blocking("getState")
+    return call_page(qtbot, window.editor, "getState")
+
+
+def completed(qtbot, command, *args, timeout=15000):
+    """Run a window command that reports its end to ``then`` (save, open, export…) and return its outcome."""
+    outcomes = []
+    command(*args, then=outcomes.append)
+    qtbot.waitUntil(lambda: bool(outcomes), timeout=timeout)
+    return outcomes[0]

@@ -1,0 +1,65 @@
+"""The program the window edits, as its helpers share it: file, robot profile, breakpoints, changes.
+
+No widgets: the window's helpers (file commands, the run session, the robot choice)
+read and change it, and the window follows its signals (title, Robot menu, editor).
+"""
+from pathlib import Path
+
+from PySide6.QtCore import QObject, Signal
+
+from rockly_desktop.ui.texts import tr
+
+
+class Document(QObject):
+    """The open program: ``path`` (None until saved), ``profile``, ``breakpoints`` (block ids), ``modified``."""
+
+    sig_changed = Signal()  # path or modified flag changed
+    sig_profile_changed = Signal(object)  # the Profile programs are now made for
+
+    def __init__(self, profile, parent=None):
+        super().__init__(parent)
+        self._profile = profile
+        self._path = None
+        self._modified = False
+        self.breakpoints = []
+
+    @property
+    def path(self):
+        """The program's file, or None for a program never saved (or imported)."""
+        return self._path
+
+    @property
+    def modified(self) -> bool:
+        """True when the program on screen differs from its file."""
+        return self._modified
+
+    @modified.setter
+    def modified(self, value: bool):
+        if value != self._modified:
+            self._modified = value
+            self.sig_changed.emit()
+
+    @property
+    def profile(self):
+        """The robot profile whose blocks the program uses."""
+        return self._profile
+
+    @profile.setter
+    def profile(self, profile):
+        if profile is not self._profile:
+            self._profile = profile
+            self.sig_profile_changed.emit(profile)
+
+    def mark_modified(self):
+        """The person changed the program."""
+        self.modified = True
+
+    def set_file(self, path, modified: bool):
+        """The program on screen now belongs to ``path`` (None: no file yet)."""
+        self._path = str(path) if path else None
+        self._modified = modified
+        self.sig_changed.emit()
+
+    def display_name(self, language: str) -> str:
+        """The file name for the title bar and prompts."""
+        return Path(self._path).name if self._path else tr("untitled", language)
