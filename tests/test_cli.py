@@ -297,3 +297,14 @@ def test_a_power_too_large_to_compute_ends_the_run_with_a_plain_error(tmp_path):
     assert ran.returncode == 1
     assert "The number is too big." in ran.stderr
     assert "print(9 ** 999999999)" in exported.stdout  # exported Python keeps the plain operator
+
+
+def test_a_program_of_thousands_of_blocks_gets_the_time_it_needs_to_load(tmp_path):
+    prints = [block("text_print", inputs={"TEXT": text(f"line {i}")}, x=0, y=40 * i) for i in range(6000)]
+    source = tmp_path / "many.rockly"
+    source.write_text(rockly_document(prints), encoding="utf-8")
+
+    result = rockly("export", source, "-o", "-", timeout=110)
+
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.count("print(") == 6000

@@ -18,6 +18,11 @@ class UnknownBlocks(Exception):
         self.block_types = block_types
 
 
+# Blockly takes about 1 ms per block to load and render a program (10,000 blocks: ~10 s):
+# waits for the page grow with the program so a large one is not cut off.
+PER_BLOCK_MS = 4
+
+
 class HeadlessEditor:
     """An EditorView that is never shown, driven synchronously."""
 
@@ -25,6 +30,7 @@ class HeadlessEditor:
         self.language = language
         self.view = EditorView()
         self.profile = None
+        self.timeout_ms = ANSWER_TIMEOUT_MS  # how long a call may take, for the program shown
         self._errors = []
         self.view.sig_page_error.connect(self._errors.append)
 
@@ -50,6 +56,7 @@ class HeadlessEditor:
         ProgramFileError for a block without a type. Field values the page had to replace
         are kept in ``program.replaced_fields``."""
         self.use_profile(program.profile)
+        self.timeout_ms = ANSWER_TIMEOUT_MS + PER_BLOCK_MS * program.block_count
         name, args = program.editor_call()
         result = self.call_and_wait(name, args)
         if result.get("untypedBlock"):
@@ -59,8 +66,9 @@ class HeadlessEditor:
         program.take_load_result(result)
         return self.call_and_wait("getState")["python"]
 
-    def call_and_wait(self, name: str, args=None, timeout_ms: int = ANSWER_TIMEOUT_MS):
-        """Run a page call and wait for its answer; raises RuntimeError on a page error or timeout."""
+    def call_and_wait(self, name: str, args=None, timeout_ms: int = None):
+        """Run a page call and wait for its answer (at most ``timeout_ms``, by default what the
+        program shown needs); raises RuntimeError on a page error or timeout."""
         if not self.view.is_ready:
             raise RuntimeError("the block editor is not set up (use_profile first)")
         loop = QEventLoop()
@@ -70,7 +78,7 @@ class HeadlessEditor:
             answer.update(result=result, error=error)
             loop.quit()
 
-        self.view.call(name, args, on_answer, timeout_ms=timeout_ms)
+        self.view.call(name, args, on_answer, timeout_ms=timeout_ms or self.timeout_ms)
         loop.exec()  # the channel always answers: with the result, an error, or a timeout
         if answer["error"]:
             raise RuntimeError(answer["error"])

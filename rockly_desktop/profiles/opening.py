@@ -48,6 +48,13 @@ class ProgramToOpen:
         self.replaced_fields[:] = [*self.rounded_numbers, *((result or {}).get("replacedFields") or [])]
 
     @property
+    def block_count(self) -> int:
+        """How many blocks the program has (shadows included)."""
+        if self.is_import:
+            return self.xml.count("<block") + self.xml.count("<shadow")
+        return sum(block_types_in_workspace(self.workspace or {}).values())
+
+    @property
     def is_import(self) -> bool:
         """True for a first-Rockly XML program (it becomes an unsaved Rockly program)."""
         return self.xml is not None
