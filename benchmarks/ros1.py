@@ -33,7 +33,7 @@ from std_msgs.msg import Float64
 from geometry_msgs.msg import Twist
 from std_srvs.srv import Trigger, TriggerResponse
 sys.path.insert(0, sys.argv[1])
-from rockly_desktop.robot.ros1.messages import MessageTypes
+from rockly_desktop.robot.ros1.message_classes import MessageTypes
 classes = MessageTypes([sys.argv[2]]).action_classes("hobbit_msgs/ArmServerAction")
 rospy.init_node("rockly_bench_echo", disable_signals=True)
 pong = rospy.Publisher("/pong", Float64, queue_size=1000)

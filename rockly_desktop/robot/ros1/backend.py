@@ -12,7 +12,7 @@ from concurrent.futures import ThreadPoolExecutor
 from rockly_desktop.core.errors import RobotCommandError, RobotConnectionLost, RobotTimeout
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
 from rockly_desktop.robot.ros1.connection import ask_master
-from rockly_desktop.robot.ros1.messages import from_message, to_message
+from rockly_desktop.robot.ros1.message_values import from_message, to_message
 
 POLL_SECONDS = 0.01
 FIRST_PUBLISH_WAIT = 1.0  # a new publisher waits this long for subscribers to connect
