@@ -8,6 +8,7 @@ instances and back; errors name the field path.
 import importlib
 import math
 import numbers
+import weakref
 from collections.abc import Mapping
 
 import genmsg.msgs
@@ -23,6 +24,7 @@ _INT_RANGES = {
     "int64": (-2 ** 63, 2 ** 63 - 1), "uint64": (0, 2 ** 64 - 1),
 }
 _FLOAT32_MAX = 3.4028234663852886e38
+_FIELDS = weakref.WeakKeyDictionary()  # message class -> {field: type}
 
 
 def _join(path, name):
@@ -67,7 +69,7 @@ def _to_message(cls, data, path):
         data = {}
     if not isinstance(data, Mapping):
         raise _bad(path or cls._type, f"a dict for {cls._type}", data)
-    fields = dict(zip(cls.__slots__, cls._slot_types))
+    fields = _fields(cls)
     for key in data:
         if key not in fields:
             raise RobotCommandError(f"{_join(path, key)}: {cls._type} has no field {key!r} "
@@ -77,6 +79,14 @@ def _to_message(cls, data, path):
         if name in data:
             setattr(msg, name, _to_field(cls, field_type, data[name], _join(path, name)))
     return msg
+
+
+def _fields(cls) -> dict:
+    """``{field: type}`` of a message class, worked out once per class."""
+    fields = _FIELDS.get(cls)
+    if fields is None:
+        fields = _FIELDS[cls] = dict(zip(cls.__slots__, cls._slot_types))
+    return fields
 
 
 def _to_field(owner, field_type, value, path):
