@@ -8,12 +8,8 @@ expanded branches) and not at all while the topic's newest message is the same o
 A numeric field can be dragged to a plot ("topic|field.path") or double-clicked to
 ask for one (``sig_plot_requested``).
 """
-import json
 import math
-import numbers
-import re
 import time
-from itertools import islice
 
 from PySide6.QtCore import (QAbstractTableModel, QItemSelectionModel, QMimeData, QModelIndex, QSortFilterProxyModel, Qt,
                             QTimer, Signal)
@@ -21,13 +17,14 @@ from PySide6.QtGui import QFont, QPalette, QStandardItem, QStandardItemModel
 from PySide6.QtWidgets import (QAbstractItemView, QHBoxLayout, QHeaderView, QLabel, QLineEdit, QSplitter,
                                QStackedWidget, QStyle, QTableView, QToolButton, QTreeView, QVBoxLayout, QWidget)
 
+from rockly_desktop.core.field_paths import child_fields, field_mime_text
+from rockly_desktop.core.message_text import summary, value_kind, value_text
+from rockly_desktop.core.topic_rows import row_cells, topic_entries
 from rockly_desktop.ui.texts import tr
 
 REFRESH_MS = 100          # at most 10 updates a second
 GRAPH_INTERVAL = 1.0      # seconds between two questions to the ROS graph on the timer
 LIST_LIMIT = 50           # list items shown before "… N more"
-TEXT_LIMIT = 200          # characters of a long string or value shown
-NO_VALUE = "–"
 MIME_TYPE = "text/plain"
 
 TOPIC, TYPE, PUBLISHERS, RATE, AGE = range(5)
@@ -37,7 +34,6 @@ FILTER_ROLE = Qt.ItemDataRole.UserRole + 1
 KIND_ROLE = Qt.ItemDataRole.UserRole + 2
 PATH_ROLE = Qt.ItemDataRole.UserRole + 3
 
-_NAME = re.compile(r"[A-Za-z_]\w*")
 _NOTHING_SHOWN = object()  # "nothing shown yet": never the same object as a message
 
 
@@ -51,10 +47,6 @@ class _Row:
         self.texts = ("",) * 5
         self.keys = ("",) * 5
         self.count = 0
-
-
-def _age_text(age: float) -> str:
-    return f"{age:.1f}" if age < 100 else f"{age:.0f}"
 
 
 class TopicTableModel(QAbstractTableModel):
@@ -128,17 +120,13 @@ class TopicTableModel(QAbstractTableModel):
                 self._index[entry[0]] = len(self._rows)
                 self._rows.append(_Row(entry[0]))
             self.endInsertRows()
-        for topic, msg_type, publishers, count, rate, age in entries:
-            position = self._index[topic]
+        for entry in entries:
+            position = self._index[entry[0]]
             row = self._rows[position]
-            seen = count > 0
-            texts = (topic, msg_type, NO_VALUE if publishers is None else str(publishers),
-                     f"{rate:.1f}" if seen else NO_VALUE, _age_text(age) if seen else NO_VALUE)
-            row.keys = (topic.lower(), msg_type.lower(), -1.0 if publishers is None else float(publishers),
-                        rate if seen else -1.0, age if seen else math.inf)
+            texts, row.keys = row_cells(entry)
             changed = [column for column in range(len(texts)) if texts[column] != row.texts[column]]
-            was_seen = row.count > 0
-            row.count = count
+            was_seen, seen = row.count > 0, entry[3] > 0
+            row.count = entry[3]
             row.texts = texts
             if was_seen != seen:
                 changed = range(len(texts))  # the whole row changes colour
@@ -152,64 +140,6 @@ def _alignment(column: int):
 
 
 # ----------------------------------------------------------------------------- the message tree
-
-def _kind(value) -> str:
-    if isinstance(value, dict):
-        return "dict"
-    if isinstance(value, (list, tuple)):
-        return "list"
-    if isinstance(value, numbers.Real) and not isinstance(value, bool):
-        return "number"
-    return "leaf"
-
-
-def _clip(text: str) -> str:
-    return text if len(text) <= TEXT_LIMIT else text[:TEXT_LIMIT] + "…"
-
-
-def value_text(value) -> str:
-    """How the tree shows one value: numbers exactly, strings quoted, bytes by size."""
-    if isinstance(value, str):
-        return _clip(json.dumps(value, ensure_ascii=False))
-    if isinstance(value, (bytes, bytearray)):
-        return f"<{len(value)} bytes> {value[:16].hex(' ')}" + (" …" if len(value) > 16 else "")
-    if isinstance(value, float):
-        text = f"{value:.15g}"  # 15 digits: every digit meaningful, no 1.9449999999999998
-        return text if any(mark in text for mark in ".en") else text + ".0"
-    return _clip(str(value))
-
-
-def _summary(value, kind: str, language: str) -> str:
-    """The value column of a dict or list row."""
-    if kind == "dict":
-        return ""
-    if not value:
-        return "[]"
-    if any(_kind(item) in ("dict", "list") for item in islice(value, 8)):
-        return tr("monitor_items", language, count=len(value))
-    parts, width = [], 0
-    for item in islice(value, 12):
-        part = value_text(item)
-        if width + len(part) > 60 and parts:
-            break
-        parts.append(part)
-        width += len(part) + 2
-    text = "[" + ", ".join(parts) + (", …]" if len(parts) < len(value) else "]")
-    return f"({len(value)}) {text}" if len(parts) < len(value) else text
-
-
-def _children(value, path):
-    """(label, child, child's field path or None) of a dict or list, lists cut at LIST_LIMIT."""
-    if isinstance(value, dict):
-        for key, child in value.items():
-            name = str(key)
-            valid = path is not None and _NAME.fullmatch(name)
-            yield name, child, (f"{path}.{name}" if path else name) if valid else None
-    else:
-        indexable = bool(path) and not path.endswith("]")  # field_value knows name[i], not name[i][j]
-        for position, child in enumerate(islice(value, LIST_LIMIT)):
-            yield f"[{position}]", child, f"{path}[{position}]" if indexable else None
-
 
 class MessageModel(QStandardItemModel):
     """Field | Value rows of one message, updated in place; numeric fields drag as "topic|path"."""
@@ -266,14 +196,14 @@ class MessageModel(QStandardItemModel):
             path = self.plot_path(index)
             if path:
                 mime = QMimeData()
-                mime.setText(f"{self.topic}|{path}")
+                mime.setText(field_mime_text(self.topic, path))
                 return mime
         return None
 
     # -- building and updating rows
 
     def _sync(self, parent: QStandardItem, value, path):
-        entries = list(_children(value, path))
+        entries = list(child_fields(value, path, LIST_LIMIT))
         labels = [entry[0] for entry in entries]
         if isinstance(value, (list, tuple)) and len(value) > LIST_LIMIT:
             labels.append(tr("monitor_more", self._language, count=len(value) - LIST_LIMIT))
@@ -298,14 +228,14 @@ class MessageModel(QStandardItemModel):
             parent.appendRow([more, filler])
 
     def _make_row(self, label, value, path):
-        kind = _kind(value)
+        kind = value_kind(value)
         field = QStandardItem(label)
         field.setData(kind, KIND_ROLE)
         field.setData(path, PATH_ROLE)
         cell = QStandardItem()
         self._set_kind(field, cell, kind, path)
         if kind in ("dict", "list"):
-            cell.setText(_summary(value, kind, self._language))
+            cell.setText(self._summary(value))
             self._sync(field, value, path)
         else:
             cell.setText(value_text(value))
@@ -313,7 +243,7 @@ class MessageModel(QStandardItemModel):
 
     def _update_row(self, parent, position, label, value, path):
         field, cell = parent.child(position, 0), parent.child(position, 1)
-        kind, old = _kind(value), field.data(KIND_ROLE)
+        kind, old = value_kind(value), field.data(KIND_ROLE)
         if kind != old:
             if "dict" in (kind, old) or "list" in (kind, old):
                 parent.removeRow(position)
@@ -322,7 +252,7 @@ class MessageModel(QStandardItemModel):
             field.setData(kind, KIND_ROLE)
             self._set_kind(field, cell, kind, path)
         if kind in ("dict", "list"):
-            text = _summary(value, kind, self._language)
+            text = self._summary(value)
             if cell.text() != text:
                 cell.setText(text)
             self._sync(field, value, path)
@@ -330,6 +260,9 @@ class MessageModel(QStandardItemModel):
             text = value_text(value)
             if cell.text() != text:
                 cell.setText(text)
+
+    def _summary(self, value):
+        return summary(value, lambda count: tr("monitor_items", self._language, count=count))
 
     def _set_kind(self, field, cell, kind, path):
         flags = Qt.ItemFlag.ItemIsEnabled | Qt.ItemFlag.ItemIsSelectable
@@ -364,19 +297,51 @@ class TopicMonitor(QWidget):
         self._paused = False
         self._expanded = {}  # topic -> label paths of its expanded branches, for when it is shown again
 
+        bar = self._build_bar()
+        self._build_table()
+        message_pane = self._build_message_pane()
+        self.splitter = QSplitter(Qt.Orientation.Horizontal, self)
+        self.splitter.setChildrenCollapsible(False)
+        self.splitter.addWidget(self.table)
+        self.splitter.addWidget(message_pane)
+        self.splitter.setStretchFactor(0, 3)
+        self.splitter.setStretchFactor(1, 2)
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(6, 6, 6, 6)
+        layout.addLayout(bar)
+        layout.addWidget(self.splitter, 1)
+
+        self._timer = QTimer(self)
+        self._timer.setInterval(REFRESH_MS)
+        self._timer.timeout.connect(self._tick)
+        self._show_pause_state()
+        self._show_title()
+        self.refresh()
+
+    # -- building
+
+    def _build_bar(self) -> QHBoxLayout:
+        """The filter, the topic count and the pause button."""
         self.filter_edit = QLineEdit(self)
-        self.filter_edit.setPlaceholderText(tr("monitor_filter", language))
+        self.filter_edit.setPlaceholderText(tr("monitor_filter", self._language))
         self.filter_edit.setClearButtonEnabled(True)
         self.filter_edit.textChanged.connect(self._filter_changed)
         self.pause_button = QToolButton(self)
         self.pause_button.setCheckable(True)
         self.pause_button.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextBesideIcon)
-        self.pause_button.setToolTip(tr("monitor_pause_tip", language))
+        self.pause_button.setToolTip(tr("monitor_pause_tip", self._language))
         self.pause_button.toggled.connect(self.set_paused)
         self.count_label = QLabel(self)
         self.count_label.setForegroundRole(QPalette.ColorRole.PlaceholderText)
+        bar = QHBoxLayout()
+        bar.addWidget(self.filter_edit, 1)
+        bar.addWidget(self.count_label)
+        bar.addWidget(self.pause_button)
+        return bar
 
-        self.table_model = TopicTableModel(language, self)
+    def _build_table(self):
+        """The topic table, sorted and filtered through ``proxy``."""
+        self.table_model = TopicTableModel(self._language, self)
         self.proxy = QSortFilterProxyModel(self)
         self.proxy.setSourceModel(self.table_model)
         self.proxy.setSortRole(SORT_ROLE)
@@ -403,9 +368,11 @@ class TopicMonitor(QWidget):
         width = self.fontMetrics().horizontalAdvance
         header.resizeSection(TYPE, width("sensor_msgs/BatteryState") + 16)
         for column in (PUBLISHERS, RATE, AGE):
-            header.resizeSection(column, max(width(tr(_HEADERS[column], language)), width("1000.0")) + 22)
+            header.resizeSection(column, max(width(tr(_HEADERS[column], self._language)), width("1000.0")) + 22)
         self.table.selectionModel().selectionChanged.connect(self._selection_changed)
 
+    def _build_message_pane(self) -> QWidget:
+        """The selected topic's name and type over its message tree (or a placeholder)."""
         self.message_title = QLabel(self)
         self.message_title.setTextFormat(Qt.TextFormat.PlainText)
         title_font = self.message_title.font()
@@ -414,20 +381,8 @@ class TopicMonitor(QWidget):
         self.message_type = QLabel(self)
         self.message_type.setTextFormat(Qt.TextFormat.PlainText)
         self.message_type.setForegroundRole(QPalette.ColorRole.PlaceholderText)
-        self.message_model = MessageModel(language, self)
-        self.tree = QTreeView(self)
-        self.tree.setModel(self.message_model)
-        self.tree.setUniformRowHeights(True)
-        self.tree.setAlternatingRowColors(True)
-        self.tree.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
-        self.tree.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
-        self.tree.setDragEnabled(True)
-        self.tree.setDragDropMode(QAbstractItemView.DragDropMode.DragOnly)
-        self.tree.setExpandsOnDoubleClick(True)
-        self.tree.header().setStretchLastSection(True)
-        self.tree.header().resizeSection(0, width("child_frame_id") + 80)
-        self.tree.doubleClicked.connect(self._double_clicked)
-        self.placeholder = QLabel(tr("monitor_choose", language), self)
+        self._build_tree()
+        self.placeholder = QLabel(tr("monitor_choose", self._language), self)
         self.placeholder.setAlignment(Qt.AlignmentFlag.AlignCenter)
         self.placeholder.setWordWrap(True)
         self.placeholder.setForegroundRole(QPalette.ColorRole.PlaceholderText)
@@ -435,10 +390,6 @@ class TopicMonitor(QWidget):
         self._message_stack.addWidget(self.placeholder)
         self._message_stack.addWidget(self.tree)
 
-        bar = QHBoxLayout()
-        bar.addWidget(self.filter_edit, 1)
-        bar.addWidget(self.count_label)
-        bar.addWidget(self.pause_button)
         message_pane = QWidget(self)
         message_layout = QVBoxLayout(message_pane)
         message_layout.setContentsMargins(0, 0, 0, 0)
@@ -450,23 +401,23 @@ class TopicMonitor(QWidget):
         title.addWidget(self.message_type, 1)
         message_layout.addLayout(title)
         message_layout.addWidget(self._message_stack, 1)
-        self.splitter = QSplitter(Qt.Orientation.Horizontal, self)
-        self.splitter.setChildrenCollapsible(False)
-        self.splitter.addWidget(self.table)
-        self.splitter.addWidget(message_pane)
-        self.splitter.setStretchFactor(0, 3)
-        self.splitter.setStretchFactor(1, 2)
-        layout = QVBoxLayout(self)
-        layout.setContentsMargins(6, 6, 6, 6)
-        layout.addLayout(bar)
-        layout.addWidget(self.splitter, 1)
+        return message_pane
 
-        self._timer = QTimer(self)
-        self._timer.setInterval(REFRESH_MS)
-        self._timer.timeout.connect(self._tick)
-        self._show_pause_state()
-        self._show_title()
-        self.refresh()
+    def _build_tree(self):
+        """The message tree: numeric fields drag out, a double-click asks for a plot."""
+        self.message_model = MessageModel(self._language, self)
+        self.tree = QTreeView(self)
+        self.tree.setModel(self.message_model)
+        self.tree.setUniformRowHeights(True)
+        self.tree.setAlternatingRowColors(True)
+        self.tree.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        self.tree.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
+        self.tree.setDragEnabled(True)
+        self.tree.setDragDropMode(QAbstractItemView.DragDropMode.DragOnly)
+        self.tree.setExpandsOnDoubleClick(True)
+        self.tree.header().setStretchLastSection(True)
+        self.tree.header().resizeSection(0, self.fontMetrics().horizontalAdvance("child_frame_id") + 80)
+        self.tree.doubleClicked.connect(self._double_clicked)
 
     # -- public API
 
@@ -544,26 +495,13 @@ class TopicMonitor(QWidget):
 
     def _update_table(self, query_graph: bool):
         infos = {info.topic: info for info in self._store.topics()}
-        entries = []
-        if self._graph is None:
-            for info in infos.values():
-                entries.append((info.topic, info.msg_type, None, info.count, info.rate, info.age))
-        else:
-            if query_graph:
-                self._graph_time = time.monotonic()
-                try:
-                    self._graph_topics = list(self._graph())
-                except Exception:  # noqa: BLE001 - a lost ROS master must not break the panel: keep the last list
-                    pass
-            listed = set()
-            for topic, msg_type, publishers in self._graph_topics:
-                info = infos.get(topic)
-                entries.append((topic, msg_type or (info.msg_type if info else ""), publishers,
-                                info.count if info else 0, info.rate if info else 0.0, info.age if info else 0.0))
-                listed.add(topic)
-            for topic, info in infos.items():  # heard before, but nobody publishes it now
-                if topic not in listed:
-                    entries.append((topic, info.msg_type, 0, info.count, info.rate, info.age))
+        if self._graph is not None and query_graph:
+            self._graph_time = time.monotonic()
+            try:
+                self._graph_topics = list(self._graph())
+            except Exception:  # noqa: BLE001 - a lost ROS master must not break the panel: keep the last list
+                pass
+        entries = topic_entries(infos, None if self._graph is None else self._graph_topics)
         self.table_model.update(entries)
         self._show_count()
 
