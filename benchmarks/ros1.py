@@ -5,7 +5,8 @@ A real rosmaster on a free port and an echo node in its own process (plain rospy
   - publish rate: Twists per second a separate node receives;
   - service latency: std_srvs/Trigger;
   - action round trip: a goal to an actionlib server that succeeds at once;
-  - stop latency on the wire: stop request -> zero Twist received by the separate node.
+  - stop latency on the wire: stop request -> zero Twist received by the separate node;
+  - stop during a service call: stop request -> the waiting call (on a connected service) raises.
 
     python benchmarks/ros1.py
 """
@@ -31,9 +32,9 @@ ECHO_NODE = r'''
 import sys, time, threading, rospy, actionlib
 from std_msgs.msg import Float64
 from geometry_msgs.msg import Twist
-from std_srvs.srv import Trigger, TriggerResponse
+from std_srvs.srv import SetBool, SetBoolResponse, Trigger, TriggerResponse
 sys.path.insert(0, sys.argv[1])
-from rockly_desktop.robot.ros1.messages import MessageTypes
+from rockly_desktop.robot.ros1.message_classes import MessageTypes
 classes = MessageTypes([sys.argv[2]]).action_classes("hobbit_msgs/ArmServerAction")
 rospy.init_node("rockly_bench_echo", disable_signals=True)
 pong = rospy.Publisher("/pong", Float64, queue_size=1000)
@@ -48,6 +49,7 @@ rospy.Subscriber("/cmd_vel", Twist, on_twist, queue_size=100000)
 counted = rospy.Publisher("/twist_count", Float64, queue_size=10, latch=True)
 rospy.Subscriber("/count_please", Float64, lambda m: counted.publish(Float64(count[0])))
 rospy.Service("/bench_trigger", Trigger, lambda r: TriggerResponse(True, "ok"))
+rospy.Service("/bench_hold", SetBool, lambda r: (time.sleep(2 if r.data else 0), SetBoolResponse(True, "ok"))[1])
 server = actionlib.SimpleActionServer("bench_arm", classes.action, auto_start=False,
                                       execute_cb=lambda goal: server.set_succeeded(classes.result()))
 server.start()
@@ -209,6 +211,23 @@ def run_all(master):
         latencies.append(seen[before] - requested)
     print(f"stop latency on the wire (stop -> zero Twist at a separate node): median {median_ms(latencies):.2f} ms, "
           f"max {max(latencies) * 1000:.2f} ms over {STOP_TRIALS} stops (aim max <= 50 ms)")
+
+    # --- stop during a service call ----------------------------------------------------
+    from rockly_desktop.core.errors import ProgramStopped
+
+    ended = []
+    for _ in range(STOP_TRIALS):
+        interrupt = Interrupt()
+        held = robot.backend(interrupt)
+        held.call_service("/bench_hold", "std_srvs/SetBool", {"data": False}, 5)  # connected: the next call waits here
+        requested = []
+        threading.Timer(0.05, lambda: (requested.append(time.perf_counter()), interrupt.request_stop())).start()
+        try:
+            held.call_service("/bench_hold", "std_srvs/SetBool", {"data": True}, 5)
+        except ProgramStopped:
+            ended.append(time.perf_counter() - requested[0])
+    print(f"stop during a service call (stop -> the waiting call raises): median {median_ms(ended):.2f} ms, "
+          f"max {max(ended) * 1000:.2f} ms over {len(ended)} of {STOP_TRIALS} stops (aim max <= 50 ms)")
 
 
 if __name__ == "__main__":

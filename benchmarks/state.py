@@ -26,7 +26,7 @@ from ros_helpers import RosMaster, ros_environment  # noqa: E402
 PUBLISHER = r'''
 import math, sys, time, rospy
 sys.path.insert(0, sys.argv[1])
-from rockly_desktop.robot.ros1.messages import MessageTypes
+from rockly_desktop.robot.ros1.message_classes import MessageTypes
 Odometry = MessageTypes().message_class("nav_msgs/Odometry")  # Debian ships only its definition
 rospy.init_node("rockly_bench_odometry", disable_signals=True)
 publisher = rospy.Publisher("/odom", Odometry, queue_size=1000)

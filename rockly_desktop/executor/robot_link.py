@@ -66,7 +66,7 @@ class RosRobot:
         self.connection = RosConnection.get(master_uri)  # RosUnavailable without rospy or a master
         try:
             from rockly_desktop.robot.ros1.backend import RosGraph
-            from rockly_desktop.robot.ros1.messages import MessageTypes
+            from rockly_desktop.robot.ros1.message_classes import MessageTypes
         except ImportError as error:
             raise RosUnavailable(f"the ROS 1 message tools (genpy, actionlib) are not installed ({error})",
                                  "no_ros_tools") from None
@@ -75,7 +75,7 @@ class RosRobot:
         for action in profile.manifest.get("safe_stop", []):  # connected now, so a stop never waits for them
             if "publish" in action:
                 safe_backend.connect_publisher(action["publish"]["topic"], action["publish"]["type"])
-        from rockly_desktop.robot.ros1.messages import from_message
+        from rockly_desktop.robot.ros1.message_values import from_message
 
         self.state = StateStore(decode=from_message)
         self.graph.service_watchers.append(self.state.record)  # this node's calls, e.g. the tablet's questions

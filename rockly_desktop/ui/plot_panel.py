@@ -6,10 +6,10 @@ samples it has not seen yet into its own bounded buffer per curve (the store kee
 history; the panel keeps up to 5 minutes), and draws the last 10 s / 30 s / 60 s / 5 min with
 pyqtgraph, time on the x axis in seconds relative to now (0 = now, -30 = 30 s ago).
 
-Fields arrive by drag and drop (text ``"topic|field.path"``, see :func:`field_mime_text`) or
-through the "Add…" menu. Clicking a curve's legend entry hides or shows it.
+Fields arrive by drag and drop (text ``"topic|field.path"``, see
+:func:`~rockly_desktop.core.field_paths.field_mime_text`) or through the "Add…" menu. Clicking a
+curve's legend entry hides or shows it.
 """
-import csv
 import os
 import time
 
@@ -19,6 +19,9 @@ from PySide6.QtGui import QColor
 from PySide6.QtWidgets import (QComboBox, QCompleter, QFileDialog, QFormLayout, QHBoxLayout, QLabel, QLineEdit, QMenu,
                                QMessageBox, QPushButton, QToolButton, QVBoxLayout, QWidget, QWidgetAction)
 
+from rockly_desktop.core.field_paths import numeric_paths, parse_mime_text
+from rockly_desktop.plotting.csv_export import write_tidy_csv
+from rockly_desktop.plotting.samples import SampleBuffer, read_new_samples
 from rockly_desktop.ui.texts import tr
 
 os.environ.setdefault("PYQTGRAPH_QT_LIB", "PySide6")
@@ -39,114 +42,6 @@ _BUSY_SHARE = 4  # reading and drawing may take at most a quarter of the time be
 # Okabe & Ito's colour-blind-safe palette (without its yellow, which vanishes on white).
 _COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000")
 _FOREGROUND = "#333333"
-_MAX_INDEXED_ITEMS = 32  # list elements offered by the field completer
-
-
-def field_mime_text(topic: str, path: str) -> str:
-    """The drag text for one field (what a Topic monitor offers): ``"topic|field.path"``."""
-    return f"{topic}|{path}"
-
-
-def parse_mime_text(text: str) -> list:
-    """The (topic, path) pairs in a drag text: one ``topic|field.path`` a line; malformed lines are skipped."""
-    fields = []
-    for line in (text or "").splitlines():
-        topic, bar, path = line.strip().partition("|")
-        if bar and topic.strip() and path.strip():
-            fields.append((topic.strip(), path.strip()))
-    return fields
-
-
-def numeric_paths(message, prefix: str = "") -> list:
-    """The paths of the numeric fields in a message dict (the first few elements of lists), for completion."""
-    paths = []
-    if isinstance(message, dict):
-        for key, value in message.items():
-            paths += numeric_paths(value, f"{prefix}.{key}" if prefix else str(key))
-    elif isinstance(message, (list, tuple)) and prefix:
-        for index, value in enumerate(message[:_MAX_INDEXED_ITEMS]):
-            paths += numeric_paths(value, f"{prefix}[{index}]")
-    elif isinstance(message, (int, float)) and not isinstance(message, bool) and prefix:
-        paths.append(prefix)
-    return paths
-
-
-class SampleBuffer:
-    """The (time, value) samples of one curve, oldest first, never more than ``bound`` of them.
-
-    Two preallocated numpy arrays with a little spare room: appending writes behind the newest
-    sample, and when the room runs out the kept samples move back to the front. Memory is fixed
-    at creation; ``times`` and ``values`` are views without copying.
-    """
-
-    def __init__(self, bound: int):
-        if bound < 1:
-            raise ValueError("a sample buffer holds at least one sample")
-        self.bound = bound
-        capacity = bound + bound // 4 + 1
-        self._times = np.empty(capacity)
-        self._values = np.empty(capacity)
-        self._start = 0
-        self._end = 0
-        self.last_time = None  # newest time ever appended (kept when trimmed away)
-        self.at_last_time = 0  # how many appended samples carry exactly that time
-
-    def __len__(self):
-        return self._end - self._start
-
-    @property
-    def capacity(self) -> int:
-        """The size of the preallocated arrays."""
-        return len(self._times)
-
-    @property
-    def times(self):
-        return self._times[self._start:self._end]
-
-    @property
-    def values(self):
-        return self._values[self._start:self._end]
-
-    def extend(self, times, values):
-        """Append samples (times not older than the newest so far); the oldest go when over the bound."""
-        times = np.asarray(times, dtype=float)
-        values = np.asarray(values, dtype=float)
-        if not len(times):
-            return
-        newest = times[-1]
-        at_newest = len(times) - int(np.searchsorted(times, newest, "left"))
-        self.at_last_time = at_newest + (self.at_last_time if newest == self.last_time else 0)
-        self.last_time = float(newest)
-        if len(times) >= self.bound:
-            times, values = times[-self.bound:], values[-self.bound:]
-            self._start = 0
-            self._end = 0
-        count = len(times)
-        self._start += max(0, len(self) + count - self.bound)
-        if self._end + count > self.capacity:
-            kept = len(self)
-            self._times[:kept] = self._times[self._start:self._end]
-            self._values[:kept] = self._values[self._start:self._end]
-            self._start, self._end = 0, kept
-        self._times[self._end:self._end + count] = times
-        self._values[self._end:self._end + count] = values
-        self._end += count
-
-    def trim_before(self, oldest: float):
-        """Forget the samples older than ``oldest``."""
-        self._start += int(np.searchsorted(self.times, oldest, "left"))
-
-    def between(self, first: float, last: float):
-        """(times, values) views of the samples with ``first <= time <= last``."""
-        times = self.times
-        low = int(np.searchsorted(times, first, "left"))
-        high = int(np.searchsorted(times, last, "right"))
-        return times[low:high], self.values[low:high]
-
-    def clear(self):
-        self._start = self._end = 0
-        self.last_time = None
-        self.at_last_time = 0
 
 
 class _Curve:
@@ -187,18 +82,8 @@ class PlotPanel(QWidget):
     and redraws (the panel's timer calls it ~30 times a second while the panel is visible, not
     paused and has curves; while paused ``refresh()`` does nothing).
 
-    ``export_csv(path)`` writes what the plot shows, long ("tidy") format, one row per sample::
-
-        time,topic,field,value
-        0.000000,/odom,pose.pose.position.x,0.0
-        0.000000,/odom,twist.twist.angular.z,0.5
-        0.010000,/odom,pose.pose.position.x,0.02
-
-    ``time`` is in seconds since the first sample shown (microsecond resolution), ``value`` the
-    exact float. Rows are ordered by time, then by curve in the order they were added. Long
-    format because curves from different topics rarely share timestamps: a wide table would be
-    mostly empty cells, while this one needs no resampling and pivots in one step in a
-    spreadsheet, pandas (``df.pivot_table(index="time", columns=["topic", "field"])``) or R.
+    ``export_csv(path)`` writes what the plot shows, one row per sample in long ("tidy") format
+    (:mod:`rockly_desktop.plotting.csv_export`), ``time`` counted from the first sample shown.
 
     ``export_png(path)`` saves the plot as it is on screen.
 
@@ -469,18 +354,7 @@ class PlotPanel(QWidget):
         self.timer.setInterval(int(min(MAX_REFRESH_INTERVAL_MS, max(REFRESH_INTERVAL_MS, _BUSY_SHARE * cost_ms))))
 
     def _read(self, curve):
-        buffer = curve.buffer
-        since = buffer.last_time
-        points = self._store.series(curve.topic, curve.path, since=since)
-        if since is not None:
-            # ``since`` is inclusive: skip the samples at that time that are already in the buffer.
-            skip = 0
-            while skip < len(points) and skip < buffer.at_last_time and points[skip][0] == since:
-                skip += 1
-            points = points[skip:]
-        if points:
-            samples = np.array(points, dtype=float)
-            buffer.extend(samples[:, 0], samples[:, 1])
+        read_new_samples(self._store, curve.topic, curve.path, curve.buffer)
 
     def _shown(self, curve):
         """(times, values) of a curve's samples inside the window ending at the shown moment."""
@@ -562,19 +436,7 @@ class PlotPanel(QWidget):
         """Write the samples shown to ``path`` (format in the class docstring); returns the number of rows."""
         if not self._paused:
             self.refresh()
-        parts = [(self._shown(curve), index) for index, curve in enumerate(self._curves)]
-        times = np.concatenate([shown[0] for shown, _ in parts] or [np.empty(0)])
-        values = np.concatenate([shown[1] for shown, _ in parts] or [np.empty(0)])
-        owners = np.concatenate([np.full(len(shown[0]), index) for shown, index in parts] or [np.empty(0, int)])
-        order = np.lexsort((owners, times))
-        start = times.min() if len(times) else 0.0
-        with open(path, "w", newline="", encoding="utf-8") as file:
-            writer = csv.writer(file)
-            writer.writerow(["time", "topic", "field", "value"])
-            for row in order:
-                curve = self._curves[owners[row]]
-                writer.writerow([f"{times[row] - start:.6f}", curve.topic, curve.path, repr(float(values[row]))])
-        return len(order)
+        return write_tidy_csv(path, [(curve.topic, curve.path, *self._shown(curve)) for curve in self._curves])
 
     def export_png(self, path):
         """Save the plot (axes, curves, legend) as it is on screen to ``path`` as PNG; OSError if that fails."""

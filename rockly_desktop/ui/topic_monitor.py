@@ -8,343 +8,23 @@ expanded branches) and not at all while the topic's newest message is the same o
 A numeric field can be dragged to a plot ("topic|field.path") or double-clicked to
 ask for one (``sig_plot_requested``).
 """
-import json
 import math
-import numbers
-import re
 import time
-from itertools import islice
 
-from PySide6.QtCore import (QAbstractTableModel, QItemSelectionModel, QMimeData, QModelIndex, QSortFilterProxyModel, Qt,
-                            QTimer, Signal)
-from PySide6.QtGui import QFont, QPalette, QStandardItem, QStandardItemModel
+from PySide6.QtCore import QItemSelectionModel, QSortFilterProxyModel, Qt, QTimer, Signal
+from PySide6.QtGui import QPalette
 from PySide6.QtWidgets import (QAbstractItemView, QHBoxLayout, QHeaderView, QLabel, QLineEdit, QSplitter,
                                QStackedWidget, QStyle, QTableView, QToolButton, QTreeView, QVBoxLayout, QWidget)
 
+from rockly_desktop.core.topic_rows import topic_entries
 from rockly_desktop.ui.texts import tr
+from rockly_desktop.ui.topic_models import (AGE, FILTER_ROLE, HEADERS, PUBLISHERS, RATE, SORT_ROLE, TOPIC, TYPE,
+                                            MessageModel, TopicTableModel)
 
 REFRESH_MS = 100          # at most 10 updates a second
 GRAPH_INTERVAL = 1.0      # seconds between two questions to the ROS graph on the timer
-LIST_LIMIT = 50           # list items shown before "… N more"
-TEXT_LIMIT = 200          # characters of a long string or value shown
-NO_VALUE = "–"
-MIME_TYPE = "text/plain"
-
-TOPIC, TYPE, PUBLISHERS, RATE, AGE = range(5)
-_HEADERS = ("monitor_topic", "monitor_type", "monitor_publishers", "monitor_rate", "monitor_age")
-SORT_ROLE = Qt.ItemDataRole.UserRole
-FILTER_ROLE = Qt.ItemDataRole.UserRole + 1
-KIND_ROLE = Qt.ItemDataRole.UserRole + 2
-PATH_ROLE = Qt.ItemDataRole.UserRole + 3
-
-_NAME = re.compile(r"[A-Za-z_]\w*")
 _NOTHING_SHOWN = object()  # "nothing shown yet": never the same object as a message
 
-
-# ----------------------------------------------------------------------------- the table
-
-class _Row:
-    __slots__ = ("topic", "texts", "keys", "count")
-
-    def __init__(self, topic):
-        self.topic = topic
-        self.texts = ("",) * 5
-        self.keys = ("",) * 5
-        self.count = 0
-
-
-def _age_text(age: float) -> str:
-    return f"{age:.1f}" if age < 100 else f"{age:.0f}"
-
-
-class TopicTableModel(QAbstractTableModel):
-    """One row per topic, in arrival order (the view sorts); ``update`` changes only what changed."""
-
-    def __init__(self, language: str, parent=None):
-        super().__init__(parent)
-        self._language = language
-        self._rows = []
-        self._index = {}
-        self._silent = QPalette().color(QPalette.ColorRole.PlaceholderText)  # topics without messages yet
-
-    def rowCount(self, parent=QModelIndex()):  # noqa: N802 - Qt's name
-        return 0 if parent.isValid() else len(self._rows)
-
-    def columnCount(self, parent=QModelIndex()):  # noqa: N802
-        return 0 if parent.isValid() else len(_HEADERS)
-
-    def headerData(self, section, orientation, role=Qt.ItemDataRole.DisplayRole):  # noqa: N802
-        if orientation == Qt.Orientation.Horizontal and role == Qt.ItemDataRole.DisplayRole:
-            return tr(_HEADERS[section], self._language)
-        if orientation == Qt.Orientation.Horizontal and role == Qt.ItemDataRole.TextAlignmentRole:
-            return _alignment(section)
-        return None
-
-    def data(self, index, role=Qt.ItemDataRole.DisplayRole):
-        if not index.isValid():
-            return None
-        row = self._rows[index.row()]
-        column = index.column()
-        if role == Qt.ItemDataRole.DisplayRole:
-            return row.texts[column]
-        if role == SORT_ROLE:
-            return row.keys[column]
-        if role == FILTER_ROLE:
-            return f"{row.topic} {row.texts[TYPE]}"
-        if role == Qt.ItemDataRole.TextAlignmentRole:
-            return _alignment(column)
-        if role == Qt.ItemDataRole.ForegroundRole and row.count == 0:
-            return self._silent
-        if role == Qt.ItemDataRole.ToolTipRole:
-            return f"{row.topic}\n{row.texts[TYPE]}\n{tr('monitor_count_tip', self._language, count=row.count)}"
-        return None
-
-    def topic_at(self, row: int) -> str:
-        return self._rows[row].topic
-
-    def row_of(self, topic: str) -> int:
-        """The row of ``topic``, -1 when it is not listed."""
-        return self._index.get(topic, -1)
-
-    def topics(self) -> list:
-        return [row.topic for row in self._rows]
-
-    def update(self, entries: list):
-        """Show ``entries`` [(topic, type, publishers or None, count, rate, age)]; signal changed cells only."""
-        wanted = {entry[0] for entry in entries}
-        removed = False
-        for position in reversed(range(len(self._rows))):
-            if self._rows[position].topic not in wanted:
-                self.beginRemoveRows(QModelIndex(), position, position)
-                del self._rows[position]
-                self.endRemoveRows()
-                removed = True
-        if removed:
-            self._index = {row.topic: position for position, row in enumerate(self._rows)}
-        new = [entry for entry in entries if entry[0] not in self._index]
-        if new:
-            self.beginInsertRows(QModelIndex(), len(self._rows), len(self._rows) + len(new) - 1)
-            for entry in new:
-                self._index[entry[0]] = len(self._rows)
-                self._rows.append(_Row(entry[0]))
-            self.endInsertRows()
-        for topic, msg_type, publishers, count, rate, age in entries:
-            position = self._index[topic]
-            row = self._rows[position]
-            seen = count > 0
-            texts = (topic, msg_type, NO_VALUE if publishers is None else str(publishers),
-                     f"{rate:.1f}" if seen else NO_VALUE, _age_text(age) if seen else NO_VALUE)
-            row.keys = (topic.lower(), msg_type.lower(), -1.0 if publishers is None else float(publishers),
-                        rate if seen else -1.0, age if seen else math.inf)
-            changed = [column for column in range(len(texts)) if texts[column] != row.texts[column]]
-            was_seen = row.count > 0
-            row.count = count
-            row.texts = texts
-            if was_seen != seen:
-                changed = range(len(texts))  # the whole row changes colour
-            if changed:
-                self.dataChanged.emit(self.index(position, changed[0]), self.index(position, changed[-1]))
-
-
-def _alignment(column: int):
-    horizontal = Qt.AlignmentFlag.AlignRight if column >= PUBLISHERS else Qt.AlignmentFlag.AlignLeft
-    return int(horizontal | Qt.AlignmentFlag.AlignVCenter)
-
-
-# ----------------------------------------------------------------------------- the message tree
-
-def _kind(value) -> str:
-    if isinstance(value, dict):
-        return "dict"
-    if isinstance(value, (list, tuple)):
-        return "list"
-    if isinstance(value, numbers.Real) and not isinstance(value, bool):
-        return "number"
-    return "leaf"
-
-
-def _clip(text: str) -> str:
-    return text if len(text) <= TEXT_LIMIT else text[:TEXT_LIMIT] + "…"
-
-
-def value_text(value) -> str:
-    """How the tree shows one value: numbers exactly, strings quoted, bytes by size."""
-    if isinstance(value, str):
-        return _clip(json.dumps(value, ensure_ascii=False))
-    if isinstance(value, (bytes, bytearray)):
-        return f"<{len(value)} bytes> {value[:16].hex(' ')}" + (" …" if len(value) > 16 else "")
-    if isinstance(value, float):
-        text = f"{value:.15g}"  # 15 digits: every digit meaningful, no 1.9449999999999998
-        return text if any(mark in text for mark in ".en") else text + ".0"
-    return _clip(str(value))
-
-
-def _summary(value, kind: str, language: str) -> str:
-    """The value column of a dict or list row."""
-    if kind == "dict":
-        return ""
-    if not value:
-        return "[]"
-    if any(_kind(item) in ("dict", "list") for item in islice(value, 8)):
-        return tr("monitor_items", language, count=len(value))
-    parts, width = [], 0
-    for item in islice(value, 12):
-        part = value_text(item)
-        if width + len(part) > 60 and parts:
-            break
-        parts.append(part)
-        width += len(part) + 2
-    text = "[" + ", ".join(parts) + (", …]" if len(parts) < len(value) else "]")
-    return f"({len(value)}) {text}" if len(parts) < len(value) else text
-
-
-def _children(value, path):
-    """(label, child, child's field path or None) of a dict or list, lists cut at LIST_LIMIT."""
-    if isinstance(value, dict):
-        for key, child in value.items():
-            name = str(key)
-            valid = path is not None and _NAME.fullmatch(name)
-            yield name, child, (f"{path}.{name}" if path else name) if valid else None
-    else:
-        indexable = bool(path) and not path.endswith("]")  # field_value knows name[i], not name[i][j]
-        for position, child in enumerate(islice(value, LIST_LIMIT)):
-            yield f"[{position}]", child, f"{path}[{position}]" if indexable else None
-
-
-class MessageModel(QStandardItemModel):
-    """Field | Value rows of one message, updated in place; numeric fields drag as "topic|path"."""
-
-    def __init__(self, language: str, parent=None):
-        super().__init__(0, 2, parent)
-        self._language = language
-        self.topic = ""
-        self.setHorizontalHeaderLabels([tr("monitor_field", language), tr("monitor_value", language)])
-        self._value_font = QFont()
-        self._value_font.setStyleHint(QFont.StyleHint.Monospace)
-        self._value_font.setFamilies(["DejaVu Sans Mono", "Menlo", "Consolas", "monospace"])
-
-    def show_message(self, topic: str, message):
-        """Show ``message`` of ``topic``: rows whose field is unchanged stay (and stay expanded)."""
-        if topic != self.topic:
-            self.clear_message()
-            self.topic = topic
-        self._sync(self.invisibleRootItem(), message, "")
-
-    def clear_message(self):
-        root = self.invisibleRootItem()
-        if root.rowCount():
-            root.removeRows(0, root.rowCount())
-        self.topic = ""
-
-    def plot_path(self, index) -> str:
-        """The field path of a numeric field at ``index`` (any column), or None."""
-        if not index.isValid():
-            return None
-        item = self.itemFromIndex(index.siblingAtColumn(0))
-        if item is None or item.data(KIND_ROLE) != "number":
-            return None
-        return item.data(PATH_ROLE)
-
-    def index_of(self, path: str):
-        """The index (Field column) of the row showing field ``path``, invalid when not shown."""
-        def find(parent):
-            for position in range(parent.rowCount()):
-                item = parent.child(position, 0)
-                own = item.data(PATH_ROLE)
-                if own == path:
-                    return item.index()
-                if own and path.startswith(own) and path[len(own)] in ".[":
-                    return find(item)
-            return QModelIndex()
-        return find(self.invisibleRootItem())
-
-    def mimeTypes(self):  # noqa: N802
-        return [MIME_TYPE]
-
-    def mimeData(self, indexes):  # noqa: N802
-        for index in indexes:
-            path = self.plot_path(index)
-            if path:
-                mime = QMimeData()
-                mime.setText(f"{self.topic}|{path}")
-                return mime
-        return None
-
-    # -- building and updating rows
-
-    def _sync(self, parent: QStandardItem, value, path):
-        entries = list(_children(value, path))
-        labels = [entry[0] for entry in entries]
-        if isinstance(value, (list, tuple)) and len(value) > LIST_LIMIT:
-            labels.append(tr("monitor_more", self._language, count=len(value) - LIST_LIMIT))
-        rows = parent.rowCount()
-        keep = 0
-        while keep < rows and keep < len(labels) and parent.child(keep, 0).text() == labels[keep]:
-            keep += 1
-        if keep < rows:
-            parent.removeRows(keep, rows - keep)
-        for position, (label, child, child_path) in enumerate(entries):
-            if position < keep:
-                self._update_row(parent, position, label, child, child_path)
-            else:
-                parent.appendRow(self._make_row(label, child, child_path))
-        if len(labels) > len(entries) and keep < len(labels):
-            more = QStandardItem(labels[-1])
-            more.setFlags(Qt.ItemFlag.ItemIsEnabled)
-            more.setData("more", KIND_ROLE)
-            more.setForeground(QPalette().color(QPalette.ColorRole.PlaceholderText))
-            filler = QStandardItem("")
-            filler.setFlags(Qt.ItemFlag.ItemIsEnabled)
-            parent.appendRow([more, filler])
-
-    def _make_row(self, label, value, path):
-        kind = _kind(value)
-        field = QStandardItem(label)
-        field.setData(kind, KIND_ROLE)
-        field.setData(path, PATH_ROLE)
-        cell = QStandardItem()
-        self._set_kind(field, cell, kind, path)
-        if kind in ("dict", "list"):
-            cell.setText(_summary(value, kind, self._language))
-            self._sync(field, value, path)
-        else:
-            cell.setText(value_text(value))
-        return [field, cell]
-
-    def _update_row(self, parent, position, label, value, path):
-        field, cell = parent.child(position, 0), parent.child(position, 1)
-        kind, old = _kind(value), field.data(KIND_ROLE)
-        if kind != old:
-            if "dict" in (kind, old) or "list" in (kind, old):
-                parent.removeRow(position)
-                parent.insertRow(position, self._make_row(label, value, path))
-                return
-            field.setData(kind, KIND_ROLE)
-            self._set_kind(field, cell, kind, path)
-        if kind in ("dict", "list"):
-            text = _summary(value, kind, self._language)
-            if cell.text() != text:
-                cell.setText(text)
-            self._sync(field, value, path)
-        else:
-            text = value_text(value)
-            if cell.text() != text:
-                cell.setText(text)
-
-    def _set_kind(self, field, cell, kind, path):
-        flags = Qt.ItemFlag.ItemIsEnabled | Qt.ItemFlag.ItemIsSelectable
-        tip = ""
-        if kind == "number" and path:
-            flags |= Qt.ItemFlag.ItemIsDragEnabled
-            tip = tr("monitor_plot_tip", self._language, path=path)
-        for item in (field, cell):
-            item.setFlags(flags)
-            item.setToolTip(tip)
-        if kind not in ("dict", "list"):
-            cell.setFont(self._value_font)
-
-
-# ----------------------------------------------------------------------------- the panel
 
 class TopicMonitor(QWidget):
     """The Topic monitor panel over ``store``; ``graph()`` -> [(topic, type, publishers)] lists silent topics too."""
@@ -364,19 +44,51 @@ class TopicMonitor(QWidget):
         self._paused = False
         self._expanded = {}  # topic -> label paths of its expanded branches, for when it is shown again
 
+        bar = self._build_bar()
+        self._build_table()
+        message_pane = self._build_message_pane()
+        self.splitter = QSplitter(Qt.Orientation.Horizontal, self)
+        self.splitter.setChildrenCollapsible(False)
+        self.splitter.addWidget(self.table)
+        self.splitter.addWidget(message_pane)
+        self.splitter.setStretchFactor(0, 3)
+        self.splitter.setStretchFactor(1, 2)
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(6, 6, 6, 6)
+        layout.addLayout(bar)
+        layout.addWidget(self.splitter, 1)
+
+        self._timer = QTimer(self)
+        self._timer.setInterval(REFRESH_MS)
+        self._timer.timeout.connect(self._tick)
+        self._show_pause_state()
+        self._show_title()
+        self.refresh()
+
+    # -- building
+
+    def _build_bar(self) -> QHBoxLayout:
+        """The filter, the topic count and the pause button."""
         self.filter_edit = QLineEdit(self)
-        self.filter_edit.setPlaceholderText(tr("monitor_filter", language))
+        self.filter_edit.setPlaceholderText(tr("monitor_filter", self._language))
         self.filter_edit.setClearButtonEnabled(True)
         self.filter_edit.textChanged.connect(self._filter_changed)
         self.pause_button = QToolButton(self)
         self.pause_button.setCheckable(True)
         self.pause_button.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextBesideIcon)
-        self.pause_button.setToolTip(tr("monitor_pause_tip", language))
+        self.pause_button.setToolTip(tr("monitor_pause_tip", self._language))
         self.pause_button.toggled.connect(self.set_paused)
         self.count_label = QLabel(self)
         self.count_label.setForegroundRole(QPalette.ColorRole.PlaceholderText)
+        bar = QHBoxLayout()
+        bar.addWidget(self.filter_edit, 1)
+        bar.addWidget(self.count_label)
+        bar.addWidget(self.pause_button)
+        return bar
 
-        self.table_model = TopicTableModel(language, self)
+    def _build_table(self):
+        """The topic table, sorted and filtered through ``proxy``."""
+        self.table_model = TopicTableModel(self._language, self)
         self.proxy = QSortFilterProxyModel(self)
         self.proxy.setSourceModel(self.table_model)
         self.proxy.setSortRole(SORT_ROLE)
@@ -403,9 +115,11 @@ class TopicMonitor(QWidget):
         width = self.fontMetrics().horizontalAdvance
         header.resizeSection(TYPE, width("sensor_msgs/BatteryState") + 16)
         for column in (PUBLISHERS, RATE, AGE):
-            header.resizeSection(column, max(width(tr(_HEADERS[column], language)), width("1000.0")) + 22)
+            header.resizeSection(column, max(width(tr(HEADERS[column], self._language)), width("1000.0")) + 22)
         self.table.selectionModel().selectionChanged.connect(self._selection_changed)
 
+    def _build_message_pane(self) -> QWidget:
+        """The selected topic's name and type over its message tree (or a placeholder)."""
         self.message_title = QLabel(self)
         self.message_title.setTextFormat(Qt.TextFormat.PlainText)
         title_font = self.message_title.font()
@@ -414,20 +128,8 @@ class TopicMonitor(QWidget):
         self.message_type = QLabel(self)
         self.message_type.setTextFormat(Qt.TextFormat.PlainText)
         self.message_type.setForegroundRole(QPalette.ColorRole.PlaceholderText)
-        self.message_model = MessageModel(language, self)
-        self.tree = QTreeView(self)
-        self.tree.setModel(self.message_model)
-        self.tree.setUniformRowHeights(True)
-        self.tree.setAlternatingRowColors(True)
-        self.tree.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
-        self.tree.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
-        self.tree.setDragEnabled(True)
-        self.tree.setDragDropMode(QAbstractItemView.DragDropMode.DragOnly)
-        self.tree.setExpandsOnDoubleClick(True)
-        self.tree.header().setStretchLastSection(True)
-        self.tree.header().resizeSection(0, width("child_frame_id") + 80)
-        self.tree.doubleClicked.connect(self._double_clicked)
-        self.placeholder = QLabel(tr("monitor_choose", language), self)
+        self._build_tree()
+        self.placeholder = QLabel(tr("monitor_choose", self._language), self)
         self.placeholder.setAlignment(Qt.AlignmentFlag.AlignCenter)
         self.placeholder.setWordWrap(True)
         self.placeholder.setForegroundRole(QPalette.ColorRole.PlaceholderText)
@@ -435,10 +137,6 @@ class TopicMonitor(QWidget):
         self._message_stack.addWidget(self.placeholder)
         self._message_stack.addWidget(self.tree)
 
-        bar = QHBoxLayout()
-        bar.addWidget(self.filter_edit, 1)
-        bar.addWidget(self.count_label)
-        bar.addWidget(self.pause_button)
         message_pane = QWidget(self)
         message_layout = QVBoxLayout(message_pane)
         message_layout.setContentsMargins(0, 0, 0, 0)
@@ -450,23 +148,23 @@ class TopicMonitor(QWidget):
         title.addWidget(self.message_type, 1)
         message_layout.addLayout(title)
         message_layout.addWidget(self._message_stack, 1)
-        self.splitter = QSplitter(Qt.Orientation.Horizontal, self)
-        self.splitter.setChildrenCollapsible(False)
-        self.splitter.addWidget(self.table)
-        self.splitter.addWidget(message_pane)
-        self.splitter.setStretchFactor(0, 3)
-        self.splitter.setStretchFactor(1, 2)
-        layout = QVBoxLayout(self)
-        layout.setContentsMargins(6, 6, 6, 6)
-        layout.addLayout(bar)
-        layout.addWidget(self.splitter, 1)
+        return message_pane
 
-        self._timer = QTimer(self)
-        self._timer.setInterval(REFRESH_MS)
-        self._timer.timeout.connect(self._tick)
-        self._show_pause_state()
-        self._show_title()
-        self.refresh()
+    def _build_tree(self):
+        """The message tree: numeric fields drag out, a double-click asks for a plot."""
+        self.message_model = MessageModel(self._language, self)
+        self.tree = QTreeView(self)
+        self.tree.setModel(self.message_model)
+        self.tree.setUniformRowHeights(True)
+        self.tree.setAlternatingRowColors(True)
+        self.tree.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        self.tree.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
+        self.tree.setDragEnabled(True)
+        self.tree.setDragDropMode(QAbstractItemView.DragDropMode.DragOnly)
+        self.tree.setExpandsOnDoubleClick(True)
+        self.tree.header().setStretchLastSection(True)
+        self.tree.header().resizeSection(0, self.fontMetrics().horizontalAdvance("child_frame_id") + 80)
+        self.tree.doubleClicked.connect(self._double_clicked)
 
     # -- public API
 
@@ -544,26 +242,13 @@ class TopicMonitor(QWidget):
 
     def _update_table(self, query_graph: bool):
         infos = {info.topic: info for info in self._store.topics()}
-        entries = []
-        if self._graph is None:
-            for info in infos.values():
-                entries.append((info.topic, info.msg_type, None, info.count, info.rate, info.age))
-        else:
-            if query_graph:
-                self._graph_time = time.monotonic()
-                try:
-                    self._graph_topics = list(self._graph())
-                except Exception:  # noqa: BLE001 - a lost ROS master must not break the panel: keep the last list
-                    pass
-            listed = set()
-            for topic, msg_type, publishers in self._graph_topics:
-                info = infos.get(topic)
-                entries.append((topic, msg_type or (info.msg_type if info else ""), publishers,
-                                info.count if info else 0, info.rate if info else 0.0, info.age if info else 0.0))
-                listed.add(topic)
-            for topic, info in infos.items():  # heard before, but nobody publishes it now
-                if topic not in listed:
-                    entries.append((topic, info.msg_type, 0, info.count, info.rate, info.age))
+        if self._graph is not None and query_graph:
+            self._graph_time = time.monotonic()
+            try:
+                self._graph_topics = list(self._graph())
+            except Exception:  # noqa: BLE001 - a lost ROS master must not break the panel: keep the last list
+                pass
+        entries = topic_entries(infos, None if self._graph is None else self._graph_topics)
         self.table_model.update(entries)
         self._show_count()
 

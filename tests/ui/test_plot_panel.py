@@ -8,9 +8,9 @@ from PySide6.QtCore import QMimeData, QPointF, Qt
 from PySide6.QtGui import QDragEnterEvent, QDropEvent, QImage
 from PySide6.QtWidgets import QApplication
 
+from rockly_desktop.core.field_paths import field_mime_text
 from rockly_desktop.core.state_store import StateStore
-from rockly_desktop.ui.plot_panel import (MAX_SAMPLES, PlotPanel, SampleBuffer, field_mime_text, numeric_paths,
-                                          parse_mime_text)
+from rockly_desktop.ui.plot_panel import MAX_SAMPLES, PlotPanel
 
 X = "pose.pose.position.x"
 TURN = "twist.twist.angular.z"
@@ -269,12 +269,6 @@ def test_dropping_topic_and_field_adds_a_curve(panel, store, clock):
     assert panel.curves() == [("/odom", X), ("/odom", TURN)]
 
 
-def test_drag_text_parsing():
-    assert field_mime_text("/odom", X) == f"/odom|{X}"
-    assert parse_mime_text(f" /odom | {X} \n|x\n/a|\nplain\n/scan|ranges[3]") == [("/odom", X), ("/scan", "ranges[3]")]
-    assert parse_mime_text("") == []
-
-
 def test_the_add_form_offers_the_store_topics_and_their_numeric_fields(qtbot, panel, store, clock):
     feed(store, clock, [1.0])
     store.record("/scan", "sensor_msgs/LaserScan", {"ranges": [1.0, 2.0], "header": {"frame_id": "laser"}, "ok": True})
@@ -291,11 +285,6 @@ def test_the_add_form_offers_the_store_topics_and_their_numeric_fields(qtbot, pa
     panel.field_edit.setText("   ")
     qtbot.mouseClick(panel.add_form_button, Qt.MouseButton.LeftButton)
     assert panel.curves() == [("/odom", X)]
-
-
-def test_numeric_paths():
-    message = {"a": {"b": 1, "c": "text", "d": False}, "e": [0.5, {"f": 2}], "g": 3.0}
-    assert numeric_paths(message) == ["a.b", "e[0]", "e[1].f", "g"]
 
 
 def test_german_labels(qtbot, store):
@@ -341,24 +330,6 @@ def test_memory_stays_bounded_after_100000_samples(qtbot, clock):
     assert slow.buffer("/odom", X).bound == MAX_SAMPLES
     kept = slow.buffer("/odom", X)
     assert 29999 <= len(kept) <= 30001 and kept.times[-1] - kept.times[0] <= 300  # the last 300 s
-
-
-def test_sample_buffer_keeps_order_across_wraps():
-    buffer = SampleBuffer(10)
-    everything = []
-    for start in range(0, 200, 7):
-        chunk = list(range(start, start + 7))
-        buffer.extend(chunk, [v * 2 for v in chunk])
-        everything += chunk
-        assert buffer.times.tolist() == everything[-10:]
-        assert buffer.values.tolist() == [v * 2 for v in everything[-10:]]
-    buffer.extend(range(1000, 1025), range(25))  # more than the bound at once
-    assert buffer.times.tolist() == list(range(1015, 1025))
-    buffer.trim_before(1020)
-    assert buffer.times.tolist() == list(range(1020, 1025))
-    assert buffer.between(1021, 1023)[0].tolist() == [1021, 1022, 1023]
-    buffer.clear()
-    assert len(buffer) == 0 and buffer.last_time is None
 
 
 def test_a_1khz_minute_is_kept_whole_but_drawn_downsampled(qtbot, clock):

@@ -5,7 +5,8 @@ import pytest
 from PySide6.QtCore import QPoint, Qt
 
 from rockly_desktop.core.state_store import StateStore
-from rockly_desktop.ui.topic_monitor import LIST_LIMIT, RATE, TOPIC, TopicMonitor
+from rockly_desktop.ui.topic_models import LIST_LIMIT, RATE, TOPIC
+from rockly_desktop.ui.topic_monitor import TopicMonitor
 
 ODOM = "nav_msgs/Odometry"
 

@@ -7,16 +7,15 @@ service proxies and action clients are made once per name and shared by all runs
 import threading
 import time
 import xmlrpc.client
-from concurrent.futures import ThreadPoolExecutor
 
 from rockly_desktop.core.errors import RobotCommandError, RobotConnectionLost, RobotTimeout
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
 from rockly_desktop.robot.ros1.connection import ask_master
-from rockly_desktop.robot.ros1.messages import from_message, to_message
+from rockly_desktop.robot.ros1.message_values import from_message, to_message
+from rockly_desktop.robot.ros1.service_calls import ServiceCaller
 
 POLL_SECONDS = 0.01
 FIRST_PUBLISH_WAIT = 1.0  # a new publisher waits this long for subscribers to connect
-SERVICE_WORKERS = 16
 
 _ACTIONLIB_STATUS = {3: GoalStatus.SUCCEEDED, 4: GoalStatus.ABORTED, 2: GoalStatus.PREEMPTED,
                      8: GoalStatus.PREEMPTED, 5: GoalStatus.REJECTED, 9: GoalStatus.ABORTED}
@@ -43,9 +42,7 @@ class RosGraph:
         # calls cannot be watched on the graph, so a panel showing one (a tablet's last question)
         # learns of it here, as the simulator's world tap reports it.
         self.service_watchers = []
-        # Service calls run here so a stop need not wait for them (an abandoned call, e.g. a
-        # question on the robot's tablet, finishes on its own).
-        self.service_calls = ThreadPoolExecutor(max_workers=SERVICE_WORKERS, thread_name_prefix="rockly-service")
+        self.service_calls = ServiceCaller()
 
     def publisher(self, topic, msg_type):
         """The shared publisher of ``topic``, and whether this is its first publish."""
@@ -250,7 +247,7 @@ class Ros1Backend(RobotBackend):
         return received[0]
 
     def call_service(self, name: str, srv_type: str, request: dict, timeout: float) -> dict:
-        """Call a service in a helper thread so that Stop and a lost master end the wait."""
+        """Call a service; Stop, a lost master and ``timeout`` end the wait at once (see service_calls)."""
         self._check()
         proxy = self.graph.service(name, srv_type)
         if name not in self.graph.available_services:
@@ -264,27 +261,19 @@ class Ros1Backend(RobotBackend):
             if not self.wait_until(probe, timeout):
                 raise RobotTimeout(f"the service '{name}' is not available (waited {timeout:g} s)")
             self.graph.available_services.add(name)
-        outcome, done = {}, threading.Event()
-
-        def call():
-            try:
-                outcome["response"] = proxy.call(to_message(proxy.request_class, request))
-            except Exception as error:  # noqa: BLE001 - reported to the program below
-                outcome["error"] = error
-            done.set()
-
-        self.graph.service_calls.submit(call)
-        try:
-            answered = self.wait_for_event(done, timeout)
-        finally:
-            if not done.is_set():  # the abandoned call still owns the connection: the next call needs its own
-                self.graph.forget_service(name)
-        if not answered:
+        deadline = time.monotonic() + timeout
+        connection = self.graph.connection
+        outcome = self.graph.service_calls.call(
+            proxy, request,
+            should_end=lambda: self.interrupt.stop_requested or connection.lost or time.monotonic() >= deadline,
+            cut=lambda: self.graph.forget_service(name))
+        if outcome.ended:
+            self._check()
             raise RobotTimeout(f"the service '{name}' did not answer within {timeout:g} s")
-        if "error" in outcome:
+        if outcome.error is not None:
             self.graph.forget_service(name)
-            raise RobotCommandError(f"the service '{name}' failed: {outcome['error']}")
-        response = from_message(outcome["response"])
+            raise RobotCommandError(f"the service '{name}' failed: {outcome.error}")
+        response = from_message(outcome.response)
         for watcher in list(self.graph.service_watchers):
             watcher(name, "service", {"request": request, "response": response})
         return response

@@ -16,7 +16,7 @@ import time
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.robot.interface import GoalStatus
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.ros1.messages import from_message, to_message
+from rockly_desktop.robot.ros1.message_values import from_message, to_message
 
 log = logging.getLogger(__name__)
 

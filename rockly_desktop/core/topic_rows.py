@@ -1,0 +1,43 @@
+"""The Topic monitor's rows: every topic the graph lists or the state store heard, with the
+cells' texts and sort keys (columns topic, type, publishers, rate, age)."""
+import math
+
+NO_VALUE = "–"
+"""A cell without a value (no message yet, no publisher count)."""
+
+
+def topic_entries(infos: dict, graph_topics=None) -> list:
+    """[(topic, type, publishers or None, count, rate, age)] from the store's ``{topic: TopicInfo}``.
+
+    Without ``graph_topics`` (the simulator), the store's topics with no publisher count; with
+    the graph's [(topic, type, publishers)], its topics (silent ones too) and then those heard
+    before that nobody publishes now (0 publishers).
+    """
+    if graph_topics is None:
+        return [(info.topic, info.msg_type, None, info.count, info.rate, info.age) for info in infos.values()]
+    entries, listed = [], set()
+    for topic, msg_type, publishers in graph_topics:
+        info = infos.get(topic)
+        entries.append((topic, msg_type or (info.msg_type if info else ""), publishers,
+                        info.count if info else 0, info.rate if info else 0.0, info.age if info else 0.0))
+        listed.add(topic)
+    for topic, info in infos.items():
+        if topic not in listed:
+            entries.append((topic, info.msg_type, 0, info.count, info.rate, info.age))
+    return entries
+
+
+def age_text(age: float) -> str:
+    """Seconds since the last message: one decimal below 100 s."""
+    return f"{age:.1f}" if age < 100 else f"{age:.0f}"
+
+
+def row_cells(entry) -> tuple:
+    """(texts, sort keys) of one entry's five cells; a topic without messages has no rate or age."""
+    topic, msg_type, publishers, count, rate, age = entry
+    seen = count > 0
+    texts = (topic, msg_type, NO_VALUE if publishers is None else str(publishers),
+             f"{rate:.1f}" if seen else NO_VALUE, age_text(age) if seen else NO_VALUE)
+    keys = (topic.lower(), msg_type.lower(), -1.0 if publishers is None else float(publishers),
+            rate if seen else -1.0, age if seen else math.inf)
+    return texts, keys
