@@ -176,7 +176,7 @@ def test_the_simulator_hears_what_the_robot_is_told_to_say_and_the_safe_stop():
         robot = profile.load_object("api")(backend)
         robot.say("Hello!")
         assert simulator.snapshot() == {"said": "Hello!", "stops": 0}
-        assert run_safe_stop(profile.manifest["safe_stop"], backend) == []
+        assert run_safe_stop(profile.safe_stop, backend) == []
         assert simulator.snapshot() == {"said": "Hello!", "stops": 1}
     finally:
         simulator.shutdown()
