@@ -11,7 +11,7 @@ from .layout import map_transform
 from .palette import GOAL, INK, INK_SOFT, MAP_BORDER, MOTION_COLOURS, TRAIL
 from .robot import paint_robot
 from .snapshot import num, point, trail
-from .text import decimal
+from .texts import decimal
 
 TRAIL_AGES = 10   # the trail is drawn in this many steps from faint (old) to strong (new)
 

@@ -1,6 +1,6 @@
 """What one paint draws from: the snapshot as given, the eased values, the language, fonts and the moment."""
 from . import snapshot as read
-from .text import TEXTS, sized_font
+from .texts import TEXTS, sized_font
 
 
 class Scene:

@@ -11,7 +11,7 @@ from PySide6.QtGui import QBrush, QColor, QFontMetricsF, QLinearGradient, QPen, 
 from .drawing import button, with_alpha
 from .palette import HINT, INK
 from .snapshot import WAITING_KINDS
-from .text import MIN_TEXT_PX, wrap_lines
+from .texts import MIN_TEXT_PX, wrap_lines
 
 
 def _metrics(width, u):
