@@ -1,6 +1,4 @@
-"""The view's words in each language, and setting them: fonts by pixel size, lines wrapped to a width."""
-from PySide6.QtGui import QFont, QTextLayout, QTextOption
-
+"""The view's words in each language, and the smallest text it writes (fonts and wrapping: ``rockly_desktop.sdk_view``)."""
 MIN_TEXT_PX = 11
 
 TEXTS = {
@@ -25,53 +23,3 @@ TEXTS = {
         "open": "offen", "closed": "zu", "out": "draußen", "stored": "eingefahren",
     },
 }
-
-
-def decimal(value, places, language):
-    """``value`` with ``places`` decimals, with a decimal comma in German (as the state panels write it)."""
-    text = f"{value:.{places}f}"
-    return text.replace(".", ",") if language == "de" else text
-
-
-def sized_font(base, px, bold=False):
-    """``base`` at ``px`` pixels (never below MIN_TEXT_PX)."""
-    font = QFont(base)
-    font.setPixelSize(max(MIN_TEXT_PX, int(round(px))))
-    font.setBold(bold)
-    return font
-
-
-_WRAP_CACHE = {}
-
-
-def wrap_lines(text, font, width):
-    """``text`` broken into lines no wider than ``width`` pixels (at words, else anywhere)."""
-    key = (text, font.toString(), round(width, 1))
-    if key not in _WRAP_CACHE:
-        if len(_WRAP_CACHE) > 256:
-            _WRAP_CACHE.clear()
-        _WRAP_CACHE[key] = _layout_lines(text, font, width)
-    return list(_WRAP_CACHE[key])
-
-
-def _layout_lines(text, font, width):
-    option = QTextOption()
-    option.setWrapMode(QTextOption.WrapMode.WrapAtWordBoundaryOrAnywhere)
-    lines = []
-    for paragraph in text.split("\n"):
-        if not paragraph.strip():
-            lines.append("")
-            continue
-        layout = QTextLayout(paragraph, font)
-        layout.setTextOption(option)
-        layout.beginLayout()
-        while True:
-            line = layout.createLine()
-            if not line.isValid():
-                break
-            line.setLineWidth(max(1.0, width))
-            lines.append(paragraph[line.textStart():line.textStart() + line.textLength()].rstrip())
-        layout.endLayout()
-    while lines and not lines[-1]:
-        lines.pop()
-    return lines

@@ -12,7 +12,8 @@ Map frame: metres, x to the right, y up, theta counter-clockwise from +x.
 
 Modules: widget (the QWidget), model (reading a snapshot without trusting it), palette, texts,
 layout (pixels for a size), room (floor, walls and boxes, cached), scan (the laser's rays),
-robot (the TurtleBot and its trail), panel (radar, speed, battery), shapes (its own painting helpers).
+robot (the TurtleBot and its trail), panel (radar, speed, battery). Pens, cards, chips, fonts and
+numbers come from the SDK (``rockly_desktop.sdk_view``).
 """
 from .model import DEFAULT_SNAPSHOT
 from .palette import PANEL_BG, PLATE

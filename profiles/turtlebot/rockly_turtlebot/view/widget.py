@@ -5,6 +5,8 @@ from PySide6.QtCore import QPointF, QRectF, QSize, Qt
 from PySide6.QtGui import QFontMetricsF, QPainter, QPainterPath, QPen
 from PySide6.QtWidgets import QWidget
 
+from rockly_desktop.sdk_view import chip, decimal, sized_font
+
 from . import model
 from .layout import layout_for, map_transform
 from .palette import BUMP, INK, MAP_BORDER, PANEL_BG, PLATE
@@ -12,8 +14,7 @@ from .panel import paint_panel
 from .robot import paint_robot, paint_trail
 from .room import RoomPixmap
 from .scan import Scan, paint_scan
-from .shapes import chip
-from .texts import TEXTS, decimal, sized_font
+from .texts import TEXTS
 
 DEFAULT_SNAPSHOT = model.DEFAULT_SNAPSHOT
 
