@@ -4,7 +4,8 @@ The profile's files are templates kept here as data (``SKELETON_FILES``) and ren
 with the name: ``$name`` (the profile id), ``$Title`` (shown to people) and ``$Class``
 (the start of its Python class names). The robot it describes has one command,
 ``robot.say(text)``, which publishes a ``std_msgs/String`` on ``/NAME/say``; its
-simulator remembers the last text said. A folder that cannot be written completely is
+simulator remembers the last text said and its view (``rockly_NAME/view/``, the layout of
+the built-in profiles) shows it. A folder that cannot be written completely is
 removed again.
 """
 import importlib.util
