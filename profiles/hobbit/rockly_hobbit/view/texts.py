@@ -1,4 +1,4 @@
-"""The view's words in each language, and the smallest text it writes (fonts and wrapping: ``rockly_desktop.sdk_view``)."""
+"""The view's words in each language, and the smallest text it writes (fonts, wrapping: ``rockly_desktop.sdk_view``)."""
 MIN_TEXT_PX = 11
 
 TEXTS = {
