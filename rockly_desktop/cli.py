@@ -96,7 +96,7 @@ def _profiles_validate(path: Path) -> int:
         print(f"INVALID  {error}", file=sys.stderr)
         return 1
     print(f"OK  {profile.id} {profile.version}: {len(profile.blocks)} blocks, "
-          f"{len(profile.toolbox_categories)} toolbox categories, commands {profile.manifest['api']}")
+          f"{len(profile.toolbox_categories)} toolbox categories, commands {profile.api_target}")
     return 0
 
 

@@ -3,8 +3,9 @@
 A profile's commands subclass ``RobotCommands`` and talk to the robot through the
 ``RobotBackend`` they are given (topics, services and actions by ROS names). Its
 simulator subclasses ``RobotSimulator`` (lock, ordered publishing, clock thread, start
-and shutdown), and its view may read snapshots with ``with_defaults``, ``as_number``,
-``as_point`` and ``as_points``. Nothing here imports Qt.
+and shutdown) and asks a person through its tablet port (``TabletQuestion``), and its view
+may read snapshots with ``with_defaults``, ``as_number``, ``as_point`` and ``as_points``.
+Nothing here imports Qt; a view's drawing helpers are in ``rockly_desktop.sdk_view``.
 """
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
 from rockly_desktop.core.state_store import field_value
@@ -12,9 +13,10 @@ from rockly_desktop.robot.commands import RobotCommands
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
 from rockly_desktop.robot.simulator import RobotSimulator, twist_velocity
 from rockly_desktop.robot.snapshot_values import as_number, as_point, as_points, with_defaults
+from rockly_desktop.robot.tablet import TabletQuestion
 
 __all__ = [
     "GoalHandle", "GoalOutcome", "GoalStatus", "RobotBackend", "RobotCommandError",
-    "RobotCommands", "RobotSimulator", "RobotTimeout", "as_number", "as_point", "as_points",
+    "RobotCommands", "RobotSimulator", "RobotTimeout", "TabletQuestion", "as_number", "as_point", "as_points",
     "field_value", "twist_velocity", "with_defaults",
 ]

@@ -33,10 +33,9 @@ def serve_simulator(profile_id: str, master_uri=None, speed: float = 1.0, answer
 
 
 def _message_types(profile):
-    from rockly_desktop.executor.robot_link import profile_message_folders
     from rockly_desktop.robot.ros1.message_classes import MessageTypes
 
-    return MessageTypes(profile_message_folders(profile))
+    return MessageTypes(profile.message_folders)
 
 
 def _serve_headless(profile, master_uri, speed, answers, out) -> int:

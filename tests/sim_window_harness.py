@@ -3,7 +3,7 @@
     python tests/sim_window_harness.py sim hobbit --ros --master URI [--answer A ...]
 
 runs the real command (``rockly_desktop.cli.main``) here, with Qt offscreen. A timer in
-the GUI thread prints ``dialog KIND TEXT`` (TEXT as JSON) whenever a tablet dialog opens,
+the GUI thread prints ``dialog QUESTION TEXT`` (TEXT as JSON) whenever a tablet dialog opens,
 and each line on stdin is done in the GUI thread:
 
     click LABEL   press the open tablet dialog's button labelled LABEL
@@ -155,7 +155,7 @@ def _run_window(argv) -> int:
         for dialog in dialogs():
             if not any(request is dialog.request for request in reported):
                 reported.append(dialog.request)
-                print(f"dialog {dialog.request.kind} {json.dumps(dialog.label.text())}", flush=True)
+                print(f"dialog {dialog.request.question.value} {json.dumps(dialog.label.text())}", flush=True)
 
     def shot(path):
         """The window under a strip with its title (offscreen windows have no frame), the open

@@ -1,4 +1,5 @@
 """The layering contracts in pyproject.toml hold, and they do catch a violation."""
+import ast
 import shutil
 import subprocess
 import sys
@@ -16,7 +17,7 @@ def lint_imports(cwd: Path):
 def test_layer_contracts_are_kept():
     result = lint_imports(REPO)
     assert result.returncode == 0, result.stdout + result.stderr
-    assert "Contracts: 4 kept, 0 broken." in result.stdout
+    assert "Contracts: 5 kept, 0 broken." in result.stdout
 
 
 def test_a_core_module_importing_qt_breaks_the_contracts(tmp_path):
@@ -38,3 +39,61 @@ def test_no_rockly_module_mentions_a_particular_robot():
         text = path.read_text(encoding="utf-8").lower()
         for robot in robots:
             assert robot not in text, f"{path.relative_to(REPO)} mentions {robot}"
+
+
+def python_files(folder: Path, skip=()):
+    return [path for path in folder.rglob("*.py") if not set(path.relative_to(folder).parts) & set(skip)]
+
+
+def rockly_imports(source: str) -> set:
+    """The ``rockly_desktop`` modules ``source`` imports, by absolute name."""
+    found = set()
+    for node in ast.walk(ast.parse(source)):
+        if isinstance(node, ast.Import):
+            found |= {alias.name for alias in node.names}
+        elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
+            found |= {node.module} if node.module != "rockly_desktop" else {
+                f"rockly_desktop.{alias.name}" for alias in node.names}
+    return {name for name in found if name.split(".")[0] == "rockly_desktop"}
+
+
+def test_only_the_profiles_package_reads_a_profiles_manifest():
+    """Everything else asks the Profile's typed properties (safe_stop, ros_interface, state_panels, ...)."""
+    readers = []
+    for path in python_files(REPO / "rockly_desktop", skip=("profiles",)):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        if any(isinstance(node, ast.Attribute) and node.attr == "manifest" for node in ast.walk(tree)):
+            readers.append(str(path.relative_to(REPO)))
+    assert readers == []
+
+
+def test_no_rockly_module_knows_a_robots_tablet_codes():
+    """Tablet questions are TabletQuestions in Rockly; a profile maps its robot's own codes onto them."""
+    for path in (REPO / "rockly_desktop").rglob("*.py"):
+        text = path.read_text(encoding="utf-8")
+        for code in ("D_YES_NO", "D_NAME", "D_OK"):
+            assert code not in text, f"{path.relative_to(REPO)} mentions {code}"
+
+
+PROFILE_SDK = {"rockly_desktop.sdk", "rockly_desktop.sdk_view"}
+
+
+def test_profile_code_imports_only_the_sdk_from_rockly():
+    """The built-in profiles' packages and the skeleton ``rockly profiles new`` writes use Rockly only
+    through the SDK. (A profile's own tests, in its tests/ folder, may drive Rockly's internals.)"""
+    from rockly_desktop.profiles.skeleton import render
+
+    sources = {str(path.relative_to(REPO)): path.read_text(encoding="utf-8")
+               for path in python_files(REPO / "profiles", skip=("tests",))}
+    sources.update({f"skeleton: {path}": text for path, text in render("demo").items()
+                    if path.endswith(".py") and not path.startswith("tests/")})
+    assert len(sources) > 20
+    wrong = {name: sorted(rockly_imports(text) - PROFILE_SDK) for name, text in sources.items()}
+    assert {name: modules for name, modules in wrong.items() if modules} == {}
+
+
+def test_the_import_check_sees_every_way_of_importing_rockly():
+    source = ("import rockly_desktop.robot.sim_world\nfrom rockly_desktop import sdk, core\n"
+              "from rockly_desktop.sdk_view import card\nfrom . import palette\nimport math\n")
+    assert rockly_imports(source) == {"rockly_desktop.robot.sim_world", "rockly_desktop.sdk", "rockly_desktop.core",
+                                      "rockly_desktop.sdk_view"}

@@ -36,14 +36,14 @@ class SimulatedRobot:
 
     def health(self) -> list:
         """HealthItems of the simulated robot (its interface as the manifest declares it)."""
-        interface = self.profile.manifest.get("ros_interface", {})
+        interface = self.profile.ros_interface
         link = HealthItem("simulator", GREEN, "the built-in simulator is running")
         return [link] + topic_health(interface, self.state.topics()) + server_health(
             interface, lambda kind, name: self.world.has_service(name) if kind == "services" else self.world.has_action(name))
 
     def safe_stop(self) -> list:
         """Do the profile's safe stop now; returns what failed."""
-        return run_safe_stop(self.profile.manifest.get("safe_stop", []), self.backend(Interrupt()))
+        return run_safe_stop(self.profile.safe_stop, self.backend(Interrupt()))
 
     def shutdown(self):
         """Stop the simulator's threads."""
@@ -70,9 +70,9 @@ class RosRobot:
         except ImportError as error:
             raise RosUnavailable(f"the ROS 1 message tools (genpy, actionlib) are not installed ({error})",
                                  "no_ros_tools") from None
-        self.graph = RosGraph(self.connection, MessageTypes(profile_message_folders(profile)))
+        self.graph = RosGraph(self.connection, MessageTypes(profile.message_folders))
         safe_backend = self.backend(Interrupt())
-        for action in profile.manifest.get("safe_stop", []):  # connected now, so a stop never waits for them
+        for action in profile.safe_stop:  # connected now, so a stop never waits for them
             if "publish" in action:
                 safe_backend.connect_publisher(action["publish"]["topic"], action["publish"]["type"])
         from rockly_desktop.robot.ros1.message_values import from_message
@@ -105,7 +105,7 @@ class RosRobot:
 
     def health(self) -> list:
         """HealthItems: the master (with its round trip), the robot's topics, services and action servers."""
-        interface = self.profile.manifest.get("ros_interface", {})
+        interface = self.profile.ros_interface
         connection = self.connection
         if connection.lost:
             return [HealthItem("ROS master", RED, f"{connection.master_uri} does not answer")]
@@ -119,7 +119,7 @@ class RosRobot:
 
     def safe_stop(self) -> list:
         """Do the profile's safe stop now; returns what failed."""
-        return run_safe_stop(self.profile.manifest.get("safe_stop", []), self.backend(Interrupt()))
+        return run_safe_stop(self.profile.safe_stop, self.backend(Interrupt()))
 
     def shutdown(self):
         """Stop the robot safely and stop following the graph; the node stays up."""
@@ -127,9 +127,3 @@ class RosRobot:
             self._feed.stop()
             self._feed = None
         self.safe_stop()
-
-
-def profile_message_folders(profile) -> list:
-    """The folders of ROS definitions a profile ships (its manifest's ``messages``)."""
-    folder = profile.manifest.get("messages")
-    return [profile.root / folder] if folder else []

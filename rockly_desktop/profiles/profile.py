@@ -53,11 +53,43 @@ class Profile:
         """Old field names/values of saved programs, per block type."""
         return self.manifest.get("legacy_fields", {})
 
+    @property
+    def api_target(self) -> str:
+        """The ``module:Class`` of the robot's commands, as the manifest names it."""
+        return self.manifest["api"]
+
+    @property
+    def safe_stop(self) -> list:
+        """What 'stop' means for this robot: its list of ``{publish: ...}``/``{cancel_goals: ...}`` actions."""
+        return self.manifest.get("safe_stop", [])
+
+    @property
+    def ros_interface(self) -> dict:
+        """The robot's ROS interface: ``subscribes``, ``publishes``, ``services``, ``actions``, ``streams``."""
+        return self.manifest.get("ros_interface", {})
+
+    @property
+    def state_panels(self) -> list:
+        """The Robot state dock's panels: ``[{panel: title, rows: [{label, topic, field, ...}]}]``."""
+        return self.manifest.get("state", [])
+
+    @property
+    def message_folders(self) -> list:
+        """The folders of ROS definitions the profile ships (its manifest's ``messages``; none or one)."""
+        folder = self.manifest.get("messages")
+        return [self.root / folder] if folder else []
+
+    def simulator_view_class(self):
+        """The simulator view's class (imported now), or None when the profile has no view.
+
+        Raises ManifestError when the view is named but cannot be imported.
+        """
+        return self.load_object("simulator_view") if self.manifest.get("simulator_view") else None
+
     @cached_property
     def ros_types(self) -> DefinitionCatalog:
         """The ROS types typed blocks offer: the common installed packages and the profile's own."""
-        own = [self.root / self.manifest["messages"]] if self.manifest.get("messages") else []
-        return DefinitionCatalog(own)
+        return DefinitionCatalog(self.message_folders)
 
     def editor_config(self, language: str) -> dict:
         """Everything the editor page needs for this profile, texts in ``language``."""

@@ -4,7 +4,8 @@ The profile's files are templates kept here as data (``SKELETON_FILES``) and ren
 with the name: ``$name`` (the profile id), ``$Title`` (shown to people) and ``$Class``
 (the start of its Python class names). The robot it describes has one command,
 ``robot.say(text)``, which publishes a ``std_msgs/String`` on ``/NAME/say``; its
-simulator remembers the last text said. A folder that cannot be written completely is
+simulator remembers the last text said and its view (``rockly_NAME/view/``, the layout of
+the built-in profiles) shows it. A folder that cannot be written completely is
 removed again.
 """
 import importlib.util
@@ -36,6 +37,7 @@ blocks: blocks.yaml
 toolbox: toolbox.yaml
 api: rockly_$name.api:${Class}Commands
 simulator: rockly_$name.sim:Sim$Class
+simulator_view: rockly_$name.view:${Class}View
 ros_interface:
   subscribes:
     /$name/say: std_msgs/String
@@ -139,6 +141,81 @@ class Sim$Class(RobotSimulator):
         with self.lock:
             self._stops += 1
 ''',
+    "rockly_$name/view/__init__.py": '''\
+"""The simulated $Title, drawn in the Simulator dock from the snapshots ``Sim$Class.snapshot()`` returns.
+
+Modules: widget (the QWidget), texts (its words in each language). A bigger view adds its
+painters here, one module each (a palette, a layout, the room, the robot...).
+"""
+from .widget import ${Class}View
+
+__all__ = ["${Class}View"]
+''',
+    "rockly_$name/view/texts.py": '''\
+"""The view's words in each language; English is used for any other."""
+TEXTS = {
+    "en": {"silent": "(nothing said yet)", "stops": "stopped {count} times"},
+    "de": {"silent": "(noch nichts gesagt)", "stops": "{count}-mal gestoppt"},
+}
+''',
+    "rockly_$name/view/widget.py": '''\
+"""${Class}View, the QWidget: the last text $Title said on a card, and how often it was stopped."""
+from PySide6.QtCore import QRectF, Qt
+from PySide6.QtGui import QColor, QFontMetricsF, QPainter
+from PySide6.QtWidgets import QWidget
+
+from rockly_desktop.sdk import as_number, with_defaults
+from rockly_desktop.sdk_view import card, sized_font, wrap_lines
+
+from .texts import TEXTS
+
+DEFAULTS = {"said": None, "stops": 0}
+BACKGROUND, INK = QColor("#EEF0FA"), QColor("#27304D")
+
+
+class ${Class}View(QWidget):
+    """Draws the snapshot dicts ``Sim$Class.snapshot()`` returns; it never talks to the simulator."""
+
+    def __init__(self, parent=None, language="en"):
+        super().__init__(parent)
+        self._texts = TEXTS.get(language, TEXTS["en"])
+        self._snapshot = dict(DEFAULTS)
+        self.setMinimumSize(200, 150)
+
+    def snapshot(self) -> dict:
+        """The snapshot drawn now (with defaults for what it left out)."""
+        return dict(self._snapshot)
+
+    def set_snapshot(self, snapshot):
+        """Show ``snapshot``; called about 30 times a second while the Simulator dock is shown."""
+        snapshot = with_defaults(snapshot, DEFAULTS)
+        if snapshot != self._snapshot:
+            self._snapshot = snapshot
+            self.update()
+
+    def paintEvent(self, event):
+        """Qt override: the card with the text said, the stops below it."""
+        painter = QPainter(self)
+        painter.setRenderHint(QPainter.RenderHint.Antialiasing)
+        painter.fillRect(self.rect(), BACKGROUND)
+        unit = min(self.width(), self.height()) / 200
+        box = QRectF(self.rect()).adjusted(12 * unit, 12 * unit, -12 * unit, -40 * unit)
+        card(painter, box, 10 * unit)
+        said = self._snapshot["said"]
+        font = sized_font(self.font(), 18 * unit, bold=said is not None)
+        painter.setFont(font)
+        painter.setPen(INK)
+        text = self._texts["silent"] if said is None else str(said)
+        fitting = max(1, int(box.height() // QFontMetricsF(font).lineSpacing()))
+        lines = wrap_lines(text, font, box.width() - 20 * unit)[:fitting]
+        painter.drawText(box.adjusted(10 * unit, 10 * unit, -10 * unit, -10 * unit), Qt.AlignmentFlag.AlignCenter,
+                         "\\n".join(lines))
+        painter.setFont(sized_font(self.font(), 12 * unit))
+        stops = int(as_number(self._snapshot["stops"], 0, 0, 1e9))
+        painter.drawText(QRectF(0, box.bottom(), self.width(), 40 * unit), Qt.AlignmentFlag.AlignCenter,
+                         self._texts["stops"].format(count=stops))
+        painter.end()
+''',
     "tests/test_$name.py": '''\
 """$Title's profile works: it loads, its blocks call real commands, and the simulator hears them.
 
@@ -176,7 +253,7 @@ def test_the_simulator_hears_what_the_robot_is_told_to_say_and_the_safe_stop():
         robot = profile.load_object("api")(backend)
         robot.say("Hello!")
         assert simulator.snapshot() == {"said": "Hello!", "stops": 0}
-        assert run_safe_stop(profile.manifest["safe_stop"], backend) == []
+        assert run_safe_stop(profile.safe_stop, backend) == []
         assert simulator.snapshot() == {"said": "Hello!", "stops": 1}
     finally:
         simulator.shutdown()

@@ -2,6 +2,7 @@
 import threading
 
 from rockly_desktop.core.errors import RobotCommandError
+from rockly_desktop.robot.tablet import TabletQuestion
 
 
 class AnswerList:
@@ -17,25 +18,25 @@ class AnswerList:
         self._then = then
         self._lock = threading.Lock()  # ROS may ask two questions at once
 
-    def ask(self, kind, text, timeout, interrupt) -> str:
-        """Take the next answer (OK dialogs need none while answers are left); when none is
-        left, ask ``then`` (OK dialogs included) or fail clearly."""
-        self._out(f"tablet  {kind}: {text!r}")
+    def ask(self, question: TabletQuestion, text, timeout, interrupt) -> str:
+        """Take the next answer (an OK question needs none while answers are left); when none
+        is left, ask ``then`` (OK questions included) or fail clearly."""
+        self._out(f"tablet  {TabletQuestion(question).value}: {text!r}")
         with self._lock:
             left = bool(self._answers)
-            answer = self._answers.pop(0) if left and kind != "D_OK" else None
+            answer = self._answers.pop(0) if left and question != TabletQuestion.OK else None
         if not left and self._then is not None:
             self._out("asking in the window")
-            answer = self._then.ask(kind, text, timeout, interrupt)
-        elif kind == "D_OK":
+            answer = self._then.ask(question, text, timeout, interrupt)
+        elif question == TabletQuestion.OK:
             return ""
         elif answer is None:
             raise RobotCommandError(f"the program asks on the tablet {text!r}, but no --answer is left for it")
         self._out(f"answer  {answer!r}")
         return answer
 
-    def notify(self, kind, text):
-        """Show a message or function on the terminal (and in the window, if there is one)."""
-        self._out(f"tablet  {kind}: {text!r}")
+    def notify(self, text):
+        """Show a message on the terminal (and in the window, if there is one)."""
+        self._out(f"tablet  notice: {text!r}")
         if self._then is not None:
-            self._then.notify(kind, text)
+            self._then.notify(text)

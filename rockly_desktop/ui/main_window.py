@@ -75,7 +75,7 @@ class MainWindow(QMainWindow):
         self.console.raise_()
         self.profile_label = QLabel(self)
         self.tablet = QtTablet(self, self.profile.display_name())
-        self.tablet.sig_notice.connect(lambda _kind, text: self.console.append(
+        self.tablet.sig_notice.connect(lambda _robot, text: self.console.append(
             tr("robot_says", self.language, text=text), "robot"))
         self.robots = RobotChoice(self.document, self.tablet, settings, self)
         self.robots.sig_robot_changed.connect(self.show_robot)
@@ -180,7 +180,7 @@ class MainWindow(QMainWindow):
         """Show the active robot in the Simulator dock (a note for a real robot)."""
         try:
             robot = self.robot()
-            view_class = self.profile.load_object("simulator_view") if "simulator_view" in self.profile.manifest else None
+            view_class = self.profile.simulator_view_class()
         except RocklyError as error:
             self.console.append(str(error), "error")
             return
@@ -188,7 +188,7 @@ class MainWindow(QMainWindow):
             return
         if hasattr(robot, "follow_graph"):
             robot.follow_graph()
-        panels = StatePanels(self.profile.manifest.get("state", []), self.language, self.state_dock)
+        panels = StatePanels(self.profile.state_panels, self.language, self.state_dock)
         panels.set_store(robot.state)
         self.health.show_robot(robot)
         self._replace_dock_widget(self.state_dock, panels)

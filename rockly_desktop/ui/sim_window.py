@@ -47,11 +47,12 @@ class SimulatorWindow(QMainWindow):
 
     def _make_view(self):
         note = None
-        if "simulator_view" in self.profile.manifest:
-            try:
-                return self.profile.load_object("simulator_view")(language=self.language)
-            except RocklyError as error:
-                note = str(error)
+        try:
+            view_class = self.profile.simulator_view_class()
+            if view_class is not None:
+                return view_class(language=self.language)
+        except RocklyError as error:
+            note = str(error)
         label = QLabel(note or tr("sim_no_view", self.language), self)
         label.setWordWrap(True)
         label.setAlignment(Qt.AlignmentFlag.AlignCenter)
@@ -74,7 +75,7 @@ class SimulatorWindow(QMainWindow):
         if self.simulator is not None and hasattr(self.view, "set_snapshot"):
             self.view.set_snapshot(self.simulator.snapshot())
 
-    def _show_notice(self, _kind: str, text: str):
+    def _show_notice(self, _robot: str, text: str):
         self.statusBar().showMessage(tr("robot_says", self.language, text=text))
 
     def closeEvent(self, event):  # noqa: N802 - Qt override

@@ -9,14 +9,15 @@ from PySide6.QtCore import QObject, Qt, Signal
 from PySide6.QtWidgets import QDialog, QDialogButtonBox, QLabel, QLineEdit, QVBoxLayout
 
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
+from rockly_desktop.robot.tablet import TabletQuestion
 from rockly_desktop.ui.texts import tr
 
 
 class TabletRequest:
     """One question to the person, answered from the GUI thread."""
 
-    def __init__(self, kind: str, text: str):
-        self.kind = kind
+    def __init__(self, question: TabletQuestion, text: str):
+        self.question = question
         self.text = text
         self.answer = ""
         self.answered = False  # False when the dialog was closed without an answer
@@ -42,13 +43,13 @@ class TabletDialog(QDialog):
         layout.addWidget(self.label)
         self.entry = None
         buttons = QDialogButtonBox(self)
-        if request.kind == "D_YES_NO":
+        if request.question == TabletQuestion.YES_NO:
             yes = buttons.addButton(tr("yes", language), QDialogButtonBox.ButtonRole.YesRole)
             no = buttons.addButton(tr("no", language), QDialogButtonBox.ButtonRole.NoRole)
             yes.clicked.connect(lambda: self._answer("yes"))
             no.clicked.connect(lambda: self._answer("no"))
         else:
-            if request.kind == "D_NAME":
+            if request.question == TabletQuestion.TEXT:
                 self.entry = QLineEdit(self)
                 layout.addWidget(self.entry)
             ok = buttons.addButton(tr("ok", language), QDialogButtonBox.ButtonRole.AcceptRole)
@@ -71,7 +72,7 @@ class QtTablet(QObject):
 
     _sig_show = Signal(object)
     _sig_close = Signal(object)
-    sig_notice = Signal(str, str)  # kind, text
+    sig_notice = Signal(str, str)  # the robot's name, the text it shows
     sig_dismissed = Signal()  # the person closed a question without answering (Esc or the window's ×)
 
     def __init__(self, window, robot_name: str, unanswered: str = None):
@@ -87,9 +88,9 @@ class QtTablet(QObject):
         self._sig_show.connect(self._show, Qt.ConnectionType.QueuedConnection)
         self._sig_close.connect(self._close, Qt.ConnectionType.QueuedConnection)
 
-    def ask(self, kind: str, text: str, timeout: float, interrupt) -> str:
+    def ask(self, question: TabletQuestion, text: str, timeout: float, interrupt) -> str:
         """Show a dialog and wait for the answer ('yes'/'no', typed text, or '')."""
-        request = TabletRequest(kind, text)
+        request = TabletRequest(TabletQuestion(question), text)
         self._sig_show.emit(request)
         try:
             if not interrupt.wait_until(request.done.is_set, timeout):
@@ -101,9 +102,9 @@ class QtTablet(QObject):
             raise RobotCommandError(self.unanswered)
         return request.answer
 
-    def notify(self, kind: str, text: str):
-        """A message or function without an answer (shown text, SOS, volume)."""
-        self.sig_notice.emit(kind, text)
+    def notify(self, text: str):
+        """A message that waits for no answer (``sig_notice``)."""
+        self.sig_notice.emit(self.robot_name, text)
 
     def _show(self, request: TabletRequest):
         language = self.window.language

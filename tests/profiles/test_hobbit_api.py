@@ -22,6 +22,7 @@ from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.tablet import TabletQuestion
 
 
 def _load(module_name, file_name):
@@ -70,12 +71,12 @@ class AnsweringTablet:
         self.asked = []
         self.notices = []
 
-    def ask(self, kind, text, timeout, interrupt):
-        self.asked.append((kind, text, timeout))
+    def ask(self, question, text, timeout, interrupt):
+        self.asked.append((question, text, timeout))
         return self.answers.pop(0)
 
-    def notify(self, kind, text):
-        self.notices.append((kind, text))
+    def notify(self, text):
+        self.notices.append(text)
 
 
 @pytest.fixture
@@ -369,19 +370,19 @@ def test_show_info_sends_and_speaks_the_text_exactly_as_given(backend, hobbit, t
     assert request == tablet_request("D_PLAIN", text)
 
 
-@pytest.mark.parametrize("command, dialog_type, answer", [
-    ("show_info", "D_PLAIN", None),
-    ("show_info_and_wait", "D_OK", ""),
-    ("ask_yes_no", "D_YES_NO", "yes"),
-    ("ask_text", "D_NAME", "Anna"),
+@pytest.mark.parametrize("command, dialog_type, question, answer", [
+    ("show_info", "D_PLAIN", None, None),
+    ("show_info_and_wait", "D_OK", TabletQuestion.OK, ""),
+    ("ask_yes_no", "D_YES_NO", TabletQuestion.YES_NO, "yes"),
+    ("ask_text", "D_NAME", TabletQuestion.TEXT, "Anna"),
 ])
-def test_each_tablet_command_sends_its_dialog_type(tablet, backend, hobbit, command, dialog_type, answer):
+def test_each_tablet_command_sends_its_dialog_type(tablet, backend, hobbit, command, dialog_type, question, answer):
     text = 'Say "yes"\nor no: Grüße 😀'
     tablet.answers = [] if answer is None else [answer]
     getattr(hobbit, command)(text)
     assert [request for _name, _type, request, _timeout in backend.service_calls] == [
         tablet_request(dialog_type, text)]
-    assert tablet.asked == ([] if answer is None else [(dialog_type, text, api.DIALOG_TIMEOUT)])
+    assert tablet.asked == ([] if answer is None else [(question, text, api.DIALOG_TIMEOUT)])
     assert tablet.answers == [], "the answer was not asked for"
 
 
@@ -391,16 +392,16 @@ def test_ask_yes_no_is_true_only_for_a_yes_answer(tablet, hobbit, answer, expect
     assert hobbit.ask_yes_no("Shall we play?") is expected
 
 
-@pytest.mark.parametrize("command, args, function_type", [
-    ("change_volume", ("louder",), "F_LOUDER"),
-    ("change_volume", ("quieter",), "F_QUIETER"),
-    ("call_sos", (), "F_CALLSOS"),
+@pytest.mark.parametrize("command, args, function_type, notice", [
+    ("change_volume", ("louder",), "F_LOUDER", "volume 60 %"),
+    ("change_volume", ("quieter",), "F_QUIETER", "volume 40 %"),
+    ("call_sos", (), "F_CALLSOS", "SOS call started"),
 ])
-def test_tablet_functions_send_only_their_type(tablet, backend, hobbit, command, args, function_type):
+def test_tablet_functions_send_only_their_type(tablet, backend, hobbit, command, args, function_type, notice):
     getattr(hobbit, command)(*args)
     (name, srv_type, request, _timeout), = backend.service_calls
     assert (name, srv_type, request) == ("/MMUI", "hobbit_msgs/Request", tablet_function(function_type))
-    assert [kind for kind, _text in tablet.notices] == [function_type]
+    assert tablet.notices == [notice]
 
 
 def test_call_service_passes_the_request_unchanged_and_returns_the_response(tablet, backend, hobbit):
@@ -409,7 +410,7 @@ def test_call_service_passes_the_request_unchanged_and_returns_the_response(tabl
     response = hobbit.call_service("/MMUI", "hobbit_msgs/Request", request)
     assert response == {"params": [{"name": "result", "value": "Anna Grüße"}]}
     assert backend.service_calls == [("/MMUI", "hobbit_msgs/Request", request, api.DIALOG_TIMEOUT)]
-    assert tablet.asked == [("D_NAME", "Name?", 60.0)]
+    assert tablet.asked == [(TabletQuestion.TEXT, "Name?", 60.0)]
 
 
 # --- waiting ------------------------------------------------------------------------------------

@@ -20,6 +20,7 @@ from rockly_desktop.robot.interface import GoalStatus
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.safe_stop import run_safe_stop
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.tablet import TabletQuestion
 
 
 def _load(module_name, file_name):
@@ -53,13 +54,13 @@ class ScriptedTablet:
         self.shown_while_asking = []
         self.robot = None
 
-    def ask(self, kind, text, timeout, interrupt):
-        self.asked.append((kind, text, timeout))
+    def ask(self, question, text, timeout, interrupt):
+        self.asked.append((question, text, timeout))
         self.shown_while_asking.append(self.robot.snapshot()["tablet"])
         return self.answers.pop(0)
 
-    def notify(self, kind, text):
-        self.notices.append((kind, text))
+    def notify(self, text):
+        self.notices.append(text)
 
 
 class SilentTablet:
@@ -68,12 +69,12 @@ class SilentTablet:
     def __init__(self):
         self.asking = threading.Event()
 
-    def ask(self, kind, text, timeout, interrupt):
+    def ask(self, question, text, timeout, interrupt):
         self.asking.set()
         interrupt.wait_until(lambda: False, timeout)
         raise RobotTimeout("nobody answered")
 
-    def notify(self, kind, text):
+    def notify(self, text):
         pass
 
 
@@ -553,7 +554,7 @@ def test_a_new_arm_goal_preempts_the_running_one(sim, backend):
 @pytest.mark.parametrize("text", TABLET_TEXTS)
 def test_show_info_shows_the_text_exactly_and_returns_at_once(sim, tablet, hobbit, text):
     hobbit.show_info(text)
-    assert tablet.notices == [("D_PLAIN", text)]
+    assert tablet.notices == [text]
     assert tablet.asked == []
     assert sim.snapshot()["tablet"] == {"kind": "D_PLAIN", "text": text}
 
@@ -562,7 +563,7 @@ def test_show_info_shows_the_text_exactly_and_returns_at_once(sim, tablet, hobbi
 def test_show_info_and_wait_waits_for_the_confirmation(sim, tablet, hobbit, text):
     tablet.answers = [""]
     assert hobbit.show_info_and_wait(text) is None
-    assert tablet.asked == [("D_OK", text, api.DIALOG_TIMEOUT)]
+    assert tablet.asked == [(TabletQuestion.OK, text, api.DIALOG_TIMEOUT)]
     assert tablet.shown_while_asking == [{"kind": "D_OK", "text": text}]
     assert sim.snapshot()["tablet"] is None
 
@@ -571,7 +572,7 @@ def test_show_info_and_wait_waits_for_the_confirmation(sim, tablet, hobbit, text
 def test_ask_yes_no_returns_the_answer(sim, tablet, hobbit, answer, expected):
     tablet.answers = [answer]
     assert hobbit.ask_yes_no('Shall we "play"?\nSay yes') is expected
-    assert tablet.asked == [("D_YES_NO", 'Shall we "play"?\nSay yes', api.DIALOG_TIMEOUT)]
+    assert tablet.asked == [(TabletQuestion.YES_NO, 'Shall we "play"?\nSay yes', api.DIALOG_TIMEOUT)]
     assert tablet.shown_while_asking == [{"kind": "D_YES_NO", "text": 'Shall we "play"?\nSay yes'}]
 
 
@@ -579,7 +580,7 @@ def test_ask_yes_no_returns_the_answer(sim, tablet, hobbit, answer, expected):
 def test_ask_text_returns_what_was_typed(sim, tablet, hobbit, typed):
     tablet.answers = [typed]
     assert hobbit.ask_text("Wie heißt du? 😀") == typed
-    assert tablet.asked == [("D_NAME", "Wie heißt du? 😀", api.DIALOG_TIMEOUT)]
+    assert tablet.asked == [(TabletQuestion.TEXT, "Wie heißt du? 😀", api.DIALOG_TIMEOUT)]
 
 
 def test_shown_text_stays_until_the_next_tablet_request(sim, tablet, hobbit):
@@ -607,7 +608,7 @@ def test_without_a_tablet_nobody_can_answer(world):
 
 def test_call_sos_is_a_notice(sim, tablet, hobbit):
     hobbit.call_sos()
-    assert tablet.notices == [("F_CALLSOS", "SOS call started")]
+    assert tablet.notices == ["SOS call started"]
     assert sim.snapshot()["notices"] == ["SOS call started"]
 
 
@@ -620,8 +621,7 @@ def test_volume_changes_in_ten_percent_steps_within_bounds(sim, tablet, hobbit):
     for _ in range(8):
         hobbit.change_volume("louder")
     assert sim.snapshot()["volume"] == 100
-    assert tablet.notices[:3] == [("F_LOUDER", "volume 60 %"), ("F_QUIETER", "volume 50 %"),
-                                  ("F_QUIETER", "volume 40 %")]
+    assert tablet.notices[:3] == ["volume 60 %", "volume 50 %", "volume 40 %"]
     assert len(sim.snapshot()["notices"]) == 11
 
 

@@ -1,4 +1,4 @@
-"""HOBBIT's simulator view (profiles/hobbit/rockly_hobbit/sim_view/): it draws what a snapshot says, at any size."""
+"""HOBBIT's simulator view (profiles/hobbit/rockly_hobbit/view/): it draws what a snapshot says, at any size."""
 import importlib.util
 import itertools
 import math
@@ -10,10 +10,12 @@ from profile_copies import HOBBIT_DIR
 from PySide6.QtCore import QRect
 from PySide6.QtGui import QImage
 
+from rockly_desktop import sdk_view
+
 
 def _load_sim_view_module():
-    """Import the sim_view package by its path, leaving sys.path and sys.modules as they were."""
-    name, path = "hobbit_sim_view_under_test", HOBBIT_DIR / "rockly_hobbit" / "sim_view"
+    """Import the view package by its path, leaving sys.path and sys.modules as they were."""
+    name, path = "hobbit_sim_view_under_test", HOBBIT_DIR / "rockly_hobbit" / "view"
     spec = importlib.util.spec_from_file_location(name, path / "__init__.py", submodule_search_locations=[str(path)])
     module = importlib.util.module_from_spec(spec)
     sys.modules[name] = module   # its modules import each other relatively
@@ -239,7 +241,7 @@ def test_german_texts(make_view):
 
 def test_numbers_on_the_map_use_the_languages_decimal_mark():
     """As the Robot state panels write them: 1,60 in German, 1.60 in English."""
-    motion_label, texts, decimal = sim_view.map_painter._motion_label, sim_view.text.TEXTS, sim_view.text.decimal
+    motion_label, texts, decimal = sim_view.map_painter._motion_label, sim_view.texts.TEXTS, sdk_view.decimal
     snapshot = {"motion": "moving", "linear": -0.3}
     assert motion_label(snapshot, texts["de"], "de") == ("moving", "fährt  0,30 m/s")
     assert motion_label(snapshot, texts["en"], "en") == ("moving", "driving  0.30 m/s")

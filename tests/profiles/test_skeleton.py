@@ -13,9 +13,12 @@ from profile_copies import REPO, SHARED_TOOLBOXES
 
 from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.profiles.skeleton import create_profile
+from rockly_desktop.robot.interrupt import Interrupt
+from rockly_desktop.robot.sim_world import SimBackend, SimWorld
 
 SKELETON = {"profile.yaml", "blocks.yaml", "toolbox.yaml", "rockly_demo/__init__.py", "rockly_demo/api.py",
-            "rockly_demo/sim.py", "tests/test_demo.py"}
+            "rockly_demo/sim.py", "rockly_demo/view/__init__.py", "rockly_demo/view/widget.py",
+            "rockly_demo/view/texts.py", "tests/test_demo.py"}
 
 
 def rockly(*args, env=None):
@@ -109,3 +112,24 @@ def test_every_accepted_name_gives_a_profile_that_loads_and_compiles(tmp_path, n
     assert profile.id == name
     for source in folder.rglob("*.py"):
         compile(source.read_text(encoding="utf-8"), str(source), "exec")
+
+
+def test_the_new_profiles_view_draws_what_its_simulator_says_and_any_odd_snapshot(qtbot, tmp_path):
+    profile = load_profile(create_profile("viewdemo", tmp_path), SHARED_TOOLBOXES)
+    view = profile.simulator_view_class()(language="de")
+    qtbot.addWidget(view)
+    view.resize(320, 200)
+    silent = view.grab().toImage()
+    world = SimWorld()
+    simulator = profile.load_object("simulator")(world)
+    simulator.start()
+    try:
+        profile.load_object("api")(SimBackend(world, Interrupt())).say("Hallo Welt")
+        view.set_snapshot(simulator.snapshot())
+    finally:
+        simulator.shutdown()
+    assert view.snapshot() == {"said": "Hallo Welt", "stops": 0}
+    assert view.grab().toImage() != silent
+    for odd in ({}, {"said": 3, "stops": "many"}, {"said": "long " * 500, "stops": float("nan")}, None):
+        view.set_snapshot(odd)
+        assert not view.grab().toImage().isNull()

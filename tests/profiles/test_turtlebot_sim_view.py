@@ -1,4 +1,4 @@
-"""The TurtleBot's simulator view (profiles/turtlebot/rockly_turtlebot/sim_view.py): it draws what a snapshot says.
+"""The TurtleBot's simulator view (profiles/turtlebot/rockly_turtlebot/view/): it draws what a snapshot says.
 
 Snapshots come from the real simulator (and a few hand-made odd ones); the view is grabbed
 offscreen and its pixels are looked at.
@@ -20,7 +20,7 @@ PROFILE = load_profile(REPO / "profiles" / "turtlebot", SHARED_TOOLBOXES)
 TurtleBotSimView = PROFILE.load_object("simulator_view")
 SimTurtleBot = PROFILE.load_object("simulator")
 TurtleBot = PROFILE.load_object("api")
-view_module = sys.modules[TurtleBotSimView.__module__]
+view_module = sys.modules[TurtleBotSimView.__module__.rpartition(".")[0]]  # the view package
 PLATE, PANEL_BG = view_module.PLATE, view_module.PANEL_BG
 
 
@@ -143,7 +143,7 @@ def test_the_laser_scan_is_drawn_warm_where_things_are_close(make_view, snapshot
 
 
 def test_far_things_are_drawn_cooler_than_near_ones():
-    palette = sys.modules[TurtleBotSimView.__module__.rsplit(".", 1)[0] + ".view.palette"]
+    palette = sys.modules[view_module.__name__ + ".palette"]
     hues = [palette.distance_colour(d).hsvHueF() for d in (0.12, 0.5, 1.0, 1.5, 2.0, 3.0)]
     assert hues == sorted(hues) and hues[0] < 0.05 and hues[-1] > 0.5   # red when close, blue when far
 

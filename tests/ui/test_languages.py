@@ -141,7 +141,7 @@ def test_each_connection_problem_has_both_languages_and_a_next_step():
 
 
 def test_state_panels_write_numbers_the_german_way(qtbot, hobbit):
-    panels = StatePanels(hobbit.manifest["state"], "de")
+    panels = StatePanels(hobbit.state_panels, "de")
     qtbot.addWidget(panels)
     store = StateStore()
     panels.set_store(store)

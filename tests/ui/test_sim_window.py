@@ -71,7 +71,7 @@ def test_a_question_opens_the_apps_tablet_dialog_and_the_persons_answer_goes_bac
                     timeout=2000)  # HOBBIT's own tablet in the view shows it too
     qtbot.mouseClick(button(dialog, "Yes"), Qt.MouseButton.LeftButton)
     assert call.join().result == ["yes"]
-    assert lines == ["tablet  D_YES_NO: 'Tea?'", "asking in the window", "answer  'yes'"]
+    assert lines == ["tablet  yes_no: 'Tea?'", "asking in the window", "answer  'yes'"]
 
     call = ask(world, "D_NAME", "Your name?")
     qtbot.waitUntil(lambda: bool(open_dialogs(window)), timeout=5000)

@@ -8,7 +8,7 @@ from rockly_desktop.ui.state_panels import StatePanels
 
 
 def test_each_row_shows_its_field_transformed_and_formatted(qtbot, hobbit):
-    panels = StatePanels(hobbit.manifest["state"], "en")
+    panels = StatePanels(hobbit.state_panels, "en")
     qtbot.addWidget(panels)
     store = StateStore()
     panels.set_store(store)

@@ -11,7 +11,7 @@ import math
 from collections import deque
 from dataclasses import dataclass
 
-from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotSimulator, twist_velocity
+from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotSimulator, TabletQuestion, twist_velocity
 
 log = logging.getLogger(__name__)
 
@@ -39,7 +39,8 @@ HEAD_POSITIONS = frozenset((
     "down_right", "down_left", "littledown_center", "to_grasp", "to_turntable", "search_table",
 ))
 EMOTIONS = frozenset(("HAPPY", "VHAPPY", "LTIRED", "VTIRED", "CONCERNED", "SAD", "WONDERING", "NEUTRAL", "SLEEPING"))
-DIALOGS = frozenset(("D_OK", "D_YES_NO", "D_NAME"))
+# HOBBIT's /MMUI dialog types, as the questions Rockly's tablet port asks
+DIALOGS = {"D_OK": TabletQuestion.OK, "D_YES_NO": TabletQuestion.YES_NO, "D_NAME": TabletQuestion.TEXT}
 
 
 @dataclass(frozen=True)
@@ -239,8 +240,8 @@ GRIPPER_OPENING = {"open": 0.08, "closed": 0.0}
 class SimHobbit(RobotSimulator):
     """A simulated HOBBIT in a SimWorld, moving in simulated time ``speed`` times as fast as real time.
 
-    ``tablet`` answers dialogs: ``ask(kind, text, timeout, interrupt) -> str`` (blocking)
-    and ``notify(kind, text)``. Call ``start()`` to bring the robot up and ``shutdown()``
+    ``tablet`` answers dialogs: ``ask(question, text, timeout, interrupt) -> str`` (blocking,
+    ``question`` a TabletQuestion) and ``notify(text)``. Call ``start()`` to bring the robot up and ``shutdown()``
     to stop its clock.
     """
 
@@ -504,15 +505,15 @@ class SimHobbit(RobotSimulator):
         if kind == "D_PLAIN":
             with self.lock:
                 self._shown = {"kind": kind, "text": text}
-            self._notify(kind, text)
+            self._notify(text)
         elif kind == "F_CALLSOS":
-            self._notice(kind, "SOS call started")
+            self._notice("SOS call started")
         elif kind in ("F_LOUDER", "F_QUIETER"):
             with self.lock:
                 step = VOLUME_STEP if kind == "F_LOUDER" else -VOLUME_STEP
                 self._volume = min(100, max(0, self._volume + step))
                 volume = self._volume
-            self._notice(kind, f"volume {volume} %")
+            self._notice(f"volume {volume} %")
         else:
             raise RobotCommandError(f"the tablet does not know the request type {kind!r}")
         return {"params": []}
@@ -524,20 +525,20 @@ class SimHobbit(RobotSimulator):
         with self.lock:
             self._shown = shown
         try:
-            return str(self.tablet.ask(kind, text, timeout, interrupt))
+            return str(self.tablet.ask(DIALOGS[kind], text, timeout, interrupt))
         finally:
             with self.lock:
                 if self._shown is shown:
                     self._shown = None
 
-    def _notice(self, kind, text):
+    def _notice(self, text):
         with self.lock:
             self._notices.append(text)
-        self._notify(kind, text)
+        self._notify(text)
 
-    def _notify(self, kind, text):
+    def _notify(self, text):
         if self.tablet is not None:
-            self.tablet.notify(kind, text)
+            self.tablet.notify(text)
 
 
 def _seconds(value):

@@ -61,7 +61,7 @@ def test_the_window_shows_the_robot_live_and_the_person_answers_mmui_questions(o
     assert "HOBBIT" in described["title"] and own_master.uri in described["title"]
 
     caller.start("ask_yes_no", "Would you like some tea?")
-    assert sim.dialog() == ("D_YES_NO", "Would you like some tea?")
+    assert sim.dialog() == ("yes_no", "Would you like some tea?")
     eventually(lambda: sim.describe()["tablet"] == {"kind": "D_YES_NO", "text": "Would you like some tea?"})
     sim.send(f"shot {tmp_path / 'sim_window.png'}")
     sim.out.expect("shot ")
@@ -70,7 +70,7 @@ def test_the_window_shows_the_robot_live_and_the_person_answers_mmui_questions(o
     assert caller.result() == {"value": True}
 
     caller.start("ask_text", "What is your name?")
-    assert sim.dialog() == ("D_NAME", "What is your name?")
+    assert sim.dialog() == ("text", "What is your name?")
     sim.send("type Ada Lovelace")
     sim.send("click OK")
     assert caller.result() == {"value": "Ada Lovelace"}
@@ -90,10 +90,10 @@ def test_answers_from_the_command_line_come_first_then_the_window_asks(started, 
     assert caller.call("ask_yes_no", "Tea?") == {"value": False}
     assert caller.call("ask_text", "Name?") == {"value": "Bob"}
     caller.start("ask_yes_no", "More tea?")
-    assert sim.dialog() == ("D_YES_NO", "More tea?")
+    assert sim.dialog() == ("yes_no", "More tea?")
     sim.send("click Yes")
     assert caller.result() == {"value": True}
-    assert [line for line in sim.out.seen if line.startswith("dialog ")] == ['dialog D_YES_NO "More tea?"']
+    assert [line for line in sim.out.seen if line.startswith("dialog ")] == ['dialog yes_no "More tea?"']
     sim.send("close")
     assert sim.wait() == 0
 
@@ -102,7 +102,7 @@ def test_answers_from_the_command_line_come_first_then_the_window_asks(started, 
 def test_ending_with_a_question_open_answers_the_caller_and_exits_0(own_master, started, caller, how):
     sim = started()
     caller.start("ask_yes_no", "Still there?")
-    assert sim.dialog() == ("D_YES_NO", "Still there?")
+    assert sim.dialog() == ("yes_no", "Still there?")
     if how == "close":
         sim.send("close")
     else:

@@ -29,7 +29,6 @@ BUMP_GLOW = QColor("#FFD23F")
 
 # --- the panel ----------------------------------------------------------------------------------
 PANEL_BG = QColor("#EEF2F8")
-CARD = QColor("#FFFFFF")
 INK = QColor("#243047")
 INK_SOFT = QColor("#6A7590")
 RADAR_BG = QColor("#1E2A44")

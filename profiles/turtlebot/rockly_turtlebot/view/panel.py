@@ -9,14 +9,14 @@ import math
 from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QFontMetricsF, QPen
 
+from rockly_desktop.sdk_view import card, decimal, sized_font, with_alpha
+
 from . import model
 from .palette import (
     BAR_BG, BATTERY_EMPTY, BATTERY_LOW, BATTERY_OK, DRIVE, INK, INK_SOFT, PLATE, RADAR_BG, RADAR_RING, TURN,
     distance_colour,
 )
 from .scan import paint_radar_hits
-from .shapes import card, with_alpha
-from .texts import decimal, sized_font
 
 RADAR_RINGS = (0.5, 1.0, 2.0, 3.5)    # metres; the radar's scale is the square root of the distance
 MAX_LINEAR, MAX_ANGULAR = 0.22, 2.84

@@ -8,11 +8,12 @@ import math
 from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QPen, QPolygonF
 
+from rockly_desktop.sdk_view import cosmetic_pen, round_pen, with_alpha
+
 from . import model
 from .palette import (
     BUMP, BUMP_GLOW, FRONT, LIDAR, LIDAR_EDGE, LIDAR_WINDOW, PLATE, PLATE_EDGE, PLATE_RING, SHADOW, TRAIL, TREAD, WHEEL,
 )
-from .shapes import cosmetic_pen, round_pen, with_alpha
 
 MIN_PX = 34          # the robot is drawn at least this wide (up to 1.8x its real size) on small maps
 LIDAR_SPIN = 150.0   # degrees per simulated second, for the turret's window
@@ -93,7 +94,7 @@ def _paint_lidar(p, snapshot, r, line):
     p.setBrush(LIDAR_EDGE)
     p.drawEllipse(centre, 0.2 * r, 0.2 * r)
     angle = math.radians(model.num(snapshot.get("time")) * LIDAR_SPIN % 360)
-    p.setPen(round_pen(LIDAR_WINDOW, 0.14 * r))
+    p.setPen(round_pen(LIDAR_WINDOW, 0.14 * r, round_joins=True))
     tip = QPointF(centre.x() + 0.3 * r * math.cos(angle), centre.y() + 0.3 * r * math.sin(angle))
     p.drawLine(centre, tip)
 

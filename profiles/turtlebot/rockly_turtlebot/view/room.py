@@ -7,8 +7,9 @@ import math
 from PySide6.QtCore import QLineF, QRectF, Qt
 from PySide6.QtGui import QPainter, QPainterPath, QPixmap, QTransform
 
+from rockly_desktop.sdk_view import cosmetic_pen, with_alpha
+
 from .palette import BOX_COLOURS, OUTSIDE, SHADOW, TILE_SEAM, TILES, WALL, WALL_TOP
-from .shapes import cosmetic_pen, with_alpha
 
 TILE = 0.5     # metres
 WALL_THICKNESS = 0.07

@@ -11,9 +11,10 @@ import numpy
 from PySide6.QtCore import QLineF, QPointF, Qt
 from PySide6.QtGui import QPainter, QPolygonF
 
+from rockly_desktop.sdk_view import cosmetic_pen, with_alpha
+
 from . import model
 from .palette import SEEN, distance_colour
-from .shapes import cosmetic_pen, with_alpha
 
 BUCKETS = 8         # hits are drawn in this many colour groups
 COLOUR_RANGE = 2.0  # metres from red to blue

@@ -7,7 +7,9 @@ import math
 from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QColor, QPainter, QPixmap, QPolygonF, QTransform
 
-from .drawing import arc, cosmetic_pen, round_pen, rounded
+from rockly_desktop.sdk_view import cosmetic_pen, round_pen
+
+from .drawing import arc, rounded
 from .furniture import paint_furniture
 from .geometry import DOOR, ROOM, WALL, WINDOW
 from .palette import GRID, LAWN, SEAM, WALL_EDGE, WALL_FILL, WOOD

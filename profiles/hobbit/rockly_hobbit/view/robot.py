@@ -9,8 +9,10 @@ import math
 from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QBrush, QColor, QLinearGradient, QPen, QPolygonF, QRadialGradient
 
+from rockly_desktop.sdk_view import round_pen, with_alpha
+
 from .animation import lerp
-from .drawing import arc, round_pen, wedge, with_alpha
+from .drawing import arc, wedge
 from .geometry import BASE_RADIUS, HEAD_CENTER, HEAD_RADIUS, SHOULDER, TURNTABLE, TURNTABLE_RADIUS
 from .palette import (
     ARM, ARM_EDGE, BASE_COLOR, BASE_EDGE, BODY, BODY_EDGE, BUMPER, GRIPPER, HEAD, SOS, VIEW_CONE, VIEW_CONE_EDGE, VISOR,

@@ -5,13 +5,14 @@ import math
 from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QColor, QFontMetricsF, QPainterPath, QPen
 
+from rockly_desktop.sdk_view import chip, decimal, round_pen, with_alpha
+
 from .animation import wrap_pi
-from .drawing import chip, round_pen, rounded, star, with_alpha
+from .drawing import rounded, star
 from .layout import map_transform
 from .palette import GOAL, INK, INK_SOFT, MAP_BORDER, MOTION_COLOURS, TRAIL
 from .robot import paint_robot
 from .snapshot import num, point, trail
-from .text import decimal
 
 TRAIL_AGES = 10   # the trail is drawn in this many steps from faint (old) to strong (new)
 

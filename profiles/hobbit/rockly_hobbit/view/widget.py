@@ -11,7 +11,7 @@ from .panel import paint_panel
 from .room import RoomPixmap
 from .scene import Scene
 from .snapshot import DEFAULT_SNAPSHOT, merged, sos_active
-from .text import TEXTS
+from .texts import TEXTS
 
 
 class HobbitSimView(QWidget):

@@ -8,10 +8,12 @@ import math
 from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QBrush, QColor, QFontMetricsF, QLinearGradient, QPen, QPolygonF
 
-from .drawing import button, with_alpha
+from rockly_desktop.sdk_view import with_alpha, wrap_lines
+
+from .drawing import button
 from .palette import HINT, INK
 from .snapshot import WAITING_KINDS
-from .text import MIN_TEXT_PX, wrap_lines
+from .texts import MIN_TEXT_PX
 
 
 def _metrics(width, u):

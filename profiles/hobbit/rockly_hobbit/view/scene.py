@@ -1,6 +1,8 @@
 """What one paint draws from: the snapshot as given, the eased values, the language, fonts and the moment."""
+from rockly_desktop.sdk_view import sized_font
+
 from . import snapshot as read
-from .text import TEXTS, sized_font
+from .texts import MIN_TEXT_PX, TEXTS
 
 
 class Scene:
@@ -24,4 +26,4 @@ class Scene:
 
     def font(self, px, bold=False):
         """The view's font at ``px`` pixels."""
-        return sized_font(self._base_font, px, bold)
+        return sized_font(self._base_font, px, bold, MIN_TEXT_PX)

@@ -34,7 +34,6 @@ MAP_BORDER = QColor("#C9CEE6")
 # --- the panel --------------------------------------------------------------------------------
 
 PANEL_BG = QColor("#EEF0FA")
-CARD = QColor("#FFFFFF")
 INK = QColor("#27304D")
 INK_SOFT = QColor("#69718C")
 FACE_BG = QColor("#243160")

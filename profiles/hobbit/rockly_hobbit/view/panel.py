@@ -4,7 +4,9 @@ import math
 from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QColor, QFontMetricsF, QPen, QPolygonF
 
-from .drawing import arc, card, round_pen, with_alpha
+from rockly_desktop.sdk_view import card, round_pen, with_alpha
+
+from .drawing import arc
 from .eyes import paint_eyes
 from .layout import panel_sections
 from .palette import ARM, EMOTION_ACCENT, INK, INK_SOFT, SOS

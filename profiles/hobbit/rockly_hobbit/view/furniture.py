@@ -7,7 +7,9 @@ import math
 from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QColor, QPen
 
-from .drawing import cosmetic_pen, wedge
+from rockly_desktop.sdk_view import cosmetic_pen
+
+from .drawing import wedge
 
 SHADOW = QColor(40, 30, 20, 40)
 SHADOW_OFFSET = (0.035, -0.05)

@@ -6,7 +6,9 @@ from PySide6.QtGui import (
     QBrush, QColor, QLinearGradient, QPainterPath, QPainterPathStroker, QPolygonF, QRadialGradient,
 )
 
-from .drawing import arc, round_pen, rounded, star, with_alpha
+from rockly_desktop.sdk_view import round_pen, with_alpha
+
+from .drawing import arc, rounded, star
 from .palette import FACE_BG, FACE_BG_SLEEP, IRIS, IRIS_DARK, LID_EDGE
 
 WHITE = QColor("#FFFFFF")

@@ -1,32 +1,10 @@
-"""Small painting helpers shared by the map and the panel: pens, arcs and wedges, cards, chips, buttons, a star."""
+"""HOBBIT's own painting helpers, shared by the map and the panel: arcs and wedges, rounded clips, buttons, a star.
+
+(Pens, colours with alpha, cards and chips come from the SDK: ``rockly_desktop.sdk_view``.)"""
 import math
 
 from PySide6.QtCore import QPointF, Qt
-from PySide6.QtGui import QColor, QPainterPath, QPen, QPolygonF
-
-from .palette import CARD
-
-
-def with_alpha(color, alpha):
-    c = QColor(color)
-    c.setAlphaF(max(0.0, min(1.0, alpha)))
-    return c
-
-
-def round_pen(color, width, round_joins=False):
-    """A pen with round caps (and joins)."""
-    pen = QPen(color, width)
-    pen.setCapStyle(Qt.PenCapStyle.RoundCap)
-    if round_joins:
-        pen.setJoinStyle(Qt.PenJoinStyle.RoundJoin)
-    return pen
-
-
-def cosmetic_pen(color, width):
-    """A pen ``width`` pixels wide whatever the painter's scale."""
-    pen = QPen(color, width)
-    pen.setCosmetic(True)
-    return pen
+from PySide6.QtGui import QColor, QPainterPath, QPolygonF
 
 
 def arc(cx, cy, r, start_deg, end_deg, steps=24, y_down=True):
@@ -50,24 +28,6 @@ def rounded(rect, radius):
     path = QPainterPath()
     path.addRoundedRect(rect, radius, radius)
     return path
-
-
-def card(p, rect, radius, accent=None):
-    """A white card with a soft shadow, outlined in ``accent`` if given."""
-    p.setPen(Qt.PenStyle.NoPen)
-    p.setBrush(QColor(60, 70, 120, 28))
-    p.drawRoundedRect(rect.translated(0, 2), radius, radius)
-    p.setBrush(CARD)
-    if accent is not None:
-        p.setPen(QPen(accent, 2.5))
-    p.drawRoundedRect(rect, radius, radius)
-
-
-def chip(p, rect):
-    """A translucent white pill for a short label over the map."""
-    p.setPen(QPen(QColor(60, 70, 120, 40), 1))
-    p.setBrush(QColor(255, 255, 255, 225))
-    p.drawRoundedRect(rect, rect.height() / 2, rect.height() / 2)
 
 
 def button(p, rect, colour, label, fm):

@@ -1,33 +1,21 @@
-"""The simulated TurtleBot, drawn: its room seen from above with the boxes, the robot, its trail and
-what its laser sees, and a panel with a radar of the scan, the speeds and the battery.
-
-The view knows nothing about the simulator; it draws whatever snapshot dict it is given (the
-dict ``SimTurtleBot.snapshot()`` returns), tolerating missing or odd values::
-
-    view = TurtleBotSimView(language="de")
-    view.set_snapshot(sim.snapshot())
-
-The Simulator dock gives it a new snapshot 30 times a second; each one is drawn as it is.
-Map frame: metres, x to the right, y up, theta counter-clockwise from +x. The painters live
-in ``view/`` (room, scan, robot, panel, layout, palette, texts, model).
-"""
+"""TurtleBotSimView, the QWidget: takes snapshots and paints the map (with the painters) and the panel."""
 import math
 
 from PySide6.QtCore import QPointF, QRectF, QSize, Qt
 from PySide6.QtGui import QFontMetricsF, QPainter, QPainterPath, QPen
 from PySide6.QtWidgets import QWidget
 
-from .view import model
-from .view.layout import layout_for, map_transform
-from .view.palette import BUMP, INK, MAP_BORDER, PANEL_BG, PLATE
-from .view.panel import paint_panel
-from .view.robot import paint_robot, paint_trail
-from .view.room import RoomPixmap
-from .view.scan import Scan, paint_scan
-from .view.shapes import chip
-from .view.texts import TEXTS, decimal, sized_font
+from rockly_desktop.sdk_view import chip, decimal, sized_font
 
-__all__ = ["TurtleBotSimView", "PANEL_BG", "PLATE", "DEFAULT_SNAPSHOT"]
+from . import model
+from .layout import layout_for, map_transform
+from .palette import BUMP, INK, MAP_BORDER, PANEL_BG, PLATE
+from .panel import paint_panel
+from .robot import paint_robot, paint_trail
+from .room import RoomPixmap
+from .scan import Scan, paint_scan
+from .texts import TEXTS
+
 DEFAULT_SNAPSHOT = model.DEFAULT_SNAPSHOT
 
 
