@@ -86,14 +86,18 @@ def _profiles_list() -> int:
 def _profiles_validate(path: Path) -> int:
     from rockly_desktop.core import paths
     from rockly_desktop.core.errors import ManifestError
-    from rockly_desktop.profiles.checks import check_commands
+    from rockly_desktop.profiles.checks import code_problems
     from rockly_desktop.profiles.profile import load_profile
 
     try:
         profile = load_profile(path, paths.shared_toolboxes_dir())
-        check_commands(profile)
     except ManifestError as error:
         print(f"INVALID  {error}", file=sys.stderr)
+        return 1
+    problems = code_problems(profile)
+    for problem in problems:
+        print(f"INVALID  {problem}", file=sys.stderr)
+    if problems:
         return 1
     print(f"OK  {profile.id} {profile.version}: {len(profile.blocks)} blocks, "
           f"{len(profile.toolbox_categories)} toolbox categories, commands {profile.api_target}")

@@ -51,6 +51,9 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
     previous = signal.signal(signal.SIGINT, lambda *_: control.request_stop())
     try:
         result = make_runner(program.profile, robot, run_code, control, report, language).run()
+    except RocklyError as error:  # the profile's commands could not be made
+        print(f"rockly run: {error}", file=sys.stderr)
+        return 1
     finally:
         signal.signal(signal.SIGINT, previous)
         robot.shutdown()

@@ -19,7 +19,7 @@ class SimulatedRobot:
         self.world = SimWorld()
         self.state = StateStore()
         self.world.tap(self.state.record)
-        self.simulator = profile.load_object("simulator")(self.world, tablet=tablet, speed=speed)
+        self.simulator = profile.create("simulator", self.world, tablet=tablet, speed=speed)
         self.simulator.start()
 
     def backend(self, interrupt: Interrupt):

@@ -11,7 +11,7 @@ def make_runner(profile, robot, run_code: dict, control, emit, language: str = "
     The run reports its errors in ``language``.
     """
     backend = robot.backend(control.interrupt)
-    commands = profile.load_object("api")(backend)
+    commands = profile.create("api", backend)
     ros = RosCommands(backend, types=profile.ros_types)
 
     def on_end():

@@ -5,7 +5,7 @@ from dataclasses import dataclass
 from functools import cached_property
 from pathlib import Path
 
-from rockly_desktop.core.errors import ManifestError
+from rockly_desktop.core.errors import ManifestError, RocklyError
 from rockly_desktop.core.ros_definitions import DefinitionCatalog
 from rockly_desktop.profiles.blocks import BlockSpec, read_blocks
 from rockly_desktop.profiles.i18n import localize
@@ -116,15 +116,38 @@ class Profile:
         try:
             module = importlib.import_module(module_name)
             found = getattr(module, attr)
-        except Exception as error:  # noqa: BLE001 - any failure in profile code is reported, not raised
+        except (Exception, SystemExit) as error:  # any failure in profile code (even sys.exit) is reported
             raise ManifestError(self.root / MANIFEST_NAME, field_name,
-                                f"cannot import {target}: {type(error).__name__}: {error}") from error
+                                f"cannot import {target}: {_failure(error)}") from error
         module_file = Path(getattr(module, "__file__", "") or "").resolve()
         if code_dir not in module_file.parents:
             raise ManifestError(self.root / MANIFEST_NAME, field_name,
                                 f"{module_name} was found at {module_file}, not in the profile's folder "
                                 f"(another profile or package uses the same name)")
         return found
+
+
+    def create(self, field_name: str, *args, **kwargs):
+        """Import the class a manifest field names and make one with ``args``.
+
+        A failure inside the profile's code (other than a RocklyError it raises on
+        purpose) becomes a ManifestError naming the field, never a traceback.
+        """
+        found = self.load_object(field_name)
+        try:
+            return found(*args, **kwargs)
+        except RocklyError:
+            raise
+        except (Exception, SystemExit) as error:
+            raise ManifestError(self.root / MANIFEST_NAME, field_name,
+                                f"{self.manifest[field_name]} failed to start: {_failure(error)}") from error
+
+
+def _failure(error: BaseException) -> str:
+    """A failure of profile code in words: the exception's type and message."""
+    if isinstance(error, SystemExit):
+        return f"the code called sys.exit({error.code!r})"
+    return f"{type(error).__name__}: {error}"
 
 
 def load_profile(profile_dir: Path, shared_toolboxes: Path, source: str = "folder") -> Profile:

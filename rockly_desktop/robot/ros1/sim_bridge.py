@@ -120,7 +120,7 @@ class SimulatorNode:
 
         self.connection = RosConnection.get(master_uri)
         self.world = SimWorld()
-        self.simulator = profile.load_object("simulator")(self.world, tablet=tablet, speed=speed)
+        self.simulator = profile.create("simulator", self.world, tablet=tablet, speed=speed)
         self._bridge = SimRosBridge(self.world, profile.ros_interface, types)
         self.simulator.start()
         self._ended = False
