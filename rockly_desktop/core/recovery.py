@@ -22,7 +22,14 @@ from pathlib import Path
 
 from rockly_desktop.core import deep_json, paths
 from rockly_desktop.core.errors import ProgramFileError
-from rockly_desktop.core.program import PROGRAM_SUFFIX, Program, parse_program, read_text_file, write_text_atomically
+from rockly_desktop.core.program import (
+    PROGRAM_SUFFIX,
+    Program,
+    parse_program,
+    read_text_file,
+    remove_stale_temp_files,
+    write_text_atomically,
+)
 
 LOCK_SUFFIX = ".lock"
 
@@ -113,8 +120,10 @@ class Recovery:
         return self.path.with_suffix(LOCK_SUFFIX)
 
     def discard(self):
-        """Delete the recovery file (and its lock file): the person no longer needs it."""
+        """Delete the recovery file (and its lock file, and what a write cut short left): the
+        person no longer needs it."""
         _unlink(self.path)
+        remove_stale_temp_files(self.path)
         _unlink(self.lock_path)
         self.release()
 

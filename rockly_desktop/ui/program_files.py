@@ -1,4 +1,5 @@
-"""The File menu's work: new, open, save, save as, recent files, import XML, export Python.
+"""The File menu's work: new, open, save, save as, recent files, import XML, export Python,
+and restoring a program a crash left unsaved.
 
 Every failure is shown as a plain message; a failed open or import leaves the program
 on screen untouched, and a failed save leaves the file on disk untouched. A program that
