@@ -40,7 +40,17 @@ def builtin_profiles_dir() -> Path:
     return data_root() / "profiles"
 
 
+def user_data_dir() -> Path:
+    """Rockly's folder in the user's data home (XDG): ``~/.local/share/rockly`` by default."""
+    base = os.environ.get("XDG_DATA_HOME") or str(Path.home() / ".local" / "share")
+    return Path(base) / "rockly"
+
+
 def user_profiles_dir() -> Path:
     """Robot profiles a user installed by copying a folder (XDG data home)."""
-    base = os.environ.get("XDG_DATA_HOME") or str(Path.home() / ".local" / "share")
-    return Path(base) / "rockly" / "profiles"
+    return user_data_dir() / "profiles"
+
+
+def recovery_dir() -> Path:
+    """Copies of programs with unsaved changes, kept for after a crash (XDG data home)."""
+    return user_data_dir() / "recovery"

@@ -34,17 +34,19 @@ class Program:
     workspace: dict = field(default_factory=dict)
     breakpoints: list = field(default_factory=list)
 
-    def to_json(self) -> str:
+    def to_json(self, extra=None) -> str:
         """The file's text, stable and readable in a diff (compact when very deeply nested).
 
-        A lone surrogate (half of an emoji, from a broken paste) cannot be written as
-        UTF-8; such a document is written with ``\\u`` escapes instead."""
+        ``extra`` adds top-level keys that readers of programs pass over (a recovery
+        file's ``recovery``). A lone surrogate (half of an emoji, from a broken paste)
+        cannot be written as UTF-8; such a document is written with ``\\u`` escapes instead."""
         document = {
             "format": FORMAT_NAME,
             "version": FORMAT_VERSION,
             "profile": self.profile_id,
             "workspace": self.workspace,
             "breakpoints": list(self.breakpoints),
+            **(extra or {}),
         }
         text = deep_json.dumps(document, indent=1, ensure_ascii=False)
         try:

@@ -6,6 +6,8 @@ from PySide6.QtWidgets import QDockWidget, QLabel, QMainWindow, QMessageBox
 from rockly_desktop import __version__
 from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS, EditorView
 from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.core.recovery import RecoverySession, claim_abandoned
+from rockly_desktop.ui.autosave import Autosave
 from rockly_desktop.ui.code_dock import CodeDock
 from rockly_desktop.ui.console_dock import ConsoleDock
 from rockly_desktop.ui.document import Document
@@ -13,6 +15,7 @@ from rockly_desktop.ui.program_files import ProgramFiles
 from rockly_desktop.ui.health_bar import HealthBar
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.preferences import PreferencesDialog
+from rockly_desktop.ui.recovery_prompt import RecoveryPrompt
 from rockly_desktop.ui.run_session import RunSession
 from rockly_desktop.ui.robot_choice import RobotChoice
 from rockly_desktop.ui.run_toolbar import RunToolbar
@@ -92,6 +95,10 @@ class MainWindow(QMainWindow):
         self.files = ProgramFiles(self.document, self.editor, settings, registry, self)
         self.files.sig_status.connect(lambda text: self.statusBar().showMessage(text, 8000))
         self.files.sig_show_program.connect(self.show_program)
+        self.autosave = Autosave(self.document, self.editor, RecoverySession(), lambda: self.language, self)
+        self.autosave.sig_failed.connect(lambda text: self.statusBar().showMessage(text, 8000))
+        self.runs.sig_state_changed.connect(lambda state: state == "starting" and self.autosave.flush())
+        self.recovery_prompt = None
         self.document.sig_changed.connect(self._update_title)
         self.editor.sig_changed.connect(self._on_editor_changed)
         self.editor.sig_ready.connect(self.statusBar().clearMessage)
@@ -141,7 +148,8 @@ class MainWindow(QMainWindow):
         return self.registry.default()
 
     def start(self, open_path=None):
-        """Start the editor, with ``open_path`` or the last file shown in its first frame."""
+        """Start the editor, with ``open_path`` or the last file shown in its first frame, and
+        offer the unsaved program a Rockly that did not close cleanly left behind."""
         self.statusBar().showMessage(tr("loading_editor", self.language))
         self._starting = True
         path = open_path or self.settings.last_file
@@ -150,6 +158,9 @@ class MainWindow(QMainWindow):
         self._starting = False
         if not self._editor_started:
             self._restart_editor()
+        recovery = claim_abandoned()
+        if recovery is not None:
+            self.recovery_prompt = RecoveryPrompt(recovery, self.files, self.autosave, self.language, self)
         if self.registry.errors:
             details = "\n\n".join(str(error) for error in self.registry.errors)
             box = plain_message_box(self, QMessageBox.Icon.Warning, tr("profile_errors_title", self.language), details)
@@ -451,6 +462,7 @@ class MainWindow(QMainWindow):
         self.simulator_dock.stop()
         self.health.stop()
         self.robots.shutdown()
+        self.autosave.finish()
         self.settings.save_window(self.saveGeometry(), self.saveState())
         self.settings.last_file = self.document.path
         self.settings.sync()

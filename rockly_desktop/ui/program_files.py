@@ -1,4 +1,5 @@
-"""The File menu's work: new, open, save, save as, recent files, import XML, export Python.
+"""The File menu's work: new, open, save, save as, recent files, import XML, export Python,
+and restoring a program a crash left unsaved.
 
 Every failure is shown as a plain message; a failed open or import leaves the program
 on screen untouched, and a failed save leaves the file on disk untouched. A program that
@@ -65,6 +66,17 @@ class ProgramFiles(QObject):
     def import_xml(self, path=None, then=None):
         """Import a program the first Rockly saved as Blockly XML."""
         self._open_after_asking(path, "import_xml", "filter_xml", then)
+
+    def restore(self, recovery, then=None):
+        """Show the program a recovery file kept (core.recovery.Recovery) as unsaved changes
+        to the file it belongs to (after asking to save the program on screen)."""
+        def go_on(may_replace: bool):
+            if may_replace:
+                self._open_checked(recovery.path, then, recovery)
+            else:
+                _report(then, False)
+
+        self.maybe_save(then=go_on)
 
     def save(self, then=None):
         """Save to the current file, or ask for one."""
@@ -156,7 +168,7 @@ class ProgramFiles(QObject):
 
         self.maybe_save(then=go_on)
 
-    def _open_checked(self, path, then):
+    def _open_checked(self, path, then, recovery=None):
         try:
             program = read_program_to_open(path, self.registry, self.document.profile)
         except RocklyError as error:
@@ -177,7 +189,11 @@ class ProgramFiles(QObject):
                 # profile stands in: the program counts as changed, and the person is told.
                 program.take_load_result(result)
                 changed = bool(program.missing_profile or program.replaced_fields)
-                if program.is_import:
+                if recovery is not None:
+                    self.document.breakpoints = list(program.breakpoints)
+                    self._set_file(recovery.program_path, True)
+                    self.sig_status.emit(tr("restored", language))
+                elif program.is_import:
                     self.document.breakpoints = []
                     self._set_file(None, True)
                     self.sig_status.emit(tr("imported", language, path=path))
