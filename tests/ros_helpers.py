@@ -4,9 +4,12 @@ import socket
 import subprocess
 import sys
 import time
+import xmlrpc.client
 from pathlib import Path
 
-from rockly_desktop.robot.ros1.connection import master_answers
+from waiting import eventually
+
+from rockly_desktop.robot.ros1.connection import ask_master, master_answers
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -22,6 +25,33 @@ def ros_environment(master_uri: str, home: Path) -> dict:
     home.mkdir(parents=True, exist_ok=True)
     return dict(os.environ, ROS_MASTER_URI=master_uri, ROS_IP="127.0.0.1", ROS_HOME=str(home),
                 ROS_LOG_DIR=str(home / "log"), PYTHONUNBUFFERED="1")
+
+
+def connected_subscription(ros_robot, topic: str, msg_type: str):
+    """This process's shared subscription to ``topic``, once connected to every publisher the master lists.
+
+    rospy connects a subscriber to a publisher in a thread of its own: a message sent before
+    that connection is up is lost to this subscriber."""
+    entry = ros_robot.graph.topic(topic, msg_type)
+    publishers = dict(ask_master(ros_robot.connection.master_uri, "getSystemState")[0]).get(topic, [])
+    eventually(lambda: entry._subscriber.get_num_connections() >= len(publishers))
+    return entry
+
+
+def messages_received(master_uri: str, topic: str) -> int:
+    """How many messages on ``topic`` the nodes subscribed to it have received (each node's bus statistics)."""
+    _publishers, subscribers, _services = ask_master(master_uri, "getSystemState")
+    received = 0
+    for node in dict(subscribers).get(topic, []):
+        _code, _message, (_published, subscribed, _served) = xmlrpc.client.ServerProxy(
+            ask_master(master_uri, "lookupNode", node)).getBusStats("/rockly_test")
+        received += sum(connection[2] for name, connections in subscribed if name == topic for connection in connections)
+    return received
+
+
+def publishes(master_uri: str, topic: str) -> bool:
+    """Whether the master lists a publisher of ``topic``."""
+    return bool(dict(ask_master(master_uri, "getSystemState")[0]).get(topic))
 
 
 class RosMaster:
