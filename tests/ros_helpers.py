@@ -67,11 +67,9 @@ class RosMaster:
         self.process = subprocess.Popen(["rosmaster", "--core", "-p", str(self.port)],
                                         env=ros_environment(self.uri, self.home),
                                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        deadline = time.monotonic() + timeout
-        while master_answers(self.uri) is None:
-            if time.monotonic() > deadline or self.process.poll() is not None:
-                raise RuntimeError("rosmaster did not start")
-            time.sleep(0.05)
+        eventually(lambda: self.process.poll() is not None or master_answers(self.uri) is not None, timeout)
+        if self.process.poll() is not None:
+            raise RuntimeError("rosmaster did not start")
         return self
 
     def stop(self):
