@@ -45,7 +45,8 @@ def messages_received(master_uri: str, topic: str) -> int:
     for node in dict(subscribers).get(topic, []):
         _code, _message, (_published, subscribed, _served) = xmlrpc.client.ServerProxy(
             ask_master(master_uri, "lookupNode", node)).getBusStats("/rockly_test")
-        received += sum(connection[2] for name, connections in subscribed if name == topic for connection in connections)
+        received += sum(messages for name, connections in subscribed if name == topic
+                        for _id, _bytes, messages, *_rest in connections)
     return received
 
 

@@ -93,7 +93,8 @@ def test_tablet_dialogs_go_through_mmui_and_come_back_answered(hobbit_robot, ros
 
 def test_stop_during_a_drive_publishes_a_zero_twist(ros_robot, hobbit):
     twists, unsubscribe = record(ros_robot, "/cmd_vel", "geometry_msgs/Twist", lambda message: message)
-    commands, stop_commands = record(ros_robot, "/DiscreteMotionCmd", "std_msgs/String", lambda message: message["data"])
+    commands, stop_commands = record(ros_robot, "/DiscreteMotionCmd", "std_msgs/String",
+                                     lambda message: message["data"])
     control = RunControl()
     runner = make_runner(hobbit, ros_robot, {"code": "robot.drive(30, 'forward')\n", "variables": {}}, control, lambda e: None)
     thread = threading.Thread(target=runner.run)
