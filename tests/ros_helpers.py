@@ -38,6 +38,17 @@ def connected_subscription(ros_robot, topic: str, msg_type: str):
     return entry
 
 
+def feed_hears(robot, topics: dict):
+    """Return once ``robot``'s state feed records every topic of ``topics`` ({topic: type}) from every publisher.
+
+    The feed subscribes to what it finds on the graph once a second: a message sent before
+    would not reach the panels."""
+    for topic, msg_type in topics.items():
+        feed = robot.graph.topic(topic, msg_type).raw_callbacks  # of the subscription the feed shares
+        eventually(lambda callbacks=feed: callbacks)             # the feed records it
+        connected_subscription(robot, topic, msg_type)
+
+
 def messages_received(master_uri: str, topic: str) -> int:
     """How many messages on ``topic`` the nodes subscribed to it have received (each node's bus statistics)."""
     _publishers, subscribers, _services = ask_master(master_uri, "getSystemState")
