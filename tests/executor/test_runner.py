@@ -3,6 +3,7 @@ import threading
 import time
 
 import pytest
+from fake_time import FakeTime
 from waiting import eventually
 
 from rockly_desktop.core.errors import RobotCommandError
@@ -192,23 +193,6 @@ def test_a_failing_safe_stop_is_reported_but_the_run_still_ends():
 def test_variables_show_their_blockly_names():
     runner, recorder = run_to_end("my_name = 'Ada'\nscore = [1, 2]\n", variables={"my name": "my_name", "score": "score", "unset": "unset"})
     assert recorder.of(VariablesChanged)[-1].values == {"my name": "'Ada'", "score": "[1, 2]", "unset": "None"}
-
-
-class FakeTime:
-    """Stands in for the ``time`` module of the code under test: its clock moves only when the test moves it."""
-
-    def __init__(self):
-        self.now = 0.0
-        self.reads = 0
-
-    def monotonic(self):
-        self.reads += 1
-        return self.now
-
-    def read_again(self):
-        """Return once the code under test has looked at the clock again (twice, so a whole turn of its loop)."""
-        reads = self.reads
-        eventually(lambda: self.reads >= reads + 2)
 
 
 def test_pause_inside_a_long_wait_holds_its_clock_until_continue(monkeypatch):
