@@ -3,6 +3,7 @@ import math
 import threading
 
 import pytest
+from background import Background
 from ros_helpers import connected_subscription
 from waiting import eventually
 
@@ -116,10 +117,18 @@ def test_an_unknown_service_times_out_naming_it(ros_robot):
 
 
 def test_stop_ends_a_wait_for_a_service(ros_robot):
-    interrupt = Interrupt()
-    threading.Timer(0.2, interrupt.request_stop).start()
-    with pytest.raises(ProgramStopped):
-        ros_robot.backend(interrupt).call_service("/no_such_service", "std_srvs/Trigger", {}, 30)
+    class Watched(Interrupt):
+        waiting = threading.Event()
+
+        def nap(self, seconds):
+            self.waiting.set()
+            super().nap(seconds)
+
+    interrupt = Watched()
+    call = Background(lambda: ros_robot.backend(interrupt).call_service("/no_such_service", "std_srvs/Trigger", {}, 30))
+    assert interrupt.waiting.wait(10)  # the call waits for the service now
+    interrupt.request_stop()
+    assert isinstance(call.join().error, ProgramStopped)
 
 
 def test_the_ros_level_simulator_publishes_odometry_battery_and_joint_states(ros_robot, hobbit_robot):
