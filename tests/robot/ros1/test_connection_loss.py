@@ -106,3 +106,34 @@ def test_without_rospy_the_ros_backend_says_so_and_the_simulator_still_runs(tmp_
     on_simulator = subprocess.run([sys.executable, "-m", "rockly_desktop", "run", str(program)],
                                   capture_output=True, text=True, cwd=REPO, env=env, timeout=60)
     assert on_simulator.returncode == 0, on_simulator.stderr
+
+
+def test_a_master_restarted_between_two_looks_is_told_of_this_node_again(monkeypatch):
+    import threading
+
+    from waiting import eventually
+
+    from rockly_desktop.robot.ros1 import connection
+
+    looks, registered, pid = [], threading.Event(), [100]
+
+    def master_pid(_uri):
+        looks.append(pid[0])
+        return pid[0], 0.001
+
+    monkeypatch.setattr(connection, "master_pid", master_pid)
+    monkeypatch.setattr(connection, "_register_again", registered.set)
+    monkeypatch.setattr(connection, "WATCH_SECONDS", 0.001)
+    watched = connection.RosConnection("http://127.0.0.1:9")
+    watched.status, watched._master_pid = connection.CONNECTED, 100
+    watchdog = threading.Thread(target=watched._watch, daemon=True)
+    watchdog.start()
+    try:
+        eventually(lambda: len(looks) >= 3)
+        assert not registered.is_set()  # the same master knows this node
+        pid[0] = 200                    # another master answers there now
+        assert registered.wait(10)      # the node registers again, though it never saw the master gone
+        assert watched.status == connection.CONNECTED
+    finally:
+        watched._stopped.set()
+        watchdog.join(5)
