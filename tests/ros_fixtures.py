@@ -1,11 +1,12 @@
 """Fixtures: a real ROS master for this test run, and the ROS-level simulated HOBBIT on it."""
 import pytest
+from leak_check import shared_process
 from ros_helpers import RocklyProcess, RosMaster
 
 
 @pytest.fixture(scope="session")
 def ros_master(tmp_path_factory):
-    master = RosMaster(tmp_path_factory.mktemp("ros")).start()
+    master = shared_process(RosMaster(tmp_path_factory.mktemp("ros")).start())  # tests may restart it
     yield master
     master.stop()
 

@@ -4,9 +4,12 @@ import socket
 import subprocess
 import sys
 import time
+import xmlrpc.client
 from pathlib import Path
 
-from rockly_desktop.robot.ros1.connection import master_answers
+from waiting import eventually
+
+from rockly_desktop.robot.ros1.connection import ask_master, master_answers
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -24,6 +27,45 @@ def ros_environment(master_uri: str, home: Path) -> dict:
                 ROS_LOG_DIR=str(home / "log"), PYTHONUNBUFFERED="1")
 
 
+def connected_subscription(ros_robot, topic: str, msg_type: str):
+    """This process's shared subscription to ``topic``, once connected to every publisher the master lists.
+
+    rospy connects a subscriber to a publisher in a thread of its own: a message sent before
+    that connection is up is lost to this subscriber."""
+    entry = ros_robot.graph.topic(topic, msg_type)
+    publishers = dict(ask_master(ros_robot.connection.master_uri, "getSystemState")[0]).get(topic, [])
+    eventually(lambda: entry._subscriber.get_num_connections() >= len(publishers))
+    return entry
+
+
+def feed_hears(robot, topics: dict):
+    """Return once ``robot``'s state feed records every topic of ``topics`` ({topic: type}) from every publisher.
+
+    The feed subscribes to what it finds on the graph once a second: a message sent before
+    would not reach the panels."""
+    for topic, msg_type in topics.items():
+        feed = robot.graph.topic(topic, msg_type).raw_callbacks  # of the subscription the feed shares
+        eventually(lambda callbacks=feed: callbacks)             # the feed records it
+        connected_subscription(robot, topic, msg_type)
+
+
+def messages_received(master_uri: str, topic: str) -> int:
+    """How many messages on ``topic`` the nodes subscribed to it have received (each node's bus statistics)."""
+    _publishers, subscribers, _services = ask_master(master_uri, "getSystemState")
+    received = 0
+    for node in dict(subscribers).get(topic, []):
+        _code, _message, (_published, subscribed, _served) = xmlrpc.client.ServerProxy(
+            ask_master(master_uri, "lookupNode", node)).getBusStats("/rockly_test")
+        received += sum(messages for name, connections in subscribed if name == topic
+                        for _id, _bytes, messages, *_rest in connections)
+    return received
+
+
+def publishes(master_uri: str, topic: str) -> bool:
+    """Whether the master lists a publisher of ``topic``."""
+    return bool(dict(ask_master(master_uri, "getSystemState")[0]).get(topic))
+
+
 class RosMaster:
     """A rosmaster process on a free port; ``stop()`` kills it, ``start()`` brings it back on the same port."""
 
@@ -37,11 +79,9 @@ class RosMaster:
         self.process = subprocess.Popen(["rosmaster", "--core", "-p", str(self.port)],
                                         env=ros_environment(self.uri, self.home),
                                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        deadline = time.monotonic() + timeout
-        while master_answers(self.uri) is None:
-            if time.monotonic() > deadline or self.process.poll() is not None:
-                raise RuntimeError("rosmaster did not start")
-            time.sleep(0.05)
+        eventually(lambda: self.process.poll() is not None or master_answers(self.uri) is not None, timeout)
+        if self.process.poll() is not None:
+            raise RuntimeError("rosmaster did not start")
         return self
 
     def stop(self):

@@ -219,4 +219,5 @@ def _run_window(argv) -> int:
 
 
 if __name__ == "__main__":
+    sys.path.insert(0, str(REPO))  # this checkout's Rockly, not whichever the environment has installed
     sys.exit(_run_window(sys.argv[1:]))

@@ -3,11 +3,14 @@ import threading
 import time
 
 import pytest
+from fake_time import FakeTime
+from waiting import eventually
 
 from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import OutputPrinted, RunFinished, RunPaused, RunResumed, VariablesChanged
 from rockly_desktop.executor.runner import ProgramRunner
+from rockly_desktop.robot import interrupt
 
 PROGRAM = """\
 __rockly__.block('a')
@@ -118,16 +121,21 @@ def test_pause_request_pauses_a_running_loop_and_continue_resumes_it():
 
 
 @pytest.mark.parametrize("code", [
-    "while True:\n  __rockly__.check()\n",                                     # an empty tight loop
-    "while True:\n  __rockly__.check()\n  __rockly__.block('x')\n  y = 1\n",    # a loop of blocks
-    "__rockly__.block('w')\nrobot_wait(60)\n",                                  # inside a long wait
+    "going()\nwhile True:\n  __rockly__.check()\n",                                  # an empty tight loop
+    "going()\nwhile True:\n  __rockly__.check()\n  __rockly__.block('x')\n  y = 1\n", # a loop of blocks
+    "__rockly__.block('w')\nrobot_wait(60)\n",                                         # inside a long wait
 ])
 def test_stop_ends_the_program_quickly_wherever_it_is(code):
     control = RunControl()
-    ended = []
-    runner, recorder, thread = start(code, control, namespace={"robot_wait": control.interrupt.sleep},
+    ended, going = [], threading.Event()
+
+    def robot_wait(seconds):
+        going.set()
+        control.interrupt.sleep(seconds)
+
+    runner, recorder, thread = start(code, control, namespace={"robot_wait": robot_wait, "going": going.set},
                                      on_end=lambda: ended.append(time.monotonic()))
-    time.sleep(0.05)  # let it get going; the measurement below is what matters
+    assert going.wait(5)  # it got going; the measurement below is what matters
     requested = time.monotonic()
     control.request_stop()
     thread.join(5)
@@ -187,19 +195,26 @@ def test_variables_show_their_blockly_names():
     assert recorder.of(VariablesChanged)[-1].values == {"my name": "'Ada'", "score": "[1, 2]", "unset": "None"}
 
 
-def test_pause_inside_a_long_wait_holds_its_clock_until_continue():
+def test_pause_inside_a_long_wait_holds_its_clock_until_continue(monkeypatch):
+    clock = FakeTime()
+    monkeypatch.setattr(interrupt, "time", clock)
     control = RunControl()
-    code = "__rockly__.block('w')\nrobot_wait(0.3)\n__rockly__.block('after')\n"
+    code = "__rockly__.block('w')\nrobot_wait(0.5)\n__rockly__.block('after')\n"
     runner, recorder, thread = start(code, control, namespace={"robot_wait": control.interrupt.sleep})
-    time.sleep(0.1)
+    eventually(lambda: clock.reads)  # the wait has begun: it ends at 0.5
+    clock.now = 0.25
     control.request_pause()
     recorder.wait_for(lambda e: isinstance(e, RunPaused))
     assert recorder.of(RunPaused)[-1] == RunPaused("w", "pause")
-    time.sleep(0.4)  # longer than the whole wait: the clock must not run while paused
-    assert not recorder.of(RunFinished)
-    resumed = time.monotonic()
+    clock.now = 8.25  # much longer than the whole wait: the clock must not run while paused
     control.resume()
+    recorder.wait_for(lambda e: isinstance(e, RunResumed))
+    clock.read_again()  # the wait is back in its loop, its end moved by the pause
+    clock.now = 8.375
+    clock.read_again()
+    assert not recorder.of(RunFinished)  # 0.125 s of the wait are still to come
+    clock.now = 8.5
     thread.join(5)
+    assert not thread.is_alive()
     assert recorder.events[-1] == RunFinished("finished")
-    assert time.monotonic() - resumed >= 0.1  # the rest of the wait was still waited
     assert len(recorder.of(RunPaused)) == 1  # the pause was not repeated at the next block

@@ -216,6 +216,8 @@ def changes_box(qtbot, window):
 def test_a_good_program_opens_without_a_warning(qtbot, window, pick_up_file):
     open_program(qtbot, window, pick_up_file)
     wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
+    # What must not come is a late edit from the page (sent 60 ms after a change): nothing
+    # says none is coming, so this one wait stays, only long enough for it.
     qtbot.wait(200)
     assert error_boxes(window) == [] and not window.isWindowModified()
 

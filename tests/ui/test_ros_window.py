@@ -2,6 +2,7 @@
 import pytest
 from page_tools import call_page
 from program_builder import block, number, stack, workspace
+from ros_helpers import feed_hears
 
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
 
@@ -77,6 +78,9 @@ def test_health_turns_red_within_2_s_when_the_master_dies_and_green_when_it_retu
 
 
 def test_state_panels_and_topic_monitor_show_the_ros_robot(qtbot, ros_window):
+    feed_hears(ros_window.robot(), {"/head/emo": "std_msgs/String", "/head/move": "std_msgs/String",
+                                    "/hobbit_arm/goal": "hobbit_msgs/ArmServerActionGoal",
+                                    "/hobbit_arm/result": "hobbit_msgs/ArmServerActionResult"})
     call_page(qtbot, ros_window.editor, "load", {"workspace": workspace(stack(
         block("hobbit_emo", {"emotion": "WONDERING"}), block("hobbit_head", {"head_position": "up_right"}),
         block("hobbit_arm_move", {"movement": "MoveToTray"})))})

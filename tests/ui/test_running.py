@@ -1,11 +1,13 @@
 """Running programs in the window on the built-in simulator: run, step, breakpoints, stop, errors."""
 import pytest
+from fake_time import FakeTime
 from window_tools import completed
 from page_tools import call_page, run_js
 from program_builder import block, number, stack, text, workspace
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QApplication, QMessageBox
 
+from rockly_desktop.robot import interrupt
 from rockly_desktop.ui.tablet import TabletDialog
 
 
@@ -26,6 +28,12 @@ def finished(qtbot, window, timeout=20000):
 def highlighted(qtbot, window):
     return run_js(qtbot, window.editor, "Blockly.getMainWorkspace().getAllBlocks(false)"
                                         ".filter(b => b.getSvgRoot().classList.contains('blocklyHighlighted')).map(b => b.id)")
+
+
+def current_block(window):
+    """The block the running program is at (as the program's thread last said; None before it started)."""
+    thread = window.runs.thread
+    return thread.runner.hooks.current_block if thread is not None else None
 
 
 def tablet_dialogs(window):
@@ -127,8 +135,11 @@ def test_stop_ends_the_run_anywhere_and_the_robot_stops(qtbot, driver, name, pro
     window = driver.open_window(simulator_speed=1.0)
     load(qtbot, window, program)
     window.runs.run()
-    qtbot.waitUntil(lambda: window.runs.state == "running", timeout=10000)
-    qtbot.wait(300)  # let the program get into its wait / motion / loop
+    under_way = {"drive": lambda: window.robot().snapshot()["motion"] == "moving",
+                 "arm": lambda: window.robot().snapshot()["arm_progress"] > 0,
+                 "dialog": lambda: bool(tablet_dialogs(window))}
+    # the program got into its wait / motion / dialog / loop (a wait or a loop starts as its block does)
+    qtbot.waitUntil(under_way.get(name, lambda: current_block(window) is not None), timeout=10000)
     assert window.runs.state == "running", window.runs.last_result
     with qtbot.waitSignal(window.runs.sig_finished, timeout=5000) as blocker:
         qtbot.keyClick(QApplication.activeWindow() or window, Qt.Key.Key_Escape)  # Esc where the person is
@@ -151,15 +162,19 @@ def test_closing_the_window_stops_a_running_program(qtbot, driver):
     assert robot.snapshot()["linear"] == 0
 
 
-def test_slow_motion_slider_delays_every_block(qtbot, window):
-    load(qtbot, window, stack(*(block("hobbit_emo", {"emotion": "NEUTRAL"}) for _ in range(3))))
+def test_slow_motion_slider_delays_every_block(qtbot, window, monkeypatch):
+    clock = FakeTime()
+    monkeypatch.setattr(interrupt, "time", clock)  # the program's waits (the delay too) run on this clock
+    load(qtbot, window, stack(*(block("hobbit_emo", {"emotion": "NEUTRAL"}, id=f"emo{n}") for n in range(3))))
     window.run_toolbar.speed.setValue(window.run_toolbar.speed.maximum() - 1)
     assert window.run_toolbar.delay == pytest.approx(0.2)
     window.runs.run()
-    qtbot.waitUntil(lambda: window.runs.state == "running", timeout=10000)
-    qtbot.wait(300)
-    assert window.runs.state == "running"
-    finished(qtbot, window)
+    for block_id in ("emo0", "emo1", "emo2"):
+        qtbot.waitUntil(lambda expected=block_id: current_block(window) == expected, timeout=10000)
+        clock.read_again()  # it waits at the block for as long as the clock does not move on
+        assert window.runs.state == "running" and current_block(window) == block_id
+        clock.now += 0.25
+    assert finished(qtbot, window).outcome == "finished"
 
 
 def test_the_stop_button_works_while_the_tablet_waits_for_an_answer(qtbot, window):
@@ -186,8 +201,9 @@ def test_pause_halts_a_drive_at_once_and_continue_drives_the_rest(qtbot, driver)
     halted_at = window.robot().snapshot()["x"]
     assert 0.2 < halted_at < 0.95
     assert highlighted(qtbot, window) == ["drive"]
-    qtbot.wait(300)
-    assert window.robot().snapshot()["x"] == pytest.approx(halted_at, abs=0.005)  # stays put while paused
+    paused_at = window.robot().snapshot()["time"]
+    qtbot.waitUntil(lambda: window.robot().snapshot()["time"] > paused_at + 0.6, timeout=5000)  # simulated time runs
+    assert window.robot().snapshot()["x"] == pytest.approx(halted_at, abs=0.005)  # and it stays put while paused
     with qtbot.waitSignal(window.runs.sig_finished, timeout=20000):
         window.runs.resume()
     final = window.robot().snapshot()

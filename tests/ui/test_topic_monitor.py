@@ -2,7 +2,7 @@
 message as a tree that keeps its shape; filter, sorting, pause; dragging and plotting fields."""
 
 import pytest
-from PySide6.QtCore import QPoint, Qt
+from PySide6.QtCore import QPoint, Qt, QTimer
 
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.ui.topic_models import LIST_LIMIT, RATE, TOPIC
@@ -300,7 +300,8 @@ def test_pause_freezes_the_display_while_the_store_records(store, clock, make_mo
         store.record("/odom", ODOM, odometry(9.0 + step))
     store.record("/new_topic", "std_msgs/Bool", {"data": True})
     monitor.refresh()
-    qtbot.wait(250)  # the timer ticks too
+    with qtbot.waitSignal(monitor.findChild(QTimer).timeout, timeout=2000):
+        pass  # its timer ticks too
     assert rows(monitor) == before
     assert shown_value(monitor, "pose.pose.position.x") == "1.0"
     assert store.value("/odom", "pose.pose.position.x") == 28.0  # the store kept recording

@@ -36,6 +36,7 @@ class RosGraph:
         self._topics = {}
         self._services = {}
         self._actions = {}
+        self.goals_sent = set()  # actions whose goal publisher has waited for its subscribers
         self.available_services = set()
         self.sent = {}  # topic -> (when, message) this node last published (commands like /head/move)
         # Told of each service call this node makes, as (service, "service", {request, response}):
@@ -197,9 +198,13 @@ class Ros1Backend(RobotBackend):
         self._check()
         publisher, first = self.graph.publisher(topic, msg_type)
         if first or publisher.get_num_connections() == 0:
-            expected = self.graph.subscriber_count(topic)
-            self.wait_until(lambda: publisher.get_num_connections() >= expected, FIRST_PUBLISH_WAIT)
+            self._wait_for_subscribers(publisher)
         return publisher
+
+    def _wait_for_subscribers(self, publisher):
+        """Wait (≤ 1 s) until ``publisher`` is connected to every subscriber the master lists."""
+        expected = self.graph.subscriber_count(publisher.resolved_name)
+        self.wait_until(lambda: publisher.get_num_connections() >= expected, FIRST_PUBLISH_WAIT)
 
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
         """Publish on ``topic`` (a new publisher first waits briefly for its subscribers)."""
@@ -286,6 +291,9 @@ class Ros1Backend(RobotBackend):
 
         if not self.wait_until(lambda: client.wait_for_server(rospy.Duration(0.05)), 5.0):
             raise RobotCommandError(f"there is no action server '{action}'")
+        if action not in self.graph.goals_sent:  # actionlib waits for the server only, not for others listening
+            self._wait_for_subscribers(client.action_client.pub_goal)
+            self.graph.goals_sent.add(action)
         goal_class = self.graph.types.action_classes(action_type)[1]
         callback = (lambda message: feedback(from_message(message))) if feedback else None
         finished = threading.Event()

@@ -3,8 +3,9 @@
 rospy allows ``init_node`` once per process, so the node is started on first use with
 the master chosen then (``ROS_MASTER_URI``, ``ROS_IP``/``ROS_HOSTNAME`` are read at that
 moment). A watchdog asks the master for its pid twice a second; waits in the backend
-fail within ~2 s of the master vanishing; when it is back, the node registers its
-endpoints with it again and the status returns to connected.
+fail within ~2 s of the master vanishing; when it is back (or another master answers
+there, even between two looks), the node registers its endpoints with it again and the
+status returns to connected.
 """
 import logging
 import os
@@ -43,14 +44,19 @@ def ask_master(master_uri: str, method: str, *args):
     return value
 
 
-def master_answers(master_uri: str) -> float:
-    """The master's round-trip time in seconds, or None when it does not answer."""
+def master_pid(master_uri: str) -> tuple:
+    """The master's pid and the round-trip time of asking it (seconds), or (None, None) when it does not answer."""
     started = time.monotonic()
     try:
-        ask_master(master_uri, "getPid")
+        pid = ask_master(master_uri, "getPid")
     except (OSError, xmlrpc.client.Error):
-        return None
-    return time.monotonic() - started
+        return None, None
+    return pid, time.monotonic() - started
+
+
+def master_answers(master_uri: str) -> float:
+    """The master's round-trip time in seconds, or None when it does not answer."""
+    return master_pid(master_uri)[1]
 
 
 class RosUnavailable(RocklyError):
@@ -77,6 +83,7 @@ class RosConnection:
         self.host = host
         self.status = CONNECTING
         self.round_trip = None
+        self._master_pid = None
         self._stopped = threading.Event()
         self._watchdog = None
 
@@ -113,7 +120,7 @@ class RosConnection:
     def _wait_for_master(self, timeout: float) -> bool:
         deadline = time.monotonic() + timeout
         while True:
-            self.round_trip = master_answers(self.master_uri)
+            self._master_pid, self.round_trip = master_pid(self.master_uri)
             if self.round_trip is not None:
                 return True
             if time.monotonic() >= deadline:
@@ -122,13 +129,15 @@ class RosConnection:
 
     def _watch(self):
         while not self._stopped.wait(WATCH_SECONDS):
-            self.round_trip = master_answers(self.master_uri)
-            status = CONNECTED if self.round_trip is not None else LOST
+            pid, self.round_trip = master_pid(self.master_uri)
+            status = CONNECTED if pid is not None else LOST
             if status != self.status:
                 log.warning("ROS master %s: %s", self.master_uri, status)
-                if status == CONNECTED:
-                    _register_again()
-                self.status = status
+            # A master restarted between two looks (another pid) knows nothing of this node either.
+            if status == CONNECTED and (self.status != CONNECTED or pid != self._master_pid):
+                _register_again()
+                self._master_pid = pid
+            self.status = status
 
     @property
     def lost(self) -> bool:

@@ -2,7 +2,8 @@
 import time
 
 from program_builder import block, number, rockly_document, stack
-from ros_helpers import RocklyProcess, RosMaster
+from ros_helpers import RocklyProcess, RosMaster, messages_received, publishes
+from waiting import eventually
 
 
 def test_killing_the_master_mid_run_fails_the_running_block_quickly(tmp_path):
@@ -13,7 +14,7 @@ def test_killing_the_master_mid_run_fails_the_running_block_quickly(tmp_path):
                                               block("hobbit_move", {"direction": "+"}, {"speed": number(50)}, id="drive"))]))
     run = RocklyProcess(["run", program, "--backend", "ros1", "--master", master.uri], master, ready_line="block   drive")
     try:
-        time.sleep(0.5)  # well into the drive
+        eventually(lambda: messages_received(master.uri, "/DiscreteMotionCmd") >= 1)  # the robot is driving
         killed = time.monotonic()
         master.stop()
         run.process.wait(20)
@@ -49,6 +50,8 @@ robot = RosRobot(hobbit, sys.argv[1])
 commands = hobbit.load_object("api")(robot.backend(Interrupt()))
 commands.drive(0.2)
 print("first drive done", flush=True)
+Interrupt().wait_until(lambda: robot.connection.lost, 20)   # the test stopped the master
+print("lost", flush=True)
 sys.stdin.readline()                       # the test restarts the master now
 Interrupt().wait_until(lambda: robot.connection.status == "connected", 20)
 commands = hobbit.load_object("api")(robot.backend(Interrupt()))
@@ -72,8 +75,9 @@ def test_after_the_master_comes_back_the_same_rockly_drives_again(tmp_path):
     try:
         assert client.stdout.readline().strip() == "first drive done"
         master.stop()
-        time.sleep(1.5)  # both nodes notice the master is gone
+        assert client.stdout.readline().strip() == "lost"
         master.start()
+        eventually(lambda: publishes(master.uri, "/odom"))  # the simulator's node told the new master of itself
         client.stdin.write("go\n")
         client.stdin.flush()
         output, errors = client.communicate(timeout=60)
@@ -102,3 +106,34 @@ def test_without_rospy_the_ros_backend_says_so_and_the_simulator_still_runs(tmp_
     on_simulator = subprocess.run([sys.executable, "-m", "rockly_desktop", "run", str(program)],
                                   capture_output=True, text=True, cwd=REPO, env=env, timeout=60)
     assert on_simulator.returncode == 0, on_simulator.stderr
+
+
+def test_a_master_restarted_between_two_looks_is_told_of_this_node_again(monkeypatch):
+    import threading
+
+    from waiting import eventually
+
+    from rockly_desktop.robot.ros1 import connection
+
+    looks, registered, pid = [], threading.Event(), [100]
+
+    def master_pid(_uri):
+        looks.append(pid[0])
+        return pid[0], 0.001
+
+    monkeypatch.setattr(connection, "master_pid", master_pid)
+    monkeypatch.setattr(connection, "_register_again", registered.set)
+    monkeypatch.setattr(connection, "WATCH_SECONDS", 0.001)
+    watched = connection.RosConnection("http://127.0.0.1:9")
+    watched.status, watched._master_pid = connection.CONNECTED, 100
+    watchdog = threading.Thread(target=watched._watch, daemon=True)
+    watchdog.start()
+    try:
+        eventually(lambda: len(looks) >= 3)
+        assert not registered.is_set()  # the same master knows this node
+        pid[0] = 200                    # another master answers there now
+        assert registered.wait(10)      # the node registers again, though it never saw the master gone
+        assert watched.status == connection.CONNECTED
+    finally:
+        watched._stopped.set()
+        watchdog.join(5)

@@ -1,9 +1,10 @@
 """HOBBIT's commands over real ROS 1: a real master, the ROS-level simulator in its own process."""
 import math
 import threading
-import time
 
 import pytest
+from background import Background
+from ros_helpers import connected_subscription
 from waiting import eventually
 
 from rockly_desktop.core.errors import ProgramStopped
@@ -18,14 +19,13 @@ def hobbit_robot(ros_robot, hobbit):
 
 
 def record(ros_robot, topic, msg_type, pick):
-    """Record what arrives on ``topic``, once connected to every publisher the master knows."""
-    import rosgraph
+    """Record what arrives on ``topic``, once connected to every publisher the master knows.
 
+    A publisher made later (a program's first goal) waits for this subscriber itself: the
+    master lists it from here on (Rockly's publishers and goals wait for every listed subscriber)."""
     seen = []
     unsubscribe = ros_robot.backend(Interrupt()).subscribe(topic, msg_type, lambda message: seen.append(pick(message)))
-    subscriber = ros_robot.graph.topic(topic, msg_type)._subscriber
-    publishers = dict(rosgraph.Master("/test").getSystemState()[0]).get(topic, [])
-    eventually(lambda: subscriber.get_num_connections() >= len(publishers), timeout=3)
+    connected_subscription(ros_robot, topic, msg_type)
     return seen, unsubscribe
 
 
@@ -94,15 +94,19 @@ def test_tablet_dialogs_go_through_mmui_and_come_back_answered(hobbit_robot, ros
 
 def test_stop_during_a_drive_publishes_a_zero_twist(ros_robot, hobbit):
     twists, unsubscribe = record(ros_robot, "/cmd_vel", "geometry_msgs/Twist", lambda message: message)
+    commands, stop_commands = record(ros_robot, "/DiscreteMotionCmd", "std_msgs/String",
+                                     lambda message: message["data"])
     control = RunControl()
     runner = make_runner(hobbit, ros_robot, {"code": "robot.drive(30, 'forward')\n", "variables": {}}, control, lambda e: None)
     thread = threading.Thread(target=runner.run)
     thread.start()
-    time.sleep(0.5)
+    eventually(lambda: commands[:1] == ["Move 30"])  # the drive is under way
     control.request_stop()
     thread.join(10)
+    assert not thread.is_alive()
     eventually(lambda: any(not t["linear"]["x"] and not t["angular"]["z"] for t in twists))
     unsubscribe()
+    stop_commands()
 
 
 def test_an_unknown_service_times_out_naming_it(ros_robot):
@@ -113,10 +117,18 @@ def test_an_unknown_service_times_out_naming_it(ros_robot):
 
 
 def test_stop_ends_a_wait_for_a_service(ros_robot):
-    interrupt = Interrupt()
-    threading.Timer(0.2, interrupt.request_stop).start()
-    with pytest.raises(ProgramStopped):
-        ros_robot.backend(interrupt).call_service("/no_such_service", "std_srvs/Trigger", {}, 30)
+    class Watched(Interrupt):
+        waiting = threading.Event()
+
+        def nap(self, seconds):
+            self.waiting.set()
+            super().nap(seconds)
+
+    interrupt = Watched()
+    call = Background(lambda: ros_robot.backend(interrupt).call_service("/no_such_service", "std_srvs/Trigger", {}, 30))
+    assert interrupt.waiting.wait(10)  # the call waits for the service now
+    interrupt.request_stop()
+    assert isinstance(call.join().error, ProgramStopped)
 
 
 def test_the_ros_level_simulator_publishes_odometry_battery_and_joint_states(ros_robot, hobbit_robot):
@@ -162,12 +174,15 @@ def test_generic_ros_commands_over_ros(ros_robot):
     assert isinstance(response["params"], list)
     assert ros.send_goal("hobbit_arm", "hobbit_msgs/ArmServerAction", {"command": {"data": "MoveToHome"}}) == "succeeded"
     outcome = []
+    progress, stop_progress = record(ros_robot, "/hobbit_arm/feedback", "hobbit_msgs/ArmServerActionFeedback",
+                                     lambda message: message["feedback"]["feedback"]["data"])
     mover = threading.Thread(target=lambda: outcome.append(
         ros.send_goal("hobbit_arm", "hobbit_msgs/ArmServerAction", {"command": {"data": "MoveToCandle"}})))
     mover.start()
-    time.sleep(0.1)  # the goal is on its way; the cancel below is what is measured
+    eventually(lambda: any(data.startswith("MoveToCandle ") for data in progress))  # the server works on the goal
     ros.cancel_goals("hobbit_arm")
     mover.join(10)
+    stop_progress()
     assert outcome == ["preempted"]
     ros.set_param("/rockly_test/speed", 0.25)
     assert ros.get_param("/rockly_test/speed") == 0.25

@@ -1,4 +1,5 @@
 """The state store fed from a real ROS graph: topics of a separate node, their types, rates."""
+from ros_helpers import feed_hears
 from waiting import eventually
 
 from rockly_desktop.robot.interrupt import Interrupt
@@ -17,6 +18,7 @@ def test_topics_of_a_separate_node_are_listed_with_type_publishers_and_rate(ros_
 
 def test_panel_fields_come_from_the_robot(ros_robot, hobbit):
     ros_robot.follow_graph()
+    feed_hears(ros_robot, {"/head/emo": "std_msgs/String"})
     commands = hobbit.load_object("api")(ros_robot.backend(Interrupt()))
     commands.show_emotion("CONCERNED")
     eventually(lambda: ros_robot.state.value("/head/emo", "data") == "CONCERNED")
