@@ -41,9 +41,8 @@ def shared_process(owner):
 
 def _children() -> set:
     """(pid, start time, name) of every child process of this one that has not ended."""
-    me, found = os.getpid(), set()
-    pids = set()
-    for children in Path(f"/proc/{me}/task").glob("*/children"):
+    pids, found = set(), set()
+    for children in Path(f"/proc/{os.getpid()}/task").glob("*/children"):
         try:
             pids.update(children.read_text().split())
         except OSError:
