@@ -40,6 +40,11 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
     except RocklyError as error:
         print(f"rockly run: {error}", file=sys.stderr)
         return 1
+    connection = getattr(robot, "connection", None)
+    if connection is not None and connection.address_problem:
+        from rockly_desktop.robot.ros1.connection import address_problem_text
+
+        print(f"rockly run: warning: {address_problem_text(connection.address_problem)}", file=sys.stderr)
     control = RunControl(trace=True)
 
     def report(event):

@@ -54,18 +54,21 @@ class Interrupt:
         if self._stopped.is_set():
             raise ProgramStopped("the program was stopped")
 
-    def sleep(self, seconds: float):
-        """Wait ``seconds``; a stop raises ProgramStopped at once, a pause holds the clock."""
+    def sleep(self, seconds: float, watch=None):
+        """Wait ``seconds``; a stop raises ProgramStopped at once, a pause holds the clock.
+        ``watch()``, called every step, may raise to end the wait (a lost robot)."""
         deadline = time.monotonic() + max(0.0, seconds)
         while True:
             if self._pause.is_set() and self.hold_handler is not None:
                 paused_at = time.monotonic()
                 self.hold()
                 deadline += time.monotonic() - paused_at
+            if watch is not None:
+                watch()
             remaining = deadline - time.monotonic()
             if remaining <= 0:
                 return
-            self.nap(min(remaining, POLL_SECONDS) if self.hold_handler else remaining)
+            self.nap(min(remaining, POLL_SECONDS) if self.hold_handler or watch else remaining)
 
     def nap(self, seconds: float):
         """Wait up to ``seconds`` for a stop (then raise ProgramStopped); a pause does not hold it."""

@@ -79,7 +79,7 @@ class RobotChoice(QObject):
         if not dialog.exec():
             return False
         try:
-            RosConnection.get(dialog.master_uri, dialog.host or None, timeout=1.0)
+            connection = RosConnection.get(dialog.master_uri, dialog.host or None, timeout=1.0)
         except RocklyError as error:
             problem, next_step = robot_problem(error, language)
             box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, tr("connect_failed", language), problem)
@@ -88,6 +88,12 @@ class RobotChoice(QObject):
             box.exec()
             return False
         self.settings.remember_ros_connection(profile.id, dialog.master_uri, dialog.host)
+        if connection.address_problem:
+            kind, address = connection.address_problem
+            box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, tr("ros_address_title", language),
+                                    tr(f"ros_address_{kind}", language, address=address))
+            box.setObjectName("ros_address_box")
+            box.open()
         return True
 
     def _show_status(self):

@@ -141,6 +141,18 @@ _TEXTS = {
     "add_breakpoint": ("Pause here (breakpoint)", "Hier anhalten (Haltepunkt)"),
     "remove_breakpoint": ("Remove breakpoint", "Haltepunkt entfernen"),
     "run_started": ("Program started", "Programm gestartet"),
+    "ros_address_title": ("The robot may not reach this computer", "Der Roboter erreicht diesen Computer vielleicht nicht"),
+    "ros_address_ipv6": ("ROS_IP is {address}, an IPv6 address, but ROS_IPV6 is not “on”: the robot cannot connect "
+                         "back to this computer, so the program's commands would never arrive. Give this computer's "
+                         "IPv4 address (127.0.0.1 for a robot on this computer) and restart Rockly.",
+                         "ROS_IP ist {address}, eine IPv6-Adresse, aber ROS_IPV6 ist nicht „on“: Der Roboter kann "
+                         "diesen Computer nicht erreichen, die Befehle des Programms kämen nie an. Gib die "
+                         "IPv4-Adresse dieses Computers an (127.0.0.1 für einen Roboter auf diesem Computer) und "
+                         "starte Rockly neu."),
+    "ros_address_not_local": ("ROS_IP is {address}, which is not an address of this computer: the robot cannot "
+                              "connect back to it, so the program's commands would never arrive.",
+                              "ROS_IP ist {address}, aber das ist keine Adresse dieses Computers: Der Roboter kann "
+                              "ihn nicht erreichen, die Befehle des Programms kämen nie an."),
     "output_skipped": ("… {count} more lines were printed too fast to show",
                        "… {count} weitere Zeilen kamen zu schnell, um sie zu zeigen"),
     "run_empty": ("There is nothing to run yet: drag blocks from the list on the left into the workspace.",

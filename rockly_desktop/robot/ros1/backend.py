@@ -1,8 +1,9 @@
 """The RobotBackend on ROS 1: rospy topics, services and actionlib, by ROS names and types.
 
 Every wait polls in 10 ms steps so a stop request ends it at once, and fails with
-RobotConnectionLost within ~2 s when the master stops answering. Publishers, subscribers,
-service proxies and action clients are made once per name and shared by all runs.
+RobotConnectionLost within ~2 s when the master stops answering, or when the robot node
+it waits on is gone (see liveness). Publishers, subscribers, service proxies and action
+clients are made once per name and shared by all runs.
 """
 import threading
 import time
@@ -11,6 +12,7 @@ import xmlrpc.client
 from rockly_desktop.core.errors import RobotCommandError, RobotConnectionLost, RobotTimeout
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
 from rockly_desktop.robot.ros1.connection import ask_master
+from rockly_desktop.robot.ros1.liveness import LOOK_SECONDS, Dependencies, PublisherLiveness
 from rockly_desktop.robot.ros1.message_values import from_message, to_message
 from rockly_desktop.robot.ros1.service_calls import ServiceCaller
 
@@ -44,6 +46,7 @@ class RosGraph:
         # learns of it here, as the simulator's world tap reports it.
         self.service_watchers = []
         self.service_calls = ServiceCaller()
+        self.liveness = PublisherLiveness(connection.master_uri, rospy.get_name())
 
     def publisher(self, topic, msg_type):
         """The shared publisher of ``topic``, and whether this is its first publish."""
@@ -112,6 +115,7 @@ class _Topic:
         self.callbacks = []
         self.raw_callbacks = []
         self._subscriber = rospy.Subscriber(topic, message_class, self._on_message)
+        self.name = self._subscriber.resolved_name
 
     @property
     def latest(self):
@@ -145,8 +149,10 @@ class Ros1GoalHandle(GoalHandle):
         return self._finished.is_set()
 
     def wait(self, timeout: float) -> GoalOutcome:
-        """Wait for the goal's end (interruptible, waking the moment it ends); its status and result."""
-        if not self._backend.wait_for_event(self._finished, timeout):
+        """Wait for the goal's end (interruptible, waking the moment it ends, failing when the
+        action server's node is gone); its status and result."""
+        status = self._client.action_client.status_sub.resolved_name
+        if not self._backend.wait_for_event(self._finished, timeout, depends=(status,)):
             raise RobotTimeout(f"the action '{self._action}' did not finish within {timeout:g} s")
         result = self._client.get_result()
         return GoalOutcome(_ACTIONLIB_STATUS[self._client.get_state()],
@@ -163,6 +169,7 @@ class Ros1Backend(RobotBackend):
     def __init__(self, graph: RosGraph, interrupt):
         self.graph = graph
         self.interrupt = interrupt
+        self._dependencies = Dependencies(graph.liveness)
 
     def _check(self):
         self.interrupt.check()
@@ -170,22 +177,33 @@ class Ros1Backend(RobotBackend):
             raise RobotConnectionLost(f"the connection to the robot was lost (no ROS master at "
                                       f"{self.graph.connection.master_uri})")
 
-    def wait_until(self, predicate, timeout: float) -> bool:
-        """Poll ``predicate`` until true (True) or ``timeout`` (False); stop or a lost master raises."""
-        deadline = time.monotonic() + timeout
+    def _check_waiting(self, started: float, depends=()):
+        """``_check``, and once a wait has lasted LOOK_SECONDS, that the nodes it depends on live."""
+        self._check()
+        if time.monotonic() - started >= LOOK_SECONDS:
+            topic = self._dependencies.gone(depends)
+            if topic is not None:
+                raise RobotConnectionLost(f"the robot stopped answering: the node publishing '{topic}' is gone")
+
+    def wait_until(self, predicate, timeout: float, depends=()) -> bool:
+        """Poll ``predicate`` until true (True) or ``timeout`` (False); stop, a lost master or a
+        lost node this wait depends on (``depends`` and the topics listened to) raises."""
+        started = time.monotonic()
+        deadline = started + timeout
         while True:
-            self._check()
+            self._check_waiting(started, depends)
             if predicate():
                 return True
             if time.monotonic() >= deadline:
                 return False
             self.interrupt.nap(POLL_SECONDS)
 
-    def wait_for_event(self, event: threading.Event, timeout: float) -> bool:
+    def wait_for_event(self, event: threading.Event, timeout: float, depends=()) -> bool:
         """Like wait_until for an Event, but wakes the moment it is set (no polling delay)."""
-        deadline = time.monotonic() + timeout
+        started = time.monotonic()
+        deadline = started + timeout
         while True:
-            self._check()
+            self._check_waiting(started, depends)
             remaining = deadline - time.monotonic()
             if event.wait(max(0.0, min(POLL_SECONDS, remaining))):
                 return True
@@ -229,7 +247,13 @@ class Ros1Backend(RobotBackend):
         self._check()
         entry = self.graph.topic(topic, self._type_of(topic, msg_type))
         entry.callbacks.append(callback)
-        return lambda: callback in entry.callbacks and entry.callbacks.remove(callback)
+        no_longer_depend = self._dependencies.listen(entry.name)
+
+        def unsubscribe():
+            if callback in entry.callbacks:
+                entry.callbacks.remove(callback)
+                no_longer_depend()
+        return unsubscribe
 
     def latest(self, topic: str, msg_type: str):
         """The last message seen on ``topic`` (subscribing on first use) or sent by this node, or None."""
@@ -320,5 +344,5 @@ class Ros1Backend(RobotBackend):
         rospy.set_param(name, value)
 
     def sleep(self, seconds: float) -> None:
-        """Wait ``seconds`` (pausable, stoppable)."""
-        self.interrupt.sleep(seconds)
+        """Wait ``seconds`` (pausable, stoppable; a lost master ends it within ~2 s)."""
+        self.interrupt.sleep(seconds, watch=self._check)

@@ -9,6 +9,7 @@ status returns to connected.
 """
 import logging
 import os
+import socket
 import threading
 import time
 import xmlrpc.client
@@ -59,6 +60,38 @@ def master_answers(master_uri: str) -> float:
     return master_pid(master_uri)[1]
 
 
+_ADDRESS_PROBLEMS = {
+    "ipv6": ("ROS_IP is {address}, an IPv6 address, but ROS_IPV6 is not 'on': the robot's nodes cannot connect "
+             "back to this computer, so its commands would never arrive. Use this computer's IPv4 address "
+             "(127.0.0.1 for a robot on this computer), or set ROS_IPV6=on"),
+    "not_local": ("ROS_IP is {address}, which is not an address of this computer: the robot's nodes cannot "
+                  "connect back to it, so its commands would never arrive"),
+}
+
+
+def address_problem(environment):
+    """Why other nodes could not reach this computer at the address ROS is told to give them
+    (``ROS_IP``), as (kind, address) with kind 'ipv6' or 'not_local'; None when it is fine.
+    rospy starts either way, and the robot's nodes then never get this computer's commands."""
+    address = environment.get("ROS_IP")
+    if not address:
+        return None
+    if ":" in address and environment.get("ROS_IPV6") != "on":
+        return "ipv6", address
+    try:
+        with socket.socket(socket.AF_INET6 if ":" in address else socket.AF_INET, socket.SOCK_STREAM) as probe:
+            probe.bind((address, 0))
+    except OSError:
+        return "not_local", address
+    return None
+
+
+def address_problem_text(problem) -> str:
+    """An address problem (kind, address) in plain English."""
+    kind, address = problem
+    return _ADDRESS_PROBLEMS[kind].format(address=address)
+
+
 class RosUnavailable(RocklyError):
     """rospy is not installed here, or the master cannot be reached.
 
@@ -83,6 +116,7 @@ class RosConnection:
         self.host = host
         self.status = CONNECTING
         self.round_trip = None
+        self.address_problem = None  # (kind, address) when the robot could not reach this computer
         self._master_pid = None
         self._stopped = threading.Event()
         self._watchdog = None
@@ -110,6 +144,9 @@ class RosConnection:
         os.environ["ROS_MASTER_URI"] = self.master_uri
         if self.host:
             os.environ["ROS_IP" if self.host.replace(".", "").isdigit() else "ROS_HOSTNAME"] = self.host
+        self.address_problem = address_problem(os.environ)
+        if self.address_problem:
+            log.warning("%s", address_problem_text(self.address_problem))
         if not self._wait_for_master(timeout):
             raise RosUnavailable(f"no ROS master answers at {self.master_uri}", "no_master", master=self.master_uri)
         rospy.init_node(NODE_NAME, anonymous=True, disable_signals=True)
