@@ -48,9 +48,14 @@ MANIFEST_FIELDS = (
     FieldSpec("safe_stop", "safe_stop", False, "What 'stop' means for this robot: a list of {publish: ...}, {cancel_goals: ACTION}."),
     FieldSpec("state", "state", False, "Live state panels: [{panel: TITLE, rows: [{label, topic, field, format?, transform?}]}]."),
     FieldSpec("legacy_fields", "legacy_fields", False, "Old field names of saved programs: {block_type: {old_field: {field: new, values: {old: new}}}}."),
-    FieldSpec("velocity_topics", "velocity_topics", False, "The drive interface: geometry_msgs/Twist topics (e.g. [/cmd_vel]) a teacher's speed limits clamp."),
-    FieldSpec("capabilities", "capabilities", False, "Parts a teacher can switch off: [{id, name, blocks: [TYPE...], topics: [...], services: [...], actions: [...]}]; their commands are refused, their blocks hidden."),
-    FieldSpec("levels", "levels", False, "Toolbox levels a teacher picks: [{id, name, categories: [NAME...] or all, blocks: [TYPE...]}]; a category by its English or shared name."),
+    FieldSpec("velocity_topics", "velocity_topics", False,
+              "The drive interface: geometry_msgs/Twist topics (e.g. [/cmd_vel]) a teacher's speed limits clamp."),
+    FieldSpec("capabilities", "capabilities", False,
+              "Parts a teacher can switch off: [{id, name, blocks: [TYPE...], topics: [...], services: [...], "
+              "actions: [...]}]; their commands are refused, their blocks hidden."),
+    FieldSpec("levels", "levels", False,
+              "Toolbox levels a teacher picks: [{id, name, categories: [NAME...] or all, blocks: [TYPE...]}]; "
+              "a category by its English or shared name."),
 )
 
 _FIELDS_BY_NAME = {spec.name: spec for spec in MANIFEST_FIELDS}

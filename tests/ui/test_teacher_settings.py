@@ -22,7 +22,7 @@ def teacher_settings(driver):
     return AppSettings(driver.settings_path).teacher
 
 
-def test_the_starter_level_gives_the_page_only_its_blocks_and_a_program_beyond_it_still_opens(qtbot, driver, tmp_path):
+def test_the_starter_level_gives_the_page_only_its_blocks_and_a_program_beyond_it_opens(qtbot, driver, tmp_path):
     teacher = teacher_settings(driver)
     teacher.set_level("hobbit", "starter")
     path = tmp_path / "arm.rockly"
@@ -44,7 +44,8 @@ def accept_with(monkeypatch, act):
 def test_a_level_chosen_in_preferences_reloads_the_toolbox_and_keeps_the_program(qtbot, window, monkeypatch):
     full = toolbox_blocks(qtbot, window.editor)
     assert "hobbit_arm_gripper" in full and "ROS_publisher" in full
-    run_js(qtbot, window.editor, "Blockly.serialization.blocks.append({type: 'hobbit_sos'}, Blockly.getMainWorkspace()).id")
+    run_js(qtbot, window.editor,
+           "Blockly.serialization.blocks.append({type: 'hobbit_sos'}, Blockly.getMainWorkspace()).id")
     qtbot.waitUntil(lambda: "robot.call_sos()" in window.editor.python, timeout=10000)
 
     def choose_starter(dialog):

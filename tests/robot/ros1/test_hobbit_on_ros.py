@@ -213,7 +213,8 @@ def test_the_teachers_limits_hold_over_ros(ros_robot, hobbit):
 
     twists, stop_twists = record(ros_robot, "/cmd_vel", "geometry_msgs/Twist",
                                  lambda message: (message["linear"]["x"], message["angular"]["z"]))
-    goals, stop_goals = record(ros_robot, "/hobbit_arm/goal", "hobbit_msgs/ArmServerActionGoal", lambda message: message)
+    goals, stop_goals = record(ros_robot, "/hobbit_arm/goal", "hobbit_msgs/ArmServerActionGoal",
+                               lambda message: message)
     fast = "ros.publish_message('/cmd_vel', 'geometry_msgs/Twist', {'linear': {'x': %s}, 'angular': {'z': %s}})\n"
     code = fast % (1.5, 2.0) + fast % (-0.9, -4.0) + fast % (0.1, 0.2) + "robot.gripper('open')\n"
     limits = Limits(max_speed=0.2, max_turn=45, switched_off=frozenset({"arm"}))
