@@ -1,4 +1,5 @@
 """The Preferences dialog's Teacher tab: toolbox level, maximum speeds and capabilities, behind a PIN."""
+from PySide6.QtCore import QEvent, Qt
 from PySide6.QtWidgets import (
     QCheckBox,
     QComboBox,
@@ -41,10 +42,12 @@ class TeacherTab(QStackedWidget):
         layout.addRow(QLabel(tr("teacher_new_pin" if first_time else "teacher_locked", language,
                                 count=MIN_PIN_LENGTH), wordWrap=True))
         self.pin = QLineEdit(page, objectName="teacher_pin", echoMode=QLineEdit.EchoMode.Password)
+        self.pin.installEventFilter(self)
         layout.addRow(tr("teacher_pin", language), self.pin)
         self.pin_again = None
         if first_time:
             self.pin_again = QLineEdit(page, objectName="teacher_pin_again", echoMode=QLineEdit.EchoMode.Password)
+            self.pin_again.installEventFilter(self)
             layout.addRow(tr("teacher_pin_again", language), self.pin_again)
         self.unlock_button = QPushButton(tr("teacher_set_pin" if first_time else "teacher_unlock", language), page)
         self.unlock_button.setObjectName("teacher_unlock")
@@ -54,6 +57,13 @@ class TeacherTab(QStackedWidget):
         self.problem = QLabel(page, objectName="teacher_problem")
         layout.addRow(self.problem)
         return page
+
+    def eventFilter(self, watched, event):
+        """Enter in a PIN field unlocks (the dialog's OK would close it, still locked)."""
+        if event.type() == QEvent.Type.KeyPress and event.key() in (Qt.Key.Key_Return, Qt.Key.Key_Enter):
+            self.unlock()
+            return True
+        return super().eventFilter(watched, event)
 
     def unlock(self):
         """Check the PIN typed (or set the new one) and show the settings when it is right."""

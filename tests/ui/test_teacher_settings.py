@@ -1,6 +1,7 @@
 """Teacher settings in a real window: toolbox levels on the real page, the PIN gate, remembered choices."""
-from page_tools import run_js, toolbox_names
-from program_builder import block, rockly_document
+from page_tools import call_page, run_js, toolbox_names
+from program_builder import block, rockly_document, workspace
+from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDialog
 from window_tools import state
 
@@ -112,3 +113,31 @@ def test_the_first_pin_must_be_long_enough_and_typed_twice_and_is_kept_only_hash
     stored = driver.settings_path.read_text(encoding="utf-8")
     assert "123456" not in stored and "pbkdf2_sha256" in stored
     assert teacher.check_pin("123456") and not teacher.check_pin("123457")
+
+
+def test_enter_in_the_pin_field_unlocks_and_does_not_close_the_dialog(qtbot, driver, registry):
+    teacher = teacher_settings(driver)
+    teacher.set_pin("9876")
+    dialog = PreferencesDialog("en", None, registry.get("hobbit"), teacher)
+    qtbot.addWidget(dialog)
+    dialog.show()
+    dialog.tabs.setCurrentIndex(1)
+    tab = dialog.teacher_tab
+    tab.pin.setFocus()
+    qtbot.keyClicks(tab.pin, "9876")
+    qtbot.keyClick(tab.pin, Qt.Key.Key_Return)
+    assert tab.unlocked and dialog.isVisible() and dialog.result() == 0
+
+
+def test_a_run_in_the_window_keeps_the_teachers_limits(qtbot, driver):
+    teacher = teacher_settings(driver)
+    teacher.set_limits("hobbit", switched_off=["arm"])
+    window = driver.open_window()
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(
+        block("hobbit_arm_gripper", {"movement": "OpenGripper"}, id="grip"))})
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=20000) as blocker:
+        assert window.runs.run()
+    result = blocker.args[0]
+    assert (result.outcome, result.block_id) == ("error", "grip")
+    assert result.message == "The robot could not do this: the teacher switched off “Arm and gripper” for this robot"
+    assert window.robot().snapshot()["gripper"] == "closed"
