@@ -376,6 +376,10 @@
       const numbers = new Map(elements.map((element, index) => [element, index + 1]));
       return {loaded: true, ...replacedFields(fieldsNotKept(XML_PROGRAM, pairs, numbers)), ...state()};
     },
+    setToolbox({toolbox}) {
+      workspace.updateToolbox(toolbox);
+      return true;
+    },
     clear() {
       replaceWorkspace(() => {});
       return true;

@@ -134,6 +134,12 @@ class EditorView(QWebEngineView):
         """Show a first-Rockly Blockly XML program; answered like ``load_workspace``."""
         self.call("importXml", {"xml": xml}, callback)
 
+    def set_toolbox(self, toolbox: dict):
+        """Show ``toolbox`` (Blockly toolbox JSON) instead of the profile's; the program stays as it is."""
+        if self._setup_args is not None:  # a page that reloads gets it too
+            self._setup_args["profile"] = {**self._setup_args["profile"], "toolbox": toolbox}
+        self.call("setToolbox", {"toolbox": toolbox})
+
     def clear(self):
         """Empty the workspace."""
         self.call("clear")

@@ -48,6 +48,14 @@ MANIFEST_FIELDS = (
     FieldSpec("safe_stop", "safe_stop", False, "What 'stop' means for this robot: a list of {publish: ...}, {cancel_goals: ACTION}."),
     FieldSpec("state", "state", False, "Live state panels: [{panel: TITLE, rows: [{label, topic, field, format?, transform?}]}]."),
     FieldSpec("legacy_fields", "legacy_fields", False, "Old field names of saved programs: {block_type: {old_field: {field: new, values: {old: new}}}}."),
+    FieldSpec("velocity_topics", "velocity_topics", False,
+              "The drive interface: geometry_msgs/Twist topics (e.g. [/cmd_vel]) a teacher's speed limits clamp."),
+    FieldSpec("capabilities", "capabilities", False,
+              "Parts a teacher can switch off: [{id, name, blocks: [TYPE...], topics: [...], services: [...], "
+              "actions: [...]}]; their commands are refused, their blocks hidden."),
+    FieldSpec("levels", "levels", False,
+              "Toolbox levels a teacher picks: [{id, name, categories: [NAME...] or all, blocks: [TYPE...]}]; "
+              "a category by its English or shared name."),
 )
 
 _FIELDS_BY_NAME = {spec.name: spec for spec in MANIFEST_FIELDS}
@@ -140,6 +148,65 @@ def _check_legacy_fields(value):
     return None
 
 
+def _check_names(entry: dict, keys, where: str):
+    for key in keys:
+        names = entry.get(key, [])
+        if not isinstance(names, list) or not all(isinstance(name, str) and name for name in names):
+            return f"{where}: '{key}' must be a list of names"
+    return None
+
+
+def _check_entries(value, what: str, keys):
+    """Problems common to capabilities and levels: a list of {id, name, ...} with unique ids."""
+    if not isinstance(value, list) or not value:
+        return f"must be a non-empty list of {what}"
+    seen = set()
+    for index, entry in enumerate(value):
+        where = f"item {index + 1}"
+        if not isinstance(entry, dict):
+            return f"{where} must be a mapping with 'id' and 'name'"
+        unknown = set(entry) - {"id", "name", *keys}
+        if unknown:
+            return f"{where}: unknown key(s) {sorted(unknown)} (use id, name, {', '.join(keys)})"
+        if not isinstance(entry.get("id"), str) or not _IDENTIFIER.fullmatch(entry["id"]):
+            return f"{where} needs an 'id' of lower-case letters, digits and '_'"
+        if entry["id"] in seen:
+            return f"{where}: the id '{entry['id']}' is used twice"
+        seen.add(entry["id"])
+        if _check_text(entry.get("name")):
+            return f"{where} ('{entry['id']}') needs a 'name' (a text, or one per language with 'en')"
+    return None
+
+
+def _check_capabilities(value):
+    problem = _check_entries(value, "capabilities", ("blocks", "topics", "services", "actions"))
+    if problem:
+        return problem
+    for index, entry in enumerate(value):
+        where = f"item {index + 1} ('{entry['id']}')"
+        problem = _check_names(entry, ("blocks", "topics", "services", "actions"), where)
+        if problem:
+            return problem
+        if not any(entry.get(key) for key in ("topics", "services", "actions")):
+            return f"{where} must name the topics, services or actions it covers"
+    return None
+
+
+def _check_levels(value):
+    problem = _check_entries(value, "levels", ("categories", "blocks"))
+    if problem:
+        return problem
+    for index, entry in enumerate(value):
+        where = f"item {index + 1} ('{entry['id']}')"
+        if entry.get("categories") != "all":
+            problem = _check_names(entry, ("categories", "blocks"), where)
+            if problem:
+                return problem.replace("a list of names", "a list of names (or, for categories, all)")
+            if not entry.get("categories") and not entry.get("blocks"):
+                return f"{where} must list 'categories' or 'blocks' (or say categories: all)"
+    return None
+
+
 def _check(spec: FieldSpec, value, root: Path):
     """Return a problem description for one field's value, or None if it is fine."""
     kind = spec.kind
@@ -178,6 +245,13 @@ def _check(spec: FieldSpec, value, root: Path):
         return _check_state(value)
     elif kind == "ros_interface":
         return _check_ros_interface(value)
+    elif kind == "velocity_topics":
+        if not isinstance(value, list) or not all(isinstance(topic, str) and topic.startswith("/") for topic in value):
+            return "must be a list of topic names like /cmd_vel"
+    elif kind == "capabilities":
+        return _check_capabilities(value)
+    elif kind == "levels":
+        return _check_levels(value)
     return None
 
 

@@ -10,7 +10,14 @@ from rockly_desktop.core.ros_definitions import DefinitionCatalog
 from rockly_desktop.profiles.blocks import BlockSpec, read_blocks
 from rockly_desktop.profiles.i18n import localize
 from rockly_desktop.profiles.manifest import MANIFEST_NAME, read_manifest
-from rockly_desktop.profiles.toolbox import read_toolbox, shared_definition_files, toolbox_json
+from rockly_desktop.profiles.toolbox import (
+    category_names,
+    level_categories,
+    read_toolbox,
+    shared_definition_files,
+    toolbox_block_types,
+    toolbox_json,
+)
 
 
 @dataclass(frozen=True, eq=False)
@@ -79,6 +86,30 @@ class Profile:
         folder = self.manifest.get("messages")
         return [self.root / folder] if folder else []
 
+    @property
+    def velocity_topics(self) -> list:
+        """The drive interface: the ``geometry_msgs/Twist`` topics a teacher's speed limits clamp."""
+        return self.manifest.get("velocity_topics", [])
+
+    @property
+    def capabilities(self) -> list:
+        """Parts a teacher can switch off: ``[{id, name, blocks, topics, services, actions}]``."""
+        return self.manifest.get("capabilities", [])
+
+    @property
+    def levels(self) -> list:
+        """Toolbox levels a teacher picks from: ``[{id, name, categories, blocks}]``."""
+        return self.manifest.get("levels", [])
+
+    def level(self, level_id):
+        """The level with id ``level_id``, or None (the whole toolbox) for an unknown or no id."""
+        return next((level for level in self.levels if level["id"] == level_id), None)
+
+    def hidden_blocks(self, switched_off) -> set:
+        """Block types of the capabilities whose ids are in ``switched_off``."""
+        return {block for capability in self.capabilities if capability["id"] in switched_off
+                for block in capability.get("blocks", [])}
+
     def simulator_view_class(self):
         """The simulator view's class (imported now), or None when the profile has no view.
 
@@ -91,12 +122,19 @@ class Profile:
         """The ROS types typed blocks offer: the common installed packages and the profile's own."""
         return DefinitionCatalog(self.message_folders)
 
-    def editor_config(self, language: str) -> dict:
-        """Everything the editor page needs for this profile, texts in ``language``."""
+    def toolbox(self, language: str, level_id=None, switched_off=()) -> dict:
+        """Blockly's toolbox JSON for the level ``level_id`` (None: all of it), without the blocks of
+        switched-off capabilities. Every block stays defined: programs using others still open."""
+        categories = level_categories(self.toolbox_categories, self.level(level_id), self.hidden_blocks(switched_off))
+        return toolbox_json(categories, language)
+
+    def editor_config(self, language: str, level_id=None, switched_off=()) -> dict:
+        """Everything the editor page needs for this profile, texts in ``language``, the toolbox
+        for a level and the capabilities switched off (see ``toolbox``)."""
         return {
             "profile": self.id,
             "blocks": [spec.editor_config(language) for spec in self.blocks + self.shared_blocks],
-            "toolbox": toolbox_json(self.toolbox_categories, language),
+            "toolbox": self.toolbox(language, level_id, switched_off),
             "types": self.ros_types.editor_catalog,
         }
 
@@ -150,6 +188,24 @@ def _failure(error: BaseException) -> str:
     return f"{type(error).__name__}: {error}"
 
 
+def _check_levels_and_capabilities(path: Path, manifest: dict, categories: list):
+    """Raise ManifestError when a level or capability names a category or block the toolbox lacks."""
+    names = set().union(*(category_names(category) for category in categories))
+    types = toolbox_block_types(categories)
+    for field in ("levels", "capabilities"):
+        for index, entry in enumerate(manifest.get(field, [])):
+            categories_named = entry.get("categories", [])
+            for name in [] if categories_named == "all" else categories_named:
+                if name not in names:
+                    raise ManifestError(path, f"{field}[{index}].categories",
+                                        f"'{entry['id']}' names the category '{name}', which the toolbox does not "
+                                        f"have (there are: {', '.join(sorted(names))})")
+            for block in entry.get("blocks", []):
+                if block not in types:
+                    raise ManifestError(path, f"{field}[{index}].blocks",
+                                        f"'{entry['id']}' names the block '{block}', which is not in the toolbox")
+
+
 def load_profile(profile_dir: Path, shared_toolboxes: Path, source: str = "folder") -> Profile:
     """Read and validate a whole profile folder; raise ManifestError on the first problem."""
     profile_dir = Path(profile_dir)
@@ -166,6 +222,7 @@ def load_profile(profile_dir: Path, shared_toolboxes: Path, source: str = "folde
             raise ManifestError(profile_dir / manifest["blocks"], f"blocks[{sorted(clash)[0]}]",
                                 f"is also defined by the shared blocks in {definitions.name}")
         shared_blocks += shared
+    _check_levels_and_capabilities(profile_dir / MANIFEST_NAME, manifest, categories)
     return Profile(
         id=manifest["id"], name=manifest["name"], version=manifest["version"], root=profile_dir,
         source=source, manifest=manifest, blocks=blocks, toolbox_categories=categories, shared_blocks=shared_blocks,

@@ -72,7 +72,7 @@ def read_toolbox(path: Path, shared_folder: Path, profile_block_types: set) -> l
         if isinstance(raw, dict) and "shared" in raw:
             if raw["shared"] not in available:
                 raise ManifestError(path, f"{where}.shared", f"no shared category '{raw['shared']}' (there are: {', '.join(available)})")
-            category = read_shared_category(raw["shared"], shared_folder)
+            category = {**read_shared_category(raw["shared"], shared_folder), "shared": raw["shared"]}
         else:
             category = _category(raw, path, where)
             for position, entry in enumerate(category.get("contents", [])):
@@ -88,7 +88,45 @@ def shared_definition_files(categories: list, shared_folder: Path) -> list:
     return [shared_folder / category["definitions"] for category in categories if "definitions" in category]
 
 
+def category_names(category: dict) -> set:
+    """The names a level may give a category by: its English name, and a shared category's file name."""
+    name = category["name"]
+    names = {name.get("en") if isinstance(name, dict) else name}
+    if "shared" in category:
+        names.add(category["shared"])
+    return names
+
+
+def toolbox_block_types(categories: list) -> set:
+    """The block types the categories list."""
+    return {entry["type"] for category in categories for entry in category.get("contents", [])}
+
+
+def level_categories(categories: list, level: dict = None, hidden=frozenset()) -> list:
+    """The categories a toolbox ``level`` keeps (None: all), without the ``hidden`` block types.
+
+    A level keeps whole categories (``categories``: names, or ``all``) and single
+    ``blocks`` from the others; a category left empty is dropped.
+    """
+    keep_all = level is None or level.get("categories") == "all"
+    whole = set() if keep_all else set(level.get("categories", []))
+    single = set(level.get("blocks", [])) if level else set()
+    kept = []
+    for category in categories:
+        entire = keep_all or bool(category_names(category) & whole)
+        if "contents" not in category:  # Blockly's dynamic categories (variables, functions)
+            if entire:
+                kept.append(category)
+            continue
+        contents = [entry for entry in category["contents"]
+                    if (entire or entry["type"] in single) and entry["type"] not in hidden]
+        if contents:
+            kept.append({**category, "contents": contents})
+    return kept
+
+
 def toolbox_json(categories: list, language: str) -> dict:
     """Blockly's category toolbox JSON with texts in ``language``."""
-    contents = [{key: value for key, value in category.items() if key != "definitions"} for category in categories]
+    contents = [{key: value for key, value in category.items() if key not in ("definitions", "shared")}
+                for category in categories]
     return {"kind": "categoryToolbox", "contents": localize(contents, language)}

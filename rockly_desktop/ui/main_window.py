@@ -171,7 +171,8 @@ class MainWindow(QMainWindow):
         self._editor_started = True
         texts = {"addBreakpoint": tr("add_breakpoint", self.language),
                  "removeBreakpoint": tr("remove_breakpoint", self.language)}
-        self.editor.start(self.profile.editor_config(self.language), self.language, first_call, on_first_result, texts)
+        self.editor.start(self.profile.editor_config(self.language, *self._toolbox_choice()), self.language,
+                          first_call, on_first_result, texts)
         self.profile_label.setText(tr("robot_status", self.language, name=self.profile.display_name(self.language)))
         if self._robot_shown:
             self.show_robot()
@@ -365,10 +366,17 @@ class MainWindow(QMainWindow):
         self._update_title()
 
     def show_preferences(self):
-        """Open the Preferences dialog and apply the chosen language."""
-        dialog = PreferencesDialog(self.language, self)
+        """Open the Preferences dialog and apply the chosen language and the teacher's settings."""
+        dialog = PreferencesDialog(self.language, self, self.profile, self.settings.teacher)
         if dialog.exec():
+            if dialog.teacher_tab.apply():  # the program stays; only the toolbox changes
+                self.editor.set_toolbox(self.profile.toolbox(self.language, *self._toolbox_choice()))
             self.set_language(dialog.language)
+
+    def _toolbox_choice(self):
+        """(level id, capability ids switched off) the teacher chose for the profile's toolbox."""
+        teacher = self.settings.teacher
+        return teacher.level(self.profile.id), teacher.switched_off(self.profile.id)
 
     # --- editor events ------------------------------------------------------------------
 

@@ -1,13 +1,18 @@
-"""The Preferences dialog: the language of the window and the blocks."""
-from PySide6.QtWidgets import QComboBox, QDialog, QDialogButtonBox, QFormLayout
+"""The Preferences dialog: the language of the window and the blocks; the teacher's settings."""
+from PySide6.QtWidgets import QComboBox, QDialog, QDialogButtonBox, QFormLayout, QTabWidget, QVBoxLayout, QWidget
 
+from rockly_desktop.ui.teacher_tab import TeacherTab
 from rockly_desktop.ui.texts import LANGUAGE_NAMES, tr
 
 
 class PreferencesDialog(QDialog):
-    """Lets the user pick English or German; ``language`` holds the choice."""
+    """Lets the user pick English or German; ``language`` holds the choice.
 
-    def __init__(self, language: str, parent=None):
+    With a ``profile`` and the ``teacher`` settings it has a Teacher tab (``teacher_tab``)
+    behind a PIN; the caller calls ``teacher_tab.apply()`` when the dialog is accepted.
+    """
+
+    def __init__(self, language: str, parent=None, profile=None, teacher=None):
         super().__init__(parent)
         self.setWindowTitle(tr("preferences_title", language))
         self.language_box = QComboBox(self)
@@ -17,9 +22,18 @@ class PreferencesDialog(QDialog):
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel, self)
         buttons.accepted.connect(self.accept)
         buttons.rejected.connect(self.reject)
-        layout = QFormLayout(self)
+        general = QWidget(self)
+        layout = QFormLayout(general)
         layout.addRow(tr("language", language), self.language_box)
-        layout.addRow(buttons)
+        self.tabs = QTabWidget(self)
+        self.tabs.addTab(general, tr("preferences_general", language))
+        self.teacher_tab = None
+        if profile is not None and teacher is not None:
+            self.teacher_tab = TeacherTab(profile, teacher, language, self)
+            self.tabs.addTab(self.teacher_tab, tr("teacher_tab", language))
+        outer = QVBoxLayout(self)
+        outer.addWidget(self.tabs)
+        outer.addWidget(buttons)
 
     @property
     def language(self) -> str:

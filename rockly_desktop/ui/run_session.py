@@ -89,7 +89,9 @@ class RunSession(QObject):
             control = RunControl(run_code["breakpoints"], self._delay)
             robot = self.robots.robot()
             profile = self.document.profile
-            thread = ProgramThread(lambda emit: make_runner(profile, robot, run_code, control, emit, language), self)
+            limits = self.settings.teacher.limits(profile.id)  # kept by the backend, on any robot
+            thread = ProgramThread(lambda emit: make_runner(profile, robot, run_code, control, emit, language, limits),
+                                   self)
         except (RocklyError, RuntimeError) as problem:
             self.console.append(" ".join(part for part in robot_problem(problem, language) if part), "error")
             self._set_state("idle")

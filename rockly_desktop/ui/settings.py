@@ -2,6 +2,7 @@
 from PySide6.QtCore import QSettings
 
 from rockly_desktop.profiles.i18n import SUPPORTED_LANGUAGES
+from rockly_desktop.ui.teacher_settings import TeacherSettings
 
 MAX_RECENT = 8
 
@@ -91,6 +92,11 @@ class AppSettings:
         """Remember how to reach this robot over ROS."""
         self._store.setValue(f"ros/{profile_id}/master", master_uri)
         self._store.setValue(f"ros/{profile_id}/host", host or "")
+
+    @property
+    def teacher(self) -> TeacherSettings:
+        """The teacher's settings (toolbox level, limits, PIN), in the same store."""
+        return TeacherSettings(self._store)
 
     def sync(self):
         """Write to disk now."""

@@ -221,3 +221,25 @@ def test_a_stop_while_a_handler_waits_preempts_the_goal_on_the_server(ros_robot)
     finally:
         unsubscribe()
     assert results == [2]  # actionlib's PREEMPTED: the server stopped the arm
+
+
+def test_the_teachers_limits_hold_over_ros(ros_robot, hobbit):
+    from rockly_desktop.robot.limits import Limits
+
+    twists, stop_twists = record(ros_robot, "/cmd_vel", "geometry_msgs/Twist",
+                                 lambda message: (message["linear"]["x"], message["angular"]["z"]))
+    goals, stop_goals = record(ros_robot, "/hobbit_arm/goal", "hobbit_msgs/ArmServerActionGoal",
+                               lambda message: message)
+    fast = "ros.publish_message('/cmd_vel', 'geometry_msgs/Twist', {'linear': {'x': %s}, 'angular': {'z': %s}})\n"
+    code = fast % (1.5, 2.0) + fast % (-0.9, -4.0) + fast % (0.1, 0.2) + "robot.gripper('open')\n"
+    limits = Limits(max_speed=0.2, max_turn=45, switched_off=frozenset({"arm"}))
+    result = make_runner(hobbit, ros_robot, {"code": code, "variables": {}}, RunControl(), lambda e: None,
+                         "de", limits).run()
+    assert "die Lehrkraft hat „Arm und Greifer“" in result.message
+    eventually(lambda: len(twists) >= 4)  # three from the program, a zero one from the safe stop
+    stop_twists()
+    stop_goals()
+    turn = math.radians(45)
+    assert twists[:3] == [(0.2, pytest.approx(turn)), (-0.2, pytest.approx(-turn)), (0.1, 0.2)]
+    assert all(abs(x) <= 0.2 and abs(z) <= turn + 1e-9 for x, z in twists)
+    assert goals == []

@@ -1,0 +1,174 @@
+"""A teacher's limits, enforced on the backend every command of a run goes through.
+
+``LimitedBackend`` wraps the run's RobotBackend: velocity commands on the topics a
+profile declares as its drive interface (``geometry_msgs/Twist``) are clamped to the
+maximum speeds, and topics, services and actions of a switched-off capability are
+refused with a RobotCommandError. Profiles need no code for it: the names come from
+their manifest. Reading (subscribe, latest, waits) and cancelling always pass.
+"""
+import math
+from dataclasses import dataclass
+
+from rockly_desktop.core.errors import RobotCommandError
+from rockly_desktop.robot.interface import RobotBackend
+
+_TEXTS = {
+    "switched_off": ("the teacher switched off “{name}” for this robot",
+                     "die Lehrkraft hat „{name}“ für diesen Roboter ausgeschaltet"),
+    "speed_clamped": ("Speed limit: the robot drives at most {speed:g} m/s (set by the teacher).",
+                      "Tempolimit: Der Roboter fährt höchstens {speed:g} m/s (von der Lehrkraft eingestellt)."),
+    "turn_clamped": ("Speed limit: the robot turns at most {turn:g}°/s (set by the teacher).",
+                     "Tempolimit: Der Roboter dreht sich höchstens {turn:g}°/s (von der Lehrkraft eingestellt)."),
+}
+
+
+def _text(key: str, language: str, **values) -> str:
+    english, german = _TEXTS[key]
+    return (german if language == "de" else english).format(**values)
+
+
+@dataclass(frozen=True)
+class Limits:
+    """What a teacher allows: maximum speeds (None: no limit) and capabilities switched off.
+
+    ``max_speed`` is in m/s, ``max_turn`` in degrees per second (as the teacher sets it).
+    """
+
+    max_speed: float = None
+    max_turn: float = None
+    switched_off: frozenset = frozenset()
+
+    @property
+    def is_open(self) -> bool:
+        """True when nothing is limited."""
+        return self.max_speed is None and self.max_turn is None and not self.switched_off
+
+
+@dataclass(frozen=True)
+class Capability:
+    """A part of a robot a teacher can switch off: its name for people and the ROS names it uses."""
+
+    id: str
+    name: str
+    topics: frozenset = frozenset()
+    services: frozenset = frozenset()
+    actions: frozenset = frozenset()
+
+
+def _ros_name(name) -> str:
+    return "/" + str(name).strip("/")
+
+
+def _clamp_vector(vector, limit: float):
+    """``vector`` (a dict with x, y, z) with each part clamped to ±limit; and whether any was."""
+    if not isinstance(vector, dict):
+        return vector, False
+    clamped, changed = dict(vector), False
+    for axis in ("x", "y", "z"):
+        value = vector.get(axis)
+        if not isinstance(value, (int, float)) or isinstance(value, bool):
+            continue
+        if math.isnan(value):  # a NaN velocity is no velocity a teacher allowed
+            clamped[axis], changed = 0.0, True
+        elif abs(value) > limit:
+            clamped[axis], changed = math.copysign(limit, value), True
+    return clamped, changed
+
+
+class LimitedBackend(RobotBackend):
+    """A RobotBackend that keeps a run within a teacher's ``Limits``.
+
+    ``velocity_topics`` are the Twist topics clamped; ``capabilities`` the switched-off
+    ones. ``note(text)`` is told once per run when a speed was clamped. Errors and notes
+    are in ``language``.
+    """
+
+    def __init__(self, inner: RobotBackend, limits: Limits, velocity_topics=(), capabilities=(),
+                 language: str = "en", note=None):
+        self._inner = inner
+        self.interrupt = inner.interrupt
+        self._limits = limits
+        self._velocity_topics = {_ros_name(topic) for topic in velocity_topics}
+        self._blocked = {}  # (kind, ROS name) -> the capability's name
+        for capability in capabilities:
+            for kind in ("topics", "services", "actions"):
+                for name in getattr(capability, kind):
+                    self._blocked[(kind, _ros_name(name))] = capability.name
+        self._language = language
+        self.note = note
+        self._noted = set()
+
+    def __getattr__(self, name):
+        return getattr(self._inner, name)  # backend-specific extras (connect_publisher, wait_for_event)
+
+    def _refuse(self, kind: str, name: str):
+        capability = self._blocked.get((kind, _ros_name(name)))
+        if capability is not None:
+            raise RobotCommandError(_text("switched_off", self._language, name=capability))
+
+    def _tell_once(self, key: str, **values):
+        if key not in self._noted and self.note is not None:
+            self._noted.add(key)
+            self.note(_text(key, self._language, **values))
+
+    def _clamped(self, message: dict) -> dict:
+        message = dict(message or {})
+        if self._limits.max_speed is not None:
+            message["linear"], changed = _clamp_vector(message.get("linear", {}), self._limits.max_speed)
+            if changed:
+                self._tell_once("speed_clamped", speed=self._limits.max_speed)
+        if self._limits.max_turn is not None:
+            message["angular"], changed = _clamp_vector(message.get("angular", {}),
+                                                        math.radians(self._limits.max_turn))
+            if changed:
+                self._tell_once("turn_clamped", turn=self._limits.max_turn)
+        return message
+
+    def publish(self, topic: str, msg_type: str, message: dict) -> None:
+        """Publish, refused for a switched-off capability, velocities clamped on drive topics."""
+        self._refuse("topics", topic)
+        if _ros_name(topic) in self._velocity_topics and isinstance(message, dict):
+            message = self._clamped(message)
+        self._inner.publish(topic, msg_type, message)
+
+    def subscribe(self, topic: str, msg_type: str, callback):
+        """Subscribe (reading is never limited)."""
+        return self._inner.subscribe(topic, msg_type, callback)
+
+    def wait_until(self, predicate, timeout: float) -> bool:
+        """Wait until ``predicate()`` is true or ``timeout`` passes."""
+        return self._inner.wait_until(predicate, timeout)
+
+    def latest(self, topic: str, msg_type: str):
+        """The last message on ``topic``."""
+        return self._inner.latest(topic, msg_type)
+
+    def wait_for_message(self, topic: str, msg_type: str, timeout: float) -> dict:
+        """Wait for the next message on ``topic``."""
+        return self._inner.wait_for_message(topic, msg_type, timeout)
+
+    def call_service(self, name: str, srv_type: str, request: dict, timeout: float) -> dict:
+        """Call a service, refused for a switched-off capability."""
+        self._refuse("services", name)
+        return self._inner.call_service(name, srv_type, request, timeout)
+
+    def send_goal(self, action: str, action_type: str, goal: dict, feedback=None):
+        """Send an action goal, refused for a switched-off capability."""
+        self._refuse("actions", action)
+        return self._inner.send_goal(action, action_type, goal, feedback)
+
+    def cancel_all_goals(self, action: str) -> None:
+        """Cancel goals (always allowed: it only ever makes the robot do less)."""
+        self._inner.cancel_all_goals(action)
+
+    def get_param(self, name: str, default=None):
+        """A ROS parameter's value."""
+        return self._inner.get_param(name, default)
+
+    def set_param(self, name: str, value) -> None:
+        """Set a ROS parameter."""
+        self._inner.set_param(name, value)
+
+    def sleep(self, seconds: float) -> None:
+        """Wait ``seconds``."""
+        self._inner.sleep(seconds)

@@ -1,0 +1,133 @@
+"""The Preferences dialog's Teacher tab: toolbox level, maximum speeds and capabilities, behind a PIN."""
+from PySide6.QtCore import QEvent, Qt
+from PySide6.QtWidgets import (
+    QCheckBox,
+    QComboBox,
+    QDoubleSpinBox,
+    QFormLayout,
+    QLabel,
+    QLineEdit,
+    QPushButton,
+    QSpinBox,
+    QStackedWidget,
+    QVBoxLayout,
+    QWidget,
+)
+
+from rockly_desktop.profiles.i18n import localize
+from rockly_desktop.ui.teacher_settings import MIN_PIN_LENGTH
+from rockly_desktop.ui.texts import tr
+
+
+class TeacherTab(QStackedWidget):
+    """Locked (asks for the PIN, or for a new one the first time) until the right PIN is given;
+    then the settings for ``profile`` from ``teacher`` (TeacherSettings). ``apply()`` keeps them."""
+
+    def __init__(self, profile, teacher, language: str, parent=None):
+        super().__init__(parent)
+        self.setObjectName("teacher_tab")
+        self._profile, self._teacher, self._language = profile, teacher, language
+        self.addWidget(self._lock_page())
+        self.addWidget(self._settings_page())
+
+    @property
+    def unlocked(self) -> bool:
+        """True once the right PIN was given (or a new one set)."""
+        return self.currentIndex() == 1
+
+    def _lock_page(self) -> QWidget:
+        language, first_time = self._language, not self._teacher.has_pin
+        page = QWidget(self)
+        layout = QFormLayout(page)
+        layout.addRow(QLabel(tr("teacher_new_pin" if first_time else "teacher_locked", language,
+                                count=MIN_PIN_LENGTH), wordWrap=True))
+        self.pin = QLineEdit(page, objectName="teacher_pin", echoMode=QLineEdit.EchoMode.Password)
+        self.pin.installEventFilter(self)
+        layout.addRow(tr("teacher_pin", language), self.pin)
+        self.pin_again = None
+        if first_time:
+            self.pin_again = QLineEdit(page, objectName="teacher_pin_again", echoMode=QLineEdit.EchoMode.Password)
+            self.pin_again.installEventFilter(self)
+            layout.addRow(tr("teacher_pin_again", language), self.pin_again)
+        self.unlock_button = QPushButton(tr("teacher_set_pin" if first_time else "teacher_unlock", language), page)
+        self.unlock_button.setObjectName("teacher_unlock")
+        self.unlock_button.setAutoDefault(False)
+        self.unlock_button.clicked.connect(self.unlock)
+        layout.addRow(self.unlock_button)
+        self.problem = QLabel(page, objectName="teacher_problem")
+        layout.addRow(self.problem)
+        return page
+
+    def eventFilter(self, watched, event):
+        """Enter in a PIN field unlocks (the dialog's OK would close it, still locked)."""
+        if event.type() == QEvent.Type.KeyPress and event.key() in (Qt.Key.Key_Return, Qt.Key.Key_Enter):
+            self.unlock()
+            return True
+        return super().eventFilter(watched, event)
+
+    def unlock(self):
+        """Check the PIN typed (or set the new one) and show the settings when it is right."""
+        pin = self.pin.text()
+        if self.pin_again is not None:
+            if len(pin) < MIN_PIN_LENGTH:
+                self.problem.setText(tr("teacher_pin_short", self._language, count=MIN_PIN_LENGTH))
+                return
+            if pin != self.pin_again.text():
+                self.problem.setText(tr("teacher_pin_mismatch", self._language))
+                return
+            self._teacher.set_pin(pin)
+        elif not self._teacher.check_pin(pin):
+            self.problem.setText(tr("teacher_wrong_pin", self._language))
+            self.pin.clear()
+            return
+        self.pin.clear()
+        self.setCurrentIndex(1)
+
+    def _settings_page(self) -> QWidget:
+        profile, teacher, language = self._profile, self._teacher, self._language
+        limits = teacher.limits(profile.id)
+        page = QWidget(self)
+        outer = QVBoxLayout(page)
+        outer.addWidget(QLabel(tr("teacher_for", language, name=profile.display_name(language))))
+        form = QFormLayout()
+        outer.addLayout(form)
+        self.level_box = QComboBox(page, objectName="teacher_level")
+        if not profile.levels:
+            self.level_box.addItem(tr("teacher_all_blocks", language), None)
+        for level in profile.levels:
+            self.level_box.addItem(localize(level["name"], language), level["id"])
+        chosen = self.level_box.findData(teacher.level(profile.id))
+        if chosen < 0:  # none chosen yet: the level with every category, as the editor shows then
+            whole = next((level["id"] for level in profile.levels if level.get("categories") == "all"), None)
+            chosen = max(0, self.level_box.findData(whole))
+        self.level_box.setCurrentIndex(chosen)
+        form.addRow(tr("teacher_level", language), self.level_box)
+        self.max_speed = QDoubleSpinBox(page, objectName="teacher_max_speed", decimals=2, singleStep=0.05,
+                                        maximum=5.0, suffix=" m/s")
+        self.max_speed.setSpecialValueText(tr("teacher_no_limit", language))
+        self.max_speed.setValue(limits.max_speed or 0.0)
+        form.addRow(tr("teacher_max_speed", language), self.max_speed)
+        self.max_turn = QSpinBox(page, objectName="teacher_max_turn", maximum=720, singleStep=5, suffix=" °/s")
+        self.max_turn.setSpecialValueText(tr("teacher_no_limit", language))
+        self.max_turn.setValue(round(limits.max_turn or 0))
+        form.addRow(tr("teacher_max_turn", language), self.max_turn)
+        self.capability_boxes = {}
+        for capability in profile.capabilities:
+            box = QCheckBox(localize(capability["name"], language), page)
+            box.setObjectName(f"teacher_capability_{capability['id']}")
+            box.setChecked(capability["id"] not in limits.switched_off)
+            self.capability_boxes[capability["id"]] = box
+            form.addRow(tr("teacher_allowed", language) if len(self.capability_boxes) == 1 else "", box)
+        outer.addStretch(1)
+        return page
+
+    def apply(self) -> bool:
+        """Keep the settings shown (only when unlocked); True when the toolbox must change."""
+        if not self.unlocked:
+            return False
+        profile_id, teacher = self._profile.id, self._teacher
+        before = (teacher.level(profile_id), sorted(teacher.switched_off(profile_id)))
+        switched_off = [name for name, box in self.capability_boxes.items() if not box.isChecked()]
+        teacher.set_level(profile_id, self.level_box.currentData())
+        teacher.set_limits(profile_id, self.max_speed.value() or None, self.max_turn.value() or None, switched_off)
+        return before != (teacher.level(profile_id), sorted(switched_off))

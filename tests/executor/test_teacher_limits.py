@@ -1,0 +1,87 @@
+"""A teacher's limits hold on the real simulator: speeds are clamped, switched-off capabilities refused."""
+import math
+
+import pytest
+
+from rockly_desktop.executor.control import RunControl
+from rockly_desktop.executor.events import OutputPrinted
+from rockly_desktop.executor.robot_link import SimulatedRobot
+from rockly_desktop.executor.run_setup import make_runner
+from rockly_desktop.robot.limits import Limits
+
+FAST = "ros.publish_message('/cmd_vel', 'geometry_msgs/Twist', {'linear': {'x': %s}, 'angular': {'z': %s}})\n"
+
+
+@pytest.fixture
+def robot(hobbit):
+    robot = SimulatedRobot(hobbit, speed=1.0)
+    yield robot
+    robot.shutdown()
+
+
+def run(profile, robot, code, limits, language="en"):
+    events = []
+    result = make_runner(profile, robot, {"code": code, "variables": {}}, RunControl(), events.append,
+                         language, limits).run()
+    return result, [event.text for event in events if isinstance(event, OutputPrinted)]
+
+
+def velocities(robot):
+    """Every /cmd_vel the simulated robot receives, as (linear x, angular z)."""
+    seen = []
+    robot.world.subscribe("/cmd_vel", lambda message: seen.append(
+        (message.get("linear", {}).get("x", 0.0), message.get("angular", {}).get("z", 0.0))))
+    return seen
+
+
+def test_drive_commands_are_clamped_to_the_maximum_speeds_and_said_once(hobbit, robot):
+    seen = velocities(robot)
+    code = FAST % (2.0, -3.0) + FAST % (-1.5, 0.1) + "robot.backend.sleep(0.05)\n"
+    result, output = run(hobbit, robot, code, Limits(max_speed=0.2, max_turn=30))
+    assert result.outcome == "finished", result.message
+    assert seen[:2] == [(0.2, pytest.approx(-math.radians(30))), (-0.2, 0.1)]
+    assert all(abs(x) <= 0.2 and abs(z) <= math.radians(30) + 1e-9 for x, z in seen)
+    assert output == ["Speed limit: the robot drives at most 0.2 m/s (set by the teacher).",
+                      "Speed limit: the robot turns at most 30°/s (set by the teacher)."]
+
+
+def test_without_limits_the_speed_is_the_programs(hobbit, robot):
+    seen = velocities(robot)
+    result, output = run(hobbit, robot, FAST % (2.0, 0.0), None)
+    assert result.outcome == "finished" and seen[0] == (2.0, 0.0) and output == []
+
+
+def test_the_turtlebots_drive_block_is_clamped_too(registry):
+    turtlebot = registry.get("turtlebot")
+    robot = SimulatedRobot(turtlebot, speed=20.0)
+    try:
+        seen = velocities(robot)
+        result, output = run(turtlebot, robot, "robot.drive_for(0.2, 0.5)\n", Limits(max_speed=0.05))
+    finally:
+        robot.shutdown()
+    assert result.outcome == "finished", result.message
+    assert seen and max(abs(x) for x, _z in seen) == 0.05
+    assert len(output) == 1
+
+
+@pytest.mark.parametrize(("language", "message"), [
+    ("en", "The robot could not do this: the teacher switched off “Arm and gripper” for this robot"),
+    ("de", "Das konnte der Roboter nicht tun: "
+           "die Lehrkraft hat „Arm und Greifer“ für diesen Roboter ausgeschaltet"),
+])
+def test_a_switched_off_capability_fails_with_a_clear_message(hobbit, robot, language, message):
+    goals = []
+    robot.world.tap(lambda topic, msg_type, value: goals.append(topic) if "hobbit_arm" in topic else None)
+    result, _output = run(hobbit, robot, "robot.gripper('open')\n", Limits(switched_off=frozenset({"arm"})), language)
+    assert result.outcome == "error"
+    assert result.message == message
+    assert goals == []
+
+
+def test_navigation_off_refuses_its_action_and_topic_but_not_the_arm(hobbit, robot):
+    limits = Limits(switched_off=frozenset({"navigation"}))
+    result, _ = run(hobbit, robot, "robot.navigate_to(1, 0)\n", limits)
+    assert "Navigation" in result.message
+    code = "robot.backend.publish('/move_base_simple/goal', 'geometry_msgs/PoseStamped', {})\n"
+    assert "Navigation" in run(hobbit, robot, code, limits)[0].message
+    assert run(hobbit, robot, "robot.gripper('open')\n", limits)[0].outcome == "finished"
