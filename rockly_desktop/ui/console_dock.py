@@ -34,10 +34,9 @@ class ConsoleDock(QDockWidget):
         cursor = self.view.textCursor()
         cursor.movePosition(cursor.MoveOperation.End)
         stamp = time.strftime("%H:%M:%S")
-        for line in lines:
-            if not self.view.document().isEmpty():
-                cursor.insertBlock()
-            cursor.insertText(f"{stamp}  {line}", text_format)
+        # One insert for the whole batch: each line break becomes a line of its own.
+        text = "\n".join(f"{stamp}  {line}" for line in lines)
+        cursor.insertText(text if self.view.document().isEmpty() else "\n" + text, text_format)
         self.view.setTextCursor(cursor)
         self.view.ensureCursorVisible()
 

@@ -188,17 +188,18 @@ class RunSession(QObject):
         self._highlight(runner.hooks.current_block)
         self.variables.show_values(runner.variables_snapshot())
 
-    def _show_output(self):
-        """Show what the program printed since the last look, in one batch."""
+    def _show_output(self, everything: bool = False):
+        """Show what the program printed since the last look: a batch, or ``everything`` (at its end)."""
         if self.thread is None:
             return
-        lines, skipped = self.thread.output.take()
+        lines, skipped = self.thread.output.take(everything)
         if skipped:
             self.console.append(tr("output_skipped", self.settings.language, count=skipped), "info")
         self.console.append_lines(lines)
 
     def _on_event(self, event):
-        self._show_output()  # what was printed before the event comes first
+        # Everything printed before a pause, the end or any other event comes first.
+        self._show_output(everything=True)
         if isinstance(event, RunPaused):
             self._set_state("paused")
             self._highlight(event.block_id)

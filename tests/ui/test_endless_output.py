@@ -45,3 +45,14 @@ def test_lines_printed_too_fast_to_keep_are_counted(qtbot, window):
 
     assert buffer.take() == (["7", "8", "9"], 7)
     assert buffer.take() == ([], 0)
+
+
+def test_the_window_takes_a_batch_at_a_time_oldest_first():
+    from rockly_desktop.executor.output_buffer import OutputBuffer
+
+    buffer = OutputBuffer(limit=100, batch=4)
+    for number in range(10):
+        buffer.add(str(number))
+
+    assert buffer.take() == (["0", "1", "2", "3"], 0)
+    assert buffer.take(everything=True) == (["4", "5", "6", "7", "8", "9"], 0)

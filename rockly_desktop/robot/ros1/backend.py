@@ -12,7 +12,7 @@ import xmlrpc.client
 from rockly_desktop.core.errors import RobotCommandError, RobotConnectionLost, RobotTimeout
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
 from rockly_desktop.robot.ros1.connection import ask_master
-from rockly_desktop.robot.ros1.liveness import LOOK_SECONDS, Dependencies, PublisherLiveness
+from rockly_desktop.robot.ros1.liveness import LOOK_SECONDS, Dependencies, NodeLiveness
 from rockly_desktop.robot.ros1.message_values import from_message, to_message
 from rockly_desktop.robot.ros1.service_calls import ServiceCaller
 
@@ -46,7 +46,7 @@ class RosGraph:
         # learns of it here, as the simulator's world tap reports it.
         self.service_watchers = []
         self.service_calls = ServiceCaller()
-        self.liveness = PublisherLiveness(connection.master_uri, rospy.get_name())
+        self.liveness = NodeLiveness(connection.master_uri, rospy.get_name())
 
     def publisher(self, topic, msg_type):
         """The shared publisher of ``topic``, and whether this is its first publish."""
@@ -60,12 +60,10 @@ class RosGraph:
             return publisher, first
 
     def subscriber_count(self, topic) -> int:
-        """How many nodes the master lists as subscribers of ``topic`` (0 if it does not answer)."""
-        try:
-            _publishers, subscribers, _services = ask_master(self.connection.master_uri, "getSystemState")
-        except (OSError, xmlrpc.client.Error):
-            return 0
-        return len(next((nodes for name, nodes in subscribers if name == topic), []))
+        """How many other nodes subscribe to ``topic`` and answer (a killed node the master still
+        lists does not count); 0 if the master does not answer."""
+        state = self.liveness.subscribers(topic)
+        return state[1] if state is not None else 0
 
     def topic(self, topic, msg_type):
         """The shared subscription to ``topic``: latest message and callbacks."""

@@ -6,7 +6,8 @@ A waiting command depends on the topics it listens to (an action's status, the o
 drive watches): twice a second the publishers the master lists for them are asked for
 their pid. A killed node does not answer (the master keeps listing a node killed with
 ``kill -9``, so the list alone would not tell), and a topic whose publishers all stopped
-answering ends the wait with RobotConnectionLost naming it.
+answering ends the wait with RobotConnectionLost naming it. A new publisher waits only for
+the subscribers that answer, so the safe stop after a lost node does not wait for the dead.
 """
 import threading
 import time
@@ -17,31 +18,41 @@ from rockly_desktop.robot.ros1.connection import ask_master
 LOOK_SECONDS = 0.5
 
 
-class PublisherLiveness:
-    """The publishers of a topic the master lists and how many of them answer (thread-safe;
-    the master and each node are asked at most every LOOK_SECONDS)."""
+class NodeLiveness:
+    """The publishers and subscribers of a topic the master lists and how many of them answer
+    (thread-safe; the master and each node are asked at most every LOOK_SECONDS, unless fresh)."""
 
     def __init__(self, master_uri: str, own_node: str = None, ask=ask_master):
         self._master_uri = master_uri
         self._own_node = own_node
         self._ask = ask
         self._lock = threading.Lock()
-        self._publishers = {}  # topic -> [node names]
+        self._nodes = ({}, {})  # publishers, subscribers: topic -> [node names]
         self._state_at = -LOOK_SECONDS
         self._alive = {}  # node name -> (when looked, answers)
 
     def publishers(self, topic: str):
         """(listed, answering) publishers of ``topic``, this node left out; None when the master does not answer."""
+        return self._count(0, topic, fresh=False)
+
+    def subscribers(self, topic: str):
+        """(listed, answering) subscribers of ``topic`` as the master lists them now (this node
+        counts as answering); None when the master does not answer."""
+        return self._count(1, topic, fresh=True)
+
+    def _count(self, kind: int, topic: str, fresh: bool):
         with self._lock:
             now = time.monotonic()
-            if now - self._state_at >= LOOK_SECONDS:
+            if fresh or now - self._state_at >= LOOK_SECONDS:
                 try:
-                    publishers, _subscribers, _services = self._ask(self._master_uri, "getSystemState")
+                    publishers, subscribers, _services = self._ask(self._master_uri, "getSystemState")
                 except (OSError, xmlrpc.client.Error):
                     return None
-                self._publishers, self._state_at = dict(publishers), now
-            nodes = [node for node in self._publishers.get(topic, []) if node != self._own_node]
-            return len(nodes), sum(1 for node in nodes if self._answers(node, now))
+                self._nodes, self._state_at = (dict(publishers), dict(subscribers)), now
+            nodes = self._nodes[kind].get(topic, [])
+            if kind == 0:  # this node's own publishing keeps nothing of the robot alive
+                nodes = [node for node in nodes if node != self._own_node]
+            return len(nodes), sum(1 for node in nodes if node == self._own_node or self._answers(node, now))
 
     def _answers(self, node: str, now: float) -> bool:
         looked_at, answers = self._alive.get(node, (-LOOK_SECONDS, False))
@@ -61,7 +72,7 @@ class Dependencies:
     every publisher: a listed publisher that does not answer (killed), or none listed any
     more where one answered before (shut down)."""
 
-    def __init__(self, liveness: PublisherLiveness):
+    def __init__(self, liveness: NodeLiveness):
         self._liveness = liveness
         self._listening = {}  # topic -> how many of this backend's subscriptions listen to it
         self._answered = set()  # topics a publisher answered for
