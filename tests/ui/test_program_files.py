@@ -201,6 +201,23 @@ def test_a_large_program_opens(qtbot, window, tmp_path):
     assert json.loads(path.read_text())["workspace"]["blocks"]["blocks"][0]["type"] == "hobbit_move"
 
 
+def test_a_stack_of_600_blocks_tracks_edits_and_saves_them(qtbot, window, tmp_path):
+    """Blockly's JSON nests a level per block: 600 in a stack is deeper than Python's json takes."""
+    blocks = [block("hobbit_move", {"direction": "+"}, {"speed": number(i)}) for i in range(600)]
+    path = tmp_path / "long.rockly"
+    path.write_text(rockly_document([stack(*blocks)]))
+    open_program(qtbot, window, path)
+    qtbot.waitUntil(lambda: window.code_dock.view.toPlainText().count("\n") == 600, timeout=30000)
+
+    add_block_as_user(qtbot, window.editor, "hobbit_sos")
+    qtbot.waitUntil(window.isWindowModified, timeout=10000)
+    assert completed(qtbot, window.files.save, timeout=30000)
+
+    saved = load_program(path).workspace["blocks"]["blocks"]
+    assert sorted(top["type"] for top in saved) == ["hobbit_move", "hobbit_sos"]
+    assert not window.isWindowModified()
+
+
 # --- opening with changes: said, never silent ---------------------------------------------
 
 
