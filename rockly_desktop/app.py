@@ -60,16 +60,45 @@ def build_main_window(settings_path=None, extra_profile_dirs=()):
     from rockly_desktop.bridge.editor_view import EditorView
 
     editor = EditorView()  # Chromium loads the page while Python reads profiles and builds the window
-    from rockly_desktop.profiles.registry import ProfileRegistry
-    from rockly_desktop.ui.main_window import MainWindow
     from rockly_desktop.ui.qt_language import use_language
     from rockly_desktop.ui.settings import AppSettings
 
-    registry = ProfileRegistry.discover(extra_profile_dirs)
     settings = AppSettings(settings_path)
+    registry, main_window_class = while_events_run(lambda: _read_profiles(extra_profile_dirs, settings.profile_id))
     use_language(settings.language)  # Qt's own buttons and dialogs, now and whenever the language changes
     settings.language_watchers.append(use_language)
-    return MainWindow(registry, settings, editor)
+    return main_window_class(registry, settings, editor)
+
+
+def _read_profiles(extra_profile_dirs, profile_id):
+    """The profiles and the window's class; the ROS types of the profile likely shown first are read too."""
+    from rockly_desktop.profiles.registry import ProfileRegistry
+    from rockly_desktop.ui.main_window import MainWindow
+
+    registry = ProfileRegistry.discover(extra_profile_dirs)
+    if registry.profiles:
+        first = registry.profiles.get(profile_id) or registry.default()
+        _ = first.ros_types.editor_catalog  # a cached property: reading it here takes it off the GUI thread
+    return registry, MainWindow
+
+
+def while_events_run(work):
+    """Return ``work()``, run in a worker thread while this thread runs Qt's event loop.
+
+    Chromium's browser side lives on the GUI thread: the editor page only loads while the
+    event loop runs. Importing modules and reading files need no GUI thread, so the page
+    loads meanwhile. ``work`` must not touch widgets; its exception is raised here.
+    """
+    from concurrent.futures import ThreadPoolExecutor
+
+    from PySide6.QtCore import QEventLoop, QMetaObject, Qt
+
+    loop = QEventLoop()
+    with ThreadPoolExecutor(1, thread_name_prefix="rockly-start") as pool:
+        future = pool.submit(work)
+        future.add_done_callback(lambda _: QMetaObject.invokeMethod(loop, "quit", Qt.ConnectionType.QueuedConnection))
+        loop.exec()
+    return future.result()
 
 
 def run_gui(open_path=None) -> int:
