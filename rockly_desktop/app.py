@@ -5,6 +5,8 @@ import sys
 
 from rockly_desktop.core import paths
 
+START_SWITCH_INTERVAL = 0.0005  # seconds; the GUI thread waits at most this long for the worker's GIL
+
 
 def prepare_qt_environment():
     """Settings QtWebEngine needs before the QApplication exists.
@@ -62,24 +64,34 @@ def build_main_window(settings_path=None, extra_profile_dirs=()):
     editor = EditorView()  # Chromium loads the page while Python reads profiles and builds the window
     from rockly_desktop.ui.qt_language import use_language
     from rockly_desktop.ui.settings import AppSettings
+    from rockly_desktop.ui.texts import editor_page_texts
 
     settings = AppSettings(settings_path)
-    registry, main_window_class = while_events_run(lambda: _read_profiles(extra_profile_dirs, settings.profile_id))
-    use_language(settings.language)  # Qt's own buttons and dialogs, now and whenever the language changes
+    language, profile_id = settings.language, settings.profile_id
+    registry, first_setup = while_events_run(lambda: _read_profiles(extra_profile_dirs, profile_id, language))
+    if first_setup is not None:  # the page builds that profile's workspace while the window is made
+        editor.prepare(first_setup, language, editor_page_texts(language))
+    main_window_class = while_events_run(_main_window_class)
+    use_language(language)  # Qt's own buttons and dialogs, now and whenever the language changes
     settings.language_watchers.append(use_language)
     return main_window_class(registry, settings, editor)
 
 
-def _read_profiles(extra_profile_dirs, profile_id):
-    """The profiles and the window's class; the ROS types of the profile likely shown first are read too."""
+def _read_profiles(extra_profile_dirs, profile_id, language):
+    """The installed profiles, and the editor set-up of the one the window starts with (None if none is)."""
     from rockly_desktop.profiles.registry import ProfileRegistry
-    from rockly_desktop.ui.main_window import MainWindow
 
     registry = ProfileRegistry.discover(extra_profile_dirs)
-    if registry.profiles:
-        first = registry.profiles.get(profile_id) or registry.default()
-        _ = first.ros_types.editor_catalog  # a cached property: reading it here takes it off the GUI thread
-    return registry, MainWindow
+    if not registry.profiles:
+        return registry, None
+    first = registry.profiles.get(profile_id) or registry.default()  # as MainWindow picks it
+    return registry, first.editor_config(language)
+
+
+def _main_window_class():
+    from rockly_desktop.ui.main_window import MainWindow
+
+    return MainWindow
 
 
 def while_events_run(work):
@@ -94,10 +106,16 @@ def while_events_run(work):
     from PySide6.QtCore import QEventLoop, QMetaObject, Qt
 
     loop = QEventLoop()
-    with ThreadPoolExecutor(1, thread_name_prefix="rockly-start") as pool:
-        future = pool.submit(work)
-        future.add_done_callback(lambda _: QMetaObject.invokeMethod(loop, "quit", Qt.ConnectionType.QueuedConnection))
-        loop.exec()
+    switch_interval = sys.getswitchinterval()
+    sys.setswitchinterval(START_SWITCH_INTERVAL)  # Chromium calls Python for each request the page makes
+    try:
+        with ThreadPoolExecutor(1, thread_name_prefix="rockly-start") as pool:
+            future = pool.submit(work)
+            future.add_done_callback(
+                lambda _: QMetaObject.invokeMethod(loop, "quit", Qt.ConnectionType.QueuedConnection))
+            loop.exec()
+    finally:
+        sys.setswitchinterval(switch_interval)
     return future.result()
 
 

@@ -296,8 +296,10 @@
   }
 
   const calls = {
-    async setup({language, profile, media, first, texts}) {
+    async setup({language, profile, media, first, texts, hidden}) {
       if (language !== 'en') await loadScript('vendor/msg/' + language + '.js');
+      // Prepared ahead of the program: nothing shows until `show`.
+      if (hidden) document.getElementById('workspace').style.visibility = 'hidden';
       RocklyTypedFields.setCatalog(profile.types);
       RocklyTemplates.install(profile.blocks);
       workspace = Blockly.inject('workspace', {
@@ -348,6 +350,10 @@
     },
     clear() {
       replaceWorkspace(() => {});
+      return true;
+    },
+    show() {
+      document.getElementById('workspace').style.visibility = '';
       return true;
     },
     getState() {

@@ -8,7 +8,6 @@ from PySide6.QtWidgets import QLabel, QMessageBox
 
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.executor.robot_link import RosRobot, SimulatedRobot
-from rockly_desktop.robot.ros1.connection import RosConnection
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.texts import robot_problem, tr
@@ -69,6 +68,8 @@ class RobotChoice(QObject):
         dialog = ConnectionDialog(language, window.profile.display_name(language), remembered_uri, remembered_host, window)
         if not dialog.exec():
             return False
+        from rockly_desktop.robot.ros1.connection import RosConnection  # xmlrpc and http: only when connecting
+
         try:
             RosConnection.get(dialog.master_uri, dialog.host or None, timeout=1.0)
         except RocklyError as error:
