@@ -214,16 +214,29 @@ class EditorView(QWebEngineView):
                 callback(None, error)
             return
         self.known_block_types = frozenset(result["blockTypes"])
-        if self._setup_args["hidden"]:  # prepared: the first call and the workspace go ahead of every other call
-            first_call, self._first_call = self._first_call, None
-            if first_call:
-                self.channel.call(*first_call, callback)
-            self.channel.call("show")
-            callback = None
+        if self._setup_args["hidden"]:
+            self._show_prepared(callback)
+            return
         self.channel.open()
         self.sig_ready.emit()
         if callback is not None:
             callback(result.get("program"), None)
+
+    def _show_prepared(self, callback):
+        """Send start()'s first call and ``show`` ahead of every other call; ready once the first is answered."""
+        first_call, self._first_call = self._first_call, None
+
+        def on_first(result, error):
+            self.sig_ready.emit()
+            if callback is not None:
+                callback(result, error)
+
+        if first_call:
+            self.channel.call(*first_call, on_first)
+            self.channel.call("show")
+        else:
+            self.channel.call("show", None, on_first)
+        self.channel.open()
 
     def _on_event(self, message: dict):
         event = message.get("event")
