@@ -13,7 +13,6 @@ from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import OutputPrinted, RunFinished, RunPaused, RunResumed, VariablesChanged
 from rockly_desktop.executor.qt_adapter import ProgramThread
-from rockly_desktop.executor.run_setup import make_runner
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.texts import robot_problem, tr
 
@@ -57,6 +56,8 @@ class RunSession(QObject):
             control = RunControl(run_code["breakpoints"], window.run_toolbar.delay)
             robot = window.robot()
             language = window.language  # the run's messages are in the window's language
+            from rockly_desktop.executor.run_setup import make_runner  # loaded at the first run, not at start-up
+
             thread = ProgramThread(lambda emit: make_runner(window.profile, robot, run_code, control, emit, language), self)
         except (RocklyError, RuntimeError) as error:
             window.console.append(" ".join(part for part in robot_problem(error, window.language) if part), "error")
