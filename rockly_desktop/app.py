@@ -62,30 +62,33 @@ def build_main_window(settings_path=None, extra_profile_dirs=()):
     from rockly_desktop.bridge.editor_view import EditorView
 
     editor = EditorView()  # Chromium loads the page while Python reads profiles and builds the window
+    registry, first_setup = while_events_run(lambda: _read_profiles(settings_path, extra_profile_dirs))
+    if first_setup is not None:  # the page builds that profile's workspace while the window is made
+        editor.prepare(*first_setup)
+    main_window_class = while_events_run(_main_window_class)
     from rockly_desktop.ui.qt_language import use_language
     from rockly_desktop.ui.settings import AppSettings
-    from rockly_desktop.ui.texts import editor_page_texts
 
     settings = AppSettings(settings_path)
-    language, profile_id = settings.language, settings.profile_id
-    registry, first_setup = while_events_run(lambda: _read_profiles(extra_profile_dirs, profile_id, language))
-    if first_setup is not None:  # the page builds that profile's workspace while the window is made
-        editor.prepare(first_setup, language, editor_page_texts(language))
-    main_window_class = while_events_run(_main_window_class)
-    use_language(language)  # Qt's own buttons and dialogs, now and whenever the language changes
+    use_language(settings.language)  # Qt's own buttons and dialogs, now and whenever the language changes
     settings.language_watchers.append(use_language)
     return main_window_class(registry, settings, editor)
 
 
-def _read_profiles(extra_profile_dirs, profile_id, language):
-    """The installed profiles, and the editor set-up of the one the window starts with (None if none is)."""
+def _read_profiles(settings_path, extra_profile_dirs):
+    """The installed profiles, and ``EditorView.prepare``'s arguments for the one the window
+    starts with, as the settings name it (None if no profile is installed)."""
     from rockly_desktop.profiles.registry import ProfileRegistry
+    from rockly_desktop.ui.settings import AppSettings
+    from rockly_desktop.ui.texts import editor_page_texts
 
+    remembered = AppSettings(settings_path)  # this thread's own reader; the window makes its own
+    language, profile_id = remembered.language, remembered.profile_id
     registry = ProfileRegistry.discover(extra_profile_dirs)
     if not registry.profiles:
         return registry, None
     first = registry.profiles.get(profile_id) or registry.default()  # as MainWindow picks it
-    return registry, first.editor_config(language)
+    return registry, (first.editor_config(language), language, editor_page_texts(language))
 
 
 def _main_window_class():

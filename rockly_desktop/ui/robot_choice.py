@@ -7,7 +7,6 @@ from PySide6.QtCore import QObject, QTimer
 from PySide6.QtWidgets import QLabel, QMessageBox
 
 from rockly_desktop.core.errors import RocklyError
-from rockly_desktop.executor.robot_link import RosRobot, SimulatedRobot
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.texts import robot_problem, tr
@@ -35,6 +34,8 @@ class RobotChoice(QObject):
         window = self.window
         key = (self.kind, window.profile.id)
         if key not in self._robots:
+            from rockly_desktop.executor.robot_link import RosRobot, SimulatedRobot  # made after the editor is up
+
             for other in [k for k in self._robots if k[0] == SIMULATOR and k != key]:
                 self._robots.pop(other).shutdown()  # one simulator ticking at a time
             if self.kind == SIMULATOR:
