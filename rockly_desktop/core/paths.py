@@ -44,3 +44,9 @@ def user_profiles_dir() -> Path:
     """Robot profiles a user installed by copying a folder (XDG data home)."""
     base = os.environ.get("XDG_DATA_HOME") or str(Path.home() / ".local" / "share")
     return Path(base) / "rockly" / "profiles"
+
+
+def user_cache_dir() -> Path:
+    """What Rockly keeps only to start faster; anything in it may go (XDG cache home)."""
+    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
+    return Path(base) / "rockly"
