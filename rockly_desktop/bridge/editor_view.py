@@ -120,7 +120,7 @@ class EditorView(QWebEngineView):
             if answer is not None:
                 self._on_setup(*answer)
             return
-        self._setup_args = setup
+        self._setup_args, self._first_call = setup, None
         if self._page_state == "hello":
             self._send_setup()
         elif self._page_state == "setup sent":
