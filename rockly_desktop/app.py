@@ -5,6 +5,8 @@ import sys
 
 from rockly_desktop.core import paths
 
+START_SWITCH_INTERVAL = 0.0005  # seconds; the GUI thread waits at most this long for the worker's GIL
+
 
 def prepare_qt_environment():
     """Settings QtWebEngine needs before the QApplication exists.
@@ -60,16 +62,64 @@ def build_main_window(settings_path=None, extra_profile_dirs=()):
     from rockly_desktop.bridge.editor_view import EditorView
 
     editor = EditorView()  # Chromium loads the page while Python reads profiles and builds the window
-    from rockly_desktop.profiles.registry import ProfileRegistry
-    from rockly_desktop.ui.main_window import MainWindow
+    registry, first_setup = while_events_run(lambda: _read_profiles(settings_path, extra_profile_dirs))
+    if first_setup is not None:  # the page builds that profile's workspace while the window is made
+        editor.prepare(*first_setup)
+    main_window_class = while_events_run(_main_window_class)
     from rockly_desktop.ui.qt_language import use_language
     from rockly_desktop.ui.settings import AppSettings
 
-    registry = ProfileRegistry.discover(extra_profile_dirs)
     settings = AppSettings(settings_path)
     use_language(settings.language)  # Qt's own buttons and dialogs, now and whenever the language changes
     settings.language_watchers.append(use_language)
-    return MainWindow(registry, settings, editor)
+    return main_window_class(registry, settings, editor)
+
+
+def _read_profiles(settings_path, extra_profile_dirs):
+    """The installed profiles, and ``EditorView.prepare``'s arguments for the one the window
+    starts with, as the settings name it (None if no profile is installed)."""
+    from rockly_desktop.profiles.registry import ProfileRegistry
+    from rockly_desktop.ui.settings import AppSettings
+    from rockly_desktop.ui.texts import editor_page_texts
+
+    remembered = AppSettings(settings_path)  # this thread's own reader; the window makes its own
+    language, profile_id = remembered.language, remembered.profile_id
+    registry = ProfileRegistry.discover(extra_profile_dirs)
+    if not registry.profiles:
+        return registry, None
+    first = registry.profiles.get(profile_id) or registry.default()  # as MainWindow picks it
+    return registry, (first.editor_config(language), language, editor_page_texts(language))
+
+
+def _main_window_class():
+    from rockly_desktop.ui.main_window import MainWindow
+
+    return MainWindow
+
+
+def while_events_run(work):
+    """Return ``work()``, run in a worker thread while this thread runs Qt's event loop.
+
+    Chromium's browser side lives on the GUI thread: the editor page only loads while the
+    event loop runs. Importing modules and reading files need no GUI thread, so the page
+    loads meanwhile. ``work`` must not touch widgets; its exception is raised here.
+    """
+    from concurrent.futures import ThreadPoolExecutor
+
+    from PySide6.QtCore import QEventLoop, QMetaObject, Qt
+
+    loop = QEventLoop()
+    switch_interval = sys.getswitchinterval()
+    sys.setswitchinterval(START_SWITCH_INTERVAL)  # Chromium calls Python for each request the page makes
+    try:
+        with ThreadPoolExecutor(1, thread_name_prefix="rockly-start") as pool:
+            future = pool.submit(work)
+            future.add_done_callback(
+                lambda _: QMetaObject.invokeMethod(loop, "quit", Qt.ConnectionType.QueuedConnection))
+            loop.exec()
+    finally:
+        sys.setswitchinterval(switch_interval)
+    return future.result()
 
 
 def run_gui(open_path=None) -> int:

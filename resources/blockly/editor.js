@@ -4,7 +4,8 @@
  * Python -> page: {call, id, args} on the bridge's `toPage` signal.
  * Page -> Python: {reply: id, result | error}, or {event: 'hello' | 'changed' | 'error', ...}
  * through the bridge's `fromPage` slot. Python queues its calls until `setup` has run;
- * `setup` may carry a first call (the program to open at start) so it shows in one go.
+ * `setup` may carry a first call (the program to open at start) so it shows in one go, or
+ * build the workspace `hidden` ahead of the program, which then comes with `show`.
  * A program with block types the page does not know is refused with `unknownTypes`, one
  * with a block without a type with `untypedBlock` (its number); a program that loads
  * answers with `replacedFields` when Blockly could not keep some of its field values.
@@ -326,8 +327,10 @@
   }
 
   const calls = {
-    async setup({language, profile, media, first, texts}) {
+    async setup({language, profile, media, first, texts, hidden}) {
       if (language !== 'en') await loadScript('vendor/msg/' + language + '.js');
+      // Prepared ahead of the program: nothing shows until `show`.
+      if (hidden) document.getElementById('workspace').style.visibility = 'hidden';
       RocklyTypedFields.setCatalog(profile.types);
       RocklyTemplates.install(profile.blocks);
       workspace = Blockly.inject('workspace', {
@@ -382,6 +385,10 @@
     },
     clear() {
       replaceWorkspace(() => {});
+      return true;
+    },
+    show() {
+      document.getElementById('workspace').style.visibility = '';
       return true;
     },
     getState() {

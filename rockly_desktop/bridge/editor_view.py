@@ -78,6 +78,9 @@ class EditorView(QWebEngineView):
         self._setup_args = None
         self._on_first_result = None
         self._page_state = "loading"  # -> "hello" (page waits for setup) -> "setup sent"
+        self._prepared = False  # the setup sent is prepare()'s, not yet claimed by start()
+        self._prepared_answer = None  # its answer, when it came before start()
+        self._first_call = None  # start()'s first call, sent once a prepared setup is answered
         self.known_block_types = frozenset()
         self.workspace = {}
         self.python = ""
@@ -89,6 +92,18 @@ class EditorView(QWebEngineView):
         """True when the workspace exists and calls go straight to the page."""
         return self.channel.is_open
 
+    def prepare(self, editor_config: dict, language: str, texts=None):
+        """Set the page up for a profile ahead of ``start``, its workspace hidden.
+
+        Called while the window is still being built, so that Blockly builds the workspace
+        meanwhile. A ``start`` with the same profile, language and texts then only shows
+        the program and the workspace; any other ``start`` loads a fresh page.
+        """
+        self._setup_args = self._setup(editor_config, language, None, texts, hidden=True)
+        self._prepared = True
+        if self._page_state == "hello":
+            self._send_setup()
+
     def start(self, editor_config: dict, language: str, first_call=None, on_first_result=None, texts=None):
         """Set the page up for a profile's ``editor_config`` in ``language``.
 
@@ -98,20 +113,40 @@ class EditorView(QWebEngineView):
         ``on_first_result(result, error)`` gets its answer. ``texts`` are the page's own
         menu texts (``addBreakpoint``, ``removeBreakpoint``) in ``language``.
         """
-        self._setup_args = {
-            "language": language,
-            "profile": editor_config,
-            "media": QUrl.fromLocalFile(str(paths.blockly_vendor_dir() / "media") + "/").toString(),
-            "first": {"call": first_call[0], "args": first_call[1]} if first_call else None,
-            "texts": texts,
-        }
+        setup = self._setup(editor_config, language, first_call, texts, hidden=False)
+        prepared, self._prepared = self._prepared, False
         self._on_first_result = on_first_result
+        if prepared and self._page_state == "setup sent" and self._same_page(setup):
+            self._first_call = first_call
+            answer, self._prepared_answer = self._prepared_answer, None
+            if answer is not None:
+                self._on_setup(*answer)
+            return
+        self._setup_args, self._first_call = setup, None
         if self._page_state == "hello":
             self._send_setup()
         elif self._page_state == "setup sent":
             self.channel.reset()
             self._page_state = "loading"
+            self._prepared_answer = None
             self.load(QUrl.fromLocalFile(str(paths.editor_page())))
+
+    @staticmethod
+    def _setup(editor_config, language, first_call, texts, hidden) -> dict:
+        return {
+            "language": language,
+            "profile": editor_config,
+            "media": QUrl.fromLocalFile(str(paths.blockly_vendor_dir() / "media") + "/").toString(),
+            "first": {"call": first_call[0], "args": first_call[1]} if first_call else None,
+            "texts": texts,
+            "hidden": hidden,
+        }
+
+    def _same_page(self, setup: dict) -> bool:
+        """True when ``setup`` asks for the page the prepared setup made."""
+        ignored = ("first", "hidden")
+        return ({key: value for key, value in setup.items() if key not in ignored}
+                == {key: value for key, value in self._setup_args.items() if key not in ignored})
 
     def call(self, name: str, args=None, callback=None, timeout_ms=None):
         """Run a page call when the page is ready; ``callback(result, error)`` gets the answer.
@@ -165,18 +200,39 @@ class EditorView(QWebEngineView):
     def _on_setup(self, result, error):
         if error == PAGE_RELOADED:  # a new page is loading; its own setup follows
             return
+        if self._prepared:  # kept until start() says what to show
+            self._prepared_answer = (result, error)
+            return
+        callback, self._on_first_result = self._on_first_result, None
         if error:
             self.sig_page_error.emit(f"the editor could not start: {error}")
-            callback, self._on_first_result = self._on_first_result, None
             if callback is not None:
                 callback(None, error)
             return
         self.known_block_types = frozenset(result["blockTypes"])
+        if self._setup_args["hidden"]:
+            self._show_prepared(callback)
+            return
         self.channel.open()
         self.sig_ready.emit()
-        callback, self._on_first_result = self._on_first_result, None
         if callback is not None:
             callback(result.get("program"), None)
+
+    def _show_prepared(self, callback):
+        """Send start()'s first call and ``show`` ahead of every other call; ready once the first is answered."""
+        first_call, self._first_call = self._first_call, None
+
+        def on_first(result, error):
+            self.sig_ready.emit()
+            if callback is not None:
+                callback(result, error)
+
+        if first_call:
+            self.channel.call(*first_call, on_first)
+            self.channel.call("show")
+        else:
+            self.channel.call("show", None, on_first)
+        self.channel.open()
 
     def _on_event(self, message: dict):
         event = message.get("event")

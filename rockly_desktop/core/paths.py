@@ -54,3 +54,9 @@ def user_profiles_dir() -> Path:
 def recovery_dir() -> Path:
     """Copies of programs with unsaved changes, kept for after a crash (XDG data home)."""
     return user_data_dir() / "recovery"
+
+
+def user_cache_dir() -> Path:
+    """What Rockly keeps only to start faster; anything in it may go (XDG cache home)."""
+    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
+    return Path(base) / "rockly"

@@ -22,8 +22,7 @@ from rockly_desktop.ui.run_toolbar import RunToolbar
 from rockly_desktop.ui.simulator_dock import SimulatorDock
 from rockly_desktop.ui.state_panels import StatePanels
 from rockly_desktop.ui.tablet import QtTablet
-from rockly_desktop.ui.texts import tr
-from rockly_desktop.ui.topic_monitor import TopicMonitor
+from rockly_desktop.ui.texts import editor_page_texts, tr
 from rockly_desktop.ui.variables_dock import VariablesDock
 
 
@@ -169,10 +168,8 @@ class MainWindow(QMainWindow):
 
     def _restart_editor(self, first_call=None, on_first_result=None):
         self._editor_started = True
-        texts = {"addBreakpoint": tr("add_breakpoint", self.language),
-                 "removeBreakpoint": tr("remove_breakpoint", self.language)}
         self.editor.start(self.profile.editor_config(self.language, *self._toolbox_choice()), self.language,
-                          first_call, on_first_result, texts)
+                          first_call, on_first_result, editor_page_texts(self.language))
         self.profile_label.setText(tr("robot_status", self.language, name=self.profile.display_name(self.language)))
         if self._robot_shown:
             self.show_robot()
@@ -200,6 +197,8 @@ class MainWindow(QMainWindow):
             return
         if hasattr(robot, "follow_graph"):
             robot.follow_graph()
+        from rockly_desktop.ui.topic_monitor import TopicMonitor  # not needed before the editor is up
+
         panels = StatePanels(self.profile.state_panels, self.language, self.state_dock)
         panels.set_store(robot.state)
         self.health.show_robot(robot)

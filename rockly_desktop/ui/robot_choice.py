@@ -7,8 +7,6 @@ from PySide6.QtCore import QObject, QTimer, Signal
 from PySide6.QtWidgets import QLabel, QMessageBox
 
 from rockly_desktop.core.errors import RocklyError
-from rockly_desktop.executor.robot_link import RosRobot, SimulatedRobot
-from rockly_desktop.robot.ros1.connection import RosConnection
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.texts import robot_problem, tr
@@ -45,6 +43,8 @@ class RobotChoice(QObject):
         profile = self.document.profile
         key = (self.kind, profile.id)
         if key not in self._robots:
+            from rockly_desktop.executor.robot_link import RosRobot, SimulatedRobot  # made after the editor is up
+
             for other in [k for k in self._robots if k[0] == SIMULATOR and k != key]:
                 self._robots.pop(other).shutdown()  # one simulator ticking at a time
             if self.kind == SIMULATOR:
@@ -78,6 +78,8 @@ class RobotChoice(QObject):
                                   self.parent())
         if not dialog.exec():
             return False
+        from rockly_desktop.robot.ros1.connection import RosConnection  # xmlrpc and http: only when connecting
+
         try:
             connection = RosConnection.get(dialog.master_uri, dialog.host or None, timeout=1.0)
         except RocklyError as error:

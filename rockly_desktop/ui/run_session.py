@@ -14,7 +14,6 @@ from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import RunFinished, RunPaused, RunResumed, VariablesChanged
 from rockly_desktop.executor.qt_adapter import ProgramThread
-from rockly_desktop.executor.run_setup import make_runner
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.texts import robot_problem, tr
 
@@ -85,6 +84,8 @@ class RunSession(QObject):
             self.console.append(tr("run_empty", language), "info")
             self._set_state("idle")
             return
+        from rockly_desktop.executor.run_setup import make_runner  # loaded at the first run, not at start-up
+
         try:
             control = RunControl(run_code["breakpoints"], self._delay)
             robot = self.robots.robot()

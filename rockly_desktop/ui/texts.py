@@ -266,6 +266,11 @@ def tr(key: str, language: str, **values) -> str:
     return text.format(**values) if values else text
 
 
+def editor_page_texts(language: str) -> dict:
+    """The editor page's own menu texts in ``language`` (``EditorView.start``'s ``texts``)."""
+    return {"addBreakpoint": tr("add_breakpoint", language), "removeBreakpoint": tr("remove_breakpoint", language)}
+
+
 def robot_problem(error, language: str) -> tuple:
     """(what went wrong, what to try next) for an error reaching the robot, in ``language``.
 

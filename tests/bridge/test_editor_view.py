@@ -114,6 +114,56 @@ def test_setup_can_show_a_program_in_its_first_frame(qtbot, hobbit):
     assert answers == [({"loaded": True}, None)]
 
 
+def workspace_shown(qtbot, view) -> str:
+    """'none' before Blockly made the workspace, then 'hidden' or 'visible'."""
+    return run_js(qtbot, view, """typeof Blockly === 'undefined' || !Blockly.getMainWorkspace() ? 'none'
+        : document.getElementById('workspace').style.visibility || 'visible'""")
+
+
+def shown_editor(qtbot):
+    view = EditorView()
+    qtbot.addWidget(view)
+    view.resize(1000, 700)
+    view.show()
+    return view
+
+
+def test_a_prepared_page_shows_its_workspace_with_the_program_once_started(qtbot, hobbit):
+    view = shown_editor(qtbot)
+    view.prepare(hobbit.editor_config("en"), "en", {"addBreakpoint": "Add", "removeBreakpoint": "Remove"})
+    qtbot.waitUntil(lambda: workspace_shown(qtbot, view) == "hidden", timeout=30000)
+    assert not view.is_ready
+    answers = []
+    with qtbot.waitSignal(view.sig_changed, timeout=30000) as changed:
+        view.start(hobbit.editor_config("en"), "en", ("load", {"workspace": workspace(block("hobbit_sos"))}),
+                   lambda result, error: answers.append((result, error)),
+                   {"addBreakpoint": "Add", "removeBreakpoint": "Remove"})
+    assert changed.args[1:] == ["robot.call_sos()\n", "load"]
+    qtbot.waitUntil(lambda: bool(answers))
+    assert answers == [({"loaded": True}, None)]
+    assert view.is_ready and hobbit.block_types <= view.known_block_types
+    qtbot.waitUntil(lambda: workspace_shown(qtbot, view) == "visible")
+
+
+def test_a_prepared_page_started_for_another_language_is_loaded_afresh(qtbot, hobbit):
+    view = shown_editor(qtbot)
+    view.prepare(hobbit.editor_config("en"), "en")
+    qtbot.waitUntil(lambda: workspace_shown(qtbot, view) == "hidden", timeout=30000)
+    with qtbot.waitSignal(view.sig_ready, timeout=30000):
+        view.start(hobbit.editor_config("de"), "de")
+    assert toolbox_names(qtbot, view)[:2] == ["Fahren", "Kopf"]
+    assert workspace_shown(qtbot, view) == "visible"
+
+
+def test_a_page_started_before_its_prepared_setup_was_sent_starts_as_asked(qtbot, hobbit):
+    view = shown_editor(qtbot)
+    view.prepare(hobbit.editor_config("en"), "en")
+    with qtbot.waitSignal(view.sig_changed, timeout=30000) as changed:
+        view.start(hobbit.editor_config("en"), "en", ("load", {"workspace": workspace(block("hobbit_stop"))}))
+    assert changed.args[1] == "robot.stop()\n"
+    assert workspace_shown(qtbot, view) == "visible"
+
+
 def test_unknown_page_call_is_an_error_not_a_hang(qtbot, editor):
     result, error = call(qtbot, editor, "formatDisk")
     assert result is None and "unknown call" in error
