@@ -1,13 +1,14 @@
-"""The Preferences dialog: the language of the window and the blocks."""
-from PySide6.QtWidgets import QComboBox, QDialog, QDialogButtonBox, QFormLayout
+"""The Preferences dialog: the language of the window and the blocks; putting the robot back before each Run."""
+from PySide6.QtWidgets import QCheckBox, QComboBox, QDialog, QDialogButtonBox, QFormLayout
 
 from rockly_desktop.ui.texts import LANGUAGE_NAMES, tr
 
 
 class PreferencesDialog(QDialog):
-    """Lets the user pick English or German; ``language`` holds the choice."""
+    """Lets the user pick English or German (``language``) and whether the simulated robot is put
+    back before each Run (``reset_before_run``)."""
 
-    def __init__(self, language: str, parent=None):
+    def __init__(self, language: str, parent=None, reset_before_run: bool = False):
         super().__init__(parent)
         self.setWindowTitle(tr("preferences_title", language))
         self.language_box = QComboBox(self)
@@ -19,9 +20,18 @@ class PreferencesDialog(QDialog):
         buttons.rejected.connect(self.reject)
         layout = QFormLayout(self)
         layout.addRow(tr("language", language), self.language_box)
+        self.reset_box = QCheckBox(tr("reset_before_run", language), self)
+        self.reset_box.setObjectName("reset_before_run")
+        self.reset_box.setChecked(reset_before_run)
+        layout.addRow(self.reset_box)
         layout.addRow(buttons)
 
     @property
     def language(self) -> str:
         """The language code chosen in the dialog."""
         return self.language_box.currentData()
+
+    @property
+    def reset_before_run(self) -> bool:
+        """True when the robot is to be put back before each Run."""
+        return self.reset_box.isChecked()

@@ -86,6 +86,7 @@ class RunSession(QObject):
             self._set_state("idle")
             return
         try:
+            self.robots.reset_if_wanted()
             control = RunControl(run_code["breakpoints"], self._delay)
             robot = self.robots.robot()
             profile = self.document.profile
