@@ -264,8 +264,9 @@ class MainWindow(QMainWindow):
             action.setEnabled(idle)
 
     def _reset_robot(self):
-        if self.runs.state == "idle" and self.robots.reset():
-            self.statusBar().showMessage(tr("robot_put_back", self.language), 3000)
+        if self.runs.state == "idle":
+            done = self.robots.reset()
+            self.statusBar().showMessage(tr("robot_put_back" if done else "robot_not_put_back", self.language), 3000)
 
     def _on_breakpoints(self, block_ids):
         self.document.breakpoints = list(block_ids)

@@ -77,10 +77,14 @@ class RobotChoice(QObject):
         return self.kind == SIMULATOR
 
     def reset(self) -> bool:
-        """Put the simulated robot back where it started; False (nothing done) for a real robot."""
+        """Put the simulated robot back where it started; False (nothing done) for a real robot or a
+        simulator whose profile does not implement ``reset()``."""
         if not self.can_reset:
             return False
-        self.robot().reset()
+        try:
+            self.robot().reset()
+        except NotImplementedError:
+            return False
         return True
 
     def reset_if_wanted(self):

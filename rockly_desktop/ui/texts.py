@@ -102,6 +102,7 @@ _TEXTS = {
     "reset_robot_tip": ("Put the simulated robot back where it started (Ctrl+R)",
                         "Den simulierten Roboter an den Start zurücksetzen (Strg+R)"),
     "robot_put_back": ("The robot is back where it started.", "Der Roboter ist wieder am Start."),
+    "robot_not_put_back": ("This robot cannot be put back.", "Dieser Roboter kann nicht zurückgesetzt werden."),
     "reset_before_run": ("Put the robot back before each Run", "Roboter vor jedem Start zurücksetzen"),
     "speed": ("Speed", "Tempo"),
     "slow": ("slow", "langsam"),
