@@ -183,8 +183,9 @@ class SimWorld:
             sim_goal.outcome = GoalOutcome(status, copy.deepcopy(result), str(reason[0]) if reason else "")
             self._goals.discard(sim_goal)
             self._changed.notify_all()
+        status_message = {"status": _ACTIONLIB_CODES[status], "text": sim_goal.outcome.text}
         self._show_taps(f"/{sim_goal.action.strip('/')}/result", "action result",
-                        {"status": {"status": _ACTIONLIB_CODES[status], "text": sim_goal.outcome.text}, "result": result})
+                        {"status": status_message, "result": result})
 
     # --- waiting ------------------------------------------------------------------------
 

@@ -58,7 +58,7 @@ class Obstacle:
 
 
 def _edges(points):
-    return zip(points, points[1:] + points[:1])
+    return zip(points, points[1:] + points[:1], strict=True)
 
 
 def _segment_distance(x, y, a, b):

@@ -24,7 +24,6 @@ from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
 from rockly_desktop.robot.tablet import TabletQuestion
 
-
 PROFILE = load_profile(HOBBIT_DIR, SHARED_TOOLBOXES)
 
 

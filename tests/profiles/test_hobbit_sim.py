@@ -21,7 +21,6 @@ from rockly_desktop.robot.safe_stop import run_safe_stop
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
 from rockly_desktop.robot.tablet import TabletQuestion
 
-
 PROFILE = load_profile(HOBBIT_DIR, SHARED_TOOLBOXES)
 
 

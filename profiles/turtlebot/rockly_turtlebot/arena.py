@@ -40,7 +40,8 @@ class Arena(World):
         _rectangle(self.room, "the room")
         self.boxes = tuple(tuple(float(v) for v in box) for box in boxes)
         x0, y0, x1, y1 = self.room
-        walls = {"wall_front": (x1, y0 - WALL, x1 + WALL, y1 + WALL), "wall_back": (x0 - WALL, y0 - WALL, x0, y1 + WALL),
+        walls = {"wall_front": (x1, y0 - WALL, x1 + WALL, y1 + WALL),
+                 "wall_back": (x0 - WALL, y0 - WALL, x0, y1 + WALL),
                  "wall_left": (x0, y1, x1, y1 + WALL), "wall_right": (x0, y0 - WALL, x1, y0)}
         obstacles = [Obstacle(name, WALL_NAME, _rectangle(rect, "a wall"), "wall") for name, rect in walls.items()]
         for index, box in enumerate(self.boxes):
@@ -57,9 +58,13 @@ class Arena(World):
 
 def bumped(obstacle_id=None):
     """{language: "The TurtleBot bumped into ..."} for an obstacle id of an Arena (``something`` when unknown)."""
-    names = dict(WALL_NAME) if str(obstacle_id).startswith("wall_") else None
-    if str(obstacle_id).startswith("box_") and str(obstacle_id)[4:].isdigit() and int(str(obstacle_id)[4:]) > 0:
-        names = dict(zip(("en", "de"), BOX_NAMES[(int(str(obstacle_id)[4:]) - 1) % len(BOX_NAMES)]))
+    kind, _, number = str(obstacle_id).partition("_")
+    names = None
+    if kind == "wall":
+        names = dict(WALL_NAME)
+    elif kind == "box" and number.isdigit() and int(number) > 0:
+        english, german = BOX_NAMES[(int(number) - 1) % len(BOX_NAMES)]
+        names = {"en": english, "de": german}
     if names is None:
         return {"en": "The TurtleBot bumped into something", "de": "Der TurtleBot ist gegen etwas gestoßen"}
     return {"en": f"The TurtleBot bumped into {names['en']}", "de": f"Der TurtleBot ist gegen {names['de']} gestoßen"}

@@ -9,9 +9,9 @@ from PySide6.QtGui import QColor, QPainter, QPixmap, QPolygonF, QTransform
 
 from rockly_desktop.sdk_view import cosmetic_pen, round_pen
 
+from ..world import WORLD
 from .drawing import arc, rounded
 from .furniture import paint_furniture
-from ..world import WORLD
 from .geometry import DOOR, ROOM, WALL, WINDOW
 from .palette import GRID, LAWN, SEAM, WALL_EDGE, WALL_FILL, WOOD
 
