@@ -15,7 +15,7 @@ import math
 
 from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotCommands, RobotTimeout, field_value
 
-from .world import CONTACT_TOPIC, blocked_on_the_way, bumped, goal_problem
+from .world import CONTACT_TOPIC, WORLD, blocked_on_the_way, bumped, goal_problem
 
 HEAD_POSITIONS = (
     "center_center", "up_center", "down_center", "center_right", "center_left", "up_right",
@@ -47,6 +47,8 @@ MOVE_TOLERANCE = 0.005  # metres
 TURN_TOLERANCE = 0.5  # degrees
 DIALOG_TIMEOUT = 60.0
 SENSOR_TIMEOUT = 3.0
+GOAL_ENDS_DE = {GoalStatus.ABORTED: "abgebrochen", GoalStatus.PREEMPTED: "unterbrochen",
+                GoalStatus.REJECTED: "abgelehnt", GoalStatus.SUCCEEDED: "erreicht"}
 
 
 class _Progress:
@@ -294,13 +296,13 @@ class Hobbit(RobotCommands):
 
     def _navigation_reason(self, x, y, outcome):
         """{language: why move_base ended the goal}: the simulator's reasons in both languages, else its text."""
-        contact = self.backend.latest(CONTACT_TOPIC, "std_msgs/String")
-        known = [goal_problem(x, y), blocked_on_the_way(contact["data"] if contact else None)]
+        known = [goal_problem(x, y)] + [blocked_on_the_way(obstacle.id) for obstacle in WORLD.obstacles]
         for reason in known:
             if reason is not None and reason["en"] == outcome.text:
                 return reason
-        said = outcome.text or {"aborted": "aborted"}.get(outcome.status.value, outcome.status.value)
-        return {"en": said, "de": outcome.text or outcome.status.value}
+        if outcome.text:   # a real move_base's own words (English)
+            return {"en": outcome.text, "de": outcome.text}
+        return {"en": f"the goal was {outcome.status.value}", "de": f"das Ziel wurde {GOAL_ENDS_DE[outcome.status]}"}
 
     def _bump_error(self):
         """The RobotCommandError for a bump, naming what the simulator says was hit."""
