@@ -35,10 +35,12 @@ def test_reset_is_disabled_while_a_program_runs(qtbot, window):
     assert window.run_toolbar.reset_action.isEnabled()
 
 
-def test_without_the_preference_a_run_starts_where_the_last_ended(qtbot, window):
+def test_without_the_preference_runs_and_new_programs_leave_the_robot_where_it_is(qtbot, window):
     drive_away(qtbot, window, 0.3)
     drive_away(qtbot, window, 0.3)
     assert abs(window.robot().snapshot()["x"] - 0.6) < 0.03
+    window.files.new(ask=False)
+    assert abs(window.robot().snapshot()["x"] - 0.6) < 0.03    # a new program leaves the robot where it is
 
 
 def test_with_the_preference_each_run_and_new_program_starts_from_the_start(qtbot, driver):
