@@ -4,7 +4,9 @@ A profile's commands subclass ``RobotCommands`` and talk to the robot through th
 ``RobotBackend`` they are given (topics, services and actions by ROS names). Its
 simulator subclasses ``RobotSimulator`` (lock, ordered publishing, clock thread, start
 and shutdown) and asks a person through its tablet port (``TabletQuestion``), and its view
-may read snapshots with ``with_defaults``, ``as_number``, ``as_point`` and ``as_points``.
+may read snapshots with ``with_defaults``, ``as_number``, ``as_point`` and ``as_points``. A
+simulator declares its solid world as data (``World``, ``load_world``: walls and furniture its
+footprint cannot enter, which its laser sees) and restores its start with ``reset()``.
 Nothing here imports Qt; a view's drawing helpers are in ``rockly_desktop.sdk_view``.
 """
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
@@ -14,9 +16,10 @@ from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, 
 from rockly_desktop.robot.simulator import RobotSimulator, twist_velocity
 from rockly_desktop.robot.snapshot_values import as_number, as_point, as_points, with_defaults
 from rockly_desktop.robot.tablet import TabletQuestion
+from rockly_desktop.robot.world_map import Obstacle, World, load_world
 
 __all__ = [
-    "GoalHandle", "GoalOutcome", "GoalStatus", "RobotBackend", "RobotCommandError",
+    "GoalHandle", "GoalOutcome", "GoalStatus", "Obstacle", "RobotBackend", "RobotCommandError", "World",
     "RobotCommands", "RobotSimulator", "RobotTimeout", "TabletQuestion", "as_number", "as_point", "as_points",
-    "field_value", "twist_velocity", "with_defaults",
+    "field_value", "load_world", "twist_velocity", "with_defaults",
 ]

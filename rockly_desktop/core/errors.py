@@ -43,7 +43,19 @@ class UnknownBlocksError(RocklyError):
 
 
 class RobotCommandError(RocklyError):
-    """A robot command cannot be done: a bad argument, a failed goal, an unanswered service."""
+    """A robot command cannot be done: a bad argument, a failed goal, an unanswered service.
+
+    The message is English; a profile that says it in other languages too passes
+    ``translations`` ({"de": "..."}), and ``in_language`` picks the one a run shows.
+    """
+
+    def __init__(self, *args, translations=None):
+        super().__init__(*args)
+        self.translations = dict(translations or {})
+
+    def in_language(self, language: str) -> str:
+        """The message in ``language`` when the profile gave one, else the English one."""
+        return self.translations.get(language) or str(self)
 
 
 class RobotTimeout(RobotCommandError):

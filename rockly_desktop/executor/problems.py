@@ -132,9 +132,9 @@ def explain(error: BaseException, language: str = "en", variables=(), names=None
     """
     variables = list(variables)
     if isinstance(error, RobotTimeout):
-        return text("timeout", language, detail=error)
+        return text("timeout", language, detail=error.in_language(language))
     if isinstance(error, RobotCommandError):
-        return text("robot", language, detail=error)
+        return text("robot", language, detail=error.in_language(language))
     if isinstance(error, RocklyError):  # written for people already
         return str(error)
     if isinstance(error, ZeroDivisionError):

@@ -45,6 +45,10 @@ class SimulatedRobot:
         """Do the profile's safe stop now; returns what failed."""
         return run_safe_stop(self.profile.safe_stop, self.backend(Interrupt()))
 
+    def reset(self):
+        """Put the simulated robot back as it started (its profile's ``reset()``)."""
+        self.simulator.reset()
+
     def shutdown(self):
         """Stop the simulator's threads."""
         self.safe_stop()

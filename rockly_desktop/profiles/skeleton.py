@@ -133,6 +133,12 @@ class Sim$Class(RobotSimulator):
         with self.lock:
             return {"said": self._said, "stops": self._stops}
 
+    def reset(self):
+        """Put the robot back as it started (the window's Put back button, Ctrl+R)."""
+        with self.lock:
+            self._said = None
+            self._stops = 0
+
     def _on_say(self, message):
         with self.lock:
             self._said = message.get("data", "")

@@ -21,10 +21,11 @@ class GoalStatus(Enum):
 
 @dataclass(frozen=True)
 class GoalOutcome:
-    """The end of an action goal: its status and the result message."""
+    """The end of an action goal: its status, the result message and the server's reason (actionlib's status text)."""
 
     status: GoalStatus
     result: dict = field(default_factory=dict)
+    text: str = ""
 
 
 class GoalHandle(ABC):

@@ -138,7 +138,9 @@ class SimWorld:
             return name in self._actions
 
     def advertise_action(self, name: str, handler) -> None:
-        """Serve the action ``name``: ``handler(goal, feedback, cancelled) -> (GoalStatus, result)``.
+        """Serve the action ``name``: ``handler(goal, feedback, cancelled) -> (GoalStatus, result[, text])``.
+
+        ``text`` is the reason a goal ended as it did (actionlib's status text), e.g. why it was aborted.
 
         Each goal runs the handler in its own thread; ``feedback(dict)`` sends feedback and
         ``cancelled`` (a threading.Event) is set when the goal is cancelled.
@@ -173,16 +175,17 @@ class SimWorld:
                 feedback(copy.deepcopy(message))
 
         try:
-            status, result = handler(goal, send_feedback, sim_goal.cancelled)
+            status, result, *reason = handler(goal, send_feedback, sim_goal.cancelled)
         except Exception:  # noqa: BLE001 - a failing server aborts its goal, as actionlib does
             log.exception("the action server '%s' failed", sim_goal.action)
-            status, result = GoalStatus.ABORTED, {}
+            status, result, reason = GoalStatus.ABORTED, {}, []
         with self._changed:
-            sim_goal.outcome = GoalOutcome(status, copy.deepcopy(result))
+            sim_goal.outcome = GoalOutcome(status, copy.deepcopy(result), str(reason[0]) if reason else "")
             self._goals.discard(sim_goal)
             self._changed.notify_all()
+        status_message = {"status": _ACTIONLIB_CODES[status], "text": sim_goal.outcome.text}
         self._show_taps(f"/{sim_goal.action.strip('/')}/result", "action result",
-                        {"status": {"status": _ACTIONLIB_CODES[status]}, "result": result})
+                        {"status": status_message, "result": result})
 
     # --- waiting ------------------------------------------------------------------------
 

@@ -18,8 +18,9 @@ parts that are the same for every robot:
   and starts the clock (once only); ``shutdown()`` stops the clock, waits for its thread and
   ends the subscriptions made with ``subscribe()``.
 
-A subclass overrides the hooks ``connect()``, ``advance(dt)``, ``queue_sensors()`` and
-``snapshot()``, and sets ``NAME`` and ``TICK_SECONDS``.
+A subclass overrides the hooks ``connect()``, ``advance(dt)``, ``queue_sensors()``,
+``snapshot()`` and ``reset()``, and sets ``NAME`` and ``TICK_SECONDS``. A robot with a solid
+world declares it as data (``robot/world_map.py``) and lets it stop the robot's motions.
 """
 import math
 import numbers
@@ -87,6 +88,14 @@ class RobotSimulator:
     def snapshot(self) -> dict:
         """The robot's state for its view and for tests: a new dict, quick to make."""
         return {"time": self.time}
+
+    def reset(self):
+        """Put the robot back as it started: its start pose, standing still, every part (arm, head,
+        battery, trail...) as at the start, goals in progress ended; sends the new state at once.
+
+        Called from the window's thread while no program runs; takes the lock itself.
+        """
+        raise NotImplementedError(f"the {self.NAME} cannot be put back")
 
     # --- life cycle -------------------------------------------------------------------
 

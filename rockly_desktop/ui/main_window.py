@@ -94,6 +94,7 @@ class MainWindow(QMainWindow):
         self.files = ProgramFiles(self.document, self.editor, settings, registry, self)
         self.files.sig_status.connect(lambda text: self.statusBar().showMessage(text, 8000))
         self.files.sig_show_program.connect(self.show_program)
+        self.files.sig_program_replaced.connect(self.robots.reset_if_wanted)
         self.autosave = Autosave(self.document, self.editor, RecoverySession(), lambda: self.language, self)
         self.autosave.sig_failed.connect(lambda text: self.statusBar().showMessage(text, 8000))
         self.runs.sig_state_changed.connect(lambda state: state == "starting" and self.autosave.flush())
@@ -262,6 +263,11 @@ class MainWindow(QMainWindow):
         for action in self.profile_actions.actions():
             action.setEnabled(idle)
 
+    def _reset_robot(self):
+        if self.runs.state == "idle":
+            done = self.robots.reset()
+            self.statusBar().showMessage(tr("robot_put_back" if done else "robot_not_put_back", self.language), 3000)
+
     def _on_breakpoints(self, block_ids):
         self.document.breakpoints = list(block_ids)
         self.runs.set_breakpoints(block_ids)
@@ -278,6 +284,7 @@ class MainWindow(QMainWindow):
         toolbar.set_state(self.runs.state)
         toolbar.backend.setCurrentIndex(toolbar.backend.findData(self.robots.kind))
         toolbar.backend.currentIndexChanged.connect(self._choose_backend)
+        toolbar.reset_action.triggered.connect(self._reset_robot)
         old = getattr(self, "run_toolbar", None)
         if old is not None:
             toolbar.speed.setValue(old.speed.value())
@@ -365,9 +372,12 @@ class MainWindow(QMainWindow):
         self._update_title()
 
     def show_preferences(self):
-        """Open the Preferences dialog and apply the chosen language and the teacher's settings."""
-        dialog = PreferencesDialog(self.language, self, self.profile, self.settings.teacher)
+        """Open the Preferences dialog and apply the chosen language, the Put-back preference and the
+        teacher's settings."""
+        dialog = PreferencesDialog(self.language, self, self.profile, self.settings.teacher,
+                                   reset_before_run=self.settings.reset_before_run)
         if dialog.exec():
+            self.settings.reset_before_run = dialog.reset_before_run
             if dialog.teacher_tab.apply():  # the program stays; only the toolbox changes
                 self.editor.set_toolbox(self.profile.toolbox(self.language, *self._toolbox_choice()))
             self.set_language(dialog.language)
@@ -428,6 +438,8 @@ class MainWindow(QMainWindow):
             action.triggered.connect(lambda _checked=False, pid=profile.id: self.choose_profile(pid))
             self.profile_actions.addAction(action)
             robot_menu.addAction(action)
+        robot_menu.addSeparator()
+        robot_menu.addAction(self.run_toolbar.reset_action)
 
         view_menu = bar.addMenu(tr("menu_view", language))
         for dock in (self.simulator_dock, self.code_dock, self.variables, self.state_dock, self.console,

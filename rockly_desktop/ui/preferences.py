@@ -1,18 +1,22 @@
-"""The Preferences dialog: the language of the window and the blocks; the teacher's settings."""
-from PySide6.QtWidgets import QComboBox, QDialog, QDialogButtonBox, QFormLayout, QTabWidget, QVBoxLayout, QWidget
+"""The Preferences dialog: the language of the window and the blocks, putting the robot back before
+each Run; the teacher's settings."""
+from PySide6.QtWidgets import (
+    QCheckBox, QComboBox, QDialog, QDialogButtonBox, QFormLayout, QTabWidget, QVBoxLayout, QWidget,
+)
 
 from rockly_desktop.ui.teacher_tab import TeacherTab
 from rockly_desktop.ui.texts import LANGUAGE_NAMES, tr
 
 
 class PreferencesDialog(QDialog):
-    """Lets the user pick English or German; ``language`` holds the choice.
+    """Lets the user pick English or German (``language``) and whether the simulated robot is put
+    back before each Run (``reset_before_run``).
 
     With a ``profile`` and the ``teacher`` settings it has a Teacher tab (``teacher_tab``)
     behind a PIN; the caller calls ``teacher_tab.apply()`` when the dialog is accepted.
     """
 
-    def __init__(self, language: str, parent=None, profile=None, teacher=None):
+    def __init__(self, language: str, parent=None, profile=None, teacher=None, reset_before_run: bool = False):
         super().__init__(parent)
         self.setWindowTitle(tr("preferences_title", language))
         self.language_box = QComboBox(self)
@@ -25,6 +29,10 @@ class PreferencesDialog(QDialog):
         general = QWidget(self)
         layout = QFormLayout(general)
         layout.addRow(tr("language", language), self.language_box)
+        self.reset_box = QCheckBox(tr("reset_before_run", language), self)
+        self.reset_box.setObjectName("reset_before_run")
+        self.reset_box.setChecked(reset_before_run)
+        layout.addRow(self.reset_box)
         self.tabs = QTabWidget(self)
         self.tabs.addTab(general, tr("preferences_general", language))
         self.teacher_tab = None
@@ -39,3 +47,8 @@ class PreferencesDialog(QDialog):
     def language(self) -> str:
         """The language code chosen in the dialog."""
         return self.language_box.currentData()
+
+    @property
+    def reset_before_run(self) -> bool:
+        """True when the robot is to be put back before each Run."""
+        return self.reset_box.isChecked()

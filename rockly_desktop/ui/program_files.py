@@ -32,6 +32,7 @@ class ProgramFiles(QObject):
 
     sig_status = Signal(str)
     sig_show_program = Signal(object, object)  # ProgramToOpen, callback(result, error) with the page's answer
+    sig_program_replaced = Signal()  # New, Open, Import or Restore put another program on screen
 
     def __init__(self, document, editor, settings, registry, parent):
         super().__init__(parent)
@@ -58,6 +59,7 @@ class ProgramFiles(QObject):
         self.editor.clear()
         self._set_file(None, False)
         self.settings.last_file = None
+        self.sig_program_replaced.emit()
 
     def open(self, path=None, then=None):
         """Open a ``.rockly`` (or first-Rockly ``.xml``) program; ask for the file when ``path`` is None."""
@@ -203,6 +205,7 @@ class ProgramFiles(QObject):
                     self.sig_status.emit(tr("opened", language, path=path))
                 if changed:
                     self._show_opening_changes(program)
+                self.sig_program_replaced.emit()
                 _report(then, True)
                 return
             _report(then, False)

@@ -71,6 +71,27 @@ class RobotChoice(QObject):
         self.sig_robot_changed.emit()
         return True
 
+    @property
+    def can_reset(self) -> bool:
+        """True when the active robot is the built-in simulator, which can be put back."""
+        return self.kind == SIMULATOR
+
+    def reset(self) -> bool:
+        """Put the simulated robot back where it started; False (nothing done) for a real robot or a
+        simulator whose profile does not implement ``reset()``."""
+        if not self.can_reset:
+            return False
+        try:
+            self.robot().reset()
+        except NotImplementedError:
+            return False
+        return True
+
+    def reset_if_wanted(self):
+        """Put the simulated robot back when the preference says so (before a Run, on New and Open)."""
+        if self.settings.reset_before_run:
+            self.reset()
+
     def _connect(self) -> bool:
         language, profile = self.settings.language, self.document.profile
         remembered_uri, remembered_host = self.settings.ros_connection(profile.id)

@@ -87,6 +87,7 @@ class RunSession(QObject):
         from rockly_desktop.executor.run_setup import make_runner  # loaded at the first run, not at start-up
 
         try:
+            self.robots.reset_if_wanted()
             control = RunControl(run_code["breakpoints"], self._delay)
             robot = self.robots.robot()
             profile = self.document.profile

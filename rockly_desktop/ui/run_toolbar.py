@@ -53,6 +53,10 @@ class RunToolbar(QToolBar):
         self.backend.addItem(tr("backend_simulator", language), "simulator")
         self.backend.addItem(tr("backend_ros1", language), "ros1")
         self.addWidget(self.backend)
+        self.addSeparator()
+        # put the simulated robot back: also in the Robot menu, so its shortcut is the window's
+        self.reset_action = self._action("reset_robot", "reset_robot_tip", "Ctrl+R", icons.SP_BrowserReload)
+        self.backend.currentIndexChanged.connect(lambda _index: self.set_state(self._state))
         self.set_state("idle")
 
     def _action(self, key, tip_key, shortcut, icon):
@@ -72,6 +76,8 @@ class RunToolbar(QToolBar):
 
     def set_state(self, state: str):
         """'idle', 'starting', 'running' or 'paused': enable the actions that apply."""
+        self._state = state
+        self.reset_action.setEnabled(state == "idle" and self.backend.currentData() == "simulator")
         self.run_action.setEnabled(state == "idle")
         self.pause_action.setEnabled(state == "running")
         self.step_action.setEnabled(state in ("idle", "paused"))

@@ -98,6 +98,15 @@ class AppSettings:
         """The teacher's settings (toolbox level, limits, PIN), in the same store."""
         return TeacherSettings(self._store)
 
+    @property
+    def reset_before_run(self) -> bool:
+        """True when the simulated robot is put back before each Run (and on New and Open); off by default."""
+        return str(self._get("reset_before_run", "false")).lower() == "true"
+
+    @reset_before_run.setter
+    def reset_before_run(self, value: bool):
+        self._store.setValue("reset_before_run", "true" if value else "false")
+
     def sync(self):
         """Write to disk now."""
         self._store.sync()

@@ -8,9 +8,9 @@ person at the tablet. What the simulator then does with them (poses, arm states,
 views) is tested in test_hobbit_sim.py. Every wait is on a condition, never a fixed time.
 """
 import copy
-import importlib.util
 import math
 import re
+import sys
 import time
 
 import pytest
@@ -24,17 +24,17 @@ from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
 from rockly_desktop.robot.tablet import TabletQuestion
 
-
-def _load(module_name, file_name):
-    """Import a HOBBIT module by its path, leaving sys.path and sys.modules as they were."""
-    spec = importlib.util.spec_from_file_location(module_name, HOBBIT_DIR / "rockly_hobbit" / file_name)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+PROFILE = load_profile(HOBBIT_DIR, SHARED_TOOLBOXES)
 
 
-api = _load("hobbit_api_under_test", "api.py")
-SimHobbit = _load("hobbit_sim_for_the_api", "sim.py").SimHobbit
+def _load(module_name):
+    """A module of HOBBIT's package ``rockly_hobbit``, imported the way Rockly imports the profile."""
+    PROFILE.load_object("simulator" if module_name == "sim" else "api")
+    return sys.modules[f"rockly_hobbit.{module_name}"]
+
+
+api = _load("api")
+SimHobbit = _load("sim").SimHobbit
 Hobbit = api.Hobbit
 
 SPEED = 20
@@ -347,16 +347,16 @@ def test_navigate_to_sends_a_map_pose_facing_the_heading(backend, hobbit):
 
 
 def test_navigate_to_pose_sends_the_pose_as_given(backend, hobbit):
-    hobbit.navigate_to_pose(-1, 0.5, 0, 0, 0, -0.6, 0.8)
+    hobbit.navigate_to_pose(-0.5, 0.5, 0, 0, 0, -0.6, 0.8)
     (_action, _type, goal), = backend.goals
     assert goal == {"target_pose": {"header": {"frame_id": "map"}, "pose": {
-        "position": {"x": -1.0, "y": 0.5, "z": 0.0}, "orientation": {"x": 0.0, "y": 0.0, "z": -0.6, "w": 0.8}}}}
+        "position": {"x": -0.5, "y": 0.5, "z": 0.0}, "orientation": {"x": 0.0, "y": 0.0, "z": -0.6, "w": 0.8}}}}
 
 
 def test_navigation_the_robot_refuses_raises_naming_it(hobbit):
     with pytest.raises(RobotCommandError) as caught:
         hobbit.navigate_to_pose(1, 1, 0, 0, 0, 0, 0)  # no orientation at all
-    assert str(caught.value) == "the robot could not finish the navigation (aborted)"
+    assert str(caught.value).startswith("HOBBIT could not reach the goal: not a valid goal pose")
 
 
 # --- tablet (/MMUI service) -----------------------------------------------------------------------
@@ -467,14 +467,14 @@ def test_pause_halts_a_turn_past_half_way_round_and_continue_turns_the_rest(worl
 
 
 def test_pause_of_a_backward_drive_continues_backward(world, sim, control, hold, hobbit):
-    drive = Background(lambda: hobbit.drive(1.0, "backward"))
+    drive = Background(lambda: hobbit.drive(0.6, "backward"))
     eventually_in(world, lambda: sim.snapshot()["x"] < -0.1)
     control.request_pause()
     held = hold.wait_until_held()
-    assert -1.0 + POSITION < held["x"] < -0.1
+    assert -0.6 + POSITION < held["x"] < -0.1
     control.resume()
     assert drive.join().error is None
-    assert sim.snapshot()["x"] == pytest.approx(-1.0, abs=POSITION)
+    assert sim.snapshot()["x"] == pytest.approx(-0.6, abs=POSITION)
 
 
 def test_stop_while_a_drive_holds_ends_the_program_and_the_base_stays_where_it_halted(world, sim, control, hold,

@@ -3,7 +3,6 @@
 Every test runs the simulator's own clock (real threads) at SPEED times real time and
 waits on conditions, never for a fixed time.
 """
-import importlib.util
 import math
 import sys
 import threading
@@ -22,17 +21,17 @@ from rockly_desktop.robot.safe_stop import run_safe_stop
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
 from rockly_desktop.robot.tablet import TabletQuestion
 
-
-def _load(module_name, file_name):
-    """Import a HOBBIT module by its path, leaving sys.path and sys.modules as they were."""
-    spec = importlib.util.spec_from_file_location(module_name, HOBBIT_DIR / "rockly_hobbit" / file_name)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+PROFILE = load_profile(HOBBIT_DIR, SHARED_TOOLBOXES)
 
 
-api = _load("hobbit_api_for_the_simulator", "api.py")
-sim_module = _load("hobbit_sim_under_test", "sim.py")
+def _load(module_name):
+    """A module of HOBBIT's package ``rockly_hobbit``, imported the way Rockly imports the profile."""
+    PROFILE.load_object("simulator" if module_name == "sim" else "api")
+    return sys.modules[f"rockly_hobbit.{module_name}"]
+
+
+api = _load("api")
+sim_module = _load("sim")
 Hobbit, SimHobbit = api.Hobbit, sim_module.SimHobbit
 
 SPEED = 25
@@ -338,18 +337,18 @@ def test_stop_from_another_program_ends_a_drive_early(world, sim, hobbit):
 
 def test_navigate_to_a_position_and_heading(world, sim, hobbit):
     states = record_snapshots(world, sim)
-    hobbit.navigate_to(1, 2, 90)
+    hobbit.navigate_to(1, 1.2, 90)
     state = sim.snapshot()
-    assert (state["x"], state["y"]) == (pytest.approx(1.0, abs=POSITION), pytest.approx(2.0, abs=POSITION))
+    assert (state["x"], state["y"]) == (pytest.approx(1.0, abs=POSITION), pytest.approx(1.2, abs=POSITION))
     assert math.degrees(state["theta"]) == pytest.approx(90.0, abs=ANGLE)
     assert (state["motion"], state["nav_goal"]) == ("idle", None)
-    assert ("navigating", (1.0, 2.0)) in [(seen["motion"], seen["nav_goal"]) for seen in states]
+    assert ("navigating", (1.0, 1.2)) in [(seen["motion"], seen["nav_goal"]) for seen in states]
 
 
 def test_navigate_to_a_full_pose(sim, hobbit):
-    hobbit.navigate_to_pose(-1, 0.5, 0, *quaternion(-45))
+    hobbit.navigate_to_pose(-0.5, 0.5, 0, *quaternion(-45))
     state = sim.snapshot()
-    assert (state["x"], state["y"]) == (pytest.approx(-1.0, abs=POSITION), pytest.approx(0.5, abs=POSITION))
+    assert (state["x"], state["y"]) == (pytest.approx(-0.5, abs=POSITION), pytest.approx(0.5, abs=POSITION))
     assert math.degrees(state["theta"]) == pytest.approx(-45.0, abs=ANGLE)
 
 
@@ -373,7 +372,7 @@ def test_navigation_feedback_is_the_base_position(sim, backend):
 
 
 def test_cancelled_navigation_is_preempted_and_the_base_stops(world, sim, backend):
-    handle = backend.send_goal(*NAV, nav_goal(10, 0, 0))
+    handle = backend.send_goal(*NAV, nav_goal(4.5, 0, 0))
     eventually_in(world, lambda: sim.snapshot()["x"] > 0.2)
     handle.cancel()
     assert handle.wait(5).status is GoalStatus.PREEMPTED
@@ -399,7 +398,7 @@ def test_simple_goal_topic_drives_there(world, sim):
 
 
 def test_a_newer_base_command_preempts_navigation(world, sim, backend):
-    handle = backend.send_goal(*NAV, nav_goal(10, 0, 0))
+    handle = backend.send_goal(*NAV, nav_goal(4.5, 0, 0))
     eventually_in(world, lambda: sim.snapshot()["x"] > 0.2)
     world.publish("/cmd_vel", "geometry_msgs/Twist", {})
     assert handle.wait(5).status is GoalStatus.PREEMPTED
@@ -701,7 +700,7 @@ def test_stop_request_during_a_wait(sim, hobbit, interrupt):
 
 def test_profile_safe_stop_from_its_own_backend_stops_arm_and_navigation(world, sim, backend):
     arm = backend.send_goal(*ARM, arm_goal("MoveToPreGraspFloor"))
-    navigation = backend.send_goal(*NAV, nav_goal(10, 0, 0))
+    navigation = backend.send_goal(*NAV, nav_goal(4.5, 0, 0))
     eventually_in(world, lambda: sim.snapshot()["x"] > 0.1 and sim.snapshot()["arm_progress"] > 0.1)
 
     actions = load_profile(HOBBIT_DIR, SHARED_TOOLBOXES).manifest["safe_stop"]

@@ -1,32 +1,25 @@
 """HOBBIT's simulator view (profiles/hobbit/rockly_hobbit/view/): it draws what a snapshot says, at any size."""
-import importlib.util
 import itertools
 import math
 import struct
 import sys
 
 import pytest
-from profile_copies import HOBBIT_DIR
+from profile_copies import HOBBIT_DIR, SHARED_TOOLBOXES
 from PySide6.QtCore import QRect
 from PySide6.QtGui import QImage
 
 from rockly_desktop import sdk_view
+from rockly_desktop.profiles.profile import load_profile
 
 
 def _load_sim_view_module():
-    """Import the view package by its path, leaving sys.path and sys.modules as they were."""
-    name, path = "hobbit_sim_view_under_test", HOBBIT_DIR / "rockly_hobbit" / "view"
-    spec = importlib.util.spec_from_file_location(name, path / "__init__.py", submodule_search_locations=[str(path)])
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[name] = module   # its modules import each other relatively
-    try:
-        spec.loader.exec_module(module)
-    finally:
-        for key in [key for key in sys.modules if key == name or key.startswith(name + ".")]:
-            del sys.modules[key]
-    return module
+    """Import the view package the way Rockly does (through the profile: it reads the house's data)."""
+    PROFILE.simulator_view_class()
+    return sys.modules["rockly_hobbit.view"]
 
 
+PROFILE = load_profile(HOBBIT_DIR, SHARED_TOOLBOXES)
 sim_view = _load_sim_view_module()
 HobbitSimView = sim_view.HobbitSimView
 

@@ -205,7 +205,8 @@ def test_drive_into_a_box_stops_at_it_and_says_so(world, make_sim, control):
     end = later(world, sim, 0.5)
     assert end["x"] == pytest.approx(0.805 - 0.105, abs=0.001)
     assert (end["linear"], end["bumped"], end["bumps"]) == (0.0, True, 1)
-    assert str(caught.value) == "something blocks the way: the TurtleBot stopped after 0.70 of 1.50 m"
+    assert str(caught.value) == "The TurtleBot bumped into the red box"
+    assert caught.value.in_language("de") == "Der TurtleBot ist gegen die rote Kiste gestoßen"
     robot.drive(0.3, "backward")   # it can back away
     assert sim.snapshot()["x"] == pytest.approx(0.7 - 0.3, abs=POSITION)
     assert sim.snapshot()["bumped"] is False

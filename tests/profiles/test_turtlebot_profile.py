@@ -56,8 +56,8 @@ def test_the_ros_interface_is_the_turtlebots():
     assert interface == {
         "subscribes": {"/cmd_vel": "geometry_msgs/Twist"},
         "publishes": {"/odom": "nav_msgs/Odometry", "/scan": "sensor_msgs/LaserScan",
-                      "/battery_state": "sensor_msgs/BatteryState"},
-        "streams": ["/odom", "/scan", "/battery_state"],
+                      "/battery_state": "sensor_msgs/BatteryState", "/sensor_state": "turtlebot3_msgs/SensorState"},
+        "streams": ["/odom", "/scan", "/battery_state", "/sensor_state"],
     }
     assert PROFILE.manifest["safe_stop"] == [
         {"publish": {"topic": "/cmd_vel", "type": "geometry_msgs/Twist", "message": {}}}]

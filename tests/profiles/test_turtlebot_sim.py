@@ -284,14 +284,14 @@ def test_the_battery_drains_slowly_and_faster_while_driving(world, make_sim):
     assert battery["present"] is True
 
 
-def test_all_three_streams_arrive_every_tick(world, make_sim):
-    counts = {"/odom": 0, "/scan": 0, "/battery_state": 0}
+def test_all_four_streams_arrive_every_tick(world, make_sim):
+    counts = {"/odom": 0, "/scan": 0, "/battery_state": 0, "/sensor_state": 0}
     for topic in counts:
         world.subscribe(topic, lambda _message, topic=topic: counts.__setitem__(topic, counts[topic] + 1))
     make_sim()
     eventually_in(world, lambda: counts["/odom"] >= 10)
-    assert abs(counts["/scan"] - counts["/odom"]) <= 1 and abs(counts["/battery_state"] - counts["/odom"]) <= 1
-    assert sorted(topic for topic, _type in world.topics()) == ["/battery_state", "/odom", "/scan"]
+    assert all(abs(count - counts["/odom"]) <= 1 for count in counts.values())
+    assert sorted(topic for topic, _type in world.topics()) == ["/battery_state", "/odom", "/scan", "/sensor_state"]
 
 
 def test_shutdown_ends_the_clock_thread(world):

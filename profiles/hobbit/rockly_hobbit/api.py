@@ -15,6 +15,8 @@ import math
 
 from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotCommands, RobotTimeout, field_value
 
+from .world import CONTACT_TOPIC, WORLD, blocked_on_the_way, bumped, goal_problem
+
 HEAD_POSITIONS = (
     "center_center", "up_center", "down_center", "center_right", "center_left", "up_right",
     "up_left", "down_right", "down_left", "littledown_center", "to_grasp", "to_turntable", "search_table",
@@ -45,6 +47,8 @@ MOVE_TOLERANCE = 0.005  # metres
 TURN_TOLERANCE = 0.5  # degrees
 DIALOG_TIMEOUT = 60.0
 SENSOR_TIMEOUT = 3.0
+GOAL_ENDS_DE = {GoalStatus.ABORTED: "abgebrochen", GoalStatus.PREEMPTED: "unterbrochen",
+                GoalStatus.REJECTED: "abgelehnt", GoalStatus.SUCCEEDED: "erreicht"}
 
 
 class _Progress:
@@ -113,7 +117,11 @@ class Hobbit(RobotCommands):
                   ((x, "x"), (y, "y"), (z, "z"), (qx, "quat x"), (qy, "quat y"), (qz, "quat z"), (qw, "quat w"))]
         pose = {"header": {"frame_id": "map"},
                 "pose": {"position": dict(zip("xyz", values[:3])), "orientation": dict(zip("xyzw", values[3:]))}}
-        self._run_goal(NAV_ACTION, NAV_ACTION_TYPE, {"target_pose": pose}, "navigation")
+        outcome = self.backend.send_goal(NAV_ACTION, NAV_ACTION_TYPE, {"target_pose": pose}).wait(MOTION_TIMEOUT)
+        if outcome.status is not GoalStatus.SUCCEEDED:
+            reason = self._navigation_reason(values[0], values[1], outcome)
+            raise RobotCommandError(f"HOBBIT could not reach the goal: {reason['en']}",
+                                    translations={"de": f"HOBBIT konnte das Ziel nicht erreichen: {reason['de']}"})
 
     def stop(self):
         """Stop the base at once."""
@@ -259,11 +267,17 @@ class Hobbit(RobotCommands):
             unsubscribe_state = self.backend.subscribe(
                 MOTION_STATE, "std_msgs/String", lambda message: states.append(message.get("data")))
             unsubscribe_odom = self.backend.subscribe("/odom", "nav_msgs/Odometry", progress.add)
+            bumps = []
+            unsubscribe_bumper = self.backend.subscribe(
+                "/bumper", "std_msgs/Bool", lambda message: bumps.append(True) if message.get("data") else None)
             try:
                 self.backend.publish(MOTION_COMMAND, "std_msgs/String", {"data": f"{kind} {remaining:g}"})
-                if not self.backend.wait_until(lambda: "Idle" in states or self.backend.pause_requested(),
+                if not self.backend.wait_until(lambda: "Idle" in states or bumps or self.backend.pause_requested(),
                                                MOTION_TIMEOUT):
                     raise RobotTimeout(f"the base did not finish '{kind} {remaining:g}' within {MOTION_TIMEOUT:g} s")
+                if bumps:
+                    self.stop()
+                    raise self._bump_error()
                 if "Idle" in states:
                     return
                 self.stop()
@@ -273,11 +287,28 @@ class Hobbit(RobotCommands):
             finally:
                 unsubscribe_state()
                 unsubscribe_odom()
+                unsubscribe_bumper()
             if progress.updates < 2:
                 raise RobotCommandError(f"the base was halted for a pause, but without odometry (/odom) "
                                         f"Rockly cannot tell how much of '{kind} {remaining:g}' is left")
             remaining -= progress.done
             self.backend.hold()
+
+    def _navigation_reason(self, x, y, outcome):
+        """{language: why move_base ended the goal}: the simulator's reasons in both languages, else its text."""
+        known = [goal_problem(x, y)] + [blocked_on_the_way(obstacle.id) for obstacle in WORLD.obstacles]
+        for reason in known:
+            if reason is not None and reason["en"] == outcome.text:
+                return reason
+        if outcome.text:   # a real move_base's own words (English)
+            return {"en": outcome.text, "de": outcome.text}
+        return {"en": f"the goal was {outcome.status.value}", "de": f"das Ziel wurde {GOAL_ENDS_DE[outcome.status]}"}
+
+    def _bump_error(self):
+        """The RobotCommandError for a bump, naming what the simulator says was hit."""
+        contact = self.backend.latest(CONTACT_TOPIC, "std_msgs/String")
+        message = bumped(contact["data"] if contact else None)
+        return RobotCommandError(message["en"], translations={"de": message["de"]})
 
     def _arm(self, command, joints=()):
         goal = {"command": {"data": command}, "velocity": 0.0,

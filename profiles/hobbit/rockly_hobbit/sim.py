@@ -5,6 +5,12 @@
 reference) in a SimWorld, so HOBBIT's commands drive it unchanged. Its tables are taken
 from the reference, not from the commands, so a command that sends a wrong value is
 caught here. Simulated time runs ``speed`` times as fast as the clock.
+
+The house is solid (``world.yaml``, the same data the view draws): a motion that would take
+HOBBIT's base into a wall or a piece of furniture stops where it touches; ``/bumper`` says
+true at that moment (before the base reports Idle), and the simulator's own ``/sim/contact``
+names what was hit. A navigation goal outside the house or where the base does not fit is aborted at once,
+one that bumps on the way when it bumps (move_base's ABORTED, with the reason as its text).
 """
 import logging
 import math
@@ -12,6 +18,8 @@ from collections import deque
 from dataclasses import dataclass
 
 from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotSimulator, TabletQuestion, twist_velocity
+
+from .world import CONTACT_TOPIC, WORLD, blocked_on_the_way, goal_problem
 
 log = logging.getLogger(__name__)
 
@@ -144,6 +152,7 @@ class _Navigation:
         self.x, self.y, self.yaw = x, y, yaw
         self.phase = "aim"
         self.done = False
+        self.bumped = None      # what stopped it on the way
 
     def step(self, x, y, theta, dt):
         """Advance the current phase by ``dt``."""
@@ -250,6 +259,19 @@ class SimHobbit(RobotSimulator):
 
     def __init__(self, world, tablet=None, speed=1.0):
         super().__init__(world, tablet, speed)
+        self._set_start()
+
+    def reset(self):
+        """Put HOBBIT back: at the origin, standing still, arm home, head straight, battery full, no trail."""
+        with self.lock:
+            self._set_start()
+            self.queue(*MOTION_STATE, {"data": "Idle"})
+            self.queue_sensors()
+        self.flush()
+        self.world.cancel_goals(ARM_ACTION)
+        self.world.cancel_goals(NAV_ACTION)
+
+    def _set_start(self):
         self._x = self._y = self._theta = 0.0
         self._linear = self._angular = 0.0
         self._base = _Velocity()
@@ -260,6 +282,8 @@ class SimHobbit(RobotSimulator):
         self._gripper, self._turntable, self._turntable_angle = "closed", "stored", 0.0
         self._battery, self._volume = 100.0, 50
         self._shown, self._notices = None, deque(maxlen=NOTICES_KEPT)
+        self._bumps = 0
+        self._contact = None        # the obstacle the base last bumped into, or None
 
     # --- life cycle -------------------------------------------------------------------
 
@@ -298,7 +322,7 @@ class SimHobbit(RobotSimulator):
                 "gripper": self._gripper, "turntable": self._turntable, "turntable_angle": self._turntable_angle,
                 "battery": self._battery, "volume": self._volume,
                 "tablet": dict(self._shown) if self._shown else None, "notices": list(self._notices),
-                "time": self.time,
+                "bumped": self._contact.id if self._contact else None, "bumps": self._bumps, "time": self.time,
             }
 
     # --- the clock --------------------------------------------------------------------
@@ -309,13 +333,34 @@ class SimHobbit(RobotSimulator):
         # its last step, so even a zero-length motion reports Idle a whole tick after it was commanded
         if self._base.done:
             self._replace_base(_Velocity())
-        self._x, self._y, self._theta, self._linear, self._angular = self._base.step(
-            self._x, self._y, self._theta, dt)
+        x, y, self._theta, self._linear, self._angular = self._base.step(self._x, self._y, self._theta, dt)
+        self._move_to(x, y)
         if math.dist(self._trail[-1], (self._x, self._y)) >= TRAIL_SPACING:
             self._trail.append((self._x, self._y))
         self._advance_arm(dt)
         busy = self._linear or self._angular or self._arm_task
         self._battery = max(0.0, self._battery - dt * (BATTERY_DRAIN_BUSY if busy else BATTERY_DRAIN))
+
+    def _move_to(self, x, y):
+        """Slide the base straight to (x, y), stopping where it touches something: the bumper reports it."""
+        distance = math.dist((self._x, self._y), (x, y))
+        hit = None
+        if distance > 0:
+            stop_x, stop_y, _, hit = WORLD.move(self._x, self._y, math.atan2(y - self._y, x - self._x), distance, 0, 1)
+            if hit is not None:   # else (x, y) as the motion says, without the sweep's rounding
+                x, y = stop_x, stop_y
+        if distance > 0 and self._contact is not None and WORLD.touching(x, y) is None:
+            self._contact = None       # moved off what it had bumped into
+        self._x, self._y = x, y
+        if hit is not None:
+            self._contact, self._bumps = hit, self._bumps + 1
+            if isinstance(self._base, _Navigation):
+                self._base.bumped = hit
+            # what was hit and the bumper first, then the base's stop (Idle): a command sees the cause first
+            self.queue(CONTACT_TOPIC, "std_msgs/String", {"data": hit.id})
+            self.queue("/bumper", "std_msgs/Bool", {"data": True})
+            self._replace_base(_Velocity())
+            log.info("simulated HOBBIT: bumped into %s at (%.2f, %.2f)", hit.id, x, y)
 
     def _advance_arm(self, dt):
         task = self._arm_task
@@ -339,7 +384,7 @@ class SimHobbit(RobotSimulator):
             "twist": {"twist": {"linear": {"x": self._linear, "y": 0.0, "z": 0.0},
                                 "angular": {"x": 0.0, "y": 0.0, "z": self._angular}}}})
         self.queue("/battery_state", "sensor_msgs/BatteryState", {"percentage": self._battery / 100, "present": True})
-        self.queue("/bumper", "std_msgs/Bool", {"data": False})
+        self.queue("/bumper", "std_msgs/Bool", {"data": False})   # a stopped base presses nothing
         self.queue("/joint_states", "sensor_msgs/JointState",
                    {"header": {"frame_id": "base_link"}, "name": list(ARM_JOINT_NAMES), "position": self._joint_positions()})
 
@@ -404,7 +449,10 @@ class SimHobbit(RobotSimulator):
             task = _Navigation(*_target_of(goal.get("target_pose") or {}))
         except (AttributeError, TypeError, ValueError) as error:
             log.warning("simulated HOBBIT: aborted the navigation goal: %s", error)
-            return GoalStatus.ABORTED, {}
+            return GoalStatus.ABORTED, {}, str(error)
+        problem = goal_problem(task.x, task.y)
+        if problem is not None:
+            return GoalStatus.ABORTED, {}, problem["en"]
         self._command_base(task)
         last_sent = None
 
@@ -418,6 +466,8 @@ class SimHobbit(RobotSimulator):
 
         status = self._follow(task, lambda: self._base is task, lambda: self._replace_base(_Velocity()),
                               cancelled, feedback, base_position)
+        if status is GoalStatus.PREEMPTED and task.bumped is not None:
+            return GoalStatus.ABORTED, {}, blocked_on_the_way(task.bumped.id)["en"]
         return status, {}
 
     # --- head -------------------------------------------------------------------------

@@ -10,7 +10,8 @@ They read the same whether generated from blocks or written by hand::
 
 Everything goes through the robot's standard topics: ``/cmd_vel`` (geometry_msgs/Twist) moves
 it, ``/odom`` (nav_msgs/Odometry) says where it is, ``/scan`` (sensor_msgs/LaserScan) what its
-laser sees and ``/battery_state`` (sensor_msgs/BatteryState) how full its battery is.
+laser sees and ``/battery_state`` (sensor_msgs/BatteryState) how full its battery is; a
+``bumper`` on ``/sensor_state`` (turtlebot3_msgs/SensorState) ends a motion as a bump.
 
 ``drive``, ``turn`` and ``drive_for`` are closed loops on the odometry: they send velocities
 until ``/odom`` says the robot got there, then stop it. Each new velocity is chosen so the
@@ -25,10 +26,14 @@ import time
 
 from rockly_desktop.sdk import RobotCommandError, RobotCommands, RobotTimeout
 
+from .arena import bumped
+
 CMD_VEL, TWIST = "/cmd_vel", "geometry_msgs/Twist"
 ODOM, ODOMETRY = "/odom", "nav_msgs/Odometry"
 SCAN, LASER_SCAN = "/scan", "sensor_msgs/LaserScan"
 BATTERY, BATTERY_STATE = "/battery_state", "sensor_msgs/BatteryState"
+SENSORS, SENSOR_STATE = "/sensor_state", "turtlebot3_msgs/SensorState"
+CONTACT = "/sim/contact"       # the simulator's own: the id of what it bumped into (a real TurtleBot has none)
 
 LINEAR_SPEED = 0.15            # m/s for drive()
 ANGULAR_SPEED = 0.8            # rad/s for turn()
@@ -137,7 +142,8 @@ class TurtleBot(RobotCommands):
     def drive(self, distance, direction="forward"):
         """Drive ``distance`` metres straight, ``'forward'`` or ``'backward'``, at 0.15 m/s; waits until there.
 
-        Raises a RobotCommandError when something blocks the way (the robot is stopped there).
+        Raises a RobotCommandError when the robot bumps into something or something blocks the way
+        (the robot is stopped there).
         """
         metres = self.number(distance, "the distance") * self.choose(direction, DIRECTIONS, "direction")
         self._move("drive", metres)
@@ -157,6 +163,8 @@ class TurtleBot(RobotCommands):
         while left > TIME_TOLERANCE:
             outcome, done = self._timed_run(speed, left)
             left -= done
+            if outcome == "bumped":
+                raise self._bump_error()
             if outcome == "paused":
                 self.backend.hold()
 
@@ -232,6 +240,8 @@ class TurtleBot(RobotCommands):
             outcome, done = self._run(kind, remaining, tolerance)
             remaining -= done
             done_total += done
+            if outcome == "bumped":
+                raise self._bump_error()
             if outcome == "stalled":
                 if kind == "drive":
                     raise RobotCommandError(f"something blocks the way: the TurtleBot stopped after "
@@ -268,13 +278,22 @@ class TurtleBot(RobotCommands):
 
         return self._loop("time", command, lambda left: left <= TIME_TOLERANCE, seconds, None)
 
+    def _bump_error(self):
+        """The RobotCommandError for a bump, naming what the simulator says was hit."""
+        contact = self.backend.latest(CONTACT, "std_msgs/String")
+        message = bumped(contact["data"] if contact else None)
+        return RobotCommandError(message["en"], translations={"de": message["de"]})
+
     def _loop(self, kind, command, arrived, target, stall_amount):
         start = _Pose(self._latest(ODOM, ODOMETRY))
         progress = _Progress(kind, start)
+        bumps = []
         unsubscribe = self.backend.subscribe(ODOM, ODOMETRY, progress.add)
+        unsubscribe_bumper = self.backend.subscribe(
+            SENSORS, SENSOR_STATE, lambda message: bumps.append(True) if message.get("bumper") else None)
         try:
             try:
-                outcome = self._follow(progress, command, arrived, target, stall_amount)
+                outcome = self._follow(progress, command, arrived, target, stall_amount, bumps)
             except RobotCommandError:
                 self._try_to_stop()
                 raise
@@ -286,16 +305,19 @@ class TurtleBot(RobotCommands):
             return outcome, driven if kind == "time" else progress.done
         finally:
             unsubscribe()
+            unsubscribe_bumper()
 
-    def _follow(self, progress, command, arrived, target, stall_amount):
-        """Send velocities until arrived, paused or stalled; each new odometry message gets a new one."""
+    def _follow(self, progress, command, arrived, target, stall_amount, bumps):
+        """Send velocities until arrived, paused, bumped or stalled; each new odometry message gets a new one."""
         seen, _, latest, step = progress.state
         command(target, step)
         moved_at, moved_done = latest, 0.0
         while True:
-            if not self.backend.wait_until(lambda: progress.count > seen or self.backend.pause_requested(),
-                                           SENSOR_TIMEOUT):
+            if not self.backend.wait_until(
+                    lambda: progress.count > seen or bumps or self.backend.pause_requested(), SENSOR_TIMEOUT):
                 raise RobotTimeout(f"no odometry arrived on '{ODOM}' for {SENSOR_TIMEOUT:g} s")
+            if bumps:
+                return "bumped"
             if self.backend.pause_requested():
                 return "paused"
             seen, done, latest, step = progress.state

@@ -2,13 +2,16 @@
 
 ``SimTurtleBot`` serves the robot's ROS interface in a SimWorld exactly as a TurtleBot3's
 nodes do: it follows ``/cmd_vel`` (geometry_msgs/Twist) and publishes ``/odom``
-(nav_msgs/Odometry), ``/scan`` (sensor_msgs/LaserScan) and ``/battery_state``
-(sensor_msgs/BatteryState) on every tick of its 30 Hz clock. Simulated time runs ``speed``
+(nav_msgs/Odometry), ``/scan`` (sensor_msgs/LaserScan), ``/battery_state``
+(sensor_msgs/BatteryState) and ``/sensor_state`` (turtlebot3_msgs/SensorState, whose
+``bumper`` is what turtlebot3_core reports) on every tick of its 30 Hz clock. Simulated time runs ``speed``
 times as fast as the clock; the messages are stamped with it.
 
 The base moves as a unicycle at the commanded speeds (limited to the TurtleBot3 Burger's
 0.22 m/s and 2.84 rad/s) until its round body (radius 0.105 m) touches a wall or a box: then
-it stops there, as if a bumper had been hit, and drops the command until the next one.
+it stops there and drops the command until the next one; ``/sensor_state`` reports the bump
+(``bumper`` 1 forward, 2 backward) in that tick, and the simulator's own ``/sim/contact``
+(std_msgs/String) names what was hit by its id.
 Odometry is perfect and shares the room's frame (the robot starts at the origin). The laser
 sits at the robot's centre: 360 beams counter-clockwise from straight ahead, 0.12-3.5 m,
 ``inf`` where nothing is in range and ``-inf`` (REP 117) closer than 0.12 m.
@@ -20,6 +23,10 @@ from collections import deque
 from rockly_desktop.sdk import RobotSimulator, twist_velocity
 
 from .arena import BOXES, ROOM, Arena
+
+CONTACT_TOPIC = "/sim/contact"
+SENSOR_STATE = "/sensor_state", "turtlebot3_msgs/SensorState"
+BUMPER_FORWARD, BUMPER_BACKWARD = 1, 2
 
 log = logging.getLogger(__name__)
 
@@ -61,13 +68,26 @@ class SimTurtleBot(RobotSimulator):
         x, y, theta = (float(value) for value in start)
         if not self._arena.fits(x, y):
             raise ValueError(f"the TurtleBot does not fit at ({x:g}, {y:g}): it would overlap a wall or a box")
-        self._x, self._y, self._theta = x, y, math.remainder(theta, math.tau)
+        self._start = (x, y, math.remainder(theta, math.tau))
+        self._set_start()
+
+    def _set_start(self):
+        self._x, self._y, self._theta = self._start
         self._command = (0.0, 0.0)        # what /cmd_vel asks: (linear, angular)
         self._linear = self._angular = 0.0  # what the base really does
         self._bumps = 0
+        self._bumper = 0                  # the SensorState bumper bits of this tick
+        self._contact = None              # the obstacle it last bumped into
         self._battery = 100.0
-        self._trail = deque([(x, y)], maxlen=TRAIL_POINTS)
+        self._trail = deque([(self._x, self._y)], maxlen=TRAIL_POINTS)
         self._scan = self._cast()
+
+    def reset(self):
+        """Put the TurtleBot back at its start, standing still, battery full, no trail, no bumps."""
+        with self.lock:
+            self._set_start()
+            self.queue_sensors()
+        self.flush()
 
     # --- life cycle -------------------------------------------------------------------
 
@@ -88,7 +108,8 @@ class SimTurtleBot(RobotSimulator):
                 "linear": self._linear, "angular": self._angular,
                 "scan": list(self._scan), "range_min": RANGE_MIN, "range_max": RANGE_MAX,
                 "room": self._arena.room, "room_size": self._arena.size, "boxes": list(self._arena.boxes),
-                "radius": self._arena.radius, "bumped": self._arena.touching(self._x, self._y), "bumps": self._bumps,
+                "radius": self._arena.radius, "bumped": self._arena.touching(self._x, self._y) is not None,
+                "bumps": self._bumps, "contact": self._contact.id if self._contact else None,
                 "battery": self._battery, "voltage": self._volts(), "time": self.time,
             }
 
@@ -97,12 +118,17 @@ class SimTurtleBot(RobotSimulator):
     def advance(self, dt):
         """Drive ``dt`` simulated seconds on (stopping at whatever it bumps into), drain the battery, scan."""
         linear, angular = self._command
-        was_touching = self._arena.touching(self._x, self._y)
-        x, y, theta, blocked = self._arena.move(self._x, self._y, self._theta, linear, angular, dt)
+        was_touching = self._arena.touching(self._x, self._y) is not None
+        x, y, theta, hit = self._arena.move(self._x, self._y, self._theta, linear, angular, dt)
+        blocked = hit is not None
+        self._bumper = 0
         if blocked:
             self._bumps += 0 if was_touching else 1   # pushing on while touching is the same bump
             self._command = (0.0, 0.0)      # the bumper stops the wheels
-            log.info("simulated TurtleBot: bumped into something at (%.2f, %.2f)", x, y)
+            self._contact = hit
+            self._bumper = BUMPER_FORWARD if linear >= 0 else BUMPER_BACKWARD
+            self.queue(CONTACT_TOPIC, "std_msgs/String", {"data": hit.id})
+            log.info("simulated TurtleBot: bumped into %s at (%.2f, %.2f)", hit.id, x, y)
         self._linear, self._angular = (0.0, 0.0) if blocked else (linear, angular)
         self._x, self._y, self._theta = x, y, theta
         if math.dist(self._trail[-1], (x, y)) >= TRAIL_SPACING:
@@ -123,7 +149,7 @@ class SimTurtleBot(RobotSimulator):
     # --- sensors ----------------------------------------------------------------------
 
     def queue_sensors(self):
-        """/odom, /scan and /battery_state, stamped with the simulated time."""
+        """/odom, /scan, /sensor_state and /battery_state, stamped with the simulated time."""
         stamp = _stamp(self.time)
         theta = self._theta
         self.queue("/odom", "nav_msgs/Odometry", {
@@ -137,6 +163,8 @@ class SimTurtleBot(RobotSimulator):
             "angle_min": 0.0, "angle_max": (BEAMS - 1) * ANGLE_INCREMENT, "angle_increment": ANGLE_INCREMENT,
             "time_increment": 0.0, "scan_time": TICK_SECONDS, "range_min": RANGE_MIN, "range_max": RANGE_MAX,
             "ranges": list(self._scan), "intensities": []})
+        self.queue(*SENSOR_STATE, {"header": {"stamp": stamp, "frame_id": ""}, "bumper": self._bumper,
+                                   "torque": True, "battery": self._volts()})
         busy = self._linear or self._angular
         self.queue("/battery_state", "sensor_msgs/BatteryState", {
             "header": {"stamp": stamp, "frame_id": ""}, "voltage": self._volts(),

@@ -154,7 +154,7 @@ class Ros1GoalHandle(GoalHandle):
             raise RobotTimeout(f"the action '{self._action}' did not finish within {timeout:g} s")
         result = self._client.get_result()
         return GoalOutcome(_ACTIONLIB_STATUS[self._client.get_state()],
-                           from_message(result) if result is not None else {})
+                           from_message(result) if result is not None else {}, self._client.get_goal_status_text())
 
     def cancel(self) -> None:
         """Ask the action server to stop this goal."""

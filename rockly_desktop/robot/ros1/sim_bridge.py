@@ -100,7 +100,7 @@ class SimRosBridge:
             elif outcome.status is GoalStatus.PREEMPTED:
                 server.set_preempted(result)
             else:
-                server.set_aborted(result)
+                server.set_aborted(result, outcome.text)
 
         server = actionlib.SimpleActionServer(name, action_class, execute_cb=execute, auto_start=False)
         server.start()

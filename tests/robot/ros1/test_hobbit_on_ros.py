@@ -7,7 +7,7 @@ from background import Background
 from ros_helpers import connected_subscription
 from waiting import eventually
 
-from rockly_desktop.core.errors import ProgramStopped
+from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.run_setup import make_runner
 from rockly_desktop.robot.interrupt import Interrupt
@@ -79,6 +79,13 @@ def test_navigation_goes_through_move_base(ros_robot, hobbit_robot):
     assert (targets[0]["pose"]["position"]["x"], targets[0]["pose"]["position"]["y"]) == (1.0, 0.5)
     x, y, theta = pose(ros_robot)
     assert (x, y) == (pytest.approx(1.0, abs=0.05), pytest.approx(0.5, abs=0.05))
+
+
+def test_a_goal_inside_furniture_is_aborted_over_ros_with_the_reason_as_status_text(hobbit_robot):
+    with pytest.raises(RobotCommandError) as caught:
+        hobbit_robot.navigate_to(3.7, 1.2)     # the middle of the table
+    assert str(caught.value) == "HOBBIT could not reach the goal: at the goal HOBBIT would bump into the table"
+    assert caught.value.in_language("de").endswith("am Ziel würde HOBBIT gegen den Tisch stoßen")
 
 
 def test_tablet_dialogs_go_through_mmui_and_come_back_answered(hobbit_robot, ros_robot):

@@ -1,6 +1,8 @@
 """The furniture in the room, in map metres: rug, sofa, table with chairs, bookshelf, two plants and a ball.
 
-Each piece is drawn twice, first as a soft shadow offset down-right, then for real.
+Where each piece stands and how big it is comes from the house's data (``world.yaml``, what the
+simulated HOBBIT bumps into); only the rug, which it drives over, is the view's own. Each piece
+is drawn twice, first as a soft shadow offset down-right, then for real.
 """
 import math
 
@@ -9,6 +11,7 @@ from PySide6.QtGui import QColor, QPen
 
 from rockly_desktop.sdk_view import cosmetic_pen
 
+from ..world import WORLD
 from .drawing import wedge
 
 SHADOW = QColor(40, 30, 20, 40)
@@ -24,6 +27,16 @@ def paint_furniture(p):
         piece(p, True)
         p.restore()
         piece(p, False)
+
+
+def _box(obstacle_id):
+    """(x0, y0, x1, y1) of a piece of furniture in the house's data."""
+    return WORLD.obstacle(obstacle_id).bounds
+
+
+def _centre(obstacle_id):
+    x0, y0, x1, y1 = _box(obstacle_id)
+    return (x0 + x1) / 2, (y0 + y1) / 2
 
 
 def _silhouette(p, is_shadow, colour):
@@ -55,67 +68,74 @@ def _cushion(p, x, y, degrees, colour):
 
 
 def _sofa(p, is_shadow):
+    x0, y0, x1, y1 = _box("sofa")
+    w, h = x1 - x0, y1 - y0
     _silhouette(p, is_shadow, "#F2857A")
-    p.drawRoundedRect(QRectF(0.1, 1.6, 2.0, 0.82), 0.12, 0.12)
+    p.drawRoundedRect(QRectF(x0, y0, w, h), 0.12, 0.12)
     if is_shadow:
         return
     p.setBrush(QColor("#DD6C62"))
-    p.drawRoundedRect(QRectF(0.1, 2.17, 2.0, 0.25), 0.1, 0.1)
-    p.drawRoundedRect(QRectF(0.1, 1.6, 0.24, 0.82), 0.1, 0.1)
-    p.drawRoundedRect(QRectF(1.86, 1.6, 0.24, 0.82), 0.1, 0.1)
+    p.drawRoundedRect(QRectF(x0, y1 - 0.25, w, 0.25), 0.1, 0.1)    # the back
+    p.drawRoundedRect(QRectF(x0, y0, 0.24, h), 0.1, 0.1)           # the arms
+    p.drawRoundedRect(QRectF(x1 - 0.24, y0, 0.24, h), 0.1, 0.1)
     p.setBrush(QColor("#F8A196"))
-    p.drawRoundedRect(QRectF(0.38, 1.66, 0.7, 0.5), 0.08, 0.08)
-    p.drawRoundedRect(QRectF(1.12, 1.66, 0.7, 0.5), 0.08, 0.08)
-    _cushion(p, 0.55, 2.02, -12, "#FFD166")
-    _cushion(p, 1.66, 2.02, 10, "#8FD3F0")
+    seat = (w - 0.6) / 2
+    p.drawRoundedRect(QRectF(x0 + 0.28, y0 + 0.06, seat, h - 0.32), 0.08, 0.08)
+    p.drawRoundedRect(QRectF(x0 + 0.32 + seat, y0 + 0.06, seat, h - 0.32), 0.08, 0.08)
+    _cushion(p, x0 + 0.45, y1 - 0.4, -12, "#FFD166")
+    _cushion(p, x1 - 0.44, y1 - 0.4, 10, "#8FD3F0")
 
 
 def _table(p, is_shadow):
-    for cx in (3.4, 4.0):   # chairs tucked in on the wall side
+    for chair in ("chair_left", "chair_right"):   # chairs tucked in on the wall side
+        cx0, cy0, cx1, cy1 = _box(chair)
         _silhouette(p, is_shadow, "#7DC4E4")
-        p.drawRoundedRect(QRectF(cx - 0.2, 1.55, 0.4, 0.45), 0.08, 0.08)
+        p.drawRoundedRect(QRectF(cx0, cy0, cx1 - cx0, cy1 - cy0), 0.08, 0.08)
         if not is_shadow:
             p.setBrush(QColor("#5AA8CC"))
-            p.drawRoundedRect(QRectF(cx - 0.2, 1.9, 0.4, 0.1), 0.04, 0.04)
+            p.drawRoundedRect(QRectF(cx0, cy1 - 0.1, cx1 - cx0, 0.1), 0.04, 0.04)
+    x0, y0, x1, y1 = _box("table")
     _silhouette(p, is_shadow, "#C98A57")
-    p.drawRoundedRect(QRectF(3.1, 0.75, 1.2, 0.9), 0.08, 0.08)
+    p.drawRoundedRect(QRectF(x0, y0, x1 - x0, y1 - y0), 0.08, 0.08)
     if is_shadow:
         return
     p.setBrush(QColor("#D9A06D"))
-    p.drawRoundedRect(QRectF(3.16, 0.81, 1.08, 0.78), 0.06, 0.06)
+    p.drawRoundedRect(QRectF(x0 + 0.06, y0 + 0.06, x1 - x0 - 0.12, y1 - y0 - 0.12), 0.06, 0.06)
     # a fruit bowl
+    bx, by = _centre("table")
     p.setBrush(QColor("#FFFFFF"))
-    p.drawEllipse(QPointF(3.7, 1.2), 0.17, 0.17)
+    p.drawEllipse(QPointF(bx, by), 0.17, 0.17)
     p.setPen(Qt.PenStyle.NoPen)
     for (dx, dy), colour in (((-0.06, 0.04), "#FF5D5D"), ((0.06, 0.05), "#FFB020"), ((0.0, -0.06), "#6CCB5F")):
         p.setBrush(QColor(colour))
-        p.drawEllipse(QPointF(3.7 + dx, 1.2 + dy), 0.055, 0.055)
+        p.drawEllipse(QPointF(bx + dx, by + dy), 0.055, 0.055)
 
 
 def _shelf(p, is_shadow):
     """A bookshelf against the right wall, with books of varied colour, thickness and depth."""
+    x0, y0, x1, y1 = _box("shelf")
     _silhouette(p, is_shadow, "#A8764E")
-    p.drawRect(QRectF(4.58, -2.0, 0.42, 1.5))
+    p.drawRect(QRectF(x0, y0, x1 - x0, y1 - y0))
     if is_shadow:
         return
     p.setBrush(QColor("#C79466"))
-    p.drawRect(QRectF(4.62, -1.96, 0.34, 1.42))
+    p.drawRect(QRectF(x0 + 0.04, y0 + 0.04, x1 - x0 - 0.08, y1 - y0 - 0.08))
     p.setPen(Qt.PenStyle.NoPen)
     colours = ("#FF6B6B", "#4D8DFF", "#FFD166", "#2EC4B6", "#B084F5", "#FF9F43", "#6CCB5F")
-    y = -1.93
+    y = y0 + 0.07
     k = 0
-    while y < -0.6:
+    while y < y1 - 0.1:
         h = 0.06 + (k * 5 % 4) * 0.02
         p.setBrush(QColor(colours[k % len(colours)]))
         depth = 0.24 + (k % 3) * 0.03
-        p.drawRect(QRectF(4.95 - depth, y, depth, h))
+        p.drawRect(QRectF(x1 - 0.05 - depth, y, depth, h))
         y += h + 0.012
         k += 1
 
 
-def _plant(p, is_shadow, at=(-0.62, 2.1)):
+def _plant(p, is_shadow, obstacle_id="plant"):
     """A potted plant seen from above: seven leaves around the pot."""
-    x, y = at
+    x, y = _centre(obstacle_id)
     p.setPen(Qt.PenStyle.NoPen)
     if is_shadow:
         p.setBrush(SHADOW)
@@ -136,12 +156,12 @@ def _plant(p, is_shadow, at=(-0.62, 2.1)):
 
 
 def _second_plant(p, is_shadow):
-    _plant(p, is_shadow, at=(4.65, 2.1))
+    _plant(p, is_shadow, "second_plant")
 
 
-def _ball(p, is_shadow, at=(-0.55, -2.05)):
+def _ball(p, is_shadow):
     """A beach ball: six coloured slices."""
-    x, y = at
+    x, y = _centre("ball")
     p.setPen(Qt.PenStyle.NoPen)
     if is_shadow:
         p.setBrush(SHADOW)

@@ -5,12 +5,14 @@ Robot frame: x forward, y to the robot's left.
 """
 import math
 
-ROOM = (-1.0, -2.5, 5.0, 2.5)  # x0, y0, x1, y1 of the room's inside
+from ..world import WORLD
+
+ROOM = WORLD.area              # x0, y0, x1, y1 of the room's inside
 WALL = 0.14
-DOOR = (2.3, 3.2)              # gap in the bottom wall, x from..to
+DOOR = (2.3, 3.2)              # gap in the bottom wall, x from..to (drawn: the door swung open)
 WINDOW = (2.7, 4.5)            # glass in the top wall, x from..to
 
-BASE_RADIUS = 0.275
+BASE_RADIUS = WORLD.radius
 HEAD_CENTER = (0.03, 0.0)
 HEAD_RADIUS = 0.11
 SHOULDER = (0.03, -0.19)

@@ -9,6 +9,7 @@ from PySide6.QtGui import QColor, QPainter, QPixmap, QPolygonF, QTransform
 
 from rockly_desktop.sdk_view import cosmetic_pen, round_pen
 
+from ..world import WORLD
 from .drawing import arc, rounded
 from .furniture import paint_furniture
 from .geometry import DOOR, ROOM, WALL, WINDOW
@@ -116,9 +117,8 @@ def _paint_walls(p):
     x0, y0, x1, y1 = ROOM
     t = WALL
     edge = cosmetic_pen(WALL_EDGE, 1.2)
-    pieces = [QRectF(x0 - t, y1, x1 - x0 + 2 * t, t), QRectF(x0 - t, y0 - t, t, y1 - y0 + 2 * t),
-              QRectF(x1, y0 - t, t, y1 - y0 + 2 * t),
-              QRectF(x0 - t, y0 - t, DOOR[0] - x0 + t, t), QRectF(DOOR[1], y0 - t, x1 + t - DOOR[1], t)]
+    pieces = [QRectF(bx0, by0, bx1 - bx0, by1 - by0) for bx0, by0, bx1, by1 in
+              (wall.bounds for wall in WORLD.obstacles if wall.kind == "wall")]
     p.setPen(edge)
     p.setBrush(WALL_FILL)
     for piece in pieces:
