@@ -14,7 +14,7 @@ class Background:
     def _run(self, function):
         try:
             self.result = function()
-        except Exception as error:  # noqa: BLE001 - the test looks at it
+        except Exception as error:
             self.error = error
         finally:
             self.ended_at = time.monotonic()

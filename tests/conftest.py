@@ -16,8 +16,8 @@ os.environ["ROS_IP"] = "127.0.0.1"
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 os.environ.setdefault("QTWEBENGINE_DISABLE_SANDBOX", "1")
 
-import PySide6.QtWebEngineWidgets  # noqa: E402,F401 - must be imported before the QApplication exists
-import pytest  # noqa: E402
+import PySide6.QtWebEngineWidgets  # noqa: F401 - must be imported before the QApplication exists
+import pytest
 
 pytest_plugins = ["leak_check", "ros_fixtures"]
 

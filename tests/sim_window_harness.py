@@ -135,7 +135,7 @@ def _run_window(argv) -> int:
     from PySide6.QtCore import QObject, QPoint, QRect, Qt, QTimer, Signal
     from PySide6.QtGui import QColor, QImage, QPainter
     from PySide6.QtTest import QTest
-    from PySide6.QtWidgets import QApplication, QPushButton
+    from PySide6.QtWidgets import QPushButton
 
     from rockly_desktop import cli
     from rockly_desktop.app import create_application

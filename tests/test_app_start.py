@@ -2,7 +2,6 @@
 import threading
 
 import pytest
-
 from PySide6.QtCore import QTimer
 
 from rockly_desktop.app import while_events_run

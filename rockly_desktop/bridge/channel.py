@@ -20,7 +20,7 @@ PAGE_RELOADED = "the editor page was reloaded before it answered"
 class PageChannel(QObject):
     """The Python end of the editor page's channel (registered as ``rocklyBridge``)."""
 
-    toPage = Signal(str)  # noqa: N815 - name seen by the page's JavaScript
+    toPage = Signal(str)
     sig_hello = Signal()
     sig_event = Signal(object)  # a dict; "object" so numbers beyond 64 bits pass unconverted
 
@@ -78,7 +78,7 @@ class PageChannel(QObject):
             self._queued.append((message, call_id, callback, timeout_ms))
 
     @Slot(str)
-    def fromPage(self, text: str):  # noqa: N802 - name seen by the page's JavaScript
+    def fromPage(self, text: str):
         """Receive one JSON message from the page.
 
         Handling is deferred to the event loop: QWebChannel delivers no further

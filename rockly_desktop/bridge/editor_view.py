@@ -45,7 +45,7 @@ class EditorPage(QWebEnginePage):
 
     sig_js_error = Signal(str)
 
-    def javaScriptConsoleMessage(self, level, message, line, source):  # noqa: N802 - Qt override
+    def javaScriptConsoleMessage(self, level, message, line, source):
         """Qt override: log page messages; errors also go to ``sig_js_error``."""
         if level == QWebEnginePage.JavaScriptConsoleMessageLevel.ErrorMessageLevel:
             log.error("editor page: %s (%s:%s)", message, source, line)

@@ -15,7 +15,7 @@ class LocalOnlyInterceptor(QWebEngineUrlRequestInterceptor):
         self.requested = []
         self.blocked = []
 
-    def interceptRequest(self, info):  # noqa: N802 - Qt override
+    def interceptRequest(self, info):
         """Qt override: let local requests through, block the rest."""
         url = info.requestUrl()
         self.requested.append(url.toString())

@@ -28,6 +28,6 @@ class ProgramThread(QThread):
         else:
             self.sig_event.emit(event)
 
-    def run(self):  # noqa: D401 - Qt override
+    def run(self):
         """Qt override: the worker thread's body."""
         self.runner.run()

@@ -14,7 +14,14 @@ import traceback
 
 from rockly_desktop.core.errors import ProgramStopped
 from rockly_desktop.executor import large_results
-from rockly_desktop.executor.events import BlockEntered, OutputPrinted, RunFinished, RunPaused, RunResumed, VariablesChanged
+from rockly_desktop.executor.events import (
+    BlockEntered,
+    OutputPrinted,
+    RunFinished,
+    RunPaused,
+    RunResumed,
+    VariablesChanged,
+)
 from rockly_desktop.executor.problems import explain, text
 
 log = logging.getLogger(__name__)
@@ -107,7 +114,7 @@ class ProgramRunner:
         for display, python_name in self._variable_names.items():
             try:
                 values[display] = _SHORT.repr(self.globals.get(python_name))
-            except Exception as error:  # noqa: BLE001 - a value whose repr fails is still shown
+            except Exception as error:
                 values[display] = f"<{type(error).__name__}>"
         return values
 
@@ -119,13 +126,13 @@ class ProgramRunner:
         """Execute the program; always runs ``on_end`` and emits (and returns) RunFinished."""
         try:
             compiled = compile(self._code, PROGRAM_FILENAME, "exec")
-            exec(compiled, self.globals)  # noqa: S102 - running the user's program is the point
+            exec(compiled, self.globals)
             result = RunFinished("finished")
         except ProgramStopped:
             result = RunFinished("stopped", self.hooks.current_block)
         except SyntaxError as error:
             result = RunFinished("error", None, text("unreadable", self.language, detail=error.msg), traceback.format_exc())
-        except Exception as error:  # noqa: BLE001 - any error in the program ends the run with a message
+        except Exception as error:
             result = RunFinished("error", self.hooks.current_block, self.explain(error), _program_traceback(error))
         self._finish()
         self._emit(self.variables_event())
@@ -137,7 +144,7 @@ class ProgramRunner:
             return
         try:
             self._on_end()
-        except Exception:  # noqa: BLE001 - the safe stop is attempted; its failure must not hide the run's end
+        except Exception:
             log.exception("the safe stop failed")
             self._emit(OutputPrinted(text("unsafe_stop", self.language)))
 

@@ -14,11 +14,19 @@ from pathlib import Path
 
 from rockly_desktop.core.errors import ProgramFileError, UnknownBlocksError
 from rockly_desktop.core.program import load_program, read_text_file
-from rockly_desktop.core.workspace_checks import rounded_numbers, workspace_problem, xml_problem
 from rockly_desktop.core.workspace_blocks import (
-    MAX_BLOCK_DEPTH, block_depth, block_types_in_workspace, block_types_in_xml, parse_blockly_xml,
-    rename_legacy_fields, untyped_block_number, untyped_xml_block_number, xml_block_depth, xml_to_text,
+    MAX_BLOCK_DEPTH,
+    block_depth,
+    block_types_in_workspace,
+    block_types_in_xml,
+    parse_blockly_xml,
+    rename_legacy_fields,
+    untyped_block_number,
+    untyped_xml_block_number,
+    xml_block_depth,
+    xml_to_text,
 )
+from rockly_desktop.core.workspace_checks import rounded_numbers, workspace_problem, xml_problem
 from rockly_desktop.profiles.profile import Profile
 from rockly_desktop.profiles.registry import ProfileRegistry
 

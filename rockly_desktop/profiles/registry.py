@@ -40,7 +40,7 @@ def _entry_point_locations() -> list:
         source = f"entry point {entry_point.name}"
         try:
             spec = importlib.util.find_spec(package)
-        except Exception as error:  # noqa: BLE001 - a broken third-party package must not stop discovery
+        except Exception as error:
             spec, reason = None, f"{type(error).__name__}: {error}"
         else:
             reason = "no such package is installed"

@@ -92,7 +92,7 @@ class RosCommands(RobotCommands):
         except BaseException:
             try:
                 handle.cancel()
-            except Exception:  # noqa: BLE001 - the error that ended the wait is the one to report
+            except Exception:
                 _log.exception("could not cancel the goal on the action '%s'", action)
             raise
 

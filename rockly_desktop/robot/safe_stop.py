@@ -17,7 +17,7 @@ def run_safe_stop(actions, backend) -> list:
                 backend.publish(body["topic"], body["type"], dict(body.get("message") or {}))
             else:
                 backend.cancel_all_goals(body)
-        except Exception as error:  # noqa: BLE001 - every stop action is attempted
+        except Exception as error:
             log.warning("safe stop %s %s failed: %s", kind, body, error)
             failures.append(f"{kind} {body}: {error}")
     return failures

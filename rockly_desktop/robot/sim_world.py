@@ -176,7 +176,7 @@ class SimWorld:
 
         try:
             status, result, *reason = handler(goal, send_feedback, sim_goal.cancelled)
-        except Exception:  # noqa: BLE001 - a failing server aborts its goal, as actionlib does
+        except Exception:
             log.exception("the action server '%s' failed", sim_goal.action)
             status, result, reason = GoalStatus.ABORTED, {}, []
         with self._changed:

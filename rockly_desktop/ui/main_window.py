@@ -11,13 +11,13 @@ from rockly_desktop.ui.autosave import Autosave
 from rockly_desktop.ui.code_dock import CodeDock
 from rockly_desktop.ui.console_dock import ConsoleDock
 from rockly_desktop.ui.document import Document
-from rockly_desktop.ui.program_files import ProgramFiles
 from rockly_desktop.ui.health_bar import HealthBar
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.preferences import PreferencesDialog
+from rockly_desktop.ui.program_files import ProgramFiles
 from rockly_desktop.ui.recovery_prompt import RecoveryPrompt
-from rockly_desktop.ui.run_session import RunSession
 from rockly_desktop.ui.robot_choice import RobotChoice
+from rockly_desktop.ui.run_session import RunSession
 from rockly_desktop.ui.run_toolbar import RunToolbar
 from rockly_desktop.ui.simulator_dock import SimulatorDock
 from rockly_desktop.ui.state_panels import StatePanels
@@ -462,7 +462,7 @@ class MainWindow(QMainWindow):
 
     # --- closing ------------------------------------------------------------------------
 
-    def closeEvent(self, event):  # noqa: N802 - Qt override
+    def closeEvent(self, event):
         """Qt override: ask to save changes, then stop everything and remember the layout.
 
         When the program must first be saved (or a save is still waiting for the page),

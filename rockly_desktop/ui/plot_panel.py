@@ -16,8 +16,22 @@ import time
 import numpy as np
 from PySide6.QtCore import Qt, QTimer
 from PySide6.QtGui import QColor
-from PySide6.QtWidgets import (QComboBox, QCompleter, QFileDialog, QFormLayout, QHBoxLayout, QLabel, QLineEdit, QMenu,
-                               QMessageBox, QPushButton, QToolButton, QVBoxLayout, QWidget, QWidgetAction)
+from PySide6.QtWidgets import (
+    QComboBox,
+    QCompleter,
+    QFileDialog,
+    QFormLayout,
+    QHBoxLayout,
+    QLabel,
+    QLineEdit,
+    QMenu,
+    QMessageBox,
+    QPushButton,
+    QToolButton,
+    QVBoxLayout,
+    QWidget,
+    QWidgetAction,
+)
 
 from rockly_desktop.core.field_paths import numeric_paths, parse_mime_text
 from rockly_desktop.plotting.csv_export import write_tidy_csv
@@ -25,7 +39,7 @@ from rockly_desktop.plotting.samples import SampleBuffer, read_new_samples
 from rockly_desktop.ui.texts import tr
 
 os.environ.setdefault("PYQTGRAPH_QT_LIB", "PySide6")
-import pyqtgraph as pg  # noqa: E402 - after choosing its Qt binding
+import pyqtgraph as pg
 
 WINDOWS = ((10, "10 s"), (30, "30 s"), (60, "60 s"), (300, "5 min"))
 """The time windows on offer: (seconds, label)."""

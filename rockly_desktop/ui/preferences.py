@@ -1,7 +1,14 @@
 """The Preferences dialog: the language of the window and the blocks, putting the robot back before
 each Run; the teacher's settings."""
 from PySide6.QtWidgets import (
-    QCheckBox, QComboBox, QDialog, QDialogButtonBox, QFormLayout, QTabWidget, QVBoxLayout, QWidget,
+    QCheckBox,
+    QComboBox,
+    QDialog,
+    QDialogButtonBox,
+    QFormLayout,
+    QTabWidget,
+    QVBoxLayout,
+    QWidget,
 )
 
 from rockly_desktop.ui.teacher_tab import TeacherTab

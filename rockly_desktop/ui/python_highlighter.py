@@ -34,7 +34,7 @@ class PythonHighlighter(QSyntaxHighlighter):
     highlighter is exact for generated code.
     """
 
-    def highlightBlock(self, text: str):  # noqa: N802 - Qt override
+    def highlightBlock(self, text: str):
         """Qt override: colour one line."""
         for pattern, text_format in _RULES:
             for match in pattern.finditer(text):

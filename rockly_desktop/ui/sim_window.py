@@ -78,7 +78,7 @@ class SimulatorWindow(QMainWindow):
     def _show_notice(self, _robot: str, text: str):
         self.statusBar().showMessage(tr("robot_says", self.language, text=text))
 
-    def closeEvent(self, event):  # noqa: N802 - Qt override
+    def closeEvent(self, event):
         """Closing the window ends the simulated robot (``sig_closed``)."""
         self._timer.stop()
         super().closeEvent(event)

@@ -45,7 +45,7 @@ class LocalizedNumbers(string.Formatter):
         return text
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def number_format(language: str) -> LocalizedNumbers:
     """The formatter for ``language`` (made once)."""
     return LocalizedNumbers(language)

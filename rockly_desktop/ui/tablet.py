@@ -61,7 +61,7 @@ class TabletDialog(QDialog):
         self.request.answered = True
         self.accept()
 
-    def done(self, result):  # noqa: D401 - Qt override
+    def done(self, result):
         """Qt override: whatever closes the dialog answers the request."""
         super().done(result)
         self.request.done.set()

@@ -41,13 +41,13 @@ class TopicTableModel(QAbstractTableModel):
         self._index = {}
         self._silent = QPalette().color(QPalette.ColorRole.PlaceholderText)  # topics without messages yet
 
-    def rowCount(self, parent=QModelIndex()):  # noqa: N802 - Qt's name
+    def rowCount(self, parent=QModelIndex()):
         return 0 if parent.isValid() else len(self._rows)
 
-    def columnCount(self, parent=QModelIndex()):  # noqa: N802
+    def columnCount(self, parent=QModelIndex()):
         return 0 if parent.isValid() else len(HEADERS)
 
-    def headerData(self, section, orientation, role=Qt.ItemDataRole.DisplayRole):  # noqa: N802
+    def headerData(self, section, orientation, role=Qt.ItemDataRole.DisplayRole):
         if orientation == Qt.Orientation.Horizontal and role == Qt.ItemDataRole.DisplayRole:
             return tr(HEADERS[section], self._language)
         if orientation == Qt.Orientation.Horizontal and role == Qt.ItemDataRole.TextAlignmentRole:
@@ -170,10 +170,10 @@ class MessageModel(QStandardItemModel):
             return QModelIndex()
         return find(self.invisibleRootItem())
 
-    def mimeTypes(self):  # noqa: N802
+    def mimeTypes(self):
         return [MIME_TYPE]
 
-    def mimeData(self, indexes):  # noqa: N802
+    def mimeData(self, indexes):
         for index in indexes:
             path = self.plot_path(index)
             if path:

@@ -13,13 +13,36 @@ import time
 
 from PySide6.QtCore import QItemSelectionModel, QSortFilterProxyModel, Qt, QTimer, Signal
 from PySide6.QtGui import QPalette
-from PySide6.QtWidgets import (QAbstractItemView, QHBoxLayout, QHeaderView, QLabel, QLineEdit, QSplitter,
-                               QStackedWidget, QStyle, QTableView, QToolButton, QTreeView, QVBoxLayout, QWidget)
+from PySide6.QtWidgets import (
+    QAbstractItemView,
+    QHBoxLayout,
+    QHeaderView,
+    QLabel,
+    QLineEdit,
+    QSplitter,
+    QStackedWidget,
+    QStyle,
+    QTableView,
+    QToolButton,
+    QTreeView,
+    QVBoxLayout,
+    QWidget,
+)
 
 from rockly_desktop.core.topic_rows import topic_entries
 from rockly_desktop.ui.texts import tr
-from rockly_desktop.ui.topic_models import (AGE, FILTER_ROLE, HEADERS, PUBLISHERS, RATE, SORT_ROLE, TOPIC, TYPE,
-                                            MessageModel, TopicTableModel)
+from rockly_desktop.ui.topic_models import (
+    AGE,
+    FILTER_ROLE,
+    HEADERS,
+    PUBLISHERS,
+    RATE,
+    SORT_ROLE,
+    TOPIC,
+    TYPE,
+    MessageModel,
+    TopicTableModel,
+)
 
 REFRESH_MS = 100          # at most 10 updates a second
 GRAPH_INTERVAL = 1.0      # seconds between two questions to the ROS graph on the timer
@@ -211,16 +234,16 @@ class TopicMonitor(QWidget):
 
     # -- Qt events
 
-    def showEvent(self, event):  # noqa: N802
+    def showEvent(self, event):
         super().showEvent(event)
         self.refresh()
         self._timer.start()
 
-    def hideEvent(self, event):  # noqa: N802
+    def hideEvent(self, event):
         self._timer.stop()
         super().hideEvent(event)
 
-    def resizeEvent(self, event):  # noqa: N802
+    def resizeEvent(self, event):
         super().resizeEvent(event)
         narrow = event.size().width() < 620 and event.size().height() > event.size().width() * 0.8
         wanted = Qt.Orientation.Vertical if narrow else Qt.Orientation.Horizontal
@@ -246,7 +269,7 @@ class TopicMonitor(QWidget):
             self._graph_time = time.monotonic()
             try:
                 self._graph_topics = list(self._graph())
-            except Exception:  # noqa: BLE001 - a lost ROS master must not break the panel: keep the last list
+            except Exception:
                 pass
         entries = topic_entries(infos, None if self._graph is None else self._graph_topics)
         self.table_model.update(entries)

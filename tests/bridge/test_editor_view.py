@@ -1,8 +1,6 @@
 """The Blockly page in QtWebEngine: start-up, toolbox, the JSON channel, offline, undo."""
-import pytest
 from page_tools import add_block_as_user, block_types_on_page, run_js, toolbox_names
 from program_builder import block, number, workspace
-
 from PySide6.QtCore import QUrl
 from PySide6.QtWebEngineCore import QWebEnginePage
 

@@ -1,6 +1,11 @@
 """Field paths of message dicts: the drag text of a field, numeric paths, the rows of a message tree."""
-from rockly_desktop.core.field_paths import (MAX_INDEXED_ITEMS, child_fields, field_mime_text, numeric_paths,
-                                             parse_mime_text)
+from rockly_desktop.core.field_paths import (
+    MAX_INDEXED_ITEMS,
+    child_fields,
+    field_mime_text,
+    numeric_paths,
+    parse_mime_text,
+)
 
 X = "pose.pose.position.x"
 

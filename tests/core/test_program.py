@@ -12,7 +12,13 @@ import pytest
 from rockly_desktop.core import program as program_module
 from rockly_desktop.core.errors import ProgramFileError
 from rockly_desktop.core.program import (
-    FORMAT_NAME, FORMAT_VERSION, Program, load_program, parse_program, save_program, write_text_atomically,
+    FORMAT_NAME,
+    FORMAT_VERSION,
+    Program,
+    load_program,
+    parse_program,
+    save_program,
+    write_text_atomically,
 )
 
 REPO = Path(__file__).resolve().parents[2]
@@ -83,7 +89,7 @@ def test_saved_file_is_readable_utf8_json_with_the_envelope_first(tmp_path):
     save_program(path, Program("hobbit", hobbit_workspace(["Grüße 😀"])))
 
     raw = path.read_bytes()
-    assert "Grüße 😀".encode("utf-8") in raw, "non-ASCII text is stored as itself, not as \\u escapes"
+    assert "Grüße 😀".encode() in raw, "non-ASCII text is stored as itself, not as \\u escapes"
     assert raw.endswith(b"\n")
     document = json.loads(raw.decode("utf-8"))
     assert list(document) == ["format", "version", "profile", "workspace", "breakpoints"]
@@ -347,7 +353,7 @@ def test_a_fifo_is_written_into_not_replaced(tmp_path):
     reader.start()
     write_text_atomically(fifo, "print('hi') # Grüße\n")
     reader.join(10)
-    assert received == ["print('hi') # Grüße\n".encode("utf-8")]
+    assert received == ["print('hi') # Grüße\n".encode()]
     assert stat.S_ISFIFO(os.stat(fifo).st_mode)
     assert files_in(tmp_path) == ["pipe"]
 

@@ -8,8 +8,14 @@ import yaml
 
 from rockly_desktop.core.errors import ProgramFileError
 from rockly_desktop.core.workspace_blocks import (
-    block_types_in_workspace, block_types_in_xml, blocks_in_file_order, parse_blockly_xml, rename_legacy_fields,
-    untyped_block_number, untyped_xml_block_number, xml_to_text,
+    block_types_in_workspace,
+    block_types_in_xml,
+    blocks_in_file_order,
+    parse_blockly_xml,
+    rename_legacy_fields,
+    untyped_block_number,
+    untyped_xml_block_number,
+    xml_to_text,
 )
 
 REPO = Path(__file__).resolve().parents[2]

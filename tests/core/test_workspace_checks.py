@@ -2,8 +2,8 @@
 import xml.etree.ElementTree as ElementTree
 
 import pytest
-
 from program_builder import block, stack, workspace
+
 from rockly_desktop.core.workspace_checks import MAX_EXTRA_ITEMS, workspace_problem, xml_problem
 
 BAD_BLOCKS = [

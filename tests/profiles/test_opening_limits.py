@@ -1,7 +1,7 @@
 """Opening very large and very deep programs: up to the limit they open, past it they are refused clearly."""
 import pytest
-
 from program_builder import block, rockly_document, stack
+
 from rockly_desktop.core.errors import ProgramFileError
 from rockly_desktop.core.workspace_blocks import MAX_BLOCK_DEPTH
 from rockly_desktop.profiles.opening import read_program_to_open

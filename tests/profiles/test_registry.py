@@ -1,4 +1,5 @@
 """Finding profiles: built-in, the user's folder, extra folders and entry points; lazy code import."""
+import importlib.metadata
 import json
 import os
 import shutil
@@ -6,7 +7,6 @@ import subprocess
 import sys
 import textwrap
 
-import importlib.metadata
 import pytest
 from profile_copies import HOBBIT_DIR, REPO, SHARED_TOOLBOXES, copy_profile
 

@@ -8,7 +8,6 @@ from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.ros_commands import RosCommands
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
 
-
 ARM = ("hobbit_arm", "hobbit_msgs/ArmServerAction")
 PREEMPTED = 2  # actionlib_msgs/GoalStatus
 

@@ -3,8 +3,8 @@ import threading
 import time
 
 import pytest
-
 from background import Background
+
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError, RobotTimeout
 from rockly_desktop.robot.interface import GoalStatus
 from rockly_desktop.robot.interrupt import Interrupt

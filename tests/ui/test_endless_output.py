@@ -1,5 +1,5 @@
 """A program printing in a tight loop: its output reaches the console in batches, and STOP ends it."""
-from program_builder import block, text, workspace
+from program_builder import block, text
 from test_running import load
 
 from rockly_desktop.executor.events import OutputPrinted

@@ -1,11 +1,11 @@
 """The main window as a person meets it: toolbox, Code dock, status, languages, memory, profiles."""
 import shutil
 
-from window_tools import WindowDriver, error_boxes, state
 from page_tools import toolbox_names
 from program_builder import block, number, rockly_document
 from PySide6.QtCore import QCoreApplication
 from PySide6.QtWidgets import QMessageBox
+from window_tools import WindowDriver, error_boxes, state
 
 from rockly_desktop.ui.preferences import PreferencesDialog
 

@@ -5,10 +5,10 @@ import stat
 import threading
 
 import pytest
-from window_tools import completed, error_boxes, state
 from page_tools import add_block_as_user
 from program_builder import block, number, rockly_document, stack, text
 from PySide6.QtWidgets import QMessageBox
+from window_tools import completed, error_boxes, state
 
 from rockly_desktop.core.program import load_program
 from rockly_desktop.ui.settings import AppSettings

@@ -1,11 +1,11 @@
 """Running programs in the window on the built-in simulator: run, step, breakpoints, stop, errors."""
 import pytest
 from fake_time import FakeTime
-from window_tools import completed
 from page_tools import call_page, run_js
 from program_builder import block, number, stack, text, workspace
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QApplication, QMessageBox
+from window_tools import completed
 
 from rockly_desktop.robot import interrupt
 from rockly_desktop.ui.tablet import TabletDialog

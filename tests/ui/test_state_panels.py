@@ -1,5 +1,4 @@
 """The HOBBIT state panels, from the manifest, fed by the built-in simulator during a run."""
-import pytest
 from page_tools import call_page
 from program_builder import block, number, stack, text, workspace
 

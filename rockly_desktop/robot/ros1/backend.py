@@ -281,7 +281,7 @@ class Ros1Backend(RobotBackend):
             def probe():
                 try:
                     proxy.wait_for_service(timeout=0.05)
-                except Exception:  # noqa: BLE001 - not there yet
+                except Exception:
                     return False
                 return True
 

@@ -197,7 +197,11 @@ def _register_again():
     would otherwise never connect this node to anyone again.
     """
     from rospy.impl.registration import (
-        RegManager, Registration, get_registration_listeners, get_service_manager, get_topic_manager,
+        Registration,
+        RegManager,
+        get_registration_listeners,
+        get_service_manager,
+        get_topic_manager,
     )
 
     topics, services = get_topic_manager(), get_service_manager()

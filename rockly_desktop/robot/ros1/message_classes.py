@@ -31,8 +31,13 @@ import genpy
 
 from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.core.ros_definitions import installed_definition_dirs
-from rockly_desktop.robot.ros1.message_generation import (PROCESS_LOCK, DefinitionSource, MessageDefinitionError,
-                                                          PackageGenerator, default_cache_dir)
+from rockly_desktop.robot.ros1.message_generation import (
+    PROCESS_LOCK,
+    DefinitionSource,
+    MessageDefinitionError,
+    PackageGenerator,
+    default_cache_dir,
+)
 from rockly_desktop.robot.ros1.message_values import from_message, slot_class, to_message
 
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")

@@ -147,5 +147,5 @@ class ServiceCaller:
 def _call(proxy, request, outcome):
     try:
         outcome.response = proxy.call(to_message(proxy.request_class, request))
-    except Exception as error:  # noqa: BLE001 - reported to the program by the backend
+    except Exception as error:
         outcome.error = error

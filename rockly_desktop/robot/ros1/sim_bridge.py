@@ -135,7 +135,7 @@ class SimulatorNode:
         if hasattr(self.simulator, "safe_stop"):
             try:
                 self.simulator.safe_stop()
-            except Exception:  # noqa: BLE001 - shutting down regardless
+            except Exception:
                 log.exception("the simulator's safe stop failed")
         self.simulator.shutdown()
         self.connection.shutdown("rockly sim ended")

@@ -54,7 +54,7 @@ class RosStateFeed:
                                           for topic, msg_type in types.items())
                     for topic, msg_type in types.items():
                         self._follow(topic, msg_type)
-                except Exception as error:  # noqa: BLE001 - the watchdog reports a lost master
+                except Exception as error:
                     log.debug("reading the ROS graph failed: %s", error)
             self._stopped.wait(POLL_SECONDS)
 
@@ -63,7 +63,7 @@ class RosStateFeed:
             return
         try:
             entry = self._ros_graph.topic(topic, msg_type)
-        except Exception as error:  # noqa: BLE001 - a type this machine cannot decode is shown without messages
+        except Exception as error:
             log.info("cannot follow %s (%s): %s", topic, msg_type, error)
             self._unknown.add((topic, msg_type))
             return

@@ -3,7 +3,13 @@ import math
 
 from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import (
-    QBrush, QColor, QLinearGradient, QPainterPath, QPainterPathStroker, QPolygonF, QRadialGradient,
+    QBrush,
+    QColor,
+    QLinearGradient,
+    QPainterPath,
+    QPainterPathStroker,
+    QPolygonF,
+    QRadialGradient,
 )
 
 from rockly_desktop.sdk_view import round_pen, with_alpha

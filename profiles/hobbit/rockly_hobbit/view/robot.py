@@ -15,7 +15,19 @@ from .animation import lerp
 from .drawing import arc, wedge
 from .geometry import BASE_RADIUS, HEAD_CENTER, HEAD_RADIUS, SHOULDER, TURNTABLE, TURNTABLE_RADIUS
 from .palette import (
-    ARM, ARM_EDGE, BASE_COLOR, BASE_EDGE, BODY, BODY_EDGE, BUMPER, GRIPPER, HEAD, SOS, VIEW_CONE, VIEW_CONE_EDGE, VISOR,
+    ARM,
+    ARM_EDGE,
+    BASE_COLOR,
+    BASE_EDGE,
+    BODY,
+    BODY_EDGE,
+    BUMPER,
+    GRIPPER,
+    HEAD,
+    SOS,
+    VIEW_CONE,
+    VIEW_CONE_EDGE,
+    VISOR,
 )
 from .snapshot import num
 

@@ -13,7 +13,17 @@ from rockly_desktop.sdk_view import card, decimal, sized_font, with_alpha
 
 from . import model
 from .palette import (
-    BAR_BG, BATTERY_EMPTY, BATTERY_LOW, BATTERY_OK, DRIVE, INK, INK_SOFT, PLATE, RADAR_BG, RADAR_RING, TURN,
+    BAR_BG,
+    BATTERY_EMPTY,
+    BATTERY_LOW,
+    BATTERY_OK,
+    DRIVE,
+    INK,
+    INK_SOFT,
+    PLATE,
+    RADAR_BG,
+    RADAR_RING,
+    TURN,
     distance_colour,
 )
 from .scan import paint_radar_hits

@@ -12,7 +12,19 @@ from rockly_desktop.sdk_view import cosmetic_pen, round_pen, with_alpha
 
 from . import model
 from .palette import (
-    BUMP, BUMP_GLOW, FRONT, LIDAR, LIDAR_EDGE, LIDAR_WINDOW, PLATE, PLATE_EDGE, PLATE_RING, SHADOW, TRAIL, TREAD, WHEEL,
+    BUMP,
+    BUMP_GLOW,
+    FRONT,
+    LIDAR,
+    LIDAR_EDGE,
+    LIDAR_WINDOW,
+    PLATE,
+    PLATE_EDGE,
+    PLATE_RING,
+    SHADOW,
+    TRAIL,
+    TREAD,
+    WHEEL,
 )
 
 MIN_PX = 34          # the robot is drawn at least this wide (up to 1.8x its real size) on small maps

@@ -9,7 +9,7 @@ from rockly_desktop.sdk_view import chip, decimal, sized_font
 
 from . import model
 from .layout import layout_for, map_transform
-from .palette import BUMP, INK, MAP_BORDER, PANEL_BG, PLATE
+from .palette import BUMP, INK, MAP_BORDER, PANEL_BG
 from .panel import paint_panel
 from .robot import paint_robot, paint_trail
 from .room import RoomPixmap
