@@ -32,6 +32,7 @@ run: setup
 	$(PY) -m rockly_desktop
 
 test: setup
+	$(VENV)/bin/ruff check .
 	$(TEST_ENV) $(VENV)/bin/lint-imports
 	$(TEST_ENV) $(PY) -m pytest
 
