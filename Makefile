@@ -36,7 +36,9 @@ test: setup
 	$(TEST_ENV) $(VENV)/bin/lint-imports
 	$(TEST_ENV) $(PY) -m pytest
 
+# Byte-compiled first, as an installed Rockly is (the bare-Blockly baseline's PySide6 is too).
 bench: setup
+	$(PY) -m compileall -q rockly_desktop profiles
 	$(TEST_ENV) $(PY) benchmarks/run_all.py
 
 clean:
