@@ -3,7 +3,10 @@ from waiting import eventually
 
 
 class FakeTime:
-    """Stands in for a module's ``time`` (``monkeypatch.setattr(module, "time", FakeTime())``): ``monotonic()`` is ``now``."""
+    """Stands in for a module's ``time`` (``monkeypatch.setattr(module, "time", FakeTime())``).
+
+    ``monotonic()`` is ``now``.
+    """
 
     def __init__(self):
         self.now = 0.0

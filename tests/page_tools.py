@@ -5,7 +5,8 @@ import json
 def run_js(qtbot, view, script: str):
     """Evaluate ``script`` in the editor page and return its (JSON-able) value."""
     holder = []
-    wrapped = f"(() => {{ try {{ return JSON.stringify({{value: ({script})}}); }} catch (e) {{ return JSON.stringify({{error: String(e)}}); }} }})()"
+    wrapped = (f"(() => {{ try {{ return JSON.stringify({{value: ({script})}}); }} "
+               "catch (e) { return JSON.stringify({error: String(e)}); } })()")
     view.page().runJavaScript(wrapped, 0, holder.append)
     qtbot.waitUntil(lambda: bool(holder), timeout=10000)
     answer = json.loads(holder[0])

@@ -1,4 +1,6 @@
 """Building Blockly JSON workspaces and .rockly documents in tests, readably."""
+from itertools import pairwise
+
 from rockly_desktop.core import deep_json
 
 
@@ -26,7 +28,7 @@ def text(value):
 
 def stack(*blocks):
     """Chain statement blocks one under the other; return the first."""
-    for upper, lower in zip(blocks, blocks[1:]):
+    for upper, lower in pairwise(blocks):
         upper["next"] = {"block": lower}
     return blocks[0]
 

@@ -173,7 +173,8 @@ def _run_window(argv) -> int:
         if open_now:
             picture = open_now[0].grab()
             corner = QPoint(max(0, (image.width() - picture.width()) // 3), image.height() - picture.height() - 60)
-            painter.fillRect(corner.x() - 2, corner.y() - 2, picture.width() + 4, picture.height() + 4, QColor("#37474f"))
+            painter.fillRect(corner.x() - 2, corner.y() - 2, picture.width() + 4, picture.height() + 4,
+                             QColor("#37474f"))
             painter.drawPixmap(corner, picture)
         painter.end()
         Path(path).parent.mkdir(parents=True, exist_ok=True)

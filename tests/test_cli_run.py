@@ -40,8 +40,9 @@ def test_the_pick_up_program_runs_block_by_block(tmp_path):
 
 def test_tablet_questions_are_answered_in_order_from_the_command_line(tmp_path):
     program = write(tmp_path, stack(
-        block("controls_if", id="if", inputs={"IF0": block("hobbit_yes_no", {"yes_no": "D_YES"}, {"text": text("Play?")}),
-                                              "DO0": block("text_print", inputs={"TEXT": text("playing")}, id="yes")}),
+        block("controls_if", id="if",
+              inputs={"IF0": block("hobbit_yes_no", {"yes_no": "D_YES"}, {"text": text("Play?")}),
+                      "DO0": block("text_print", inputs={"TEXT": text("playing")}, id="yes")}),
         block("text_print", inputs={"TEXT": block("hobbit_user_input", inputs={"text": text("Name?")})}, id="name")))
     result = rockly_run(program, "--answer", "yes", "--answer", "Ada 'the' \"first\"", "--speed", "50")
     assert result.returncode == 0, result.stderr
@@ -50,7 +51,8 @@ def test_tablet_questions_are_answered_in_order_from_the_command_line(tmp_path):
 
 
 def test_a_missing_answer_fails_clearly_on_the_asking_block(tmp_path):
-    program = write(tmp_path, block("text_print", inputs={"TEXT": block("hobbit_user_input", inputs={"text": text("Name?")})}, id="ask"))
+    question = block("hobbit_user_input", inputs={"text": text("Name?")})
+    program = write(tmp_path, block("text_print", inputs={"TEXT": question}, id="ask"))
     result = rockly_run(program, "--speed", "50")
     assert result.returncode == 1
     assert "error in block ask (text_print)" in result.stderr
@@ -59,14 +61,17 @@ def test_a_missing_answer_fails_clearly_on_the_asking_block(tmp_path):
 
 def test_an_error_exits_non_zero_naming_the_block(tmp_path):
     path = tmp_path / "typed.rockly"
-    ws_blocks = stack(block("variables_set", {"VAR": {"id": "d"}}, {"VALUE": block("text", {"TEXT": "far"})}, id="fine"),
-                      block("hobbit_move", {"direction": "+"}, {"speed": block("variables_get", {"VAR": {"id": "d"}})}, id="bad"))
+    distance = block("variables_get", {"VAR": {"id": "d"}})
+    far = block("text", {"TEXT": "far"})
+    ws_blocks = stack(block("variables_set", {"VAR": {"id": "d"}}, {"VALUE": far}, id="fine"),
+                      block("hobbit_move", {"direction": "+"}, {"speed": distance}, id="bad"))
     document = json.loads(rockly_document([ws_blocks]))
     document["workspace"]["variables"] = [{"name": "distance", "id": "d"}]
     path.write_text(json.dumps(document))
     result = rockly_run(path, "--speed", "50")
     assert result.returncode == 1
-    assert "error in block bad (hobbit_move): The robot could not do this: the distance must be a number, not 'far'" in result.stderr
+    assert ("error in block bad (hobbit_move): The robot could not do this: "
+            "the distance must be a number, not 'far'") in result.stderr
 
 
 def test_a_typed_field_given_a_text_stops_on_its_block_before_publishing(tmp_path):

@@ -32,7 +32,8 @@ def _desktop_entries():
 def test_desktop_file_passes_desktop_file_validate():
     validator = shutil.which(VALIDATOR) or ("/usr/bin/" + VALIDATOR if Path("/usr/bin", VALIDATOR).exists() else None)
     if validator is None:
-        pytest.fail(f"{VALIDATOR} is missing; it belongs to our set-up: scripts/setup-system.sh installs desktop-file-utils")
+        pytest.fail(f"{VALIDATOR} is missing; it belongs to our set-up: "
+                    "scripts/setup-system.sh installs desktop-file-utils")
     result = subprocess.run([validator, str(DESKTOP_FILE)], capture_output=True, text=True, timeout=30)
     output = (result.stdout + result.stderr).strip()
     assert output == "", f"{VALIDATOR} complained:\n{output}"

@@ -93,7 +93,8 @@ def test_a_workspace_blockly_cannot_load_leaves_the_current_one(qtbot, editor):
 
 def test_unknown_block_types_are_refused_before_the_workspace_changes(qtbot, editor):
     call(qtbot, editor, "load", {"workspace": workspace(block("hobbit_stop"))})
-    program = workspace(block("turtle_go", next_block=block("hobbit_sos")), block("controls_if", inputs={"IF0": block("lidar_ok")}))
+    program = workspace(block("turtle_go", next_block=block("hobbit_sos")),
+                        block("controls_if", inputs={"IF0": block("lidar_ok")}))
     assert call(qtbot, editor, "load", {"workspace": program}) == ({"unknownTypes": ["lidar_ok", "turtle_go"]}, None)
     xml = '<xml><block type="hobbit_sos"><next><block type="fly_away"></block></next></block></xml>'
     assert call(qtbot, editor, "importXml", {"xml": xml}) == ({"unknownTypes": ["fly_away"]}, None)

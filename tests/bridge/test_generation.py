@@ -73,7 +73,8 @@ ROS_STATEMENTS = [
     (block("ros_log", {"level": "warn"}, {"text": text("careful")}), "ros.log('warn', 'careful')"),
 ]
 ROS_EXPRESSIONS = [
-    (block("ros_wait_message", inputs={"topic": text("/odom"), "timeout": number(5)}), "ros.wait_for_message('/odom', 5)"),
+    (block("ros_wait_message", inputs={"topic": text("/odom"), "timeout": number(5)}),
+     "ros.wait_for_message('/odom', 5)"),
     (block("ros_message_field", inputs={"path": text("pose.pose.position.x"),
                                         "message": block("ros_wait_message", inputs={"topic": text("/odom")})}),
      "ros.field(ros.wait_for_message('/odom', 10), 'pose.pose.position.x')"),
@@ -103,10 +104,12 @@ def test_generic_ros_value_blocks(headless_editor, hobbit, expression, expected)
 
 @pytest.mark.parametrize(("expression", "expected"), EXPRESSIONS, ids=[b["type"] for b, _ in EXPRESSIONS])
 def test_sensor_blocks_become_their_queries(headless_editor, hobbit, expression, expected):
-    assert generate(headless_editor, hobbit, block("text_print", inputs={"TEXT": expression})).strip() == f"print({expected})"
+    code = generate(headless_editor, hobbit, block("text_print", inputs={"TEXT": expression}))
+    assert code.strip() == f"print({expected})"
 
 
-@pytest.mark.parametrize(("program", "expected"), STATEMENTS, ids=[f"{b['type']}-{i}" for i, (b, _) in enumerate(STATEMENTS)])
+@pytest.mark.parametrize(("program", "expected"), STATEMENTS,
+                         ids=[f"{b['type']}-{i}" for i, (b, _) in enumerate(STATEMENTS)])
 def test_statement_block_becomes_its_command(headless_editor, hobbit, program, expected):
     assert generate(headless_editor, hobbit, program).strip() == expected
 
@@ -191,7 +194,8 @@ def test_user_text_reaches_python_as_the_exact_string_never_as_code(headless_edi
     for value in NASTY_TEXTS:
         code = generate(headless_editor, hobbit, _as_statement(block_type, input_name, value))
         tree = ast.parse(code)
-        strings = [node.value for node in ast.walk(tree) if isinstance(node, ast.Constant) and isinstance(node.value, str)]
+        strings = [node.value for node in ast.walk(tree)
+                   if isinstance(node, ast.Constant) and isinstance(node.value, str)]
         assert value in strings, f"{value!r} not carried exactly by {code!r}"
         assert not [node for node in ast.walk(tree) if isinstance(node, (ast.Import, ast.ImportFrom))]
         calls = [node.func for node in ast.walk(tree) if isinstance(node, ast.Call)]
@@ -216,4 +220,5 @@ def test_block_comments_never_become_code(headless_editor, hobbit):
             calls = [node.func.attr if isinstance(node.func, ast.Attribute) else node.func.id
                      for node in ast.walk(tree) if isinstance(node, ast.Call)]
             assert "print" not in calls, (comment, code)
-            assert [line for line in code.replace("\r", "\n").splitlines() if "INJECTED" in line and not line.lstrip().startswith("#")] == []
+            assert [line for line in code.replace("\r", "\n").splitlines()
+                    if "INJECTED" in line and not line.lstrip().startswith("#")] == []

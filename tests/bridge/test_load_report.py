@@ -30,7 +30,8 @@ def test_replaced_values_are_found_everywhere_and_numbered_in_file_order(qtbot, 
         block("hobbit_stop", {"brakes": "hard"}),
     ))
     result = load(qtbot, editor, program)
-    found = [(entry["number"], entry["type"], entry["field"], entry["requested"], entry.get("now"), entry.get("missing"))
+    found = [(entry["number"], entry["type"], entry["field"], entry["requested"],
+              entry.get("now"), entry.get("missing"))
              for entry in result["replacedFields"]]
     assert found == [
         (2, "hobbit_yes_no", "yes_no", "D_MAYBE", "D_YES", None),
@@ -65,7 +66,8 @@ def test_a_bad_value_in_a_shadow_covered_by_a_block_is_reported_too(qtbot, edito
     covered = {"type": "hobbit_move", "fields": {"direction": "+"},
                "inputs": {"speed": {"shadow": number("fast"), "block": number(3)}}}
     result = load(qtbot, editor, workspace(covered))
-    assert [(entry["number"], entry["requested"], entry["now"]) for entry in result["replacedFields"]] == [(2, "fast", 0)]
+    replaced = [(entry["number"], entry["requested"], entry["now"]) for entry in result["replacedFields"]]
+    assert replaced == [(2, "fast", 0)]
     saved = call_page(qtbot, editor, "getState")["workspace"]["blocks"]["blocks"][0]["inputs"]["speed"]
     assert saved["shadow"]["fields"]["NUM"] == 0 and saved["block"]["fields"]["NUM"] == 3
 
@@ -78,8 +80,9 @@ def test_xml_import_reports_replaced_values_too(qtbot, editor):
            '<shadow type="math_number"><field name="NUM">2</field></shadow></value></block></xml>')
     result = call_page(qtbot, editor, "importXml", {"xml": xml})
     assert result["loaded"] is True
-    assert [(entry["number"], entry["field"], entry["requested"], entry["now"]) for entry in result["replacedFields"]] == [
-        (2, "emotion", "FURIOUS", "HAPPY")]
+    replaced = [(entry["number"], entry["field"], entry["requested"], entry["now"])
+                for entry in result["replacedFields"]]
+    assert replaced == [(2, "emotion", "FURIOUS", "HAPPY")]
 
 
 @pytest.mark.parametrize("untyped", [{}, {"type": ""}, {"type": 7}])

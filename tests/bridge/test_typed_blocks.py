@@ -13,7 +13,8 @@ FIELD_INPUTS = """(() => {
 
 
 def choose_type(qtbot, view, block_id, field, value):
-    run_js(qtbot, view, f"Blockly.getMainWorkspace().getBlockById({block_id!r}).setFieldValue({value!r}, {field!r}) || true")
+    run_js(qtbot, view,
+           f"Blockly.getMainWorkspace().getBlockById({block_id!r}).setFieldValue({value!r}, {field!r}) || true")
 
 
 def test_the_publish_block_grows_one_checked_input_per_field_of_the_chosen_type(qtbot, editor):
@@ -43,7 +44,8 @@ def test_a_number_field_refuses_a_text_block(qtbot, editor):
     fits = run_js(qtbot, editor, f"""(() => {{
         const ws = Blockly.getMainWorkspace();
         const input = ws.getBlockById({block_id!r}).getInput('field:linear.x');
-        const fits = (type) => ws.connectionChecker.canConnect(input.connection, ws.newBlock(type).outputConnection, false);
+        const fits = (type) => ws.connectionChecker.canConnect(
+            input.connection, ws.newBlock(type).outputConnection, false);
         return [fits('text'), fits('math_number'), fits('math_arithmetic'), fits('logic_boolean')]; }})()""")
     assert fits == [False, True, True, False]
 
@@ -67,19 +69,23 @@ def test_a_saved_typed_block_opens_with_its_fields_even_where_its_type_is_unknow
                   id="beep", extraState={"type": "lab_msgs/Beep", "fields": [["pitch", "Number"], ["label", "String"]]})
     call_page(qtbot, editor, "load", {"workspace": workspace(saved)})
     state = call_page(qtbot, editor, "getState")
-    assert state["python"].strip() == "ros.publish_message('/beep', 'lab_msgs/Beep', {'pitch': 440, 'label': 'say \"hi\"\\n'})"
+    assert state["python"].strip() == ("ros.publish_message('/beep', 'lab_msgs/Beep', "
+                                       "{'pitch': 440, 'label': 'say \"hi\"\\n'})")
     again = state["workspace"]["blocks"]["blocks"][0]
-    assert again["extraState"] == {"type": "lab_msgs/Beep", "fields": [["pitch", "Number", None], ["label", "String", None]]}
+    assert again["extraState"] == {"type": "lab_msgs/Beep",
+                                   "fields": [["pitch", "Number", None], ["label", "String", None]]}
     assert again["fields"]["message_type"] == "lab_msgs/Beep"
 
 
 def test_a_goal_with_a_while_waiting_handler_becomes_a_function_the_command_calls(headless_editor, hobbit):
+    feedback = block("variables_get", {"VAR": {"id": "fb"}})
     handler = block("variables_set", {"VAR": {"id": "seen"}}, {"VALUE": block(
-        "ros_message_field", inputs={"path": text("feedback.data"), "message": block("variables_get", {"VAR": {"id": "fb"}})})})
+        "ros_message_field", inputs={"path": text("feedback.data"), "message": feedback})})
     goal = block("ros_send_goal", {"action_type": "hobbit_msgs/ArmServerAction", "feedback": {"id": "fb"}},
                  {"action": text("hobbit_arm"), "field:command.data": text("MoveToCandle"), "while_waiting": handler})
     ws = workspace(block("variables_set", {"VAR": {"id": "outcome"}}, {"VALUE": goal}))
-    ws["variables"] = [{"name": "feedback", "id": "fb"}, {"name": "seen", "id": "seen"}, {"name": "outcome", "id": "outcome"}]
+    ws["variables"] = [{"name": "feedback", "id": "fb"}, {"name": "seen", "id": "seen"},
+                       {"name": "outcome", "id": "outcome"}]
     code = headless_editor.python_for(ProgramToOpen(path=None, profile=hobbit, workspace=ws))
     ast.parse(code)
     assert ("def while_waiting(received):\n"

@@ -379,11 +379,13 @@ VALID_TEXT = json.dumps(valid_document(), indent=1)
 BAD_CONTENTS = [
     ("empty", b"", "the file is empty"),
     ("only whitespace", b" \n\t\n", "the file is empty"),
-    ("truncated", VALID_TEXT[: len(VALID_TEXT) // 2].encode("utf-8"), "not a complete Rockly program (broken JSON at line"),
+    ("truncated", VALID_TEXT[: len(VALID_TEXT) // 2].encode("utf-8"),
+     "not a complete Rockly program (broken JSON at line"),
     ("latin-1 bytes", json.dumps(valid_document(profile="Grüße"), ensure_ascii=False).encode("latin-1"),
      "the file is not text (it is not UTF-8)"),
     ("binary", bytes(range(256)), "not UTF-8"),
-    ("package.json", json.dumps({"name": "my-app", "version": "1.0.0", "dependencies": {"left-pad": "^1.3.0"}}).encode(),
+    ("package.json",
+     json.dumps({"name": "my-app", "version": "1.0.0", "dependencies": {"left-pad": "^1.3.0"}}).encode(),
      'this is not a Rockly program (no "format": "rockly-program")'),
     ("json list", b'[{"format": "rockly-program"}]', "this is not a Rockly program"),
     ("json string", b'"rockly-program"', "this is not a Rockly program"),
@@ -415,7 +417,8 @@ BAD_CONTENTS = [
 ]
 
 
-@pytest.mark.parametrize("content, problem", [case[1:] for case in BAD_CONTENTS], ids=[case[0] for case in BAD_CONTENTS])
+@pytest.mark.parametrize("content, problem", [case[1:] for case in BAD_CONTENTS],
+                         ids=[case[0] for case in BAD_CONTENTS])
 def test_bad_file_gives_program_file_error_naming_the_problem_and_is_left_untouched(tmp_path, content, problem):
     path = tmp_path / "bad.rockly"
     path.write_bytes(content)
@@ -491,6 +494,7 @@ def test_breakpoints_are_saved_with_the_program(tmp_path):
 
 def test_breakpoints_that_are_not_block_ids_are_refused(tmp_path):
     path = tmp_path / "bad-breakpoints.rockly"
-    path.write_text('{"format": "rockly-program", "version": 1, "profile": "hobbit", "workspace": {}, "breakpoints": [1]}')
+    path.write_text('{"format": "rockly-program", "version": 1, "profile": "hobbit", "workspace": {}, '
+                    '"breakpoints": [1]}')
     with pytest.raises(ProgramFileError, match="breakpoints"):
         load_program(path)

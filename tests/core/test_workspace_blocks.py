@@ -42,10 +42,12 @@ def test_counts_blocks_in_next_chains_nested_inputs_and_shadows():
                                                                    "inputs": {"A": {"shadow": number(2)},
                                                                               "B": {"shadow": number(3)}}}},
                             "B": {"block": {"type": "hobbit_yes_no",
-                                            "inputs": {"text": {"shadow": {"type": "text", "fields": {"TEXT": "?"}}}}}}}}
+                                            "inputs": {"text": {"shadow": {"type": "text",
+                                                                           "fields": {"TEXT": "?"}}}}}}}}
     body = {"type": "hobbit_head", "fields": {"head_position": "up_left"},
             "next": {"block": {"type": "hobbit_emo", "fields": {"emotion": "HAPPY"},
-                               "next": {"block": {"type": "hobbit_head", "fields": {"head_position": "center_center"}}}}}}
+                               "next": {"block": {"type": "hobbit_head",
+                                                  "fields": {"head_position": "center_center"}}}}}}
     if_block = {"type": "controls_if", "inputs": {"IF0": {"block": condition}, "DO0": {"block": body}},
                 "next": {"block": {"type": "hobbit_move", "fields": {"direction": "+"},
                                    "inputs": {"speed": {"shadow": number(1)}}}}}
@@ -78,7 +80,8 @@ def test_block_without_a_type_is_counted_under_a_readable_name():
 
 def test_blocks_are_numbered_in_the_order_the_file_has_them():
     program = {"blocks": {"blocks": [
-        {"type": "a", "inputs": {"X": {"shadow": {"type": "b"}, "block": {"type": "c", "next": {"block": {"type": "d"}}}},
+        {"type": "a", "inputs": {"X": {"shadow": {"type": "b"},
+                                       "block": {"type": "c", "next": {"block": {"type": "d"}}}},
                                  "Y": {"block": {"type": "e"}}},
          "next": {"block": {"type": "f"}}},
         {"next": {"block": {"type": "h"}}, "type": "g"},
@@ -96,7 +99,8 @@ def test_the_first_block_without_a_type_is_named_by_its_number():
                                           "next": {"block": {**untyped, "next": {"block": {}}}}}]}}
         assert untyped_block_number(program) == 3
     assert untyped_xml_block_number(parse_blockly_xml('<xml><block type="a"><value name="V"><shadow type="b"/></value>'
-                                                      '<next><block><field name="f">x</field></block></next></block></xml>')) == 3
+                                                      '<next><block><field name="f">x</field></block></next>'
+                                                      '</block></xml>')) == 3
     assert untyped_xml_block_number(parse_blockly_xml('<xml><block type="a"/></xml>')) is None
 
 
@@ -160,7 +164,8 @@ def test_first_rockly_xml_parses_with_and_without_namespace(first_rockly_xml):
 
 def test_xml_block_count_ignores_fields_values_and_variables():
     root = parse_blockly_xml('<xml><variables><variable>block</variable></variables>'
-                             '<block type="a"><field name="block">shadow</field><value name="V"><block type="b"/></value>'
+                             '<block type="a"><field name="block">shadow</field>'
+                             '<value name="V"><block type="b"/></value>'
                              '</block><block/></xml>')
     assert block_types_in_xml(root) == Counter({"a": 1, "b": 1, "(block without a type)": 1})
 
@@ -244,7 +249,8 @@ def test_renaming_a_program_already_in_the_new_form_changes_nothing():
 
 
 def test_an_unknown_old_value_keeps_its_text_under_the_new_name():
-    root = parse_blockly_xml('<xml><block type="hobbit_arm_gripper" id="g"><field name="gripper_position">half</field></block></xml>')
+    root = parse_blockly_xml('<xml><block type="hobbit_arm_gripper" id="g">'
+                             '<field name="gripper_position">half</field></block></xml>')
     assert rename_legacy_fields(root, GRIPPER_ALIAS) == 1
     assert gripper_fields(root) == [("g", [("movement", "half")])]
 
@@ -295,6 +301,7 @@ def test_xml_for_the_editor_keeps_the_blockly_namespace_when_it_had_one():
 
 
 def test_xml_text_with_quotes_and_unicode_survives():
-    root = parse_blockly_xml('<xml><block type="text"><field name="TEXT">Grüße "du" &amp; &lt;ich&gt; 😀</field></block></xml>')
+    root = parse_blockly_xml('<xml><block type="text">'
+                             '<field name="TEXT">Grüße "du" &amp; &lt;ich&gt; 😀</field></block></xml>')
     reparsed = ElementTree.fromstring(xml_to_text(root))
     assert reparsed.find("block/field").text == 'Grüße "du" & <ich> 😀'

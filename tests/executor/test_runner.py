@@ -73,7 +73,8 @@ def test_breakpoint_pauses_before_the_block_each_time_it_is_reached():
     control = RunControl(breakpoints={"c"})
     runner, recorder, thread = start(PROGRAM, control, variables={"count": "count"})
     for expected_count in ("0", "1", "2"):
-        recorder.wait_for(lambda e: isinstance(e, RunPaused) and len(recorder.of(RunPaused)) == int(expected_count) + 1)
+        recorder.wait_for(lambda e, expected_count=expected_count:
+                          isinstance(e, RunPaused) and len(recorder.of(RunPaused)) == int(expected_count) + 1)
         assert recorder.of(RunPaused)[-1] == RunPaused("c", "breakpoint")
         assert recorder.of(VariablesChanged)[-1].values == {"count": expected_count}
         control.resume()
@@ -191,7 +192,8 @@ def test_a_failing_safe_stop_is_reported_but_the_run_still_ends():
 
 
 def test_variables_show_their_blockly_names():
-    runner, recorder = run_to_end("my_name = 'Ada'\nscore = [1, 2]\n", variables={"my name": "my_name", "score": "score", "unset": "unset"})
+    runner, recorder = run_to_end("my_name = 'Ada'\nscore = [1, 2]\n",
+                                  variables={"my name": "my_name", "score": "score", "unset": "unset"})
     assert recorder.of(VariablesChanged)[-1].values == {"my name": "'Ada'", "score": "[1, 2]", "unset": "None"}
 
 

@@ -8,7 +8,8 @@ from rockly_desktop.executor.robot_link import SimulatedRobot
 from rockly_desktop.executor.run_setup import make_runner
 
 DRIVE_ON = "robot.backend.publish('/cmd_vel', 'geometry_msgs/Twist', {'linear': {'x': 0.3}, 'angular': {'z': 0.2}})\n"
-ARM_GOAL = "robot.backend.send_goal('hobbit_arm', 'hobbit_msgs/ArmServerAction', {'command': {'data': 'MoveToCandle'}})\n"
+ARM_GOAL = ("robot.backend.send_goal('hobbit_arm', 'hobbit_msgs/ArmServerAction', "
+            "{'command': {'data': 'MoveToCandle'}})\n")
 
 
 @pytest.fixture

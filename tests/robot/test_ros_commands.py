@@ -37,7 +37,8 @@ def trajectory(points):
 def results_of(world):
     """The actionlib status codes of the arm goals that end from now on."""
     results = []
-    world.tap(lambda topic, _type, message: topic == "/hobbit_arm/result" and results.append(message["status"]["status"]))
+    world.tap(lambda topic, _type, message:
+              topic == "/hobbit_arm/result" and results.append(message["status"]["status"]))
     return results
 
 
@@ -75,7 +76,8 @@ def test_services_goals_and_cancel(sim):
     response = ros.call_service("/MMUI", "hobbit_msgs/Request",
                                 {"params": [{"name": "type", "value": "D_PLAIN"}, {"name": "text", "value": "hi"}]})
     assert "params" in response
-    assert ros.send_goal("hobbit_arm", "hobbit_msgs/ArmServerAction", '{"command": {"data": "MoveToHome"}}') == "succeeded"
+    home = '{"command": {"data": "MoveToHome"}}'
+    assert ros.send_goal("hobbit_arm", "hobbit_msgs/ArmServerAction", home) == "succeeded"
     assert ros.send_goal("hobbit_arm", "hobbit_msgs/ArmServerAction", {"command": {"data": "Dance"}}) == "aborted"
     goals = []
     world.tap(lambda topic, _type, message: topic == "/hobbit_arm/goal" and goals.append(message))
@@ -182,15 +184,17 @@ def checked(simulated, hobbit):
      "geometry_msgs/Twist has no field 'speed' (it has: linear, angular)"),
     (lambda ros: ros.publish_message("/cmd_vel", "geometry_msgs/Twist", {"linear": 3}),
      "linear must be a geometry_msgs/Vector3 (a mapping of its fields), not 3"),
-    (lambda ros: ros.publish_message("/scan", "sensor_msgs/LaserScan", {"ranges": 1.0}), "the field ranges needs a list"),
+    (lambda ros: ros.publish_message("/scan", "sensor_msgs/LaserScan", {"ranges": 1.0}),
+     "the field ranges needs a list"),
     (lambda ros: ros.publish_message("/scan", "sensor_msgs/LaserScan", {"ranges": [1.0, "far"]}),
      "the field ranges[1] needs a number, not 'far'"),
-    (lambda ros: ros.call_service("/enable", "std_srvs/SetBool", {"data": "yes"}), "the field data needs true or false"),
+    (lambda ros: ros.call_service("/enable", "std_srvs/SetBool", {"data": "yes"}),
+     "the field data needs true or false"),
     (lambda ros: ros.send_goal(*ARM, {"command": {"data": 7}}), "the field command.data needs a text, not 7"),
     (lambda ros: ros.send_goal(*ARM, {"joints": [{"joint_values": [0, "up"]}]}),
      "the field joints[0].joint_values[1] needs a number, not 'up'"),
-], ids=["text for number", "unknown nested field", "unknown field", "number for message", "number for list", "text in list",
-        "service request", "goal", "nested list"])
+], ids=["text for number", "unknown nested field", "unknown field", "number for message", "number for list",
+        "text in list", "service request", "goal", "nested list"])
 def test_a_wrong_value_is_named_before_anything_is_sent(checked, send, problem):
     ros, world = checked
     sent = []
@@ -204,7 +208,8 @@ def test_a_wrong_value_is_named_before_anything_is_sent(checked, send, problem):
 def test_right_values_and_unknown_types_pass_the_check(checked):
     ros, world = checked
     ros.publish_message("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.1}, "angular": {"z": -1}})
-    ros.publish_message("/scan", "sensor_msgs/LaserScan", {"header": {"stamp": 1.5, "frame_id": "laser"}, "ranges": [1, 2.5]})
+    ros.publish_message("/scan", "sensor_msgs/LaserScan",
+                        {"header": {"stamp": 1.5, "frame_id": "laser"}, "ranges": [1, 2.5]})
     ros.publish_message("/lab", "lab_msgs/Unknown", {"anything": "goes"})   # the robot's side decides
     assert world.latest("/cmd_vel") == {"linear": {"x": 0.1}, "angular": {"z": -1}}
     assert world.latest("/lab") == {"anything": "goes"}

@@ -194,7 +194,7 @@ def test_every_tick_publishes_the_advanced_time(world, make_counter):
     counts = [message["data"] for message in messages]
     assert counts == list(range(len(counts)))
     times = [message["time"] for message in messages]
-    assert times[0] == 0.0 and all(a < b for a, b in zip(times, times[1:]))
+    assert times[0] == 0.0 and all(a < b for a, b in itertools.pairwise(times))
 
 
 # --- the outbox ---------------------------------------------------------------------------------

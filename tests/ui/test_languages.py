@@ -97,8 +97,9 @@ def test_a_run_error_is_explained_in_german_naming_the_variable(qtbot, german_wi
     assert "Details einblenden..." in button_texts(boxes[0])
     assert "TypeError: can only concatenate str" in boxes[0].detailedText()  # the Python, for the adults
     assert window.console.lines()[-1] == expected
-    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "Blockly.getMainWorkspace().getBlockById('print')"
-                                                         ".getSvgRoot().classList.contains('rocklyError')"), timeout=5000)
+    marked = ("Blockly.getMainWorkspace().getBlockById('print')"
+              ".getSvgRoot().classList.contains('rocklyError')")
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, marked), timeout=5000)
 
 
 # --- the ROS connection -----------------------------------------------------------------------
@@ -109,7 +110,8 @@ def test_an_unreachable_master_is_explained_in_german_with_a_next_step(qtbot, ge
     window.settings.remember_ros_connection("hobbit", "http://127.0.0.1:9", "")
     monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
     shown = []
-    monkeypatch.setattr(QMessageBox, "exec", lambda box: shown.append((box.windowTitle(), box.text(), box.informativeText())))
+    monkeypatch.setattr(QMessageBox, "exec",
+                        lambda box: shown.append((box.windowTitle(), box.text(), box.informativeText())))
     backend = window.run_toolbar.backend
     backend.setCurrentIndex(backend.findData("ros1"))
     assert window.robots.kind == "simulator"
@@ -146,7 +148,8 @@ def test_state_panels_write_numbers_the_german_way(qtbot, hobbit):
     store = StateStore()
     panels.set_store(store)
     store.record("/odom", "nav_msgs/Odometry", {"pose": {"pose": {"position": {"x": 1.6, "y": -0.5},
-                                                                     "orientation": {"x": 0, "y": 0, "z": 0.7071068, "w": 0.7071068}}},
+                                                                     "orientation": {"x": 0, "y": 0,
+                                                                                     "z": 0.7071068, "w": 0.7071068}}},
                                                 "twist": {"twist": {"linear": {"x": 0.3}, "angular": {"z": 0.25}}}})
     store.record("/battery_state", "sensor_msgs/BatteryState", {"percentage": 0.42})
     store.record("/DiscreteMotionState", "std_msgs/String", {"data": "Idle"})

@@ -95,7 +95,8 @@ def test_a_broken_profile_is_reported_and_the_app_still_starts(qtbot, tmp_path):
     broken = extra / "broken"
     shutil.copytree(REPO_HOBBIT, broken, ignore=shutil.ignore_patterns("__pycache__"))
     manifest = broken / "profile.yaml"
-    manifest.write_text(manifest.read_text().replace("id: hobbit", "id: broken").replace("blocks: blocks.yaml", "blocks: nowhere.yaml"))
+    manifest.write_text(manifest.read_text().replace("id: hobbit", "id: broken")
+                        .replace("blocks: blocks.yaml", "blocks: nowhere.yaml"))
     driver = WindowDriver(qtbot, tmp_path / "settings.ini", [extra])
     try:
         window = driver.open_window()

@@ -249,7 +249,8 @@ def send_drag(panel, text):
     QApplication.sendEvent(panel, enter)
     if not enter.isAccepted():
         return False
-    drop = QDropEvent(position, Qt.DropAction.CopyAction, mime, Qt.MouseButton.LeftButton, Qt.KeyboardModifier.NoModifier)
+    drop = QDropEvent(position, Qt.DropAction.CopyAction, mime, Qt.MouseButton.LeftButton,
+                      Qt.KeyboardModifier.NoModifier)
     QApplication.sendEvent(panel, drop)
     return drop.isAccepted()
 
@@ -333,7 +334,10 @@ def test_memory_stays_bounded_after_100000_samples(qtbot, clock):
 
 
 def test_a_1khz_minute_is_kept_whole_but_drawn_downsampled(qtbot, clock):
-    """60 s at 1 kHz on two curves: every sample is kept, a few thousand points are drawn (speed: benchmarks/state.py)."""
+    """60 s at 1 kHz on two curves: every sample is kept, a few thousand points are drawn.
+
+    Its speed is measured in benchmarks/state.py.
+    """
     store = StateStore(history=2000, clock=clock)
     panel = PlotPanel(store)
     qtbot.addWidget(panel)
@@ -342,7 +346,7 @@ def test_a_1khz_minute_is_kept_whole_but_drawn_downsampled(qtbot, clock):
     panel.set_window(60)
     panel.add_curve("/odom", X)
     panel.add_curve("/odom", TURN)
-    for frame in range(1800):
+    for _frame in range(1800):
         for _ in range(33):
             clock.now += 0.001
             store.record("/odom", "nav_msgs/Odometry", odom(math.sin(clock.now), math.cos(clock.now * 7)))

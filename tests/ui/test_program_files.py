@@ -56,7 +56,8 @@ def test_an_edit_marks_the_program_modified_and_save_clears_it(qtbot, window, pi
 def test_save_and_open_round_trip_keeps_every_character(qtbot, driver, tmp_path):
     nasty = "say \"hi\"\nit's \\ '''\"\"\" 🤖 Grüße"
     source = tmp_path / "source.rockly"
-    source.write_text(rockly_document([block("hobbit_show_info", inputs={"text": text(nasty)}, x=10, y=10)]), encoding="utf-8")
+    source.write_text(rockly_document([block("hobbit_show_info", inputs={"text": text(nasty)}, x=10, y=10)]),
+                      encoding="utf-8")
     window = driver.open_window()
     open_program(qtbot, window, source)
     qtbot.waitUntil(lambda: "show_info" in window.code_dock.view.toPlainText(), timeout=10000)
@@ -72,15 +73,18 @@ def test_save_and_open_round_trip_keeps_every_character(qtbot, driver, tmp_path)
 
 
 BAD_FILES = {
-    "broken.rockly": (b'{"format": "rockly-program", "version": 1, "profile": "hobbit", "workspace": {"blo', "broken JSON"),
+    "broken.rockly": (b'{"format": "rockly-program", "version": 1, "profile": "hobbit", "workspace": {"blo',
+                      "broken JSON"),
     "empty.rockly": (b"", "empty"),
     "foreign.rockly": (b'{"name": "my-package", "version": "1.0.0"}', "not a Rockly program"),
     "list.rockly": (b"[1, 2, 3]", "not a Rockly program"),
-    "newer.rockly": (b'{"format": "rockly-program", "version": 99, "profile": "hobbit", "workspace": {}}', "newer Rockly"),
+    "newer.rockly": (b'{"format": "rockly-program", "version": 99, "profile": "hobbit", "workspace": {}}',
+                     "newer Rockly"),
     "binary.rockly": (b"\x89PNG\r\n\x1a\n\x00\x00\xff\xfe", "not text"),
     "no-profile.rockly": (b'{"format": "rockly-program", "version": 1, "workspace": {}}', "robot profile"),
     "page.xml": (b"<html><body>hello</body></html>", "not a Blockly program"),
-    "cut.xml": (b'<xml xmlns="https://developers.google.com/blockly/xml"><block type="hobbit_sos"', "not valid Blockly XML"),
+    "cut.xml": (b'<xml xmlns="https://developers.google.com/blockly/xml"><block type="hobbit_sos"',
+                "not valid Blockly XML"),
     "untyped.rockly": (rockly_document([stack(block("hobbit_sos"), {"fields": {"emotion": "HAPPY"}})]).encode(),
                        "the file is broken: block 2 has no type"),
     "untyped.xml": (b'<xml><block type="hobbit_sos"><next><block><field name="emotion">HAPPY</field></block></next>'
@@ -112,7 +116,8 @@ def test_missing_file_is_explained(qtbot, window, tmp_path):
 
 def test_unknown_blocks_are_named_with_their_missing_profile(qtbot, window, tmp_path):
     path = tmp_path / "turtle.rockly"
-    path.write_text(rockly_document([block("turtle_drive"), block("turtle_scan"), block("hobbit_sos")], profile="turtle"))
+    path.write_text(rockly_document([block("turtle_drive"), block("turtle_scan"), block("hobbit_sos")],
+                                    profile="turtle"))
     before = state(qtbot, window)
     window.files.open(str(path))
     qtbot.waitUntil(lambda: bool(error_boxes(window)), timeout=10000)
@@ -224,7 +229,8 @@ def test_a_stack_of_600_blocks_tracks_edits_and_saves_them(qtbot, window, tmp_pa
 def changes_box(qtbot, window):
     """The warning shown when a program opened with changes (waits for it)."""
     def find():
-        return [box for box in window.findChildren(QMessageBox) if box.objectName() == "opening_changes_box" and box.isVisible()]
+        return [box for box in window.findChildren(QMessageBox)
+                if box.objectName() == "opening_changes_box" and box.isVisible()]
     qtbot.waitUntil(lambda: bool(find()), timeout=10000)
     [box] = find()
     return box
@@ -266,7 +272,8 @@ def test_an_imported_program_with_a_value_its_block_does_not_offer_is_named_too(
     assert "Block 1 (hobbit_head), head_position: “sideways” → “center_center”" in changes_box(qtbot, window).text()
 
 
-def test_a_program_for_a_profile_that_is_not_installed_says_so_before_it_is_saved_as_another(qtbot, window, pick_up_file):
+def test_a_program_for_a_profile_that_is_not_installed_says_so_before_it_is_saved_as_another(
+        qtbot, window, pick_up_file):
     pepper = pick_up_file.with_name("pepper.rockly")
     pepper.write_text(pick_up_file.read_text().replace('"profile": "hobbit"', '"profile": "pepper"'))
     content = pepper.read_bytes()
@@ -290,7 +297,8 @@ def test_the_changes_are_named_in_german_too(qtbot, driver, tmp_path):
     window.files.open(str(path))
     box = changes_box(qtbot, window)
     assert box.windowTitle() == "Das Programm wurde mit Änderungen geöffnet"
-    assert "Roboterprofil „pepper“ gemacht, das hier nicht installiert ist (installiert: hobbit, turtlebot)" in box.text()
+    assert ("Roboterprofil „pepper“ gemacht, das hier nicht installiert ist "
+            "(installiert: hobbit, turtlebot)") in box.text()
     assert "Block 1 (hobbit_emo), emotion: „FURIOUS“ → „HAPPY“" in box.text()
 
 

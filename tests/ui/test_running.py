@@ -27,7 +27,8 @@ def finished(qtbot, window, timeout=20000):
 
 def highlighted(qtbot, window):
     return run_js(qtbot, window.editor, "Blockly.getMainWorkspace().getAllBlocks(false)"
-                                        ".filter(b => b.getSvgRoot().classList.contains('blocklyHighlighted')).map(b => b.id)")
+                                        ".filter(b => b.getSvgRoot().classList.contains('blocklyHighlighted'))"
+                                        ".map(b => b.id)")
 
 
 def current_block(window):
@@ -104,8 +105,9 @@ def test_an_error_marks_its_block_with_a_plain_message_and_the_traceback_one_cli
     boxes = [box for box in window.findChildren(QMessageBox) if box.objectName() == "run_error_box" and box.isVisible()]
     assert boxes and boxes[0].text() == "Dividing by zero is not possible."
     assert "ZeroDivisionError" in boxes[0].detailedText()
-    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "Blockly.getMainWorkspace().getBlockById('divide')"
-                                                         ".getSvgRoot().classList.contains('rocklyError')"), timeout=5000)
+    marked = ("Blockly.getMainWorkspace().getBlockById('divide')"
+              ".getSvgRoot().classList.contains('rocklyError')")
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, marked), timeout=5000)
     assert window.console.lines()[-1] == "Dividing by zero is not possible."
     assert window.robot().snapshot()["notices"] == []
 
@@ -178,7 +180,8 @@ def test_slow_motion_slider_delays_every_block(qtbot, window, monkeypatch):
 
 
 def test_the_stop_button_works_while_the_tablet_waits_for_an_answer(qtbot, window):
-    load(qtbot, window, block("text_print", inputs={"TEXT": block("hobbit_user_input", inputs={"text": text("Name?")})}))
+    question = block("hobbit_user_input", inputs={"text": text("Name?")})
+    load(qtbot, window, block("text_print", inputs={"TEXT": question}))
     window.runs.run()
     qtbot.waitUntil(lambda: bool(tablet_dialogs(window)), timeout=10000)
     stop_button = window.run_toolbar.widgetForAction(window.run_toolbar.stop_action)

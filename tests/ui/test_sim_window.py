@@ -34,7 +34,8 @@ def sim(qtbot, hobbit):
 
 def ask(world, kind, text, timeout=60):
     """Call /MMUI in a thread (never the GUI thread), as the ROS service thread does."""
-    params = [{"name": "type", "value": kind}, {"name": "text", "value": text}, {"name": "Timeout", "value": str(timeout)}]
+    params = [{"name": "type", "value": kind}, {"name": "text", "value": text},
+              {"name": "Timeout", "value": str(timeout)}]
 
     def call():
         assert threading.current_thread() is not threading.main_thread()

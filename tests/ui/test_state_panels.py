@@ -13,7 +13,8 @@ def test_each_row_shows_its_field_transformed_and_formatted(qtbot, hobbit):
     panels.set_store(store)
     assert set(panels.values().values()) == {"–"}
     store.record("/odom", "nav_msgs/Odometry", {"pose": {"pose": {"position": {"x": 1.234, "y": -0.5},
-                                                                     "orientation": {"x": 0, "y": 0, "z": 0.7071068, "w": 0.7071068}}},
+                                                                     "orientation": {"x": 0, "y": 0,
+                                                                                     "z": 0.7071068, "w": 0.7071068}}},
                                                 "twist": {"twist": {"linear": {"x": 0.3}, "angular": {"z": 0.0}}}})
     store.record("/battery_state", "sensor_msgs/BatteryState", {"percentage": 0.42})
     store.record("/hobbit_arm/result", "action result", {"status": {"status": 4}})
@@ -26,12 +27,14 @@ def test_each_row_shows_its_field_transformed_and_formatted(qtbot, hobbit):
 def test_panels_follow_a_run_on_the_simulator(qtbot, window):
     call_page(qtbot, window.editor, "load", {"workspace": workspace(stack(
         block("hobbit_head", {"head_position": "up_left"}), block("hobbit_emo", {"emotion": "SAD"}),
-        block("hobbit_arm_move", {"movement": "MoveToCandle"}), block("hobbit_show_info", inputs={"text": text("Hi there")}),
+        block("hobbit_arm_move", {"movement": "MoveToCandle"}),
+        block("hobbit_show_info", inputs={"text": text("Hi there")}),
         block("hobbit_move", {"direction": "+"}, {"speed": number(0.5)})))})
     with qtbot.waitSignal(window.runs.sig_finished, timeout=20000):
         window.runs.run()
     panels = window.state_dock.widget()
-    qtbot.waitUntil(lambda: panels.values()["Position x"] == "0.50 m" and panels.values()["Motion"] == "Idle", timeout=3000)
+    qtbot.waitUntil(lambda: panels.values()["Position x"] == "0.50 m" and panels.values()["Motion"] == "Idle",
+                    timeout=3000)
     values = panels.values()
     assert (values["Looking"], values["Emotion"]) == ("up_left", "SAD")
     assert (values["Last command"], values["Command state"]) == ("MoveToCandle", "done")

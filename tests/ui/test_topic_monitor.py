@@ -71,7 +71,7 @@ def rows(monitor) -> list:
 
 def row_of(monitor, topic) -> dict:
     (found,) = [row for row in rows(monitor) if row[TOPIC] == topic]
-    return dict(zip(("topic", "type", "publishers", "rate", "age"), found))
+    return dict(zip(("topic", "type", "publishers", "rate", "age"), found, strict=True))
 
 
 def shown_value(monitor, path) -> str:
@@ -97,7 +97,8 @@ def test_topics_are_listed_with_type_and_publishers_from_the_graph(store, make_m
     assert row_of(monitor, "/odom")["type"] == ODOM
     assert row_of(monitor, "/odom")["publishers"] == "1"
     silent = row_of(monitor, "/scan")  # nothing received yet, still listed
-    assert (silent["type"], silent["publishers"], silent["rate"], silent["age"]) == ("sensor_msgs/LaserScan", "2", "–", "–")
+    shown = (silent["type"], silent["publishers"], silent["rate"], silent["age"])
+    assert shown == ("sensor_msgs/LaserScan", "2", "–", "–")
     assert row_of(monitor, "/cmd_vel")["publishers"] == "0"  # heard before, no publisher in the graph now
     assert monitor.count_label.text() == "Topics: 3"
 

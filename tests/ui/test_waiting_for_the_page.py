@@ -85,7 +85,8 @@ def test_save_changes_then_save_closes_once_the_file_is_written(qtbot, window, s
     assert window.runs.thread is None
 
 
-def test_save_changes_then_save_opens_the_next_program_after_the_save(qtbot, window, sos_file, tmp_path, answer_prompts):
+def test_save_changes_then_save_opens_the_next_program_after_the_save(
+        qtbot, window, sos_file, tmp_path, answer_prompts):
     other = tmp_path / "other.rockly"
     other.write_text(rockly_document([stack(block("hobbit_head", {"head_position": "up_left"}))]), encoding="utf-8")
     open_and_change(qtbot, window, sos_file)

@@ -10,9 +10,10 @@ def test_killing_the_master_mid_run_fails_the_running_block_quickly(tmp_path):
     master = RosMaster(tmp_path / "ros").start()
     simulator = RocklyProcess(["sim", "hobbit", "--ros", "--master", master.uri], master, ready_line="on ROS")
     program = tmp_path / "long-drive.rockly"
-    program.write_text(rockly_document([stack(block("hobbit_emo", {"emotion": "HAPPY"}, id="emo"),
-                                              block("hobbit_move", {"direction": "+"}, {"speed": number(50)}, id="drive"))]))
-    run = RocklyProcess(["run", program, "--backend", "ros1", "--master", master.uri], master, ready_line="block   drive")
+    drive = block("hobbit_move", {"direction": "+"}, {"speed": number(50)}, id="drive")
+    program.write_text(rockly_document([stack(block("hobbit_emo", {"emotion": "HAPPY"}, id="emo"), drive)]))
+    run = RocklyProcess(["run", program, "--backend", "ros1", "--master", master.uri], master,
+                        ready_line="block   drive")
     try:
         eventually(lambda: messages_received(master.uri, "/DiscreteMotionCmd") >= 1)  # the robot is driving
         killed = time.monotonic()
@@ -68,7 +69,8 @@ def test_after_the_master_comes_back_the_same_rockly_drives_again(tmp_path):
     from ros_helpers import REPO, ros_environment
 
     master = RosMaster(tmp_path / "ros").start()
-    simulator = RocklyProcess(["sim", "hobbit", "--ros", "--master", master.uri, "--speed", "10"], master, ready_line="on ROS")
+    simulator = RocklyProcess(["sim", "hobbit", "--ros", "--master", master.uri, "--speed", "10"], master,
+                              ready_line="on ROS")
     client = subprocess.Popen([sys.executable, "-c", RECONNECTING_CLIENT, master.uri], cwd=REPO, text=True,
                               env=ros_environment(master.uri, master.home), stdin=subprocess.PIPE,
                               stdout=subprocess.PIPE, stderr=subprocess.PIPE)

@@ -9,7 +9,8 @@ EXAMPLE = REPO / "examples" / "hobbit" / "arm-with-progress.rockly"
 
 
 def test_typed_publish_and_a_goal_with_a_while_waiting_handler_run_on_ros(ros_master, hobbit_on_ros, ros_robot):
-    turns, stop_recording = record(ros_robot, "/cmd_vel", "geometry_msgs/Twist", lambda message: message["angular"]["z"])
+    turns, stop_recording = record(ros_robot, "/cmd_vel", "geometry_msgs/Twist",
+                                   lambda message: message["angular"]["z"])
     result = subprocess.run([sys.executable, "-m", "rockly_desktop", "run", str(EXAMPLE), "--backend", "ros1",
                              "--master", ros_master.uri], capture_output=True, text=True, cwd=REPO, timeout=120,
                             env=ros_environment(ros_master.uri, ros_master.home))

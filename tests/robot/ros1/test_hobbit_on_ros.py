@@ -104,7 +104,8 @@ def test_stop_during_a_drive_publishes_a_zero_twist(ros_robot, hobbit):
     commands, stop_commands = record(ros_robot, "/DiscreteMotionCmd", "std_msgs/String",
                                      lambda message: message["data"])
     control = RunControl()
-    runner = make_runner(hobbit, ros_robot, {"code": "robot.drive(30, 'forward')\n", "variables": {}}, control, lambda e: None)
+    runner = make_runner(hobbit, ros_robot, {"code": "robot.drive(30, 'forward')\n", "variables": {}}, control,
+                         lambda e: None)
     thread = threading.Thread(target=runner.run)
     thread.start()
     eventually(lambda: commands[:1] == ["Move 30"])  # the drive is under way
@@ -179,7 +180,8 @@ def test_generic_ros_commands_over_ros(ros_robot):
                                 {"sessionID": "0", "params": [{"name": "type", "value": "D_PLAIN"},
                                                               {"name": "text", "value": "generic"}]})
     assert isinstance(response["params"], list)
-    assert ros.send_goal("hobbit_arm", "hobbit_msgs/ArmServerAction", {"command": {"data": "MoveToHome"}}) == "succeeded"
+    home = {"command": {"data": "MoveToHome"}}
+    assert ros.send_goal("hobbit_arm", "hobbit_msgs/ArmServerAction", home) == "succeeded"
     outcome = []
     progress, stop_progress = record(ros_robot, "/hobbit_arm/feedback", "hobbit_msgs/ArmServerActionFeedback",
                                      lambda message: message["feedback"]["feedback"]["data"])
