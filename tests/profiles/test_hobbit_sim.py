@@ -40,7 +40,8 @@ POSITION = 0.02    # m
 ANGLE = 2.0        # degrees
 ARM = "hobbit_arm", "hobbit_msgs/ArmServerAction"
 NAV = "move_base", "move_base_msgs/MoveBaseAction"
-TABLET_TEXTS = ['He said "hello"', "it's me", "first line\nsecond line", "Grüße, 日本語 😀", "a\\b {x} %s", "  spaced\tout \n", ""]
+TABLET_TEXTS = ['He said "hello"', "it's me", "first line\nsecond line", "Grüße, 日本語 😀", "a\\b {x} %s",
+                "  spaced\tout \n", ""]
 
 
 class ScriptedTablet:

@@ -56,7 +56,7 @@ def differing(a, b):
     pa, _ = pixels(a)
     pb, _ = pixels(b)
     assert len(pa) == len(pb)
-    return sum(1 for x, y in zip(pa, pb) if x != y)
+    return sum(1 for x, y in zip(pa, pb, strict=True) if x != y)
 
 
 def centroid(image, color):

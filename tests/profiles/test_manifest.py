@@ -69,7 +69,8 @@ def test_wrong_schema_is_refused(profile, value):
                                    "hobbit\n", "höbbit"])
 def test_bad_id_is_refused(profile, value):
     set_field(profile, "id", value)
-    assert_manifest_error(profile, "id", "must be lower-case letters, digits and '_', starting with a letter (at most 40)")
+    assert_manifest_error(profile, "id",
+                          "must be lower-case letters, digits and '_', starting with a letter (at most 40)")
 
 
 @pytest.mark.parametrize("value", ["r2d2", "my_robot_2", "a" * 40])
@@ -91,14 +92,17 @@ def test_good_versions_are_accepted(profile, value):
 
 
 @pytest.mark.parametrize("field", ["name", "description"])
-@pytest.mark.parametrize("value", ["", "   ", 5, {"de": "Nur Deutsch"}, {"en": "", "de": "x"}, {"en": "x", "de": 3}, []],
+@pytest.mark.parametrize("value",
+                         ["", "   ", 5, {"de": "Nur Deutsch"}, {"en": "", "de": "x"}, {"en": "x", "de": 3}, []],
                          ids=["empty", "blank", "number", "no english", "empty english", "non-text german", "list"])
 def test_bad_text_is_refused(profile, field, value):
     set_field(profile, field, value)
-    assert_manifest_error(profile, field, "must be a non-empty text, or one text per language with English ('en') present")
+    assert_manifest_error(profile, field,
+                          "must be a non-empty text, or one text per language with English ('en') present")
 
 
-@pytest.mark.parametrize("value", [["de", "en"], [], "en", ["de"]], ids=["german first", "empty", "not a list", "no english"])
+@pytest.mark.parametrize("value", [["de", "en"], [], "en", ["de"]],
+                         ids=["german first", "empty", "not a list", "no english"])
 def test_languages_must_start_with_english(profile, value):
     set_field(profile, "languages", value)
     assert_manifest_error(profile, "languages", "must be a list of language codes starting with 'en'")
@@ -206,14 +210,17 @@ def test_state_must_be_a_list(profile):
 
 @pytest.mark.parametrize("value, problem", [
     ([], "must map block types to their old field names"),
-    ({"hobbit_arm_gripper": "movement"}, "'hobbit_arm_gripper' must map old field names to {field: NEW, values: {...}}"),
-    ({"hobbit_arm_gripper": {"gripper_position": "movement"}}, "'hobbit_arm_gripper.gripper_position' needs 'field: NEW_NAME'"),
+    ({"hobbit_arm_gripper": "movement"},
+     "'hobbit_arm_gripper' must map old field names to {field: NEW, values: {...}}"),
+    ({"hobbit_arm_gripper": {"gripper_position": "movement"}},
+     "'hobbit_arm_gripper.gripper_position' needs 'field: NEW_NAME'"),
     ({"hobbit_arm_gripper": {"gripper_position": {"values": {"open": "OpenGripper"}}}},
      "'hobbit_arm_gripper.gripper_position' needs 'field: NEW_NAME'"),
     ({"hobbit_arm_gripper": {"gripper_position": {"field": 3}}}, "needs 'field: NEW_NAME'"),
     ({"hobbit_arm_gripper": {"gripper_position": {"field": "movement", "values": ["open", "close"]}}},
      "'hobbit_arm_gripper.gripper_position.values' must map old values to new ones"),
-], ids=["not a mapping", "block not a mapping", "alias a string", "alias without field", "field not text", "values a list"])
+], ids=["not a mapping", "block not a mapping", "alias a string", "alias without field", "field not text",
+        "values a list"])
 def test_bad_legacy_fields_are_refused(profile, value, problem):
     set_field(profile, "legacy_fields", value)
     assert_manifest_error(profile, "legacy_fields", problem)

@@ -112,7 +112,8 @@ def test_broken_template_braces_are_explained(profile, code, detail):
 
 def test_literal_braces_written_twice_are_fine(profile):
     profile.edit_block("hobbit_stop", lambda raw: raw.update(python="robot.publish('/x', 'String', {{'a': 1}})"))
-    assert load_profile(profile.root, SHARED_TOOLBOXES).block("hobbit_stop").code == "robot.publish('/x', 'String', {{'a': 1}})"
+    code = load_profile(profile.root, SHARED_TOOLBOXES).block("hobbit_stop").code
+    assert code == "robot.publish('/x', 'String', {{'a': 1}})"
 
 
 @pytest.mark.parametrize("values, name", [
@@ -162,7 +163,7 @@ def typed(raw, dropdown="message_type", mutator="rockly_typed_fields"):
     raw["args0"] = [{"type": "input_value", "name": "topic"},
                     {"type": "field_dropdown", "name": dropdown, "options": [["std_msgs/String", "std_msgs/String"]]}]
     raw["mutator"] = mutator
-    raw["python"] = {"code": "robot.publish_any({topic}, {%s}, {fields})" % dropdown}
+    raw["python"] = {"code": f"robot.publish_any({{topic}}, {{{dropdown}}}, {{fields}})"}
 
 
 @pytest.mark.parametrize("dropdown", ["message_type", "service_type", "action_type"])
@@ -241,7 +242,8 @@ def test_profile_category_listing_an_undefined_block_is_refused(profile, entry):
 
 
 def test_block_removed_from_blocks_file_but_left_in_toolbox_is_caught(profile):
-    profile.edit("blocks.yaml", lambda data: data.update(blocks=[raw for raw in data["blocks"] if raw["type"] != "hobbit_emo"]))
+    profile.edit("blocks.yaml",
+                 lambda data: data.update(blocks=[raw for raw in data["blocks"] if raw["type"] != "hobbit_emo"]))
     assert_error(profile, "toolbox.yaml", "categories[1].blocks[1]", "block 'hobbit_emo' is not defined")
 
 
@@ -504,14 +506,16 @@ def test_toolbox_names_are_translated_and_shared_categories_resolved(hobbit):
 def test_editor_config_in_german_has_german_block_texts_and_python_templates(hobbit):
     config = hobbit.editor_config("de")
     assert config["profile"] == "hobbit"
-    assert [block["definition"]["type"] for block in config["blocks"]] == [spec.type for spec in hobbit.blocks + hobbit.shared_blocks]
+    assert [block["definition"]["type"] for block in config["blocks"]] == [
+        spec.type for spec in hobbit.blocks + hobbit.shared_blocks]
     head = next(block for block in config["blocks"] if block["definition"]["type"] == "hobbit_head")
     assert head["definition"]["message0"] == "schau %1"
     assert head["definition"]["args0"][0]["options"][0] == ["geradeaus", "center_center"]
     assert head["python"] == {"code": "robot.look({head_position})", "values": {}, "defaults": {},
                               "slots": {"head_position": "field"}, "handlers": {}, "expression": False}
     assert config["toolbox"]["kind"] == "categoryToolbox"
-    assert config["types"]["actions"]["hobbit_msgs/ArmServerAction"] == [["command.data", "String", ""], ["velocity", "Number", 0]]
+    assert config["types"]["actions"]["hobbit_msgs/ArmServerAction"] == [["command.data", "String", ""],
+                                                                          ["velocity", "Number", 0]]
     assert config["toolbox"]["contents"][0]["name"] == "Fahren"
 
 

@@ -24,7 +24,8 @@ def test_the_table_has_one_row_per_manifest_field():
     assert [cells(row)[:2] for row in rows] == [[f"`{spec.name}`", "yes" if spec.required else "no"]
                                                 for spec in MANIFEST_FIELDS]
     meanings = {cells(row)[0]: cells(row)[2] for row in rows}
-    assert meanings["`messages`"] == "Folder with ROS definitions the robot needs: &lt;package&gt;/msg\\|srv\\|action/*."
+    assert meanings["`messages`"] == ("Folder with ROS definitions the robot needs: "
+                                      "&lt;package&gt;/msg\\|srv\\|action/*.")
 
 
 def test_the_guide_holds_the_generated_reference_exactly():

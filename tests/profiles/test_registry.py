@@ -202,7 +202,8 @@ def test_profile_installed_as_a_python_package_is_found_by_its_entry_point(tmp_p
     ("rockly_no_such_parent_here.profile", "ModuleNotFoundError: No module named 'rockly_no_such_parent_here'"),
     ("rockly_single_module_profile", "it is a module, not a package folder holding profile.yaml"),
 ], ids=["missing package", "missing parent package", "a plain module"])
-def test_entry_point_naming_no_profile_package_is_recorded_and_the_others_still_load(tmp_path, monkeypatch, value, reason):
+def test_entry_point_naming_no_profile_package_is_recorded_and_the_others_still_load(tmp_path, monkeypatch, value,
+                                                                                     reason):
     site = tmp_path / "site"
     install_distribution(site, "rockly_ghost", {"ghost": value})
     (site / "rockly_single_module_profile.py").write_text("", encoding="utf-8")

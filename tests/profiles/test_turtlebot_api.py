@@ -160,7 +160,7 @@ def test_drive_for_drives_at_that_speed_for_that_long(world, sim, robot):
     end = later(world, sim, 0.5)
     # The stop takes effect at the clock's next tick: on a loaded machine a tick can span more
     # simulated time than usual, and the robot drives on for that long.
-    longest_tick = max(b - a for a, b in zip(ticks, ticks[1:]))
+    longest_tick = max(b - a for a, b in zip(ticks, ticks[1:], strict=False))
     assert end["x"] - start["x"] == pytest.approx(0.3, abs=POSITION + 0.1 * longest_tick)
     assert end["linear"] == 0.0
     assert twists[0] == (0.1, 0.0) and twists[-1] == (0.0, 0.0)
@@ -305,7 +305,8 @@ def test_battery_level_is_a_percentage_that_drains(world, sim, robot):
     ("distance", ("up",), "unknown direction 'up'; use one of 'ahead', 'left', 'right', 'behind'"),
     ("obstacle_closer_than", (-1,), "the distance must not be negative, not -1"),
     ("obstacle_closer_than", ("near",), "the distance must be a number, not 'near'"),
-    ("obstacle_closer_than", (0.4, "front"), "unknown direction 'front'; use one of 'ahead', 'left', 'right', 'behind'"),
+    ("obstacle_closer_than", (0.4, "front"),
+     "unknown direction 'front'; use one of 'ahead', 'left', 'right', 'behind'"),
     ("wait", ("5",), "the waiting time must be a number, not '5'"),
 ])
 def test_bad_arguments_are_refused_before_anything_moves(world, robot, command, args, message):

@@ -71,7 +71,8 @@ def test_the_same_program_in_the_editor_and_runner_never_touches_a_box_or_a_wall
     arena = robot.simulator._arena
     clearances = []
     robot.world.tap(lambda topic, _type, message: clearances.append(arena.clearance(
-        message["pose"]["pose"]["position"]["x"], message["pose"]["pose"]["position"]["y"])) if topic == "/odom" else None)
+        message["pose"]["pose"]["position"]["x"], message["pose"]["pose"]["position"]["y"]))
+        if topic == "/odom" else None)
     try:
         result = make_runner(program.profile, robot, run_code, RunControl(), lambda event: None).run()
         end = robot.snapshot()

@@ -120,7 +120,8 @@ def test_toolbox_has_drive_sensors_time_and_the_shared_categories_in_their_colou
     ("turtlebot_distance", api.SIDES), ("turtlebot_obstacle", api.SIDES),
 ])
 def test_dropdown_values_are_the_commands_choices(block_type, choices):
-    (options,) = [arg["options"] for arg in PROFILE.block(block_type).definition["args0"] if arg.get("name") == "direction"]
+    (options,) = [arg["options"] for arg in PROFILE.block(block_type).definition["args0"]
+                  if arg.get("name") == "direction"]
     assert [value for _label, value in options] == list(choices)
     assert "direction" not in PROFILE.block(block_type).values
 
@@ -130,4 +131,5 @@ def test_expression_blocks_give_numbers_and_truth_values():
     assert PROFILE.block("turtlebot_battery").definition["output"] == "Number"
     assert PROFILE.block("turtlebot_obstacle").definition["output"] == "Boolean"
     statements = {spec.type for spec in PROFILE.blocks if not spec.is_expression}
-    assert statements == {"turtlebot_drive", "turtlebot_turn", "turtlebot_drive_for", "turtlebot_stop", "turtlebot_wait"}
+    assert statements == {"turtlebot_drive", "turtlebot_turn", "turtlebot_drive_for", "turtlebot_stop",
+                          "turtlebot_wait"}

@@ -71,7 +71,7 @@ def differing(a, b):
     pa, _ = pixels(a)
     pb, _ = pixels(b)
     assert len(pa) == len(pb)
-    return sum(1 for x, y in zip(pa, pb) if x != y)
+    return sum(1 for x, y in zip(pa, pb, strict=True) if x != y)
 
 
 def centroid(image, colour):
@@ -93,7 +93,8 @@ def warm_pixels(image):
     count = 0
     for value in values:
         colour = QColor.fromRgb(value)
-        if colour.hsvSaturationF() > 0.6 and colour.valueF() > 0.6 and (colour.hsvHueF() < 0.09 or colour.hsvHueF() > 0.97):
+        red = colour.hsvHueF() < 0.09 or colour.hsvHueF() > 0.97
+        if colour.hsvSaturationF() > 0.6 and colour.valueF() > 0.6 and red:
             count += 1
     return count
 

@@ -116,7 +116,8 @@ class Hobbit(RobotCommands):
         values = [self.number(value, name) for value, name in
                   ((x, "x"), (y, "y"), (z, "z"), (qx, "quat x"), (qy, "quat y"), (qz, "quat z"), (qw, "quat w"))]
         pose = {"header": {"frame_id": "map"},
-                "pose": {"position": dict(zip("xyz", values[:3])), "orientation": dict(zip("xyzw", values[3:]))}}
+                "pose": {"position": dict(zip("xyz", values[:3], strict=True)),
+                         "orientation": dict(zip("xyzw", values[3:], strict=True))}}
         outcome = self.backend.send_goal(NAV_ACTION, NAV_ACTION_TYPE, {"target_pose": pose}).wait(MOTION_TIMEOUT)
         if outcome.status is not GoalStatus.SUCCEEDED:
             reason = self._navigation_reason(values[0], values[1], outcome)
@@ -199,7 +200,8 @@ class Hobbit(RobotCommands):
         pose = self._latest("/odom", "nav_msgs/Odometry", "pose.pose")
         if coordinate == "heading":
             q = pose["orientation"]
-            return math.degrees(math.atan2(2 * (q["w"] * q["z"] + q["x"] * q["y"]), 1 - 2 * (q["y"] ** 2 + q["z"] ** 2)))
+            return math.degrees(math.atan2(2 * (q["w"] * q["z"] + q["x"] * q["y"]),
+                                           1 - 2 * (q["y"] ** 2 + q["z"] ** 2)))
         return pose["position"][coordinate]
 
     def head_position(self) -> str:
@@ -216,7 +218,9 @@ class Hobbit(RobotCommands):
         """True when the arm's joints move (two joint-state messages differ)."""
         first = self.backend.wait_for_message("/joint_states", "sensor_msgs/JointState", SENSOR_TIMEOUT)
         second = self.backend.wait_for_message("/joint_states", "sensor_msgs/JointState", SENSOR_TIMEOUT)
-        return any(abs(a - b) > 1e-4 for a, b in zip(first.get("position", [])[:6], second.get("position", [])[:6]))
+        # messages from different publishers may list different joints; compare what both have
+        return any(abs(a - b) > 1e-4
+                   for a, b in zip(first.get("position", [])[:6], second.get("position", [])[:6], strict=False))
 
     def latest_value(self, topic, field):
         """The newest value of ``field`` (e.g. ``pose.pose.position.x``) on any ``topic``."""
@@ -265,15 +269,17 @@ class Hobbit(RobotCommands):
             if start is not None:
                 progress.add(start)  # where the motion starts
             unsubscribe_state = self.backend.subscribe(
-                MOTION_STATE, "std_msgs/String", lambda message: states.append(message.get("data")))
+                MOTION_STATE, "std_msgs/String", lambda message, states=states: states.append(message.get("data")))
             unsubscribe_odom = self.backend.subscribe("/odom", "nav_msgs/Odometry", progress.add)
             bumps = []
             unsubscribe_bumper = self.backend.subscribe(
-                "/bumper", "std_msgs/Bool", lambda message: bumps.append(True) if message.get("data") else None)
+                "/bumper", "std_msgs/Bool",
+                lambda message, bumps=bumps: bumps.append(True) if message.get("data") else None)
             try:
                 self.backend.publish(MOTION_COMMAND, "std_msgs/String", {"data": f"{kind} {remaining:g}"})
-                if not self.backend.wait_until(lambda: "Idle" in states or bumps or self.backend.pause_requested(),
-                                               MOTION_TIMEOUT):
+                if not self.backend.wait_until(
+                        lambda states=states, bumps=bumps: "Idle" in states or bumps or self.backend.pause_requested(),
+                        MOTION_TIMEOUT):
                     raise RobotTimeout(f"the base did not finish '{kind} {remaining:g}' within {MOTION_TIMEOUT:g} s")
                 if bumps:
                     self.stop()
@@ -281,9 +287,10 @@ class Hobbit(RobotCommands):
                 if "Idle" in states:
                     return
                 self.stop()
-                self.backend.wait_until(lambda: states[-1:] == ["Idle"], STOP_SETTLE_TIMEOUT)
+                self.backend.wait_until(lambda states=states: states[-1:] == ["Idle"], STOP_SETTLE_TIMEOUT)
                 seen = progress.updates  # the odometry after the halt says where the base stopped
-                self.backend.wait_until(lambda: progress.updates > seen, STOP_SETTLE_TIMEOUT)
+                self.backend.wait_until(lambda progress=progress, seen=seen: progress.updates > seen,
+                                        STOP_SETTLE_TIMEOUT)
             finally:
                 unsubscribe_state()
                 unsubscribe_odom()
@@ -331,6 +338,7 @@ class Hobbit(RobotCommands):
 
     def _tablet_function(self, function_type):
         params = [{"name": "type", "value": function_type}]
-        self.backend.call_service(MMUI_SERVICE, MMUI_TYPE, {"sessionID": "0", "requestText": "", "params": params}, DIALOG_TIMEOUT)
+        self.backend.call_service(MMUI_SERVICE, MMUI_TYPE, {"sessionID": "0", "requestText": "", "params": params},
+                                  DIALOG_TIMEOUT)
 
 

@@ -386,7 +386,8 @@ class SimHobbit(RobotSimulator):
         self.queue("/battery_state", "sensor_msgs/BatteryState", {"percentage": self._battery / 100, "present": True})
         self.queue("/bumper", "std_msgs/Bool", {"data": False})   # a stopped base presses nothing
         self.queue("/joint_states", "sensor_msgs/JointState",
-                   {"header": {"frame_id": "base_link"}, "name": list(ARM_JOINT_NAMES), "position": self._joint_positions()})
+                   {"header": {"frame_id": "base_link"}, "name": list(ARM_JOINT_NAMES),
+                    "position": self._joint_positions()})
 
     def _joint_positions(self):
         """The arm's six joints (radians) and the gripper opening, following the arm's motion."""
@@ -394,7 +395,7 @@ class SimHobbit(RobotSimulator):
         task = self._arm_task
         there = ARM_JOINTS.get(task.command.pose, here) if task is not None and task.command.pose else here
         fraction = task.progress if task is not None else 0.0
-        self._last_joints = [a + (b - a) * fraction for a, b in zip(here, there)]
+        self._last_joints = [a + (b - a) * fraction for a, b in zip(here, there, strict=True)]
         return self._last_joints + [GRIPPER_OPENING[self._gripper]]
 
     # --- base -------------------------------------------------------------------------

@@ -247,7 +247,8 @@ class TurtleBot(RobotCommands):
                     raise RobotCommandError(f"something blocks the way: the TurtleBot stopped after "
                                             f"{abs(done_total):.2f} of {abs(amount):.2f} m")
                 raise RobotCommandError(f"something keeps the TurtleBot from turning: it stopped after "
-                                        f"{abs(math.degrees(done_total)):.0f} of {abs(math.degrees(amount)):.0f} degrees")
+                                        f"{abs(math.degrees(done_total)):.0f} of "
+                                        f"{abs(math.degrees(amount)):.0f} degrees")
             if outcome == "paused":
                 self.backend.hold()
             else:
@@ -314,7 +315,7 @@ class TurtleBot(RobotCommands):
         moved_at, moved_done = latest, 0.0
         while True:
             if not self.backend.wait_until(
-                    lambda: progress.count > seen or bumps or self.backend.pause_requested(), SENSOR_TIMEOUT):
+                    lambda seen=seen: progress.count > seen or bumps or self.backend.pause_requested(), SENSOR_TIMEOUT):
                 raise RobotTimeout(f"no odometry arrived on '{ODOM}' for {SENSOR_TIMEOUT:g} s")
             if bumps:
                 return "bumped"

@@ -58,7 +58,8 @@ def targets(snapshot):
     values["grip"] = 1.0 if get("gripper") == "open" else 0.0
     values["tt_out"] = 1.0 if get("turntable") == "out" else 0.0
     values["tt_angle"] = num(get("turntable_angle"))
-    pan, values["look_len"], values["look_alpha"], values["look_width"], values["tilt"] = head_look(get("head"), pose[1])
+    look = head_look(get("head"), pose[1])
+    pan, values["look_len"], values["look_alpha"], values["look_width"], values["tilt"] = look
     values["pan"] = math.radians(pan)
     # visible area: the room with its walls, grown to keep the robot and its goal in sight
     margin = WALL + 0.3

@@ -46,7 +46,7 @@ def paint_map(p, layout, scene, room, dpr):
 def _trail_dots(points, spacing):
     """Evenly spaced dots along the polyline ``points``."""
     dots, carry = [points[0]], 0.0
-    for (ax, ay), (bx, by) in zip(points, points[1:]):
+    for (ax, ay), (bx, by) in zip(points, points[1:], strict=False):
         length = math.hypot(bx - ax, by - ay)
         if length == 0:
             continue

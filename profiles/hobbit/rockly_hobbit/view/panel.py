@@ -100,7 +100,8 @@ def _paint_status(p, scene, rect, u):
 
 
 def _paint_volume(p, rect, half, h, pad, u, volume, font):
-    """In the right ``half`` of ``rect``: a loudspeaker with up to three waves (crossed out when muted), and the percentage."""
+    """In the right ``half`` of ``rect``: a loudspeaker with up to three waves (crossed out when muted),
+    and the percentage."""
     left = rect.left() + half + pad * 0.5
     cy = rect.center().y()
     speaker = QPolygonF([QPointF(left, cy - h * 0.2), QPointF(left + h * 0.3, cy - h * 0.2),

@@ -191,6 +191,7 @@ def _paint_name_field(p, scene, row, u, gap):
 def _paint_hourglass(p, rect):
     p.setPen(QPen(HINT, 1.4))
     p.setBrush(QColor("#D9D0FF"))
-    l, r, t, b, cx, cy = rect.left(), rect.right(), rect.top(), rect.bottom(), rect.center().x(), rect.center().y()
-    p.drawPolygon(QPolygonF([QPointF(l, t), QPointF(r, t), QPointF(cx + 1, cy), QPointF(r, b), QPointF(l, b),
-                             QPointF(cx - 1, cy)]))
+    left, right, top, bottom = rect.left(), rect.right(), rect.top(), rect.bottom()
+    cx, cy = rect.center().x(), rect.center().y()
+    p.drawPolygon(QPolygonF([QPointF(left, top), QPointF(right, top), QPointF(cx + 1, cy),
+                             QPointF(right, bottom), QPointF(left, bottom), QPointF(cx - 1, cy)]))

@@ -62,7 +62,8 @@ def panel_cards(layout, fonts):
         right = QRectF(laser.right() + gap, inner.top(), inner.right() - laser.right() - gap, inner.height())
         spare = max(0.0, right.height() - speed_h - battery_h - gap)
         speed = QRectF(right.left(), right.top(), right.width(), speed_h + spare / 2)
-        battery = QRectF(right.left(), speed.bottom() + gap, right.width(), max(0.0, right.bottom() - speed.bottom() - gap))
+        battery = QRectF(right.left(), speed.bottom() + gap, right.width(),
+                         max(0.0, right.bottom() - speed.bottom() - gap))
     return laser, speed, battery, pad
 
 
@@ -133,7 +134,8 @@ def _paint_radar(p, centre, radius, scan, far):
     p.setBrush(PLATE)
     p.drawEllipse(centre, body, body)
     p.setBrush(with_alpha(Qt.GlobalColor.white, 0.9))
-    p.drawPolygon([QPointF(centre.x(), centre.y() - body * 0.8), QPointF(centre.x() - body * 0.5, centre.y() + body * 0.4),
+    p.drawPolygon([QPointF(centre.x(), centre.y() - body * 0.8),
+                   QPointF(centre.x() - body * 0.5, centre.y() + body * 0.4),
                    QPointF(centre.x() + body * 0.5, centre.y() + body * 0.4)])
 
 

@@ -20,6 +20,7 @@ BUCKETS = 8         # hits are drawn in this many colour groups
 COLOUR_RANGE = 2.0  # metres from red to blue
 RAY_EVERY = 2       # a ray to every second hit ...
 RAY_RANGE = 1.0     # ... that is this close (metres)
+NEAREST_HALF_WIDTH = math.radians(15)  # the cone nearest() looks into by default
 
 
 def bucket_colour(bucket):
@@ -49,7 +50,7 @@ class Scan:
     def __len__(self):
         return int(self.index.size)
 
-    def nearest(self, centre=0.0, half_width=math.radians(15)):
+    def nearest(self, centre=0.0, half_width=NEAREST_HALF_WIDTH):
         """The nearest hit within ``half_width`` of the direction ``centre`` (radians, 0 = ahead), or None."""
         offsets = numpy.abs(numpy.remainder(self.angle - centre + math.pi, 2 * math.pi) - math.pi)
         inside = self.distance[offsets <= half_width + 1e-6]
@@ -66,7 +67,7 @@ class Scan:
 
 
 def _points(xs, ys):
-    return [QPointF(x, y) for x, y in zip(xs.tolist(), ys.tolist())]
+    return [QPointF(x, y) for x, y in zip(xs.tolist(), ys.tolist(), strict=True)]
 
 
 def paint_scan(p, scan, u):
