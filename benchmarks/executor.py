@@ -171,8 +171,9 @@ def gui_responsiveness(tmp_settings):
     window.editor.sig_ready.connect(loop.quit)
     window.start()
     loop.exec()
-    tight = block("controls_whileUntil", {"MODE": "WHILE"}, {"BOOL": block("logic_boolean", {"BOOL": "TRUE"}),
-                                                              "DO": block("math_change", {"VAR": {"id": "n"}}, {"DELTA": number(1)})})
+    forever = block("logic_boolean", {"BOOL": "TRUE"})
+    count_up = block("math_change", {"VAR": {"id": "n"}}, {"DELTA": number(1)})
+    tight = block("controls_whileUntil", {"MODE": "WHILE"}, {"BOOL": forever, "DO": count_up})
     ws = workspace(stack(block("variables_set", {"VAR": {"id": "n"}}, {"VALUE": number(0)}), tight))
     ws["variables"] = [{"name": "n", "id": "n"}]
     window.editor.call("load", {"workspace": ws}, lambda _result, _error: loop.quit())

@@ -121,7 +121,7 @@ def killed_node(folder):
         run = RocklyProcess(["run", source, "--backend", "ros1", "--master", master.uri], master,
                             ready_line="block   cmd")
         try:
-            eventually(lambda: messages_received(master.uri, "/DiscreteMotionCmd") >= 1)
+            eventually(lambda uri=master.uri: messages_received(uri, "/DiscreteMotionCmd") >= 1)
             killed = time.monotonic()
             (simulator.process.kill if what == "robot node" else master.stop)()
             for line in run.process.stderr:

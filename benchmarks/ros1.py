@@ -221,7 +221,8 @@ def run_all(master):
         held = robot.backend(interrupt)
         held.call_service("/bench_hold", "std_srvs/SetBool", {"data": False}, 5)  # connected: the next call waits here
         requested = []
-        threading.Timer(0.05, lambda: (requested.append(time.perf_counter()), interrupt.request_stop())).start()
+        threading.Timer(0.05, lambda requested=requested, interrupt=interrupt: (
+            requested.append(time.perf_counter()), interrupt.request_stop())).start()
         try:
             held.call_service("/bench_hold", "std_srvs/SetBool", {"data": True}, 5)
         except ProgramStopped:

@@ -22,7 +22,7 @@ BLOCK_COUNT = 300
 
 
 def _chain(blocks):
-    for upper, lower in zip(blocks, blocks[1:]):
+    for upper, lower in zip(blocks, blocks[1:], strict=False):
         upper["next"] = {"block": lower}
     return blocks[0]
 
@@ -47,7 +47,8 @@ BARE_PAGE = """<!doctype html><html><head><meta charset="utf-8">
 <script src="{vendor}/blockly_compressed.js"></script><script src="{vendor}/blocks_compressed.js"></script>
 <script src="{vendor}/python_compressed.js"></script><script src="{vendor}/msg/en.js"></script>
 <style>html,body,#ws{{margin:0;height:100%}}</style></head><body><div id="ws"></div><script>
-const toolbox = {{kind: 'flyoutToolbox', contents: [{{kind: 'block', type: 'text_print'}}, {{kind: 'block', type: 'text'}}]}};
+const toolbox = {{kind: 'flyoutToolbox',
+                  contents: [{{kind: 'block', type: 'text_print'}}, {{kind: 'block', type: 'text'}}]}};
 const ws = Blockly.inject('ws', {{toolbox, media: '{vendor}/media/'}});
 Blockly.serialization.workspaces.load({program}, ws);
 python.pythonGenerator.workspaceToCode(ws);
@@ -126,8 +127,10 @@ def main():
             bare.append(time_child(["bare", str(page)]))
             rockly.append(time_child(["rockly", str(program), str(folder / f"settings{run}.ini")]))
     bare_median, rockly_median = statistics.median(bare), statistics.median(rockly)
-    print(f"startup  plain Blockly in QWebEngineView: median {bare_median:.3f} s  (min {min(bare):.3f}, max {max(bare):.3f}, {options.runs} runs)")
-    print(f"startup  Rockly, HOBBIT, 300-block program: median {rockly_median:.3f} s  (min {min(rockly):.3f}, max {max(rockly):.3f}, {options.runs} runs)")
+    print(f"startup  plain Blockly in QWebEngineView: median {bare_median:.3f} s  "
+          f"(min {min(bare):.3f}, max {max(bare):.3f}, {options.runs} runs)")
+    print(f"startup  Rockly, HOBBIT, 300-block program: median {rockly_median:.3f} s  "
+          f"(min {min(rockly):.3f}, max {max(rockly):.3f}, {options.runs} runs)")
     print(f"startup  ratio Rockly / plain Blockly: {rockly_median / bare_median:.2f}  (aim <= 1.30)")
 
 

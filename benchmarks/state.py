@@ -88,7 +88,8 @@ def measure(app, plot, seconds: float) -> dict:
 
 def report(name, figures):
     growth = (figures["memory_end"] - figures["memory_start"]) / figures["memory_start"] * 100
-    print(f"{name}: event-loop delay p99 {figures['p99']:.1f} ms (median {figures['median']:.2f} ms; aim p99 <= 30 ms), "
+    print(f"{name}: event-loop delay p99 {figures['p99']:.1f} ms "
+          f"(median {figures['median']:.2f} ms; aim p99 <= 30 ms), "
           f"plot redraws {figures['redraw']:.1f}/s, CPU {figures['cpu']:.0f} % of one core, "
           f"memory {figures['memory_start']:.0f} -> {figures['memory_end']:.0f} MB ({growth:+.1f} %; aim within 10 %)")
 
@@ -120,8 +121,8 @@ def main():
         plot.add_curve("/odom", "pose.pose.position.x")
         report("no stream (baseline)", measure(app, plot, seconds))
 
-        publisher = subprocess.Popen(["/usr/bin/python3", "-c", PUBLISHER, str(REPO)], env=ros_environment(master.uri, home),
-                                     stdout=subprocess.PIPE, text=True)
+        publisher = subprocess.Popen(["/usr/bin/python3", "-c", PUBLISHER, str(REPO)],
+                                     env=ros_environment(master.uri, home), stdout=subprocess.PIPE, text=True)
         assert publisher.stdout.readline().startswith("publishing")
         deadline = time.monotonic() + 10
         while not robot.state.latest("/odom") and time.monotonic() < deadline:

@@ -38,14 +38,17 @@ def _tool_parser() -> argparse.ArgumentParser:
 
     export = commands.add_parser("export", help="write the Python generated from a program")
     export.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
-    export.add_argument("-o", "--output", type=Path, required=True, help="the .py file to write (- for standard output)")
+    export.add_argument("-o", "--output", type=Path, required=True,
+                        help="the .py file to write (- for standard output)")
     export.add_argument("--language", default="en", choices=("en", "de"))
 
     run = commands.add_parser("run", help="run a program without a window")
     run.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
-    run.add_argument("--backend", default="sim", choices=("sim", "ros1"), help="the robot to run on (default: the simulator)")
+    run.add_argument("--backend", default="sim", choices=("sim", "ros1"),
+                     help="the robot to run on (default: the simulator)")
     run.add_argument("--master", help="ROS master URI for --backend ros1 (default: $ROS_MASTER_URI)")
-    run.add_argument("--answer", action="append", default=[], help="an answer for the next tablet question (repeatable)")
+    run.add_argument("--answer", action="append", default=[],
+                     help="an answer for the next tablet question (repeatable)")
     run.add_argument("--speed", type=float, default=1.0, help="simulated time runs this many times faster")
 
     sim = commands.add_parser("sim", help="run a profile's simulated robot as a ROS 1 node, in a small window")
@@ -75,7 +78,8 @@ def _profiles_list() -> int:
 
     registry = ProfileRegistry.discover()
     for profile in registry.profiles.values():
-        print(f"{profile.id:<14} {profile.display_name():<20} {profile.version:<10} {profile.source:<12} {profile.root}")
+        print(f"{profile.id:<14} {profile.display_name():<20} {profile.version:<10} "
+              f"{profile.source:<12} {profile.root}")
     if not registry.profiles:
         print("No robot profiles are installed.")
     for error in registry.errors:
@@ -164,7 +168,8 @@ def _is_standard_output(path: Path) -> bool:
 def main(argv=None) -> int:
     """Entry point of the ``rockly`` command."""
     argv = list(sys.argv[1:] if argv is None else argv)
-    logging.basicConfig(level=os.environ.get("ROCKLY_LOG", "warning").upper(), format="%(levelname)s %(name)s: %(message)s")
+    logging.basicConfig(level=os.environ.get("ROCKLY_LOG", "warning").upper(),
+                        format="%(levelname)s %(name)s: %(message)s")
     if argv and argv[0] in SUBCOMMANDS:
         args = _tool_parser().parse_args(argv)
         if args.command in ("profiles", "plugins"):

@@ -20,7 +20,8 @@ def serve_simulator(profile_id: str, master_uri=None, speed: float = 1.0, answer
 
     registry = ProfileRegistry.discover()
     if profile_id not in registry.profiles:
-        print(f"rockly sim: no robot profile '{profile_id}' (installed: {', '.join(registry.profiles)})", file=sys.stderr)
+        print(f"rockly sim: no robot profile '{profile_id}' (installed: {', '.join(registry.profiles)})",
+              file=sys.stderr)
         return 2
     profile = registry.get(profile_id)
     if not window:
@@ -74,7 +75,8 @@ def _serve_with_window(profile, master_uri, speed, answers, out) -> int:
     app = create_application()
     window = SimulatorWindow(profile, AppSettings().language)
     try:
-        node = SimulatorNode(profile, _message_types(profile), master_uri, speed, AnswerList(answers, out, then=window.tablet))
+        node = SimulatorNode(profile, _message_types(profile), master_uri, speed,
+                             AnswerList(answers, out, then=window.tablet))
     except RocklyError as error:
         print(f"rockly sim: {error}", file=sys.stderr)
         return 1

@@ -58,7 +58,8 @@ class EditorView(QWebEngineView):
     """The block editor: a web view showing Blockly, with a small Python API."""
 
     sig_ready = Signal()
-    sig_changed = Signal(object, str, str)  # workspace JSON (a dict, any number size), generated Python, origin: "user" | "load"
+    # workspace JSON (a dict, any number size), generated Python, origin: "user" | "load"
+    sig_changed = Signal(object, str, str)
     sig_page_error = Signal(str)
     sig_breakpoints = Signal(list)  # block ids, after the user toggled one
 

@@ -60,7 +60,8 @@ class HeadlessEditor:
         name, args = program.editor_call()
         result = self.call_and_wait(name, args)
         if result.get("untypedBlock"):
-            raise ProgramFileError(program.path or "the program", f"the file is broken: block {result['untypedBlock']} has no type")
+            broken = f"the file is broken: block {result['untypedBlock']} has no type"
+            raise ProgramFileError(program.path or "the program", broken)
         if result.get("unknownTypes"):
             raise UnknownBlocks(result["unknownTypes"])
         program.take_load_result(result)

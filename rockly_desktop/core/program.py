@@ -76,7 +76,8 @@ def parse_program(text: str, path="<text>") -> Program:
         raise ProgramFileError(path, "the program has no valid format version")
     if version > FORMAT_VERSION:
         raise ProgramFileError(
-            path, f"the program was saved by a newer Rockly (format version {version}; this Rockly reads up to {FORMAT_VERSION})"
+            path, f"the program was saved by a newer Rockly (format version {version}; "
+                  f"this Rockly reads up to {FORMAT_VERSION})"
         )
     profile_id = document.get("profile")
     if not isinstance(profile_id, str) or not profile_id:
@@ -102,7 +103,8 @@ def read_text_file(path, max_bytes: int = MAX_FILE_BYTES) -> str:
         if stat.S_ISDIR(info.st_mode):
             raise ProgramFileError(path, "this is a folder, not a file")
         if not stat.S_ISREG(info.st_mode):
-            raise ProgramFileError(path, "this is not a regular file (a device, a pipe or a socket), so it is not opened")
+            raise ProgramFileError(path, "this is not a regular file (a device, a pipe or a socket), "
+                                         "so it is not opened")
         with open(path, "rb") as stream:
             data = stream.read(max_bytes + 1)
     except FileNotFoundError:

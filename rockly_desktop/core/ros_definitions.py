@@ -142,7 +142,8 @@ class DefinitionCatalog:
         return inputs
 
     def fields(self, type_name: str, kind: str = "msg") -> list:
-        """The inputs of a message type (``kind='msg'``), a service's request (``'srv'``) or an action's goal (``'action'``).
+        """The inputs of a message type (``kind='msg'``), a service's request (``'srv'``)
+        or an action's goal (``'action'``).
 
         Action types are named as programs name them, ``<package>/<Name>Action``.
         Returns [] for a type that is not found.

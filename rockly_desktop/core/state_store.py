@@ -134,6 +134,7 @@ class StateStore:
             infos = []
             for topic, entry in sorted(self._topics.items()):
                 recent = [t for t in entry.arrivals if t >= now - self._rate_window]
-                rate = (len(recent) - 1) / (recent[-1] - recent[0]) if len(recent) > 1 and recent[-1] > recent[0] else 0.0
+                spread = recent[-1] - recent[0] if len(recent) > 1 else 0.0
+                rate = (len(recent) - 1) / spread if spread > 0 else 0.0
                 infos.append(TopicInfo(topic, entry.msg_type, entry.count, rate, now - entry.last[0]))
             return infos

@@ -40,10 +40,14 @@ def blocks_in_file_order(workspace: dict):
         yield block
         children = []
         for key, value in block.items():
-            connections = list(value.values()) if key == "inputs" and isinstance(value, dict) else [value] if key == "next" else []
+            if key == "inputs" and isinstance(value, dict):
+                connections = list(value.values())
+            else:
+                connections = [value] if key == "next" else []
             for connection in connections:
                 if isinstance(connection, dict):
-                    children.extend(child for kind, child in connection.items() if kind in ("block", "shadow") and child)
+                    children.extend(child for kind, child in connection.items()
+                                    if kind in ("block", "shadow") and child)
         pending.extend(reversed(children))
 
 
@@ -116,15 +120,17 @@ def parse_blockly_xml(text: str, path="<text>") -> ElementTree.Element:
         root = ElementTree.fromstring(text)
     except ElementTree.ParseError as error:
         raise ProgramFileError(path, f"this is not valid Blockly XML ({error})") from None
-    if local_name(root.tag) != "xml":
-        raise ProgramFileError(path, f"this is not a Blockly program (the top element is <{local_name(root.tag)}>, not <xml>)")
+    top = local_name(root.tag)
+    if top != "xml":
+        raise ProgramFileError(path, f"this is not a Blockly program (the top element is <{top}>, not <xml>)")
     return root
 
 
 def block_types_in_xml(root: ElementTree.Element) -> Counter:
     """Count the block types in parsed Blockly XML."""
     return Counter(
-        element.get("type") or "(block without a type)" for element in root.iter() if local_name(element.tag) in ("block", "shadow")
+        element.get("type") or "(block without a type)"
+        for element in root.iter() if local_name(element.tag) in ("block", "shadow")
     )
 
 

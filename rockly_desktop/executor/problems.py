@@ -204,7 +204,8 @@ def _type_problem(message: str, language: str, variables) -> str:
         kinds = {_kind(first), _kind(second)}
         words = {"a": _kind_words(first, language), "b": _kind_words(second, language)}
         key = "join_text" if op == "+" and "text" in kinds else "calculate"
-        return _sentence(_with_values(text(key, language, op=_SYMBOLS.get(op, op), **words), variables, language, kinds))
+        phrase = text(key, language, op=_SYMBOLS.get(op, op), **words)
+        return _sentence(_with_values(phrase, variables, language, kinds))
     found = _COMPARE.search(message)
     if found:
         op, first, second = found.groups()

@@ -38,8 +38,11 @@ class SimulatedRobot:
         """HealthItems of the simulated robot (its interface as the manifest declares it)."""
         interface = self.profile.ros_interface
         link = HealthItem("simulator", GREEN, "the built-in simulator is running")
-        return [link] + topic_health(interface, self.state.topics()) + server_health(
-            interface, lambda kind, name: self.world.has_service(name) if kind == "services" else self.world.has_action(name))
+
+        def has_server(kind, name):
+            return self.world.has_service(name) if kind == "services" else self.world.has_action(name)
+
+        return [link] + topic_health(interface, self.state.topics()) + server_health(interface, has_server)
 
     def safe_stop(self) -> list:
         """Do the profile's safe stop now; returns what failed."""

@@ -131,7 +131,8 @@ class ProgramRunner:
         except ProgramStopped:
             result = RunFinished("stopped", self.hooks.current_block)
         except SyntaxError as error:
-            result = RunFinished("error", None, text("unreadable", self.language, detail=error.msg), traceback.format_exc())
+            result = RunFinished("error", None, text("unreadable", self.language, detail=error.msg),
+                                 traceback.format_exc())
         except Exception as error:
             result = RunFinished("error", self.hooks.current_block, self.explain(error), _program_traceback(error))
         self._finish()

@@ -129,11 +129,12 @@ def _placeholders(code: str, where: str, path: Path) -> set:
         parts = [(name, spec, conversion) for _, name, spec, conversion in string.Formatter().parse(code)
                  if name is not None]
     except ValueError as error:
-        raise ManifestError(path, where, f"the template is broken ({error}); write a literal brace as '{{{{' or '}}}}'") from None
+        raise ManifestError(path, where, f"the template is broken ({error}); "
+                                         "write a literal brace as '{{' or '}}'") from None
     for name, spec, conversion in parts:
         if spec or conversion or not name.isidentifier():
-            raise ManifestError(path, where, f"placeholders are plain names like {{speed}}; "
-                                             f"'{{{name}{'!' + conversion if conversion else ''}{':' + spec if spec else ''}}}' is not one")
+            written = f"{{{name}{'!' + conversion if conversion else ''}{':' + spec if spec else ''}}}"
+            raise ManifestError(path, where, f"placeholders are plain names like {{speed}}; '{written}' is not one")
     return {name for name, _, _ in parts}
 
 
@@ -162,7 +163,8 @@ def _parse_block(raw, index: int, path: Path) -> BlockSpec:
     for name in sorted(_placeholders(python["code"], f"{where}.python.code", path)):
         if name not in slots:
             raise ManifestError(path, f"{where}.python.code",
-                                f"uses {{{name}}}, but the block has no field or input named '{name}' (it has: {sorted(slots) or 'none'})")
+                                f"uses {{{name}}}, but the block has no field or input named '{name}' "
+                                f"(it has: {sorted(slots) or 'none'})")
     values = python.get("values", {})
     if not isinstance(values, dict):
         raise ManifestError(path, f"{where}.python.values", "must map field names to {value: Python value}")
@@ -171,7 +173,8 @@ def _parse_block(raw, index: int, path: Path) -> BlockSpec:
             raise ManifestError(path, f"{where}.python.values.{name}", "must map the values of a field of this block")
     defaults = python.get("defaults", {})
     if not isinstance(defaults, dict):
-        raise ManifestError(path, f"{where}.python.defaults", "must map value input names to the Python used when they are empty")
+        raise ManifestError(path, f"{where}.python.defaults",
+                            "must map value input names to the Python used when they are empty")
     for name in defaults:
         if slots.get(name) != "value":
             raise ManifestError(path, f"{where}.python.defaults.{name}", "names no value input of this block")

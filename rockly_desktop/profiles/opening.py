@@ -142,7 +142,8 @@ def describe_replaced_field(entry: dict) -> str:
     if entry.get("rounded"):
         return (f"{where}: {entry.get('field')} {requested} is too large to keep exactly; "
                 f"it became {entry.get('now')}")
-    return f"{where}: {entry.get('field')} {requested!r} is not a value this block accepts; it was replaced by {entry.get('now')!r}"
+    return (f"{where}: {entry.get('field')} {requested!r} is not a value this block accepts; "
+            f"it was replaced by {entry.get('now')!r}")
 
 
 def opening_warnings(program: ProgramToOpen) -> list:

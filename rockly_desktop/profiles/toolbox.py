@@ -71,7 +71,8 @@ def read_toolbox(path: Path, shared_folder: Path, profile_block_types: set) -> l
         where = f"categories[{index}]"
         if isinstance(raw, dict) and "shared" in raw:
             if raw["shared"] not in available:
-                raise ManifestError(path, f"{where}.shared", f"no shared category '{raw['shared']}' (there are: {', '.join(available)})")
+                raise ManifestError(path, f"{where}.shared",
+                                    f"no shared category '{raw['shared']}' (there are: {', '.join(available)})")
             category = {**read_shared_category(raw["shared"], shared_folder), "shared": raw["shared"]}
         else:
             category = _category(raw, path, where)

@@ -22,7 +22,8 @@ class ConnectionDialog(QDialog):
         self.master_edit = QLineEdit(master_uri or os.environ.get("ROS_MASTER_URI") or DEFAULT_MASTER, self)
         self.host_edit = QLineEdit(host or os.environ.get("ROS_IP") or os.environ.get("ROS_HOSTNAME") or "", self)
         self.host_edit.setPlaceholderText(tr("connect_host_hint", language))
-        for edit, longest in ((self.master_edit, "http://192.168.100.100:11311"), (self.host_edit, edit_hint(self.host_edit))):
+        widest = (self.master_edit, "http://192.168.100.100:11311"), (self.host_edit, edit_hint(self.host_edit))
+        for edit, longest in widest:
             edit.setMinimumWidth(edit.fontMetrics().horizontalAdvance(longest) + 24)  # the whole address shows
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel, self)
         buttons.accepted.connect(self.accept)

@@ -41,7 +41,8 @@ class HealthBar(QLabel):
         self.items = self.robot.health()
         self.level = overall(self.items)
         colour = COLOURS[self.level]
-        self.setText(f"<span style='color:{colour}; font-size:16px'>●</span> {tr('health_' + self.level, self.language)}")
+        summary = tr("health_" + self.level, self.language)
+        self.setText(f"<span style='color:{colour}; font-size:16px'>●</span> {summary}")
         rows = "".join(f"<tr><td style='color:{COLOURS[item.level]}'>{SYMBOLS[item.level]}</td>"
                        f"<td>{_escape(item.name)}</td><td>{_escape(item.detail)}</td></tr>" for item in self.items)
         self.setToolTip(f"<b>{tr('health_title', self.language)}</b><table>{rows}</table>")

@@ -363,7 +363,8 @@ class PlotPanel(QWidget):
     def _tick(self):
         started = time.perf_counter()
         self.refresh()
-        # Refresh less often when a refresh is expensive (a huge store history, many curves): the window stays responsive.
+        # Refresh less often when a refresh is expensive (a huge store history, many curves):
+        # the window stays responsive.
         cost_ms = (time.perf_counter() - started) * 1000
         self.timer.setInterval(int(min(MAX_REFRESH_INTERVAL_MS, max(REFRESH_INTERVAL_MS, _BUSY_SHARE * cost_ms))))
 

@@ -183,7 +183,8 @@ class ProgramFiles(QObject):
             if error:
                 self._show_error("cannot_open", f"{path}: the editor could not show this program ({error})")
             elif result.get("untypedBlock"):
-                self._show_error("cannot_open", f"{path}: the file is broken: block {result['untypedBlock']} has no type")
+                self._show_error("cannot_open",
+                                 f"{path}: the file is broken: block {result['untypedBlock']} has no type")
             elif result.get("unknownTypes"):
                 self._show_error("cannot_open", unknown_blocks_error(program, result["unknownTypes"], self.registry))
             else:
@@ -218,7 +219,8 @@ class ProgramFiles(QObject):
         parts = []
         if program.missing_profile:
             parts.append(tr("missing_profile", language, declared=program.missing_profile,
-                            installed=", ".join(program.installed_profiles), name=program.profile.display_name(language)))
+                            installed=", ".join(program.installed_profiles),
+                            name=program.profile.display_name(language)))
         if program.replaced_fields:
             lines = [tr("replaced_fields", language)]
             for entry in program.replaced_fields:

@@ -15,7 +15,7 @@ def _format(colour: str, bold: bool = False, italic: bool = False) -> QTextCharF
 
 
 _RULES = (
-    (re.compile(r"\b(?:%s)\b" % "|".join(keyword.kwlist)), _format("#8e44ad", bold=True)),
+    (re.compile(rf"\b(?:{'|'.join(keyword.kwlist)})\b"), _format("#8e44ad", bold=True)),
     (re.compile(r"\b(?:True|False|None)\b"), _format("#c0392b", bold=True)),
     (re.compile(r"\b\d+(?:\.\d*)?(?:[eE][-+]?\d+)?\b"), _format("#d35400")),
     (re.compile(r"\brobot\b"), _format("#2e7d32", bold=True)),

@@ -222,7 +222,8 @@ class RunSession(QObject):
         if result.outcome == "error":
             self.console.append(result.message, "error")
             self.editor.call("markError", {"id": result.block_id, "message": result.message})
-            box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, tr("error_title", language), result.message)
+            box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, tr("error_title", language),
+                                    result.message)
             box.setObjectName("run_error_box")
             box.setDetailedText(result.details or "")
             box.open()

@@ -82,8 +82,10 @@ _TEXTS = {
                  "Das ungespeicherte Programm ist wiederhergestellt – speichere es, um es zu behalten"),
     "autosave_failed": ("Rockly could not keep a copy of your unsaved changes: {error}",
                         "Rockly konnte keine Kopie deiner ungespeicherten Änderungen anlegen: {error}"),
-    "profile_errors_title": ("Some robot profiles could not be loaded", "Einige Roboterprofile konnten nicht geladen werden"),
-    "editor_error": ("The block editor reported a problem: {message}", "Der Block-Editor meldet ein Problem: {message}"),
+    "profile_errors_title": ("Some robot profiles could not be loaded",
+                             "Einige Roboterprofile konnten nicht geladen werden"),
+    "editor_error": ("The block editor reported a problem: {message}",
+                     "Der Block-Editor meldet ein Problem: {message}"),
     "preferences_title": ("Preferences", "Einstellungen"),
     "language": ("Language", "Sprache"),
     "preferences_general": ("General", "Allgemein"),
@@ -144,9 +146,11 @@ _TEXTS = {
     "ros_no_rospy": ("ROS 1 is not installed on this computer, so Rockly cannot reach a real robot.",
                      "ROS 1 ist auf diesem Computer nicht installiert, deshalb erreicht Rockly keinen echten Roboter."),
     "ros_no_rospy_hint": ("Use the built-in simulator, or ask an adult to install ROS 1 (rospy).",
-                          "Nimm den eingebauten Simulator oder bitte einen Erwachsenen, ROS 1 (rospy) zu installieren."),
+                          "Nimm den eingebauten Simulator oder bitte einen Erwachsenen, "
+                          "ROS 1 (rospy) zu installieren."),
     "ros_no_ros_tools": ("The ROS 1 message tools (genpy, actionlib) are not installed on this computer.",
-                         "Die ROS-1-Nachrichtenwerkzeuge (genpy, actionlib) sind auf diesem Computer nicht installiert."),
+                         "Die ROS-1-Nachrichtenwerkzeuge (genpy, actionlib) sind auf diesem Computer "
+                         "nicht installiert."),
     "ros_no_ros_tools_hint": ("Use the built-in simulator, or ask an adult to install them.",
                               "Nimm den eingebauten Simulator oder bitte einen Erwachsenen, sie zu installieren."),
     "ros_other_master": ("Rockly is already connected to the ROS master at {current}, so it cannot use {wanted}.",
@@ -158,7 +162,8 @@ _TEXTS = {
     "ros_connecting": ("● ROS connecting…", "● ROS verbindet…"),
     "ros_lost": ("● ROS connection lost", "● ROS-Verbindung verloren"),
     "real_robot_view": ("Connected to the real robot over ROS.\nThe simulator view shows the built-in simulator only.",
-                        "Mit dem echten Roboter über ROS verbunden.\nDie Simulator-Ansicht zeigt nur den eingebauten Simulator."),
+                        "Mit dem echten Roboter über ROS verbunden.\n"
+                        "Die Simulator-Ansicht zeigt nur den eingebauten Simulator."),
     "console_dock": ("Console", "Konsole"),
     "variables_dock": ("Variables", "Variablen"),
     "simulator_dock": ("Simulator", "Simulator"),
@@ -167,7 +172,8 @@ _TEXTS = {
     "add_breakpoint": ("Pause here (breakpoint)", "Hier anhalten (Haltepunkt)"),
     "remove_breakpoint": ("Remove breakpoint", "Haltepunkt entfernen"),
     "run_started": ("Program started", "Programm gestartet"),
-    "ros_address_title": ("The robot may not reach this computer", "Der Roboter erreicht diesen Computer vielleicht nicht"),
+    "ros_address_title": ("The robot may not reach this computer",
+                          "Der Roboter erreicht diesen Computer vielleicht nicht"),
     "ros_address_ipv6": ("ROS_IP is {address}, an IPv6 address, but ROS_IPV6 is not “on”: the robot cannot connect "
                          "back to this computer, so the program's commands would never arrive. Give this computer's "
                          "IPv4 address (127.0.0.1 for a robot on this computer) and restart Rockly.",
@@ -184,7 +190,8 @@ _TEXTS = {
     "run_empty": ("There is nothing to run yet: drag blocks from the list on the left into the workspace.",
                   "Noch gibt es nichts zu starten: Zieh Blöcke aus der Liste links auf die Arbeitsfläche."),
     "run_not_started": ("The program was not started: the block editor did not give its code ({error}).",
-                        "Das Programm wurde nicht gestartet: Der Block-Editor hat seinen Code nicht geliefert ({error})."),
+                        "Das Programm wurde nicht gestartet: Der Block-Editor hat seinen Code "
+                        "nicht geliefert ({error})."),
     "run_finished": ("Program finished", "Programm beendet"),
     "run_stopped": ("Program stopped", "Programm gestoppt"),
     "run_failed": ("Program stopped because of an error", "Programm wegen eines Fehlers gestoppt"),

@@ -205,7 +205,8 @@ def _register_again():
     )
 
     topics, services = get_topic_manager(), get_service_manager()
-    for manager in [listener for listener in get_registration_listeners().listeners if isinstance(listener, RegManager)]:
+    managers = [listener for listener in get_registration_listeners().listeners if isinstance(listener, RegManager)]
+    for manager in managers:
         for topic, msg_type in topics.get_publications():
             manager.reg_added(topic, msg_type, Registration.PUB)
         for topic, msg_type in topics.get_subscriptions():

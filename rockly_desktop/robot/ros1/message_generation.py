@@ -246,7 +246,7 @@ class PackageGenerator:
                 for full_type in own_types:
                     depends.update(context.get_all_depends(full_type))
                 texts = {t: context.get_registered(t).text for t in set(own_types) | depends}
-                for kind, full_type, path, blame in items:
+                for kind, full_type, path, _blame in items:
                     if kind == "srv":
                         texts[full_type + ".srv"] = _read_text(path)
                 key = _hash([f"rockly ros1 messages {CACHE_FORMAT}", f"genpy {_genpy_version()}", source.name]

@@ -47,8 +47,9 @@ class SimRosBridge:
                             publisher.publish(to_message(message_class, data)))
             self._endpoints.append(publisher)
         for name, srv_type in interface.get("services", {}).items():
-            self._endpoints.append(rospy.Service(name, types.service_class(srv_type),
-                                                 lambda request, name=name, srv_type=srv_type: self._serve(name, srv_type, request)))
+            self._endpoints.append(rospy.Service(
+                name, types.service_class(srv_type),
+                lambda request, name=name, srv_type=srv_type: self._serve(name, srv_type, request)))
         self._action_servers = [self._serve_action(name, action_type)
                                 for name, action_type in interface.get("actions", {}).items()]
 
