@@ -17,6 +17,7 @@
   let workspace = null;
   let loading = false;
   let changeTimer = null;
+  let errorBlockId = null;  // the block marked with the last run's error, until it is edited
   const CHANGE_DEBOUNCE_MS = 60;
 
   function send(message) {
@@ -71,6 +72,9 @@
 
   function onWorkspaceEvent(event) {
     if (loading || event.isUiEvent) return;
+    if (errorBlockId && event.blockId === errorBlockId && event.type !== Blockly.Events.BLOCK_MOVE) {
+      clearError();  // the child changed the block the error came from: the mark has done its job
+    }
     clearTimeout(changeTimer);
     changeTimer = setTimeout(() => reportChange('user'), CHANGE_DEBOUNCE_MS);
   }
@@ -194,10 +198,19 @@
 
   function clearMarks() {
     workspace.highlightBlock(null);
+    errorBlockId = null;
     for (const block of workspace.getAllBlocks(false)) {
       if (block.getSvgRoot) block.getSvgRoot().classList.remove('rocklyError');
-      if (block.warning) block.setWarningText(null);
+      block.setWarningText(null);
     }
+  }
+
+  function clearError() {
+    const block = workspace.getBlockById(errorBlockId);
+    errorBlockId = null;
+    if (!block) return;
+    block.getSvgRoot().classList.remove('rocklyError');
+    block.setWarningText(null);
   }
 
   /** Block types in a program (Blockly JSON or XML) that this page cannot create. */
@@ -413,7 +426,9 @@
       if (!block) return false;
       block.getSvgRoot().classList.add('rocklyError');
       block.setWarningText(message);
-      block.select();
+      errorBlockId = id;
+      // Not selected: a selected block is outlined in the running glow's yellow, and the
+      // error must look like an error.
       workspace.centerOnBlock(id);
       return true;
     },

@@ -112,6 +112,23 @@ def test_an_error_marks_its_block_with_a_plain_message_and_the_traceback_one_cli
     assert window.robot().snapshot()["notices"] == []
 
 
+def test_an_error_mark_is_not_the_running_glow_and_goes_when_its_block_is_edited(qtbot, window):
+    load(qtbot, window, block("variables_set", {"VAR": {"id": "x"}}, {"VALUE": block(
+        "math_arithmetic", {"OP": "DIVIDE"}, {"A": number(1), "B": number(0)})}, id="divide"), variables=["x"])
+    window.runs.run()
+    assert finished(qtbot, window).outcome == "error"
+    marks = ("(() => { const b = Blockly.getMainWorkspace().getBlockById('divide'); const root = b.getSvgRoot();"
+             " return [root.classList.contains('rocklyError'), b.isSelected ? b.isSelected() : false,"
+             " b.hasIcon(Blockly.icons.IconType.WARNING)]; })()")
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, marks)[0], timeout=5000)
+    assert run_js(qtbot, window.editor, marks) == [True, False, True]  # red, not the selection's yellow
+
+    run_js(qtbot, window.editor, "Blockly.getMainWorkspace().getBlockById('divide').setFieldValue("
+                                 "Blockly.getMainWorkspace().getVariableMap().createVariable('y').getId(), 'VAR')")
+
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, marks) == [False, False, False], timeout=5000)
+
+
 def test_tablet_questions_appear_as_dialogs_with_the_exact_text(qtbot, window):
     question = 'Do you like "tea"?\nSay \'yes\' \\ 🍵'
     load(qtbot, window, block("controls_if", id="if", inputs={
