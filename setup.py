@@ -1,4 +1,4 @@
-"""Install the editor page, shared toolboxes and built-in profiles as data files.
+"""Install the editor page, shared toolboxes, built-in profiles and examples as data files.
 
 Metadata lives in pyproject.toml; this file only lists the data folders, which
 setuptools cannot glob recursively on its own. They land in
@@ -8,7 +8,7 @@ import os
 
 from setuptools import setup
 
-DATA_FOLDERS = ("resources", "toolboxes", "profiles")
+DATA_FOLDERS = ("resources", "toolboxes", "profiles", "examples")
 
 
 def data_files():

@@ -70,6 +70,70 @@
     send({event: 'changed', origin, ...state()});
   }
 
+  // --- loose value blocks, the empty canvas's hint, where a program opens --------------
+
+  /**
+   * A value block lying loose on the canvas has nowhere to give its value: it is not run
+   * (nor exported) and looks disabled, with the reason Blockly's own orphans get. Loose
+   * statement stacks still run (first-Rockly programs depend on that), which is why
+   * Blockly's `disableOrphans`, which disables those too, is not used.
+   */
+  const LOOSE = 'ORPHANED_BLOCK';
+
+  function markLooseValues() {
+    const recordUndo = Blockly.Events.getRecordUndo();
+    Blockly.Events.setRecordUndo(false);  // follows the move that caused it, as Blockly's orphans do
+    try {
+      for (const block of workspace.getAllBlocks(false)) {
+        const loose = Boolean(block.outputConnection) && !block.getParent();
+        if (block.hasDisabledReason(LOOSE) !== loose) block.setDisabledReason(loose, LOOSE);
+      }
+    } finally {
+      Blockly.Events.setRecordUndo(recordUndo);
+    }
+  }
+
+  const PLACING_EVENTS = new Set([Blockly.Events.BLOCK_CREATE, Blockly.Events.BLOCK_MOVE, Blockly.Events.BLOCK_DRAG,
+                                  Blockly.Events.BLOCK_DELETE]);
+
+  function afterPlacing(event) {
+    if (!PLACING_EVENTS.has(event.type) || workspace.isDragging()) return;
+    markLooseValues();
+    updateHint();
+  }
+
+  let hint = null;
+
+  /** The empty canvas's hint, drawn over the workspace's background and under the toolbox's flyout. */
+  function makeHint(text) {
+    if (!text) return;
+    hint = document.createElement('div');
+    hint.id = 'emptyHint';
+    hint.textContent = text;
+    const svg = workspace.getParentSvg();
+    svg.parentNode.insertBefore(hint, svg.nextSibling);
+    updateHint();
+  }
+
+  function updateHint() {
+    if (!hint) return;
+    hint.hidden = workspace.getTopBlocks(false).length > 0;
+    hint.style.left = workspace.getMetricsManager().getAbsoluteMetrics().left + 'px';
+  }
+
+  const START_MARGIN = 24;  // pixels between the view's corner and the program's
+
+  /** Scroll so that the program's top-left corner is near the view's: a program opens at its start. */
+  function showProgramStart() {
+    if (!workspace.getTopBlocks(false).length) {
+      workspace.scrollCenter();
+      return;
+    }
+    const box = workspace.getBlocksBoundingBox();
+    const scale = workspace.scale;
+    workspace.scroll(START_MARGIN - box.left * scale, START_MARGIN - box.top * scale);
+  }
+
   function onWorkspaceEvent(event) {
     if (loading || event.isUiEvent) return;
     if (errorBlockId && event.blockId === errorBlockId && event.type !== Blockly.Events.BLOCK_MOVE) {
@@ -87,12 +151,14 @@
       workspace.clear();
       breakpoints.clear();
       fill();
+      markLooseValues();
     } finally {
       Blockly.Events.enable();
       loading = false;
     }
     workspace.clearUndo();
-    workspace.scrollCenter();
+    showProgramStart();
+    updateHint();
     reportChange('load');
   }
 
@@ -357,6 +423,8 @@
         sounds: false,
       });
       workspace.addChangeListener(onWorkspaceEvent);
+      workspace.addChangeListener(afterPlacing);
+      makeHint(texts && texts.emptyHint);
       registerContextMenu(texts || {addBreakpoint: 'Add breakpoint', removeBreakpoint: 'Remove breakpoint'});
       const program = first ? calls[first.call](first.args) : null;
       return {blockTypes: Object.keys(Blockly.Blocks), program};

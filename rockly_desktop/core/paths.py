@@ -40,6 +40,11 @@ def builtin_profiles_dir() -> Path:
     return data_root() / "profiles"
 
 
+def examples_dir() -> Path:
+    """Example programs shipped with Rockly: ``<profile id>/*.rockly``, and shared ones at the top."""
+    return data_root() / "examples"
+
+
 def user_data_dir() -> Path:
     """Rockly's folder in the user's data home (XDG): ``~/.local/share/rockly`` by default."""
     base = os.environ.get("XDG_DATA_HOME") or str(Path.home() / ".local" / "share")

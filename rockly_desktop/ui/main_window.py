@@ -11,7 +11,9 @@ from rockly_desktop.ui.autosave import Autosave
 from rockly_desktop.ui.code_dock import CodeDock
 from rockly_desktop.ui.console_dock import ConsoleDock
 from rockly_desktop.ui.document import Document
+from rockly_desktop.ui.examples_menu import ExamplesMenu
 from rockly_desktop.ui.health_bar import HealthBar
+from rockly_desktop.ui.help_dialogs import show_first_steps, show_shortcuts
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.preferences import PreferencesDialog
 from rockly_desktop.ui.program_files import ProgramFiles
@@ -260,6 +262,7 @@ class MainWindow(QMainWindow):
             if action.objectName() in self._IDLE_ONLY_ACTIONS:
                 action.setEnabled(idle)
         self.recent_menu.setEnabled(idle)
+        self.examples_menu.setEnabled(idle)
         for action in self.profile_actions.actions():
             action.setEnabled(idle)
 
@@ -416,6 +419,8 @@ class MainWindow(QMainWindow):
         self._action(file_menu, "open", lambda: self.files.open(), QKeySequence.StandardKey.Open)
         self.recent_menu = file_menu.addMenu(tr("open_recent", language))
         self.recent_menu.aboutToShow.connect(self._fill_recent_menu)
+        self.examples_menu = ExamplesMenu(self.files, lambda: self.profile, language, file_menu)
+        file_menu.addMenu(self.examples_menu)
         file_menu.addSeparator()
         self._action(file_menu, "save", lambda: self.files.save(), QKeySequence.StandardKey.Save)
         self._action(file_menu, "save_as", lambda: self.files.save_as(), QKeySequence.StandardKey.SaveAs)
@@ -450,6 +455,9 @@ class MainWindow(QMainWindow):
         self._action(settings_menu, "preferences", self.show_preferences, QKeySequence.StandardKey.Preferences)
 
         help_menu = bar.addMenu(tr("menu_help", language))
+        self._action(help_menu, "first_steps", lambda: show_first_steps(self, language),
+                     QKeySequence.StandardKey.HelpContents)
+        self._action(help_menu, "keyboard_shortcuts", lambda: show_shortcuts(self, language))
         self._action(help_menu, "about", lambda: QMessageBox.about(
             self, tr("app_name", language), tr("about_text", language, version=__version__)))
 

@@ -1,5 +1,5 @@
-"""The File menu's work: new, open, save, save as, recent files, import XML, export Python,
-and restoring a program a crash left unsaved.
+"""The File menu's work: new, open, open a copy (an example), save, save as, recent files,
+import XML, export Python, and restoring a program a crash left unsaved.
 
 Every failure is shown as a plain message; a failed open or import leaves the program
 on screen untouched, and a failed save leaves the file on disk untouched. A program that
@@ -64,6 +64,11 @@ class ProgramFiles(QObject):
     def open(self, path=None, then=None):
         """Open a ``.rockly`` (or first-Rockly ``.xml``) program; ask for the file when ``path`` is None."""
         self._open_after_asking(path, "open", "filter_open", then)
+
+    def open_copy(self, path, name: str, then=None):
+        """Open a copy of the program at ``path`` (a shipped example called ``name``): untitled, so
+        Save asks where to keep it and the file itself is never written."""
+        self.maybe_save(then=lambda ok: self._open_checked(path, then, copy_of=name) if ok else _report(then, False))
 
     def import_xml(self, path=None, then=None):
         """Import a program the first Rockly saved as Blockly XML."""
@@ -170,7 +175,7 @@ class ProgramFiles(QObject):
 
         self.maybe_save(then=go_on)
 
-    def _open_checked(self, path, then, recovery=None):
+    def _open_checked(self, path, then, recovery=None, copy_of=None):
         try:
             program = read_program_to_open(path, self.registry, self.document.profile)
         except RocklyError as error:
@@ -196,6 +201,10 @@ class ProgramFiles(QObject):
                     self.document.breakpoints = list(program.breakpoints)
                     self._set_file(recovery.program_path, True)
                     self.sig_status.emit(tr("restored", language))
+                elif copy_of is not None:
+                    self.document.breakpoints = list(program.breakpoints)
+                    self._set_file(None, changed)
+                    self.sig_status.emit(tr("example_opened", language, name=copy_of))
                 elif program.is_import:
                     self.document.breakpoints = []
                     self._set_file(None, True)

@@ -7,6 +7,7 @@ from rockly_desktop.ui.texts import tr
 
 SLIDER_STEPS = 10
 SLOWEST_DELAY = 2.0  # seconds per block at the slowest setting
+RUN_KEYS = "F5"  # Run's while idle, Continue's while paused
 
 
 class RunToolbar(QToolBar):
@@ -21,7 +22,7 @@ class RunToolbar(QToolBar):
         self.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextBesideIcon)
         self.setStyleSheet("QToolButton { font-size: 15px; font-weight: bold; padding: 6px 12px; }")
         icons = QStyle.StandardPixmap
-        self.run_action = self._action("run", "run_tip", "F5", icons.SP_MediaPlay)
+        self.run_action = self._action("run", "run_tip", RUN_KEYS, icons.SP_MediaPlay)
         self.pause_action = self._action("pause", "pause_tip", "F6", icons.SP_MediaPause)
         self.step_action = self._action("step", "step_tip", "F10", icons.SP_MediaSkipForward)
         self.continue_action = self._action("continue", "continue_tip", None, icons.SP_MediaSeekForward)
@@ -82,8 +83,8 @@ class RunToolbar(QToolBar):
         self.pause_action.setEnabled(state == "running")
         self.step_action.setEnabled(state in ("idle", "paused"))
         self.continue_action.setEnabled(state == "paused")
-        self.continue_action.setShortcut("F5" if state == "paused" else "")
-        self.run_action.setShortcut("F5" if state == "idle" else "")
+        self.continue_action.setShortcut(RUN_KEYS if state == "paused" else "")
+        self.run_action.setShortcut(RUN_KEYS if state == "idle" else "")
         self.stop_action.setEnabled(state != "idle")
         self.backend.setEnabled(state == "idle")
 

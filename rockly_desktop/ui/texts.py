@@ -269,6 +269,46 @@ _TEXTS = {
     "monitor_items": ("[{count} items]", "[{count} Einträge]"),
     "monitor_more": ("… {count} more", "… {count} weitere"),
     "monitor_plot_tip": ("{path}: double-click or drag to a plot", "{path}: doppelklicken oder in einen Plot ziehen"),
+    "empty_hint": ("Drag blocks from the categories on the left and drop them here.\n"
+                   "Snap them together, then click {run} and watch your robot.",
+                   "Zieh Blöcke aus den Kategorien links hierher.\n"
+                   "Steck sie zusammen, klick auf {run} und schau deinem Roboter zu."),
+    "menu_examples": ("E&xamples", "&Beispiele"),
+    "no_examples": ("No examples for this robot", "Keine Beispiele für diesen Roboter"),
+    "example_opened": ("A copy of the example “{name}”: Save asks where to keep it.",
+                       "Eine Kopie des Beispiels „{name}“: Speichern fragt, wo sie hin soll."),
+    "first_steps": ("&First Steps", "&Erste Schritte"),
+    "first_steps_title": ("First steps with Rockly", "Erste Schritte mit Rockly"),
+    "first_steps_intro": ("Rockly programs a robot with blocks that snap together like puzzle pieces.",
+                          "Mit Rockly programmierst du einen Roboter mit Blöcken, die wie Puzzleteile zusammenpassen."),
+    "first_steps_robot": ("Choose your robot in the menu {robot_menu}.", "Wähle deinen Roboter im Menü {robot_menu}."),
+    "first_steps_blocks": ("Drag blocks from the categories on the left onto the canvas and snap them together, "
+                           "one under the other. They run from top to bottom.",
+                           "Zieh Blöcke aus den Kategorien links auf die Arbeitsfläche und steck sie untereinander "
+                           "zusammen. Sie laufen von oben nach unten."),
+    "first_steps_run": ("Click {run} ({run_keys}) and watch the robot in the simulator. "
+                        "{stop} ({stop_keys}) stops it at once.",
+                        "Klick auf {run} ({run_keys}) und schau dem Roboter im Simulator zu. "
+                        "{stop} ({stop_keys}) hält ihn sofort an."),
+    "first_steps_glow": ("The block that is running glows yellow. When something goes wrong, its block is outlined "
+                         "red and says why: change it and try again.",
+                         "Der Block, der gerade läuft, leuchtet gelb. Geht etwas schief, wird sein Block rot umrandet "
+                         "und sagt, warum: ändere ihn und probier es noch einmal."),
+    "first_steps_loose": ("A value block lying on its own (like 1 + 2) does nothing and looks faded: "
+                          "snap it into another block.",
+                          "Ein Wert-Block, der allein herumliegt (wie 1 + 2), tut nichts und sieht blass aus: "
+                          "steck ihn in einen anderen Block."),
+    "first_steps_put_back": ("{put_back} ({put_back_keys}) puts the simulated robot back where it started.",
+                             "{put_back} ({put_back_keys}) setzt den simulierten Roboter an den Start zurück."),
+    "first_steps_examples": ("{examples} in the menu {file_menu} opens a ready-made program to try and change; "
+                             "{save} keeps your own programs.",
+                             "{examples} im Menü {file_menu} öffnet ein fertiges Programm zum Ausprobieren und "
+                             "Ändern; {save} bewahrt deine eigenen Programme auf."),
+    "keyboard_shortcuts": ("&Keyboard Shortcuts", "&Tastenkürzel"),
+    "shortcuts_title": ("Keyboard shortcuts", "Tastenkürzel"),
+    "shortcut_command": ("Command", "Befehl"),
+    "shortcut_keys": ("Keys", "Tasten"),
+    "no_shortcut": ("none", "keins"),
 }
 
 
@@ -281,7 +321,8 @@ def tr(key: str, language: str, **values) -> str:
 
 def editor_page_texts(language: str) -> dict:
     """The editor page's own menu texts in ``language`` (``EditorView.start``'s ``texts``)."""
-    return {"addBreakpoint": tr("add_breakpoint", language), "removeBreakpoint": tr("remove_breakpoint", language)}
+    return {"addBreakpoint": tr("add_breakpoint", language), "removeBreakpoint": tr("remove_breakpoint", language),
+            "emptyHint": tr("empty_hint", language, run=tr("run", language))}
 
 
 def robot_problem(error, language: str) -> tuple:

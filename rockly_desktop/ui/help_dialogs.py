@@ -1,0 +1,95 @@
+"""Help → First Steps and Keyboard Shortcuts: short pages inside the app, made from the window's
+texts and its actions (so a shortcut shown is the one that works)."""
+from html import escape
+
+from PySide6.QtCore import Qt
+from PySide6.QtGui import QAction, QKeySequence
+from PySide6.QtWidgets import QDialog, QDialogButtonBox, QTextBrowser, QVBoxLayout
+
+from rockly_desktop.ui.run_toolbar import RUN_KEYS
+from rockly_desktop.ui.texts import tr
+
+_STEPS = ("first_steps_robot", "first_steps_blocks", "first_steps_run", "first_steps_glow", "first_steps_loose",
+          "first_steps_put_back", "first_steps_examples")
+
+
+def action_shortcuts(window) -> list:
+    """(command, keys) of every action of ``window`` that has a shortcut now, in the order they were made."""
+    rows, seen = [], set()
+    for action in window.findChildren(QAction):
+        keys = ", ".join(sequence.toString(QKeySequence.SequenceFormat.NativeText) for sequence in action.shortcuts())
+        command = _plain(action.text())
+        if keys and (command, keys) not in seen:
+            seen.add((command, keys))
+            rows.append((command, keys))
+    return rows
+
+
+def first_steps_html(window, language: str) -> str:
+    """The First Steps page: the texts, with the window's own names and shortcuts filled in."""
+    def keys(name):
+        action = window.findChild(QAction, name)
+        shortcut = action.shortcut() if action is not None else QKeySequence()
+        return shortcut.toString(QKeySequence.SequenceFormat.NativeText) or tr("no_shortcut", language)
+
+    # Run's key belongs to Continue while a program is paused: the page names the key Run has when idle.
+    run_keys = QKeySequence(RUN_KEYS).toString(QKeySequence.SequenceFormat.NativeText)
+    values = {
+        "robot_menu": _plain(tr("menu_robot", language)), "run": _plain(tr("run", language)), "run_keys": run_keys,
+        "stop": _plain(tr("stop", language)), "stop_keys": keys("action_stop"),
+        "put_back": _plain(tr("reset_robot", language)), "put_back_keys": keys("action_reset_robot"),
+        "examples": _plain(tr("menu_examples", language)), "file_menu": _plain(tr("menu_file", language)),
+        "save": _plain(tr("save", language)),
+    }
+    steps = "".join(f"<li>{escape(tr(key, language, **values))}</li>" for key in _STEPS)
+    return (f"<h2>{escape(tr('first_steps_title', language))}</h2>"
+            f"<p>{escape(tr('first_steps_intro', language))}</p><ol>{steps}</ol>")
+
+
+def shortcuts_html(window, language: str) -> str:
+    """The Keyboard Shortcuts page: a table made from the window's actions."""
+    rows = "".join(f"<tr><td>{escape(command)}</td><td><b>{escape(keys)}</b></td></tr>"
+                   for command, keys in action_shortcuts(window))
+    return (f"<h2>{escape(tr('shortcuts_title', language))}</h2>"
+            f"<table cellpadding='6'><tr><th align='left'>{escape(tr('shortcut_command', language))}</th>"
+            f"<th align='left'>{escape(tr('shortcut_keys', language))}</th></tr>{rows}</table>")
+
+
+class HelpPage(QDialog):
+    """A small window showing one help page (HTML made here, nothing from the web)."""
+
+    def __init__(self, title: str, html: str, parent=None):
+        super().__init__(parent)
+        self.setWindowTitle(title)
+        self.browser = QTextBrowser(self)
+        self.browser.setOpenLinks(False)
+        self.browser.setHtml(html)
+        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close, self)
+        buttons.rejected.connect(self.reject)
+        layout = QVBoxLayout(self)
+        layout.addWidget(self.browser)
+        layout.addWidget(buttons)
+        self.resize(560, 480)
+
+
+def show_first_steps(window, language: str) -> HelpPage:
+    """Open the First Steps page over ``window`` (not modal: the person can try the steps meanwhile)."""
+    return _show(window, "first_steps_dialog", tr("first_steps_title", language), first_steps_html(window, language))
+
+
+def show_shortcuts(window, language: str) -> HelpPage:
+    """Open the Keyboard Shortcuts page over ``window``."""
+    return _show(window, "shortcuts_dialog", tr("shortcuts_title", language), shortcuts_html(window, language))
+
+
+def _show(window, name: str, title: str, html: str) -> HelpPage:
+    page = HelpPage(title, html, window)
+    page.setObjectName(name)
+    page.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose)
+    page.show()
+    return page
+
+
+def _plain(text: str) -> str:
+    """A menu text without its mnemonic marks and trailing dots ("&Open…" is "Open")."""
+    return text.replace("&&", "\0").replace("&", "").replace("\0", "&").rstrip("…").rstrip(".")
