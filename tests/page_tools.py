@@ -45,3 +45,15 @@ def add_block_as_user(qtbot, view, block_type: str) -> str:
 def block_types_on_page(qtbot, view) -> list:
     """Types of all blocks in the workspace."""
     return run_js(qtbot, view, "Blockly.getMainWorkspace().getAllBlocks(false).map(b => b.type).sort()")
+
+
+def print_value(qtbot, view, block_id: str) -> str:
+    """Snap the value block ``block_id`` into a new print block, as a person would (a loose value is not run);
+    return the print block's id."""
+    return run_js(qtbot, view, f"""(() => {{
+        const ws = Blockly.getMainWorkspace();
+        const p = ws.newBlock('text_print');
+        p.initSvg(); p.render();
+        Blockly.Events.fire(new (Blockly.Events.get(Blockly.Events.BLOCK_CREATE))(p));
+        p.getInput('TEXT').connection.connect(ws.getBlockById({block_id!r}).outputConnection);
+        return p.id; }})()""")

@@ -1,7 +1,7 @@
 """Typed ROS blocks in the real editor: inputs per field of the chosen type, checks, saving, handlers."""
 import ast
 
-from page_tools import add_block_as_user, call_page, run_js
+from page_tools import add_block_as_user, call_page, print_value, run_js
 from program_builder import block, number, stack, text, workspace
 
 from rockly_desktop.profiles.opening import ProgramToOpen
@@ -35,6 +35,8 @@ def test_the_publish_block_grows_one_checked_input_per_field_of_the_chosen_type(
 def test_a_new_pose_goal_starts_as_a_valid_pose(qtbot, editor):
     block_id = add_block_as_user(qtbot, editor, "ros_send_goal")
     choose_type(qtbot, editor, block_id, "action_type", "move_base_msgs/MoveBaseAction")
+    print_value(qtbot, editor, block_id)  # a loose value block is not generated: it is run in a print
+    qtbot.waitUntil(lambda: "ros.send_goal" in call_page(qtbot, editor, "getState")["python"], timeout=5000)
     python = call_page(qtbot, editor, "getState")["python"]
     assert "'orientation': {'x': 0, 'y': 0, 'z': 0, 'w': 1}" in python   # no rotation, not an invalid all-zero one
 

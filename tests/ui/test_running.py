@@ -235,3 +235,17 @@ def test_run_on_an_empty_workspace_says_what_to_do(qtbot, window):
     qtbot.waitUntil(lambda: window.runs.state == "idle", timeout=10000)
     assert window.runs.thread is None
     assert window.console.lines()[-1].startswith("There is nothing to run yet: drag blocks")
+
+
+def test_loose_statement_stacks_all_run_and_a_loose_value_is_skipped(qtbot, window):
+    load(qtbot, window,
+         block("text_print", inputs={"TEXT": text("first stack")}, x=20, y=20),
+         block("math_arithmetic", {"OP": "DIVIDE"}, {"A": number(1), "B": number(0)}, id="loose", x=400, y=20),
+         stack(block("hobbit_emo", {"emotion": "HAPPY"}, x=20, y=300),
+               block("text_print", inputs={"TEXT": text("second stack")})))
+
+    window.runs.run()
+
+    assert finished(qtbot, window).outcome == "finished"
+    assert window.console.lines()[-3:] == ["first stack", "second stack", "Program finished"]
+    assert window.robot().snapshot()["emotion"] == "HAPPY"
