@@ -97,6 +97,7 @@
                                   Blockly.Events.BLOCK_DELETE]);
 
   function afterPlacing(event) {
+    if (event.type === Blockly.Events.TOOLBOX_ITEM_SELECT) updateHint();
     if (!PLACING_EVENTS.has(event.type) || workspace.isDragging()) return;
     markLooseValues();
     updateHint();
@@ -104,7 +105,7 @@
 
   let hint = null;
 
-  /** The empty canvas's hint, drawn over the workspace's background and under the toolbox's flyout. */
+  /** The empty canvas's hint, drawn over the workspace's background; hidden while a category's blocks are out. */
   function makeHint(text) {
     if (!text) return;
     hint = document.createElement('div');
@@ -117,7 +118,8 @@
 
   function updateHint() {
     if (!hint) return;
-    hint.hidden = workspace.getTopBlocks(false).length > 0;
+    const flyout = workspace.getFlyout();
+    hint.hidden = workspace.getTopBlocks(false).length > 0 || Boolean(flyout && flyout.isVisible());
     hint.style.left = workspace.getMetricsManager().getAbsoluteMetrics().left + 'px';
   }
 

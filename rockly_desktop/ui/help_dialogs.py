@@ -12,6 +12,8 @@ from rockly_desktop.ui.texts import tr
 _STEPS = ("first_steps_robot", "first_steps_blocks", "first_steps_run", "first_steps_glow", "first_steps_loose",
           "first_steps_put_back", "first_steps_examples")
 
+_STYLE = "<style>body { font-size: 11pt; } li { margin-bottom: 8px; } p { margin-bottom: 10px; }</style>"
+
 
 def action_shortcuts(window) -> list:
     """(command, keys) of every action of ``window`` that has a shortcut now, in the order they were made."""
@@ -41,8 +43,9 @@ def first_steps_html(window, language: str) -> str:
         "examples": _plain(tr("menu_examples", language)), "file_menu": _plain(tr("menu_file", language)),
         "save": _plain(tr("save", language)),
     }
-    steps = "".join(f"<li>{escape(tr(key, language, **values))}</li>" for key in _STEPS)
-    return (f"<h2>{escape(tr('first_steps_title', language))}</h2>"
+    names = {name: f"<b>{escape(value)}</b>" for name, value in values.items()}
+    steps = "".join(f"<li>{escape(tr(key, language)).format(**names)}</li>" for key in _STEPS)
+    return (f"{_STYLE}<h2>{escape(tr('first_steps_title', language))}</h2>"
             f"<p>{escape(tr('first_steps_intro', language))}</p><ol>{steps}</ol>")
 
 
@@ -50,7 +53,7 @@ def shortcuts_html(window, language: str) -> str:
     """The Keyboard Shortcuts page: a table made from the window's actions."""
     rows = "".join(f"<tr><td>{escape(command)}</td><td><b>{escape(keys)}</b></td></tr>"
                    for command, keys in action_shortcuts(window))
-    return (f"<h2>{escape(tr('shortcuts_title', language))}</h2>"
+    return (f"{_STYLE}<h2>{escape(tr('shortcuts_title', language))}</h2>"
             f"<table cellpadding='6'><tr><th align='left'>{escape(tr('shortcut_command', language))}</th>"
             f"<th align='left'>{escape(tr('shortcut_keys', language))}</th></tr>{rows}</table>")
 

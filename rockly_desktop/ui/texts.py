@@ -281,7 +281,7 @@ _TEXTS = {
     "first_steps_title": ("First steps with Rockly", "Erste Schritte mit Rockly"),
     "first_steps_intro": ("Rockly programs a robot with blocks that snap together like puzzle pieces.",
                           "Mit Rockly programmierst du einen Roboter mit Blöcken, die wie Puzzleteile zusammenpassen."),
-    "first_steps_robot": ("Choose your robot in the menu {robot_menu}.", "Wähle deinen Roboter im Menü {robot_menu}."),
+    "first_steps_robot": ("Choose your robot in the {robot_menu} menu.", "Wähle deinen Roboter im Menü {robot_menu}."),
     "first_steps_blocks": ("Drag blocks from the categories on the left onto the canvas and snap them together, "
                            "one under the other. They run from top to bottom.",
                            "Zieh Blöcke aus den Kategorien links auf die Arbeitsfläche und steck sie untereinander "
@@ -300,9 +300,9 @@ _TEXTS = {
                           "steck ihn in einen anderen Block."),
     "first_steps_put_back": ("{put_back} ({put_back_keys}) puts the simulated robot back where it started.",
                              "{put_back} ({put_back_keys}) setzt den simulierten Roboter an den Start zurück."),
-    "first_steps_examples": ("{examples} in the menu {file_menu} opens a ready-made program to try and change; "
+    "first_steps_examples": ("{file_menu} → {examples} opens a ready-made program to try and change; "
                              "{save} keeps your own programs.",
-                             "{examples} im Menü {file_menu} öffnet ein fertiges Programm zum Ausprobieren und "
+                             "{file_menu} → {examples} öffnet ein fertiges Programm zum Ausprobieren und "
                              "Ändern; {save} bewahrt deine eigenen Programme auf."),
     "keyboard_shortcuts": ("&Keyboard Shortcuts", "&Tastenkürzel"),
     "shortcuts_title": ("Keyboard shortcuts", "Tastenkürzel"),

@@ -91,6 +91,11 @@ def test_choosing_an_example_asks_to_save_changes_first(qtbot, window, answer_pr
 def test_an_empty_canvas_says_where_blocks_go_until_there_is_a_block(qtbot, window):
     assert run_js(qtbot, window.editor, HINT_SHOWN)
     assert run_js(qtbot, window.editor, HINT_TEXT).startswith("Drag blocks from the categories on the left")
+    toolbox = "Blockly.getMainWorkspace().getToolbox()"
+    run_js(qtbot, window.editor, f"{toolbox}.selectItemByPosition(0)")  # a category's blocks cover the canvas
+    qtbot.waitUntil(lambda: not run_js(qtbot, window.editor, HINT_SHOWN), timeout=5000)
+    run_js(qtbot, window.editor, f"{toolbox}.clearSelection()")
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, HINT_SHOWN), timeout=5000)
 
     add_block_as_user(qtbot, window.editor, "hobbit_sos")
     qtbot.waitUntil(lambda: not run_js(qtbot, window.editor, HINT_SHOWN), timeout=5000)
@@ -138,7 +143,7 @@ def test_first_steps_is_a_page_inside_the_app_naming_the_real_commands(qtbot, wi
 
     assert "First steps with Rockly" in text
     assert "Click Run (F5)" in text and "STOP (Esc)" in text and "Put back (Ctrl+R)" in text
-    assert "Examples in the menu File" in text
+    assert "File → Examples opens" in text
 
 
 def test_first_steps_in_german(qtbot, german_window):
