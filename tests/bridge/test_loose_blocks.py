@@ -12,12 +12,8 @@ STATUS = """(() => {{ const b = Blockly.getMainWorkspace().getBlockById({id!r});
             b.getSvgRoot().classList.contains('blocklyDisabled')]; }})()"""
 
 
-def _program(*top_blocks):
-    return workspace(*top_blocks)
-
-
 def test_a_loose_value_block_is_neither_exported_nor_run(headless_editor, hobbit):
-    program = _program(block("hobbit_sos", x=20, y=20), {**DIVIDE_BY_ZERO, "x": 400, "y": 20})
+    program = workspace(block("hobbit_sos", x=20, y=20), {**DIVIDE_BY_ZERO, "x": 400, "y": 20})
 
     exported = headless_editor.python_for(ProgramToOpen(path=None, profile=hobbit, workspace=program))
     run = headless_editor.call_and_wait("getRunCode")["code"]
@@ -27,7 +23,7 @@ def test_a_loose_value_block_is_neither_exported_nor_run(headless_editor, hobbit
 
 
 def test_every_loose_statement_stack_is_generated_in_order(headless_editor, hobbit):
-    program = _program(stack(block("hobbit_sos", x=20, y=20), block("hobbit_stop")),
+    program = workspace(stack(block("hobbit_sos", x=20, y=20), block("hobbit_stop")),
                        block("hobbit_wait", inputs={"seconds": number(2)}, x=20, y=400))
 
     code = headless_editor.python_for(ProgramToOpen(path=None, profile=hobbit, workspace=program))
@@ -36,7 +32,7 @@ def test_every_loose_statement_stack_is_generated_in_order(headless_editor, hobb
 
 
 def test_a_loose_value_looks_disabled_and_comes_alive_when_snapped_in(qtbot, editor):
-    call_page(qtbot, editor, "load", {"workspace": _program(block("hobbit_sos"), DIVIDE_BY_ZERO)})
+    call_page(qtbot, editor, "load", {"workspace": workspace(block("hobbit_sos"), DIVIDE_BY_ZERO)})
     assert run_js(qtbot, editor, STATUS.format(id="loose")) == [False, True, True]
 
     print_value(qtbot, editor, "loose")
@@ -48,7 +44,7 @@ def test_a_loose_value_looks_disabled_and_comes_alive_when_snapped_in(qtbot, edi
 
 
 def test_a_value_taken_out_of_its_block_is_disabled(qtbot, editor):
-    call_page(qtbot, editor, "load", {"workspace": _program(
+    call_page(qtbot, editor, "load", {"workspace": workspace(
         block("text_print", inputs={"TEXT": DIVIDE_BY_ZERO}, id="print"))})
     assert run_js(qtbot, editor, STATUS.format(id="loose")) == [True, False, False]
 

@@ -134,6 +134,19 @@ def test_a_program_far_from_the_origin_opens_at_its_start(qtbot, window):
     assert left <= where["block"][0] < right and top <= where["block"][1] < bottom, where
 
 
+def test_an_imported_first_rockly_program_opens_at_its_start(qtbot, window, tmp_path):
+    path = tmp_path / "old.xml"
+    path.write_text('<xml xmlns="https://developers.google.com/blockly/xml">'
+                    '<block type="hobbit_sos" x="-2500" y="1800"><next><block type="hobbit_stop"/></next></block>'
+                    '<block type="hobbit_stop" x="900" y="3000"/></xml>')
+    assert completed(qtbot, window.files.import_xml, str(path))
+
+    where = run_js(qtbot, window.editor, START_IN_VIEW)
+
+    left, top, right, bottom = where["view"]
+    assert left <= where["block"][0] < right and top <= where["block"][1] < bottom, where
+
+
 def test_first_steps_is_a_page_inside_the_app_naming_the_real_commands(qtbot, window):
     window.findChild(QAction, "action_first_steps").trigger()
     page = window.findChild(HelpPage, "first_steps_dialog")
