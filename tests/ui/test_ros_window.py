@@ -4,12 +4,15 @@ from page_tools import call_page
 from program_builder import block, number, stack, workspace
 from ros_helpers import feed_hears
 
+from rockly_desktop.robot.links import link_kind
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
+
+ROS1 = link_kind("ros1")
 
 
 @pytest.fixture
 def ros_window(window, ros_master, hobbit_on_ros, monkeypatch):
-    window.settings.remember_ros_connection("hobbit", ros_master.uri, "127.0.0.1")
+    window.settings.remember_link_connection(ROS1, "hobbit", {"master": ros_master.uri, "host": "127.0.0.1"})
     monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
     backend = window.run_toolbar.backend
     backend.setCurrentIndex(backend.findData("ros1"))
@@ -35,7 +38,7 @@ def test_a_program_runs_on_the_robot_over_ros(qtbot, ros_window):
 def test_an_unreachable_master_is_refused_and_the_simulator_stays(qtbot, window, monkeypatch):
     from PySide6.QtWidgets import QMessageBox
 
-    window.settings.remember_ros_connection("hobbit", "http://127.0.0.1:9", "")
+    window.settings.remember_link_connection(ROS1, "hobbit", {"master": "http://127.0.0.1:9"})
     monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
     warnings = []
     monkeypatch.setattr(QMessageBox, "exec", lambda box: warnings.append(box.text()))
@@ -43,7 +46,7 @@ def test_an_unreachable_master_is_refused_and_the_simulator_stays(qtbot, window,
     backend.setCurrentIndex(backend.findData("ros1"))
     # Either nothing answers there, or this process's one ROS node already uses the session's master.
     assert warnings and "http://127.0.0.1:9" in warnings[0]
-    assert window.robots.kind == "simulator" and backend.currentData() == "simulator"
+    assert window.robots.kind == "sim" and backend.currentData() == "sim"
 
 
 def test_the_status_shows_a_lost_master_and_its_return(qtbot, ros_window, ros_master):
@@ -102,9 +105,10 @@ def test_state_panels_and_topic_monitor_show_the_ros_robot(qtbot, ros_window):
 
 @pytest.mark.parametrize("language", ["en", "de"])
 def test_the_connection_dialog_shows_whole_addresses(qtbot, language):
-    dialog = ConnectionDialog(language, "HOBBIT", master_uri="http://192.168.100.100:11311")
+    dialog = ConnectionDialog(language, "HOBBIT", ROS1, {"master": "http://192.168.100.100:11311"})
     qtbot.addWidget(dialog)
     dialog.show()
-    for edit in (dialog.master_edit, dialog.host_edit):
+    assert list(dialog.edits) == ["master", "host"]
+    for edit in dialog.edits.values():
         shown = max(edit.text(), edit.placeholderText(), key=len)
         assert edit.width() > edit.fontMetrics().horizontalAdvance(shown)
