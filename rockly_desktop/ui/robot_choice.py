@@ -51,14 +51,14 @@ class RobotChoice(QObject):
         profile, entry = self.document.profile, link_kind(kind)
         key = (kind, profile.id)
         if entry.simulated:
-            for other in [k for k in self._robots if link_kind(k[0]).simulated and k != key]:
-                self._robots.pop(other).shutdown()  # one simulator ticking at a time
             self.tablet.robot_name = profile.display_name(self.settings.language)
         if connection is None:
             connection = self.settings.link_connection(entry, profile.id)
-        self._robots[key] = open_link(kind, profile, connection, tablet=self.tablet, speed=self.simulator_speed,
-                                      timeout=timeout)
-        return self._robots[key]
+        robot = open_link(kind, profile, connection, tablet=self.tablet, speed=self.simulator_speed, timeout=timeout)
+        for other in [k for k in self._robots if link_kind(k[0]).simulated and k != key]:
+            self._robots.pop(other).shutdown()  # at most one simulator ticking, and none beside a real robot
+        self._robots[key] = robot
+        return robot
 
     def choose(self, kind: str) -> bool:
         """Switch to ``kind``; for a real robot asks where it is and connects. False if that failed."""

@@ -10,6 +10,7 @@ from program_builder import block, rockly_document
 
 from rockly_desktop import cli
 from rockly_desktop.robot import links
+from rockly_desktop.robot.health import GREEN, HealthItem
 from rockly_desktop.robot.link import RobotLink, RobotUnavailable
 from rockly_desktop.robot.links import (
     LinkKind,
@@ -126,3 +127,15 @@ def test_run_on_ros1_without_rospy_names_the_set_up_step(tmp_path):
     result = rockly("run", program, "--backend", "ros1", prelude="sys.modules['rospy'] = None; ")
     assert result.returncode == 1
     assert result.stderr.startswith("rockly run: ROS 1 (rospy) is not installed on this computer: run `make setup`")
+
+
+def test_the_simulator_link_opens_from_the_registry_and_needs_no_connection(hobbit):
+    robot = open_link("sim", hobbit, speed=20)
+    try:
+        assert robot.kind == "sim" and robot.status() is None and robot.warnings() == []
+        robot.follow_graph()  # nothing to start: its world fills the state store from the beginning
+        assert ("/odom", "nav_msgs/Odometry", 1) in robot.graph_topics()
+        assert robot.health()[0] == HealthItem("simulator", GREEN, "the built-in simulator is running")
+        assert robot.snapshot() is not None and robot.safe_stop() == []
+    finally:
+        robot.shutdown()

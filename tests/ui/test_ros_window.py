@@ -1,4 +1,6 @@
 """The window on a robot over ROS 1 (the ROS-level simulator in its own process, a real master)."""
+import sys
+
 import pytest
 from page_tools import call_page
 from program_builder import block, number, stack, workspace
@@ -47,6 +49,21 @@ def test_an_unreachable_master_is_refused_and_the_simulator_stays(qtbot, window,
     # Either nothing answers there, or this process's one ROS node already uses the session's master.
     assert warnings and "http://127.0.0.1:9" in warnings[0]
     assert window.robots.kind == "sim" and backend.currentData() == "sim"
+
+
+def test_choosing_ros_without_rospy_names_the_set_up_step_and_asks_nothing(qtbot, window, monkeypatch):
+    from PySide6.QtWidgets import QMessageBox
+
+    monkeypatch.setitem(sys.modules, "rospy", None)  # as on a computer without ROS 1
+    asked, shown = [], []
+    monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: asked.append(dialog) or 1)
+    monkeypatch.setattr(QMessageBox, "exec", lambda box: shown.append((box.text(), box.informativeText())))
+    backend = window.run_toolbar.backend
+    backend.setCurrentIndex(backend.findData("ros1"))
+    assert not asked and window.robots.kind == "sim" and backend.currentData() == "sim"
+    assert shown == [("ROS 1 is not installed on this computer, so Rockly cannot reach a real robot.",
+                      "Use the built-in simulator, or ask an adult to set up ROS 1: "
+                      "“make setup” in Rockly's folder installs it (rospy).")]
 
 
 def test_the_status_shows_a_lost_master_and_its_return(qtbot, ros_window, ros_master):
