@@ -20,8 +20,10 @@ class ConnectionSetting:
 
     ``label`` and ``hint`` are window text keys (``ui/texts.py``); the default is the first
     of the ``environment`` variables that is set, else ``default``; ``example`` is a long
-    typical value (the field is made wide enough for it). ``option`` is its ``rockly run``
-    and ``rockly sim`` option, with ``help`` (English, as the whole command line).
+    typical value (the field is made wide enough for it). ``choices`` ((value, text key)
+    pairs) make it a choice among those values (e.g. ROS 2's discovery range) instead of a
+    typed text. ``option`` is its ``rockly run`` and ``rockly sim`` option, with ``help``
+    (English, as the whole command line).
     """
 
     name: str
@@ -30,6 +32,7 @@ class ConnectionSetting:
     default: str = ""
     hint: str = None
     example: str = ""
+    choices: tuple = ()
     option: str = None
     help: str = ""
 

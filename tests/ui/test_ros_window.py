@@ -125,7 +125,30 @@ def test_the_connection_dialog_shows_whole_addresses(qtbot, language):
     dialog = ConnectionDialog(language, "HOBBIT", ROS1, {"master": "http://192.168.100.100:11311"})
     qtbot.addWidget(dialog)
     dialog.show()
-    assert list(dialog.edits) == ["master", "host"]
-    for edit in dialog.edits.values():
+    assert list(dialog.fields) == ["master", "host"]
+    for edit in dialog.fields.values():
         shown = max(edit.text(), edit.placeholderText(), key=len)
         assert edit.width() > edit.fontMetrics().horizontalAdvance(shown)
+
+
+def test_the_connection_dialog_asks_for_each_setting_of_a_link_and_they_are_remembered(qtbot, tmp_path, monkeypatch):
+    from dataclasses import replace
+
+    from rockly_desktop.robot.links import ConnectionSetting
+    from rockly_desktop.ui.settings import AppSettings
+
+    monkeypatch.setenv("ROCKLY_TEST_DOMAIN", "7")
+    other = replace(ROS1, kind="other", settings_group="other", settings=(
+        ConnectionSetting("domain", "connect_master", ("ROCKLY_TEST_DOMAIN",), "0"),
+        ConnectionSetting("range", "connect_host", default="SUBNET",
+                          choices=(("LOCALHOST", "backend_simulator"), ("SUBNET", "backend_ros1")))))
+    dialog = ConnectionDialog("de", "HOBBIT", other, {"range": "LOCALHOST"})
+    qtbot.addWidget(dialog)
+    assert dialog.values == {"domain": "7", "range": "LOCALHOST"}
+    assert dialog.fields["range"].currentText() == "Simulator (eingebaut)"
+    dialog.fields["domain"].setText(" 42 ")
+    dialog.fields["range"].setCurrentIndex(1)
+    settings = AppSettings(tmp_path / "settings.ini")
+    settings.remember_link_connection(other, "hobbit", dialog.values)
+    assert settings.link_connection(other, "hobbit") == {"domain": "42", "range": "SUBNET"}
+    assert settings.link_connection(ROS1, "hobbit") == {"master": None, "host": None}
