@@ -90,9 +90,9 @@ def run_all(master):
     from std_msgs.msg import Float64
     from std_srvs.srv import Trigger
 
-    from rockly_desktop.executor.robot_link import RosRobot
     from rockly_desktop.profiles.registry import ProfileRegistry
     from rockly_desktop.robot.interrupt import Interrupt
+    from rockly_desktop.robot.ros1.link import RosRobot
 
     hobbit = ProfileRegistry.discover().get("hobbit")
     robot = RosRobot(hobbit, master.uri)

@@ -104,8 +104,8 @@ def main():
     publisher = None
     try:
         from rockly_desktop.app import create_application
-        from rockly_desktop.executor.robot_link import RosRobot
         from rockly_desktop.profiles.registry import ProfileRegistry
+        from rockly_desktop.robot.ros1.link import RosRobot
         from rockly_desktop.ui.plot_panel import PlotPanel
         from rockly_desktop.ui.topic_monitor import TopicMonitor
 

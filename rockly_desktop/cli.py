@@ -7,8 +7,11 @@
     rockly profiles reference           print the profile.yaml reference (Markdown)
     (``rockly plugins ...`` is the older name of ``rockly profiles ...`` and still works)
     rockly export PROGRAM -o OUT.py     write the Python generated from a program (-o -: to standard output)
-    rockly run PROGRAM [--answer A]...  run a program on the simulator, without a window
+    rockly run PROGRAM [--answer A]...  run a program on the simulator (or --backend KIND), without a window
     rockly sim PROFILE --ros            the profile's simulated robot as a ROS 1 node, in a small window
+
+The kinds of robot (``--backend``, ``rockly sim``'s ``--ros``, their connection options) come from the
+robot-link registry, ``robot/links.py``.
 """
 import argparse
 import logging
@@ -22,6 +25,8 @@ SUBCOMMANDS = ("profiles", "plugins", "export", "run", "sim")
 
 
 def _tool_parser() -> argparse.ArgumentParser:
+    from rockly_desktop.robot import links  # not on the window's start-up path
+
     parser = argparse.ArgumentParser(prog="rockly", description="Program ROS robots with blocks.")
     parser.add_argument("--version", action="version", version=f"rockly {__version__}")
     commands = parser.add_subparsers(dest="command", required=True)
@@ -44,17 +49,22 @@ def _tool_parser() -> argparse.ArgumentParser:
 
     run = commands.add_parser("run", help="run a program without a window")
     run.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
-    run.add_argument("--backend", default="sim", choices=("sim", "ros1"),
-                     help="the robot to run on (default: the simulator)")
-    run.add_argument("--master", help="ROS master URI for --backend ros1 (default: $ROS_MASTER_URI)")
+    run.add_argument("--backend", default=links.DEFAULT_KIND, choices=[entry.kind for entry in links.link_kinds()],
+                     help="the robot to run on: " + ", ".join(f"{entry.kind} ({entry.title})" for entry in
+                                                              links.link_kinds()) + f"; default: {links.DEFAULT_KIND}")
+    _add_connection_options(run, links.link_kinds())
     run.add_argument("--answer", action="append", default=[],
                      help="an answer for the next tablet question (repeatable)")
     run.add_argument("--speed", type=float, default=1.0, help="simulated time runs this many times faster")
 
-    sim = commands.add_parser("sim", help="run a profile's simulated robot as a ROS 1 node, in a small window")
+    sim = commands.add_parser("sim", help="run a profile's simulated robot as a ROS node, in a small window")
     sim.add_argument("profile", help="the robot profile id (see rockly profiles list)")
-    sim.add_argument("--ros", action="store_true", required=True, help="serve the robot's ROS interface")
-    sim.add_argument("--master", help="ROS master URI (default: $ROS_MASTER_URI)")
+    servers = [entry for entry in links.link_kinds() if entry.sim_option]
+    serve_on = sim.add_mutually_exclusive_group(required=True)
+    for entry in servers:
+        serve_on.add_argument(entry.sim_option, dest="serve_on", action="store_const", const=entry.kind,
+                              help=f"serve the robot's ROS interface: the simulator as {entry.title}")
+    _add_connection_options(sim, servers)
     sim.add_argument("--answer", action="append", default=[],
                      help="an answer for the next tablet question (repeatable); when they run out, the window asks")
     sim.add_argument("--speed", type=float, default=1.0, help="simulated time runs this many times faster")
@@ -62,6 +72,28 @@ def _tool_parser() -> argparse.ArgumentParser:
                      help="run without the window showing the robot and its tablet (servers, CI): "
                           "tablet questions are then answered only from --answer")
     return parser
+
+
+def _add_connection_options(parser, kinds):
+    """The command-line options of ``kinds``' connection settings (each option once)."""
+    added = set()
+    for entry in kinds:
+        for setting in entry.settings:
+            if setting.option and setting.option not in added:
+                added.add(setting.option)
+                parser.add_argument(setting.option, dest=_option_dest(setting), help=setting.help)
+
+
+def _option_dest(setting) -> str:
+    return setting.option.lstrip("-").replace("-", "_")
+
+
+def _connection(kind: str, args) -> dict:
+    """The connection settings of ``kind`` given on the command line."""
+    from rockly_desktop.robot import links
+
+    return {setting.name: getattr(args, _option_dest(setting)) for setting in links.link_kind(kind).settings
+            if setting.option}
 
 
 def _gui_parser() -> argparse.ArgumentParser:
@@ -181,11 +213,13 @@ def main(argv=None) -> int:
         if args.command == "run":
             from rockly_desktop.run_command import run_program
 
-            return run_program(args.program, args.answer, args.speed, backend=args.backend, master_uri=args.master)
+            return run_program(args.program, args.answer, args.speed, backend=args.backend,
+                               connection=_connection(args.backend, args))
         if args.command == "sim":
             from rockly_desktop.sim_command import serve_simulator
 
-            return serve_simulator(args.profile, args.master, args.speed, args.answer, window=args.window)
+            return serve_simulator(args.profile, args.serve_on, _connection(args.serve_on, args), args.speed,
+                                   args.answer, window=args.window)
         return _export(args.program, args.output, args.language)
     args = _gui_parser().parse_args(argv)
     from rockly_desktop.app import run_gui

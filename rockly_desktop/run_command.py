@@ -1,4 +1,4 @@
-"""``rockly run PROGRAM``: run a program without a window, on the built-in simulator or ROS 1.
+"""``rockly run PROGRAM``: run a program without a window, on any robot link (``--backend``).
 
 Prints one line per block it enters (id and type) and what the program prints; tablet
 questions are answered from ``--answer`` options in the order they come. Ctrl+C stops
@@ -11,16 +11,17 @@ from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.workspace_blocks import block_types_by_id
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import BlockEntered, OutputPrinted, RunFinished
-from rockly_desktop.executor.robot_link import RosRobot, SimulatedRobot
 from rockly_desktop.executor.run_setup import make_runner
 from rockly_desktop.robot.answer_list import AnswerList
+from rockly_desktop.robot.links import DEFAULT_KIND, open_link
 
 EXIT_STOPPED = 130
 
 
 def run_program(program_path, answers=(), speed: float = 1.0, language: str = "en", out=print,
-                backend: str = "sim", master_uri: str = None) -> int:
-    """Run ``program_path`` headless on its profile's simulator (or on ROS 1); returns the exit status."""
+                backend: str = DEFAULT_KIND, connection: dict = None) -> int:
+    """Run ``program_path`` headless on its profile's robot over the ``backend`` kind of robot link
+    (the built-in simulator by default; ``connection``: that link's settings); returns the exit status."""
     from rockly_desktop.app import generate_headless
     from rockly_desktop.profiles.opening import opening_warnings
 
@@ -33,18 +34,12 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
         print(f"rockly run: warning: {warning}", file=sys.stderr)
     types = block_types_by_id(workspace)
     try:
-        if backend == "ros1":
-            robot = RosRobot(program.profile, master_uri)
-        else:
-            robot = SimulatedRobot(program.profile, tablet=AnswerList(answers, out), speed=speed)
+        robot = open_link(backend, program.profile, connection, tablet=AnswerList(answers, out), speed=speed)
     except RocklyError as error:
         print(f"rockly run: {error}", file=sys.stderr)
         return 1
-    connection = getattr(robot, "connection", None)
-    if connection is not None and connection.address_problem:
-        from rockly_desktop.robot.ros1.connection import address_problem_text
-
-        print(f"rockly run: warning: {address_problem_text(connection.address_problem)}", file=sys.stderr)
+    for warning in robot.warnings():
+        print(f"rockly run: warning: {warning}", file=sys.stderr)
     control = RunControl(trace=True)
 
     def report(event):

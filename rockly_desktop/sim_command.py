@@ -1,4 +1,6 @@
-"""``rockly sim PROFILE --ros``: a profile's simulated robot served as a ROS 1 node.
+"""``rockly sim PROFILE --ros``: a profile's simulated robot served on a robot link's middleware.
+
+Which option serves on what (``--ros``: a ROS 1 node) is the robot-link registry's (``robot/links.py``).
 
 By default a small window shows the robot and asks its tablet questions beyond ``--answer``;
 ``--no-window`` runs it headless. Closing the window, Ctrl+C or SIGTERM ends the node (exit 0).
@@ -9,13 +11,15 @@ import sys
 import threading
 
 from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.robot import links
 from rockly_desktop.robot.answer_list import AnswerList
 
 
-def serve_simulator(profile_id: str, master_uri=None, speed: float = 1.0, answers=(),
+def serve_simulator(profile_id: str, kind: str = "ros1", connection: dict = None, speed: float = 1.0, answers=(),
                     out=lambda text: print(text, flush=True), window: bool = True) -> int:
-    """``rockly sim PROFILE --ros``: the profile's simulator as a ROS node until its window is
-    closed or Ctrl+C (exit 0). ``window=False``: no window, questions only from ``answers``."""
+    """``rockly sim PROFILE --ros``: the profile's simulator served on the ``kind`` of robot link (with
+    its ``connection`` settings) until its window is closed or Ctrl+C (exit 0). ``window=False``: no
+    window, questions only from ``answers``."""
     from rockly_desktop.profiles.registry import ProfileRegistry
 
     registry = ProfileRegistry.discover()
@@ -25,29 +29,26 @@ def serve_simulator(profile_id: str, master_uri=None, speed: float = 1.0, answer
         return 2
     profile = registry.get(profile_id)
     if not window:
-        return _serve_headless(profile, master_uri, speed, answers, out)
+        return _serve_headless(profile, kind, connection, speed, answers, out)
     if _no_display():
         print("rockly sim: there is no display to open the simulator's window on; "
               "use --no-window to run it without one", file=sys.stderr)
         return 2
-    return _serve_with_window(profile, master_uri, speed, answers, out)
+    return _serve_with_window(profile, kind, connection, speed, answers, out)
 
 
-def _message_types(profile):
-    from rockly_desktop.robot.ros1.message_classes import MessageTypes
-
-    return MessageTypes(profile.message_folders)
-
-
-def _serve_headless(profile, master_uri, speed, answers, out) -> int:
-    from rockly_desktop.robot.ros1.sim_bridge import run_simulator_node
-
+def _serve_headless(profile, kind, connection, speed, answers, out) -> int:
     stop = threading.Event()
     previous = signal.signal(signal.SIGINT, lambda *_: stop.set())
     previous_term = signal.signal(signal.SIGTERM, lambda *_: stop.set())
     try:
-        run_simulator_node(profile, _message_types(profile), master_uri, speed, AnswerList(answers, out), stop,
-                           on_ready=lambda: out(f"simulated {profile.display_name()} is up on ROS (Ctrl+C ends it)"))
+        server = links.serve_simulator(kind, profile, connection, speed, AnswerList(answers, out))
+        try:
+            out(f"simulated {profile.display_name()} is up on ROS (Ctrl+C ends it)")
+            while not stop.wait(0.2):
+                pass
+        finally:
+            server.shutdown()
     except RocklyError as error:
         print(f"rockly sim: {error}", file=sys.stderr)
         return 1
@@ -63,24 +64,22 @@ def _no_display() -> bool:
             and not os.environ.get("DISPLAY") and not os.environ.get("WAYLAND_DISPLAY"))
 
 
-def _serve_with_window(profile, master_uri, speed, answers, out) -> int:
+def _serve_with_window(profile, kind, connection, speed, answers, out) -> int:
     """The node's threads serve ROS; this (main) thread runs the window until it is closed."""
     from PySide6.QtCore import QTimer
 
     from rockly_desktop.app import create_application
-    from rockly_desktop.robot.ros1.sim_bridge import SimulatorNode
     from rockly_desktop.ui.settings import AppSettings
     from rockly_desktop.ui.sim_window import SimulatorWindow
 
     app = create_application()
     window = SimulatorWindow(profile, AppSettings().language)
     try:
-        node = SimulatorNode(profile, _message_types(profile), master_uri, speed,
-                             AnswerList(answers, out, then=window.tablet))
+        node = links.serve_simulator(kind, profile, connection, speed, AnswerList(answers, out, then=window.tablet))
     except RocklyError as error:
         print(f"rockly sim: {error}", file=sys.stderr)
         return 1
-    window.show_simulator(node.simulator, node.connection.master_uri)
+    window.show_simulator(node.simulator, node.where)
 
     def end():
         # Before Qt quits (which closes every window, open tablet dialogs too): a question

@@ -27,6 +27,6 @@ def hobbit_on_ros(ros_master):
 @pytest.fixture(scope="session")
 def ros_robot(ros_master, hobbit_on_ros, hobbit):
     """This test process as a Rockly node on the session's master, driving the ROS-level HOBBIT."""
-    from rockly_desktop.executor.robot_link import RosRobot
+    from rockly_desktop.robot.ros1.link import RosRobot
 
     return RosRobot(hobbit, ros_master.uri)

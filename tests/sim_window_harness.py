@@ -99,7 +99,7 @@ class RosCaller(_Process):
 
     SCRIPT = """
 import json, sys
-from rockly_desktop.executor.robot_link import RosRobot
+from rockly_desktop.robot.ros1.link import RosRobot
 from rockly_desktop.profiles.registry import ProfileRegistry
 from rockly_desktop.robot.interrupt import Interrupt
 

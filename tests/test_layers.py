@@ -17,7 +17,7 @@ def lint_imports(cwd: Path):
 def test_layer_contracts_are_kept():
     result = lint_imports(REPO)
     assert result.returncode == 0, result.stdout + result.stderr
-    assert "Contracts: 5 kept, 0 broken." in result.stdout
+    assert "Contracts: 7 kept, 0 broken." in result.stdout
 
 
 def test_a_core_module_importing_qt_breaks_the_contracts(tmp_path):
@@ -29,6 +29,20 @@ def test_a_core_module_importing_qt_breaks_the_contracts(tmp_path):
     assert result.returncode == 1
     assert "rockly_desktop.core.sneaky -> rockly_desktop.ui.main_window" in result.stdout
     assert "BROKEN" in result.stdout
+
+
+def test_ros_outside_its_link_package_breaks_the_contracts(tmp_path):
+    """Only robot/ros1 imports rospy, only robot/ros2 rclpy, and the rest reaches them through the registry."""
+    shutil.copytree(REPO / "rockly_desktop", tmp_path / "rockly_desktop", ignore=shutil.ignore_patterns("__pycache__"))
+    shutil.copy(REPO / "pyproject.toml", tmp_path)
+    (tmp_path / "rockly_desktop" / "robot" / "sneaky.py").write_text("import rospy\nimport rclpy\n")
+    (tmp_path / "rockly_desktop" / "ui" / "sneaky.py").write_text("from rockly_desktop.robot.ros1 import link\n")
+    result = lint_imports(tmp_path)
+    assert result.returncode == 1
+    output = " ".join(result.stdout.split())
+    assert "rockly_desktop.robot.sneaky -> rospy" in output and "rockly_desktop.robot.sneaky -> rclpy" in output
+    assert "rockly_desktop.ui.sneaky -> rockly_desktop.robot.ros1.link" in output
+    assert "Contracts: 4 kept, 3 broken." in output
 
 
 def test_no_rockly_module_mentions_a_particular_robot():

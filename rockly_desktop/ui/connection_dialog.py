@@ -1,11 +1,9 @@
-"""The ROS connection dialog: which ROS master, and this computer's address for the robot."""
-import os
-
-from PySide6.QtWidgets import QDialog, QDialogButtonBox, QFormLayout, QLabel, QLineEdit
+"""The connection dialog: how to reach a robot over a kind of robot link (for ROS 1: which ROS
+master, and this computer's address for the robot). Its fields are the link's connection
+settings in the robot-link registry (``robot/links.py``)."""
+from PySide6.QtWidgets import QComboBox, QDialog, QDialogButtonBox, QFormLayout, QLabel, QLineEdit
 
 from rockly_desktop.ui.texts import tr
-
-DEFAULT_MASTER = "http://localhost:11311"
 
 
 def edit_hint(edit: QLineEdit) -> str:
@@ -14,34 +12,48 @@ def edit_hint(edit: QLineEdit) -> str:
 
 
 class ConnectionDialog(QDialog):
-    """Asks for ROS_MASTER_URI and ROS_IP/ROS_HOSTNAME; ``master_uri`` and ``host`` hold the answers."""
+    """Asks for ``link_kind``'s connection settings, starting from ``remembered`` ({name: value})
+    or this computer's environment; ``values`` holds the answers. ``fields`` are its line edits
+    (and choice boxes) by setting name."""
 
-    def __init__(self, language: str, robot_name: str, master_uri: str = None, host: str = None, parent=None):
+    def __init__(self, language: str, robot_name: str, link_kind, remembered: dict = None, parent=None):
         super().__init__(parent)
+        remembered = remembered or {}
         self.setWindowTitle(tr("connect_title", language, robot=robot_name))
-        self.master_edit = QLineEdit(master_uri or os.environ.get("ROS_MASTER_URI") or DEFAULT_MASTER, self)
-        self.host_edit = QLineEdit(host or os.environ.get("ROS_IP") or os.environ.get("ROS_HOSTNAME") or "", self)
-        self.host_edit.setPlaceholderText(tr("connect_host_hint", language))
-        widest = (self.master_edit, "http://192.168.100.100:11311"), (self.host_edit, edit_hint(self.host_edit))
-        for edit, longest in widest:
-            edit.setMinimumWidth(edit.fontMetrics().horizontalAdvance(longest) + 24)  # the whole address shows
+        self.fields = {}
+        layout = QFormLayout(self)
+        if link_kind.explanation:
+            explanation = QLabel(tr(link_kind.explanation, language), self)
+            explanation.setWordWrap(True)
+            layout.addRow(explanation)
+        for setting in link_kind.settings:
+            value = remembered.get(setting.name) or setting.default_value()
+            field = self._choice(setting, value, language) if setting.choices else self._text(setting, value, language)
+            field.setObjectName(f"connect_{setting.name}")
+            layout.addRow(tr(setting.label, language), field)
+            self.fields[setting.name] = field
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel, self)
         buttons.accepted.connect(self.accept)
         buttons.rejected.connect(self.reject)
-        layout = QFormLayout(self)
-        explanation = QLabel(tr("connect_explanation", language), self)
-        explanation.setWordWrap(True)
-        layout.addRow(explanation)
-        layout.addRow(tr("connect_master", language), self.master_edit)
-        layout.addRow(tr("connect_host", language), self.host_edit)
         layout.addRow(buttons)
 
-    @property
-    def master_uri(self) -> str:
-        """The ROS master URI typed in."""
-        return self.master_edit.text().strip()
+    def _text(self, setting, value: str, language: str) -> QLineEdit:
+        edit = QLineEdit(value, self)
+        if setting.hint:
+            edit.setPlaceholderText(tr(setting.hint, language))
+        longest = max(edit_hint(edit), setting.example, key=len)
+        edit.setMinimumWidth(edit.fontMetrics().horizontalAdvance(longest) + 24)  # the whole address shows
+        return edit
+
+    def _choice(self, setting, value: str, language: str) -> QComboBox:
+        box = QComboBox(self)
+        for choice, text in setting.choices:
+            box.addItem(tr(text, language), choice)
+        box.setCurrentIndex(max(box.findData(value), 0))
+        return box
 
     @property
-    def host(self) -> str:
-        """This computer's IP or host name as the robot should see it (may be empty)."""
-        return self.host_edit.text().strip()
+    def values(self) -> dict:
+        """The settings given, by name (a text stripped; an empty one is None)."""
+        return {name: (field.currentData() if isinstance(field, QComboBox) else field.text().strip()) or None
+                for name, field in self.fields.items()}

@@ -6,7 +6,7 @@ and action servers). It asks the robot for its health twice a second.
 from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QLabel
 
-from rockly_desktop.executor.health import overall
+from rockly_desktop.robot.health import overall
 from rockly_desktop.ui.texts import tr
 
 COLOURS = {"green": "#2e7d32", "amber": "#f9a825", "red": "#c62828"}

@@ -180,7 +180,7 @@ class MainWindow(QMainWindow):
     # --- the robot ----------------------------------------------------------------------
 
     def robot(self):
-        """The robot programs run on: the profile's simulator, or a robot over ROS 1."""
+        """The robot programs run on (a ``robot.link.RobotLink``): the profile's simulator, or a robot over ROS."""
         return self.robots.robot()
 
     def _first_show_robot(self):
@@ -198,8 +198,7 @@ class MainWindow(QMainWindow):
             return
         if self.simulator_dock.robot is robot:
             return
-        if hasattr(robot, "follow_graph"):
-            robot.follow_graph()
+        robot.follow_graph()
         from rockly_desktop.ui.topic_monitor import TopicMonitor  # not needed before the editor is up
 
         panels = StatePanels(self.profile.state_panels, self.language, self.state_dock)
@@ -238,8 +237,8 @@ class MainWindow(QMainWindow):
         kind = self.run_toolbar.backend.itemData(index)
         if self.robots.choose(kind):
             # On a real robot its state panels take the simulator view's place.
-            self.simulator_dock.setVisible(kind != "ros1")
-            if kind == "ros1":
+            self.simulator_dock.setVisible(self.robots.simulated)
+            if not self.robots.simulated:
                 self.state_dock.raise_()
         else:
             self.run_toolbar.backend.blockSignals(True)

@@ -1,24 +1,26 @@
-"""Which robot programs run on: the profile's built-in simulator, or a robot over ROS 1.
+"""Which robot programs run on: any kind of robot link in the registry (``robot/links.py``):
+the profile's built-in simulator, or a robot over ROS.
 
-Owns the robots it made (one simulator per profile, one ROS robot per profile), the ROS
+Owns the robots it made (one simulator per profile, one link per kind and profile), the
 connection dialog and the connection indicator in the status bar.
 """
 from PySide6.QtCore import QObject, QTimer, Signal
 from PySide6.QtWidgets import QLabel, QMessageBox
 
 from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.robot.links import DEFAULT_KIND, check_available, link_kind, open_link
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.texts import robot_problem, tr
 
-SIMULATOR, ROS1 = "simulator", "ros1"
 STATUS_COLOURS = {"connected": "#2e7d32", "connecting": "#f9a825", "lost": "#c62828"}
+CONNECT_TIMEOUT = 1.0  # seconds a robot chosen in the window has to answer
 
 
 class RobotChoice(QObject):
-    """The active robot for the document's profile; ``kind`` is 'simulator' or 'ros1'.
+    """The active robot for the document's profile; ``kind`` is a kind of robot link ('sim', 'ros1').
 
-    Simulators answer tablet questions on ``tablet``; ROS connections are remembered in
+    Simulators answer tablet questions on ``tablet``; connections are remembered in
     ``settings``; ``parent`` is the widget the connection dialog belongs to.
     """
 
@@ -30,7 +32,7 @@ class RobotChoice(QObject):
         self.document = document
         self.tablet = tablet
         self.settings = settings
-        self.kind = SIMULATOR
+        self.kind = DEFAULT_KIND
         self._robots = {}
         self.status = QLabel(parent)
         self.status.hide()
@@ -41,45 +43,50 @@ class RobotChoice(QObject):
     def robot(self):
         """The robot of the active kind for the document's profile (made on first use)."""
         profile = self.document.profile
-        key = (self.kind, profile.id)
-        if key not in self._robots:
-            from rockly_desktop.executor.robot_link import RosRobot, SimulatedRobot  # made after the editor is up
+        if (self.kind, profile.id) not in self._robots:
+            self._open(self.kind)
+        return self._robots[(self.kind, profile.id)]
 
-            for other in [k for k in self._robots if k[0] == SIMULATOR and k != key]:
-                self._robots.pop(other).shutdown()  # one simulator ticking at a time
-            if self.kind == SIMULATOR:
-                self.tablet.robot_name = profile.display_name(self.settings.language)
-                self._robots[key] = SimulatedRobot(profile, tablet=self.tablet, speed=self.simulator_speed)
-            else:
-                master_uri, _host = self.settings.ros_connection(profile.id)
-                self._robots[key] = RosRobot(profile, master_uri)
-        return self._robots[key]
+    def _open(self, kind: str, connection: dict = None, timeout: float = 5.0):
+        profile, entry = self.document.profile, link_kind(kind)
+        key = (kind, profile.id)
+        if entry.simulated:
+            self.tablet.robot_name = profile.display_name(self.settings.language)
+        if connection is None:
+            connection = self.settings.link_connection(entry, profile.id)
+        robot = open_link(kind, profile, connection, tablet=self.tablet, speed=self.simulator_speed, timeout=timeout)
+        for other in [k for k in self._robots if link_kind(k[0]).simulated and k != key]:
+            self._robots.pop(other).shutdown()  # at most one simulator ticking, and none beside a real robot
+        self._robots[key] = robot
+        return robot
 
     def choose(self, kind: str) -> bool:
-        """Switch to ``kind``; for ROS asks where the robot is and connects. False if that failed."""
+        """Switch to ``kind``; for a real robot asks where it is and connects. False if that failed."""
         if kind == self.kind:
             return True
-        if kind == ROS1 and not self._connect():
+        entry = link_kind(kind)
+        if not entry.simulated and not self._connect(entry):
             return False
         self.kind = kind
-        self.status.setVisible(kind == ROS1)
-        if kind == ROS1:
+        self.status.setVisible(not entry.simulated)
+        if entry.simulated:
+            self._timer.stop()
+        else:
             self._timer.start()
             self._show_status()
-        else:
-            self._timer.stop()
         self.sig_robot_changed.emit()
         return True
 
     @property
-    def can_reset(self) -> bool:
-        """True when the active robot is the built-in simulator, which can be put back."""
-        return self.kind == SIMULATOR
+    def simulated(self) -> bool:
+        """True when the active robot is the profile's simulator in this process (shown in the
+        Simulator dock, and it can be put back)."""
+        return link_kind(self.kind).simulated
 
     def reset(self) -> bool:
         """Put the simulated robot back where it started; False (nothing done) for a real robot or a
         simulator whose profile does not implement ``reset()``."""
-        if not self.can_reset:
+        if not self.simulated:
             return False
         try:
             self.robot().reset()
@@ -92,40 +99,50 @@ class RobotChoice(QObject):
         if self.settings.reset_before_run:
             self.reset()
 
-    def _connect(self) -> bool:
+    def _connect(self, entry) -> bool:
+        """Ask how to reach the robot over ``entry``'s kind of link, and reach it; False if that failed."""
         language, profile = self.settings.language, self.document.profile
-        remembered_uri, remembered_host = self.settings.ros_connection(profile.id)
-        dialog = ConnectionDialog(language, profile.display_name(language), remembered_uri, remembered_host,
-                                  self.parent())
+        try:
+            check_available(entry.kind)
+        except RocklyError as error:
+            self._refused(error)
+            return False
+        dialog = ConnectionDialog(language, profile.display_name(language), entry,
+                                  self.settings.link_connection(entry, profile.id), self.parent())
         if not dialog.exec():
             return False
-        from rockly_desktop.robot.ros1.connection import RosConnection  # xmlrpc and http: only when connecting
-
+        stale = self._robots.pop((entry.kind, profile.id), None)
+        if stale is not None:
+            stale.shutdown()
         try:
-            connection = RosConnection.get(dialog.master_uri, dialog.host or None, timeout=1.0)
+            robot = self._open(entry.kind, dialog.values, CONNECT_TIMEOUT)
         except RocklyError as error:
-            problem, next_step = robot_problem(error, language)
-            box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, tr("connect_failed", language), problem)
-            box.setInformativeText(next_step)
-            box.setObjectName("connect_failed_box")
-            box.exec()
+            self._refused(error)
             return False
-        self.settings.remember_ros_connection(profile.id, dialog.master_uri, dialog.host)
-        if connection.address_problem:
-            kind, address = connection.address_problem
-            box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, tr("ros_address_title", language),
-                                    tr(f"ros_address_{kind}", language, address=address))
-            box.setObjectName("ros_address_box")
+        self.settings.remember_link_connection(entry, profile.id, dialog.values)
+        for warning in robot.warnings():
+            box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, tr(f"ros_{warning.title}", language),
+                                    robot_problem(warning, language)[0])
+            box.setObjectName("link_warning_box")
             box.open()
         return True
 
+    def _refused(self, error):
+        problem, next_step = robot_problem(error, self.settings.language)
+        box = plain_message_box(self.parent(), QMessageBox.Icon.Warning,
+                                tr("connect_failed", self.settings.language), problem)
+        box.setInformativeText(next_step)
+        box.setObjectName("connect_failed_box")
+        box.exec()
+
     def _show_status(self):
-        robot = self._robots.get((ROS1, self.document.profile.id))
-        status = robot.connection.status if robot is not None else "connecting"
-        self.status.setText(tr(f"ros_{status}", self.settings.language))
-        self.status.setStyleSheet(f"color: {STATUS_COLOURS[status]}; font-weight: bold;")
-        if robot is not None and robot.connection.round_trip is not None:
-            self.status.setToolTip(f"{robot.connection.master_uri} — {robot.connection.round_trip * 1000:.1f} ms")
+        robot = self._robots.get((self.kind, self.document.profile.id))
+        status = robot.status() if robot is not None else None
+        state = status.state if status is not None else "connecting"
+        self.status.setText(tr(f"ros_{state}", self.settings.language))
+        self.status.setStyleSheet(f"color: {STATUS_COLOURS[state]}; font-weight: bold;")
+        if status is not None and status.round_trip is not None:
+            self.status.setToolTip(f"{status.where} — {status.round_trip * 1000:.1f} ms")
 
     def shutdown(self):
         """Stop every robot safely (the window is closing)."""

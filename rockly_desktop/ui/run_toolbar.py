@@ -1,8 +1,10 @@
-"""The run toolbar: Run, Pause, Step, Continue, a big red STOP, slow motion and the robot."""
+"""The run toolbar: Run, Pause, Step, Continue, a big red STOP, slow motion and the robot (every
+kind of robot link in the registry, ``robot/links.py``)."""
 from PySide6.QtCore import Qt, Signal
 from PySide6.QtGui import QAction, QKeySequence
 from PySide6.QtWidgets import QComboBox, QLabel, QSlider, QStyle, QToolBar
 
+from rockly_desktop.robot.links import link_kind, link_kinds
 from rockly_desktop.ui.texts import tr
 
 SLIDER_STEPS = 10
@@ -51,8 +53,8 @@ class RunToolbar(QToolBar):
         self.addSeparator()
         self.addWidget(QLabel(f" {tr('backend', language)} ", self))
         self.backend = QComboBox(self)
-        self.backend.addItem(tr("backend_simulator", language), "simulator")
-        self.backend.addItem(tr("backend_ros1", language), "ros1")
+        for entry in link_kinds():
+            self.backend.addItem(tr(entry.name, language), entry.kind)
         self.addWidget(self.backend)
         self.addSeparator()
         # put the simulated robot back: also in the Robot menu, so its shortcut is the window's
@@ -78,7 +80,7 @@ class RunToolbar(QToolBar):
     def set_state(self, state: str):
         """'idle', 'starting', 'running' or 'paused': enable the actions that apply."""
         self._state = state
-        self.reset_action.setEnabled(state == "idle" and self.backend.currentData() == "simulator")
+        self.reset_action.setEnabled(state == "idle" and link_kind(self.backend.currentData()).simulated)
         self.run_action.setEnabled(state == "idle")
         self.pause_action.setEnabled(state == "running")
         self.step_action.setEnabled(state in ("idle", "paused"))

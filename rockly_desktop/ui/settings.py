@@ -84,14 +84,17 @@ class AppSettings:
         self._store.setValue("window/geometry", geometry)
         self._store.setValue("window/state", state)
 
-    def ros_connection(self, profile_id: str):
-        """The ROS master URI and host remembered for a robot profile: (uri or None, host or None)."""
-        return self._get(f"ros/{profile_id}/master") or None, self._get(f"ros/{profile_id}/host") or None
+    def link_connection(self, link_kind, profile_id: str) -> dict:
+        """The connection settings remembered for a robot profile on a kind of robot link (a
+        ``robot.links.LinkKind``): {setting name: value or None}."""
+        return {setting.name: self._get(f"{link_kind.settings_group}/{profile_id}/{setting.name}") or None
+                for setting in link_kind.settings}
 
-    def remember_ros_connection(self, profile_id: str, master_uri: str, host: str):
-        """Remember how to reach this robot over ROS."""
-        self._store.setValue(f"ros/{profile_id}/master", master_uri)
-        self._store.setValue(f"ros/{profile_id}/host", host or "")
+    def remember_link_connection(self, link_kind, profile_id: str, values: dict):
+        """Remember how to reach this robot over this kind of link."""
+        for setting in link_kind.settings:
+            self._store.setValue(f"{link_kind.settings_group}/{profile_id}/{setting.name}",
+                                 values.get(setting.name) or "")
 
     @property
     def teacher(self) -> TeacherSettings:

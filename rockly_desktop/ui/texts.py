@@ -145,14 +145,17 @@ _TEXTS = {
                            "Läuft dort roscore? Stimmt die Adresse?"),
     "ros_no_rospy": ("ROS 1 is not installed on this computer, so Rockly cannot reach a real robot.",
                      "ROS 1 ist auf diesem Computer nicht installiert, deshalb erreicht Rockly keinen echten Roboter."),
-    "ros_no_rospy_hint": ("Use the built-in simulator, or ask an adult to install ROS 1 (rospy).",
-                          "Nimm den eingebauten Simulator oder bitte einen Erwachsenen, "
-                          "ROS 1 (rospy) zu installieren."),
+    "ros_no_rospy_hint": ("Use the built-in simulator, or ask an adult to set up ROS 1: "
+                          "“make setup” in Rockly's folder installs it (rospy).",
+                          "Nimm den eingebauten Simulator oder bitte einen Erwachsenen, ROS 1 einzurichten: "
+                          "„make setup“ im Rockly-Ordner installiert es (rospy)."),
     "ros_no_ros_tools": ("The ROS 1 message tools (genpy, actionlib) are not installed on this computer.",
                          "Die ROS-1-Nachrichtenwerkzeuge (genpy, actionlib) sind auf diesem Computer "
                          "nicht installiert."),
-    "ros_no_ros_tools_hint": ("Use the built-in simulator, or ask an adult to install them.",
-                              "Nimm den eingebauten Simulator oder bitte einen Erwachsenen, sie zu installieren."),
+    "ros_no_ros_tools_hint": ("Use the built-in simulator, or ask an adult to install them: "
+                              "“make setup” in Rockly's folder does it.",
+                              "Nimm den eingebauten Simulator oder bitte einen Erwachsenen, sie zu installieren: "
+                              "„make setup“ im Rockly-Ordner erledigt das."),
     "ros_other_master": ("Rockly is already connected to the ROS master at {current}, so it cannot use {wanted}.",
                          "Rockly ist schon mit dem ROS-Master unter {current} verbunden und kann deshalb "
                          "{wanted} nicht nutzen."),

@@ -17,7 +17,7 @@ from ros_helpers import REPO, RocklyProcess, RosMaster, ros_environment
 CLIENT = r"""
 import json, math, sys
 import rosgraph
-from rockly_desktop.executor.robot_link import RosRobot
+from rockly_desktop.robot.ros1.link import RosRobot
 from rockly_desktop.profiles.registry import ProfileRegistry
 from rockly_desktop.robot.interrupt import Interrupt
 

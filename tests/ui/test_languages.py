@@ -5,6 +5,7 @@ from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QApplication, QMessageBox
 
 from rockly_desktop.core.state_store import StateStore
+from rockly_desktop.robot.links import link_kind
 from rockly_desktop.robot.ros1.connection import RosUnavailable
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
 from rockly_desktop.ui.message_boxes import plain_message_box
@@ -107,14 +108,14 @@ def test_a_run_error_is_explained_in_german_naming_the_variable(qtbot, german_wi
 
 def test_an_unreachable_master_is_explained_in_german_with_a_next_step(qtbot, german_window, monkeypatch):
     window = german_window
-    window.settings.remember_ros_connection("hobbit", "http://127.0.0.1:9", "")
+    window.settings.remember_link_connection(link_kind("ros1"), "hobbit", {"master": "http://127.0.0.1:9"})
     monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
     shown = []
     monkeypatch.setattr(QMessageBox, "exec",
                         lambda box: shown.append((box.windowTitle(), box.text(), box.informativeText())))
     backend = window.run_toolbar.backend
     backend.setCurrentIndex(backend.findData("ros1"))
-    assert window.robots.kind == "simulator"
+    assert window.robots.kind == "sim"
     title, problem, next_step = shown[0]
     assert title == "Keine Verbindung zum Roboter"
     # Either nothing answers there, or this process's one ROS node already uses another test's master.

@@ -1,15 +1,20 @@
 """The window on a robot over ROS 1 (the ROS-level simulator in its own process, a real master)."""
+import sys
+
 import pytest
 from page_tools import call_page
 from program_builder import block, number, stack, workspace
 from ros_helpers import feed_hears
 
+from rockly_desktop.robot.links import link_kind
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
+
+ROS1 = link_kind("ros1")
 
 
 @pytest.fixture
 def ros_window(window, ros_master, hobbit_on_ros, monkeypatch):
-    window.settings.remember_ros_connection("hobbit", ros_master.uri, "127.0.0.1")
+    window.settings.remember_link_connection(ROS1, "hobbit", {"master": ros_master.uri, "host": "127.0.0.1"})
     monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
     backend = window.run_toolbar.backend
     backend.setCurrentIndex(backend.findData("ros1"))
@@ -35,7 +40,7 @@ def test_a_program_runs_on_the_robot_over_ros(qtbot, ros_window):
 def test_an_unreachable_master_is_refused_and_the_simulator_stays(qtbot, window, monkeypatch):
     from PySide6.QtWidgets import QMessageBox
 
-    window.settings.remember_ros_connection("hobbit", "http://127.0.0.1:9", "")
+    window.settings.remember_link_connection(ROS1, "hobbit", {"master": "http://127.0.0.1:9"})
     monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
     warnings = []
     monkeypatch.setattr(QMessageBox, "exec", lambda box: warnings.append(box.text()))
@@ -43,7 +48,22 @@ def test_an_unreachable_master_is_refused_and_the_simulator_stays(qtbot, window,
     backend.setCurrentIndex(backend.findData("ros1"))
     # Either nothing answers there, or this process's one ROS node already uses the session's master.
     assert warnings and "http://127.0.0.1:9" in warnings[0]
-    assert window.robots.kind == "simulator" and backend.currentData() == "simulator"
+    assert window.robots.kind == "sim" and backend.currentData() == "sim"
+
+
+def test_choosing_ros_without_rospy_names_the_set_up_step_and_asks_nothing(qtbot, window, monkeypatch):
+    from PySide6.QtWidgets import QMessageBox
+
+    monkeypatch.setitem(sys.modules, "rospy", None)  # as on a computer without ROS 1
+    asked, shown = [], []
+    monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: asked.append(dialog) or 1)
+    monkeypatch.setattr(QMessageBox, "exec", lambda box: shown.append((box.text(), box.informativeText())))
+    backend = window.run_toolbar.backend
+    backend.setCurrentIndex(backend.findData("ros1"))
+    assert not asked and window.robots.kind == "sim" and backend.currentData() == "sim"
+    assert shown == [("ROS 1 is not installed on this computer, so Rockly cannot reach a real robot.",
+                      "Use the built-in simulator, or ask an adult to set up ROS 1: "
+                      "“make setup” in Rockly's folder installs it (rospy).")]
 
 
 def test_the_status_shows_a_lost_master_and_its_return(qtbot, ros_window, ros_master):
@@ -102,9 +122,33 @@ def test_state_panels_and_topic_monitor_show_the_ros_robot(qtbot, ros_window):
 
 @pytest.mark.parametrize("language", ["en", "de"])
 def test_the_connection_dialog_shows_whole_addresses(qtbot, language):
-    dialog = ConnectionDialog(language, "HOBBIT", master_uri="http://192.168.100.100:11311")
+    dialog = ConnectionDialog(language, "HOBBIT", ROS1, {"master": "http://192.168.100.100:11311"})
     qtbot.addWidget(dialog)
     dialog.show()
-    for edit in (dialog.master_edit, dialog.host_edit):
+    assert list(dialog.fields) == ["master", "host"]
+    for edit in dialog.fields.values():
         shown = max(edit.text(), edit.placeholderText(), key=len)
         assert edit.width() > edit.fontMetrics().horizontalAdvance(shown)
+
+
+def test_the_connection_dialog_asks_for_each_setting_of_a_link_and_they_are_remembered(qtbot, tmp_path, monkeypatch):
+    from dataclasses import replace
+
+    from rockly_desktop.robot.links import ConnectionSetting
+    from rockly_desktop.ui.settings import AppSettings
+
+    monkeypatch.setenv("ROCKLY_TEST_DOMAIN", "7")
+    other = replace(ROS1, kind="other", settings_group="other", settings=(
+        ConnectionSetting("domain", "connect_master", ("ROCKLY_TEST_DOMAIN",), "0"),
+        ConnectionSetting("range", "connect_host", default="SUBNET",
+                          choices=(("LOCALHOST", "backend_simulator"), ("SUBNET", "backend_ros1")))))
+    dialog = ConnectionDialog("de", "HOBBIT", other, {"range": "LOCALHOST"})
+    qtbot.addWidget(dialog)
+    assert dialog.values == {"domain": "7", "range": "LOCALHOST"}
+    assert dialog.fields["range"].currentText() == "Simulator (eingebaut)"
+    dialog.fields["domain"].setText(" 42 ")
+    dialog.fields["range"].setCurrentIndex(1)
+    settings = AppSettings(tmp_path / "settings.ini")
+    settings.remember_link_connection(other, "hobbit", dialog.values)
+    assert settings.link_connection(other, "hobbit") == {"domain": "42", "range": "SUBNET"}
+    assert settings.link_connection(ROS1, "hobbit") == {"master": None, "host": None}

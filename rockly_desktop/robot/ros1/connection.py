@@ -14,7 +14,7 @@ import threading
 import time
 import xmlrpc.client
 
-from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.robot.link import RobotUnavailable
 
 log = logging.getLogger(__name__)
 
@@ -92,17 +92,11 @@ def address_problem_text(problem) -> str:
     return _ADDRESS_PROBLEMS[kind].format(address=address)
 
 
-class RosUnavailable(RocklyError):
+class RosUnavailable(RobotUnavailable):
     """rospy is not installed here, or the master cannot be reached.
 
-    ``reason`` names the case for a window that says it in its own language ('no_master',
-    'no_rospy', 'other_master', 'no_ros_tools'); ``values`` are what the message names.
+    ``reason`` is 'no_master', 'no_rospy', 'other_master' or 'no_ros_tools' (see RobotUnavailable).
     """
-
-    def __init__(self, message: str, reason: str = None, **values):
-        super().__init__(message)
-        self.reason = reason
-        self.values = values
 
 
 class RosConnection:

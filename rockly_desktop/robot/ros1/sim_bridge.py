@@ -126,6 +126,11 @@ class SimulatorNode:
         self.simulator.start()
         self._ended = False
 
+    @property
+    def where(self) -> str:
+        """The ROS master the node is registered with (the window names it)."""
+        return self.connection.master_uri
+
     def shutdown(self):
         """End waiting questions and goals, stop the simulator (its safe stop first), and end the
         node: its publishers, subscribers and services are taken off the master. Once only."""
@@ -142,17 +147,9 @@ class SimulatorNode:
         self.connection.shutdown("rockly sim ended")
 
 
-def run_simulator_node(profile, types, master_uri=None, speed=1.0, tablet=None, stop_event=None, on_ready=None):
-    """Start ``profile``'s simulator as a ROS node and run until ``stop_event`` is set.
+def serve_simulator(profile, connection: dict, speed: float = 1.0, tablet=None) -> SimulatorNode:
+    """``profile``'s simulator on ROS 1 at ``connection``'s ``master`` (the registry's ``sim_server``)."""
+    from rockly_desktop.robot.ros1.message_classes import MessageTypes
 
-    ``on_ready()`` is called once every topic, service and action server is up.
-    """
-    node = SimulatorNode(profile, types, master_uri, speed, tablet)
-    if on_ready is not None:
-        on_ready()
-    stop_event = stop_event or threading.Event()
-    try:
-        while not stop_event.wait(0.2):
-            pass
-    finally:
-        node.shutdown()
+    return SimulatorNode(profile, MessageTypes(profile.message_folders), connection.get("master") or None,
+                         speed, tablet)

@@ -44,7 +44,7 @@ def test_no_master_is_explained_at_once(tmp_path):
 RECONNECTING_CLIENT = r"""
 import sys
 from rockly_desktop.profiles.registry import ProfileRegistry
-from rockly_desktop.executor.robot_link import RosRobot
+from rockly_desktop.robot.ros1.link import RosRobot
 from rockly_desktop.robot.interrupt import Interrupt
 hobbit = ProfileRegistry.discover().get("hobbit")
 robot = RosRobot(hobbit, sys.argv[1])

@@ -1,82 +1,36 @@
-"""The robot a program runs against: the profile's built-in simulator, or a robot over ROS 1."""
+"""A robot over ROS 1 as a robot link (``robot/link.py``), through this process's one node."""
+import importlib.util
+
 from rockly_desktop.core.state_store import StateStore
-from rockly_desktop.executor.health import GREEN, RED, HealthItem, server_health, topic_health
+from rockly_desktop.robot.health import GREEN, RED, HealthItem, server_health, topic_health
 from rockly_desktop.robot.interrupt import Interrupt
+from rockly_desktop.robot.link import LinkStatus, LinkWarning
 from rockly_desktop.robot.safe_stop import run_safe_stop
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
 
-
-class SimulatedRobot:
-    """A profile's simulator running in this process for the whole session.
-
-    ``tablet`` answers the robot's tablet dialogs (a window, or the CLI's --answer list).
-    """
-
-    name = "simulator"
-
-    def __init__(self, profile, tablet=None, speed: float = 1.0):
-        self.profile = profile
-        self.world = SimWorld()
-        self.state = StateStore()
-        self.world.tap(self.state.record)
-        self.simulator = profile.create("simulator", self.world, tablet=tablet, speed=speed)
-        self.simulator.start()
-
-    def backend(self, interrupt: Interrupt):
-        """A backend whose waits end when ``interrupt`` is stopped."""
-        return SimBackend(self.world, interrupt)
-
-    def snapshot(self) -> dict:
-        """The simulated robot's state, for the simulator view."""
-        return self.simulator.snapshot()
-
-    def graph_topics(self) -> list:
-        """(topic, type, publisher count) of the simulated robot's topics."""
-        return [(topic, msg_type, 1) for topic, msg_type in self.world.topics()]
-
-    def health(self) -> list:
-        """HealthItems of the simulated robot (its interface as the manifest declares it)."""
-        interface = self.profile.ros_interface
-        link = HealthItem("simulator", GREEN, "the built-in simulator is running")
-
-        def has_server(kind, name):
-            return self.world.has_service(name) if kind == "services" else self.world.has_action(name)
-
-        return [link] + topic_health(interface, self.state.topics()) + server_health(interface, has_server)
-
-    def safe_stop(self) -> list:
-        """Do the profile's safe stop now; returns what failed."""
-        return run_safe_stop(self.profile.safe_stop, self.backend(Interrupt()))
-
-    def reset(self):
-        """Put the simulated robot back as it started (its profile's ``reset()``)."""
-        self.simulator.reset()
-
-    def shutdown(self):
-        """Stop the simulator's threads."""
-        self.safe_stop()
-        self.simulator.shutdown()
+SETUP_STEP = "run `make setup` in Rockly's folder (it installs Debian's ROS 1: python3-rospy and its tools)"
 
 
 class RosRobot:
     """A real robot (or a ROS-level simulator) on ROS 1, through this process's one node.
 
+    ``master_uri`` and ``host`` (this computer's ROS_IP or ROS_HOSTNAME) are used when the node
+    starts, the first time; it waits up to ``timeout`` s for the master.
     Raises RosUnavailable when rospy is missing or the master does not answer.
     """
 
-    name = "ros1"
+    kind = "ros1"
 
-    def __init__(self, profile, master_uri: str = None):
+    def __init__(self, profile, master_uri: str = None, host: str = None, timeout: float = 5.0):
         from rockly_desktop.robot.ros1.connection import RosConnection, RosUnavailable
 
         self.profile = profile
-        self.connection = RosConnection.get(master_uri)  # RosUnavailable without rospy or a master
+        self.connection = RosConnection.get(master_uri, host, timeout)  # RosUnavailable without rospy or a master
         try:
             from rockly_desktop.robot.ros1.backend import RosGraph
             from rockly_desktop.robot.ros1.message_classes import MessageTypes
         except ImportError as error:
-            raise RosUnavailable(f"the ROS 1 message tools (genpy, actionlib) are not installed ({error})",
-                                 "no_ros_tools") from None
+            raise RosUnavailable(f"the ROS 1 message tools (genpy, actionlib) are not installed ({error}); "
+                                 f"{SETUP_STEP}", "no_ros_tools") from None
         self.graph = RosGraph(self.connection, MessageTypes(profile.message_folders))
         safe_backend = self.backend(Interrupt())
         for action in profile.safe_stop:  # connected now, so a stop never waits for them
@@ -87,6 +41,23 @@ class RosRobot:
         self.state = StateStore(decode=from_message)
         self.graph.service_watchers.append(self.state.record)  # this node's calls, e.g. the tablet's questions
         self._feed = None
+
+    @classmethod
+    def unavailable(cls):
+        """RosUnavailable ('no_rospy', naming the set-up step) when rospy cannot be imported here."""
+        if importlib.util.find_spec("rospy") is not None:
+            return None
+        from rockly_desktop.robot.ros1.connection import RosUnavailable
+
+        return RosUnavailable(f"ROS 1 (rospy) is not installed on this computer: {SETUP_STEP}, "
+                              "or use the built-in simulator", "no_rospy")
+
+    @classmethod
+    def open(cls, profile, connection: dict = None, *, tablet=None, speed: float = 1.0, timeout: float = 5.0):
+        """The robot at ``connection``'s ``master`` (and this computer as ``host``); the robot's own
+        nodes answer its tablet, so ``tablet`` and ``speed`` are not used."""
+        connection = connection or {}
+        return cls(profile, connection.get("master") or None, connection.get("host") or None, timeout)
 
     def follow_graph(self):
         """Start filling ``state`` from every topic of the graph (for the panels); idempotent."""
@@ -105,6 +76,25 @@ class RosRobot:
     def snapshot(self):
         """A real robot has no simulator view."""
         return None
+
+    def reset(self):
+        """A real robot cannot be put back."""
+        raise NotImplementedError("a real robot cannot be put back")
+
+    def status(self) -> LinkStatus:
+        """The master's state (connected | connecting | lost), its URI and round trip."""
+        connection = self.connection
+        return LinkStatus(connection.status, connection.master_uri, connection.round_trip)
+
+    def warnings(self) -> list:
+        """A LinkWarning when the robot's nodes could not reach this computer at its ROS_IP."""
+        if not self.connection.address_problem:
+            return []
+        from rockly_desktop.robot.ros1.connection import address_problem_text
+
+        kind, address = self.connection.address_problem
+        return [LinkWarning(f"address_{kind}", "address_title", address_problem_text(self.connection.address_problem),
+                            {"address": address})]
 
     def graph_topics(self) -> list:
         """(topic, type, publisher count) of the ROS graph (once ``follow_graph`` runs)."""

@@ -1,0 +1,142 @@
+"""The registry of robot links: every kind of robot Rockly runs programs on, in one place.
+
+Each entry is data (its name in the window, its connection settings, its ``rockly sim``
+option) plus the import path of its link class (``robot/link.py``'s ``RobotLink``), which
+is imported only when that kind is used: a missing ROS stack costs nothing at start-up.
+The command line (``--backend``, ``rockly sim --ros``), the run toolbar's robot box and
+the connection dialog all read it. A new backend is one module and one entry here (and its
+window texts in ``ui/texts.py``).
+"""
+import importlib
+import os
+from dataclasses import dataclass
+
+from rockly_desktop.robot.link import RobotUnavailable
+
+
+@dataclass(frozen=True)
+class ConnectionSetting:
+    """One thing a person tells Rockly to reach a robot, remembered per profile.
+
+    ``label`` and ``hint`` are window text keys (``ui/texts.py``); the default is the first
+    of the ``environment`` variables that is set, else ``default``; ``example`` is a long
+    typical value (the field is made wide enough for it). ``choices`` ((value, text key)
+    pairs) make it a choice among those values (e.g. ROS 2's discovery range) instead of a
+    typed text. ``option`` is its ``rockly run`` and ``rockly sim`` option, with ``help``
+    (English, as the whole command line).
+    """
+
+    name: str
+    label: str
+    environment: tuple = ()
+    default: str = ""
+    hint: str = None
+    example: str = ""
+    choices: tuple = ()
+    option: str = None
+    help: str = ""
+
+    def default_value(self) -> str:
+        """The value to offer when none is remembered: from this computer's environment, else ``default``."""
+        return next((os.environ[name] for name in self.environment if os.environ.get(name)), self.default)
+
+
+@dataclass(frozen=True)
+class LinkKind:
+    """One kind of robot link: ``kind`` is its key (``--backend KIND``), ``link`` its class as
+    ``module:Class``, ``name`` the window text key of its name in the robot box, ``title`` its
+    name on the command line (English, as the whole command line).
+
+    ``simulated``: the profile's simulator in this process (shown in the Simulator dock, can be
+    put back). ``settings`` are asked for in the connection dialog, whose explanation is the
+    text ``explanation``; they are remembered under ``settings_group/PROFILE/NAME``.
+    ``sim_option`` (e.g. ``--ros``) makes ``rockly sim`` serve the simulator on this link's
+    middleware through ``sim_server`` (``module:callable``, see ``serve_simulator``).
+    """
+
+    kind: str
+    link: str
+    name: str
+    title: str
+    simulated: bool = False
+    settings: tuple = ()
+    settings_group: str = None
+    explanation: str = None
+    sim_option: str = None
+    sim_server: str = None
+
+    def link_class(self):
+        """The link class (imported now, on first use)."""
+        return _load(self.link)
+
+
+ROS1_SETTINGS = (
+    ConnectionSetting("master", "connect_master", ("ROS_MASTER_URI",), "http://localhost:11311",
+                      example="http://192.168.100.100:11311", option="--master",
+                      help="ROS master URI for ROS 1 (default: $ROS_MASTER_URI)"),
+    ConnectionSetting("host", "connect_host", ("ROS_IP", "ROS_HOSTNAME"), hint="connect_host_hint"),
+)
+
+LINKS = {entry.kind: entry for entry in (
+    LinkKind("sim", "rockly_desktop.robot.sim_link:SimulatedRobot", "backend_simulator", "the built-in simulator",
+             simulated=True),
+    LinkKind("ros1", "rockly_desktop.robot.ros1.link:RosRobot", "backend_ros1", "a robot over ROS 1",
+             settings=ROS1_SETTINGS,
+             settings_group="ros", explanation="connect_explanation",
+             sim_option="--ros", sim_server="rockly_desktop.robot.ros1.sim_bridge:serve_simulator"),
+)}
+DEFAULT_KIND = "sim"
+
+
+class UnknownRobotLink(RobotUnavailable):
+    """A kind of robot link that is not in the registry."""
+
+    def __init__(self, kind: str):
+        known = ", ".join(LINKS)
+        super().__init__(f"there is no robot link '{kind}' (Rockly knows: {known})", "unknown_link",
+                         kind=kind, known=known)
+
+
+def link_kinds() -> list:
+    """Every LinkKind, in the order the robot box lists them (the simulator first)."""
+    return list(LINKS.values())
+
+
+def link_kind(kind: str) -> LinkKind:
+    """The LinkKind ``kind``; UnknownRobotLink (naming the known ones) if there is none."""
+    try:
+        return LINKS[kind]
+    except KeyError:
+        raise UnknownRobotLink(kind) from None
+
+
+def check_available(kind: str):
+    """Raise RobotUnavailable (naming the set-up step) when ``kind`` cannot be used on this computer."""
+    problem = link_kind(kind).link_class().unavailable()
+    if problem is not None:
+        raise problem
+
+
+def open_link(kind: str, profile, connection: dict = None, **options):
+    """A link of ``kind`` to ``profile``'s robot (``RobotLink.open``'s ``options``); RobotUnavailable
+    when it cannot be used here or the robot does not answer."""
+    check_available(kind)
+    return link_kind(kind).link_class().open(profile, connection or {}, **options)
+
+
+def serve_simulator(kind: str, profile, connection: dict = None, speed: float = 1.0, tablet=None):
+    """``profile``'s simulator served on ``kind``'s middleware until its ``shutdown()``.
+
+    Returns the server: ``simulator`` (the profile's), ``where`` (what the window names, e.g. the
+    master's URI) and ``shutdown()``. RobotUnavailable when ``kind`` cannot serve one here.
+    """
+    entry = link_kind(kind)
+    if entry.sim_server is None:
+        raise RobotUnavailable(f"the robot link '{kind}' cannot serve a simulator", "no_sim_server", kind=kind)
+    check_available(kind)
+    return _load(entry.sim_server)(profile, connection or {}, speed=speed, tablet=tablet)
+
+
+def _load(target: str):
+    module, _, name = target.partition(":")
+    return getattr(importlib.import_module(module), name)

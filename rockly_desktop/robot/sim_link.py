@@ -1,0 +1,79 @@
+"""The built-in simulator as a robot link (``robot/link.py``): the profile's simulator in this process."""
+from rockly_desktop.core.state_store import StateStore
+from rockly_desktop.robot.health import GREEN, HealthItem, server_health, topic_health
+from rockly_desktop.robot.interrupt import Interrupt
+from rockly_desktop.robot.safe_stop import run_safe_stop
+from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+
+
+class SimulatedRobot:
+    """A profile's simulator running in this process for the whole session.
+
+    ``tablet`` answers the robot's tablet dialogs (a window, or the CLI's --answer list).
+    """
+
+    kind = "sim"
+
+    def __init__(self, profile, tablet=None, speed: float = 1.0):
+        self.profile = profile
+        self.world = SimWorld()
+        self.state = StateStore()
+        self.world.tap(self.state.record)
+        self.simulator = profile.create("simulator", self.world, tablet=tablet, speed=speed)
+        self.simulator.start()
+
+    @classmethod
+    def unavailable(cls):
+        """The simulator is always there."""
+        return None
+
+    @classmethod
+    def open(cls, profile, connection: dict = None, *, tablet=None, speed: float = 1.0, timeout: float = 5.0):
+        """The profile's simulator, started now (it needs no connection)."""
+        return cls(profile, tablet=tablet, speed=speed)
+
+    def backend(self, interrupt: Interrupt):
+        """A backend whose waits end when ``interrupt`` is stopped."""
+        return SimBackend(self.world, interrupt)
+
+    def follow_graph(self):
+        """Nothing to start: the simulated world fills ``state`` from the beginning."""
+
+    def status(self):
+        """A simulator in this process has no connection to lose."""
+        return None
+
+    def warnings(self) -> list:
+        """Nothing to warn about."""
+        return []
+
+    def snapshot(self) -> dict:
+        """The simulated robot's state, for the simulator view."""
+        return self.simulator.snapshot()
+
+    def graph_topics(self) -> list:
+        """(topic, type, publisher count) of the simulated robot's topics."""
+        return [(topic, msg_type, 1) for topic, msg_type in self.world.topics()]
+
+    def health(self) -> list:
+        """HealthItems of the simulated robot (its interface as the manifest declares it)."""
+        interface = self.profile.ros_interface
+        link = HealthItem("simulator", GREEN, "the built-in simulator is running")
+
+        def has_server(kind, name):
+            return self.world.has_service(name) if kind == "services" else self.world.has_action(name)
+
+        return [link] + topic_health(interface, self.state.topics()) + server_health(interface, has_server)
+
+    def safe_stop(self) -> list:
+        """Do the profile's safe stop now; returns what failed."""
+        return run_safe_stop(self.profile.safe_stop, self.backend(Interrupt()))
+
+    def reset(self):
+        """Put the simulated robot back as it started (its profile's ``reset()``)."""
+        self.simulator.reset()
+
+    def shutdown(self):
+        """Stop the simulator's threads."""
+        self.safe_stop()
+        self.simulator.shutdown()

@@ -1,0 +1,141 @@
+"""The registry of robot links: every kind, its name in the window, the command line built from it,
+and clear messages for a kind that does not exist or cannot be used here."""
+import subprocess
+import sys
+from dataclasses import replace
+from pathlib import Path
+
+import pytest
+from program_builder import block, rockly_document
+
+from rockly_desktop import cli
+from rockly_desktop.robot import links
+from rockly_desktop.robot.health import GREEN, HealthItem
+from rockly_desktop.robot.link import RobotLink, RobotUnavailable
+from rockly_desktop.robot.links import (
+    LinkKind,
+    UnknownRobotLink,
+    check_available,
+    link_kind,
+    link_kinds,
+    open_link,
+    serve_simulator,
+)
+from rockly_desktop.ui.texts import robot_problem, tr
+
+REPO = Path(__file__).resolve().parents[2]
+PROTOCOL = [name for name in dir(RobotLink) if not name.startswith("_")]
+
+
+def test_the_registry_lists_the_simulator_first_then_ros1_each_named_in_both_languages():
+    kinds = [entry.kind for entry in link_kinds()]
+    assert kinds[:2] == ["sim", "ros1"] and links.DEFAULT_KIND == "sim"
+    names = {entry.kind: (tr(entry.name, "en"), tr(entry.name, "de")) for entry in link_kinds()}
+    assert names["sim"] == ("Simulator (built in)", "Simulator (eingebaut)")
+    assert names["ros1"] == ("Real robot (ROS 1)…", "Echter Roboter (ROS 1)…")
+    assert [entry.kind for entry in link_kinds() if entry.simulated] == ["sim"]
+
+
+def test_each_link_class_has_everything_a_robot_link_offers_and_its_kind():
+    assert {"backend", "follow_graph", "graph_topics", "health", "status", "safe_stop", "shutdown",
+            "open", "unavailable"} <= set(PROTOCOL)
+    for entry in link_kinds():
+        link_class = entry.link_class()
+        assert link_class.kind == entry.kind
+        assert [name for name in PROTOCOL if not hasattr(link_class, name) and name not in ("profile", "state")] == []
+
+
+def test_each_connection_setting_has_a_window_label_and_ros1_asks_for_master_and_host():
+    assert [setting.name for setting in link_kind("ros1").settings] == ["master", "host"]
+    for entry in link_kinds():
+        for setting in entry.settings:
+            assert tr(setting.label, "en") != tr(setting.label, "de")
+        assert bool(entry.settings) == (entry.settings_group is not None) == (not entry.simulated)
+
+
+def test_the_window_robot_box_lists_every_kind_in_its_language(qtbot):
+    from rockly_desktop.ui.run_toolbar import RunToolbar
+
+    toolbar = RunToolbar("de")
+    qtbot.addWidget(toolbar)
+    box = toolbar.backend
+    assert [(box.itemText(i), box.itemData(i)) for i in range(box.count())] == [
+        (tr(entry.name, "de"), entry.kind) for entry in link_kinds()]
+    assert toolbar.reset_action.isEnabled()
+    box.setCurrentIndex(box.findData("ros1"))
+    assert not toolbar.reset_action.isEnabled()  # only the built-in simulator can be put back
+
+
+def test_an_unknown_kind_is_refused_naming_the_known_ones(hobbit):
+    for attempt in (lambda: link_kind("ros3"), lambda: open_link("ros3", hobbit),
+                    lambda: check_available("ros3")):
+        with pytest.raises(UnknownRobotLink) as caught:
+            attempt()
+        assert str(caught.value) == "there is no robot link 'ros3' (Rockly knows: sim, ros1)"
+        assert isinstance(caught.value, RobotUnavailable)
+
+
+def test_a_kind_that_cannot_serve_a_simulator_says_so(hobbit):
+    with pytest.raises(RobotUnavailable, match="the robot link 'sim' cannot serve a simulator"):
+        serve_simulator("sim", hobbit)
+
+
+def test_ros1_without_rospy_is_unavailable_naming_the_set_up_step(monkeypatch, hobbit):
+    monkeypatch.setitem(sys.modules, "rospy", None)  # what find_spec then says: not installed
+    with pytest.raises(RobotUnavailable) as caught:
+        open_link("ros1", hobbit, {"master": "http://127.0.0.1:9"})
+    assert caught.value.reason == "no_rospy"
+    assert "ROS 1 (rospy) is not installed on this computer" in str(caught.value)
+    assert "make setup" in str(caught.value)
+    for language in ("en", "de"):
+        problem, next_step = robot_problem(caught.value, language)
+        assert problem and "make setup" in next_step
+    check_available("sim")  # the simulator is always there
+
+
+def test_the_command_line_offers_the_registry_kinds_and_their_options(monkeypatch):
+    fake = LinkKind("fake", "rockly_desktop.robot.sim_link:SimulatedRobot", "backend_simulator", "a fake robot",
+                    settings=(replace(link_kind("ros1").settings[0], name="where", option="--where"),),
+                    settings_group="fake", sim_option="--fake", sim_server="rockly_desktop.robot.ros1.sim_bridge:x")
+    monkeypatch.setitem(links.LINKS, "fake", fake)
+    parser = cli._tool_parser()
+    for entry in link_kinds():
+        assert parser.parse_args(["run", "p.rockly", "--backend", entry.kind]).backend == entry.kind
+    args = parser.parse_args(["run", "p.rockly", "--backend", "fake", "--where", "there"])
+    assert cli._connection("fake", args) == {"where": "there"}
+    assert cli._connection("ros1", parser.parse_args(["run", "p.rockly", "--master", "http://m:1"])) == {
+        "master": "http://m:1"}
+    assert parser.parse_args(["sim", "hobbit", "--fake"]).serve_on == "fake"
+    assert parser.parse_args(["sim", "hobbit", "--ros"]).serve_on == "ros1"
+
+
+def rockly(*args, prelude=""):
+    code = f"import sys; {prelude}from rockly_desktop.cli import main; sys.exit(main(sys.argv[1:]))"
+    return subprocess.run([sys.executable, "-c", code, *map(str, args)], capture_output=True, text=True,
+                          timeout=120, cwd=REPO)
+
+
+def test_run_with_an_unknown_backend_names_the_kinds_there_are(tmp_path):
+    result = rockly("run", tmp_path / "p.rockly", "--backend", "ros3")
+    assert result.returncode == 2
+    assert "invalid choice: 'ros3' (choose from 'sim', 'ros1')" in result.stderr
+
+
+def test_run_on_ros1_without_rospy_names_the_set_up_step(tmp_path):
+    program = tmp_path / "p.rockly"
+    program.write_text(rockly_document([block("text_print", id="p")]))
+    result = rockly("run", program, "--backend", "ros1", prelude="sys.modules['rospy'] = None; ")
+    assert result.returncode == 1
+    assert result.stderr.startswith("rockly run: ROS 1 (rospy) is not installed on this computer: run `make setup`")
+
+
+def test_the_simulator_link_opens_from_the_registry_and_needs_no_connection(hobbit):
+    robot = open_link("sim", hobbit, speed=20)
+    try:
+        assert robot.kind == "sim" and robot.status() is None and robot.warnings() == []
+        robot.follow_graph()  # nothing to start: its world fills the state store from the beginning
+        assert ("/odom", "nav_msgs/Odometry", 1) in robot.graph_topics()
+        assert robot.health()[0] == HealthItem("simulator", GREEN, "the built-in simulator is running")
+        assert robot.snapshot() is not None and robot.safe_stop() == []
+    finally:
+        robot.shutdown()
