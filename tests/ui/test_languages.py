@@ -157,8 +157,8 @@ def test_state_panels_write_numbers_the_german_way(qtbot, hobbit):
     panels.refresh()
     values = panels.values()
     assert (values["Position x"], values["Position y"], values["Richtung"]) == ("1,60 m", "-0,50 m", "90°")
-    assert (values["Tempo"], values["Drehen"], values["Ladung"]) == ("0,30 m/s", "0,25 rad/s", "42 %")
-    assert (values["Bewegung"], values["Blick"]) == ("Idle", "center_center")  # the robot's own values, as they come
+    assert (values["Tempo"], values["Drehen"], values["Ladung"]) == ("0,30 m/s", "14 °/s", "42 %")
+    assert (values["Bewegung"], values["Blick"]) == ("steht", "geradeaus")  # the robot's values, named for people
 
 
 def test_numbers_follow_the_language_and_the_rest_of_a_format_stays():

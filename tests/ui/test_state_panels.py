@@ -24,6 +24,22 @@ def test_each_row_shows_its_field_transformed_and_formatted(qtbot, hobbit):
     assert values["Charge"] == "42 %" and values["Command state"] == "failed"
 
 
+def test_a_value_the_panel_does_not_name_is_shown_as_it_comes_and_zero_has_no_minus(qtbot, hobbit):
+    panels = StatePanels(hobbit.state_panels, "en")
+    qtbot.addWidget(panels)
+    store = StateStore()
+    panels.set_store(store)
+    store.record("/head/move", "std_msgs/String", {"data": "somewhere_new"})
+    store.record("/odom", "nav_msgs/Odometry", {"pose": {"pose": {"position": {"x": -0.001, "y": 0.0},
+                                                                     "orientation": {"x": 0, "y": 0, "z": -0.001,
+                                                                                     "w": 1.0}}},
+                                                "twist": {"twist": {"linear": {"x": 0.0}, "angular": {"z": -0.001}}}})
+    panels.refresh()
+    values = panels.values()
+    assert values["Looking"] == "somewhere_new"
+    assert (values["Position x"], values["Heading"], values["Turning"]) == ("0.00 m", "0°", "0 °/s")
+
+
 def test_panels_follow_a_run_on_the_simulator(qtbot, window):
     call_page(qtbot, window.editor, "load", {"workspace": workspace(stack(
         block("hobbit_head", {"head_position": "up_left"}), block("hobbit_emo", {"emotion": "SAD"}),
@@ -33,11 +49,11 @@ def test_panels_follow_a_run_on_the_simulator(qtbot, window):
     with qtbot.waitSignal(window.runs.sig_finished, timeout=20000):
         window.runs.run()
     panels = window.state_dock.widget()
-    qtbot.waitUntil(lambda: panels.values()["Position x"] == "0.50 m" and panels.values()["Motion"] == "Idle",
+    qtbot.waitUntil(lambda: panels.values()["Position x"] == "0.50 m" and panels.values()["Motion"] == "standing",
                     timeout=3000)
     values = panels.values()
-    assert (values["Looking"], values["Emotion"]) == ("up_left", "SAD")
-    assert (values["Last command"], values["Command state"]) == ("MoveToCandle", "done")
+    assert (values["Looking"], values["Emotion"]) == ("up left", "sad")
+    assert (values["Last command"], values["Command state"]) == ("straight up", "done")
     assert values["Last question"] == "Hi there"
     assert float(values["Charge"].split()[0]) > 90
 
