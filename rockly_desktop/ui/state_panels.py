@@ -14,7 +14,7 @@ import functools
 import math
 import string
 
-from PySide6.QtCore import QLocale, QTimer
+from PySide6.QtCore import QLocale, Qt, QTimer
 from PySide6.QtWidgets import QFormLayout, QGroupBox, QLabel, QScrollArea, QVBoxLayout, QWidget
 
 from rockly_desktop.core.state_store import field_value
@@ -93,6 +93,7 @@ class StatePanels(QScrollArea):
     def __init__(self, panels: list, language: str, parent=None):
         super().__init__(parent)
         self.setWidgetResizable(True)
+        self.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         self.store = None
         self._language = language
         self._rows = []
@@ -104,6 +105,7 @@ class StatePanels(QScrollArea):
             for row in panel["rows"]:
                 value = QLabel(NO_VALUE, box)
                 value.setObjectName(f"state:{row['topic']}:{row['field']}")
+                value.setWordWrap(True)     # a long value (a question) wraps, never cut off
                 form.addRow(localize(row["label"], language), value)
                 self._rows.append((row, value))
             layout.addWidget(box)

@@ -1,6 +1,7 @@
 """The HOBBIT state panels, from the manifest, fed by the built-in simulator during a run."""
 from page_tools import call_page
 from program_builder import block, number, stack, text, workspace
+from PySide6.QtWidgets import QLabel
 
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.ui.state_panels import StatePanels
@@ -75,3 +76,20 @@ def test_a_field_double_clicked_in_the_topic_monitor_is_plotted(qtbot, window):
     assert index.isValid()
     monitor.sig_plot_requested.emit("/odom", "pose.pose.position.x")
     assert plot.curves() == [("/odom", "pose.pose.position.x")]
+
+
+def test_a_long_value_wraps_in_a_narrow_dock_instead_of_being_cut(qtbot, hobbit):
+    panels = StatePanels(hobbit.state_panels, "de")
+    qtbot.addWidget(panels)
+    panels.resize(300, 400)
+    panels.show()
+    store = StateStore()
+    panels.set_store(store)
+    question = "Was ist deine Lieblingsfarbe, wenn du an den Sommer denkst?"
+    store.record("/MMUI", "service", {"request": {"params": [{}, {"value": question}]}, "response": {}})
+    store.record("/hobbit_arm/goal", "action goal", {"goal": {"command": {"data": "TurnTurntableCCW"}}})
+    panels.refresh()
+    assert panels.values()["Letzte Frage"] == question
+    assert panels.values()["Letzter Befehl"] == "Drehteller gegen den Uhrzeigersinn"
+    qtbot.waitUntil(lambda: panels.widget().width() <= panels.viewport().width(), timeout=3000)
+    assert all(label.wordWrap() for label in panels.findChildren(QLabel) if label.objectName().startswith("state:"))
