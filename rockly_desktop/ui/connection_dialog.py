@@ -1,7 +1,7 @@
 """The ROS connection dialog: which ROS master, and this computer's address for the robot."""
 import os
 
-from PySide6.QtWidgets import QDialog, QDialogButtonBox, QFormLayout, QLabel, QLineEdit
+from PySide6.QtWidgets import QDialog, QDialogButtonBox, QFormLayout, QLabel, QLayout, QLineEdit
 
 from rockly_desktop.ui.texts import tr
 
@@ -35,6 +35,7 @@ class ConnectionDialog(QDialog):
         layout.addRow(tr("connect_master", language), self.master_edit)
         layout.addRow(tr("connect_host", language), self.host_edit)
         layout.addRow(buttons)
+        layout.setSizeConstraint(QLayout.SizeConstraint.SetFixedSize)  # no empty band or resize grip under the buttons
 
     @property
     def master_uri(self) -> str:
