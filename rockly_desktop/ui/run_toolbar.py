@@ -1,4 +1,4 @@
-"""The run toolbar: Run, Pause, Step, Continue, a big red STOP, slow motion and the robot."""
+"""The run toolbar: Run, Pause, Step, Continue, a big red STOP, slow motion and where the program runs."""
 from PySide6.QtCore import Qt, Signal
 from PySide6.QtGui import QAction, QKeySequence
 from PySide6.QtWidgets import QComboBox, QLabel, QSlider, QStyle, QToolBar
@@ -48,8 +48,10 @@ class RunToolbar(QToolBar):
         self.addWidget(self.speed)
         self.addWidget(QLabel(f" {tr('fast', language)}  ", self))
         self.addSeparator()
-        self.addWidget(QLabel(f" {tr('backend', language)} ", self))
+        # "Run on", not "Robot": the Robot menu chooses which robot, this box where the program runs
+        self.addWidget(QLabel(f" {tr('run_on', language)} ", self))
         self.backend = QComboBox(self)
+        self.backend.setToolTip(tr("run_on_tip", language))
         self.backend.addItem(tr("backend_simulator", language), "simulator")
         self.backend.addItem(tr("backend_ros1", language), "ros1")
         self.addWidget(self.backend)
