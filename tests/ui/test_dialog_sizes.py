@@ -1,9 +1,12 @@
-"""The Preferences and Connect dialogs are as big as their content: nothing under their buttons."""
+"""The Preferences and Connect dialogs are as big as their content (nothing under their buttons); message
+boxes are wide enough for their titles."""
 import pytest
 from PySide6.QtCore import QSettings
-from PySide6.QtWidgets import QDialogButtonBox, QWidget
+from PySide6.QtGui import QFontMetrics
+from PySide6.QtWidgets import QDialogButtonBox, QMessageBox, QWidget
 
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
+from rockly_desktop.ui.message_boxes import plain_message_box, title_width
 from rockly_desktop.ui.preferences import PreferencesDialog
 from rockly_desktop.ui.teacher_settings import TeacherSettings
 
@@ -44,3 +47,11 @@ def test_preferences_are_as_big_as_their_content_also_after_unlocking(qtbot, tmp
     assert dialog.teacher_tab.unlocked
     qtbot.waitUntil(lambda: dialog.size() == dialog.sizeHint(), timeout=3000)
     assert _ends_with_its_buttons(dialog)
+
+
+def test_a_message_box_with_a_short_text_is_wide_enough_for_its_title(qtbot):
+    title = "Etwas ist schiefgegangen"
+    box = plain_message_box(None, QMessageBox.Icon.Warning, title, "Hoppla.")
+    box.setDetailedText("Traceback")   # QMessageBox lays itself out anew
+    _shown(qtbot, box)
+    assert box.width() >= title_width(title, box.font()) > QFontMetrics(box.font()).horizontalAdvance(title)
