@@ -214,4 +214,4 @@ def test_ahead_is_one_sector_in_the_commands_the_view_and_the_robot_state_panel(
 def test_turning_is_in_degrees_per_second(make_view):
     view = make_view({"angular": 0.5}, language="de")
     assert view.panel_texts()["turning"] == "+29 °/s"
-    assert view.panel_texts()["driving"] == "+0,00 m/s"
+    assert view.panel_texts()["driving"] == "0,00 m/s"
