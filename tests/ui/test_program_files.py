@@ -169,6 +169,12 @@ def test_export_writes_the_generated_python(qtbot, window, pick_up_file, tmp_pat
     compile(exported, str(target), "exec")
 
 
+def test_opening_a_program_clears_the_last_runs_variables(qtbot, window, pick_up_file):
+    window.variables.show_values({"score": "7"})
+    open_program(qtbot, window, pick_up_file)
+    assert window.variables.values() == {} and window.variables.table.rowCount() == 0
+
+
 def test_export_adds_py_to_a_name_chosen_without_a_suffix(qtbot, window, pick_up_file, tmp_path, monkeypatch):
     open_program(qtbot, window, pick_up_file)
     wait_for_code(qtbot, window, "robot.gripper('open')\nrobot.move_arm('floor')\nrobot.gripper('close')\n")
