@@ -6,20 +6,23 @@ simulator subclasses ``RobotSimulator`` (lock, ordered publishing, clock thread,
 and shutdown) and asks a person through its tablet port (``TabletQuestion``), and its view
 may read snapshots with ``with_defaults``, ``as_number``, ``as_point`` and ``as_points``. A
 simulator declares its solid world as data (``World``, ``load_world``: walls and furniture its
-footprint cannot enter, which its laser sees) and restores its start with ``reset()``.
+footprint cannot enter, which its laser sees) and restores its start with ``reset()``. What a
+laser sees in a direction ("ahead": a sector, ``AHEAD_HALF_WIDTH`` each side) is ``nearest_in_scan``
+(``nearest_reading`` for bare ranges), the same for commands, views and the Robot state panel.
 Nothing here imports Qt; a view's drawing helpers are in ``rockly_desktop.sdk_view``.
 """
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
 from rockly_desktop.core.state_store import field_value
 from rockly_desktop.robot.commands import RobotCommands
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
+from rockly_desktop.robot.laser import AHEAD_HALF_WIDTH, nearest_in_scan, nearest_reading
 from rockly_desktop.robot.simulator import RobotSimulator, twist_velocity
 from rockly_desktop.robot.snapshot_values import as_number, as_point, as_points, with_defaults
 from rockly_desktop.robot.tablet import TabletQuestion
 from rockly_desktop.robot.world_map import Obstacle, World, load_world
 
 __all__ = [
-    "GoalHandle", "GoalOutcome", "GoalStatus", "Obstacle", "RobotBackend", "RobotCommandError", "World",
-    "RobotCommands", "RobotSimulator", "RobotTimeout", "TabletQuestion", "as_number", "as_point", "as_points",
-    "field_value", "load_world", "twist_velocity", "with_defaults",
+    "AHEAD_HALF_WIDTH", "GoalHandle", "GoalOutcome", "GoalStatus", "Obstacle", "RobotBackend", "RobotCommandError",
+    "World", "RobotCommands", "RobotSimulator", "RobotTimeout", "TabletQuestion", "as_number", "as_point", "as_points",
+    "field_value", "load_world", "nearest_in_scan", "nearest_reading", "twist_velocity", "with_defaults",
 ]

@@ -68,8 +68,11 @@ def sized_font(base: QFont, px: float, bold: bool = False, min_px: int = MIN_TEX
 
 
 def decimal(value: float, places: int, language: str, sign: bool = False) -> str:
-    """``value`` with ``places`` decimals (and a sign), with ``language``'s decimal point (1,60 in German)."""
+    """``value`` with ``places`` decimals (and a sign), with ``language``'s decimal point (1,60 in German);
+    a value that rounds to zero has no sign ("0°", not "-0°" or "+0°")."""
     text = f"{value:{'+' if sign else ''}.{places}f}"
+    if not text.strip("+-0."):
+        text = text.lstrip("+-")
     return text.replace(".", QLocale(language).decimalPoint())
 
 

@@ -9,6 +9,7 @@ from rockly_desktop import sdk_view
 @pytest.mark.parametrize("value, places, language, sign, text", [
     (1.6, 2, "en", False, "1.60"), (1.6, 2, "de", False, "1,60"), (-0.25, 1, "de", True, "-0,2"),
     (0.25, 2, "en", True, "+0.25"), (3.0, 0, "de", False, "3"),
+    (-0.3, 0, "en", False, "0"), (-0.001, 2, "de", True, "0,00"), (-0.6, 0, "en", False, "-1"),
 ])
 def test_numbers_are_written_as_the_language_writes_them(value, places, language, sign, text):
     assert sdk_view.decimal(value, places, language, sign) == text

@@ -31,7 +31,7 @@ class OutputPrinted:
 
 @dataclass(frozen=True)
 class VariablesChanged:
-    """The program's variables (Blockly names) and their values, as ``repr`` texts."""
+    """The program's variables (Blockly names) and their values, as people read them (``value_text``)."""
 
     values: dict = field(default_factory=dict)
 

@@ -8,7 +8,6 @@ so a stop also ends a long drive or a dialog.
 import builtins
 import io
 import logging
-import reprlib
 import tokenize
 import traceback
 
@@ -23,15 +22,11 @@ from rockly_desktop.executor.events import (
     VariablesChanged,
 )
 from rockly_desktop.executor.problems import explain, text
+from rockly_desktop.executor.value_text import value_text
 
 log = logging.getLogger(__name__)
 PROGRAM_FILENAME = "<rockly program>"
 
-# Values are shown while the program runs: long lists and texts are shortened.
-_SHORT = reprlib.Repr()
-_SHORT.maxlist = _SHORT.maxtuple = _SHORT.maxset = _SHORT.maxdict = 20
-_SHORT.maxstring = _SHORT.maxother = 200
-_SHORT.maxlevel = 3
 
 
 class BlockHooks:
@@ -109,11 +104,11 @@ class ProgramRunner:
             self._emit(OutputPrinted(line))
 
     def variables_snapshot(self) -> dict:
-        """The program's variables now: Blockly name -> repr of the value (unset ones: None)."""
+        """The program's variables now: Blockly name -> the value as people read it (``value_text``)."""
         values = {}
         for display, python_name in self._variable_names.items():
             try:
-                values[display] = _SHORT.repr(self.globals.get(python_name))
+                values[display] = value_text(self.globals.get(python_name), self.language)
             except Exception as error:
                 values[display] = f"<{type(error).__name__}>"
         return values

@@ -53,7 +53,8 @@ MANIFEST_FIELDS = (
     FieldSpec("safe_stop", "safe_stop", False,
               "What 'stop' means for this robot: a list of {publish: ...}, {cancel_goals: ACTION}."),
     FieldSpec("state", "state", False,
-              "Live state panels: [{panel: TITLE, rows: [{label, topic, field, format?, transform?}]}]."),
+              "Live state panels: [{panel: TITLE, rows: [{label, topic, field, format?, transform?, values?, "
+              "nothing?}]}]."),
     FieldSpec("legacy_fields", "legacy_fields", False,
               "Old field names of saved programs: {block_type: {old_field: {field: new, values: {old: new}}}}."),
     FieldSpec("velocity_topics", "velocity_topics", False,
@@ -107,7 +108,7 @@ def _check_safe_stop(value):
     return None
 
 
-STATE_TRANSFORMS = ("yaw_degrees", "percent", "goal_state")
+STATE_TRANSFORMS = ("yaw_degrees", "degrees", "percent", "goal_state", "nearest_ahead")
 
 
 def _check_state(value):
@@ -124,6 +125,11 @@ def _check_state(value):
                 return f"{where} needs a 'topic' and a 'field' (e.g. pose.pose.position.x)"
             if row.get("transform", "yaw_degrees") not in STATE_TRANSFORMS:
                 return f"{where}: unknown transform '{row['transform']}' (use {', '.join(STATE_TRANSFORMS)})"
+            values = row.get("values", {})
+            if not isinstance(values, dict) or any(_check_text(text) for text in values.values()):
+                return f"{where}: 'values' must name the robot's values for people ({{value: text}})"
+            if "nothing" in row and _check_text(row["nothing"]):
+                return f"{where}: 'nothing' must be a text"
     return None
 
 

@@ -1,7 +1,7 @@
 """The connection dialog: how to reach a robot over a kind of robot link (for ROS 1: which ROS
 master, and this computer's address for the robot). Its fields are the link's connection
 settings in the robot-link registry (``robot/links.py``)."""
-from PySide6.QtWidgets import QComboBox, QDialog, QDialogButtonBox, QFormLayout, QLabel, QLineEdit
+from PySide6.QtWidgets import QComboBox, QDialog, QDialogButtonBox, QFormLayout, QLabel, QLayout, QLineEdit
 
 from rockly_desktop.ui.texts import tr
 
@@ -36,6 +36,7 @@ class ConnectionDialog(QDialog):
         buttons.accepted.connect(self.accept)
         buttons.rejected.connect(self.reject)
         layout.addRow(buttons)
+        layout.setSizeConstraint(QLayout.SizeConstraint.SetFixedSize)  # no empty band or resize grip under the buttons
 
     def _text(self, setting, value: str, language: str) -> QLineEdit:
         edit = QLineEdit(value, self)

@@ -97,6 +97,7 @@ class MainWindow(QMainWindow):
         self.files.sig_status.connect(lambda text: self.statusBar().showMessage(text, 8000))
         self.files.sig_show_program.connect(self.show_program)
         self.files.sig_program_replaced.connect(self.robots.reset_if_wanted)
+        self.files.sig_program_replaced.connect(self.variables.clear)
         self.autosave = Autosave(self.document, self.editor, RecoverySession(), lambda: self.language, self)
         self.autosave.sig_failed.connect(lambda text: self.statusBar().showMessage(text, 8000))
         self.runs.sig_state_changed.connect(lambda state: state == "starting" and self.autosave.flush())

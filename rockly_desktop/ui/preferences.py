@@ -6,6 +6,7 @@ from PySide6.QtWidgets import (
     QDialog,
     QDialogButtonBox,
     QFormLayout,
+    QLayout,
     QTabWidget,
     QVBoxLayout,
     QWidget,
@@ -49,6 +50,9 @@ class PreferencesDialog(QDialog):
         outer = QVBoxLayout(self)
         outer.addWidget(self.tabs)
         outer.addWidget(buttons)
+        # as big as its content, no bigger: no empty band or resize grip under the buttons; it grows when
+        # the Teacher tab shows its settings
+        outer.setSizeConstraint(QLayout.SizeConstraint.SetFixedSize)
 
     @property
     def language(self) -> str:

@@ -108,7 +108,7 @@ class ProgramFiles(QObject):
         self._write(path, then)
 
     def export_python(self, path=None, then=None):
-        """Write the generated Python to a ``.py`` file."""
+        """Write the generated Python to a ``.py`` file (a name without a suffix gets ``.py``)."""
         language = self.settings.language
         if path is None:
             stem = Path(self.document.path).stem if self.document.path else tr("untitled", language)
@@ -118,6 +118,8 @@ class ProgramFiles(QObject):
             if not path:
                 _report(then, False)
                 return
+        if not Path(path).suffix:
+            path += ".py"
         source = self.document.path and Path(self.document.path).name
 
         def write(state):

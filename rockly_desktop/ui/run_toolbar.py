@@ -1,5 +1,5 @@
-"""The run toolbar: Run, Pause, Step, Continue, a big red STOP, slow motion and the robot (every
-kind of robot link in the registry, ``robot/links.py``)."""
+"""The run toolbar: Run, Pause, Step, Continue, a big red STOP, slow motion and where the program runs
+(every kind of robot link in the registry, ``robot/links.py``)."""
 from PySide6.QtCore import Qt, Signal
 from PySide6.QtGui import QAction, QKeySequence
 from PySide6.QtWidgets import QComboBox, QLabel, QSlider, QStyle, QToolBar
@@ -51,8 +51,10 @@ class RunToolbar(QToolBar):
         self.addWidget(self.speed)
         self.addWidget(QLabel(f" {tr('fast', language)}  ", self))
         self.addSeparator()
-        self.addWidget(QLabel(f" {tr('backend', language)} ", self))
+        # "Run on", not "Robot": the Robot menu chooses which robot, this box where the program runs
+        self.addWidget(QLabel(f" {tr('run_on', language)} ", self))
         self.backend = QComboBox(self)
+        self.backend.setToolTip(tr("run_on_tip", language))
         for entry in link_kinds():
             self.backend.addItem(tr(entry.name, language), entry.kind)
         self.addWidget(self.backend)

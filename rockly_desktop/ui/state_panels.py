@@ -1,21 +1,25 @@
 """The robot's live state panels, as the profile's manifest declares them (``state:``).
 
 Each panel is a group of rows "label: value"; a row reads one field of one topic from
-the StateStore, optionally transformed (heading from a quaternion, percent, the state of
-an action goal) and formatted: numbers with the decimal point and digit grouping of the
-window's language (1,60 m in German), the rest of the format as written. Texts such as
-"Idle" are the robot's own values and are shown as they come. The widget redraws from
-the store on a timer, never from a robot thread.
+the StateStore, optionally transformed (heading from a quaternion, radians to degrees,
+percent, the state of an action goal, the nearest laser reading ahead as the SDK defines
+"ahead") and formatted: numbers with the decimal point and digit grouping of the window's
+language (1,60 m in German; a zero never has a minus), the rest of the format as written.
+A row's ``values`` name the robot's own values for people ("center_center" is "straight
+ahead"); a value it does not name is shown as it comes, and ``nothing`` is what a reading
+of nothing (an endless distance) says. The widget redraws from the store on a timer, never
+from a robot thread.
 """
 import functools
 import math
 import string
 
-from PySide6.QtCore import QLocale, QTimer
+from PySide6.QtCore import QLocale, Qt, QTimer
 from PySide6.QtWidgets import QFormLayout, QGroupBox, QLabel, QScrollArea, QVBoxLayout, QWidget
 
 from rockly_desktop.core.state_store import field_value
 from rockly_desktop.profiles.i18n import localize
+from rockly_desktop.robot.laser import nearest_in_scan
 from rockly_desktop.ui.texts import tr
 
 REFRESH_MS = 100
@@ -41,6 +45,8 @@ class LocalizedNumbers(string.Formatter):
         """``string.Formatter`` override: a number's text with this language's separators."""
         text = super().format_field(value, format_spec)
         if isinstance(value, (int, float)) and not isinstance(value, bool):
+            if text.startswith("-") and not text.strip("-0.,"):
+                text = text[1:]     # -0.2 rounded to "-0" is 0
             return text.translate(self._separators)
         return text
 
@@ -64,10 +70,18 @@ def row_text(store, row: dict, language: str) -> str:
     try:
         if transform == "yaw_degrees":
             value = _yaw_degrees(value)
+        elif transform == "degrees":
+            value = math.degrees(value)
         elif transform == "percent":
             value = value * 100
         elif transform == "goal_state":
             return tr(GOAL_STATES.get(value, "goal_lost"), language)
+        elif transform == "nearest_ahead":
+            value = nearest_in_scan(message)
+        if isinstance(value, float) and math.isinf(value) and "nothing" in row:
+            return localize(row["nothing"], language)
+        if isinstance(value, str) and value in row.get("values", {}):
+            return localize(row["values"][value], language)
         return number_format(language).format(row.get("format", "{}"), value)
     except (TypeError, ValueError, AttributeError, IndexError, KeyError):
         return str(value)
@@ -79,6 +93,7 @@ class StatePanels(QScrollArea):
     def __init__(self, panels: list, language: str, parent=None):
         super().__init__(parent)
         self.setWidgetResizable(True)
+        self.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         self.store = None
         self._language = language
         self._rows = []
@@ -90,6 +105,7 @@ class StatePanels(QScrollArea):
             for row in panel["rows"]:
                 value = QLabel(NO_VALUE, box)
                 value.setObjectName(f"state:{row['topic']}:{row['field']}")
+                value.setWordWrap(True)     # a long value (a question) wraps, never cut off
                 form.addRow(localize(row["label"], language), value)
                 self._rows.append((row, value))
             layout.addWidget(box)

@@ -130,7 +130,6 @@ _TEXTS = {
     "slow": ("slow", "langsam"),
     "fast": ("fast", "schnell"),
     "speed_tip": ("Slow motion: wait at every block", "Zeitlupe: bei jedem Block warten"),
-    "backend": ("Robot:", "Roboter:"),
     "backend_simulator": ("Simulator (built in)", "Simulator (eingebaut)"),
     "backend_ros1": ("Real robot (ROS 1)…", "Echter Roboter (ROS 1)…"),
     "connect_title": ("Connect to {robot} over ROS", "Über ROS mit {robot} verbinden"),
@@ -312,6 +311,9 @@ _TEXTS = {
     "shortcut_command": ("Command", "Befehl"),
     "shortcut_keys": ("Keys", "Tasten"),
     "no_shortcut": ("none", "keins"),
+    "run_on": ("Run on:", "Ausführen auf:"),
+    "run_on_tip": ("Where the program runs: on the simulator built into Rockly or on the real robot",
+                   "Wo das Programm läuft: im eingebauten Simulator oder auf dem echten Roboter"),
 }
 
 

@@ -26,6 +26,10 @@ class VariablesDock(QDockWidget):
             self.table.setItem(row, 0, QTableWidgetItem(name))
             self.table.setItem(row, 1, QTableWidgetItem(values[name]))
 
+    def clear(self):
+        """Show no variables (another program is on screen: the last run's values are not its own)."""
+        self.show_values({})
+
     def values(self) -> dict:
         """What the table shows now."""
         return dict(self._shown or {})

@@ -194,7 +194,7 @@ def test_a_failing_safe_stop_is_reported_but_the_run_still_ends():
 def test_variables_show_their_blockly_names():
     runner, recorder = run_to_end("my_name = 'Ada'\nscore = [1, 2]\n",
                                   variables={"my name": "my_name", "score": "score", "unset": "unset"})
-    assert recorder.of(VariablesChanged)[-1].values == {"my name": "'Ada'", "score": "[1, 2]", "unset": "None"}
+    assert recorder.of(VariablesChanged)[-1].values == {"my name": "“Ada”", "score": "[1, 2]", "unset": "–"}
 
 
 def test_pause_inside_a_long_wait_holds_its_clock_until_continue(monkeypatch):

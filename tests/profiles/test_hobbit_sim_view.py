@@ -175,7 +175,7 @@ def test_arm_pose_gripper_turntable_head_and_trail_change_the_picture(make_view)
 
 def test_arm_interpolates_between_poses(make_view):
     view = make_view(x=1.0, arm="home")
-    rect = view.map_rect()
+    rect = view.map_rect().adjusted(0, 0, -2, 0)   # the details card's edge (its height follows its words)
     home = grab(view, rect)
     view.set_snapshot(snapshot(x=1.0, arm="floor"))
     floor = grab(view, rect)
@@ -300,3 +300,45 @@ def test_far_jumps_and_disabled_animation_are_drawn_at_once(qtbot):
     assert view.displayed_pose()[0] == 4.5
     view.set_snapshot(snapshot(x=3.9, theta=-2.0))
     assert view.displayed_pose() == (3.9, 0.0, -2.0)
+
+
+# --- words for people, never cut off -------------------------------------------------------------
+
+def _joined(lines):
+    return " ".join(line.strip() for line in lines)
+
+
+def test_details_name_places_and_directions_in_german_and_never_cut_them(make_view):
+    view = make_view(640, 560, language="de", head="center_center", arm="home", arm_target="table",
+                     arm_progress=0.5, turntable="stored")
+    details = dict((label, _joined(values)) for label, values in view.panel_texts()["details"])
+    assert details == {"Arm": "eingeklappt → bereit für den Tisch", "Greifer": "zu", "Kopf": "geradeaus",
+                       "Drehteller": "eingefahren"}
+    view.set_snapshot(snapshot(head="littledown_center", arm="candle"))
+    details = dict((label, _joined(values)) for label, values in view.panel_texts()["details"])
+    assert (details["Kopf"], details["Arm"]) == ("etwas nach unten", "gerade nach oben")
+    view.language = "en"
+    details = dict((label, _joined(values)) for label, values in view.panel_texts()["details"])
+    assert (details["Head"], details["Arm"]) == ("a little down", "straight up")
+
+
+def test_an_unknown_head_position_is_shown_as_it_comes(make_view):
+    view = make_view(640, 560, head="somewhere_new")
+    assert ("Head", ["somewhere_new"]) in view.panel_texts()["details"]
+
+
+def test_a_question_is_shown_whole_even_when_the_tablet_is_small(make_view):
+    question = "What is your favourite colour when you think of summer?"
+    view = make_view(460, 289, tablet={"kind": "D_YES_NO", "text": question})
+    lines = view.panel_texts()["tablet"]
+    assert _joined(lines).startswith(question) and "…" not in _joined(lines)
+
+
+def test_a_waiting_tablet_says_where_to_answer(make_view):
+    view = make_view(640, 480, language="de", tablet={"kind": "D_YES_NO", "text": "Soll ich kommen?"})
+    assert "".join(view.panel_texts()["tablet"]) == "Soll ich kommen?Antworte im Tablet-Fenster"
+
+
+def test_notices_are_shown_whole_in_two_lines(make_view):
+    view = make_view(460, 289, language="de", notices=["Etwas ist schiefgegangen"])
+    assert [_joined(lines) for lines in view.panel_texts()["notices"]] == ["Etwas ist schiefgegangen"]

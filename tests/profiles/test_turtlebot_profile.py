@@ -70,7 +70,8 @@ def test_state_panels_show_pose_speed_nearest_obstacle_and_battery():
     assert rows[("Position", "Heading")]["transform"] == "yaw_degrees"
     assert rows[("Speed", "Driving")]["field"] == "twist.twist.linear.x"
     ahead = rows[("Laser", "Nearest obstacle ahead")]
-    assert (ahead["topic"], ahead["field"], ahead["format"]) == ("/scan", "ranges[0]", "{:.2f} m")
+    assert (ahead["topic"], ahead["field"], ahead["transform"]) == ("/scan", "ranges", "nearest_ahead")
+    assert rows[("Speed", "Turning")]["transform"] == "degrees"
     assert rows[("Battery", "Charge")]["transform"] == "percent"
     for panel in PROFILE.manifest["state"]:
         assert is_localized(panel["panel"]) and set(panel["panel"]) == {"en", "de"}

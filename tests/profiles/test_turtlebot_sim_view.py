@@ -185,3 +185,33 @@ def test_size_hints():
     view = TurtleBotSimView()
     assert view.minimumSizeHint().width() <= 320 and view.minimumSizeHint().height() <= 240
     assert view.sizeHint().width() >= 320
+
+
+def test_ahead_is_one_sector_in_the_commands_the_view_and_the_robot_state_panel(qtbot, make_view):
+    from rockly_desktop.core.state_store import StateStore
+    from rockly_desktop.ui.state_panels import StatePanels
+
+    world = SimWorld()
+    sim = SimTurtleBot(world, speed=20)
+    sim.start()
+    robot = TurtleBot(SimBackend(world, Interrupt()))
+    robot.drive(1.2)
+    robot.turn(20, "left")      # a box's corner to the right of the beam straight ahead
+    sim.shutdown()              # one moment: the snapshot and the last scan agree
+    snapshot, scan = sim.snapshot(), world.latest("/scan")
+    assert snapshot["scan"] == scan["ranges"]
+    store = StateStore()
+    store.record("/scan", "sensor_msgs/LaserScan", scan)
+    panels = StatePanels(PROFILE.state_panels, "en")
+    qtbot.addWidget(panels)
+    panels.set_store(store)
+    ahead = robot.distance("ahead")
+    assert math.isfinite(ahead) and ahead < scan["ranges"][0]   # the sector sees what one beam misses
+    assert panels.values()["Nearest obstacle ahead"] == f"{ahead:.2f} m"
+    assert make_view(snapshot).panel_texts()["ahead"] == f"ahead {ahead:.2f} m"
+
+
+def test_turning_is_in_degrees_per_second(make_view):
+    view = make_view({"angular": 0.5}, language="de")
+    assert view.panel_texts()["turning"] == "+29 °/s"
+    assert view.panel_texts()["driving"] == "0,00 m/s"

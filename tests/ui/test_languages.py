@@ -8,7 +8,7 @@ from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.robot.links import link_kind
 from rockly_desktop.robot.ros1.connection import RosUnavailable
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
-from rockly_desktop.ui.message_boxes import plain_message_box
+from rockly_desktop.ui.message_boxes import plain_message_box, title_width
 from rockly_desktop.ui.qt_language import translations_folder, use_language
 from rockly_desktop.ui.state_panels import StatePanels, number_format
 from rockly_desktop.ui.texts import robot_problem
@@ -95,6 +95,7 @@ def test_a_run_error_is_explained_in_german_naming_the_variable(qtbot, german_wi
     boxes = [box for box in window.findChildren(QMessageBox) if box.objectName() == "run_error_box" and box.isVisible()]
     assert boxes and boxes[0].text() == expected
     assert boxes[0].windowTitle() == "Etwas ist schiefgegangen"
+    assert boxes[0].width() >= title_width("Etwas ist schiefgegangen", boxes[0].font())   # the whole title shows
     assert "Details einblenden..." in button_texts(boxes[0])
     assert "TypeError: can only concatenate str" in boxes[0].detailedText()  # the Python, for the adults
     assert window.console.lines()[-1] == expected
@@ -158,8 +159,8 @@ def test_state_panels_write_numbers_the_german_way(qtbot, hobbit):
     panels.refresh()
     values = panels.values()
     assert (values["Position x"], values["Position y"], values["Richtung"]) == ("1,60 m", "-0,50 m", "90°")
-    assert (values["Tempo"], values["Drehen"], values["Ladung"]) == ("0,30 m/s", "0,25 rad/s", "42 %")
-    assert (values["Bewegung"], values["Blick"]) == ("Idle", "center_center")  # the robot's own values, as they come
+    assert (values["Tempo"], values["Drehen"], values["Ladung"]) == ("0,30 m/s", "14 °/s", "42 %")
+    assert (values["Bewegung"], values["Blick"]) == ("steht", "geradeaus")  # the robot's values, named for people
 
 
 def test_numbers_follow_the_language_and_the_rest_of_a_format_stays():

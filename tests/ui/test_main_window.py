@@ -4,7 +4,7 @@ import shutil
 from page_tools import toolbox_names
 from program_builder import block, number, rockly_document
 from PySide6.QtCore import QCoreApplication
-from PySide6.QtWidgets import QMessageBox
+from PySide6.QtWidgets import QLabel, QMessageBox
 from window_tools import WindowDriver, error_boxes, state
 
 from rockly_desktop.ui.preferences import PreferencesDialog
@@ -21,6 +21,20 @@ def test_window_shows_hobbit_toolbox_code_dock_and_robot(qtbot, window):
     assert window.code_dock.isVisible() and window.code_dock.windowTitle() == "Python code"
     assert window.profile_label.text() == "Robot: HOBBIT"
     assert menu_titles(window) == ["&File", "&Edit", "&Robot", "&View", "&Settings", "&Help"]
+
+
+def toolbar_labels(window) -> list:
+    return [label.text().strip() for label in window.run_toolbar.findChildren(QLabel)]
+
+
+def test_the_robot_menu_and_the_run_on_box_have_distinct_names_in_both_languages(qtbot, window):
+    for language, menu, box in (("en", "&Robot", "Run on:"), ("de", "&Roboter", "Ausführen auf:")):
+        if language == "de":
+            with qtbot.waitSignal(window.editor.sig_ready, timeout=30000):
+                window.set_language("de")
+        assert menu in menu_titles(window) and box in toolbar_labels(window)
+        assert not any(label.startswith(menu.strip("&")) for label in toolbar_labels(window))
+        assert window.run_toolbar.backend.toolTip()
 
 
 def test_switching_to_german_translates_window_and_blocks_and_keeps_the_program(qtbot, window, tmp_path):

@@ -108,8 +108,8 @@ def test_state_panels_and_topic_monitor_show_the_ros_robot(qtbot, ros_window):
         ros_window.runs.run()
     assert blocker.args[0].outcome == "finished"
     panels = ros_window.state_dock.widget()
-    qtbot.waitUntil(lambda: panels.values()["Emotion"] == "WONDERING" and panels.values()["Looking"] == "up_right"
-                    and panels.values()["Last command"] == "MoveToTray" and panels.values()["Command state"] == "done",
+    qtbot.waitUntil(lambda: panels.values()["Emotion"] == "wondering" and panels.values()["Looking"] == "up right"
+                    and panels.values()["Last command"] == "to the tray" and panels.values()["Command state"] == "done",
                     timeout=5000)
     assert panels.values()["Charge"].endswith("%") and panels.values()["Position x"].endswith(" m")
     monitor = ros_window.monitor_dock.widget()

@@ -57,13 +57,27 @@ def test_run_moves_the_simulated_robot_and_reports_the_end(qtbot, window):
     assert window.run_toolbar.run_action.isEnabled() and not window.run_toolbar.stop_action.isEnabled()
 
 
+def test_variables_read_as_people_write_them_and_go_with_their_program(qtbot, window):
+    load(qtbot, window, stack(
+        block("variables_set", {"VAR": {"id": "name"}}, {"VALUE": text("Mia")}),
+        block("variables_set", {"VAR": {"id": "things"}},
+              {"VALUE": block("lists_create_with", inputs={"ADD0": number(1), "ADD1": text("cup")},
+                              extraState={"itemCount": 2})})), variables=["name", "things"])
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=20000):
+        window.runs.run()
+    qtbot.waitUntil(lambda: window.variables.values().get("name") == "“Mia”", timeout=5000)
+    assert window.variables.values()["things"] == "[1, “cup”]"
+    window.files.new(ask=False)
+    assert window.variables.values() == {} and window.variables.table.rowCount() == 0
+
+
 def test_stepping_highlights_each_block_exactly_and_shows_variables(qtbot, window):
     load(qtbot, window, stack(block("variables_set", {"VAR": {"id": "score"}}, {"VALUE": number(7)}, id="set"),
                               block("hobbit_emo", {"emotion": "SAD"}, id="emo")), variables=["score"])
     window.runs.step()
     qtbot.waitUntil(lambda: window.runs.state == "paused", timeout=10000)
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["set"], timeout=5000)
-    assert window.variables.values() == {"score": "None"}
+    assert window.variables.values() == {"score": "–"}
     window.runs.step()
     qtbot.waitUntil(lambda: window.runs.state == "paused" and highlighted(qtbot, window) == ["emo"], timeout=10000)
     assert window.variables.values() == {"score": "7"}

@@ -24,7 +24,7 @@ drives the same distances.
 import math
 import time
 
-from rockly_desktop.sdk import RobotCommandError, RobotCommands, RobotTimeout
+from rockly_desktop.sdk import RobotCommandError, RobotCommands, RobotTimeout, nearest_in_scan
 
 from .arena import bumped
 
@@ -42,7 +42,6 @@ DISTANCE_TOLERANCE = 0.003     # m: a drive is done this close to its target
 ANGLE_TOLERANCE = math.radians(0.5)
 TIME_TOLERANCE = 1e-3          # s of robot time, for drive_for()
 CORRECTIONS = 10               # at most this many corrections after a motion's stop
-SECTOR = math.radians(15)      # distance() looks this far to each side of its direction
 SENSOR_TIMEOUT = 3.0           # s without odometry or a scan: the robot is not answering
 SETTLE_TIMEOUT = 2.0           # s for the robot to stand still after a stop
 STALL_SECONDS = 1.0            # s of robot time without progress while driving: something blocks it
@@ -184,21 +183,9 @@ class TurtleBot(RobotCommands):
         centre = self.choose(direction, SIDES, "direction")
         scan = self._latest(SCAN, LASER_SCAN)
         try:
-            angle_min, step = float(scan["angle_min"]), float(scan["angle_increment"])
-            near, far = float(scan["range_min"]), float(scan["range_max"])
-            ranges = scan["ranges"]
+            return nearest_in_scan(scan, centre)
         except (KeyError, TypeError, ValueError):
             raise RobotCommandError(f"the messages on '{SCAN}' are not laser scans") from None
-        nearest = math.inf
-        for index, value in enumerate(ranges):
-            if abs(_wrap(angle_min + index * step - centre)) > SECTOR + 1e-6:
-                continue
-            if value == -math.inf:          # REP 117: something closer than the laser can measure
-                value = near
-            elif not near <= value <= far:  # nothing there (inf), or not a valid reading (0, nan)
-                continue
-            nearest = min(nearest, float(value))
-        return nearest
 
     def obstacle_closer_than(self, metres, direction="ahead") -> bool:
         """True when the laser sees something closer than ``metres`` in that direction (see ``distance``)."""

@@ -16,7 +16,8 @@ x -1..5 and y -2.5..2.5; the visible area grows when the robot or its goal leave
 
 Modules: widget (the QWidget), snapshot (defaults, tolerant reading), animation (easing),
 geometry (metres), layout (pixels), scene (one paint's inputs), map_painter, room, furniture,
-robot, panel, eyes, tablet, texts, palette, drawing (its own painting helpers).
+robot, panel (with details and notices), eyes, tablet, texts, palette, drawing (its own painting
+helpers).
 """
 from .palette import BASE_COLOR, BUMPER, PANEL_BG, SOS
 from .snapshot import DEFAULT_SNAPSHOT, EMOTIONS

@@ -1,10 +1,10 @@
-"""HOBBIT's own painting helpers, shared by the map and the panel: arcs and wedges, rounded clips, buttons, a star.
+"""HOBBIT's own painting helpers, shared by the map and the panel: arcs and wedges, rounded clips, a star.
 
 (Pens, colours with alpha, cards and chips come from the SDK: ``rockly_desktop.sdk_view``.)"""
 import math
 
 from PySide6.QtCore import QPointF, Qt
-from PySide6.QtGui import QColor, QPainterPath, QPolygonF
+from PySide6.QtGui import QPainterPath, QPolygonF
 
 
 def arc(cx, cy, r, start_deg, end_deg, steps=24, y_down=True):
@@ -28,18 +28,6 @@ def rounded(rect, radius):
     path = QPainterPath()
     path.addRoundedRect(rect, radius, radius)
     return path
-
-
-def button(p, rect, colour, label, fm):
-    """A round button in ``colour`` with a white ``label`` (in the painter's current font, measured by ``fm``)."""
-    radius = rect.height() / 2
-    p.setPen(Qt.PenStyle.NoPen)
-    p.setBrush(colour.darker(125))
-    p.drawRoundedRect(rect.translated(0, 2), radius, radius)
-    p.setBrush(colour)
-    p.drawRoundedRect(rect, radius, radius)
-    p.setPen(QColor("#FFFFFF"))
-    p.drawText(rect, Qt.AlignmentFlag.AlignCenter, fm.elidedText(label, Qt.TextElideMode.ElideRight, rect.width() - 6))
 
 
 def star(p, center, radius, colour):

@@ -5,6 +5,8 @@ All in widget pixels. ``u`` is the size unit: 1 at 640 x 480, so paddings, fonts
 from PySide6.QtCore import QRectF
 from PySide6.QtGui import QFontMetricsF, QTransform
 
+from .details import details_height
+from .notices import notice_height
 from .tablet import tablet_height
 
 
@@ -70,22 +72,32 @@ def panel_sections(layout, scene):
     sections["label"] = QRectF(card.left(), face.bottom() + card_pad * 0.4, card.width(), label_h)
     # tablet first (it may be a question someone must answer), notices below it, newest first
     notices = scene.notices[-3:][::-1]
-    small = QFontMetricsF(scene.font(12 * u))
-    chip_h = small.height() + max(6.0, 8.0 * u)
+    heights = [notice_height(scene, text, rest.width(), u, index == 0) for index, text in enumerate(notices)]
     tablet_h = min(rest.height(), tablet_height(scene, rest.width(), u))
-    room_for_notices = rest.height() - tablet_h - (pad if tablet_h > 0 else 0)
-    n = min(len(notices), int((room_for_notices + pad * 0.5) // (chip_h + pad * 0.5))) if notices else 0
+    n = _fitting(heights, rest.height() - tablet_h - (pad if tablet_h > 0 else 0), pad)
     if notices and n == 0 and tablet_h > 0 and scene.snapshot.get("tablet") is None:
         # a tablet that is off gives way to the notices
-        tablet_h, n = 0.0, min(len(notices), int((rest.height() + pad * 0.5) // (chip_h + pad * 0.5)))
+        tablet_h, n = 0.0, _fitting(heights, rest.height(), pad)
     sections["tablet"] = QRectF(rest.left(), rest.top(), rest.width(), tablet_h) if tablet_h > 0 else None
     top = rest.top() + (tablet_h + pad if tablet_h > 0 else 0)
-    sections["notices"] = [(QRectF(rest.left(), top + i * (chip_h + pad * 0.5), rest.width(), chip_h), notices[i])
-                           for i in range(n)]
+    sections["notices"] = []
+    for text, height in zip(notices[:n], heights[:n], strict=True):
+        sections["notices"].append((QRectF(rest.left(), top, rest.width(), height), text))
+        top += height + pad * 0.5
     # what the arm, gripper, head and turntable are doing, at the bottom when there is room
-    top += n * (chip_h + pad * 0.5)
-    details_h = 4 * small.lineSpacing() + 2 * max(5.0, 7.0 * u) + 4
+    details_h = details_height(scene, rest.width(), u)
     sections["details"] = None
     if layout.vertical and rest.bottom() - top >= details_h + pad:
         sections["details"] = QRectF(rest.left(), rest.bottom() - details_h, rest.width(), details_h)
     return sections
+
+
+def _fitting(heights, room, pad):
+    """How many of the chips ``heights`` (in order, ``pad`` / 2 apart) fit in ``room`` pixels."""
+    count, used = 0, 0.0
+    for height in heights:
+        used += height + (pad * 0.5 if count else 0.0)
+        if used > room:
+            break
+        count += 1
+    return count

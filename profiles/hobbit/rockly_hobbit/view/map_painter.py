@@ -156,7 +156,7 @@ def _paint_chips(p, scene, rect, u):
     target = scene.target
     language = scene.language
     where = (f"x {decimal(target['x'], 2, language)}  y {decimal(target['y'], 2, language)} m  "
-             f"θ {math.degrees(wrap_pi(target['theta'])):.0f}°")
+             f"θ {decimal(math.degrees(wrap_pi(target['theta'])), 0, language)}°")
     where_w = fm_small.horizontalAdvance(where) + 2 * pad
     if box.right() + pad + where_w <= rect.right() - pad:
         _text_chip(p, QRectF(rect.right() - pad - where_w, rect.bottom() - pad - chip_h, where_w, chip_h), where, small)

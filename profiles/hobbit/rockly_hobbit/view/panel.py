@@ -1,4 +1,5 @@
-"""The side panel: the eyes card with the mood's name, battery and volume, the tablet, notices and the details card."""
+"""The side panel: the eyes card with the mood's name, battery and volume, the tablet, notices (``notices``)
+and the details card (``details``)."""
 import math
 
 from PySide6.QtCore import QPointF, QRectF, Qt
@@ -6,11 +7,13 @@ from PySide6.QtGui import QColor, QFontMetricsF, QPen, QPolygonF
 
 from rockly_desktop.sdk_view import card, round_pen, with_alpha
 
+from .details import paint_details
 from .drawing import arc
 from .eyes import paint_eyes
 from .layout import panel_sections
-from .palette import ARM, EMOTION_ACCENT, INK, INK_SOFT, SOS
-from .snapshot import is_sos, num
+from .notices import paint_notice
+from .palette import EMOTION_ACCENT, INK
+from .snapshot import num
 from .tablet import paint_tablet
 
 LEFT = Qt.AlignmentFlag.AlignVCenter | Qt.AlignmentFlag.AlignLeft
@@ -30,9 +33,9 @@ def paint_panel(p, layout, scene):
         paint_tablet(p, scene, sections["tablet"], layout)
         p.restore()
     for index, (rect, notice) in enumerate(sections["notices"]):
-        _paint_notice(p, scene, rect, notice, u, index == 0)
+        paint_notice(p, scene, rect, notice, u, index == 0)
     if sections["details"] is not None:
-        _paint_details(p, scene, sections["details"], u)
+        paint_details(p, scene, sections["details"], u)
 
 
 def _paint_mood(p, scene, label, accent, u):
@@ -123,82 +126,3 @@ def _paint_volume(p, rect, half, h, pad, u, volume, font):
     p.setFont(font)
     p.drawText(QRectF(left + h * 1.45 + pad * 0.4, rect.top(), half - h * 1.45 - pad, rect.height()), LEFT,
                f"{volume:.0f}%")
-
-
-def _paint_notice(p, scene, rect, text, u, newest):
-    """One notice as a chip: red with a "!" badge for an SOS, older ones faded."""
-    sos = is_sos(text)
-    radius = rect.height() * 0.35
-    font = scene.font(12 * u, bold=sos or newest)
-    fm = QFontMetricsF(font)
-    pad = max(5.0, 7.0 * u)
-    p.save()
-    if not newest and not sos:
-        p.setOpacity(0.78)
-    if sos:
-        p.setPen(Qt.PenStyle.NoPen)
-        p.setBrush(SOS)
-        p.drawRoundedRect(rect, radius, radius)
-        badge = rect.height() * 0.62
-        center = QPointF(rect.left() + pad + badge / 2, rect.center().y())
-        p.setBrush(QColor("#FFFFFF"))
-        p.drawEllipse(center, badge / 2, badge / 2)
-        p.setPen(round_pen(SOS, max(2.0, badge * 0.14)))
-        p.drawLine(QPointF(center.x(), center.y() - badge * 0.24), QPointF(center.x(), center.y() + badge * 0.05))
-        p.drawPoint(QPointF(center.x(), center.y() + badge * 0.24))
-        text_rect = rect.adjusted(pad * 1.6 + badge, 0, -pad, 0)
-        p.setPen(QColor("#FFFFFF"))
-    else:
-        card(p, rect, radius)
-        p.setPen(Qt.PenStyle.NoPen)
-        p.setBrush(QColor("#8C5CF0"))
-        p.drawRoundedRect(QRectF(rect.left() + pad * 0.6, rect.top() + rect.height() * 0.25, max(3.0, 4 * u),
-                                 rect.height() * 0.5), 2, 2)
-        text_rect = rect.adjusted(pad * 1.2 + max(3.0, 4 * u), 0, -pad, 0)
-        p.setPen(INK)
-    p.setFont(font)
-    p.drawText(text_rect, LEFT, fm.elidedText(text, Qt.TextElideMode.ElideRight, text_rect.width()))
-    p.restore()
-
-
-def _detail_rows(scene):
-    """(label, value, progress or None) for the arm, gripper, head and turntable."""
-    snap, texts = scene.snapshot, scene.texts
-    arm, target = str(snap.get("arm") or "home"), snap.get("arm_target")
-    progress = num(snap.get("arm_progress"), 0.0, 0.0, 1.0) if target else None
-    turntable = (f"{texts['out']} {num(snap.get('turntable_angle')):.0f}°" if snap.get("turntable") == "out"
-                 else texts["stored"])
-    return [(texts["arm"], f"{arm} → {target}" if target else arm, progress),
-            (texts["gripper"], texts["open"] if snap.get("gripper") == "open" else texts["closed"], None),
-            (texts["head"], str(snap.get("head") or "center_center"), None),
-            (texts["turntable"], turntable, None)]
-
-
-def _paint_details(p, scene, rect, u):
-    """A card listing what the arm, gripper, head and turntable do; a bar shows a moving arm's progress."""
-    card(p, rect, max(8.0, 10.0 * u))
-    font, bold = scene.font(12 * u), scene.font(12 * u, True)
-    fm, fm_bold = QFontMetricsF(font), QFontMetricsF(bold)
-    pad = max(5.0, 7.0 * u)
-    rows = _detail_rows(scene)
-    label_w = max(fm.horizontalAdvance(row[0]) for row in rows) + pad
-    y = rect.top() + pad
-    for label, value, progress in rows:
-        line = QRectF(rect.left() + pad, y, rect.width() - 2 * pad, fm.height())
-        p.setFont(font)
-        p.setPen(INK_SOFT)
-        p.drawText(line, LEFT, fm.elidedText(label, Qt.TextElideMode.ElideRight, line.width() * 0.45))
-        value_rect = line.adjusted(min(label_w, line.width() * 0.45), 0, 0, 0)
-        if progress is not None:
-            bar = QRectF(value_rect.left(), line.bottom() - 1, value_rect.width(), 3)
-            p.setPen(Qt.PenStyle.NoPen)
-            p.setBrush(QColor("#E3E6F3"))
-            p.drawRoundedRect(bar, 1.5, 1.5)
-            bar.setWidth(bar.width() * progress)
-            p.setBrush(ARM)
-            p.drawRoundedRect(bar, 1.5, 1.5)
-        p.setFont(bold)
-        p.setPen(INK)
-        p.drawText(value_rect, Qt.AlignmentFlag.AlignVCenter | Qt.AlignmentFlag.AlignRight,
-                   fm_bold.elidedText(value, Qt.TextElideMode.ElideRight, value_rect.width()))
-        y += fm.lineSpacing()

@@ -4,13 +4,16 @@ from PySide6.QtGui import QPainter
 from PySide6.QtWidgets import QWidget
 
 from .animation import AMBIENT_MS, FRAME_MS, TELEPORT_METRES, Easing
+from .details import detail_lines
 from .layout import layout_for, map_transform, panel_sections
 from .map_painter import paint_map
+from .notices import notice_lines
 from .palette import PANEL_BG
 from .panel import paint_panel
 from .room import RoomPixmap
 from .scene import Scene
 from .snapshot import DEFAULT_SNAPSHOT, merged, sos_active
+from .tablet import tablet_words
 from .texts import TEXTS
 
 
@@ -97,6 +100,24 @@ class HobbitSimView(QWidget):
     def map_to_widget(self, x, y):
         """Widget pixel position of the map point (x, y) metres, for the current size."""
         return map_transform(self._layout().map, self._easing.shown).map(QPointF(x, y))
+
+    def panel_texts(self):
+        """The panel's words as drawn now, whole lines (for tests and screen readers): ``tablet`` (the
+        question's lines and, when waiting, the caption), ``notices`` (each one's lines) and ``details``
+        ((label, value lines) per row; empty when the card has no room)."""
+        layout, scene = self._layout(), self._scene()
+        sections = panel_sections(layout, scene)
+        tablet = sections["tablet"]
+        notices = [notice_lines(scene, text, rect.width(), layout.u, index == 0)
+                   for index, (rect, text) in enumerate(sections["notices"])]
+        details = sections["details"]
+        return {
+            "tablet": tablet_words(scene, tablet.width(), tablet.height(), layout.u) if tablet is not None else [],
+            "notices": notices,
+            "details": [(label, [value for value in values if value])
+                        for label, values, _progress in detail_lines(scene, details.width(), layout.u)]
+            if details is not None else [],
+        }
 
     def sizeHint(self):
         return QSize(640, 480)

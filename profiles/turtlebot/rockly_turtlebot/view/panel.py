@@ -9,6 +9,7 @@ import math
 from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QFontMetricsF, QPen
 
+from rockly_desktop.sdk import AHEAD_HALF_WIDTH
 from rockly_desktop.sdk_view import card, decimal, sized_font, with_alpha
 
 from . import model
@@ -93,7 +94,7 @@ def _paint_laser(p, rect, snapshot, scan, texts, fonts):
         return
     top = _title(p, rect, texts["laser"], fonts)
     far = scan.far
-    ahead = scan.nearest()
+    ahead = scan.nearest_ahead()
     text_h = fonts.big_h
     size = max(0.0, min(rect.width(), rect.bottom() - top - text_h - 4))
     if size >= 30:
@@ -104,10 +105,26 @@ def _paint_laser(p, rect, snapshot, scan, texts, fonts):
         text_top = top
     p.setFont(fonts.big if ahead is not None else fonts.small)
     p.setPen(distance_colour(ahead).darker(140) if ahead is not None else INK_SOFT)
-    label = f"{texts['ahead']} {decimal(ahead, 2, texts['language'])} m" if ahead is not None else texts["nothing"]
+    label = ahead_label(scan, texts)
     text_rect = QRectF(rect.left(), text_top, rect.width(), text_h)
     p.drawText(text_rect, Qt.AlignmentFlag.AlignCenter,
                p.fontMetrics().elidedText(label, Qt.TextElideMode.ElideRight, int(rect.width())))
+
+
+def ahead_label(scan, texts):
+    """"ahead 1.21 m" (what the robot's commands and the Robot state panel call ahead), or "nothing in sight"."""
+    ahead = scan.nearest_ahead()
+    return f"{texts['ahead']} {decimal(ahead, 2, texts['language'])} m" if ahead is not None else texts["nothing"]
+
+
+def speed_rows(snapshot, texts):
+    """(label, value, fastest, text, colour) of driving (m/s) and turning (°/s, as people read it; the
+    robot's own unit is rad/s)."""
+    language = texts["language"]
+    linear, angular = model.num(snapshot.get("linear")), math.degrees(model.num(snapshot.get("angular")))
+    return ((texts["driving"], linear, MAX_LINEAR, f"{decimal(linear, 2, language, sign=True)} m/s", DRIVE),
+            (texts["turning"], angular, math.degrees(MAX_ANGULAR), f"{decimal(angular, 0, language, sign=True)} °/s",
+             TURN))
 
 
 def _radar_point(centre, radius, angle, distance, far):
@@ -127,7 +144,7 @@ def _paint_radar(p, centre, radius, scan, far):
     # the sector the robot calls "ahead"
     p.setPen(QPen(with_alpha(RADAR_RING, 0.6), 1.0))
     for side in (-1, 1):
-        p.drawLine(centre, _radar_point(centre, radius, math.radians(90 + side * 15), far, far))
+        p.drawLine(centre, _radar_point(centre, radius, math.pi / 2 + side * AHEAD_HALF_WIDTH, far, far))
     paint_radar_hits(p, scan, centre, radius, max(2.0, radius / 30))
     body = max(3.0, radius * math.sqrt(model.RADIUS / far))
     p.setPen(Qt.PenStyle.NoPen)
@@ -140,23 +157,22 @@ def _paint_radar(p, centre, radius, scan, far):
 
 
 def _paint_speed(p, rect, snapshot, texts, fonts, u):
-    """Two bars from the middle: how fast it drives (m/s) and turns (rad/s); left of the middle is backward/right."""
+    """Two bars from the middle: how fast it drives and turns (``speed_rows``); left of the middle is
+    backward/right."""
     if rect.height() < fonts.title_h:
         return
     top = _title(p, rect, texts["speed"], fonts)
-    rows = ((texts["driving"], model.num(snapshot.get("linear")), MAX_LINEAR, "m/s", DRIVE),
-            (texts["turning"], model.num(snapshot.get("angular")), MAX_ANGULAR, "rad/s", TURN))
+    rows = speed_rows(snapshot, texts)
     bar_h = max(4.0, 6.0 * u)
     row_h = fonts.small_h + bar_h + max(4.0, 8.0 * u)
     top += max(0.0, (rect.bottom() - top - 2 * row_h) / 2)      # the two rows centred in the card
     p.setFont(fonts.small)
     fm = p.fontMetrics()
-    for k, (label, value, top_speed, unit, colour) in enumerate(rows):
+    for k, (label, value, top_speed, number, colour) in enumerate(rows):
         y = top + k * row_h + 2
         if y + fonts.small_h + bar_h > rect.bottom() + 2:
             break
         text_rect = QRectF(rect.left(), y, rect.width(), fonts.small_h)
-        number = f"{decimal(value, 2, texts['language'], sign=True)} {unit}"
         p.setPen(INK)
         p.drawText(text_rect, Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter, number)
         room = rect.width() - fm.horizontalAdvance(number) - 6

@@ -11,6 +11,7 @@ import numpy
 from PySide6.QtCore import QLineF, QPointF, Qt
 from PySide6.QtGui import QPainter, QPolygonF
 
+from rockly_desktop.sdk import nearest_reading
 from rockly_desktop.sdk_view import cosmetic_pen, with_alpha
 
 from . import model
@@ -20,7 +21,6 @@ BUCKETS = 8         # hits are drawn in this many colour groups
 COLOUR_RANGE = 2.0  # metres from red to blue
 RAY_EVERY = 2       # a ray to every second hit ...
 RAY_RANGE = 1.0     # ... that is this close (metres)
-NEAREST_HALF_WIDTH = math.radians(15)  # the cone nearest() looks into by default
 
 
 def bucket_colour(bucket):
@@ -31,7 +31,8 @@ class Scan:
     """The hits of one snapshot's scan: beam index, distance, direction in the robot frame, colour group."""
 
     def __init__(self, snapshot):
-        ranges = numpy.array(model.scan(snapshot), dtype=float)
+        self.ranges = model.scan(snapshot)
+        ranges = numpy.array(self.ranges, dtype=float)
         near, far = model.limits(snapshot)
         self.x, self.y, self.theta = model.pose(snapshot)
         self.near, self.far = near, far
@@ -50,11 +51,13 @@ class Scan:
     def __len__(self):
         return int(self.index.size)
 
-    def nearest(self, centre=0.0, half_width=NEAREST_HALF_WIDTH):
-        """The nearest hit within ``half_width`` of the direction ``centre`` (radians, 0 = ahead), or None."""
-        offsets = numpy.abs(numpy.remainder(self.angle - centre + math.pi, 2 * math.pi) - math.pi)
-        inside = self.distance[offsets <= half_width + 1e-6]
-        return float(inside.min()) if inside.size else None
+    def nearest_ahead(self):
+        """The nearest hit ahead as the robot's commands and the Robot state panel see it (the SDK's
+        ``nearest_reading``), or None."""
+        if not self.ranges:
+            return None
+        nearest = nearest_reading(self.ranges, 0.0, 2 * math.pi / len(self.ranges), self.near, self.far)
+        return nearest if math.isfinite(nearest) else None
 
     def closest_angle(self):
         """The direction (robot frame) of the shortest reading, or None."""

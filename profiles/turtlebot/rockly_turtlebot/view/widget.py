@@ -10,7 +10,7 @@ from rockly_desktop.sdk_view import chip, decimal, sized_font
 from . import model
 from .layout import layout_for, map_transform
 from .palette import BUMP, INK, MAP_BORDER, PANEL_BG
-from .panel import paint_panel
+from .panel import ahead_label, paint_panel, speed_rows
 from .robot import paint_robot, paint_trail
 from .room import RoomPixmap
 from .scan import Scan, paint_scan
@@ -60,6 +60,12 @@ class TurtleBotSimView(QWidget):
     def map_to_widget(self, x, y):
         """Widget pixel position of the map point (x, y) metres, for the current size."""
         return map_transform(self._layout().map, model.room(self._snapshot)).map(QPointF(x, y))
+
+    def panel_texts(self):
+        """What the panel says now (for tests and screen readers): ``ahead``, ``driving``, ``turning``."""
+        texts = TEXTS[self._language]
+        driving, turning = speed_rows(self._snapshot, texts)
+        return {"ahead": ahead_label(self._scan, texts), "driving": driving[3], "turning": turning[3]}
 
     def sizeHint(self):
         return QSize(640, 480)
@@ -117,7 +123,8 @@ class TurtleBotSimView(QWidget):
         x, y, theta = model.pose(snapshot)
         language = self._language
         clock = f"t {decimal(model.num(snapshot.get('time')), 1, language)} s"
-        where = f"x {decimal(x, 2, language)}  y {decimal(y, 2, language)} m  θ {math.degrees(theta):.0f}°"
+        heading = decimal(math.degrees(theta), 0, language)
+        where = f"x {decimal(x, 2, language)}  y {decimal(y, 2, language)} m  θ {heading}°"
         for text, top in ((clock, rect.top() + margin), (where, rect.bottom() - margin - h)):
             width = fm.horizontalAdvance(text) + 2 * pad
             if width > rect.width() - 2 * margin:
