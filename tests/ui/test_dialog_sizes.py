@@ -5,6 +5,7 @@ from PySide6.QtCore import QSettings
 from PySide6.QtGui import QFontMetrics
 from PySide6.QtWidgets import QDialogButtonBox, QMessageBox, QWidget
 
+from rockly_desktop.robot.links import link_kind
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
 from rockly_desktop.ui.message_boxes import plain_message_box, title_width
 from rockly_desktop.ui.preferences import PreferencesDialog
@@ -29,7 +30,7 @@ def _ends_with_its_buttons(dialog):
 
 @pytest.mark.parametrize("language", ["en", "de"])
 def test_the_connect_dialog_is_as_big_as_its_content(qtbot, language):
-    dialog = _shown(qtbot, ConnectionDialog(language, "HOBBIT"))
+    dialog = _shown(qtbot, ConnectionDialog(language, "HOBBIT", link_kind("ros1")))
     assert dialog.minimumSize() == dialog.maximumSize() == dialog.size()
     assert _ends_with_its_buttons(dialog)
 
