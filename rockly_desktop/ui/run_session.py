@@ -46,6 +46,7 @@ class RunSession(QObject):
         self.control = None
         self.thread = None
         self.last_result = None
+        self.last_recording = None  # the path of the last run's recording
         self._delay = 0.0
         self._start_request = None  # the run waiting for the page's code; None when cancelled
         self._switch_interval = sys.getswitchinterval()
@@ -85,16 +86,22 @@ class RunSession(QObject):
             self._set_state("idle")
             return
         from rockly_desktop.executor.run_setup import make_runner  # loaded at the first run, not at start-up
+        from rockly_desktop.ui.run_recordings import open_run_recording
 
+        recording = None
         try:
             self.robots.reset_if_wanted()
             control = RunControl(run_code["breakpoints"], self._delay)
             robot = self.robots.robot()
             profile = self.document.profile
             limits = self.settings.teacher.limits(profile.id)  # kept by the backend, on any robot
-            thread = ProgramThread(lambda emit: make_runner(profile, robot, run_code, control, emit, language, limits),
-                                   self)
+            recording = open_run_recording(self.settings, self.document, self.editor.workspace, robot)
+            self.last_recording = recording.path if recording is not None else None
+            thread = ProgramThread(lambda emit: make_runner(profile, robot, run_code, control, emit, language, limits,
+                                                            recording), self)
         except (RocklyError, RuntimeError) as problem:
+            if recording is not None:
+                recording.close()
             self.console.append(" ".join(part for part in robot_problem(problem, language) if part), "error")
             self._set_state("idle")
             return
