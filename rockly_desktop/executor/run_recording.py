@@ -9,7 +9,7 @@ import datetime
 import logging
 
 from rockly_desktop import __version__
-from rockly_desktop.executor.events import OutputPrinted, RunFinished, RunPaused, RunResumed
+from rockly_desktop.executor.events import OutputPrinted, RunFinished, RunPaused, RunResumed, VariablesChanged
 from rockly_desktop.recording import channels
 from rockly_desktop.recording.recorder import Recorder
 
@@ -65,6 +65,8 @@ class RunRecording:
             self.recorder.note(channels.RUN, {"event": "pause", "block": event.block_id, "reason": event.reason})
         elif isinstance(event, RunResumed):
             self.recorder.note(channels.RUN, {"event": "resume"})
+        elif isinstance(event, VariablesChanged):  # exact at a pause and at the end (else sampled)
+            self.recorder.note(channels.VARIABLES, {"values": event.values})
         elif isinstance(event, OutputPrinted):
             self.recorder.note(channels.OUTPUT, {"text": event.text})
         elif isinstance(event, RunFinished):

@@ -31,15 +31,17 @@ class Entry:
 
 @dataclass
 class Recording:
-    """A recording as read: metadata, the ``.rockly`` program (bytes or None), Rockly's events in time
-    order, message counts per topic, channels as ``{topic: (message encoding, schema name,
-    schema encoding)}``, the first message's time (ns since the epoch) and whether the file was finished."""
+    """A recording as read: metadata, the ``.rockly`` program (bytes or None), Rockly's events in
+    time order, message counts per topic, the robot topics' message times (``topic_times``,
+    seconds), channels as ``{topic: (message encoding, schema name, schema encoding)}``, the
+    first event's time (ns since the epoch) and whether the file was finished."""
 
     path: str
     metadata: dict = field(default_factory=dict)
     program: bytes = None
     entries: list = field(default_factory=list)
     counts: dict = field(default_factory=dict)
+    topic_times: dict = field(default_factory=dict)
     channels: dict = field(default_factory=dict)
     start_ns: int = 0
     complete: bool = False
@@ -77,6 +79,8 @@ def read_recording(path) -> Recording:
                     recording.counts[topic] = recording.counts.get(topic, 0) + 1
                     if topic.startswith("/rockly/"):
                         rockly.append((record.log_time, topic, record.data))
+                    else:
+                        recording.topic_times.setdefault(topic, []).append(record.log_time)
                 elif isinstance(record, Metadata) and record.name == channels.METADATA:
                     recording.metadata = dict(record.metadata)
                 elif isinstance(record, Attachment) and record.name == channels.PROGRAM_ATTACHMENT:
@@ -95,4 +99,6 @@ def read_recording(path) -> Recording:
     recording.start_ns = rockly[0][0] if rockly else 0
     recording.entries = [Entry((stamp - recording.start_ns) / 1e9, topic, json.loads(data))
                          for stamp, topic, data in rockly]
+    recording.topic_times = {topic: sorted((stamp - recording.start_ns) / 1e9 for stamp in stamps)
+                             for topic, stamps in recording.topic_times.items()}
     return recording

@@ -21,7 +21,7 @@ log = logging.getLogger(__name__)
 
 TICK_SECONDS = 0.05
 FLUSH_SECONDS = 1.0
-SNAPSHOT_SECONDS = 0.1
+SNAPSHOT_SECONDS = 0.2
 BLOCKS_PER_TICK = 100
 QUEUE_SIZE = 20_000
 
@@ -172,8 +172,9 @@ class Recorder:
         if self._snapshot is not None and (final or time.monotonic() >= self._next_snapshot):
             self._next_snapshot = time.monotonic() + SNAPSHOT_SECONDS
             snapshot = self._snapshot()
-            if snapshot is not None and snapshot != self._last_snapshot:
-                self._last_snapshot = snapshot
+            still = {key: value for key, value in (snapshot or {}).items() if key != "time"}
+            if snapshot is not None and still != self._last_snapshot:  # a robot standing still is written once
+                self._last_snapshot = still
                 items.append((self._clock(), channels.SIMULATOR, snapshot))
         return items
 

@@ -269,6 +269,19 @@ _TEXTS = {
     "monitor_items": ("[{count} items]", "[{count} Einträge]"),
     "monitor_more": ("… {count} more", "… {count} weitere"),
     "monitor_plot_tip": ("{path}: double-click or drag to a plot", "{path}: doppelklicken oder in einen Plot ziehen"),
+    "open_recording": ("Open Recor&ding…", "Auf&zeichnung öffnen…"),
+    "recording_filter": ("Rockly recordings (*.mcap)", "Rockly-Aufzeichnungen (*.mcap)"),
+    "recording_unreadable": ("This recording cannot be opened", "Diese Aufzeichnung lässt sich nicht öffnen"),
+    "replay_play": ("Play", "Abspielen"),
+    "replay_pause": ("Pause", "Anhalten"),
+    "replay_close": ("Close the timeline", "Zeitleiste schließen"),
+    "replay_speed": ("Replay speed", "Abspielgeschwindigkeit"),
+    "replay_time": ("{now:.1f} s of {total:.1f} s", "{now:.1f} s von {total:.1f} s"),
+    "replay_cut_short": ("(cut short)", "(abgebrochen)"),
+    "marker_error": ("Error: {text}", "Fehler: {text}"),
+    "marker_pause": ("Paused ({text})", "Angehalten ({text})"),
+    "marker_bump": ("Bumped into something", "Irgendwo angestoßen"),
+    "marker_goal": ("Goal {text}", "Ziel {text}"),
 }
 
 
