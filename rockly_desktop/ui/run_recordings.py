@@ -15,9 +15,12 @@ log = logging.getLogger(__name__)
 
 
 def open_run_recording(settings, document, workspace: dict, robot):
-    """A started ``RunRecording`` for a window run of ``document`` on ``robot``, or None when it cannot be made."""
+    """A started ``RunRecording`` for a window run of ``document`` on ``robot``; None when the preferences
+    keep no recordings, or it cannot be made."""
     from rockly_desktop.executor.run_recording import RunRecording
 
+    if settings.recordings_kept == 0:
+        return None
     profile = document.profile
     name = Path(document.path).name if document.path else "Untitled.rockly"
     folder = settings.recordings_folder

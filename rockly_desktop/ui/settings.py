@@ -119,8 +119,8 @@ class AppSettings:
 
     @property
     def recordings_kept(self) -> int:
-        """How many recordings are kept (the oldest go); 20 by default."""
-        return _positive_int(self._get("recordings/kept"), 20)
+        """How many recordings are kept (the oldest go); 20 by default, 0: runs are not recorded."""
+        return _count(self._get("recordings/kept"), 20)
 
     @recordings_kept.setter
     def recordings_kept(self, value: int):
@@ -144,9 +144,9 @@ class AppSettings:
         self._store.sync()
 
 
-def _positive_int(value, default: int) -> int:
+def _count(value, default: int) -> int:
     try:
         number = int(value)
     except (TypeError, ValueError):
         return default
-    return number if number > 0 else default
+    return number if number >= 0 else default
