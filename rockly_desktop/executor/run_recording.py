@@ -11,6 +11,7 @@ import logging
 from rockly_desktop import __version__
 from rockly_desktop.executor.events import OutputPrinted, RunFinished, RunPaused, RunResumed, VariablesChanged
 from rockly_desktop.recording import channels
+from rockly_desktop.recording.badges import BadgeStates
 from rockly_desktop.recording.recorder import Recorder
 
 log = logging.getLogger(__name__)
@@ -39,6 +40,7 @@ class RunRecording:
         self._robot = robot
         self._block_types = block_types or {}
         self._hooks = None
+        self.badges = BadgeStates()  # what the blocks' commands did so far, for their badges
         self.recorder.start({"program": program_name, "profile": profile.id, "robot": robot.name,
                              "started": datetime.datetime.now().astimezone().isoformat(timespec="seconds"),
                              "rockly": __version__}, program)
@@ -53,7 +55,9 @@ class RunRecording:
     def command(self, entry: dict):
         """What the program sent or what came back (``robot/recorded.py``'s entries), with the current block."""
         block = self._hooks.current_block if self._hooks is not None else None
-        self.recorder.note(channels.COMMANDS, {**entry, "block": block})
+        entry = {**entry, "block": block}
+        self.badges.take(entry)
+        self.recorder.note(channels.COMMANDS, entry)
 
     def safe_stop(self, failures):
         """The robot's safe stop ran (``failures``: what did not work)."""

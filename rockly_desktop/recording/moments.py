@@ -8,6 +8,7 @@ import bisect
 from dataclasses import dataclass
 
 from rockly_desktop.recording import channels
+from rockly_desktop.recording.badges import BadgeStates
 from rockly_desktop.recording.reading import Recording
 
 BUMP_TOPICS = ("/sim/contact",)  # the simulators say here what the robot bumped into
@@ -52,6 +53,8 @@ class Moments:
         self._snapshots = _Series(recording.on(channels.SIMULATOR), lambda entry: entry.data)
         output = recording.on(channels.OUTPUT)
         self._output_times = [entry.time for entry in output]
+        self._commands = recording.on(channels.COMMANDS)
+        self._command_times = [entry.time for entry in self._commands]
         ends = [entry.time for entry in recording.on(channels.RUN) if entry.data.get("event") == "end"]
         self.duration = max([recording.duration] + ends)
 
@@ -64,6 +67,13 @@ class Moments:
         """The run as it was ``seconds`` after the recording began."""
         return Moment(self._blocks.at(seconds), self._variables.at(seconds, {}), self._snapshots.at(seconds),
                       bisect.bisect_right(self._output_times, seconds))
+
+    def badges(self, seconds: float) -> dict:
+        """Block id -> (state, seconds) as the blocks' badges showed them ``seconds`` into the run."""
+        states = BadgeStates()
+        for entry in self._commands[:bisect.bisect_right(self._command_times, seconds)]:
+            states.take(entry.data)
+        return states.states
 
     def markers(self) -> list:
         """Errors, pauses, bumps and goal outcomes, in time order."""

@@ -8,6 +8,7 @@ from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS, EditorView
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.recovery import RecoverySession, claim_abandoned
 from rockly_desktop.ui.autosave import Autosave
+from rockly_desktop.ui.block_badges import badges_shown
 from rockly_desktop.ui.code_dock import CodeDock
 from rockly_desktop.ui.console_dock import ConsoleDock
 from rockly_desktop.ui.document import Document
@@ -88,7 +89,8 @@ class MainWindow(QMainWindow):
         self.runs.sig_state_changed.connect(self._on_run_state)
         self.runs.sig_status.connect(lambda text: self.statusBar().showMessage(text))
         self.tablet.sig_dismissed.connect(self.runs.stop)
-        self.replay = Replay(self.replay_bar, self.editor, self.variables, self.simulator_dock, self.language, self)
+        self.replay = Replay(self.replay_bar, self.editor, self.variables, self.simulator_dock, self.language, self,
+                             lambda: badges_shown(self.settings, self.profile.id))
         self.runs.sig_state_changed.connect(lambda state: state == "starting" and self.replay.close())
         self.runs.sig_finished.connect(lambda _result: self.runs.last_recording and self.replay.open(
             self.runs.last_recording, quiet=True))

@@ -7,6 +7,7 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox
 
 from rockly_desktop.recording.moments import Moments
 from rockly_desktop.recording.reading import RecordingUnreadable, read_recording
+from rockly_desktop.ui.block_badges import badge_texts
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.texts import tr
 
@@ -15,8 +16,11 @@ class Replay(QObject):
     """Drives the ``bar`` (``ReplayBar``) and shows its moments in the ``editor``, the ``variables`` dock
     and the ``simulator`` dock (whose live refresh pauses while a moment is shown)."""
 
-    def __init__(self, bar, editor, variables, simulator, language: str, parent=None):
+    def __init__(self, bar, editor, variables, simulator, language: str, parent=None, badges=lambda: True):
+        """``badges()`` says whether the blocks' badges are shown (not at the Starter level)."""
         super().__init__(parent)
+        self._badges_wanted = badges
+        self._shown_badges = None
         self.bar = bar
         self.editor = editor
         self.variables = variables
@@ -65,12 +69,17 @@ class Replay(QObject):
             self._shown_block = moment.block
             self.editor.call("highlight", {"id": moment.block})
         self.variables.show_values(moment.variables)
+        if self._badges_wanted():
+            badges = self.moments.badges(seconds)
+            if badges != self._shown_badges:
+                self._shown_badges = badges
+                self.editor.call("setBadges", {"badges": badge_texts(badges, self.language)})
         view = self.simulator.view
         if moment.snapshot is not None and view is not None:
             self.simulator.stop()
             view.set_snapshot(moment.snapshot)
 
     def _back_to_live(self):
-        self._shown_block = None
+        self._shown_block = self._shown_badges = None
         self.editor.call("highlight", {"id": None})
         self.simulator.resume()

@@ -14,6 +14,7 @@ from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import RunFinished, RunPaused, RunResumed, VariablesChanged
 from rockly_desktop.executor.qt_adapter import ProgramThread
+from rockly_desktop.ui.block_badges import badge_texts, badges_shown
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.texts import robot_problem, tr
 
@@ -47,6 +48,8 @@ class RunSession(QObject):
         self.thread = None
         self.last_result = None
         self.last_recording = None  # the path of the last run's recording
+        self._recording = None
+        self._badges_shown = None  # the badge states last sent to the page
         self._delay = 0.0
         self._start_request = None  # the run waiting for the page's code; None when cancelled
         self._switch_interval = sys.getswitchinterval()
@@ -97,6 +100,8 @@ class RunSession(QObject):
             limits = self.settings.teacher.limits(profile.id)  # kept by the backend, on any robot
             recording = open_run_recording(self.settings, self.document, self.editor.workspace, robot)
             self.last_recording = recording.path if recording is not None else None
+            self._recording = recording if badges_shown(self.settings, profile.id) else None
+            self._badges_shown = None
             thread = ProgramThread(lambda emit: make_runner(profile, robot, run_code, control, emit, language, limits,
                                                             recording), self)
         except (RocklyError, RuntimeError) as problem:
@@ -196,6 +201,15 @@ class RunSession(QObject):
         runner = self.thread.runner
         self._highlight(runner.hooks.current_block)
         self.variables.show_values(runner.variables_snapshot())
+        self._show_badges()
+
+    def _show_badges(self):
+        """Send the blocks' badges when their states changed (the run's recording keeps them)."""
+        recording = self._recording
+        if recording is None or recording.badges.states is self._badges_shown:
+            return
+        self._badges_shown = recording.badges.states
+        self.editor.call("setBadges", {"badges": badge_texts(self._badges_shown, self.settings.language)})
 
     def _show_output(self, everything: bool = False):
         """Show what the program printed since the last look: a batch, or ``everything`` (at its end)."""
@@ -226,6 +240,7 @@ class RunSession(QObject):
         self._follow.stop()
         self.last_result = result
         self._highlight(None)
+        self._show_badges()
         if result.outcome == "error":
             self.console.append(result.message, "error")
             self.editor.call("markError", {"id": result.block_id, "message": result.message})

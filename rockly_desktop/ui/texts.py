@@ -282,6 +282,13 @@ _TEXTS = {
     "marker_pause": ("Paused ({text})", "Angehalten ({text})"),
     "marker_bump": ("Bumped into something", "Irgendwo angestoßen"),
     "marker_goal": ("Goal {text}", "Ziel {text}"),
+    "badge_running": ("running…", "läuft…"),
+    "badge_succeeded": ("✓ {seconds}", "✓ {seconds}"),
+    "badge_aborted": ("✗ aborted {seconds}", "✗ abgebrochen {seconds}"),
+    "badge_preempted": ("■ stopped {seconds}", "■ gestoppt {seconds}"),
+    "badge_rejected": ("✗ refused", "✗ abgelehnt"),
+    "badge_timed_out": ("⏱ timed out {seconds}", "⏱ Zeit abgelaufen {seconds}"),
+    "badge_failed": ("✗ failed {seconds}", "✗ fehlgeschlagen {seconds}"),
 }
 
 

@@ -23,8 +23,8 @@ def run_to_the_end(qtbot, window, *blocks, variables=()):
     return blocker.args[0]
 
 
-def test_a_run_is_recorded_and_its_timeline_replays_block_values_and_robot(qtbot, window):
-    window.simulator_speed = 10
+def test_a_run_is_recorded_and_its_timeline_replays_block_values_and_robot(qtbot, driver):
+    window = driver.open_window(simulator_speed=2.0)  # the drive lasts about a second: snapshots on the way
     result = run_to_the_end(qtbot, window, stack(
         block("variables_set", {"VAR": {"id": "laps"}}, {"VALUE": number(1)}, id="one"),
         block("hobbit_move", {"direction": "+"}, {"speed": number(1)}, id="drive"),
@@ -36,15 +36,13 @@ def test_a_run_is_recorded_and_its_timeline_replays_block_values_and_robot(qtbot
     qtbot.waitUntil(bar.isVisible, timeout=5000)
     assert highlighted(qtbot, window) == []  # nothing is replayed until the person moves the scrubber
     recording = window.replay.moments.recording
-    drive = next(entry for entry in recording.on(channels.BLOCKS) if entry.data["block"] == "drive")
-    two = next(entry for entry in recording.on(channels.BLOCKS) if entry.data["block"] == "two")
-    during = (drive.time + two.time) / 2
+    final_x = window.robot().snapshot()["x"]
+    on_the_way = next(entry for entry in recording.on(channels.SIMULATOR) if 0.05 < entry.data["x"] < final_x - 0.05)
 
-    bar.jump_to(during)
+    bar.jump_to(on_the_way.time + 0.001)  # the scrubber counts whole milliseconds
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=5000)
     assert window.variables.values() == {"laps": "1"}
-    shown = window.simulator_dock.view._snapshot
-    assert 0.0 < shown["x"] < window.robot().snapshot()["x"] - 0.05  # the robot on its way, not where it is now
+    assert window.simulator_dock.view._snapshot["x"] == on_the_way.data["x"]  # where the robot was then
     bar.jump_to(bar.duration)
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["smile"], timeout=5000)
     assert window.variables.values() == {"laps": "2"}
@@ -71,3 +69,33 @@ def test_an_error_is_a_marker_and_a_file_that_is_no_recording_changes_nothing(qt
     assert "photo.mcap is not an MCAP recording" in box.text()
     box.close()
     assert window.replay.moments is shown and window.replay_bar.isVisible()
+
+
+def badge(qtbot, window, block_id):
+    """The text of the badge on ``block_id`` itself (not on a block nested in it), or None."""
+    return run_js(qtbot, window.editor, f"(Blockly.getMainWorkspace().getBlockById('{block_id}').getSvgRoot()"
+                                        ".querySelector(':scope > .rocklyBadge > .rocklyBadgeText')"
+                                        " || {textContent: null}).textContent")
+
+
+def test_blocks_that_talk_to_the_robot_get_badges_live_and_in_the_replay_not_at_the_starter_level(qtbot, window):
+    info = block("hobbit_show_info", inputs={"text": block("text", {"TEXT": "Hello"})}, id="info")
+    result = run_to_the_end(qtbot, window, stack(block("hobbit_head", {"head_position": "up_left"}, id="look"), info))
+    assert result.outcome == "finished"
+    qtbot.waitUntil(lambda: (badge(qtbot, window, "info") or "").startswith("✓"), timeout=5000)
+    assert badge(qtbot, window, "look") is None  # a publish has no outcome to show
+    assert not window.document.modified
+    state = call_page(qtbot, window.editor, "getState")
+    assert "rockly_badge" not in str(state["workspace"])  # a badge never reaches the program
+
+    window.replay_bar.jump_to(0.0)  # before the call: no badge then
+    qtbot.waitUntil(lambda: badge(qtbot, window, "info") is None, timeout=5000)
+    window.replay_bar.jump_to(window.replay_bar.duration)
+    qtbot.waitUntil(lambda: (badge(qtbot, window, "info") or "").startswith("✓"), timeout=5000)
+
+    window.settings.teacher.set_level("hobbit", "starter")
+    run_to_the_end(qtbot, window, stack(info))
+    qtbot.waitUntil(lambda: badge(qtbot, window, "info") is None, timeout=5000)
+    window.replay_bar.jump_to(0.0)
+    window.replay_bar.jump_to(window.replay_bar.duration)
+    assert badge(qtbot, window, "info") is None
