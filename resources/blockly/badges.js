@@ -11,7 +11,7 @@ const RocklyBadges = (() => {
   const TYPE = new Blockly.icons.IconType('rockly_badge');
   const HEIGHT = 16;
   const PAD = 6;
-  const CHAR_WIDTH = 6.6;
+  const CHAR_WIDTH = 6.2;
 
   class Badge extends Blockly.icons.Icon {
     constructor(block, text, state) {

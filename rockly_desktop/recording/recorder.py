@@ -87,7 +87,7 @@ class Recorder:
         """Record one of Rockly's events on ``channel`` (see ``channels``)."""
         self._put((self._clock(), channel, payload))
 
-    def topic(self, topic: str, msg_type: str, message, *_ignored):
+    def topic(self, topic: str, msg_type: str, message):
         """Record a robot topic's message, unless it comes sooner than the rate cap allows (or is no
         topic: a simulator's service calls and goals, which the commands channel holds)."""
         if "/" not in msg_type:
