@@ -55,7 +55,12 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
         elif isinstance(event, OutputPrinted):
             out(f"print   {event.text}")
 
-    recording = _recording(record, program_path, program.profile, robot, types)
+    try:
+        recording = _recording(record, program_path, program.profile, robot, types)
+    except OSError as error:
+        print(f"rockly run: cannot record to {record}: {error.strerror or error}", file=sys.stderr)
+        robot.shutdown()
+        return 1
     previous = signal.signal(signal.SIGINT, lambda *_: control.request_stop())
     try:
         result = make_runner(program.profile, robot, run_code, control, report, language,

@@ -45,6 +45,9 @@ class RunRecording:
                              "started": datetime.datetime.now().astimezone().isoformat(timespec="seconds"),
                              "rockly": __version__}, program)
         robot.state.add_listener(self.recorder.topic)
+        follow_graph = getattr(robot, "follow_graph", None)  # a ROS robot fills its state store only when asked
+        if follow_graph is not None:
+            follow_graph()
 
     def follow(self, runner):
         """Record ``runner``'s blocks and variables (and the simulator's state), from the start."""

@@ -105,3 +105,11 @@ def test_recordings_are_named_by_date_program_and_robot_and_the_last_n_are_kept(
     listing = rockly("recordings", "list", "--folder", folder)
     assert listing.returncode == 0 and [line.split()[-1] for line in listing.stdout.splitlines()] == [
         str(path) for path in reversed(made[2:])]
+
+
+def test_a_recording_that_cannot_be_written_stops_rockly_run_before_the_robot_moves(tmp_path):
+    program = program_file(tmp_path, drive("there"))
+    result = rockly("run", program, "--record", tmp_path / "no such folder" / "out.mcap")
+    assert result.returncode == 1
+    assert "cannot record to" in result.stderr and "No such file or directory" in result.stderr
+    assert "block" not in result.stdout
