@@ -9,6 +9,9 @@
     rockly export PROGRAM -o OUT.py     write the Python generated from a program (-o -: to standard output)
     rockly run PROGRAM [--answer A]...  run a program on the simulator (or --backend KIND), without a window
     rockly sim PROFILE --ros            the profile's simulated robot as a ROS 1 node, in a small window
+    rockly run PROGRAM --record OUT.mcap  ... and record the run
+    rockly replay RECORDING.mcap        print a recorded run's timeline (block, time, outcome)
+    rockly recordings list              list the recordings in the recordings folder
 
 The kinds of robot (``--backend``, ``rockly sim``'s ``--ros``, their connection options) come from the
 robot-link registry, ``robot/links.py``.
@@ -21,7 +24,7 @@ from pathlib import Path
 
 from rockly_desktop import __version__
 
-SUBCOMMANDS = ("profiles", "plugins", "export", "run", "sim")
+SUBCOMMANDS = ("profiles", "plugins", "export", "run", "sim", "replay", "recordings")
 
 
 def _tool_parser() -> argparse.ArgumentParser:
@@ -56,6 +59,14 @@ def _tool_parser() -> argparse.ArgumentParser:
     run.add_argument("--answer", action="append", default=[],
                      help="an answer for the next tablet question (repeatable)")
     run.add_argument("--speed", type=float, default=1.0, help="simulated time runs this many times faster")
+    run.add_argument("--record", type=Path, metavar="OUT.mcap", help="record the run to this MCAP file")
+
+    replay = commands.add_parser("replay", help="print a recorded run's timeline")
+    replay.add_argument("recording", type=Path, help="an .mcap file Rockly recorded")
+    recordings = commands.add_parser("recordings", help="recorded runs")
+    listing = recordings.add_subparsers(dest="recordings_command", required=True).add_parser(
+        "list", help="list the recordings in the recordings folder")
+    listing.add_argument("--folder", type=Path, help="another folder (default: the one the preferences name)")
 
     sim = commands.add_parser("sim", help="run a profile's simulated robot as a ROS node, in a small window")
     sim.add_argument("profile", help="the robot profile id (see rockly profiles list)")
@@ -214,7 +225,11 @@ def main(argv=None) -> int:
             from rockly_desktop.run_command import run_program
 
             return run_program(args.program, args.answer, args.speed, backend=args.backend,
-                               connection=_connection(args.backend, args))
+                               connection=_connection(args.backend, args), record=args.record)
+        if args.command in ("replay", "recordings"):
+            from rockly_desktop.recording_command import list_recordings, replay
+
+            return replay(args.recording) if args.command == "replay" else list_recordings(args.folder)
         if args.command == "sim":
             from rockly_desktop.sim_command import serve_simulator
 

@@ -19,9 +19,11 @@ EXIT_STOPPED = 130
 
 
 def run_program(program_path, answers=(), speed: float = 1.0, language: str = "en", out=print,
-                backend: str = DEFAULT_KIND, connection: dict = None) -> int:
+                backend: str = DEFAULT_KIND, connection: dict = None, record=None) -> int:
     """Run ``program_path`` headless on its profile's robot over the ``backend`` kind of robot link
-    (the built-in simulator by default; ``connection``: that link's settings); returns the exit status."""
+    (the built-in simulator by default; ``connection``: that link's settings); returns the exit status.
+
+    ``record``: the MCAP file to record the run to (none without it)."""
     from rockly_desktop.app import generate_headless
     from rockly_desktop.profiles.opening import opening_warnings
 
@@ -48,16 +50,37 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
         elif isinstance(event, OutputPrinted):
             out(f"print   {event.text}")
 
+    try:
+        recording = _recording(record, program_path, program.profile, robot, types)
+    except OSError as error:
+        print(f"rockly run: cannot record to {record}: {error.strerror or error}", file=sys.stderr)
+        robot.shutdown()
+        return 1
     previous = signal.signal(signal.SIGINT, lambda *_: control.request_stop())
     try:
-        result = make_runner(program.profile, robot, run_code, control, report, language).run()
+        result = make_runner(program.profile, robot, run_code, control, report, language,
+                             recording=recording).run()
     except RocklyError as error:  # the profile's commands could not be made
         print(f"rockly run: {error}", file=sys.stderr)
         return 1
     finally:
         signal.signal(signal.SIGINT, previous)
+        if recording is not None:
+            recording.close()
         robot.shutdown()
     return _report_end(result, types)
+
+
+def _recording(record, program_path, profile, robot, types):
+    if record is None:
+        return None
+    from pathlib import Path
+
+    from rockly_desktop.executor.run_recording import RunRecording
+
+    program_path = Path(program_path)
+    program = program_path.read_bytes() if program_path.suffix == ".rockly" else None
+    return RunRecording(record, profile, robot, program_path.name, program, types)
 
 
 def _report_end(result: RunFinished, types: dict) -> int:

@@ -504,6 +504,11 @@
     },
     clearMarks() {
       clearMarks();
+      RocklyBadges.show(workspace, {});
+      return true;
+    },
+    setBadges({badges}) {
+      RocklyBadges.show(workspace, badges || {});
       return true;
     },
     undo() {

@@ -65,3 +65,8 @@ def user_cache_dir() -> Path:
     """What Rockly keeps only to start faster; anything in it may go (XDG cache home)."""
     base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
     return Path(base) / "rockly"
+
+
+def recordings_dir() -> Path:
+    """Where runs are recorded unless the preferences name another folder (XDG data home)."""
+    return user_data_dir() / "recordings"

@@ -69,14 +69,25 @@ class StateStore:
         self._history = history
         self._rate_window = rate_window
         self._clock = clock
+        self._listeners = ()
         self.version = 0
+
+    def add_listener(self, listener):
+        """Also hand every message to ``listener(topic, msg_type, message)``, in the thread that records it."""
+        with self._lock:
+            self._listeners = self._listeners + (listener,)
+
+    def remove_listener(self, listener):
+        """Stop handing messages to ``listener``."""
+        with self._lock:
+            self._listeners = tuple(item for item in self._listeners if item != listener)
 
     def now(self) -> float:
         """The store's clock (the time its stamps are in)."""
         return self._clock()
 
     def record(self, topic: str, msg_type: str, message: dict):
-        """Take one message (any thread)."""
+        """Take one message (any thread), and hand it to the listeners."""
         now = self._clock()
         with self._lock:
             entry = self._topics.get(topic)
@@ -89,6 +100,9 @@ class StateStore:
             while entry.arrivals and entry.arrivals[0] < now - self._rate_window:
                 entry.arrivals.popleft()
             self.version += 1
+            listeners = self._listeners
+        for listener in listeners:
+            listener(topic, msg_type, message)
 
     def latest(self, topic: str):
         """The newest message on ``topic`` as a dict, or None."""

@@ -2,6 +2,7 @@
 from rockly_desktop.executor.runner import ProgramRunner
 from rockly_desktop.profiles.i18n import localize
 from rockly_desktop.robot.limits import Capability, LimitedBackend, Limits
+from rockly_desktop.robot.recorded import RecordedBackend
 from rockly_desktop.robot.ros_commands import RosCommands
 
 
@@ -15,24 +16,40 @@ def limited_backend(profile, backend, limits: Limits, language: str) -> LimitedB
 
 
 def make_runner(profile, robot, run_code: dict, control, emit, language: str = "en",
-                limits: Limits = None) -> ProgramRunner:
+                limits: Limits = None, recording=None) -> ProgramRunner:
     """A ProgramRunner for the page's ``getRunCode`` answer, bound to ``robot``.
 
     The program sees the profile's command object as ``robot`` and the generic ROS
     commands as ``ros``; when the run ends for any reason, the robot's safe stop runs.
     Both command objects go through the teacher's ``limits`` (see ``robot/limits.py``).
-    The run reports its errors in ``language``.
+    The run reports its errors in ``language``. A ``RunRecording`` (``recording``) records the
+    run: what the program sends, its blocks, variables and events, until it ends.
     """
-    backend = limited_backend(profile, robot.backend(control.interrupt), limits or Limits(), language)
+    limited = limited_backend(profile, robot.backend(control.interrupt), limits or Limits(), language)
+    backend = limited if recording is None else RecordedBackend(limited, recording.command)
     commands = profile.create("api", backend)
     ros = RosCommands(backend, types=profile.ros_types)
 
     def on_end():
         failures = robot.safe_stop()
+        if recording is not None:
+            recording.safe_stop(failures)
         if failures:
             raise RuntimeError("; ".join(failures))
 
+    if recording is not None:
+        emit = _both(recording.emit, emit)
     runner = ProgramRunner(run_code["code"], {"robot": commands, "ros": ros}, control, emit,
-                           run_code.get("variables"), on_end, language)
-    ros.say = backend.note = runner.show_output
+                           run_code.get("variables"), on_end, language,
+                           entered=None if recording is None else recording.recorder.blocks)
+    ros.say = limited.note = runner.show_output
+    if recording is not None:
+        recording.follow(runner)
     return runner
+
+
+def _both(first, second):
+    def emit(event):
+        first(event)
+        second(event)
+    return emit

@@ -8,6 +8,7 @@ so a stop also ends a long drive or a dialog.
 import builtins
 import io
 import logging
+import time
 import tokenize
 import traceback
 
@@ -74,23 +75,45 @@ class BlockHooks:
             control.interrupt.sleep(control.delay)
 
 
+class RecordedBlockHooks(BlockHooks):
+    """``BlockHooks`` that also note each block entered, with its ``time.monotonic_ns()``, in
+    ``entered`` while ``block_budget`` lasts (a recorder refills it, so a tight loop costs one test)."""
+
+    def __init__(self, control, emit, variables, entered):
+        super().__init__(control, emit, variables)
+        self.entered = entered
+        self.block_budget = 0
+
+    def block(self, block_id: str):
+        """Called before each statement block."""
+        self.current_block = block_id
+        if self.block_budget:
+            self.block_budget -= 1
+            self.entered.append((time.monotonic_ns(), block_id))
+        if self._control.attention:
+            self._at_block(block_id)
+
+
 class ProgramRunner:
     """Runs one program to its end and reports what happens through ``emit(event)``.
 
     ``namespace`` holds what the program may use (``robot``); ``variables`` maps the
     Blockly variable names to their Python names; ``on_end()`` (the robot's safe stop)
     runs whenever the run ends, for any reason. ``language`` ('en' or 'de') is the
-    language of the messages a run reports (an error, a failed safe stop).
+    language of the messages a run reports (an error, a failed safe stop). With ``entered`` (a deque),
+    the blocks entered are noted there for a recording (see ``RecordedBlockHooks``).
     """
 
-    def __init__(self, code: str, namespace: dict, control, emit, variables=None, on_end=None, language: str = "en"):
+    def __init__(self, code: str, namespace: dict, control, emit, variables=None, on_end=None, language: str = "en",
+                 entered=None):
         self._code = code
         self.language = language
         self._control = control
         self._emit = emit
         self._variable_names = dict(variables or {})
         self._on_end = on_end
-        self.hooks = BlockHooks(control, emit, self.variables_event)
+        self.hooks = (BlockHooks(control, emit, self.variables_event) if entered is None
+                      else RecordedBlockHooks(control, emit, self.variables_event, entered))
         control.on_hold = self.hooks.hold_inside_block
         self.globals = {"__builtins__": builtins, "__name__": "__rockly__",
                         **namespace, "__rockly__": self.hooks, "print": self._print}

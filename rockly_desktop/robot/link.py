@@ -92,6 +92,10 @@ class RobotLink(Protocol):
     def snapshot(self) -> "dict | None":
         """The simulated robot's state for the simulator view; None for a real robot."""
 
+    def recording_encoder(self):
+        """``encoder(msg_type, message) -> (schema text, bytes)`` writing the robot's topics in their
+        ROS encoding into a recording (``recording/``), or None: the topics are recorded as JSON."""
+
     def reset(self):
         """Put the simulated robot back as it started; NotImplementedError for a real robot."""
 

@@ -69,6 +69,14 @@ class SimulatedRobot:
         """Do the profile's safe stop now; returns what failed."""
         return run_safe_stop(self.profile.safe_stop, self.backend(Interrupt()))
 
+    def recording_encoder(self):
+        """The simulator's ROS-shaped messages as ROS 1 writes them, where genpy is installed (else None: JSON)."""
+        try:
+            from rockly_desktop.robot.ros1.recording_codec import Ros1Encoder
+        except ImportError:
+            return None
+        return Ros1Encoder(self.profile.message_folders)
+
     def reset(self):
         """Put the simulated robot back as it started (its profile's ``reset()``)."""
         self.simulator.reset()

@@ -8,6 +8,7 @@ from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS, EditorView
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.recovery import RecoverySession, claim_abandoned
 from rockly_desktop.ui.autosave import Autosave
+from rockly_desktop.ui.block_badges import badges_shown
 from rockly_desktop.ui.code_dock import CodeDock
 from rockly_desktop.ui.console_dock import ConsoleDock
 from rockly_desktop.ui.document import Document
@@ -18,6 +19,8 @@ from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.preferences import PreferencesDialog
 from rockly_desktop.ui.program_files import ProgramFiles
 from rockly_desktop.ui.recovery_prompt import RecoveryPrompt
+from rockly_desktop.ui.replay import Replay
+from rockly_desktop.ui.replay_bar import ReplayBar, under
 from rockly_desktop.ui.robot_choice import RobotChoice
 from rockly_desktop.ui.run_session import RunSession
 from rockly_desktop.ui.run_toolbar import RunToolbar
@@ -51,7 +54,8 @@ class MainWindow(QMainWindow):
         self.setObjectName("main_window")
 
         self.editor = editor or EditorView()
-        self.setCentralWidget(self.editor)
+        self.replay_bar = ReplayBar(self.language, self)
+        self.setCentralWidget(under(self.editor, self.replay_bar))
         self.simulator_dock = SimulatorDock(tr("simulator_dock", self.language), self)
         self.code_dock = CodeDock(tr("code_dock", self.language), self)
         self.variables = VariablesDock(tr("variables_dock", self.language),
@@ -87,6 +91,11 @@ class MainWindow(QMainWindow):
         self.runs.sig_state_changed.connect(self._on_run_state)
         self.runs.sig_status.connect(lambda text: self.statusBar().showMessage(text))
         self.tablet.sig_dismissed.connect(self.runs.stop)
+        self.replay = Replay(self.replay_bar, self.editor, self.variables, self.simulator_dock, self.language, self,
+                             lambda: badges_shown(self.settings, self.profile.id))
+        self.runs.sig_state_changed.connect(lambda state: state == "starting" and self.replay.close())
+        self.runs.sig_finished.connect(lambda _result: self.runs.last_recording and self.replay.open(
+            self.runs.last_recording, quiet=True))
         self.health = HealthBar(self.language, self)
         self.statusBar().addPermanentWidget(self.health)
         self.statusBar().addPermanentWidget(self.robots.status)
@@ -418,6 +427,7 @@ class MainWindow(QMainWindow):
         self._action(file_menu, "new", lambda: self.files.new(), QKeySequence.StandardKey.New)
         self._action(file_menu, "open", lambda: self.files.open(), QKeySequence.StandardKey.Open)
         self.recent_menu = file_menu.addMenu(tr("open_recent", language))
+        self._action(file_menu, "open_recording", lambda: self.replay.choose(self.settings.recordings_folder))
         self.recent_menu.aboutToShow.connect(self._fill_recent_menu)
         self.examples_menu = ExamplesMenu(self.files, lambda: self.profile, language, file_menu)
         file_menu.addMenu(self.examples_menu)

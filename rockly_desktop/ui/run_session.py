@@ -14,6 +14,7 @@ from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import RunFinished, RunPaused, RunResumed, VariablesChanged
 from rockly_desktop.executor.qt_adapter import ProgramThread
+from rockly_desktop.ui.block_badges import badge_texts, badges_shown
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.texts import robot_problem, tr
 
@@ -46,6 +47,9 @@ class RunSession(QObject):
         self.control = None
         self.thread = None
         self.last_result = None
+        self.last_recording = None  # the path of the last run's recording
+        self._recording = None
+        self._badges_shown = None  # the badge states last sent to the page
         self._delay = 0.0
         self._start_request = None  # the run waiting for the page's code; None when cancelled
         self._switch_interval = sys.getswitchinterval()
@@ -85,16 +89,24 @@ class RunSession(QObject):
             self._set_state("idle")
             return
         from rockly_desktop.executor.run_setup import make_runner  # loaded at the first run, not at start-up
+        from rockly_desktop.ui.run_recordings import open_run_recording
 
+        recording = None
         try:
             self.robots.reset_if_wanted()
             control = RunControl(run_code["breakpoints"], self._delay)
             robot = self.robots.robot()
             profile = self.document.profile
             limits = self.settings.teacher.limits(profile.id)  # kept by the backend, on any robot
-            thread = ProgramThread(lambda emit: make_runner(profile, robot, run_code, control, emit, language, limits),
-                                   self)
+            recording = open_run_recording(self.settings, self.document, self.editor.workspace, robot)
+            self.last_recording = recording.path if recording is not None else None
+            self._recording = recording if badges_shown(self.settings, profile.id) else None
+            self._badges_shown = None
+            thread = ProgramThread(lambda emit: make_runner(profile, robot, run_code, control, emit, language, limits,
+                                                            recording), self)
         except (RocklyError, RuntimeError) as problem:
+            if recording is not None:
+                recording.close()
             self.console.append(" ".join(part for part in robot_problem(problem, language) if part), "error")
             self._set_state("idle")
             return
@@ -189,6 +201,15 @@ class RunSession(QObject):
         runner = self.thread.runner
         self._highlight(runner.hooks.current_block)
         self.variables.show_values(runner.variables_snapshot())
+        self._show_badges()
+
+    def _show_badges(self):
+        """Send the blocks' badges when their states changed (the run's recording keeps them)."""
+        recording = self._recording
+        if recording is None or recording.badges.states is self._badges_shown:
+            return
+        self._badges_shown = recording.badges.states
+        self.editor.call("setBadges", {"badges": badge_texts(self._badges_shown, self.settings.language)})
 
     def _show_output(self, everything: bool = False):
         """Show what the program printed since the last look: a batch, or ``everything`` (at its end)."""
@@ -219,6 +240,7 @@ class RunSession(QObject):
         self._follow.stop()
         self.last_result = result
         self._highlight(None)
+        self._show_badges()
         if result.outcome == "error":
             self.console.append(result.message, "error")
             self.editor.call("markError", {"id": result.block_id, "message": result.message})

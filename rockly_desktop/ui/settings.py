@@ -1,6 +1,7 @@
 """What Rockly remembers between starts: layout, language, profile, last and recent files."""
 from PySide6.QtCore import QSettings
 
+from rockly_desktop.core.paths import recordings_dir
 from rockly_desktop.profiles.i18n import SUPPORTED_LANGUAGES
 from rockly_desktop.ui.teacher_settings import TeacherSettings
 
@@ -110,6 +111,45 @@ class AppSettings:
     def reset_before_run(self, value: bool):
         self._store.setValue("reset_before_run", "true" if value else "false")
 
+    @property
+    def recordings_folder(self) -> str:
+        """Where runs are recorded (default: ``recordings`` in Rockly's XDG data folder)."""
+        return str(self._get("recordings/folder", "") or recordings_dir())
+
+    @recordings_folder.setter
+    def recordings_folder(self, value: str):
+        self._store.setValue("recordings/folder", value or "")
+
+    @property
+    def recordings_kept(self) -> int:
+        """How many recordings are kept (the oldest go); 20 by default, 0: runs are not recorded."""
+        return _count(self._get("recordings/kept"), 20)
+
+    @recordings_kept.setter
+    def recordings_kept(self, value: int):
+        self._store.setValue("recordings/kept", int(value))
+
+    @property
+    def recording_topic_rate(self) -> float:
+        """At most this many messages a second of each robot topic are recorded; 10 by default."""
+        try:
+            rate = float(self._get("recordings/topic_rate", 10.0))
+        except (TypeError, ValueError):
+            return 10.0
+        return rate if rate >= 0 else 10.0
+
+    @recording_topic_rate.setter
+    def recording_topic_rate(self, value: float):
+        self._store.setValue("recordings/topic_rate", float(value))
+
     def sync(self):
         """Write to disk now."""
         self._store.sync()
+
+
+def _count(value, default: int) -> int:
+    try:
+        number = int(value)
+    except (TypeError, ValueError):
+        return default
+    return number if number >= 0 else default

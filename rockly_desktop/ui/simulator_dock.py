@@ -41,5 +41,11 @@ class SimulatorDock(QDockWidget):
             self.view.set_snapshot(self.robot.snapshot())
 
     def stop(self):
-        """Stop refreshing (the robot is going away)."""
+        """Stop refreshing (the robot is going away, or a replay shows a recorded state)."""
         self._timer.stop()
+
+    def resume(self):
+        """Show the robot as it is again, refreshed as before ``stop``."""
+        if self.robot is not None and self.view is not None:
+            self.refresh()
+            self._timer.start()

@@ -77,6 +77,12 @@ class RosRobot:
         """A real robot has no simulator view."""
         return None
 
+    def recording_encoder(self):
+        """The robot's messages as they came over the wire (ROS 1's own encoding)."""
+        from rockly_desktop.robot.ros1.recording_codec import Ros1Encoder
+
+        return Ros1Encoder(self.profile.message_folders)
+
     def reset(self):
         """A real robot cannot be put back."""
         raise NotImplementedError("a real robot cannot be put back")

@@ -1,0 +1,35 @@
+"""The state of each block that talks to the robot, from what its commands did: a block's badge.
+
+A service call or a goal makes its block ``running``; the answer makes it ``succeeded``,
+the goal's outcome ``succeeded``, ``aborted``, ``preempted`` or ``rejected``, a failure
+``timed_out`` (a RobotTimeout) or ``failed``, each with the seconds it took. Fed live by
+a run's recording and, for a replay, with the recorded commands up to a moment.
+"""
+_STARTS = ("call", "goal")
+
+
+class BadgeStates:
+    """``states``: block id -> (state, seconds or None); ``version`` grows with every change."""
+
+    def __init__(self):
+        self.states = {}
+        self.version = 0
+
+    def take(self, entry: dict):
+        """Take one command entry (``robot/recorded.py``'s, with its ``block``)."""
+        block, kind = entry.get("block"), entry.get("kind")
+        if block is None:
+            return
+        if kind in _STARTS:
+            state = ("running", None)
+        elif kind == "response":
+            state = ("succeeded", entry.get("seconds"))
+        elif kind == "outcome":
+            state = (entry.get("status") or "succeeded", entry.get("seconds"))
+        elif kind == "failed":
+            timed_out = str(entry.get("text", "")).startswith("RobotTimeout")
+            state = ("timed_out" if timed_out else "failed", entry.get("seconds"))
+        else:
+            return
+        self.states = {**self.states, block: state}  # a new dict: readers in other threads see one or the other
+        self.version += 1

@@ -1,0 +1,192 @@
+"""Recording one run: events from any thread into a bounded queue, a writer thread streams them to MCAP.
+
+The program's thread and the robot's threads only put small tuples in a queue (or, for
+blocks, in a deque the block hook fills while it has budget); the writer thread wakes
+every ``TICK_SECONDS``, writes what came in time order, samples the variables and the
+simulator's state, and closes a chunk every ``FLUSH_SECONDS`` so that a crash loses at
+most that much. Memory stays bounded whatever the rates: topics are capped per topic at
+``topic_rate`` messages a second, blocks at ``BLOCKS_PER_TICK`` per tick (a tight loop is
+then sampled), and a full queue drops what comes (counted in the recording's stats).
+"""
+import logging
+import queue
+import threading
+import time
+from collections import deque
+
+from rockly_desktop.recording import channels
+from rockly_desktop.recording.mcap_file import McapFile
+
+log = logging.getLogger(__name__)
+
+TICK_SECONDS = 0.05
+FLUSH_SECONDS = 1.0
+SNAPSHOT_SECONDS = 0.2
+BLOCKS_PER_TICK = 100
+QUEUE_SIZE = 20_000
+
+_STOP = object()
+
+
+class Recorder:
+    """Streams one run to the MCAP file at ``path``.
+
+    ``encoder(msg_type, message) -> (definition, bytes)`` serialises a robot topic's message as
+    ROS 1 does (None: topics are written as JSON); ``topic_rate`` caps each topic (messages a
+    second, 0 or less: no topic is recorded); ``clock()`` gives nanoseconds since the epoch.
+    """
+
+    def __init__(self, path, encoder=None, topic_rate: float = 10.0, clock=None):
+        self.path = path
+        self._encoder = encoder
+        self._gap = int(1e9 / topic_rate) if topic_rate > 0 else None
+        self._offset = time.time_ns() - time.monotonic_ns()  # block hooks stamp with monotonic_ns
+        self._clock = clock or (lambda: time.monotonic_ns() + self._offset)
+        self._queue = queue.Queue(QUEUE_SIZE)
+        self._last_sent = {}
+        self._capped = {}
+        self._overflow = 0
+        self._unencodable = set()
+        self._file = None
+        self._thread = None
+        self._stopping = threading.Event()
+        self._hooks = None
+        self._variables = None
+        self._snapshot = None
+        self._last_variables = None
+        self._last_snapshot = None
+        self._next_snapshot = 0.0
+        self.blocks = deque()  # (monotonic_ns, block id), filled by the block hook
+        self._block_types = {}
+
+    # --- set-up --------------------------------------------------------------------------
+
+    def start(self, metadata: dict, program: bytes = None):
+        """Open the file, store ``metadata`` and the ``.rockly`` ``program`` and start the writer thread."""
+        self._file = McapFile(self.path)
+        now = self._clock()
+        self._file.metadata(channels.METADATA, metadata)
+        if program is not None:
+            self._file.attach(now, channels.PROGRAM_ATTACHMENT, "application/json", program)
+        self._file.flush()
+        self._thread = threading.Thread(target=self._run, name="rockly-recorder", daemon=True)
+        self._thread.start()
+
+    def follow(self, hooks, variables=None, snapshot=None, block_types=None):
+        """Record the blocks ``hooks`` enters (it fills ``self.blocks`` while ``hooks.block_budget`` lasts),
+        the ``variables()`` when they change and the simulator's ``snapshot()``."""
+        self._hooks = hooks
+        self._variables = variables
+        self._snapshot = snapshot
+        self._block_types = dict(block_types or {})
+        hooks.block_budget = BLOCKS_PER_TICK
+
+    # --- from any thread -------------------------------------------------------------------
+
+    def note(self, channel: str, payload: dict):
+        """Record one of Rockly's events on ``channel`` (see ``channels``)."""
+        self._put((self._clock(), channel, payload))
+
+    def topic(self, topic: str, msg_type: str, message):
+        """Record a robot topic's message, unless it comes sooner than the rate cap allows (or is no
+        topic: a simulator's service calls and goals, which the commands channel holds)."""
+        if "/" not in msg_type:
+            return
+        now = self._clock()
+        gap = self._gap
+        if gap is None or now - self._last_sent.get(topic, -gap) < gap:
+            self._capped[topic] = self._capped.get(topic, 0) + 1
+            return
+        self._last_sent[topic] = now
+        self._put((now, None, (topic, msg_type, message)))
+
+    def _put(self, item):
+        try:
+            self._queue.put_nowait(item)
+        except queue.Full:
+            self._overflow += 1
+
+    # --- the writer thread -------------------------------------------------------------------
+
+    def close(self):
+        """Write what is left, the stats and the summary; close the file. Idempotent."""
+        if self._thread is None:
+            return
+        self._stopping.set()
+        self._thread.join()
+        self._thread = None
+        self._write_pending(final=True)
+        self._file.write_json(channels.STATS, *channels.SCHEMAS[channels.STATS], self._clock(),
+                              {"capped": dict(self._capped), "overflow": self._overflow})
+        self._file.close()
+
+    def _run(self):
+        last_flush = time.monotonic()
+        while not self._stopping.wait(TICK_SECONDS):
+            try:
+                self._write_pending()
+                if time.monotonic() - last_flush >= FLUSH_SECONDS:
+                    self._file.flush()
+                    last_flush = time.monotonic()
+            except Exception:  # a recording must never take the run down
+                log.exception("recording %s failed", self.path)
+
+    def _write_pending(self, final: bool = False):
+        items = []
+        while True:
+            try:
+                items.append(self._queue.get_nowait())
+            except queue.Empty:
+                break
+        items += self._block_items()
+        items += self._samples(final)
+        items.sort(key=lambda item: item[0])
+        for log_ns, channel, payload in items:
+            if channel is None:
+                self._write_topic(log_ns, *payload)
+            else:
+                self._file.write_json(channel, *channels.SCHEMAS[channel], log_ns, payload)
+
+    def _block_items(self) -> list:
+        items = []
+        blocks = self.blocks
+        while blocks:
+            stamp, block_id = blocks.popleft()
+            items.append((stamp + self._offset, channels.BLOCKS,
+                          {"block": block_id, "type": self._block_types.get(block_id, "")}))
+        hooks = self._hooks
+        if hooks is not None:
+            if not hooks.block_budget and hooks.current_block is not None:  # a tight loop: where it is now
+                items.append((self._clock(), channels.BLOCKS, {"block": hooks.current_block, "type":
+                              self._block_types.get(hooks.current_block, ""), "sampled": True}))
+            hooks.block_budget = BLOCKS_PER_TICK
+        return items
+
+    def _samples(self, final: bool) -> list:
+        items = []
+        if self._variables is not None:
+            values = self._variables()
+            if values != self._last_variables:
+                self._last_variables = values
+                items.append((self._clock(), channels.VARIABLES, {"values": values}))
+        if self._snapshot is not None and (final or time.monotonic() >= self._next_snapshot):
+            self._next_snapshot = time.monotonic() + SNAPSHOT_SECONDS
+            snapshot = self._snapshot()
+            still = {key: value for key, value in (snapshot or {}).items() if key != "time"}
+            if snapshot is not None and still != self._last_snapshot:  # a robot standing still is written once
+                self._last_snapshot = still
+                items.append((self._clock(), channels.SIMULATOR, snapshot))
+        return items
+
+    def _write_topic(self, log_ns, topic, msg_type, message):
+        if self._encoder is not None and msg_type not in self._unencodable:
+            try:
+                definition, data = self._encoder(msg_type, message)
+            except Exception as error:
+                log.info("recording %s as JSON: %s cannot be encoded (%s)", topic, msg_type, error)
+                self._unencodable.add(msg_type)
+            else:
+                self._file.write_ros1(topic, msg_type, definition, log_ns, data)
+                return
+        if isinstance(message, dict):
+            self._file.write_json(topic, msg_type, {"type": "object"}, log_ns, message)

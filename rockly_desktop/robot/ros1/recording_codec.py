@@ -1,0 +1,30 @@
+"""Robot messages as ROS 1 writes them, for a recording's ``ros1`` channels.
+
+A ROS feed hands over genpy messages (serialised as they are); the simulator publishes
+dicts shaped like ROS messages, which become instances of the genpy classes of their
+types first (``MessageTypes``: installed packages, or generated from the profile's
+definitions), so a recording of the simulator reads like a recording of the robot.
+"""
+from io import BytesIO
+
+import genpy
+
+from rockly_desktop.robot.ros1.message_classes import MessageTypes
+from rockly_desktop.robot.ros1.message_values import to_message
+
+
+class Ros1Encoder:
+    """``encoder(msg_type, message) -> (definition, bytes)``; raises for a type it cannot find."""
+
+    def __init__(self, definition_folders=()):
+        self._folders = list(definition_folders)
+        self._types = None
+
+    def __call__(self, msg_type: str, message):
+        if not isinstance(message, genpy.Message):
+            if self._types is None:
+                self._types = MessageTypes(self._folders)
+            message = to_message(self._types.message_class(msg_type), message)
+        buffer = BytesIO()
+        message.serialize(buffer)
+        return message._full_text, buffer.getvalue()

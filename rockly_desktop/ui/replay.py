@@ -1,0 +1,85 @@
+"""Replaying a recorded run in the window: the block that ran glows, the Variables dock and the
+Simulator view show that moment. Replay only ever changes what is on screen: it sends nothing
+to a robot, and a file that is no recording changes nothing at all.
+"""
+from PySide6.QtCore import QObject
+from PySide6.QtWidgets import QFileDialog, QMessageBox
+
+from rockly_desktop.recording.moments import Moments
+from rockly_desktop.recording.reading import RecordingUnreadable, read_recording
+from rockly_desktop.ui.block_badges import badge_texts
+from rockly_desktop.ui.message_boxes import plain_message_box
+from rockly_desktop.ui.texts import tr
+
+
+class Replay(QObject):
+    """Drives the ``bar`` (``ReplayBar``) and shows its moments in the ``editor``, the ``variables`` dock
+    and the ``simulator`` dock (whose live refresh pauses while a moment is shown)."""
+
+    def __init__(self, bar, editor, variables, simulator, language: str, parent=None, badges=lambda: True):
+        """``badges()`` says whether the blocks' badges are shown (not at the Starter level)."""
+        super().__init__(parent)
+        self._badges_wanted = badges
+        self._shown_badges = None
+        self.bar = bar
+        self.editor = editor
+        self.variables = variables
+        self.simulator = simulator
+        self.language = language
+        self.moments = None
+        self._shown_block = None
+        bar.sig_moment.connect(self.show_moment)
+        bar.sig_closed.connect(self._back_to_live)
+
+    def choose(self, folder: str = ""):
+        """Ask for a recording (File → Open recording…) and open it."""
+        path, _filter = QFileDialog.getOpenFileName(self.parent(), tr("open_recording", self.language).replace(
+            "&", "").rstrip("…"), folder, tr("recording_filter", self.language))
+        if path:
+            self.open(path)
+
+    def open(self, path, quiet: bool = False) -> bool:
+        """Show the timeline of the recording at ``path``. A file that cannot be read is said in a message
+        box (``quiet``: only logged, e.g. after a run) and nothing changes; returns whether it opened."""
+        try:
+            recording = read_recording(path)
+        except RecordingUnreadable as error:
+            if not quiet:
+                box = plain_message_box(self.parent(), QMessageBox.Icon.Warning,
+                                        tr("recording_unreadable", self.language), str(error))
+                box.setObjectName("recording_unreadable_box")
+                box.open()
+            return False
+        self.moments = Moments(recording)
+        self.bar.show_timeline(self.moments.duration, self.moments.markers(),
+                               "" if recording.complete else tr("replay_cut_short", self.language))
+        return True
+
+    def close(self):
+        """Hide the timeline (a run is starting, or another program opens)."""
+        if self.bar.isVisible():
+            self.bar.close_timeline()
+
+    def show_moment(self, seconds: float):
+        """Show the run as it was ``seconds`` after it began."""
+        if self.moments is None:
+            return
+        moment = self.moments.at(seconds)
+        if moment.block != self._shown_block:
+            self._shown_block = moment.block
+            self.editor.call("highlight", {"id": moment.block})
+        self.variables.show_values(moment.variables)
+        if self._badges_wanted():
+            badges = self.moments.badges(seconds)
+            if badges != self._shown_badges:
+                self._shown_badges = badges
+                self.editor.call("setBadges", {"badges": badge_texts(badges, self.language)})
+        view = self.simulator.view
+        if moment.snapshot is not None and view is not None:
+            self.simulator.stop()
+            view.set_snapshot(moment.snapshot)
+
+    def _back_to_live(self):
+        self._shown_block = self._shown_badges = None
+        self.editor.call("highlight", {"id": None})
+        self.simulator.resume()

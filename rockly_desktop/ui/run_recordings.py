@@ -1,0 +1,34 @@
+"""Every run in the window is recorded: in the preferences' folder, the last N kept.
+
+``open_run_recording`` opens the recording of the run about to start (its program is the
+workspace on screen); a recording that cannot be opened (a full disk, a folder that
+cannot be made) never keeps the program from running: the run goes on without one.
+"""
+import logging
+from pathlib import Path
+
+from rockly_desktop.core.program import Program
+from rockly_desktop.core.workspace_blocks import block_types_by_id
+from rockly_desktop.recording.library import keep_last, new_recording_path
+
+log = logging.getLogger(__name__)
+
+
+def open_run_recording(settings, document, workspace: dict, robot):
+    """A started ``RunRecording`` for a window run of ``document`` on ``robot``; None when the preferences
+    keep no recordings, or it cannot be made."""
+    from rockly_desktop.executor.run_recording import RunRecording
+
+    if settings.recordings_kept == 0:
+        return None
+    profile = document.profile
+    name = Path(document.path).name if document.path else "Untitled.rockly"
+    folder = settings.recordings_folder
+    try:
+        keep_last(folder, settings.recordings_kept - 1)  # room for this one
+        program = Program(profile.id, workspace or {}, list(document.breakpoints)).to_json().encode("utf-8")
+        return RunRecording(new_recording_path(folder, name, robot.kind), profile, robot, name, program,
+                            block_types_by_id(workspace or {}), settings.recording_topic_rate)
+    except OSError as error:
+        log.warning("this run is not recorded: %s", error)
+        return None

@@ -1,0 +1,101 @@
+"""Replaying a recorded run in the window (real QtWebEngine + Blockly): every run is recorded, its
+timeline shows under the workspace, and a moment lights the block and shows the values of then."""
+from page_tools import call_page, run_js
+from program_builder import block, number, stack, workspace
+from PySide6.QtWidgets import QMessageBox
+
+from rockly_desktop.recording import channels
+from rockly_desktop.recording.library import recordings_in
+
+
+def highlighted(qtbot, window):
+    return run_js(qtbot, window.editor, "Blockly.getMainWorkspace().getAllBlocks(false)"
+                                        ".filter(b => b.getSvgRoot().classList.contains('blocklyHighlighted'))"
+                                        ".map(b => b.id)")
+
+
+def run_to_the_end(qtbot, window, *blocks, variables=()):
+    ws = workspace(*blocks)
+    ws["variables"] = [{"name": name, "id": name} for name in variables]
+    call_page(qtbot, window.editor, "load", {"workspace": ws})
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=20000) as blocker:
+        assert window.runs.run()
+    return blocker.args[0]
+
+
+def test_a_run_is_recorded_and_its_timeline_replays_block_values_and_robot(qtbot, driver):
+    window = driver.open_window(simulator_speed=2.0)  # the drive lasts about a second: snapshots on the way
+    result = run_to_the_end(qtbot, window, stack(
+        block("variables_set", {"VAR": {"id": "laps"}}, {"VALUE": number(1)}, id="one"),
+        block("hobbit_move", {"direction": "+"}, {"speed": number(1)}, id="drive"),
+        block("variables_set", {"VAR": {"id": "laps"}}, {"VALUE": number(2)}, id="two"),
+        block("hobbit_emo", {"emotion": "HAPPY"}, id="smile")), variables=["laps"])
+    assert result.outcome == "finished"
+    assert recordings_in(window.settings.recordings_folder) == [window.runs.last_recording]
+    bar = window.replay_bar
+    qtbot.waitUntil(bar.isVisible, timeout=5000)
+    assert highlighted(qtbot, window) == []  # nothing is replayed until the person moves the scrubber
+    recording = window.replay.moments.recording
+    final_x = window.robot().snapshot()["x"]
+    on_the_way = next(entry for entry in recording.on(channels.SIMULATOR) if 0.05 < entry.data["x"] < final_x - 0.05)
+
+    bar.jump_to(on_the_way.time + 0.001)  # the scrubber counts whole milliseconds
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=5000)
+    assert window.variables.values() == {"laps": "1"}
+    assert window.simulator_dock.view._snapshot["x"] == on_the_way.data["x"]  # where the robot was then
+    bar.jump_to(bar.duration)
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["smile"], timeout=5000)
+    assert window.variables.values() == {"laps": "2"}
+
+    bar.close_timeline()
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == [], timeout=5000)
+
+
+def test_an_error_is_a_marker_and_a_file_that_is_no_recording_changes_nothing(qtbot, window, tmp_path):
+    result = run_to_the_end(qtbot, window, stack(block("hobbit_head", {"head_position": "up_left"}, id="look"),
+                                                 block("text_print", inputs={"TEXT": block(
+                                                     "math_arithmetic", {"OP": "DIVIDE"},
+                                                     {"A": number(1), "B": number(0)})}, id="divide")))
+    assert result.outcome == "error"
+    qtbot.waitUntil(window.replay_bar.isVisible, timeout=5000)
+    assert [marker.kind for marker in window.replay_bar.markers.markers] == ["error"]
+    shown = window.replay.moments
+
+    not_a_recording = tmp_path / "photo.mcap"
+    not_a_recording.write_bytes(b"\x89PNG not a recording")
+    assert not window.replay.open(not_a_recording)
+    qtbot.waitUntil(lambda: window.findChild(QMessageBox, "recording_unreadable_box") is not None, timeout=5000)
+    box = window.findChild(QMessageBox, "recording_unreadable_box")
+    assert "photo.mcap is not an MCAP recording" in box.text()
+    box.close()
+    assert window.replay.moments is shown and window.replay_bar.isVisible()
+
+
+def badge(qtbot, window, block_id):
+    """The text of the badge on ``block_id`` itself (not on a block nested in it), or None."""
+    return run_js(qtbot, window.editor, f"(Blockly.getMainWorkspace().getBlockById('{block_id}').getSvgRoot()"
+                                        ".querySelector(':scope > .rocklyBadge > .rocklyBadgeText')"
+                                        " || {textContent: null}).textContent")
+
+
+def test_blocks_that_talk_to_the_robot_get_badges_live_and_in_the_replay_not_at_the_starter_level(qtbot, window):
+    info = block("hobbit_show_info", inputs={"text": block("text", {"TEXT": "Hello"})}, id="info")
+    result = run_to_the_end(qtbot, window, stack(block("hobbit_head", {"head_position": "up_left"}, id="look"), info))
+    assert result.outcome == "finished"
+    qtbot.waitUntil(lambda: (badge(qtbot, window, "info") or "").startswith("✓"), timeout=5000)
+    assert badge(qtbot, window, "look") is None  # a publish has no outcome to show
+    assert not window.document.modified
+    state = call_page(qtbot, window.editor, "getState")
+    assert "rockly_badge" not in str(state["workspace"])  # a badge never reaches the program
+
+    window.replay_bar.jump_to(0.0)  # before the call: no badge then
+    qtbot.waitUntil(lambda: badge(qtbot, window, "info") is None, timeout=5000)
+    window.replay_bar.jump_to(window.replay_bar.duration)
+    qtbot.waitUntil(lambda: (badge(qtbot, window, "info") or "").startswith("✓"), timeout=5000)
+
+    window.settings.teacher.set_level("hobbit", "starter")
+    run_to_the_end(qtbot, window, stack(info))
+    qtbot.waitUntil(lambda: badge(qtbot, window, "info") is None, timeout=5000)
+    window.replay_bar.jump_to(0.0)
+    window.replay_bar.jump_to(window.replay_bar.duration)
+    assert badge(qtbot, window, "info") is None
