@@ -45,17 +45,22 @@ class UnknownBlocksError(RocklyError):
 class RobotCommandError(RocklyError):
     """A robot command cannot be done: a bad argument, a failed goal, an unanswered service.
 
-    The message is English; a profile that says it in other languages too passes
-    ``translations`` ({"de": "..."}), and ``in_language`` picks the one a run shows.
+    The message is a text of a catalogue (a ``core.catalogue.LocalText``: the profile's own,
+    from its ``locale/`` folder, or Rockly's), which a run shows in its language; ``str()`` is
+    English. A plain string is shown as it is in every language.
     """
 
-    def __init__(self, *args, translations=None):
-        super().__init__(*args)
-        self.translations = dict(translations or {})
+    def __init__(self, message="", *args):
+        super().__init__(message, *args)
+        self.message = message
+
+    def __str__(self) -> str:
+        return str(self.message) if not self.args[1:] else super().__str__()
 
     def in_language(self, language: str) -> str:
-        """The message in ``language`` when the profile gave one, else the English one."""
-        return self.translations.get(language) or str(self)
+        """The message in ``language`` (English where its catalogue has no translation)."""
+        in_language = getattr(self.message, "in_language", None)
+        return in_language(language) if in_language is not None else str(self)
 
 
 class RobotTimeout(RobotCommandError):

@@ -1,7 +1,6 @@
 """Texts in profile and toolbox files: a plain string, or one text per language."""
 
 DEFAULT_LANGUAGE = "en"
-SUPPORTED_LANGUAGES = ("en", "de")
 
 
 def is_localized(value) -> bool:

@@ -1,6 +1,7 @@
 """A tablet that answers from a list given on the command line (``rockly run``/``rockly sim --answer``)."""
 import threading
 
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.robot.tablet import TabletQuestion
 
@@ -31,7 +32,7 @@ class AnswerList:
         elif question == TabletQuestion.OK:
             return ""
         elif answer is None:
-            raise RobotCommandError(f"the program asks on the tablet {text!r}, but no --answer is left for it")
+            raise RobotCommandError(app_local_text("answer_list_empty", text=repr(text)))
         self._out(f"answer  {answer!r}")
         return answer
 
