@@ -8,6 +8,7 @@
     (``rockly plugins ...`` is the older name of ``rockly profiles ...`` and still works)
     rockly export PROGRAM -o OUT.py     write the Python generated from a program (-o -: to standard output)
     rockly run PROGRAM [--answer A]...  run a program on the simulator, without a window
+    (export and run take --language en|de: the blocks' texts and every message; default: the app's language)
     rockly sim PROFILE --ros            the profile's simulated robot as a ROS 1 node, in a small window
 """
 import argparse
@@ -40,7 +41,7 @@ def _tool_parser() -> argparse.ArgumentParser:
     export.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
     export.add_argument("-o", "--output", type=Path, required=True,
                         help="the .py file to write (- for standard output)")
-    export.add_argument("--language", default="en", choices=("en", "de"))
+    _language_option(export)
 
     run = commands.add_parser("run", help="run a program without a window")
     run.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
@@ -50,6 +51,7 @@ def _tool_parser() -> argparse.ArgumentParser:
     run.add_argument("--answer", action="append", default=[],
                      help="an answer for the next tablet question (repeatable)")
     run.add_argument("--speed", type=float, default=1.0, help="simulated time runs this many times faster")
+    _language_option(run)
 
     sim = commands.add_parser("sim", help="run a profile's simulated robot as a ROS 1 node, in a small window")
     sim.add_argument("profile", help="the robot profile id (see rockly profiles list)")
@@ -62,6 +64,20 @@ def _tool_parser() -> argparse.ArgumentParser:
                      help="run without the window showing the robot and its tablet (servers, CI): "
                           "tablet questions are then answered only from --answer")
     return parser
+
+
+def _language_option(parser):
+    from rockly_desktop.core.app_texts import app_text, languages
+
+    parser.add_argument("--language", choices=languages(),
+                        help=app_text("cli_language_help", "en"))
+
+
+def _app_language() -> str:
+    """The language chosen in the app's settings (Preferences)."""
+    from rockly_desktop.ui.settings import AppSettings
+
+    return AppSettings().language
 
 
 def _gui_parser() -> argparse.ArgumentParser:
@@ -130,6 +146,7 @@ def _profiles_reference() -> int:
 
 def _export(program_path: Path, output: Path, language: str) -> int:
     from rockly_desktop.app import generate_headless
+    from rockly_desktop.core.app_texts import app_text
     from rockly_desktop.core.errors import RocklyError
     from rockly_desktop.core.export import python_module_text
     from rockly_desktop.core.program import write_text_atomically
@@ -138,8 +155,8 @@ def _export(program_path: Path, output: Path, language: str) -> int:
     to_stdout = str(output) == "-" or _is_standard_output(output)
     try:
         program, python, _run_code, _workspace = generate_headless(program_path, language)
-        for warning in opening_warnings(program):
-            print(f"rockly export: warning: {warning}", file=sys.stderr)
+        for warning in opening_warnings(program, language):
+            print(app_text("cli_warning", language, command="rockly export", warning=warning), file=sys.stderr)
         text = python_module_text(python, program.profile.id, program_path.name)
         if to_stdout:
             sys.stdout.write(text)
@@ -147,10 +164,10 @@ def _export(program_path: Path, output: Path, language: str) -> int:
         else:
             write_text_atomically(output, text)
     except RocklyError as error:
-        print(f"rockly export: {error}", file=sys.stderr)
+        print(f"rockly export: {error.in_language(language)}", file=sys.stderr)
         return 1
     if not to_stdout:
-        print(f"Wrote {output}")
+        print(app_text("cli_wrote", language, path=output))
     return 0
 
 
@@ -181,12 +198,13 @@ def main(argv=None) -> int:
         if args.command == "run":
             from rockly_desktop.run_command import run_program
 
-            return run_program(args.program, args.answer, args.speed, backend=args.backend, master_uri=args.master)
+            return run_program(args.program, args.answer, args.speed, args.language or _app_language(),
+                               backend=args.backend, master_uri=args.master)
         if args.command == "sim":
             from rockly_desktop.sim_command import serve_simulator
 
             return serve_simulator(args.profile, args.master, args.speed, args.answer, window=args.window)
-        return _export(args.program, args.output, args.language)
+        return _export(args.program, args.output, args.language or _app_language())
     args = _gui_parser().parse_args(argv)
     from rockly_desktop.app import run_gui
 

@@ -18,12 +18,12 @@ from rockly_desktop.core.catalogue import Catalogue as Texts
 from rockly_desktop.core.catalogue import LocalText
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
 from rockly_desktop.core.state_store import field_value
+from rockly_desktop.profiles.manifest import MANIFEST_NAME
 from rockly_desktop.robot.commands import RobotCommands
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
 from rockly_desktop.robot.simulator import RobotSimulator, twist_velocity
 from rockly_desktop.robot.snapshot_values import as_number, as_point, as_points, with_defaults
 from rockly_desktop.robot.tablet import TabletQuestion
-from rockly_desktop.profiles.manifest import MANIFEST_NAME
 from rockly_desktop.robot.world_map import Obstacle, World, load_world
 
 __all__ = [

@@ -1,8 +1,16 @@
-"""Errors a user can be shown as they are: each message says what is wrong and where."""
+"""Errors a user can be shown as they are: each message says what is wrong and where.
+
+``str()`` is English; ``in_language(language)`` says it in the language a person reads.
+"""
+from rockly_desktop.core.app_texts import app_local_text
 
 
 class RocklyError(Exception):
     """Base of every error Rockly reports to a person in plain words."""
+
+    def in_language(self, language: str) -> str:
+        """The message in ``language``: errors whose words come from a catalogue override this."""
+        return str(self)
 
 
 class ProgramFileError(RocklyError):
@@ -10,8 +18,13 @@ class ProgramFileError(RocklyError):
 
     def __init__(self, path, problem):
         self.path = str(path)
-        self.problem = problem
+        self.problem = problem  # a plain text or a catalogue's LocalText
         super().__init__(f"{self.path}: {problem}")
+
+    def in_language(self, language: str) -> str:
+        """``path: problem`` with the problem in ``language`` when it comes from a catalogue."""
+        in_language = getattr(self.problem, "in_language", None)
+        return f"{self.path}: {in_language(language)}" if in_language is not None else str(self)
 
 
 class ManifestError(RocklyError):
@@ -32,14 +45,18 @@ class UnknownBlocksError(RocklyError):
         self.block_types = sorted(block_types)
         self.profile_id = profile_id
         self.profile_installed = profile_installed
-        listed = ", ".join(self.block_types)
         if profile_id is None:
-            hint = "Install the robot profile that provides them, then open the program again."
+            hint = app_local_text("unknown_blocks_install")
         elif profile_installed:
-            hint = f"The robot profile '{profile_id}' does not provide them; a newer version of it may."
+            hint = app_local_text("unknown_blocks_newer", profile=profile_id)
         else:
-            hint = f"It was made for the robot profile '{profile_id}', which is not installed."
-        super().__init__(f"This program uses blocks that no installed profile knows: {listed}. {hint}")
+            hint = app_local_text("unknown_blocks_not_installed", profile=profile_id)
+        self.message = app_local_text("unknown_blocks", blocks=", ".join(self.block_types), hint=hint)
+        super().__init__(str(self.message))
+
+    def in_language(self, language: str) -> str:
+        """The message in ``language``."""
+        return self.message.in_language(language)
 
 
 class RobotCommandError(RocklyError):

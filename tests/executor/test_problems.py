@@ -109,12 +109,12 @@ def test_robot_errors_keep_the_profiles_text_inside_a_translated_frame():
         raise RobotTimeout("the arm did not answer within 30 s")
 
     # a plain text is shown as it is (German starts the sentence after the colon with a capital)
-    for language, frame, timeout, first in (("en", "The robot could not do this: ", "The robot did not answer in time: ",
-                                             "t"),
-                                            ("de", "Das konnte der Roboter nicht tun: ",
-                                             "Der Roboter hat nicht rechtzeitig geantwortet: ", "T")):
+    for language, frame, timeout, first in (
+            ("en", "The robot could not do this: ", "The robot did not answer in time: ", "t"),
+            ("de", "Das konnte der Roboter nicht tun: ", "Der Roboter hat nicht rechtzeitig geantwortet: ", "T")):
         result, _events = run("__rockly__.block('drive')\nrobot_drive()\n", language, namespace={"robot_drive": refuse})
-        assert (result.block_id, result.message) == ("drive", frame + first + "he field linear.x needs a number, not 'fast'")
+        detail = first + "he field linear.x needs a number, not 'fast'"
+        assert (result.block_id, result.message) == ("drive", frame + detail)
         result, _events = run("robot_arm()\n", language, namespace={"robot_arm": silent})
         assert result.message == timeout + first + "he arm did not answer within 30 s"
 

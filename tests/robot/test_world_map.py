@@ -17,7 +17,8 @@ obstacles:
   - {id: pot, name: the_pot, circle: [3, 2.5, 0.2]}
   - {id: wedge, name: the wedge, polygon: [[0, 2], [0.5, 3], [0, 3]]}
 """
-NAMES = {"the_wall": ("the wall", "die Wand"), "the_table": ("the table", "den Tisch"), "the_pot": ("the pot", "den Topf")}
+NAMES = {"the_wall": ("the wall", "die Wand"), "the_table": ("the table", "den Tisch"),
+         "the_pot": ("the pot", "den Topf")}
 
 
 def write_catalogue(folder, names):

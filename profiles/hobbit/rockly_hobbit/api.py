@@ -319,7 +319,8 @@ class Hobbit(RobotCommands):
                 "joints": [{"joint_values": vector} for vector in joints]}
         outcome = self.backend.send_goal(ARM_ACTION, ARM_ACTION_TYPE, goal).wait(MOTION_TIMEOUT)
         if outcome.status is not GoalStatus.SUCCEEDED:
-            raise RobotCommandError(TEXTS("arm_failed", command=command, status=TEXTS(f"status_{outcome.status.value}")))
+            status = TEXTS(f"status_{outcome.status.value}")
+            raise RobotCommandError(TEXTS("arm_failed", command=command, status=status))
 
     def _tablet(self, dialog_type, text, timeout=DIALOG_TIMEOUT):
         params = [{"name": "type", "value": dialog_type}, {"name": "text", "value": str(text)},

@@ -150,7 +150,8 @@ class TurtleBot(RobotCommands):
 
     def turn(self, angle, direction="left"):
         """Turn on the spot by ``angle`` degrees, ``'left'`` (counter-clockwise) or ``'right'``; waits until done."""
-        radians = math.radians(self.number(angle, TEXTS("the_angle"))) * self.choose(direction, TURN_DIRECTIONS, TEXTS("direction"))
+        radians = math.radians(self.number(angle, TEXTS("the_angle")))
+        radians *= self.choose(direction, TURN_DIRECTIONS, TEXTS("direction"))
         self._move("turn", radians)
 
     def drive_for(self, speed, seconds):
