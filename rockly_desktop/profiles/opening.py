@@ -12,7 +12,7 @@ from the page's answer). ``opening_warnings`` words both for the command line.
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from rockly_desktop.core.app_texts import app_text
+from rockly_desktop.core.app_texts import app_local_text, app_text
 from rockly_desktop.core.errors import ProgramFileError, UnknownBlocksError
 from rockly_desktop.core.program import load_program, read_text_file
 from rockly_desktop.core.workspace_blocks import (
@@ -114,18 +114,17 @@ def read_program_to_open(path, registry: ProfileRegistry, fallback: Profile) -> 
 
 def _refuse_too_deep(path, depth: int):
     if depth > MAX_BLOCK_DEPTH:
-        raise ProgramFileError(path, f"the program has {depth:,} blocks inside or under one another; Rockly's "
-                                     f"editor takes up to {MAX_BLOCK_DEPTH:,} (split long stacks into functions)")
+        raise ProgramFileError(path, app_local_text("file_too_deep", depth=depth, limit=MAX_BLOCK_DEPTH))
 
 
 def _refuse_untyped(path, number):
     if number is not None:
-        raise ProgramFileError(path, f"the file is broken: block {number} has no type")
+        raise ProgramFileError(path, app_local_text("file_broken_no_type", number=number))
 
 
 def _refuse_broken(path, problem):
     if problem is not None:
-        raise ProgramFileError(path, f"the file is broken: {problem}")
+        raise ProgramFileError(path, app_local_text("file_broken", problem=problem))
 
 
 def unknown_blocks_error(program: ProgramToOpen, unknown_types, registry: ProfileRegistry) -> UnknownBlocksError:
