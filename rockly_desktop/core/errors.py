@@ -18,12 +18,13 @@ class ProgramFileError(RocklyError):
 
     def __init__(self, path, problem):
         self.path = str(path)
-        self.problem = problem  # a plain text or a catalogue's LocalText
+        self.problem = str(problem)  # English
+        self._problem = problem      # a plain text or a catalogue's LocalText
         super().__init__(f"{self.path}: {problem}")
 
     def in_language(self, language: str) -> str:
         """``path: problem`` with the problem in ``language`` when it comes from a catalogue."""
-        in_language = getattr(self.problem, "in_language", None)
+        in_language = getattr(self._problem, "in_language", None)
         return f"{self.path}: {in_language(language)}" if in_language is not None else str(self)
 
 
