@@ -8,6 +8,10 @@ translation is used only while its ``msgid`` is the current English text and it 
 marked fuzzy (what ``msgmerge`` does to a changed text): otherwise the English one is shown,
 as gettext does. Read with the standard library only (no compiled ``.mo`` files).
 
+An entry without a ``msgctxt`` translates a text that is written in English where it is
+used, by its ``msgid`` (``translate``): how a profile's ``.po`` file gives a language its
+YAML (blocks, toolbox, manifest) does not spell out.
+
 ``LocalText`` is a text not yet put into a language (a robot command's error, an obstacle's
 name): ``str()`` gives English, ``in_language(language)`` any other; values that are
 ``LocalText`` themselves are put into the same language.
@@ -25,7 +29,7 @@ TEMPLATE = "messages.pot"
 class Entry:
     """One entry of a .po file: its key (msgctxt), English (msgid), translation (msgstr), fuzzy or not."""
 
-    key: str
+    key: str                # None for an entry without msgctxt
     english: str
     translation: str
     fuzzy: bool = False
@@ -33,12 +37,17 @@ class Entry:
 
 def read_po(path) -> dict:
     """The entries of the .po (or .pot) file ``path`` by key; the header and entries without a key are left out."""
-    entries, current, flags, last = {}, {}, set(), None
+    return {entry.key: entry for entry in read_po_entries(path) if entry.key is not None}
+
+
+def read_po_entries(path) -> list:
+    """Every entry of the .po (or .pot) file ``path`` but the header (``key`` None: no msgctxt)."""
+    entries, current, flags, last = [], {}, set(), None
 
     def finish():
-        key = current.get("msgctxt")
-        if key is not None and "msgid" in current:
-            entries[key] = Entry(key, current["msgid"], current.get("msgstr", ""), "fuzzy" in flags)
+        if current.get("msgid") or current.get("msgctxt") is not None:
+            entries.append(Entry(current.get("msgctxt"), current.get("msgid", ""), current.get("msgstr", ""),
+                                 "fuzzy" in flags))
 
     for number, line in enumerate(Path(path).read_text(encoding="utf-8").splitlines(), start=1):
         line = line.strip()
@@ -74,6 +83,7 @@ class Catalogue:
     def __init__(self, folder):
         self.folder = Path(folder)
         self._languages = {}
+        self._by_english = {}
 
     @property
     def languages(self) -> tuple:
@@ -83,10 +93,23 @@ class Catalogue:
 
     def entries(self, language: str = ENGLISH) -> dict:
         """The raw entries of ``language``'s file by key (the template's for English; empty when none)."""
-        if language not in self._languages:
-            path = self.folder / (TEMPLATE if language == ENGLISH else f"{language}.po")
-            self._languages[language] = read_po(path) if path.is_file() else {}
+        self._read(language)
         return self._languages[language]
+
+    def translate(self, english: str, language: str):
+        """The translation of the English text ``english`` into ``language`` by an entry without
+        msgctxt (not fuzzy), or None."""
+        self._read(language)
+        return self._by_english[language].get(english)
+
+    def _read(self, language: str):
+        if language in self._languages:
+            return
+        path = self.folder / (TEMPLATE if language == ENGLISH else f"{language}.po")
+        entries = read_po_entries(path) if path.is_file() else []
+        self._by_english[language] = {entry.english: entry.translation for entry in entries
+                                      if entry.key is None and entry.translation and not entry.fuzzy}
+        self._languages[language] = {entry.key: entry for entry in entries if entry.key is not None}
 
     def __contains__(self, key: str) -> bool:
         return key in self.entries()
