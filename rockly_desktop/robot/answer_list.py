@@ -23,7 +23,8 @@ class AnswerList:
     def ask(self, question: TabletQuestion, text, timeout, interrupt) -> str:
         """Take the next answer (an OK question needs none while answers are left); when none
         is left, ask ``then`` (OK questions included) or fail clearly."""
-        self._out(app_text("cli_tablet", self._language, kind=TabletQuestion(question).value, text=repr(text)))
+        kind = app_text(f"cli_kind_{TabletQuestion(question).value}", self._language)
+        self._out(app_text("cli_tablet", self._language, kind=kind, text=repr(text)))
         with self._lock:
             left = bool(self._answers)
             answer = self._answers.pop(0) if left and question != TabletQuestion.OK else None
