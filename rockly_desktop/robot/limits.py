@@ -9,7 +9,7 @@ their manifest. Reading (subscribe, latest, waits) and cancelling always pass.
 import math
 from dataclasses import dataclass
 
-from rockly_desktop.core.app_texts import app_text
+from rockly_desktop.core.app_texts import app_local_text, app_text
 from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.robot.interface import RobotBackend
 
@@ -95,7 +95,7 @@ class LimitedBackend(RobotBackend):
     def _refuse(self, kind: str, name: str):
         capability = self._blocked.get((kind, _ros_name(name)))
         if capability is not None:
-            raise RobotCommandError(_text("switched_off", self._language, name=capability))
+            raise RobotCommandError(app_local_text("limit_switched_off", name=capability))
 
     def _tell_once(self, key: str, **values):
         if key not in self._noted and self.note is not None:
