@@ -133,3 +133,23 @@ def test_the_check_finds_english_in_german():
     assert english_words_in("Das konnte der Roboter nicht tun: the distance must be a number") == [
         "the", "distance", "must", "be", "a", "number"]
     assert english_words_in("Die Strecke muss eine Zahl sein, nicht 'ten'") == []
+
+
+def _profile_code(profile):
+    """The profile's commands and what they say about its world (sim.py's own tablet errors are not yet here)."""
+    package = REPO / "profiles" / profile / f"rockly_{profile}"
+    return [(path, ast.parse(path.read_text(encoding="utf-8"))) for path in sorted(package.glob("*.py"))
+            if path.name != "sim.py"]
+
+
+def test_the_profiles_command_errors_are_texts_of_their_catalogues():
+    for profile in PROFILES:
+        catalogue = Catalogue(REPO / "profiles" / profile / "locale")
+        for path, tree in _profile_code(profile):
+            for call in (node for node in ast.walk(tree) if isinstance(node, ast.Call)):
+                name = getattr(call.func, "id", None)
+                if name in ("RobotCommandError", "RobotTimeout") and call.args:
+                    assert not isinstance(call.args[0], (ast.Constant, ast.JoinedStr)), \
+                        f"{path.name}:{call.lineno}: an English-only error"
+                if name == "TEXTS" and call.args and isinstance(call.args[0], ast.Constant):
+                    assert call.args[0].value in catalogue, f"{path.name}:{call.lineno}: {call.args[0].value}"
