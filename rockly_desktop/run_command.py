@@ -49,7 +49,7 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
         from rockly_desktop.robot.ros1.connection import address_problem_text
 
         print(app_text("cli_warning", language, command="rockly run",
-                       warning=address_problem_text(connection.address_problem)), file=sys.stderr)
+                       warning=address_problem_text(connection.address_problem, language)), file=sys.stderr)
     control = RunControl(trace=True)
 
     def report(event):
