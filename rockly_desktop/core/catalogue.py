@@ -19,6 +19,7 @@ name): ``str()`` gives English, ``in_language(language)`` any other; values that
 import ast
 import string
 from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
 
 ENGLISH = "en"
@@ -85,9 +86,9 @@ class Catalogue:
         self._languages = {}
         self._by_english = {}
 
-    @property
+    @cached_property
     def languages(self) -> tuple:
-        """English and every language with a ``.po`` file here."""
+        """English and every language with a ``.po`` file here (looked for once)."""
         found = sorted(path.stem for path in self.folder.glob("*.po"))
         return (ENGLISH, *(language for language in found if language != ENGLISH))
 
