@@ -149,6 +149,7 @@ def generate_headless(program_path, language: str = "en"):
     if not os.environ.get("QT_QPA_PLATFORM"):
         os.environ["QT_QPA_PLATFORM"] = "offscreen"  # no window: works over ssh and in CI
     from rockly_desktop.bridge.headless import HeadlessEditor, UnknownBlocks
+    from rockly_desktop.core.app_texts import app_text
     from rockly_desktop.core.errors import RocklyError
     from rockly_desktop.profiles.opening import read_program_to_open, unknown_blocks_error
     from rockly_desktop.profiles.registry import ProfileRegistry
@@ -156,7 +157,7 @@ def generate_headless(program_path, language: str = "en"):
     create_application()
     registry = ProfileRegistry.discover()
     if not registry.profiles:
-        raise RocklyError("no robot profile is installed")
+        raise RocklyError(app_text("cli_no_profile", language))
     program = read_program_to_open(program_path, registry, registry.default())
     editor = HeadlessEditor(language)
     try:
@@ -166,7 +167,7 @@ def generate_headless(program_path, language: str = "en"):
     except UnknownBlocks as refused:
         raise unknown_blocks_error(program, refused.block_types, registry) from None
     except RuntimeError as error:
-        raise RocklyError(f"{program_path}: the editor could not load this program ({error})") from None
+        raise RocklyError(app_text("cli_editor_refused", language, path=program_path, error=error)) from None
     finally:
         editor.close()
     return program, python, run_code, workspace

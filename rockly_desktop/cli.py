@@ -8,6 +8,7 @@
     (``rockly plugins ...`` is the older name of ``rockly profiles ...`` and still works)
     rockly export PROGRAM -o OUT.py     write the Python generated from a program (-o -: to standard output)
     rockly run PROGRAM [--answer A]...  run a program on the simulator (or --backend KIND), without a window
+    (export and run take --language en|de: the blocks' texts and every message; default: the app's language)
     rockly sim PROFILE --ros            the profile's simulated robot as a ROS 1 node, in a small window
     rockly run PROGRAM --record OUT.mcap  ... and record the run
     rockly replay RECORDING.mcap        print a recorded run's timeline (block, time, outcome)
@@ -48,7 +49,7 @@ def _tool_parser() -> argparse.ArgumentParser:
     export.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
     export.add_argument("-o", "--output", type=Path, required=True,
                         help="the .py file to write (- for standard output)")
-    export.add_argument("--language", default="en", choices=("en", "de"))
+    _language_option(export)
 
     run = commands.add_parser("run", help="run a program without a window")
     run.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
@@ -60,6 +61,7 @@ def _tool_parser() -> argparse.ArgumentParser:
                      help="an answer for the next tablet question (repeatable)")
     run.add_argument("--speed", type=float, default=1.0, help="simulated time runs this many times faster")
     run.add_argument("--record", type=Path, metavar="OUT.mcap", help="record the run to this MCAP file")
+    _language_option(run)
 
     replay = commands.add_parser("replay", help="print a recorded run's timeline")
     replay.add_argument("recording", type=Path, help="an .mcap file Rockly recorded")
@@ -105,6 +107,20 @@ def _connection(kind: str, args) -> dict:
 
     return {setting.name: getattr(args, _option_dest(setting)) for setting in links.link_kind(kind).settings
             if setting.option}
+
+
+def _language_option(parser):
+    from rockly_desktop.core.app_texts import app_text, languages
+
+    parser.add_argument("--language", choices=languages(),
+                        help=app_text("cli_language_help", "en"))
+
+
+def _app_language() -> str:
+    """The language chosen in the app's settings (Preferences)."""
+    from rockly_desktop.ui.settings import AppSettings
+
+    return AppSettings().language
 
 
 def _gui_parser() -> argparse.ArgumentParser:
@@ -173,6 +189,7 @@ def _profiles_reference() -> int:
 
 def _export(program_path: Path, output: Path, language: str) -> int:
     from rockly_desktop.app import generate_headless
+    from rockly_desktop.core.app_texts import app_text
     from rockly_desktop.core.errors import RocklyError
     from rockly_desktop.core.export import python_module_text
     from rockly_desktop.core.program import write_text_atomically
@@ -181,8 +198,8 @@ def _export(program_path: Path, output: Path, language: str) -> int:
     to_stdout = str(output) == "-" or _is_standard_output(output)
     try:
         program, python, _run_code, _workspace = generate_headless(program_path, language)
-        for warning in opening_warnings(program):
-            print(f"rockly export: warning: {warning}", file=sys.stderr)
+        for warning in opening_warnings(program, language):
+            print(app_text("cli_warning", language, command="rockly export", warning=warning), file=sys.stderr)
         text = python_module_text(python, program.profile.id, program_path.name)
         if to_stdout:
             sys.stdout.write(text)
@@ -190,10 +207,10 @@ def _export(program_path: Path, output: Path, language: str) -> int:
         else:
             write_text_atomically(output, text)
     except RocklyError as error:
-        print(f"rockly export: {error}", file=sys.stderr)
+        print(f"rockly export: {error.in_language(language)}", file=sys.stderr)
         return 1
     if not to_stdout:
-        print(f"Wrote {output}")
+        print(app_text("cli_wrote", language, path=output))
     return 0
 
 
@@ -224,7 +241,8 @@ def main(argv=None) -> int:
         if args.command == "run":
             from rockly_desktop.run_command import run_program
 
-            return run_program(args.program, args.answer, args.speed, backend=args.backend,
+            return run_program(args.program, args.answer, args.speed, args.language or _app_language(),
+                               backend=args.backend,
                                connection=_connection(args.backend, args), record=args.record)
         if args.command in ("replay", "recordings"):
             from rockly_desktop.recording_command import list_recordings, replay
@@ -235,7 +253,7 @@ def main(argv=None) -> int:
 
             return serve_simulator(args.profile, args.serve_on, _connection(args.serve_on, args), args.speed,
                                    args.answer, window=args.window)
-        return _export(args.program, args.output, args.language)
+        return _export(args.program, args.output, args.language or _app_language())
     args = _gui_parser().parse_args(argv)
     from rockly_desktop.app import run_gui
 

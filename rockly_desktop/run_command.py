@@ -3,10 +3,12 @@
 Prints one line per block it enters (id and type) and what the program prints; tablet
 questions are answered from ``--answer`` options in the order they come. Ctrl+C stops
 the program (with the robot's safe stop). Exit status: 0 finished, 1 error, 130 stopped.
+Every line it prints is in ``language`` (Rockly's catalogue, keys ``cli_*``).
 """
 import signal
 import sys
 
+from rockly_desktop.core.app_texts import app_text
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.workspace_blocks import block_types_by_id
 from rockly_desktop.executor.control import RunControl
@@ -27,33 +29,38 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
     from rockly_desktop.app import generate_headless
     from rockly_desktop.profiles.opening import opening_warnings
 
+    def fail(error):
+        print(f"rockly run: {error.in_language(language)}", file=sys.stderr)
+        return 1
+
     try:
         program, _python, run_code, workspace = generate_headless(program_path, language)
     except RocklyError as error:
-        print(f"rockly run: {error}", file=sys.stderr)
-        return 1
-    for warning in opening_warnings(program):
-        print(f"rockly run: warning: {warning}", file=sys.stderr)
+        return fail(error)
+    for warning in opening_warnings(program, language):
+        print(app_text("cli_warning", language, command="rockly run", warning=warning), file=sys.stderr)
     types = block_types_by_id(workspace)
     try:
-        robot = open_link(backend, program.profile, connection, tablet=AnswerList(answers, out), speed=speed)
+        robot = open_link(backend, program.profile, connection,
+                          tablet=AnswerList(answers, out, language=language), speed=speed)
     except RocklyError as error:
-        print(f"rockly run: {error}", file=sys.stderr)
-        return 1
+        return fail(error)
     for warning in robot.warnings():
-        print(f"rockly run: warning: {warning}", file=sys.stderr)
+        print(app_text("cli_warning", language, command="rockly run",
+                       warning=app_text(f"ros_{warning.reason}", language, **warning.values)), file=sys.stderr)
     control = RunControl(trace=True)
 
     def report(event):
         if isinstance(event, BlockEntered):
-            out(f"block   {event.block_id}  {types.get(event.block_id, '?')}")
+            out(app_text("cli_block", language, id=event.block_id, type=types.get(event.block_id, "?")))
         elif isinstance(event, OutputPrinted):
-            out(f"print   {event.text}")
+            out(app_text("cli_print", language, text=event.text))
 
     try:
         recording = _recording(record, program_path, program.profile, robot, types)
     except OSError as error:
-        print(f"rockly run: cannot record to {record}: {error.strerror or error}", file=sys.stderr)
+        print(app_text("cli_cannot_record", language, command="rockly run", path=record,
+                       reason=error.strerror or error), file=sys.stderr)
         robot.shutdown()
         return 1
     previous = signal.signal(signal.SIGINT, lambda *_: control.request_stop())
@@ -61,14 +68,13 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
         result = make_runner(program.profile, robot, run_code, control, report, language,
                              recording=recording).run()
     except RocklyError as error:  # the profile's commands could not be made
-        print(f"rockly run: {error}", file=sys.stderr)
-        return 1
+        return fail(error)
     finally:
         signal.signal(signal.SIGINT, previous)
         if recording is not None:
             recording.close()
         robot.shutdown()
-    return _report_end(result, types)
+    return _report_end(result, types, language)
 
 
 def _recording(record, program_path, profile, robot, types):
@@ -83,13 +89,17 @@ def _recording(record, program_path, profile, robot, types):
     return RunRecording(record, profile, robot, program_path.name, program, types)
 
 
-def _report_end(result: RunFinished, types: dict) -> int:
+def _report_end(result: RunFinished, types: dict, language: str) -> int:
     if result.outcome == "finished":
-        print("finished")
+        print(app_text("cli_finished", language))
         return 0
     if result.outcome == "stopped":
-        print("stopped (the robot was stopped safely)")
+        print(app_text("cli_stopped", language))
         return EXIT_STOPPED
-    where = f"block {result.block_id} ({types.get(result.block_id, '?')})" if result.block_id else "the program"
-    print(f"error in {where}: {result.message}", file=sys.stderr)
+    if result.block_id:
+        text = app_text("cli_error_in_block", language, id=result.block_id, type=types.get(result.block_id, "?"),
+                        message=result.message)
+    else:
+        text = app_text("cli_error_in_program", language, message=result.message)
+    print(text, file=sys.stderr)
     return 1

@@ -9,10 +9,18 @@ simulator declares its solid world as data (``World``, ``load_world``: walls and
 footprint cannot enter, which its laser sees) and restores its start with ``reset()``. What a
 laser sees in a direction ("ahead": a sector, ``AHEAD_HALF_WIDTH`` each side) is ``nearest_in_scan``
 (``nearest_reading`` for bare ranges), the same for commands, views and the Robot state panel.
+Its words are its own gettext catalogue (``profile_texts(__file__)``: ``locale/messages.pot`` in
+English and ``locale/LANG.po`` beside its profile.yaml); an error raised with one of them,
+``RobotCommandError(TEXTS("key", value=...))``, is shown in the run's language.
 Nothing here imports Qt; a view's drawing helpers are in ``rockly_desktop.sdk_view``.
 """
+from pathlib import Path
+
+from rockly_desktop.core.catalogue import Catalogue as Texts
+from rockly_desktop.core.catalogue import LocalText
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
 from rockly_desktop.core.state_store import field_value
+from rockly_desktop.profiles.manifest import MANIFEST_NAME
 from rockly_desktop.robot.commands import RobotCommands
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
 from rockly_desktop.robot.laser import AHEAD_HALF_WIDTH, nearest_in_scan, nearest_reading
@@ -22,7 +30,17 @@ from rockly_desktop.robot.tablet import TabletQuestion
 from rockly_desktop.robot.world_map import Obstacle, World, load_world
 
 __all__ = [
-    "AHEAD_HALF_WIDTH", "GoalHandle", "GoalOutcome", "GoalStatus", "Obstacle", "RobotBackend", "RobotCommandError",
-    "World", "RobotCommands", "RobotSimulator", "RobotTimeout", "TabletQuestion", "as_number", "as_point", "as_points",
-    "field_value", "load_world", "nearest_in_scan", "nearest_reading", "twist_velocity", "with_defaults",
+    "AHEAD_HALF_WIDTH", "GoalHandle", "GoalOutcome", "GoalStatus", "LocalText", "Obstacle", "RobotBackend",
+    "RobotCommandError", "World", "RobotCommands", "RobotSimulator", "RobotTimeout", "TabletQuestion", "Texts",
+    "as_number", "as_point", "as_points", "field_value", "load_world", "nearest_in_scan", "nearest_reading",
+    "profile_texts", "twist_velocity", "with_defaults",
 ]
+
+
+def profile_texts(module_file) -> Texts:
+    """The catalogue of the profile a module belongs to (pass its ``__file__``): the ``locale/``
+    folder beside the nearest profile.yaml above it (``messages.pot``, ``de.po``, ...)."""
+    for folder in Path(module_file).resolve().parents:
+        if (folder / MANIFEST_NAME).is_file():
+            return Texts(folder / "locale")
+    raise FileNotFoundError(f"no {MANIFEST_NAME} above {module_file}")

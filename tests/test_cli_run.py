@@ -1,5 +1,6 @@
 """``rockly run``: programs run headless on the simulator, as a user runs them (a real process)."""
 import json
+import os
 import signal
 import subprocess
 import sys
@@ -149,3 +150,50 @@ def test_a_block_without_a_type_is_a_broken_file_not_an_unknown_block(tmp_path):
     result = rockly_run(path)
     assert result.returncode == 1
     assert "the file is broken: block 2 has no type" in result.stderr and "undefined" not in result.stderr
+
+
+def distance_program(tmp_path, value="ten"):
+    """A program that prints a greeting, then drives a text distance (a robot error on block 'bad')."""
+    distance = block("variables_get", {"VAR": {"id": "d"}})
+    ws_blocks = stack(block("text_print", inputs={"TEXT": text("hi")}, id="hello"),
+                      block("variables_set", {"VAR": {"id": "d"}}, {"VALUE": text(value)}, id="fine"),
+                      block("hobbit_move", {"direction": "+"}, {"speed": distance}, id="bad"))
+    document = json.loads(rockly_document([ws_blocks]))
+    document["workspace"]["variables"] = [{"name": "distance", "id": "d"}]
+    path = tmp_path / "distance.rockly"
+    path.write_text(json.dumps(document))
+    return path
+
+
+GERMAN_ERROR = ("Fehler in Block bad (hobbit_move): Das konnte der Roboter nicht tun: "
+                "Die Strecke muss eine Zahl sein, nicht 'ten'")
+
+
+def test_language_de_says_everything_in_german_the_profiles_errors_too(tmp_path):
+    result = rockly_run(distance_program(tmp_path), "--language", "de", "--speed", "50")
+    assert result.returncode == 1
+    assert "Block   hello  text_print" in result.stdout and "Ausgabe hi" in result.stdout
+    assert result.stderr.strip() == GERMAN_ERROR
+
+
+def test_without_language_the_language_chosen_in_the_app_is_used(tmp_path):
+    config = tmp_path / "config"
+    (config / "Rockly").mkdir(parents=True)
+    (config / "Rockly" / "Rockly.conf").write_text("[General]\nlanguage=de\n", encoding="utf-8")
+    environment = {**os.environ, "XDG_CONFIG_HOME": str(config)}
+    ran = subprocess.run([sys.executable, "-m", "rockly_desktop", "run", str(distance_program(tmp_path)), "--speed",
+                          "50"], capture_output=True, text=True, timeout=120, cwd=REPO, env=environment)
+    assert ran.stderr.strip() == GERMAN_ERROR
+    english = rockly_run(distance_program(tmp_path), "--language", "en", "--speed", "50")
+    assert english.stderr.strip() == ("error in block bad (hobbit_move): The robot could not do this: "
+                                      "the distance must be a number, not 'ten'")
+    exported = subprocess.run([sys.executable, "-m", "rockly_desktop", "export", str(distance_program(tmp_path)),
+                               "-o", str(tmp_path / "out.py")], capture_output=True, text=True, timeout=120,
+                              cwd=REPO, env=environment)
+    assert exported.returncode == 0 and exported.stdout == f"Geschrieben: {tmp_path / 'out.py'}\n"
+
+
+def test_a_missing_file_is_explained_in_german(tmp_path):
+    result = rockly_run(tmp_path / "nowhere.rockly", "--language", "de")
+    assert result.returncode == 1
+    assert result.stderr == f"rockly run: {tmp_path / 'nowhere.rockly'}: Die Datei gibt es nicht\n"

@@ -1,4 +1,6 @@
-"""Every example program runs headless to its end on its robot's simulator."""
+"""Every example program runs headless to its end on its robot's simulator; the German ones
+(``examples/de/``) are the English ones with German texts."""
+import json
 import subprocess
 import sys
 from pathlib import Path
@@ -12,7 +14,17 @@ ANSWERS = {
     "hobbit/arm-with-progress.rockly": [],
     "hobbit/drive-a-square.rockly": ["Mia", "yes"],
     "turtlebot/avoid-obstacles.rockly": [],
+    "de/hobbit/aufraeumen.rockly": ["yes"],
+    "de/hobbit/arm-mit-fortschritt.rockly": [],
+    "de/hobbit/fahre-ein-quadrat.rockly": ["Mia", "yes"],
+    "de/turtlebot/hindernissen-ausweichen.rockly": [],
 }
+GERMAN = {"de/hobbit/aufraeumen.rockly": "hobbit/tidy-up.rockly",
+          "de/hobbit/arm-mit-fortschritt.rockly": "hobbit/arm-with-progress.rockly",
+          "de/hobbit/fahre-ein-quadrat.rockly": "hobbit/drive-a-square.rockly",
+          "de/turtlebot/hindernissen-ausweichen.rockly": "turtlebot/avoid-obstacles.rockly"}
+# texts that are code (ROS names, a goal's status), the same in every language
+CODE_TEXTS = {"", "/cmd_vel", "hobbit_arm", "MoveToCandle", "feedback.data", "succeeded"}
 EXAMPLES = sorted(str(path.relative_to(REPO / "examples")) for path in (REPO / "examples").rglob("*.rockly"))
 
 
@@ -23,8 +35,46 @@ def test_every_example_is_listed_here():
 @pytest.mark.parametrize("example", EXAMPLES)
 def test_example_runs_to_its_end(example):
     answers = [argument for answer in ANSWERS[example] for argument in ("--answer", answer)]
+    language = "de" if example.startswith("de/") else "en"
     result = subprocess.run([sys.executable, "-m", "rockly_desktop", "run", str(REPO / "examples" / example),
-                             "--speed", "25", *answers], capture_output=True, text=True, cwd=REPO, timeout=240)
+                             "--speed", "25", "--language", language, *answers],
+                            capture_output=True, text=True, cwd=REPO, timeout=240)
     assert result.returncode == 0, result.stderr[-2000:]
-    assert "warning" not in result.stderr  # opens as written: its profile, every field value kept
-    assert result.stdout.splitlines()[-1] == "finished"
+    assert "warning" not in result.stderr.lower()  # opens as written: its profile, every field value kept
+    assert result.stdout.splitlines()[-1] == ("fertig" if language == "de" else "finished")
+
+
+def _blocks_and_texts(example):
+    """(the block types in file order, the TEXT field values, the variable names) of an example."""
+    types, texts = [], []
+
+    def walk(value):
+        if isinstance(value, dict):
+            if isinstance(value.get("type"), str):
+                types.append(value["type"])
+            if isinstance(value.get("fields"), dict) and "TEXT" in value["fields"]:
+                texts.append(value["fields"]["TEXT"])
+            for item in value.values():
+                walk(item)
+        elif isinstance(value, list):
+            for item in value:
+                walk(item)
+
+    workspace = json.loads((REPO / "examples" / example).read_text(encoding="utf-8"))["workspace"]
+    walk(workspace)
+    return types, texts, [variable["name"] for variable in workspace.get("variables", [])]
+
+
+@pytest.mark.parametrize(("german", "english"), sorted(GERMAN.items()))
+def test_a_german_example_is_its_english_one_with_every_text_in_german(german, english):
+    german_types, german_texts, german_variables = _blocks_and_texts(german)
+    english_types, english_texts, english_variables = _blocks_and_texts(english)
+    assert german_types == english_types
+    for said, original in zip(german_texts, english_texts, strict=True):
+        assert said != original or said in CODE_TEXTS, said
+    assert len(german_variables) == len(english_variables)
+    assert not set(german_variables) & set(english_variables)
+
+
+def test_every_english_example_has_a_german_one():
+    assert sorted(GERMAN.values()) == sorted(example for example in EXAMPLES if not example.startswith("de/"))

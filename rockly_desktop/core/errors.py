@@ -1,8 +1,16 @@
-"""Errors a user can be shown as they are: each message says what is wrong and where."""
+"""Errors a user can be shown as they are: each message says what is wrong and where.
+
+``str()`` is English; ``in_language(language)`` says it in the language a person reads.
+"""
+from rockly_desktop.core.app_texts import app_local_text
 
 
 class RocklyError(Exception):
     """Base of every error Rockly reports to a person in plain words."""
+
+    def in_language(self, language: str) -> str:
+        """The message in ``language``: errors whose words come from a catalogue override this."""
+        return str(self)
 
 
 class ProgramFileError(RocklyError):
@@ -10,8 +18,14 @@ class ProgramFileError(RocklyError):
 
     def __init__(self, path, problem):
         self.path = str(path)
-        self.problem = problem
+        self.problem = str(problem)  # English
+        self._problem = problem      # a plain text or a catalogue's LocalText
         super().__init__(f"{self.path}: {problem}")
+
+    def in_language(self, language: str) -> str:
+        """``path: problem`` with the problem in ``language`` when it comes from a catalogue."""
+        in_language = getattr(self._problem, "in_language", None)
+        return f"{self.path}: {in_language(language)}" if in_language is not None else str(self)
 
 
 class ManifestError(RocklyError):
@@ -32,30 +46,39 @@ class UnknownBlocksError(RocklyError):
         self.block_types = sorted(block_types)
         self.profile_id = profile_id
         self.profile_installed = profile_installed
-        listed = ", ".join(self.block_types)
         if profile_id is None:
-            hint = "Install the robot profile that provides them, then open the program again."
+            hint = app_local_text("unknown_blocks_install")
         elif profile_installed:
-            hint = f"The robot profile '{profile_id}' does not provide them; a newer version of it may."
+            hint = app_local_text("unknown_blocks_newer", profile=profile_id)
         else:
-            hint = f"It was made for the robot profile '{profile_id}', which is not installed."
-        super().__init__(f"This program uses blocks that no installed profile knows: {listed}. {hint}")
+            hint = app_local_text("unknown_blocks_not_installed", profile=profile_id)
+        self.message = app_local_text("unknown_blocks", blocks=", ".join(self.block_types), hint=hint)
+        super().__init__(str(self.message))
+
+    def in_language(self, language: str) -> str:
+        """The message in ``language``."""
+        return self.message.in_language(language)
 
 
 class RobotCommandError(RocklyError):
     """A robot command cannot be done: a bad argument, a failed goal, an unanswered service.
 
-    The message is English; a profile that says it in other languages too passes
-    ``translations`` ({"de": "..."}), and ``in_language`` picks the one a run shows.
+    The message is a text of a catalogue (a ``core.catalogue.LocalText``: the profile's own,
+    from its ``locale/`` folder, or Rockly's), which a run shows in its language; ``str()`` is
+    English. A plain string is shown as it is in every language.
     """
 
-    def __init__(self, *args, translations=None):
-        super().__init__(*args)
-        self.translations = dict(translations or {})
+    def __init__(self, message="", *args):
+        super().__init__(message, *args)
+        self.message = message
+
+    def __str__(self) -> str:
+        return str(self.message) if not self.args[1:] else super().__str__()
 
     def in_language(self, language: str) -> str:
-        """The message in ``language`` when the profile gave one, else the English one."""
-        return self.translations.get(language) or str(self)
+        """The message in ``language`` (English where its catalogue has no translation)."""
+        in_language = getattr(self.message, "in_language", None)
+        return in_language(language) if in_language is not None else str(self)
 
 
 class RobotTimeout(RobotCommandError):

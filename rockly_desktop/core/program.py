@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from rockly_desktop.core import deep_json
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import ProgramFileError
 
 FORMAT_NAME = "rockly-program"
@@ -59,35 +60,30 @@ class Program:
 def parse_program(text: str, path="<text>") -> Program:
     """Parse a ``.rockly`` document; raise ProgramFileError saying what is wrong."""
     if not text.strip():
-        raise ProgramFileError(path, "the file is empty")
+        raise ProgramFileError(path, app_local_text("file_empty"))
     try:
         document = deep_json.loads(text)
     except json.JSONDecodeError as error:
-        raise ProgramFileError(
-            path, f"this is not a complete Rockly program (broken JSON at line {error.lineno}, "
-                  f"column {error.colno}: {error.msg})"
-        ) from None
+        raise ProgramFileError(path, app_local_text("file_broken_json", line=error.lineno, column=error.colno,
+                                                    problem=error.msg)) from None
     except ValueError as error:  # a number that is not finite, or nesting past deep_json.MAX_DEPTH
-        raise ProgramFileError(path, f"this is not a Rockly program ({error})") from None
+        raise ProgramFileError(path, app_local_text("file_not_rockly_because", problem=error)) from None
     if not isinstance(document, dict) or document.get("format") != FORMAT_NAME:
-        raise ProgramFileError(path, "this is not a Rockly program (no \"format\": \"rockly-program\")")
+        raise ProgramFileError(path, app_local_text("file_not_rockly"))
     version = document.get("version")
     if not isinstance(version, int) or isinstance(version, bool) or version < 1:
-        raise ProgramFileError(path, "the program has no valid format version")
+        raise ProgramFileError(path, app_local_text("file_no_version"))
     if version > FORMAT_VERSION:
-        raise ProgramFileError(
-            path, f"the program was saved by a newer Rockly (format version {version}; "
-                  f"this Rockly reads up to {FORMAT_VERSION})"
-        )
+        raise ProgramFileError(path, app_local_text("file_newer", version=version, newest=FORMAT_VERSION))
     profile_id = document.get("profile")
     if not isinstance(profile_id, str) or not profile_id:
-        raise ProgramFileError(path, "the program does not say which robot profile it is for (\"profile\")")
+        raise ProgramFileError(path, app_local_text("file_no_profile"))
     workspace = document.get("workspace")
     if not isinstance(workspace, dict):
-        raise ProgramFileError(path, "the program has no workspace (\"workspace\" must be an object)")
+        raise ProgramFileError(path, app_local_text("file_no_workspace"))
     breakpoints = document.get("breakpoints", [])
     if not isinstance(breakpoints, list) or not all(isinstance(item, str) for item in breakpoints):
-        raise ProgramFileError(path, "\"breakpoints\" must be a list of block ids")
+        raise ProgramFileError(path, app_local_text("file_bad_breakpoints"))
     return Program(profile_id=profile_id, workspace=workspace, breakpoints=breakpoints)
 
 
@@ -101,25 +97,23 @@ def read_text_file(path, max_bytes: int = MAX_FILE_BYTES) -> str:
     try:
         info = os.stat(path)
         if stat.S_ISDIR(info.st_mode):
-            raise ProgramFileError(path, "this is a folder, not a file")
+            raise ProgramFileError(path, app_local_text("file_is_folder"))
         if not stat.S_ISREG(info.st_mode):
-            raise ProgramFileError(path, "this is not a regular file (a device, a pipe or a socket), "
-                                         "so it is not opened")
+            raise ProgramFileError(path, app_local_text("file_not_regular"))
         with open(path, "rb") as stream:
             data = stream.read(max_bytes + 1)
     except FileNotFoundError:
-        raise ProgramFileError(path, "the file does not exist") from None
+        raise ProgramFileError(path, app_local_text("file_missing")) from None
     except IsADirectoryError:
-        raise ProgramFileError(path, "this is a folder, not a file") from None
+        raise ProgramFileError(path, app_local_text("file_is_folder")) from None
     except OSError as error:
-        raise ProgramFileError(path, f"the file cannot be read ({error.strerror})") from None
+        raise ProgramFileError(path, app_local_text("file_unreadable", problem=error.strerror)) from None
     if len(data) > max_bytes:
-        raise ProgramFileError(path, f"the file is larger than {max_bytes // (1024 * 1024)} MB; "
-                                     f"no Rockly program is that big")
+        raise ProgramFileError(path, app_local_text("file_too_large", megabytes=max_bytes // (1024 * 1024)))
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError:
-        raise ProgramFileError(path, "the file is not text (it is not UTF-8)") from None
+        raise ProgramFileError(path, app_local_text("file_not_text")) from None
 
 
 def load_program(path) -> Program:
@@ -141,15 +135,15 @@ def write_text_atomically(path, text: str) -> None:
     try:
         data = text.encode("utf-8")
     except UnicodeEncodeError as error:
-        raise ProgramFileError(path, f"the program contains text that cannot be saved ({error.reason})") from None
+        raise ProgramFileError(path, app_local_text("file_unsavable_text", problem=error.reason)) from None
     try:
         existing = os.stat(path)  # follows links
     except FileNotFoundError:
         existing = None  # a new file (or a link to a file still to be made)
     except OSError as error:  # a link loop, a folder we may not look into, ...
-        raise ProgramFileError(path, f"the file could not be saved ({error.strerror})") from None
+        raise ProgramFileError(path, app_local_text("file_not_saved", problem=error.strerror)) from None
     if existing is not None and stat.S_ISDIR(existing.st_mode):
-        raise ProgramFileError(path, "the file could not be saved (this is a folder, not a file)")
+        raise ProgramFileError(path, app_local_text("file_not_saved_folder"))
     if existing is not None and not stat.S_ISREG(existing.st_mode):
         _write_directly(path, data)
         return
@@ -164,7 +158,7 @@ def _write_directly(path: Path, data: bytes) -> None:
             stream.write(data)
             stream.flush()
     except OSError as error:
-        raise ProgramFileError(path, f"the file could not be saved ({error.strerror})") from None
+        raise ProgramFileError(path, app_local_text("file_not_saved", problem=error.strerror)) from None
 
 
 def _replace_file(path: Path, target: Path, data: bytes, mode: int) -> None:
@@ -175,7 +169,7 @@ def _replace_file(path: Path, target: Path, data: bytes, mode: int) -> None:
     try:
         handle, temp_name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
     except OSError as error:
-        raise ProgramFileError(path, f"cannot write in this folder ({error.strerror})") from None
+        raise ProgramFileError(path, app_local_text("file_folder_not_writable", problem=error.strerror)) from None
     try:
         with os.fdopen(handle, "wb") as stream:
             stream.write(data)
@@ -189,7 +183,7 @@ def _replace_file(path: Path, target: Path, data: bytes, mode: int) -> None:
         except OSError:
             pass
         if isinstance(error, OSError):
-            raise ProgramFileError(path, f"the file could not be saved ({error.strerror})") from None
+            raise ProgramFileError(path, app_local_text("file_not_saved", problem=error.strerror)) from None
         raise
 
 

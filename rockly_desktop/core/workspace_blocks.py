@@ -7,6 +7,7 @@ import xml.etree.ElementTree as ElementTree
 from collections import Counter
 from xml.sax.saxutils import escape, quoteattr
 
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import ProgramFileError
 
 
@@ -115,14 +116,14 @@ def local_name(tag: str) -> str:
 def parse_blockly_xml(text: str, path="<text>") -> ElementTree.Element:
     """Parse Blockly XML as the first Rockly saved it; raise ProgramFileError if it is not."""
     if not text.strip():
-        raise ProgramFileError(path, "the file is empty")
+        raise ProgramFileError(path, app_local_text("file_empty"))
     try:
         root = ElementTree.fromstring(text)
     except ElementTree.ParseError as error:
-        raise ProgramFileError(path, f"this is not valid Blockly XML ({error})") from None
+        raise ProgramFileError(path, app_local_text("file_not_xml", problem=error)) from None
     top = local_name(root.tag)
     if top != "xml":
-        raise ProgramFileError(path, f"this is not a Blockly program (the top element is <{top}>, not <xml>)")
+        raise ProgramFileError(path, app_local_text("file_not_blockly", top=top))
     return root
 
 

@@ -1,78 +1,22 @@
 """Why a program stopped, in words a child can act on, in English or German.
 
 ``explain(error, language, variables)`` turns an exception from the user's program into
-one or two plain sentences. Python's own wording ("can only concatenate str (not "int")
-to str") never reaches the child; it stays in the traceback behind "Show details".
-``variables`` are the program's variables used on the line that failed, as
+one or two plain sentences (Rockly's catalogue, keys ``problem_*``). Python's own wording
+("can only concatenate str (not "int") to str") never reaches the child; it stays in the
+traceback behind "Show details". ``variables`` are the program's variables used on the line that failed, as
 (Blockly name, value): they let the message name the value involved ("“count” has no
-value yet"). Robot errors keep the profile's own text inside a translated frame.
+value yet"). Robot errors keep the profile's own text (its catalogue's, in the run's
+language) inside a translated frame.
 No Qt here: the runner calls this in the program's thread.
 """
 import re
 import reprlib
 
+from rockly_desktop.core.app_texts import app_text
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout, RocklyError
 
-_TEXTS = {
-    "timeout": ("The robot did not answer in time: {detail}",
-                "Der Roboter hat nicht rechtzeitig geantwortet: {detail}"),
-    "robot": ("The robot could not do this: {detail}", "Das konnte der Roboter nicht tun: {detail}"),
-    "unreadable": ("The program cannot be read: {detail}", "Das Programm kann nicht gelesen werden: {detail}"),
-    "unsafe_stop": ("Warning: the robot could not be stopped safely.",
-                    "Achtung: Der Roboter konnte nicht sicher angehalten werden."),
-    "zero_division": ("Dividing by zero is not possible.", "Durch null teilen geht nicht."),
-    "recursion": ("A function calls itself too often (endless repetition).",
-                  "Eine Funktion ruft sich zu oft selbst auf (endlose Wiederholung)."),
-    "not_defined": ("“{name}” is used before it was given a value.",
-                    "„{name}“ wird benutzt, bevor es einen Wert bekommen hat."),
-    "empty_variable": ("The variable “{name}” has no value yet: set it before you use it.",
-                       "Die Variable „{name}“ hat noch keinen Wert: Setze sie, bevor du sie benutzt."),
-    "empty_value": ("Something here has no value (it is empty).", "Hier hat etwas keinen Wert (es ist leer)."),
-    "join_text": ("{a} and {b} cannot be added; use “create text with” to join them.",
-                  "{a} und {b} können nicht addiert werden; verbinde sie mit „erstelle Text aus“."),
-    "calculate": ("{a} and {b} cannot be used with “{op}”.",
-                  "{a} und {b} können nicht mit „{op}“ gerechnet werden."),
-    "compare": ("{a} and {b} cannot be compared with “{op}”.",
-                "{a} und {b} können nicht mit „{op}“ verglichen werden."),
-    "needs_number": ("This needs a number, but this is {a}.", "Hier wird eine Zahl gebraucht, aber das ist {a}."),
-    "needs_list": ("This needs a list, but this is {a}.", "Hier wird eine Liste gebraucht, aber das ist {a}."),
-    "needs_text_or_list": ("This needs a text or a list, but this is {a}.",
-                           "Hier wird ein Text oder eine Liste gebraucht, aber das ist {a}."),
-    "mismatch": ("These values do not fit together.", "Diese Werte passen nicht zusammen."),
-    "no_item": ("There is no item at that position in the list.", "An dieser Stelle gibt es nichts in der Liste."),
-    "no_item_of": ("There is no item at that position: “{name}” has only {count} items.",
-                   "An dieser Stelle gibt es nichts: „{name}“ hat nur {count} Elemente."),
-    "no_item_of_one": ("There is no item at that position: “{name}” has only one item.",
-                       "An dieser Stelle gibt es nichts: „{name}“ hat nur ein Element."),
-    "empty_list": ("The list is empty.", "Die Liste ist leer."),
-    "empty_list_of": ("The list “{name}” is empty.", "Die Liste „{name}“ ist leer."),
-    "no_letter": ("There is no letter at that position in the text.",
-                  "An dieser Stelle gibt es keinen Buchstaben im Text."),
-    "no_entry": ("There is no entry {key}.", "Es gibt keinen Eintrag {key}."),
-    "not_a_number": ("{value} is not a number.", "{value} ist keine Zahl."),
-    "no_result": ("This calculation has no result (like the square root of a negative number).",
-                  "Diese Rechnung hat kein Ergebnis (wie die Wurzel aus einer negativen Zahl)."),
-    "not_in_list": ("That item is not in the list.", "Dieses Element ist nicht in der Liste."),
-    "not_in_text": ("That is not in the text.", "Das kommt im Text nicht vor."),
-    "bad_value": ("This value cannot be used here.", "Dieser Wert kann hier nicht benutzt werden."),
-    "too_big": ("The number is too big.", "Die Zahl ist zu groß."),
-    "memory": ("The program needs too much memory.", "Das Programm braucht zu viel Speicher."),
-    "unexpected": ("Something unexpected went wrong in this block (the details tell more).",
-                   "In diesem Block ist etwas Unerwartetes schiefgegangen (die Details sagen mehr)."),
-    "value_is": ("“{name}” is {value}", "„{name}“ ist {value}"),
-}
-
-# What a child calls a value of a Python type (with its article, as the subject of a sentence).
-_KINDS = {
-    "text": ("a text", "ein Text"),
-    "number": ("a number", "eine Zahl"),
-    "truth": ("a true/false value", "ein Wahr/Falsch-Wert"),
-    "list": ("a list", "eine Liste"),
-    "message": ("a message", "eine Nachricht"),
-    "function": ("a function", "eine Funktion"),
-    "empty": ("nothing (an empty value)", "nichts (ein leerer Wert)"),
-    "other": ("a value of the type {name}", "ein Wert vom Typ {name}"),
-}
+# What a child calls a value of a Python type: the catalogue's problem_kind_KIND (with its article,
+# as the subject of a sentence).
 _KIND_OF_TYPE = {
     "str": "text", "int": "number", "float": "number", "complex": "number", "bool": "truth",
     "list": "list", "tuple": "list", "range": "list", "dict": "message", "NoneType": "empty",
@@ -89,10 +33,8 @@ _LIST_METHODS = ("append", "insert", "pop", "index", "remove", "extend", "sort",
 
 
 def text(key: str, language: str, **values) -> str:
-    """The run text ``key`` in ``language`` ('de' German, anything else English)."""
-    english, german = _TEXTS[key]
-    message = german if language == "de" else english
-    return message.format(**values) if values else message
+    """The run text ``key`` in ``language``: Rockly's catalogue entry ``problem_KEY``."""
+    return app_text(f"problem_{key}", language, **values)
 
 
 def _kind(type_name: str) -> str:
@@ -100,8 +42,12 @@ def _kind(type_name: str) -> str:
 
 
 def _kind_words(type_name: str, language: str) -> str:
-    english, german = _KINDS[_kind(type_name)]
-    return (german if language == "de" else english).format(name=type_name)
+    return app_text(f"problem_kind_{_kind(type_name)}", language, name=type_name)
+
+
+def _after_colon(detail: str, language: str) -> str:
+    """``detail`` as it follows a colon: German starts the sentence after it with a capital letter."""
+    return _sentence(detail) if language == "de" else detail
 
 
 def _sentence(message: str) -> str:
@@ -132,9 +78,9 @@ def explain(error: BaseException, language: str = "en", variables=(), names=None
     """
     variables = list(variables)
     if isinstance(error, RobotTimeout):
-        return text("timeout", language, detail=error.in_language(language))
+        return text("timeout", language, detail=_after_colon(error.in_language(language), language))
     if isinstance(error, RobotCommandError):
-        return text("robot", language, detail=error.in_language(language))
+        return text("robot", language, detail=_after_colon(error.in_language(language), language))
     if isinstance(error, RocklyError):  # written for people already
         return str(error)
     if isinstance(error, ZeroDivisionError):

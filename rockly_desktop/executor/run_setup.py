@@ -1,6 +1,5 @@
 """Putting a run together: the profile's commands on a robot, the runner, the safe stop."""
 from rockly_desktop.executor.runner import ProgramRunner
-from rockly_desktop.profiles.i18n import localize
 from rockly_desktop.robot.limits import Capability, LimitedBackend, Limits
 from rockly_desktop.robot.recorded import RecordedBackend
 from rockly_desktop.robot.ros_commands import RosCommands
@@ -9,7 +8,8 @@ from rockly_desktop.robot.ros_commands import RosCommands
 def limited_backend(profile, backend, limits: Limits, language: str) -> LimitedBackend:
     """``backend`` kept within a teacher's ``limits``, from what the profile's manifest declares:
     its drive interface (``velocity_topics``) and the capabilities switched off."""
-    switched_off = [Capability(entry["id"], localize(entry["name"], language), frozenset(entry.get("topics", ())),
+    switched_off = [Capability(entry["id"], profile.localize(entry["name"], language),
+                               frozenset(entry.get("topics", ())),
                                frozenset(entry.get("services", ())), frozenset(entry.get("actions", ())))
                     for entry in profile.capabilities if entry["id"] in limits.switched_off]
     return LimitedBackend(backend, limits, profile.velocity_topics, switched_off, language)

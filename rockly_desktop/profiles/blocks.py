@@ -58,10 +58,11 @@ class BlockSpec:
         """True when the block plugs into an input (it has an output) instead of stacking."""
         return "output" in self.definition
 
-    def editor_config(self, language: str) -> dict:
-        """What the editor page needs: the localized definition and the generator template."""
+    def editor_config(self, language: str, catalogues=()) -> dict:
+        """What the editor page needs: the localized definition (see ``i18n.localize`` for
+        ``catalogues``) and the generator template."""
         return {
-            "definition": localize(self.definition, language),
+            "definition": localize(self.definition, language, catalogues),
             "python": {"code": self.code, "values": self.values, "defaults": self.defaults,
                        "slots": self.slots, "handlers": self.handlers, "expression": self.is_expression},
         }

@@ -1,7 +1,7 @@
-"""Texts in profile and toolbox files: a plain string, or one text per language."""
+"""Texts in profile and toolbox files: a plain string, or one text per language (``{en: ..., de: ...}``);
+a language not spelled out there comes from the profile's catalogue (``locale/LANG.po``), by the English text."""
 
 DEFAULT_LANGUAGE = "en"
-SUPPORTED_LANGUAGES = ("en", "de")
 
 
 def is_localized(value) -> bool:
@@ -13,16 +13,21 @@ def is_localized(value) -> bool:
     )
 
 
-def localize(value, language: str):
+def localize(value, language: str, catalogues=()):
     """Resolve every localized text inside ``value`` (recursively) for ``language``.
 
-    Falls back to English where a translation is missing.
+    A language the text does not spell out is looked up by its English text in ``catalogues``
+    (gettext entries without msgctxt: a profile's ``locale/LANG.po``, then Rockly's); English
+    where none has it.
     """
     if is_localized(value):
         text = value.get(language)
+        if text is None:
+            text = next((found for found in (catalogue.translate(value[DEFAULT_LANGUAGE], language)
+                                             for catalogue in catalogues) if found), None)
         return value[DEFAULT_LANGUAGE] if text is None else text
     if isinstance(value, dict):
-        return {key: localize(item, language) for key, item in value.items()}
+        return {key: localize(item, language, catalogues) for key, item in value.items()}
     if isinstance(value, list):
-        return [localize(item, language) for item in value]
+        return [localize(item, language, catalogues) for item in value]
     return value

@@ -8,8 +8,9 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
+from rockly_desktop.core.app_texts import languages
 from rockly_desktop.core.errors import ManifestError
-from rockly_desktop.profiles.i18n import SUPPORTED_LANGUAGES, is_localized
+from rockly_desktop.profiles.i18n import is_localized
 from rockly_desktop.profiles.yaml_files import read_yaml_mapping
 
 MANIFEST_NAME = "profile.yaml"
@@ -238,9 +239,9 @@ def _check(spec: FieldSpec, value, root: Path):
     elif kind == "languages":
         if not isinstance(value, list) or not value or value[0] != "en":
             return "must be a list of language codes starting with 'en'"
-        unknown = [lang for lang in value if lang not in SUPPORTED_LANGUAGES]
+        unknown = [lang for lang in value if lang not in languages()]
         if unknown:
-            return f"unsupported language(s) {unknown}; Rockly speaks {list(SUPPORTED_LANGUAGES)}"
+            return f"unsupported language(s) {unknown}; Rockly speaks {list(languages())}"
     elif kind == "file":
         return _check_relative_path(value, root, want_dir=False)
     elif kind == "folder":

@@ -12,6 +12,7 @@ from the page's answer). ``opening_warnings`` words both for the command line.
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from rockly_desktop.core.app_texts import app_local_text, app_text
 from rockly_desktop.core.errors import ProgramFileError, UnknownBlocksError
 from rockly_desktop.core.program import load_program, read_text_file
 from rockly_desktop.core.workspace_blocks import (
@@ -113,18 +114,17 @@ def read_program_to_open(path, registry: ProfileRegistry, fallback: Profile) -> 
 
 def _refuse_too_deep(path, depth: int):
     if depth > MAX_BLOCK_DEPTH:
-        raise ProgramFileError(path, f"the program has {depth:,} blocks inside or under one another; Rockly's "
-                                     f"editor takes up to {MAX_BLOCK_DEPTH:,} (split long stacks into functions)")
+        raise ProgramFileError(path, app_local_text("file_too_deep", depth=depth, limit=MAX_BLOCK_DEPTH))
 
 
 def _refuse_untyped(path, number):
     if number is not None:
-        raise ProgramFileError(path, f"the file is broken: block {number} has no type")
+        raise ProgramFileError(path, app_local_text("file_broken_no_type", number=number))
 
 
 def _refuse_broken(path, problem):
     if problem is not None:
-        raise ProgramFileError(path, f"the file is broken: {problem}")
+        raise ProgramFileError(path, app_local_text("file_broken", problem=problem))
 
 
 def unknown_blocks_error(program: ProgramToOpen, unknown_types, registry: ProfileRegistry) -> UnknownBlocksError:
@@ -133,25 +133,24 @@ def unknown_blocks_error(program: ProgramToOpen, unknown_types, registry: Profil
     return UnknownBlocksError(unknown_types, declared, declared in registry.profiles if declared else False)
 
 
-def describe_replaced_field(entry: dict) -> str:
-    """One replaced field value in plain words: which block, which field, what became of it."""
-    where = f"block {entry.get('number')} ({entry.get('type')})"
-    requested = entry.get("requested")
+def describe_replaced_field(entry: dict, language: str = "en") -> str:
+    """One replaced field value in plain words (in ``language``): which block, which field, what became of it."""
+    where = app_text("opening_block", language, number=entry.get("number"), type=entry.get("type"))
+    requested, name = entry.get("requested"), entry.get("field")
     if entry.get("missing"):
-        return f"{where}: the block has no field {entry.get('field')}; its value {requested!r} was left out"
+        return app_text("opening_field_missing", language, where=where, field=name, requested=repr(requested))
     if entry.get("rounded"):
-        return (f"{where}: {entry.get('field')} {requested} is too large to keep exactly; "
-                f"it became {entry.get('now')}")
-    return (f"{where}: {entry.get('field')} {requested!r} is not a value this block accepts; "
-            f"it was replaced by {entry.get('now')!r}")
+        return app_text("opening_field_rounded", language, where=where, field=name, requested=requested,
+                        now=entry.get("now"))
+    return app_text("opening_field_replaced", language, where=where, field=name, requested=repr(requested),
+                    now=repr(entry.get("now")))
 
 
-def opening_warnings(program: ProgramToOpen) -> list:
-    """What opening ``program`` changed, in plain English (one line each; empty if nothing)."""
+def opening_warnings(program: ProgramToOpen, language: str = "en") -> list:
+    """What opening ``program`` changed, in plain words in ``language`` (one line each; empty if nothing)."""
     warnings = []
     if program.missing_profile:
-        warnings.append(f"the program was made for the robot profile '{program.missing_profile}', which is not "
-                        f"installed (installed: {', '.join(program.installed_profiles)}); "
-                        f"it is used with '{program.profile.id}' instead")
-    warnings.extend(describe_replaced_field(entry) for entry in program.replaced_fields)
+        warnings.append(app_text("opening_missing_profile", language, declared=program.missing_profile,
+                                 installed=", ".join(program.installed_profiles), used=program.profile.id))
+    warnings.extend(describe_replaced_field(entry, language) for entry in program.replaced_fields)
     return warnings

@@ -5,6 +5,8 @@ from dataclasses import dataclass
 from functools import cached_property
 from pathlib import Path
 
+from rockly_desktop.core.app_texts import app_catalogue
+from rockly_desktop.core.catalogue import Catalogue
 from rockly_desktop.core.errors import ManifestError, RocklyError
 from rockly_desktop.core.ros_definitions import DefinitionCatalog
 from rockly_desktop.profiles.blocks import BlockSpec, read_blocks
@@ -36,7 +38,18 @@ class Profile:
 
     def display_name(self, language: str = "en") -> str:
         """The profile's name for people, in ``language``."""
-        return localize(self.name, language)
+        return self.localize(self.name, language)
+
+    @cached_property
+    def texts(self) -> Catalogue:
+        """The profile's own catalogue: ``locale/`` beside its manifest (its code's words; other
+        languages for its YAML texts)."""
+        return Catalogue(self.root / "locale")
+
+    def localize(self, value, language: str):
+        """``value`` (manifest, block or toolbox data) with its texts in ``language``: as the YAML
+        spells them, else from the profile's catalogue, else Rockly's, else English."""
+        return localize(value, language, (self.texts, app_catalogue()))
 
     @property
     def block_types(self) -> set:
@@ -126,14 +139,15 @@ class Profile:
         """Blockly's toolbox JSON for the level ``level_id`` (None: all of it), without the blocks of
         switched-off capabilities. Every block stays defined: programs using others still open."""
         categories = level_categories(self.toolbox_categories, self.level(level_id), self.hidden_blocks(switched_off))
-        return toolbox_json(categories, language)
+        return toolbox_json(categories, language, (self.texts, app_catalogue()))
 
     def editor_config(self, language: str, level_id=None, switched_off=()) -> dict:
         """Everything the editor page needs for this profile, texts in ``language``, the toolbox
         for a level and the capabilities switched off (see ``toolbox``)."""
         return {
             "profile": self.id,
-            "blocks": [spec.editor_config(language) for spec in self.blocks + self.shared_blocks],
+            "blocks": [spec.editor_config(language, (self.texts, app_catalogue()))
+                       for spec in self.blocks + self.shared_blocks],
             "toolbox": self.toolbox(language, level_id, switched_off),
             "types": self.ros_types.editor_catalog,
         }

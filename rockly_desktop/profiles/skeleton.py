@@ -3,8 +3,9 @@
 The profile's files are templates kept here as data (``SKELETON_FILES``) and rendered
 with the name: ``$name`` (the profile id), ``$Title`` (shown to people) and ``$Class``
 (the start of its Python class names). The robot it describes has one command,
-``robot.say(text)``, which publishes a ``std_msgs/String`` on ``/NAME/say``; its
-simulator remembers the last text said and its view (``rockly_NAME/view/``, the layout of
+``robot.say(text)``, which publishes a ``std_msgs/String`` on ``/NAME/say`` (and refuses an
+empty text with an error from the profile's own catalogue, ``locale/``, in English and German);
+its simulator remembers the last text said and its view (``rockly_NAME/view/``, the layout of
 the built-in profiles) shows it. A folder that cannot be written completely is
 removed again.
 """
@@ -78,6 +79,30 @@ categories:
   - shared: text
   - shared: variables
 ''',
+    "locale/messages.pot": '''\
+# $Title's texts in English: every key (msgctxt) with its English text (msgid).
+# Each other language is one file beside this one (de.po); Poedit or Weblate make a new one from this.
+msgid ""
+msgstr ""
+"Project-Id-Version: Rockly profile $name\\n"
+"Content-Type: text/plain; charset=UTF-8\\n"
+
+msgctxt "nothing_to_say"
+msgid "there is nothing to say: the text is empty"
+msgstr ""
+''',
+    "locale/de.po": '''\
+# $Title's texts in German.
+msgid ""
+msgstr ""
+"Project-Id-Version: Rockly profile $name\\n"
+"Language: de\\n"
+"Content-Type: text/plain; charset=UTF-8\\n"
+
+msgctxt "nothing_to_say"
+msgid "there is nothing to say: the text is empty"
+msgstr "es gibt nichts zu sagen: Der Text ist leer"
+''',
     "rockly_$name/__init__.py": '''\
 """$Title: a Rockly robot profile."""
 ''',
@@ -86,16 +111,21 @@ categories:
 
     robot.say('Hello!')
 """
-from rockly_desktop.sdk import RobotCommands
+from rockly_desktop.sdk import RobotCommandError, RobotCommands, profile_texts
 
 SAY_TOPIC, SAY_TYPE = "/$name/say", "std_msgs/String"
+# The profile's words: locale/ beside profile.yaml (messages.pot in English, de.po in German, ...).
+# An error made of them is shown in the language of the run.
+TEXTS = profile_texts(__file__)
 
 
 class ${Class}Commands(RobotCommands):
     """Commands for $Title."""
 
     def say(self, text):
-        """Say ``text`` (published as a std_msgs/String on /$name/say)."""
+        """Say ``text`` (published as a std_msgs/String on /$name/say); an empty text is an error."""
+        if text is None or str(text) == "":
+            raise RobotCommandError(TEXTS("nothing_to_say"))
         self.backend.publish(SAY_TOPIC, SAY_TYPE, {"data": str(text)})
 ''',
     "rockly_$name/sim.py": '''\
@@ -229,12 +259,15 @@ Run it with the Python that has Rockly installed: ``python -m pytest tests``.
 """
 from pathlib import Path
 
+import pytest
+
 from rockly_desktop.core import paths
 from rockly_desktop.profiles.checks import check_commands
 from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.safe_stop import run_safe_stop
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+from rockly_desktop.sdk import RobotCommandError
 
 PROFILE_DIR = Path(__file__).resolve().parents[1]
 
@@ -263,6 +296,14 @@ def test_the_simulator_hears_what_the_robot_is_told_to_say_and_the_safe_stop():
         assert simulator.snapshot() == {"said": "Hello!", "stops": 1}
     finally:
         simulator.shutdown()
+
+
+def test_an_error_is_said_in_the_language_of_the_run():
+    robot = load().load_object("api")(None)
+    with pytest.raises(RobotCommandError) as refused:
+        robot.say("")
+    assert str(refused.value) == "there is nothing to say: the text is empty"
+    assert refused.value.in_language("de") == "es gibt nichts zu sagen: Der Text ist leer"
 ''',
 }
 

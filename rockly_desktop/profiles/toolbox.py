@@ -126,8 +126,8 @@ def level_categories(categories: list, level: dict = None, hidden=frozenset()) -
     return kept
 
 
-def toolbox_json(categories: list, language: str) -> dict:
-    """Blockly's category toolbox JSON with texts in ``language``."""
+def toolbox_json(categories: list, language: str, catalogues=()) -> dict:
+    """Blockly's category toolbox JSON with texts in ``language`` (see ``i18n.localize`` for ``catalogues``)."""
     contents = [{key: value for key, value in category.items() if key not in ("definitions", "shared")}
                 for category in categories]
-    return {"kind": "categoryToolbox", "contents": localize(contents, language)}
+    return {"kind": "categoryToolbox", "contents": localize(contents, language, catalogues)}

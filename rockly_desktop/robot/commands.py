@@ -2,6 +2,7 @@
 import json
 import math
 
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import RobotCommandError
 
 
@@ -10,6 +11,8 @@ class RobotCommands:
 
     Subclasses add methods that read like what a person wants the robot to do
     (``robot.gripper('open')``) and translate them into topics, services and actions.
+    The ``what`` of the checks below names the argument in an error: a text of the
+    profile's catalogue (``Texts``), so that the error is shown in the run's language.
     """
 
     def __init__(self, backend):
@@ -29,14 +32,15 @@ class RobotCommands:
             known = False
         if not known:
             listed = ", ".join(repr(choice) for choice in choices)
-            raise RobotCommandError(f"unknown {what} {value!r}; use one of {listed}")
+            raise RobotCommandError(app_local_text("command_unknown_choice", what=what, value=repr(value),
+                                                   choices=listed))
         return choices[value]
 
     @staticmethod
     def number(value, what: str) -> float:
         """``value`` as a float; anything else raises a RobotCommandError naming ``what``."""
         if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-            raise RobotCommandError(f"{what} must be a number, not {value!r}")
+            raise RobotCommandError(app_local_text("command_not_number", what=what, value=repr(value)))
         return float(value)
 
     @staticmethod
@@ -50,7 +54,8 @@ class RobotCommands:
         try:
             parsed = json.loads(value) if isinstance(value, str) else None
         except json.JSONDecodeError as error:
-            raise RobotCommandError(f"the {what} is not valid JSON ({error.msg})") from None
+            raise RobotCommandError(app_local_text("command_not_json", what=what, problem=error.msg)) from None
         if not isinstance(parsed, dict):
-            raise RobotCommandError(f"the {what} must be a mapping like {{\"data\": 1}}, not {value!r}")
+            raise RobotCommandError(app_local_text("command_not_mapping", what=what, example='{"data": 1}',
+                                                   value=repr(value)))
         return parsed

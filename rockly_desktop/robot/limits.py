@@ -9,22 +9,13 @@ their manifest. Reading (subscribe, latest, waits) and cancelling always pass.
 import math
 from dataclasses import dataclass
 
+from rockly_desktop.core.app_texts import app_local_text, app_text
 from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.robot.interface import RobotBackend
 
-_TEXTS = {
-    "switched_off": ("the teacher switched off “{name}” for this robot",
-                     "die Lehrkraft hat „{name}“ für diesen Roboter ausgeschaltet"),
-    "speed_clamped": ("Speed limit: the robot drives at most {speed:g} m/s (set by the teacher).",
-                      "Tempolimit: Der Roboter fährt höchstens {speed:g} m/s (von der Lehrkraft eingestellt)."),
-    "turn_clamped": ("Speed limit: the robot turns at most {turn:g}°/s (set by the teacher).",
-                     "Tempolimit: Der Roboter dreht sich höchstens {turn:g}°/s (von der Lehrkraft eingestellt)."),
-}
-
 
 def _text(key: str, language: str, **values) -> str:
-    english, german = _TEXTS[key]
-    return (german if language == "de" else english).format(**values)
+    return app_text(f"limit_{key}", language, **values)
 
 
 @dataclass(frozen=True)
@@ -104,7 +95,7 @@ class LimitedBackend(RobotBackend):
     def _refuse(self, kind: str, name: str):
         capability = self._blocked.get((kind, _ros_name(name)))
         if capability is not None:
-            raise RobotCommandError(_text("switched_off", self._language, name=capability))
+            raise RobotCommandError(app_local_text("limit_switched_off", name=capability))
 
     def _tell_once(self, key: str, **values):
         if key not in self._noted and self.note is not None:

@@ -10,6 +10,7 @@ import logging
 import time
 from collections import deque
 
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
 from rockly_desktop.core.state_store import field_value
 from rockly_desktop.robot.commands import RobotCommands
@@ -57,7 +58,7 @@ class RosCommands(RobotCommands):
         try:
             return field_value(message, str(path))
         except KeyError:
-            raise RobotCommandError(f"the message has no field '{path}'") from None
+            raise RobotCommandError(app_local_text("ros_no_field", path=path)) from None
 
     def latest(self, topic, path):
         """The newest value of the field ``path`` on ``topic`` (waiting briefly for a first message)."""
@@ -80,7 +81,7 @@ class RosCommands(RobotCommands):
         """
         action, timeout = str(action), self.number(timeout, "the timeout")
         if while_waiting is not None and not callable(while_waiting):
-            raise RobotCommandError(f"what to do while waiting must be a function, not {while_waiting!r}")
+            raise RobotCommandError(app_local_text("ros_not_a_function", value=repr(while_waiting)))
         goal = self._checked(goal, action_type, "action", "goal")
         pending = deque(maxlen=1)  # only the newest feedback waits for the handler
         handle = self.backend.send_goal(action, str(action_type), goal,
@@ -107,7 +108,7 @@ class RosCommands(RobotCommands):
                 return handle.wait(timeout)
             remaining = deadline - time.monotonic()
             if remaining <= 0 or not self.backend.wait_until(lambda: pending or handle.done(), remaining):
-                raise RobotTimeout(f"the action '{action}' did not finish within {timeout:g} s")
+                raise RobotTimeout(app_local_text("sim_action_timeout", action=action, timeout=timeout))
 
     def cancel_goals(self, action):
         """Cancel every goal of the action server ``action``."""

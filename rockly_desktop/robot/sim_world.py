@@ -12,6 +12,7 @@ import threading
 import time
 from collections import defaultdict
 
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout, RocklyError
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
 
@@ -120,13 +121,13 @@ class SimWorld:
         with self._changed:
             handler = self._services.get(name)
         if handler is None:
-            raise RobotCommandError(f"there is no service '{name}'")
+            raise RobotCommandError(app_local_text("sim_no_service", name=name))
         try:
             response = handler(copy.deepcopy(request), interrupt)
         except RocklyError:
             raise
         except Exception as error:
-            raise RobotCommandError(f"the service '{name}' failed: {error}") from error
+            raise RobotCommandError(app_local_text("sim_service_failed", name=name, error=error)) from error
         self._show_taps(name, "service", {"request": request, "response": response})
         return copy.deepcopy(response)
 
@@ -153,7 +154,7 @@ class SimWorld:
         with self._changed:
             handler = self._actions.get(action)
             if handler is None:
-                raise RobotCommandError(f"there is no action server '{action}'")
+                raise RobotCommandError(app_local_text("sim_no_action", action=action))
             sim_goal = SimGoal(action)
             self._goals.add(sim_goal)
         self._show_taps(f"/{action.strip('/')}/goal", "action goal", {"goal": goal})
@@ -209,7 +210,7 @@ class SimGoalHandle(GoalHandle):
     def wait(self, timeout: float) -> GoalOutcome:
         """Wait for the goal's outcome; a stop request raises ProgramStopped, a timeout RobotTimeout."""
         if not self._backend.wait_until(self.done, timeout):
-            raise RobotTimeout(f"the action '{self._goal.action}' did not finish within {timeout:g} s")
+            raise RobotTimeout(app_local_text("sim_action_timeout", action=self._goal.action, timeout=timeout))
         return self._goal.outcome
 
     def cancel(self) -> None:
@@ -242,7 +243,7 @@ class SimBackend(RobotBackend):
         unsubscribe = self._world.subscribe(topic, received.append)
         try:
             if not self.wait_until(lambda: received, timeout):
-                raise RobotTimeout(f"no message arrived on the topic '{topic}' within {timeout:g} s")
+                raise RobotTimeout(app_local_text("sim_no_message", topic=topic, timeout=timeout))
         finally:
             unsubscribe()
         return received[0]
@@ -250,7 +251,7 @@ class SimBackend(RobotBackend):
     def call_service(self, name: str, srv_type: str, request: dict, timeout: float) -> dict:
         """Call ``name``, waiting up to ``timeout`` s for it to be advertised; RobotTimeout if it never is."""
         if not self.wait_until(lambda: self._world.has_service(name), timeout):
-            raise RobotTimeout(f"the service '{name}' is not available (waited {timeout:g} s)")
+            raise RobotTimeout(app_local_text("sim_service_missing", name=name, timeout=timeout))
         return self._world.call_service(name, request, self.interrupt)
 
     def send_goal(self, action: str, action_type: str, goal: dict, feedback=None) -> GoalHandle:

@@ -10,10 +10,12 @@ right, y up). A world's data::
     obstacles:
       - id: sofa
         kind: furniture            # or wall
-        name: {en: the sofa, de: das Sofa}
+        name: the_sofa                     # a key of the profile's catalogue (load_world's texts)
         rect: [0.1, 1.6, 2.1, 2.42]        # or polygon: [[x, y], ...], or circle: [x, y, radius]
 
-A name is written as it follows "bumped into" (in German: "gegen", the accusative: "den Tisch").
+A name is a key of the profile's catalogue (``Texts``: "the sofa", German "das Sofa"), or a
+plain text shown in every language. It is written as it follows "bumped into" (in German:
+"gegen", the accusative: "den Tisch").
 Obstacles are polygons; a circle becomes a 16-sided one, so the laser and the bumper see the
 same shape. Nothing here imports Qt: the same world serves ``rockly run`` and the window.
 """
@@ -36,14 +38,14 @@ class Obstacle:
     """A named solid shape: ``points`` is its outline, a polygon of (x, y) corners."""
 
     id: str
-    names: tuple            # ((language, name), ...), English first
+    label: object           # a catalogue's LocalText (or a plain text) naming it
     points: tuple
     kind: str = "furniture"
 
     def name(self, language: str = "en") -> str:
-        """The obstacle's name in ``language`` (English when it has none in that language)."""
-        names = dict(self.names)
-        return names.get(language) or names.get("en") or self.id
+        """The obstacle's name in ``language`` (English when its catalogue has none in that language)."""
+        in_language = getattr(self.label, "in_language", None)
+        return (in_language(language) if in_language is not None else str(self.label or "")) or self.id
 
     @property
     def bounds(self):
@@ -114,11 +116,12 @@ class World:
         self._e = numpy.array(vectors, dtype=float).reshape(-1, 2)   # (S, 2): the edge's vector
 
     @classmethod
-    def from_data(cls, data: dict, where: str = "the world"):
-        """A World from its data (see the module's docstring); ValueError naming what is wrong."""
+    def from_data(cls, data: dict, where: str = "the world", texts=None):
+        """A World from its data (see the module's docstring), names from the catalogue ``texts``;
+        ValueError naming what is wrong."""
         if not isinstance(data, dict):
             raise ValueError(f"{where}: expected a mapping with radius and obstacles")
-        obstacles = [_obstacle(entry, f"{where}: obstacles[{index}]")
+        obstacles = [_obstacle(entry, f"{where}: obstacles[{index}]", texts)
                      for index, entry in enumerate(data.get("obstacles") or [])]
         return cls(obstacles, data.get("radius", 0), data.get("area"))
 
@@ -209,28 +212,27 @@ def unicycle(x, y, theta, v, w, dt):
             math.remainder(end, math.tau))
 
 
-def load_world(path) -> World:
-    """The World a YAML file declares (see the module's docstring); ValueError naming the file and what is wrong."""
+def load_world(path, texts=None) -> World:
+    """The World a YAML file declares (see the module's docstring), its names keys of the catalogue ``texts``;
+    ValueError naming the file and what is wrong."""
     path = Path(path)
     try:
         data = yaml.load(path.read_text(encoding="utf-8"), Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
     except (OSError, yaml.YAMLError) as error:
         raise ValueError(f"{path}: {error}") from None
-    return World.from_data(data, str(path))
+    return World.from_data(data, str(path), texts)
 
 
-def _obstacle(entry, where):
+def _obstacle(entry, where, texts=None):
     if not isinstance(entry, dict):
         raise ValueError(f"{where}: expected a mapping with id, name and rect, polygon or circle")
-    obstacle_id, kind, names = entry.get("id"), entry.get("kind", "furniture"), entry.get("name") or {}
+    obstacle_id, kind, name = entry.get("id"), entry.get("kind", "furniture"), entry.get("name") or ""
     if not isinstance(obstacle_id, str) or not obstacle_id:
         raise ValueError(f"{where}: id must be a text")
     if kind not in KINDS:
         raise ValueError(f"{where}: kind must be one of {', '.join(KINDS)}, not {kind!r}")
-    if isinstance(names, str):
-        names = {"en": names}
-    if not isinstance(names, dict) or not all(isinstance(v, str) for v in names.values()):
-        raise ValueError(f"{where}: name must be a text or {{en: ..., de: ...}}")
+    if not isinstance(name, str):
+        raise ValueError(f"{where}: name must be a text (a key of the profile's catalogue)")
     shapes = [key for key in ("rect", "polygon", "circle") if key in entry]
     if len(shapes) != 1:
         raise ValueError(f"{where}: give exactly one of rect, polygon or circle")
@@ -248,5 +250,4 @@ def _obstacle(entry, where):
                 raise ValueError("a polygon needs at least 3 finite corners")
     except (TypeError, ValueError) as error:
         raise ValueError(f"{where}: {shapes[0]}: {error}") from None
-    ordered = ("en",) + tuple(sorted(set(names) - {"en"}))
-    return Obstacle(obstacle_id, tuple((key, names[key]) for key in ordered if key in names), points, kind)
+    return Obstacle(obstacle_id, texts(name) if texts is not None and name in texts else name, points, kind)

@@ -13,7 +13,7 @@ from PySide6.QtWidgets import (
 )
 
 from rockly_desktop.ui.teacher_tab import TeacherTab
-from rockly_desktop.ui.texts import LANGUAGE_NAMES, tr
+from rockly_desktop.ui.texts import language_names, tr
 
 
 class PreferencesDialog(QDialog):
@@ -28,7 +28,7 @@ class PreferencesDialog(QDialog):
         super().__init__(parent)
         self.setWindowTitle(tr("preferences_title", language))
         self.language_box = QComboBox(self)
-        for code, name in LANGUAGE_NAMES.items():
+        for code, name in language_names().items():
             self.language_box.addItem(name, code)
         self.language_box.setCurrentIndex(self.language_box.findData(language))
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel, self)

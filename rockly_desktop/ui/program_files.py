@@ -188,10 +188,10 @@ class ProgramFiles(QObject):
         def on_shown(result, error):
             language = self.settings.language
             if error:
-                self._show_error("cannot_open", f"{path}: the editor could not show this program ({error})")
+                self._show_error("cannot_open", tr("editor_could_not_show", language, path=path, error=error))
             elif result.get("untypedBlock"):
-                self._show_error("cannot_open",
-                                 f"{path}: the file is broken: block {result['untypedBlock']} has no type")
+                self._show_error("cannot_open", f"{path}: " + tr("file_broken_no_type", language,
+                                                                  number=result["untypedBlock"]))
             elif result.get("unknownTypes"):
                 self._show_error("cannot_open", unknown_blocks_error(program, result["unknownTypes"], self.registry))
             else:
@@ -279,7 +279,8 @@ class ProgramFiles(QObject):
 
     def _show_error(self, title_key: str, error, untouched: bool = True):
         language = self.settings.language
-        box = plain_message_box(self.parent(), QMessageBox.Icon.Critical, tr(title_key, language), str(error))
+        text = error.in_language(language) if isinstance(error, RocklyError) else str(error)
+        box = plain_message_box(self.parent(), QMessageBox.Icon.Critical, tr(title_key, language), text)
         if untouched:
             box.setInformativeText(tr("nothing_changed", language))
         box.setObjectName("error_box")

@@ -1,8 +1,8 @@
 """What Rockly remembers between starts: layout, language, profile, last and recent files."""
 from PySide6.QtCore import QSettings
 
+from rockly_desktop.core.app_texts import languages
 from rockly_desktop.core.paths import recordings_dir
-from rockly_desktop.profiles.i18n import SUPPORTED_LANGUAGES
 from rockly_desktop.ui.teacher_settings import TeacherSettings
 
 MAX_RECENT = 8
@@ -24,9 +24,9 @@ class AppSettings:
 
     @property
     def language(self) -> str:
-        """The window and block language: 'en' or 'de' (anything else stored reads as 'en')."""
+        """The window and block language: one Rockly speaks (anything else stored reads as 'en')."""
         language = str(self._get("language", "en"))
-        return language if language in SUPPORTED_LANGUAGES else "en"
+        return language if language in languages() else "en"
 
     @language.setter
     def language(self, value: str):

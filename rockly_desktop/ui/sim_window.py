@@ -8,13 +8,14 @@ lets the ROS thread wait for the person's answer.
 from PySide6.QtCore import Qt, QTimer, Signal
 from PySide6.QtWidgets import QLabel, QMainWindow
 
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.ui.simulator_dock import REFRESH_MS
 from rockly_desktop.ui.tablet import QtTablet
 from rockly_desktop.ui.texts import tr
 
 # Goes back to the program that asked (in another process), like the robot's other errors: English.
-UNANSWERED = "the person at the simulator closed the tablet question without answering"
+UNANSWERED = app_local_text("sim_unanswered")
 
 
 class SimulatorWindow(QMainWindow):

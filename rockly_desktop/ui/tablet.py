@@ -8,6 +8,7 @@ import threading
 from PySide6.QtCore import QObject, Qt, Signal
 from PySide6.QtWidgets import QDialog, QDialogButtonBox, QLabel, QLineEdit, QVBoxLayout
 
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
 from rockly_desktop.robot.tablet import TabletQuestion
 from rockly_desktop.ui.texts import tr
@@ -94,7 +95,7 @@ class QtTablet(QObject):
         self._sig_show.emit(request)
         try:
             if not interrupt.wait_until(request.done.is_set, timeout):
-                raise RobotTimeout(f"nobody answered the tablet within {timeout:g} s")
+                raise RobotTimeout(app_local_text("tablet_timeout", timeout=timeout))
         finally:
             if not request.done.is_set():
                 self._sig_close.emit(request)

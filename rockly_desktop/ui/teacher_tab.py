@@ -14,7 +14,6 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from rockly_desktop.profiles.i18n import localize
 from rockly_desktop.ui.teacher_settings import MIN_PIN_LENGTH
 from rockly_desktop.ui.texts import tr
 
@@ -95,7 +94,7 @@ class TeacherTab(QStackedWidget):
         if not profile.levels:
             self.level_box.addItem(tr("teacher_all_blocks", language), None)
         for level in profile.levels:
-            self.level_box.addItem(localize(level["name"], language), level["id"])
+            self.level_box.addItem(profile.localize(level["name"], language), level["id"])
         chosen = self.level_box.findData(teacher.level(profile.id))
         if chosen < 0:  # none chosen yet: the level with every category, as the editor shows then
             whole = next((level["id"] for level in profile.levels if level.get("categories") == "all"), None)
@@ -113,7 +112,7 @@ class TeacherTab(QStackedWidget):
         form.addRow(tr("teacher_max_turn", language), self.max_turn)
         self.capability_boxes = {}
         for capability in profile.capabilities:
-            box = QCheckBox(localize(capability["name"], language), page)
+            box = QCheckBox(profile.localize(capability["name"], language), page)
             box.setObjectName(f"teacher_capability_{capability['id']}")
             box.setChecked(capability["id"] not in limits.switched_off)
             self.capability_boxes[capability["id"]] = box

@@ -108,13 +108,15 @@ def test_robot_errors_keep_the_profiles_text_inside_a_translated_frame():
     def silent():
         raise RobotTimeout("the arm did not answer within 30 s")
 
-    for language, frame, timeout in (("en", "The robot could not do this: ", "The robot did not answer in time: "),
-                                     ("de", "Das konnte der Roboter nicht tun: ",
-                                      "Der Roboter hat nicht rechtzeitig geantwortet: ")):
+    # a plain text is shown as it is (German starts the sentence after the colon with a capital)
+    for language, frame, timeout, first in (
+            ("en", "The robot could not do this: ", "The robot did not answer in time: ", "t"),
+            ("de", "Das konnte der Roboter nicht tun: ", "Der Roboter hat nicht rechtzeitig geantwortet: ", "T")):
         result, _events = run("__rockly__.block('drive')\nrobot_drive()\n", language, namespace={"robot_drive": refuse})
-        assert (result.block_id, result.message) == ("drive", frame + "the field linear.x needs a number, not 'fast'")
+        detail = first + "he field linear.x needs a number, not 'fast'"
+        assert (result.block_id, result.message) == ("drive", frame + detail)
         result, _events = run("robot_arm()\n", language, namespace={"robot_arm": silent})
-        assert result.message == timeout + "the arm did not answer within 30 s"
+        assert result.message == timeout + first + "he arm did not answer within 30 s"
 
 
 def test_rocklys_own_errors_are_shown_as_written():

@@ -67,7 +67,7 @@ def test_the_turtlebots_drive_block_is_clamped_too(registry):
 @pytest.mark.parametrize(("language", "message"), [
     ("en", "The robot could not do this: the teacher switched off “Arm and gripper” for this robot"),
     ("de", "Das konnte der Roboter nicht tun: "
-           "die Lehrkraft hat „Arm und Greifer“ für diesen Roboter ausgeschaltet"),
+           "Die Lehrkraft hat „Arm und Greifer“ für diesen Roboter ausgeschaltet"),
 ])
 def test_a_switched_off_capability_fails_with_a_clear_message(hobbit, robot, language, message):
     goals = []

@@ -624,3 +624,27 @@ def test_localize_resolves_texts_anywhere_inside_a_definition_without_changing_i
 def test_templates_accept_only_plain_placeholders(profile, template):
     profile.edit_block("hobbit_move", lambda raw: raw["python"].update(code=template))
     assert_error(profile, "blocks.yaml", "blocks[hobbit_move].python.code", "placeholders are plain names")
+
+
+FRENCH_PO = '''msgid "drive %1 %2 metres"
+msgstr "avance %1 %2 mètres"
+
+msgid "Drive"
+msgstr "Rouler"
+
+#, fuzzy
+msgid "HOBBIT drives straight ahead or back by this many metres."
+msgstr "une ancienne traduction"
+'''
+
+
+def test_a_third_language_for_a_profile_is_one_file_in_its_catalogue(profile):
+    (profile.root / "locale").mkdir(exist_ok=True)
+    profile.write_text("locale/fr.po", FRENCH_PO)
+    loaded = load_profile(profile.root, SHARED_TOOLBOXES)
+    config = loaded.editor_config("fr")
+    drive = next(block["definition"] for block in config["blocks"] if block["definition"]["type"] == "hobbit_move")
+    assert drive["message0"] == "avance %1 %2 mètres"
+    assert drive["tooltip"] == "HOBBIT drives straight ahead or back by this many metres."   # fuzzy: English
+    assert config["toolbox"]["contents"][0]["name"] == "Rouler"
+    assert loaded.editor_config("de")["toolbox"]["contents"][0]["name"] == "Fahren"     # the YAML's own German

@@ -18,7 +18,7 @@ from rockly_desktop.robot.sim_world import SimBackend, SimWorld
 
 SKELETON = {"profile.yaml", "blocks.yaml", "toolbox.yaml", "rockly_demo/__init__.py", "rockly_demo/api.py",
             "rockly_demo/sim.py", "rockly_demo/view/__init__.py", "rockly_demo/view/widget.py",
-            "rockly_demo/view/texts.py", "tests/test_demo.py"}
+            "rockly_demo/view/texts.py", "tests/test_demo.py", "locale/messages.pot", "locale/de.po"}
 
 
 def rockly(*args, env=None):
@@ -63,7 +63,7 @@ def test_the_generated_test_passes(demo):
     result = subprocess.run([sys.executable, "-m", "pytest", str(demo / "tests"), "-q", "-p", "no:cacheprovider"],
                             capture_output=True, text=True, timeout=120, cwd=REPO)
     assert result.returncode == 0, result.stdout + result.stderr
-    assert "2 passed" in result.stdout
+    assert "3 passed" in result.stdout
 
 
 @pytest.mark.parametrize("name", ["Demo", "1robot", "my-robot", "../escape", "a" * 41, ""])

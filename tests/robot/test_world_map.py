@@ -4,6 +4,7 @@ import math
 import pytest
 
 from rockly_desktop.robot.world_map import World, load_world
+from rockly_desktop.sdk import Texts
 from rockly_desktop.sdk import World as SdkWorld
 from rockly_desktop.sdk import load_world as sdk_load_world
 
@@ -11,30 +12,42 @@ ROOM_YAML = """\
 radius: 0.2
 area: [0, 0, 4, 3]
 obstacles:
-  - {id: wall, kind: wall, name: {en: the wall, de: die Wand}, rect: [4, 0, 4.1, 3]}
-  - {id: table, name: {en: the table, de: den Tisch}, rect: [1, 1, 2, 2]}
-  - {id: pot, name: {en: the pot, de: den Topf}, circle: [3, 2.5, 0.2]}
+  - {id: wall, kind: wall, name: the_wall, rect: [4, 0, 4.1, 3]}
+  - {id: table, name: the_table, rect: [1, 1, 2, 2]}
+  - {id: pot, name: the_pot, circle: [3, 2.5, 0.2]}
   - {id: wedge, name: the wedge, polygon: [[0, 2], [0.5, 3], [0, 3]]}
 """
+NAMES = {"the_wall": ("the wall", "die Wand"), "the_table": ("the table", "den Tisch"),
+         "the_pot": ("the pot", "den Topf")}
+
+
+def write_catalogue(folder, names):
+    """A profile's catalogue (messages.pot, de.po) with these keys: (English, German)."""
+    folder.mkdir()
+    for name, column in (("messages.pot", None), ("de.po", 1)):
+        entries = [f'msgctxt "{key}"\nmsgid "{texts[0]}"\nmsgstr "{texts[column] if column else ""}"\n'
+                   for key, texts in names.items()]
+        (folder / name).write_text("\n".join(entries), encoding="utf-8")
+    return Texts(folder)
 
 
 @pytest.fixture
 def room(tmp_path):
     path = tmp_path / "world.yaml"
     path.write_text(ROOM_YAML, encoding="utf-8")
-    return load_world(path)
+    return load_world(path, write_catalogue(tmp_path / "locale", NAMES))
 
 
 def test_the_sdk_offers_the_world():
     assert (SdkWorld, sdk_load_world) == (World, load_world)
 
 
-def test_a_world_file_gives_named_obstacles_in_both_languages(room):
+def test_a_world_file_names_its_obstacles_from_the_profiles_catalogue_in_every_language(room):
     assert [o.id for o in room.obstacles] == ["wall", "table", "pot", "wedge"]
     table = room.obstacle("table")
     assert (table.name("en"), table.name("de"), table.name("fr"), table.kind) == ("the table", "den Tisch",
                                                                                    "the table", "furniture")
-    assert room.obstacle("wedge").name("de") == "the wedge"
+    assert room.obstacle("wedge").name("de") == "the wedge"     # not a key: shown as it is
     assert table.bounds == (1.0, 1.0, 2.0, 2.0)
     assert room.radius == 0.2 and room.area == (0.0, 0.0, 4.0, 3.0)
 

@@ -104,6 +104,29 @@ def test_a_run_error_is_explained_in_german_naming_the_variable(qtbot, german_wi
     qtbot.waitUntil(lambda: run_js(qtbot, window.editor, marked), timeout=5000)
 
 
+GERMAN_DISTANCE_ERROR = "Das konnte der Roboter nicht tun: Die Strecke muss eine Zahl sein, nicht 'ten'"
+
+
+def run_the_distance_ten(qtbot, window):
+    """Run a HOBBIT drive whose distance is the text 'ten'; the run's result."""
+    ws = workspace(stack(
+        block("variables_set", {"VAR": {"id": "d"}}, {"VALUE": text("ten")}, id="set"),
+        block("hobbit_move", {"direction": "+"}, {"speed": block("variables_get", {"VAR": {"id": "d"}})}, id="drive")))
+    ws["variables"] = [{"name": "Strecke", "id": "d"}]
+    call_page(qtbot, window.editor, "load", {"workspace": ws})
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=20000) as blocker:
+        window.runs.run()
+    return blocker.args[0]
+
+
+def test_a_profiles_command_error_is_all_german_in_a_german_window(qtbot, german_window):
+    result = run_the_distance_ten(qtbot, german_window)
+    assert (result.outcome, result.block_id, result.message) == ("error", "drive", GERMAN_DISTANCE_ERROR)
+    boxes = [box for box in german_window.findChildren(QMessageBox)
+             if box.objectName() == "run_error_box" and box.isVisible()]
+    assert boxes and (boxes[0].windowTitle(), boxes[0].text()) == ("Etwas ist schiefgegangen", GERMAN_DISTANCE_ERROR)
+
+
 # --- the ROS connection -----------------------------------------------------------------------
 
 

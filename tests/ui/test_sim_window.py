@@ -118,7 +118,7 @@ def test_closing_a_question_without_answering_fails_the_call_instead_of_answerin
     qtbot.waitUntil(lambda: bool(open_dialogs(window)), timeout=5000)
     qtbot.keyClick(open_dialogs(window)[0], Qt.Key.Key_Escape)
     error = call.join().error
-    assert isinstance(error, RobotCommandError) and UNANSWERED in str(error)
+    assert isinstance(error, RobotCommandError) and str(UNANSWERED) in str(error)
 
 
 def test_sos_and_volume_notices_show_in_the_window(qtbot, sim):

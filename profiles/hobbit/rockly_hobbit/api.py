@@ -10,12 +10,13 @@ They read the same whether generated from blocks or written by hand::
 
 Every command waits until the robot has done it (a drive, an arm motion, a question on
 the tablet), except ``show_emotion``, ``look`` and ``show_info``, which return at once.
+Their errors are texts of the profile's catalogue (``locale/``), shown in the run's language.
 """
 import math
 
 from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotCommands, RobotTimeout, field_value
 
-from .world import CONTACT_TOPIC, WORLD, blocked_on_the_way, bumped, goal_problem
+from .world import CONTACT_TOPIC, TEXTS, WORLD, blocked_on_the_way_text, bump_text, goal_problem_text
 
 HEAD_POSITIONS = (
     "center_center", "up_center", "down_center", "center_right", "center_left", "up_right",
@@ -47,8 +48,6 @@ MOVE_TOLERANCE = 0.005  # metres
 TURN_TOLERANCE = 0.5  # degrees
 DIALOG_TIMEOUT = 60.0
 SENSOR_TIMEOUT = 3.0
-GOAL_ENDS_DE = {GoalStatus.ABORTED: "abgebrochen", GoalStatus.PREEMPTED: "unterbrochen",
-                GoalStatus.REJECTED: "abgelehnt", GoalStatus.SUCCEEDED: "erreicht"}
 
 
 class _Progress:
@@ -95,7 +94,7 @@ class Hobbit(RobotCommands):
 
         A pause halts the base at once; on Continue it drives the rest of the way.
         """
-        metres = self.number(distance, "the distance") * self.choose(direction, DIRECTIONS, "direction")
+        metres = self.number(distance, TEXTS("the_distance")) * self.choose(direction, DIRECTIONS, TEXTS("direction"))
         self._discrete_motion("Move", metres, MOVE_TOLERANCE)
 
     def turn(self, angle, direction="left"):
@@ -103,26 +102,26 @@ class Hobbit(RobotCommands):
 
         A pause halts the turn at once; on Continue it turns the rest of the way.
         """
-        degrees = self.number(angle, "the angle") * self.choose(direction, TURN_DIRECTIONS, "direction")
+        degrees = self.number(angle, TEXTS("the_angle")) * self.choose(direction, TURN_DIRECTIONS, TEXTS("direction"))
         self._discrete_motion("Turn", degrees, TURN_TOLERANCE)
 
     def navigate_to(self, x, y, heading=0):
         """Drive to the map position (``x``, ``y``) in metres, then face ``heading`` degrees; waits."""
-        yaw = math.radians(self.number(heading, "the heading"))
+        yaw = math.radians(self.number(heading, TEXTS("the_heading")))
         self.navigate_to_pose(x, y, 0.0, 0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2))
 
     def navigate_to_pose(self, x, y, z, qx, qy, qz, qw):
         """Drive to a full pose in the ``map`` frame (position and orientation quaternion); waits."""
-        values = [self.number(value, name) for value, name in
-                  ((x, "x"), (y, "y"), (z, "z"), (qx, "quat x"), (qy, "quat y"), (qz, "quat z"), (qw, "quat w"))]
+        values = [self.number(value, TEXTS(name)) for value, name in
+                  ((x, "coordinate_x"), (y, "coordinate_y"), (z, "coordinate_z"), (qx, "quaternion_x"),
+                   (qy, "quaternion_y"), (qz, "quaternion_z"), (qw, "quaternion_w"))]
         pose = {"header": {"frame_id": "map"},
                 "pose": {"position": dict(zip("xyz", values[:3], strict=True)),
                          "orientation": dict(zip("xyzw", values[3:], strict=True))}}
         outcome = self.backend.send_goal(NAV_ACTION, NAV_ACTION_TYPE, {"target_pose": pose}).wait(MOTION_TIMEOUT)
         if outcome.status is not GoalStatus.SUCCEEDED:
             reason = self._navigation_reason(values[0], values[1], outcome)
-            raise RobotCommandError(f"HOBBIT could not reach the goal: {reason['en']}",
-                                    translations={"de": f"HOBBIT konnte das Ziel nicht erreichen: {reason['de']}"})
+            raise RobotCommandError(TEXTS("goal_not_reached", reason=reason))
 
     def stop(self):
         """Stop the base at once."""
@@ -133,34 +132,34 @@ class Hobbit(RobotCommands):
 
     def look(self, position):
         """Move the head to a named position, e.g. ``'center_center'`` (straight) or ``'up_left'``."""
-        self.choose(position, dict.fromkeys(HEAD_POSITIONS), "head position")
+        self.choose(position, dict.fromkeys(HEAD_POSITIONS), TEXTS("head_position"))
         self.backend.publish("/head/move", "std_msgs/String", {"data": position})
 
     def show_emotion(self, emotion):
         """Show an emotion in the eyes: HAPPY, VHAPPY, LTIRED, VTIRED, CONCERNED, SAD, WONDERING, NEUTRAL, SLEEPING."""
-        self.choose(emotion, dict.fromkeys(EMOTIONS), "emotion")
+        self.choose(emotion, dict.fromkeys(EMOTIONS), TEXTS("emotion"))
         self.backend.publish("/head/emo", "std_msgs/String", {"data": emotion})
 
     # --- arm ----------------------------------------------------------------------------
 
     def move_arm(self, position):
         """Move the arm to ``'candle'``, ``'home'``, ``'floor'``, ``'table'`` or ``'tray'``; waits."""
-        self._arm(self.choose(position, ARM_POSITIONS, "arm position"))
+        self._arm(self.choose(position, ARM_POSITIONS, TEXTS("arm_position")))
 
     def turntable(self, action):
         """Use the turntable: ``'learn'``, ``'store'``, ``'clockwise'`` or ``'counterclockwise'``; waits."""
-        self._arm(self.choose(action, TURNTABLE_ACTIONS, "turntable action"))
+        self._arm(self.choose(action, TURNTABLE_ACTIONS, TEXTS("turntable_action")))
 
     def gripper(self, action):
         """``'open'`` or ``'close'`` the gripper; waits."""
-        self._arm(self.choose(action, GRIPPER_ACTIONS, "gripper action"))
+        self._arm(self.choose(action, GRIPPER_ACTIONS, TEXTS("gripper_action")))
 
     def move_arm_to_joints(self, joints):
         """Move the arm to six joint values (degrees as the arm server expects them); waits."""
         values = list(joints) if isinstance(joints, (list, tuple)) else None
         if values is None or len(values) != 6:
-            raise RobotCommandError(f"the arm needs exactly 6 joint values, not {joints!r}")
-        self._arm("MoveToJointValues", [[self.number(v, "a joint value") for v in values]])
+            raise RobotCommandError(TEXTS("arm_needs_six", joints=repr(joints)))
+        self._arm("MoveToJointValues", [[self.number(v, TEXTS("a_joint_value")) for v in values]])
 
     # --- tablet -------------------------------------------------------------------------
 
@@ -186,7 +185,7 @@ class Hobbit(RobotCommands):
 
     def change_volume(self, change):
         """Make the voice ``'louder'`` or ``'quieter'`` (10 % a step)."""
-        self._tablet_function(self.choose(change, VOLUME_CHANGES, "volume change"))
+        self._tablet_function(self.choose(change, VOLUME_CHANGES, TEXTS("volume_change")))
 
     # --- what the robot knows ----------------------------------------------------------
 
@@ -196,7 +195,7 @@ class Hobbit(RobotCommands):
 
     def position(self, coordinate="x"):
         """Where the robot is on its odometry: ``'x'`` or ``'y'`` in metres, ``'heading'`` in degrees."""
-        self.choose(coordinate, dict.fromkeys(("x", "y", "heading")), "coordinate")
+        self.choose(coordinate, dict.fromkeys(("x", "y", "heading")), TEXTS("coordinate"))
         pose = self._latest("/odom", "nav_msgs/Odometry", "pose.pose")
         if coordinate == "heading":
             q = pose["orientation"]
@@ -230,17 +229,17 @@ class Hobbit(RobotCommands):
 
     def wait(self, seconds):
         """Do nothing for ``seconds`` seconds."""
-        self.backend.sleep(max(0.0, self.number(seconds, "the waiting time")))
+        self.backend.sleep(max(0.0, self.number(seconds, TEXTS("the_waiting_time"))))
 
     def publish(self, topic, message_type, value):
         """Publish ``value`` on ``topic`` as a std_msgs type: String, Bool, Float64, Int64 or UInt64."""
-        msg_type = self.choose(message_type, MESSAGE_TYPES, "message type")
+        msg_type = self.choose(message_type, MESSAGE_TYPES, TEXTS("message_type"))
         self.backend.publish(str(topic), msg_type, {"data": value})
 
     def call_service(self, name, service_type, parameters=None, with_parameters=True, timeout=DIALOG_TIMEOUT):
         """Call any service by name and type; ``parameters`` are the request's fields (a mapping
         or JSON text), sent only ``with_parameters``; returns the response dict."""
-        request = self.mapping(parameters, "service parameters") if with_parameters else {}
+        request = self.mapping(parameters, TEXTS("service_parameters")) if with_parameters else {}
         return self.backend.call_service(str(name), str(service_type), request, timeout)
 
     # --- helpers ------------------------------------------------------------------------
@@ -253,7 +252,7 @@ class Hobbit(RobotCommands):
         try:
             return field_value(message, field)
         except KeyError:
-            raise RobotCommandError(f"the messages on '{topic}' have no field '{field}'") from None
+            raise RobotCommandError(TEXTS("no_field", topic=topic, field=field)) from None
 
     def _discrete_motion(self, kind, amount, tolerance):
         """``Move <metres>`` / ``Turn <degrees>`` with the base driver, waiting for ``Idle``.
@@ -280,7 +279,7 @@ class Hobbit(RobotCommands):
                 if not self.backend.wait_until(
                         lambda states=states, bumps=bumps: "Idle" in states or bumps or self.backend.pause_requested(),
                         MOTION_TIMEOUT):
-                    raise RobotTimeout(f"the base did not finish '{kind} {remaining:g}' within {MOTION_TIMEOUT:g} s")
+                    raise RobotTimeout(TEXTS("base_timeout", command=f"{kind} {remaining:g}", timeout=MOTION_TIMEOUT))
                 if bumps:
                     self.stop()
                     raise self._bump_error()
@@ -296,37 +295,32 @@ class Hobbit(RobotCommands):
                 unsubscribe_odom()
                 unsubscribe_bumper()
             if progress.updates < 2:
-                raise RobotCommandError(f"the base was halted for a pause, but without odometry (/odom) "
-                                        f"Rockly cannot tell how much of '{kind} {remaining:g}' is left")
+                raise RobotCommandError(TEXTS("pause_without_odometry", command=f"{kind} {remaining:g}"))
             remaining -= progress.done
             self.backend.hold()
 
     def _navigation_reason(self, x, y, outcome):
-        """{language: why move_base ended the goal}: the simulator's reasons in both languages, else its text."""
-        known = [goal_problem(x, y)] + [blocked_on_the_way(obstacle.id) for obstacle in WORLD.obstacles]
+        """Why move_base ended the goal: the simulator's reasons as texts of the catalogue, else its own words."""
+        known = [goal_problem_text(x, y)] + [blocked_on_the_way_text(obstacle.id) for obstacle in WORLD.obstacles]
         for reason in known:
-            if reason is not None and reason["en"] == outcome.text:
+            if reason is not None and str(reason) == outcome.text:
                 return reason
         if outcome.text:   # a real move_base's own words (English)
-            return {"en": outcome.text, "de": outcome.text}
-        return {"en": f"the goal was {outcome.status.value}", "de": f"das Ziel wurde {GOAL_ENDS_DE[outcome.status]}"}
+            return outcome.text
+        return TEXTS("goal_ended", status=TEXTS(f"status_{outcome.status.value}"))
 
     def _bump_error(self):
         """The RobotCommandError for a bump, naming what the simulator says was hit."""
         contact = self.backend.latest(CONTACT_TOPIC, "std_msgs/String")
-        message = bumped(contact["data"] if contact else None)
-        return RobotCommandError(message["en"], translations={"de": message["de"]})
+        return RobotCommandError(bump_text(contact["data"] if contact else None))
 
     def _arm(self, command, joints=()):
         goal = {"command": {"data": command}, "velocity": 0.0,
                 "joints": [{"joint_values": vector} for vector in joints]}
-        self._run_goal(ARM_ACTION, ARM_ACTION_TYPE, goal, f"arm command {command}")
-
-    def _run_goal(self, action, action_type, goal, what):
-        outcome = self.backend.send_goal(action, action_type, goal).wait(MOTION_TIMEOUT)
+        outcome = self.backend.send_goal(ARM_ACTION, ARM_ACTION_TYPE, goal).wait(MOTION_TIMEOUT)
         if outcome.status is not GoalStatus.SUCCEEDED:
-            raise RobotCommandError(f"the robot could not finish the {what} ({outcome.status.value})")
-        return outcome
+            status = TEXTS(f"status_{outcome.status.value}")
+            raise RobotCommandError(TEXTS("arm_failed", command=command, status=status))
 
     def _tablet(self, dialog_type, text, timeout=DIALOG_TIMEOUT):
         params = [{"name": "type", "value": dialog_type}, {"name": "text", "value": str(text)},

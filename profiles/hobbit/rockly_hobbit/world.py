@@ -1,42 +1,58 @@
-"""HOBBIT's house as data (``world.yaml``): the simulator bumps into it and the view draws it."""
+"""HOBBIT's house as data (``world.yaml``): the simulator bumps into it and the view draws it.
+
+Its names and what HOBBIT says about them are texts of the profile's catalogue (``locale/``).
+"""
 from pathlib import Path
 
-from rockly_desktop.sdk import load_world
+from rockly_desktop.sdk import load_world, profile_texts
 
-WORLD = load_world(Path(__file__).with_name("world.yaml"))
+TEXTS = profile_texts(__file__)
+WORLD = load_world(Path(__file__).with_name("world.yaml"), TEXTS)
 
 CONTACT_TOPIC = "/sim/contact"   # the simulator's own: the id of what it bumped into (a real HOBBIT has none)
 
 
+def bump_text(obstacle_id=None):
+    """"HOBBIT bumped into ..." (a LocalText) for the obstacle with this id (``something`` when unknown)."""
+    return TEXTS("bumped_into", thing=_name(obstacle_id))
+
+
+def every_language(text) -> dict:
+    """{language: text} of a LocalText in every language of the profile's catalogue."""
+    return {language: text.in_language(language) for language in TEXTS.languages}
+
+
 def bumped(obstacle_id=None):
     """{language: "HOBBIT bumped into ..."} for the obstacle with this id (``something`` when unknown)."""
-    obstacle = _known(obstacle_id)
-    if obstacle is None:
-        return {"en": "HOBBIT bumped into something", "de": "HOBBIT ist gegen etwas gestoßen"}
-    return {"en": f"HOBBIT bumped into {obstacle.name('en')}", "de": f"HOBBIT ist gegen {obstacle.name('de')} gestoßen"}
+    return every_language(bump_text(obstacle_id))
+
+
+def blocked_on_the_way_text(obstacle_id):
+    """Why a navigation goal was aborted (a LocalText): it bumped into the obstacle on its way there."""
+    return TEXTS("bumped_on_the_way", thing=_name(obstacle_id))
 
 
 def blocked_on_the_way(obstacle_id):
     """{language: why a navigation goal was aborted}: it bumped into the obstacle on its way there."""
-    obstacle = _known(obstacle_id)
-    name_en, name_de = (obstacle.name("en"), obstacle.name("de")) if obstacle else ("something", "etwas")
-    return {"en": f"HOBBIT bumped into {name_en} on the way", "de": f"HOBBIT ist unterwegs gegen {name_de} gestoßen"}
+    return every_language(blocked_on_the_way_text(obstacle_id))
+
+
+def goal_problem_text(x, y):
+    """Why HOBBIT cannot stand at the map point (x, y) (a LocalText), or None when it can."""
+    if not WORLD.in_area(x, y):
+        return TEXTS("goal_outside", x=x, y=y)
+    obstacle = WORLD.touching(x, y)
+    return None if obstacle is None else TEXTS("goal_in_furniture", thing=obstacle.label)
 
 
 def goal_problem(x, y):
     """{language: why HOBBIT cannot stand at the map point (x, y)}, or None when it can."""
-    if not WORLD.in_area(x, y):
-        return {"en": f"the goal ({x:.2f}, {y:.2f}) is outside the map",
-                "de": f"das Ziel ({x:.2f}, {y:.2f}) liegt außerhalb der Karte"}
-    obstacle = WORLD.touching(x, y)
-    if obstacle is None:
-        return None
-    return {"en": f"at the goal HOBBIT would bump into {obstacle.name('en')}",
-            "de": f"am Ziel würde HOBBIT gegen {obstacle.name('de')} stoßen"}
+    problem = goal_problem_text(x, y)
+    return None if problem is None else every_language(problem)
 
 
-def _known(obstacle_id):
+def _name(obstacle_id):
     try:
-        return WORLD.obstacle(obstacle_id)
+        return WORLD.obstacle(obstacle_id).label
     except KeyError:
-        return None
+        return TEXTS("something")

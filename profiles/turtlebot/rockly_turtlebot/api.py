@@ -26,7 +26,7 @@ import time
 
 from rockly_desktop.sdk import RobotCommandError, RobotCommands, RobotTimeout, nearest_in_scan
 
-from .arena import bumped
+from .arena import TEXTS, bumped
 
 CMD_VEL, TWIST = "/cmd_vel", "geometry_msgs/Twist"
 ODOM, ODOMETRY = "/odom", "nav_msgs/Odometry"
@@ -144,21 +144,21 @@ class TurtleBot(RobotCommands):
         Raises a RobotCommandError when the robot bumps into something or something blocks the way
         (the robot is stopped there).
         """
-        metres = self.number(distance, "the distance") * self.choose(direction, DIRECTIONS, "direction")
+        metres = self.number(distance, TEXTS("the_distance")) * self.choose(direction, DIRECTIONS, TEXTS("direction"))
         self._move("drive", metres)
 
     def turn(self, angle, direction="left"):
         """Turn on the spot by ``angle`` degrees, ``'left'`` (counter-clockwise) or ``'right'``; waits until done."""
-        radians = math.radians(self.number(angle, "the angle")) * self.choose(direction, TURN_DIRECTIONS, "direction")
+        radians = math.radians(self.number(angle, TEXTS("the_angle")))
+        radians *= self.choose(direction, TURN_DIRECTIONS, TEXTS("direction"))
         self._move("turn", radians)
 
     def drive_for(self, speed, seconds):
         """Drive straight at ``speed`` m/s (-0.22 to 0.22; negative is backward) for ``seconds``, then stop."""
-        speed = self.number(speed, "the speed")
+        speed = self.number(speed, TEXTS("the_speed"))
         if abs(speed) > MAX_SPEED + 1e-9:
-            raise RobotCommandError(f"the speed must be between -{MAX_SPEED:g} and {MAX_SPEED:g} m/s "
-                                    f"(the TurtleBot's top speed), not {speed:g}")
-        left = max(0.0, self.number(seconds, "the time"))
+            raise RobotCommandError(TEXTS("speed_too_high", top=MAX_SPEED, speed=speed))
+        left = max(0.0, self.number(seconds, TEXTS("the_time")))
         while left > TIME_TOLERANCE:
             outcome, done = self._timed_run(speed, left)
             left -= done
@@ -180,32 +180,32 @@ class TurtleBot(RobotCommands):
         centre. When nothing is in sight (farther than the laser reaches) it is infinity, so
         ``robot.distance('ahead') < 0.5`` is simply false.
         """
-        centre = self.choose(direction, SIDES, "direction")
+        centre = self.choose(direction, SIDES, TEXTS("direction"))
         scan = self._latest(SCAN, LASER_SCAN)
         try:
             return nearest_in_scan(scan, centre)
         except (KeyError, TypeError, ValueError):
-            raise RobotCommandError(f"the messages on '{SCAN}' are not laser scans") from None
+            raise RobotCommandError(TEXTS("not_laser_scans", topic=SCAN)) from None
 
     def obstacle_closer_than(self, metres, direction="ahead") -> bool:
         """True when the laser sees something closer than ``metres`` in that direction (see ``distance``)."""
-        limit = self.number(metres, "the distance")
+        limit = self.number(metres, TEXTS("the_distance"))
         if limit < 0:
-            raise RobotCommandError(f"the distance must not be negative, not {limit:g}")
+            raise RobotCommandError(TEXTS("distance_negative", limit=limit))
         return self.distance(direction) < limit
 
     def battery_level(self) -> float:
         """The battery's charge in percent (0-100)."""
         percentage = self._latest(BATTERY, BATTERY_STATE).get("percentage")
         if not isinstance(percentage, (int, float)) or not math.isfinite(percentage):
-            raise RobotCommandError("the battery does not report its charge")
+            raise RobotCommandError(TEXTS("no_battery_charge"))
         return float(percentage) * 100
 
     # --- time ----------------------------------------------------------------------------
 
     def wait(self, seconds):
         """Do nothing for ``seconds`` seconds."""
-        self.backend.sleep(max(0.0, self.number(seconds, "the waiting time")))
+        self.backend.sleep(max(0.0, self.number(seconds, TEXTS("the_waiting_time"))))
 
     # --- helpers -------------------------------------------------------------------------
 
@@ -231,11 +231,9 @@ class TurtleBot(RobotCommands):
                 raise self._bump_error()
             if outcome == "stalled":
                 if kind == "drive":
-                    raise RobotCommandError(f"something blocks the way: the TurtleBot stopped after "
-                                            f"{abs(done_total):.2f} of {abs(amount):.2f} m")
-                raise RobotCommandError(f"something keeps the TurtleBot from turning: it stopped after "
-                                        f"{abs(math.degrees(done_total)):.0f} of "
-                                        f"{abs(math.degrees(amount)):.0f} degrees")
+                    raise RobotCommandError(TEXTS("way_blocked", done=abs(done_total), total=abs(amount)))
+                raise RobotCommandError(TEXTS("turn_blocked", done=abs(math.degrees(done_total)),
+                                              total=abs(math.degrees(amount))))
             if outcome == "paused":
                 self.backend.hold()
             else:
@@ -269,8 +267,7 @@ class TurtleBot(RobotCommands):
     def _bump_error(self):
         """The RobotCommandError for a bump, naming what the simulator says was hit."""
         contact = self.backend.latest(CONTACT, "std_msgs/String")
-        message = bumped(contact["data"] if contact else None)
-        return RobotCommandError(message["en"], translations={"de": message["de"]})
+        return RobotCommandError(bumped(contact["data"] if contact else None))
 
     def _loop(self, kind, command, arrived, target, stall_amount):
         start = _Pose(self._latest(ODOM, ODOMETRY))
@@ -303,7 +300,7 @@ class TurtleBot(RobotCommands):
         while True:
             if not self.backend.wait_until(
                     lambda seen=seen: progress.count > seen or bumps or self.backend.pause_requested(), SENSOR_TIMEOUT):
-                raise RobotTimeout(f"no odometry arrived on '{ODOM}' for {SENSOR_TIMEOUT:g} s")
+                raise RobotTimeout(TEXTS("no_odometry", topic=ODOM, timeout=SENSOR_TIMEOUT))
             if bumps:
                 return "bumped"
             if self.backend.pause_requested():

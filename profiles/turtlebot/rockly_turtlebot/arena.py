@@ -7,7 +7,9 @@ given by its inside ``(x_min, y_min, x_max, y_max)``; its four walls are solid r
 view paints them. The SDK's ``World`` does the geometry: what the laser sees is exactly what
 the robot bumps into (the laser's 360 rays x 20 edges with numpy: about 0.2 ms a scan).
 """
-from rockly_desktop.sdk import Obstacle, World
+from rockly_desktop.sdk import Obstacle, World, profile_texts
+
+TEXTS = profile_texts(__file__)    # the profile's catalogue (locale/): the names and the bump message
 
 ROOM = (-0.5, -1.5, 3.5, 1.5)        # a 4 m x 3 m room
 BOXES = (
@@ -17,11 +19,9 @@ BOXES = (
 )
 ROBOT_RADIUS = 0.105                 # m, the TurtleBot3 Burger's footprint as a circle
 WALL = 0.07                          # m, as thick as the view draws the walls
-# the boxes' names, in the order of the view's colours (palette.BOX_COLOURS)
-BOX_NAMES = (("the red box", "die rote Kiste"), ("the blue box", "die blaue Kiste"),
-             ("the yellow box", "die gelbe Kiste"), ("the green box", "die grüne Kiste"),
-             ("the purple box", "die lila Kiste"))
-WALL_NAME = (("en", "the wall"), ("de", "die Wand"))
+# the boxes' names (keys of the catalogue), in the order of the view's colours (palette.BOX_COLOURS)
+BOX_NAMES = ("the_red_box", "the_blue_box", "the_yellow_box", "the_green_box", "the_purple_box")
+WALL_NAME = "the_wall"
 
 
 def _rectangle(values, what):
@@ -43,10 +43,10 @@ class Arena(World):
         walls = {"wall_front": (x1, y0 - WALL, x1 + WALL, y1 + WALL),
                  "wall_back": (x0 - WALL, y0 - WALL, x0, y1 + WALL),
                  "wall_left": (x0, y1, x1, y1 + WALL), "wall_right": (x0, y0 - WALL, x1, y0)}
-        obstacles = [Obstacle(name, WALL_NAME, _rectangle(rect, "a wall"), "wall") for name, rect in walls.items()]
+        obstacles = [Obstacle(name, TEXTS(WALL_NAME), _rectangle(rect, "a wall"), "wall")
+                     for name, rect in walls.items()]
         for index, box in enumerate(self.boxes):
-            english, german = BOX_NAMES[index % len(BOX_NAMES)]
-            obstacles.append(Obstacle(f"box_{index + 1}", (("en", english), ("de", german)),
+            obstacles.append(Obstacle(f"box_{index + 1}", TEXTS(BOX_NAMES[index % len(BOX_NAMES)]),
                                       _rectangle(box, "a box")))
         super().__init__(obstacles, radius, area=self.room)
 
@@ -57,14 +57,11 @@ class Arena(World):
 
 
 def bumped(obstacle_id=None):
-    """{language: "The TurtleBot bumped into ..."} for an obstacle id of an Arena (``something`` when unknown)."""
+    """"The TurtleBot bumped into ..." (a LocalText) for an obstacle id of an Arena (``something`` when unknown)."""
     kind, _, number = str(obstacle_id).partition("_")
-    names = None
+    name = "something"
     if kind == "wall":
-        names = dict(WALL_NAME)
+        name = WALL_NAME
     elif kind == "box" and number.isdigit() and int(number) > 0:
-        english, german = BOX_NAMES[(int(number) - 1) % len(BOX_NAMES)]
-        names = {"en": english, "de": german}
-    if names is None:
-        return {"en": "The TurtleBot bumped into something", "de": "Der TurtleBot ist gegen etwas gestoßen"}
-    return {"en": f"The TurtleBot bumped into {names['en']}", "de": f"Der TurtleBot ist gegen {names['de']} gestoßen"}
+        name = BOX_NAMES[(int(number) - 1) % len(BOX_NAMES)]
+    return TEXTS("bumped_into", thing=TEXTS(name))

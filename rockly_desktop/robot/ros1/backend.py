@@ -9,6 +9,7 @@ import threading
 import time
 import xmlrpc.client
 
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import RobotCommandError, RobotConnectionLost, RobotTimeout
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
 from rockly_desktop.robot.ros1.connection import ask_master
@@ -151,7 +152,7 @@ class Ros1GoalHandle(GoalHandle):
         action server's node is gone); its status and result."""
         status = self._client.action_client.status_sub.resolved_name
         if not self._backend.wait_for_event(self._finished, timeout, depends=(status,)):
-            raise RobotTimeout(f"the action '{self._action}' did not finish within {timeout:g} s")
+            raise RobotTimeout(app_local_text("sim_action_timeout", action=self._action, timeout=timeout))
         result = self._client.get_result()
         return GoalOutcome(_ACTIONLIB_STATUS[self._client.get_state()],
                            from_message(result) if result is not None else {}, self._client.get_goal_status_text())
@@ -172,8 +173,7 @@ class Ros1Backend(RobotBackend):
     def _check(self):
         self.interrupt.check()
         if self.graph.connection.lost:
-            raise RobotConnectionLost(f"the connection to the robot was lost (no ROS master at "
-                                      f"{self.graph.connection.master_uri})")
+            raise RobotConnectionLost(app_local_text("ros_connection_lost", master=self.graph.connection.master_uri))
 
     def _check_waiting(self, started: float, depends=()):
         """``_check``, and once a wait has lasted LOOK_SECONDS, that the nodes it depends on live."""
@@ -181,7 +181,7 @@ class Ros1Backend(RobotBackend):
         if time.monotonic() - started >= LOOK_SECONDS:
             topic = self._dependencies.gone(depends)
             if topic is not None:
-                raise RobotConnectionLost(f"the robot stopped answering: the node publishing '{topic}' is gone")
+                raise RobotConnectionLost(app_local_text("ros_node_gone", topic=topic))
 
     def wait_until(self, predicate, timeout: float, depends=()) -> bool:
         """Poll ``predicate`` until true (True) or ``timeout`` (False); stop, a lost master or a
@@ -237,7 +237,7 @@ class Ros1Backend(RobotBackend):
         except (OSError, xmlrpc.client.Error):
             types = {}
         if topic not in types:
-            raise RobotTimeout(f"there is no topic '{topic}' (nobody publishes it)")
+            raise RobotTimeout(app_local_text("ros_no_topic", topic=topic))
         return types[topic]
 
     def subscribe(self, topic: str, msg_type: str, callback):
@@ -268,7 +268,7 @@ class Ros1Backend(RobotBackend):
         unsubscribe = self.subscribe(topic, msg_type, lambda message: (received.append(message), arrived.set()))
         try:
             if not self.wait_for_event(arrived, timeout):
-                raise RobotTimeout(f"no message arrived on the topic '{topic}' within {timeout:g} s")
+                raise RobotTimeout(app_local_text("sim_no_message", topic=topic, timeout=timeout))
         finally:
             unsubscribe()
         return received[0]
@@ -286,7 +286,7 @@ class Ros1Backend(RobotBackend):
                 return True
 
             if not self.wait_until(probe, timeout):
-                raise RobotTimeout(f"the service '{name}' is not available (waited {timeout:g} s)")
+                raise RobotTimeout(app_local_text("sim_service_missing", name=name, timeout=timeout))
             self.graph.available_services.add(name)
         deadline = time.monotonic() + timeout
         connection = self.graph.connection
@@ -296,10 +296,10 @@ class Ros1Backend(RobotBackend):
             cut=lambda: self.graph.forget_service(name))
         if outcome.ended:
             self._check()
-            raise RobotTimeout(f"the service '{name}' did not answer within {timeout:g} s")
+            raise RobotTimeout(app_local_text("ros_service_timeout", name=name, timeout=timeout))
         if outcome.error is not None:
             self.graph.forget_service(name)
-            raise RobotCommandError(f"the service '{name}' failed: {outcome.error}")
+            raise RobotCommandError(app_local_text("sim_service_failed", name=name, error=outcome.error))
         response = from_message(outcome.response)
         for watcher in list(self.graph.service_watchers):
             watcher(name, "service", {"request": request, "response": response})
@@ -312,7 +312,7 @@ class Ros1Backend(RobotBackend):
         import rospy
 
         if not self.wait_until(lambda: client.wait_for_server(rospy.Duration(0.05)), 5.0):
-            raise RobotCommandError(f"there is no action server '{action}'")
+            raise RobotCommandError(app_local_text("sim_no_action", action=action))
         if action not in self.graph.goals_sent:  # actionlib waits for the server only, not for others listening
             self._wait_for_subscribers(client.action_client.pub_goal)
             self.graph.goals_sent.add(action)

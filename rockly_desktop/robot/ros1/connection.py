@@ -14,6 +14,7 @@ import threading
 import time
 import xmlrpc.client
 
+from rockly_desktop.core.app_texts import app_text
 from rockly_desktop.robot.link import RobotUnavailable
 
 log = logging.getLogger(__name__)
@@ -60,15 +61,6 @@ def master_answers(master_uri: str) -> float:
     return master_pid(master_uri)[1]
 
 
-_ADDRESS_PROBLEMS = {
-    "ipv6": ("ROS_IP is {address}, an IPv6 address, but ROS_IPV6 is not 'on': the robot's nodes cannot connect "
-             "back to this computer, so its commands would never arrive. Use this computer's IPv4 address "
-             "(127.0.0.1 for a robot on this computer), or set ROS_IPV6=on"),
-    "not_local": ("ROS_IP is {address}, which is not an address of this computer: the robot's nodes cannot "
-                  "connect back to it, so its commands would never arrive"),
-}
-
-
 def address_problem(environment):
     """Why other nodes could not reach this computer at the address ROS is told to give them
     (``ROS_IP``), as (kind, address) with kind 'ipv6' or 'not_local'; None when it is fine.
@@ -86,10 +78,10 @@ def address_problem(environment):
     return None
 
 
-def address_problem_text(problem) -> str:
-    """An address problem (kind, address) in plain English."""
+def address_problem_text(problem, language: str = "en") -> str:
+    """An address problem (kind, address) in plain words in ``language`` (the catalogue's ``address_KIND``)."""
     kind, address = problem
-    return _ADDRESS_PROBLEMS[kind].format(address=address)
+    return app_text(f"address_{kind}", language, address=address)
 
 
 class RosUnavailable(RobotUnavailable):

@@ -13,6 +13,7 @@ import logging
 import threading
 import time
 
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.robot.interface import GoalStatus
 from rockly_desktop.robot.interrupt import Interrupt
@@ -59,7 +60,7 @@ class SimRosBridge:
         try:
             response = self._world.call_service(name, from_message(request), self._interrupt)
         except ProgramStopped:
-            raise RobotCommandError(f"the simulated robot shut down before '{name}' was answered") from None
+            raise RobotCommandError(app_local_text("ros_sim_shut_down", name=name)) from None
         finally:
             with self._calls_changed:
                 self._calls -= 1

@@ -244,7 +244,7 @@ def test_the_teachers_limits_hold_over_ros(ros_robot, hobbit):
     limits = Limits(max_speed=0.2, max_turn=45, switched_off=frozenset({"arm"}))
     result = make_runner(hobbit, ros_robot, {"code": code, "variables": {}}, RunControl(), lambda e: None,
                          "de", limits).run()
-    assert "die Lehrkraft hat „Arm und Greifer“" in result.message
+    assert "Die Lehrkraft hat „Arm und Greifer“" in result.message
     eventually(lambda: len(twists) >= 4)  # three from the program, a zero one from the safe stop
     stop_twists()
     stop_goals()
