@@ -10,11 +10,12 @@ SLOWEST_DELAY = 2.0  # seconds per block at the slowest setting
 
 
 class RunToolbar(QToolBar):
-    """Actions for running programs; ``set_state`` enables what makes sense."""
+    """Actions for running programs; ``set_state`` enables what makes sense. ``big``: larger
+    buttons and an even bigger STOP, for a fair stand's touch screen (kiosk mode)."""
 
     sig_delay_changed = Signal(float)
 
-    def __init__(self, language: str, parent=None):
+    def __init__(self, language: str, parent=None, big: bool = False):
         super().__init__(tr("run", language), parent)
         self._language = language
         self.setObjectName("run_toolbar")
@@ -33,8 +34,11 @@ class RunToolbar(QToolBar):
         self.addAction(self.stop_action)
         stop_button = self.widgetForAction(self.stop_action)
         stop_button.setObjectName("stop_button")
-        stop_button.setStyleSheet("QToolButton { background: #d32f2f; color: white; font-size: 18px; font-weight: bold;"
-                                  " border-radius: 6px; padding: 6px 22px; margin: 2px 8px; }"
+        stop_size = "font-size: 30px; padding: 14px 56px;" if big else "font-size: 18px; padding: 6px 22px;"
+        if big:
+            self.setStyleSheet("QToolButton { font-size: 22px; font-weight: bold; padding: 12px 18px; }")
+        stop_button.setStyleSheet(f"QToolButton {{ background: #d32f2f; color: white; {stop_size} font-weight: bold;"
+                                  " border-radius: 6px; margin: 2px 8px; }"
                                   "QToolButton:disabled { background: #e8a0a0; }"
                                   "QToolButton:hover { background: #b71c1c; }")
         self.addSeparator()

@@ -269,6 +269,33 @@ _TEXTS = {
     "monitor_items": ("[{count} items]", "[{count} Einträge]"),
     "monitor_more": ("… {count} more", "… {count} weitere"),
     "monitor_plot_tip": ("{path}: double-click or drag to a plot", "{path}: doppelklicken oder in einen Plot ziehen"),
+    "stage": ("&Stage", "&Bühne"),
+    "stage_tip": ("The simulator large, the blocks beside it (F11 again: back to the layout before)",
+                  "Der Simulator groß, die Blöcke daneben (noch einmal F11: zurück zur Anordnung von vorher)"),
+    "kiosk_tab": ("Kiosk", "Kiosk"),
+    "kiosk_locked": ("Unlock the Teacher tab with the PIN to change the kiosk mode's settings.",
+                     "Entsperre den Reiter „Lehrkraft“ mit der PIN, um die Einstellungen des Kiosk-Modus zu ändern."),
+    "kiosk_programs_folder": ("Programs folder", "Ordner für Programme"),
+    "kiosk_visitors_folder": ("Visitors' programs", "Programme der Besucher"),
+    "kiosk_choose": ("Choose…", "Auswählen…"),
+    "kiosk_idle": ("Start over after", "Neu beginnen nach"),
+    "kiosk_minutes_suffix": (" min without input", " min ohne Eingabe"),
+    "kiosk_chord": ("Key chord to leave", "Tastenkürzel zum Verlassen"),
+    "kiosk_level_fixed": ("In kiosk mode the level stays as it is.", "Im Kiosk-Modus bleibt die Stufe, wie sie ist."),
+    "kiosk_leave_title": ("Leave kiosk mode", "Kiosk-Modus verlassen"),
+    "kiosk_leave_text": ("Enter the teacher's PIN to close Rockly.",
+                         "Gib die PIN der Lehrkraft ein, um Rockly zu schließen."),
+    "kiosk_started_over": ("Welcome! The robot is back at the start.",
+                           "Willkommen! Der Roboter steht wieder am Start."),
+    "kiosk_not_kept": ("The visitor's program could not be kept: {error}",
+                       "Das Programm des Besuchers konnte nicht aufbewahrt werden: {error}"),
+    "kiosk_no_way_out_title": ("Kiosk mode needs a way out", "Der Kiosk-Modus braucht einen Ausweg"),
+    "kiosk_no_way_out": (
+        "Kiosk mode can only be left with the teacher's PIN or a key chord. Start Rockly without --kiosk and "
+        "set a PIN in Settings → Preferences → Teacher (the key chord is on the Kiosk tab).",
+        "Den Kiosk-Modus kann man nur mit der PIN der Lehrkraft oder einem Tastenkürzel verlassen. Starte Rockly "
+        "ohne --kiosk und lege unter Einstellungen → Einstellungen… → Lehrkraft eine PIN fest (das Tastenkürzel "
+        "steht im Reiter Kiosk)."),
 }
 
 
