@@ -1,8 +1,15 @@
-"""Noticing that nobody has touched Rockly for a while: an application-wide event filter and a clock."""
+"""Noticing that nobody has touched Rockly for a while: event filters on the application's windows
+and a clock.
+
+Not a filter on the QApplication: PySide 6.11 makes a Python wrapper for each object such a filter
+is shown an event for, which sets a property on it, whose event comes back to the filter while the
+wrapper is half made (a crash as soon as the editor page runs). Every input event reaches its
+top-level QWindow first, and the filter is only ever shown those few windows.
+"""
 import time
 
 from PySide6.QtCore import QEvent, QObject, QTimer, Signal
-from PySide6.QtWidgets import QApplication
+from PySide6.QtGui import QGuiApplication
 
 CHECK_MS = 1000
 _INPUT = frozenset({
@@ -13,7 +20,8 @@ _INPUT = frozenset({
 
 class IdleWatch(QObject):
     """Emits ``sig_idle`` (once a second, until ``rest()``) when there has been no key, mouse or touch
-    input anywhere in the application for ``seconds``. After ``rest()`` it waits for input again
+    input for ``seconds`` in ``window`` (a top-level widget) or any window of the application that
+    had the focus since (its dialogs). After ``rest()`` it waits for input again
     before it counts, so a stand nobody visits is not started over and over.
 
     The clock is this module's ``time.monotonic`` (a test puts a fake ``time`` in its place).
@@ -21,19 +29,32 @@ class IdleWatch(QObject):
 
     sig_idle = Signal()
 
-    def __init__(self, seconds: float, parent=None):
+    def __init__(self, seconds: float, window, parent=None):
         super().__init__(parent)
         self.seconds = seconds
         self._last_input = time.monotonic()
         self._armed = True
-        QApplication.instance().installEventFilter(self)
+        self._watched = []
+        window.winId()  # its QWindow exists from now on
+        self._watch(window.windowHandle())
+        QGuiApplication.instance().focusWindowChanged.connect(self._watch)
         self._timer = QTimer(self)
         self._timer.setInterval(CHECK_MS)
         self._timer.timeout.connect(self.check)
         self._timer.start()
 
+    def _watch(self, window):
+        if window is not None and window not in self._watched:
+            self._watched.append(window)
+            window.installEventFilter(self)
+            window.destroyed.connect(self._forget)
+
+    def _forget(self, window):
+        if window in self._watched:
+            self._watched.remove(window)
+
     def eventFilter(self, watched, event):
-        """Every key, mouse or touch event anywhere counts as someone being there."""
+        """Every key, mouse or touch event in a watched window counts as someone being there."""
         if event.type() in _INPUT:
             self.touched()
         return False
@@ -54,5 +75,10 @@ class IdleWatch(QObject):
 
     def stop(self):
         """Stop watching."""
+        if not self._timer.isActive():
+            return
         self._timer.stop()
-        QApplication.instance().removeEventFilter(self)
+        QGuiApplication.instance().focusWindowChanged.disconnect(self._watch)
+        for window in self._watched:
+            window.removeEventFilter(self)
+        self._watched.clear()

@@ -56,7 +56,7 @@ class Kiosk(QObject):
             self.chord = QShortcut(QKeySequence(self.settings.quit_chord), window)
             self.chord.setContext(Qt.ShortcutContext.ApplicationShortcut)
             self.chord.activated.connect(self.leave)
-        self.idle = IdleWatch(self.settings.idle_minutes * 60, self)
+        self.idle = IdleWatch(self.settings.idle_minutes * 60, window, self)
         self.idle.sig_idle.connect(self._on_idle)
 
     # --- leaving ------------------------------------------------------------------------
