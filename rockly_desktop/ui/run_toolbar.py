@@ -11,7 +11,8 @@ SLOWEST_DELAY = 2.0  # seconds per block at the slowest setting
 
 class RunToolbar(QToolBar):
     """Actions for running programs; ``set_state`` enables what makes sense. ``big``: larger
-    buttons and an even bigger STOP, for a fair stand's touch screen (kiosk mode)."""
+    buttons and an even bigger STOP, for a fair stand's touch screen (kiosk mode), and no choice
+    of robot (a kiosk runs on the simulator)."""
 
     sig_delay_changed = Signal(float)
 
@@ -34,9 +35,9 @@ class RunToolbar(QToolBar):
         self.addAction(self.stop_action)
         stop_button = self.widgetForAction(self.stop_action)
         stop_button.setObjectName("stop_button")
-        stop_size = "font-size: 30px; padding: 14px 56px;" if big else "font-size: 18px; padding: 6px 22px;"
+        stop_size = "font-size: 28px; padding: 12px 26px;" if big else "font-size: 18px; padding: 6px 22px;"
         if big:
-            self.setStyleSheet("QToolButton { font-size: 22px; font-weight: bold; padding: 12px 18px; }")
+            self.setStyleSheet("QToolButton { font-size: 19px; font-weight: bold; padding: 10px 8px; }")
         stop_button.setStyleSheet(f"QToolButton {{ background: #d32f2f; color: white; {stop_size} font-weight: bold;"
                                   " border-radius: 6px; margin: 2px 8px; }"
                                   "QToolButton:disabled { background: #e8a0a0; }"
@@ -46,18 +47,19 @@ class RunToolbar(QToolBar):
         self.speed = QSlider(Qt.Orientation.Horizontal, self)
         self.speed.setRange(0, SLIDER_STEPS)
         self.speed.setValue(SLIDER_STEPS)
-        self.speed.setFixedWidth(140)
+        self.speed.setFixedWidth(100 if big else 140)
         self.speed.setToolTip(tr("speed_tip", language))
         self.speed.valueChanged.connect(lambda _value: self.sig_delay_changed.emit(self.delay))
         self.addWidget(self.speed)
         self.addWidget(QLabel(f" {tr('fast', language)}  ", self))
         self.addSeparator()
-        self.addWidget(QLabel(f" {tr('backend', language)} ", self))
+        robot_choice = [self.addWidget(QLabel(f" {tr('backend', language)} ", self))]
         self.backend = QComboBox(self)
         self.backend.addItem(tr("backend_simulator", language), "simulator")
         self.backend.addItem(tr("backend_ros1", language), "ros1")
-        self.addWidget(self.backend)
-        self.addSeparator()
+        robot_choice += [self.addWidget(self.backend), self.addSeparator()]
+        for action in robot_choice if big else ():  # a kiosk runs on the simulator; the room goes to big buttons
+            action.setVisible(False)
         # put the simulated robot back: also in the Robot menu, so its shortcut is the window's
         self.reset_action = self._action("reset_robot", "reset_robot_tip", "Ctrl+R", icons.SP_BrowserReload)
         self.backend.currentIndexChanged.connect(lambda _index: self.set_state(self._state))

@@ -13,6 +13,7 @@ from test_running import load
 from rockly_desktop.app import build_main_window, start_kiosk
 from rockly_desktop.ui import idle_watch
 from rockly_desktop.ui.kiosk import LeaveDialog
+from rockly_desktop.ui.run_toolbar import RunToolbar
 from rockly_desktop.ui.settings import AppSettings
 
 PIN = "4711"
@@ -75,7 +76,10 @@ def test_the_kiosk_is_full_screen_on_stage_with_a_big_stop(qtbot, open_kiosk, st
     qtbot.waitUntil(lambda: python_shown(window) == "robot.call_sos()\n", timeout=10000)
     assert window.isFullScreen() and window.stage.active and not window.stage.action.isEnabled()
     stop = window.run_toolbar.widgetForAction(window.run_toolbar.stop_action)
-    assert stop.sizeHint().height() >= 60 and stop.font().pixelSize() >= 30
+    usual = RunToolbar("en")
+    qtbot.addWidget(usual)
+    assert stop.sizeHint().height() > 1.4 * usual.widgetForAction(usual.stop_action).sizeHint().height()
+    assert not window.run_toolbar.backend.isVisible()                   # a kiosk runs on the simulator
     assert window.document.path is None              # Save asks for a name: the start program stays as it is
     assert window.settings.reset_before_run           # on by default in kiosk mode...
     assert AppSettings(window.settings._store.fileName()).reset_before_run is False   # ...not outside it
