@@ -71,9 +71,10 @@ class Kiosk(QObject):
 
     def ask_pin(self):
         """Show the dialog that asks for the teacher's PIN to leave kiosk mode."""
-        if self.leave_dialog is None:
-            self.leave_dialog = LeaveDialog(self.window.settings.teacher, self.window.language, self.window)
-            self.leave_dialog.accepted.connect(self.leave)
+        if self.leave_dialog is not None:
+            self.leave_dialog.deleteLater()  # made anew: the language may have changed
+        self.leave_dialog = LeaveDialog(self.window.settings.teacher, self.window.language, self.window)
+        self.leave_dialog.accepted.connect(self.leave)
         self.leave_dialog.open()
 
     def leave(self):

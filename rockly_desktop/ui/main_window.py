@@ -375,8 +375,9 @@ class MainWindow(QMainWindow):
                                    kiosk_mode=self.settings.kiosk_mode)
         if dialog.exec():
             self.settings.reset_before_run = dialog.reset_before_run
-            dialog.kiosk_tab.apply()
-            if dialog.teacher_tab.apply():  # the program stays; only the toolbox changes
+            if dialog.kiosk_tab is not None:
+                dialog.kiosk_tab.apply()
+            if dialog.teacher_tab is not None and dialog.teacher_tab.apply():  # the program stays; only the toolbox
                 self.editor.set_toolbox(self.profile.toolbox(self.language, *self._toolbox_choice()))
             self.set_language(dialog.language)
 

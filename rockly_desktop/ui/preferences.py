@@ -47,7 +47,8 @@ class PreferencesDialog(QDialog):
         self.tabs = QTabWidget(self)
         self.tabs.addTab(general, tr("preferences_general", language))
         self.teacher_tab = None
-        if profile is not None and teacher is not None:
+        if profile is not None and teacher is not None and (teacher.has_pin or not kiosk_mode):
+            # (a visitor must not set the first PIN: with it they could leave the kiosk)
             self.teacher_tab = TeacherTab(profile, teacher, language, self)
             self.tabs.addTab(self.teacher_tab, tr("teacher_tab", language))
             if kiosk_mode:

@@ -73,6 +73,8 @@ class StageLayout(QObject):
         self.action.setShortcut(QKeySequence(Qt.Key.Key_F11))
         self.action.toggled.connect(self._toggled)
         window.installEventFilter(self)
+        # another robot shows or hides the simulator: arrange again once the window has done so
+        window.robots.sig_robot_changed.connect(lambda: self.active and QTimer.singleShot(0, self, self._arrange))
 
     @property
     def active(self) -> bool:

@@ -89,13 +89,14 @@ def test_the_kiosk_is_full_screen_on_stage_with_a_big_stop(qtbot, open_kiosk, st
 def test_the_kiosk_cannot_be_closed_without_the_pin(qtbot, open_kiosk):
     window, kiosk = open_kiosk()
     assert not window.close()
-    dialog = window.findChild(LeaveDialog)
-    assert dialog is not None and dialog.isVisible()
+    dialog = kiosk.leave_dialog
+    assert isinstance(dialog, LeaveDialog) and dialog.isVisible()
     dialog.pin.setText("0000")
     dialog.accept()
     assert dialog.isVisible() and dialog.problem.text() == "Wrong PIN." and window.isVisible()
     dialog.reject()
     window.findChild(type(window.run_toolbar.run_action), "action_quit").trigger()   # File → Quit asks too
+    dialog = kiosk.leave_dialog
     assert dialog.isVisible() and window.isVisible()
     dialog.pin.setText(PIN)
     dialog.accept()
@@ -195,6 +196,16 @@ def test_kiosk_mode_fixes_the_teacher_level(qtbot, open_kiosk):
     dialog.kiosk_tab.apply()
     assert window.settings.kiosk.idle_minutes == 5
     dialog.deleteLater()
+
+
+def test_without_a_pin_a_kiosk_offers_no_teacher_settings(qtbot, tmp_path, hobbit):
+    from rockly_desktop.ui.preferences import PreferencesDialog
+
+    settings = AppSettings(tmp_path / "s.ini")
+    settings.kiosk.quit_chord = CHORD           # the teacher leaves with the chord; a visitor must not set a PIN
+    dialog = PreferencesDialog("en", None, hobbit, settings.teacher, kiosk=settings.kiosk, kiosk_mode=True)
+    qtbot.addWidget(dialog)
+    assert dialog.teacher_tab is None and dialog.kiosk_tab is None and dialog.tabs.count() == 1
 
 
 def test_the_kiosk_tab_is_locked_until_the_teacher_tab_is_unlocked(qtbot, tmp_path, hobbit):
