@@ -68,6 +68,7 @@ class StageLayout(QObject):
         self._settings = settings
         self._normal_state = None
         self._share = settings.stage_share or STAGE_SHARE
+        self._settled = False  # the docks have the sizes given (only then is a share the person's)
         self.action = QAction(window, checkable=True)
         self.action.setObjectName("action_stage")
         self.action.setShortcut(QKeySequence(Qt.Key.Key_F11))
@@ -133,7 +134,16 @@ class StageLayout(QObject):
         window.console.show()
         window.console.raise_()
         self._apply_sizes()
-        QTimer.singleShot(0, self, self._apply_sizes)  # once the docks have been laid out
+        self._apply_later()
+
+    def _apply_later(self):
+        """Give the sizes again once the docks have been laid out, and count them as settled after that."""
+        self._settled = False
+        QTimer.singleShot(0, self, self._apply_sizes)
+        QTimer.singleShot(0, self, lambda: QTimer.singleShot(0, self, self._settle))
+
+    def _settle(self):
+        self._settled = True
 
     def _apply_sizes(self):
         if not self.active:
@@ -145,12 +155,12 @@ class StageLayout(QObject):
     def _keep_share(self):
         """Remember the share of the width the person left the simulator (it may have been dragged)."""
         width, big = self._window.width(), self._big_dock()
-        if big.isVisible() and width > 0:
+        if self._settled and big.isVisible() and width > 0:
             self._share = min(MAX_SHARE, max(MIN_SHARE, big.width() / width))
             self._settings.stage_share = self._share
 
     def eventFilter(self, watched, event):
         """On stage, a window shown, grown or shrunk gives the simulator its share of its width."""
         if watched is self._window and event.type() in (QEvent.Type.Resize, QEvent.Type.Show) and self.active:
-            QTimer.singleShot(0, self, self._apply_sizes)
+            self._apply_later()
         return False

@@ -88,3 +88,21 @@ def test_switching_bottom_tabs_keeps_the_simulator_and_each_tab_its_size(qtbot, 
     window.console.raise_()
     qtbot.waitUntil(lambda: window.console.isVisible() and window.console.height() == taller, timeout=3000)
     assert window.simulator_dock.size() == simulator
+
+
+def test_the_width_the_person_gives_the_simulator_on_stage_is_remembered(qtbot, driver):
+    first = driver.open_window()
+    laid_out(qtbot, first, 1280, 800)
+    first.stage.set_active(True)
+    qtbot.waitUntil(lambda: simulator_area(first) >= 1280 * 800 // 2, timeout=3000)
+    first.resizeDocks([first.simulator_dock], [900], Qt.Orientation.Horizontal)     # dragged wider
+    qtbot.waitUntil(lambda: abs(first.simulator_dock.width() - 900) <= 2, timeout=3000)
+    first.close()
+
+    again = WindowDriver(qtbot, driver.settings_path)
+    try:
+        window = again.open_window()
+        laid_out(qtbot, window, 1600, 1000)                                     # a bigger window: the same share
+        qtbot.waitUntil(lambda: abs(window.simulator_dock.width() - 900 * 1600 / 1280) <= 4, timeout=3000)
+    finally:
+        again.close_all()
