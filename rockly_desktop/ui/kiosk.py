@@ -49,6 +49,8 @@ class Kiosk(QObject):
             roomy.hide()
             roomy.toggleViewAction().setEnabled(False)
         window.files.file_dialogs = ConfinedFileDialogs(self.settings.programs_folder)
+        # Chromium's own menu (Back, Reload, Save page…) where the page shows none; Blockly's menus stay
+        window.editor.setContextMenuPolicy(Qt.ContextMenuPolicy.NoContextMenu)
         window.files.sig_program_replaced.connect(self._keep_start_program_safe)
         window.installEventFilter(self)
         self.chord = None

@@ -4,10 +4,11 @@ import json
 
 import pytest
 from fake_time import FakeTime
+from page_tools import run_js
 from program_builder import block, number, rockly_document, stack
-from PySide6.QtCore import QCoreApplication, QEvent, QPointF, Qt, QTimer
+from PySide6.QtCore import QCoreApplication, QEvent, QPoint, QPointF, Qt, QTimer
 from PySide6.QtGui import QMouseEvent
-from PySide6.QtWidgets import QApplication, QDialog, QFileDialog
+from PySide6.QtWidgets import QApplication, QDialog, QFileDialog, QMenu
 from test_running import load
 
 from rockly_desktop.app import build_main_window, start_kiosk
@@ -109,6 +110,16 @@ def test_the_key_chord_leaves_the_kiosk(qtbot, open_kiosk):
     qtbot.keyClick(window.editor, Qt.Key.Key_K, Qt.KeyboardModifier.ControlModifier | Qt.KeyboardModifier.AltModifier
                    | Qt.KeyboardModifier.ShiftModifier)
     qtbot.waitUntil(lambda: not window.isVisible(), timeout=5000)
+
+
+def test_the_kiosk_has_blocklys_menus_but_not_the_browsers(qtbot, open_kiosk):
+    window, _kiosk = open_kiosk()
+    page = window.editor.focusProxy() or window.editor
+    qtbot.mouseClick(page, Qt.MouseButton.RightButton, pos=QPoint(40, page.height() - 60))   # under the categories
+    qtbot.mouseClick(page, Qt.MouseButton.RightButton, pos=QPoint(page.width() // 2, page.height() // 2))
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "!!document.querySelector('.blocklyContextMenu')"),
+                    timeout=5000)                                     # the workspace's own menu
+    assert not [menu for menu in window.findChildren(QMenu) if menu.isVisible()]    # no Back, Reload, Save page
 
 
 def test_kiosk_file_dialogs_stay_in_the_kiosk_folder(qtbot, open_kiosk, folders, tmp_path):
