@@ -66,7 +66,9 @@ class AppSettings:
         self.last_file = path
 
     def clear_recent_files(self):
-        """Forget the recent files."""
+        """Forget the recent files (not from a kiosk, which shows none)."""
+        if self.kiosk_mode:
+            return
         self._store.setValue("recent_files", [])
 
     @property

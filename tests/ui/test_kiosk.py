@@ -72,7 +72,7 @@ def python_shown(window):
     return window.code_dock.view.toPlainText()
 
 
-def test_the_kiosk_is_full_screen_on_stage_with_a_big_stop(qtbot, open_kiosk, start_program):
+def test_the_kiosk_is_full_screen_on_stage_with_a_big_stop(qtbot, driver, open_kiosk, start_program):
     window, kiosk = open_kiosk(start_program)
     qtbot.waitUntil(lambda: python_shown(window) == "robot.call_sos()\n", timeout=10000)
     assert window.isFullScreen() and window.stage.active and not window.stage.action.isEnabled()
@@ -83,8 +83,12 @@ def test_the_kiosk_is_full_screen_on_stage_with_a_big_stop(qtbot, open_kiosk, st
     assert not window.run_toolbar.backend.isVisible()                   # a kiosk runs on the simulator
     assert window.document.path is None              # Save asks for a name: the start program stays as it is
     assert window.settings.reset_before_run           # on by default in kiosk mode...
-    assert AppSettings(window.settings._store.fileName()).reset_before_run is False   # ...not outside it
+    assert AppSettings(driver.settings_path).reset_before_run is False   # ...not outside it
     assert not window.plot_dock.toggleViewAction().isEnabled()
+    teacher = AppSettings(driver.settings_path)
+    teacher.add_recent_file("/home/teacher/lesson.rockly")
+    window.settings.clear_recent_files()                    # File → Open Recent → Clear List, in the kiosk
+    assert window.settings.recent_files == [] and teacher.recent_files == ["/home/teacher/lesson.rockly"]
 
 
 def test_the_kiosk_cannot_be_closed_without_the_pin(qtbot, open_kiosk):
@@ -171,7 +175,8 @@ def test_after_idling_the_kiosk_keeps_the_visitors_program_and_starts_over(qtbot
                                                       Qt.MouseButton.NoButton, Qt.MouseButton.NoButton,
                                                       Qt.KeyboardModifier.NoModifier))
     clock.now += 179                                         # 2:59 after the last input
-    kiosk.idle.check()
+    with qtbot.assertNotEmitted(kiosk.idle.sig_idle):
+        kiosk.idle.check()
     assert not visitors.exists() and window.document.modified
 
     clock.now += 1                                           # 3:00: the next visitor gets a fresh start
@@ -188,8 +193,9 @@ def test_after_idling_the_kiosk_keeps_the_visitors_program_and_starts_over(qtbot
     assert "Welcome" in window.statusBar().currentMessage()
 
     clock.now += 1000                                        # nobody came: it does not start over again and again
-    kiosk.idle.check()
-    assert len(list(visitors.iterdir())) == 1 and not kiosk._starting_over
+    with qtbot.assertNotEmitted(kiosk.idle.sig_idle):
+        kiosk.idle.check()
+    assert len(list(visitors.iterdir())) == 1
 
 
 def test_kiosk_mode_fixes_the_teacher_level(qtbot, open_kiosk):
