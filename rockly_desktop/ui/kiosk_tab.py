@@ -40,6 +40,7 @@ class KioskTab(QWidget):
 
     def _folder_row(self, form, key: str, folder: str) -> QLineEdit:
         field = QLineEdit(folder, self, objectName=key)
+        field.setMinimumWidth(min(field.fontMetrics().horizontalAdvance(folder) + 24, 480))  # the path readable
         choose = QPushButton(tr("kiosk_choose", self._language), self)
         choose.setAutoDefault(False)
         choose.clicked.connect(lambda: self._choose_folder(field))
