@@ -2,7 +2,8 @@
 
 Metadata lives in pyproject.toml; this file only lists the data folders, which
 setuptools cannot glob recursively on its own. They land in
-``<prefix>/share/rockly/`` where ``rockly_desktop.core.paths`` finds them.
+``<prefix>/share/rockly/`` where ``rockly_desktop.core.paths`` finds them; the launcher
+(``rockly.desktop``, with its kiosk action) goes to ``<prefix>/share/applications/``.
 """
 import os
 
@@ -20,6 +21,7 @@ def data_files():
             wanted = [os.path.join(folder, f) for f in files if not f.endswith(".pyc")]
             if wanted:
                 pairs.append((os.path.join("share", "rockly", folder), wanted))
+    pairs.append((os.path.join("share", "applications"), ["rockly.desktop"]))
     return pairs
 
 

@@ -57,8 +57,9 @@ def create_application(argv=None):
     return app
 
 
-def build_main_window(settings_path=None, extra_profile_dirs=()):
-    """The main window with every installed profile; ``settings_path`` picks a settings file."""
+def build_main_window(settings_path=None, extra_profile_dirs=(), kiosk: bool = False):
+    """The main window with every installed profile; ``settings_path`` picks a settings file;
+    ``kiosk``: the settings of a kiosk session (see ``start_kiosk``)."""
     from rockly_desktop.bridge.editor_view import EditorView
 
     editor = EditorView()  # Chromium loads the page while Python reads profiles and builds the window
@@ -70,6 +71,7 @@ def build_main_window(settings_path=None, extra_profile_dirs=()):
     from rockly_desktop.ui.settings import AppSettings
 
     settings = AppSettings(settings_path)
+    settings.kiosk_mode = kiosk
     use_language(settings.language)  # Qt's own buttons and dialogs, now and whenever the language changes
     settings.language_watchers.append(use_language)
     return main_window_class(registry, settings, editor)
@@ -122,21 +124,45 @@ def while_events_run(work):
     return future.result()
 
 
-def run_gui(open_path=None) -> int:
-    """Start Rockly's window and run until it closes."""
+def run_gui(open_path=None, kiosk: bool = False) -> int:
+    """Start Rockly's window (in kiosk mode: full screen, with ``open_path`` as the start program)
+    and run until it closes."""
     from rockly_desktop.core.errors import RocklyError
 
     app = create_application()
     try:
-        window = build_main_window()
+        window = build_main_window(kiosk=kiosk)
     except RocklyError as error:  # e.g. every installed profile is broken
         from PySide6.QtWidgets import QMessageBox
 
         QMessageBox.critical(None, "Rockly", f"Rockly cannot start: {error}")
         return 1
-    window.show()
+    if kiosk and start_kiosk(window, open_path) is None:
+        return 2
+    if not kiosk:
+        window.show()
     window.start(open_path)
     return app.exec()
+
+
+def start_kiosk(window, start_program=None):
+    """Make ``window`` (built with ``kiosk=True``) a kiosk with ``start_program`` and show it full
+    screen; the caller then starts it with the same program. Returns the Kiosk, or None (after
+    saying why) when no teacher PIN or key chord is set: nobody could leave it."""
+    from rockly_desktop.ui.kiosk import Kiosk, can_be_left
+
+    if not can_be_left(window.settings):
+        from PySide6.QtWidgets import QMessageBox
+
+        from rockly_desktop.ui.texts import tr
+
+        QMessageBox.critical(None, tr("kiosk_no_way_out_title", window.language),
+                             tr("kiosk_no_way_out", window.language))
+        window.deleteLater()
+        return None
+    kiosk = Kiosk(window, start_program)
+    window.showFullScreen()
+    return kiosk
 
 
 def generate_headless(program_path, language: str = "en"):

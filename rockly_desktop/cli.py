@@ -1,6 +1,7 @@
 """The ``rockly`` command: the window, and headless tools for profiles and programs.
 
     rockly [PROGRAM]                    open the editor (optionally with a program)
+    rockly --kiosk [PROGRAM]            a fair stand: full screen, PROGRAM (or an empty one) for each visitor
     rockly profiles list                show installed robot profiles and broken ones
     rockly profiles validate PATH       check one profile folder
     rockly profiles new NAME [--dir DIR] create a working skeleton profile to start from
@@ -129,6 +130,9 @@ def _gui_parser() -> argparse.ArgumentParser:
                                             "rockly export PROGRAM -o OUT.py")
     parser.add_argument("--version", action="version", version=f"rockly {__version__}")
     parser.add_argument("program", nargs="?", type=Path, help="a program to open")
+    parser.add_argument("--kiosk", action="store_true",
+                        help="kiosk mode for a fair stand: full screen, the program (or an empty one) for each "
+                             "visitor; leaving needs the teacher's PIN or key chord")
     return parser
 
 
@@ -257,13 +261,15 @@ def main(argv=None) -> int:
     args = _gui_parser().parse_args(argv)
     from rockly_desktop.app import run_gui
 
-    return run_gui(args.program)
+    return run_gui(args.program, kiosk=args.kiosk)
 
 
 def gui_main(program=None) -> int:
-    """Entry point of ``rockly-gui`` (the desktop launcher): the editor window, with an optional program."""
+    """Entry point of ``rockly-gui`` (the desktop launcher): the editor window, with an optional program
+    (``--kiosk``: kiosk mode)."""
     from rockly_desktop.app import run_gui
 
-    if program is None:
-        program = _gui_parser().parse_args(sys.argv[1:]).program
-    return run_gui(program)
+    if program is not None:
+        return run_gui(program)
+    args = _gui_parser().parse_args(sys.argv[1:])
+    return run_gui(args.program, kiosk=args.kiosk)

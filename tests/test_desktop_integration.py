@@ -16,11 +16,13 @@ MIME_NS = "{http://www.freedesktop.org/standards/shared-mime-info}"
 VALIDATOR = "desktop-file-validate"
 
 
-def _desktop_entries():
-    """The key=value pairs of the [Desktop Entry] group."""
-    entries = {}
+def _desktop_entries(group="Desktop Entry"):
+    """The key=value pairs of a group of the desktop file ([Desktop Entry] unless said)."""
+    entries, current = {}, None
     for line in DESKTOP_FILE.read_text(encoding="utf-8").splitlines():
-        if "=" in line and not line.startswith("#"):
+        if line.startswith("["):
+            current = line.strip("[] ")
+        elif current == group and "=" in line and not line.startswith("#"):
             key, value = line.split("=", 1)
             entries[key.strip()] = value.strip()
     return entries
@@ -51,6 +53,15 @@ def test_desktop_file_launches_the_gui_with_our_icon_and_mime_type():
     assert "application/x-rockly-program" in entries["MimeType"].split(";")
     for key in ("GenericName", "Comment", "Keywords"):
         assert entries.get(f"{key}[de]"), f"{key}[de] is missing"
+
+
+def test_the_desktop_file_has_a_kiosk_action_the_gui_understands():
+    from rockly_desktop.cli import _gui_parser
+
+    assert _desktop_entries()["Actions"] == "kiosk;"
+    kiosk = _desktop_entries("Desktop Action kiosk")
+    assert kiosk["Exec"] == "rockly-gui --kiosk" and kiosk["Name"] and kiosk["Name[de]"]
+    assert _gui_parser().parse_args(kiosk["Exec"].split()[1:]).kiosk
 
 
 def test_desktop_exec_names_an_existing_gui_entry_point():

@@ -25,6 +25,7 @@ ALLOWED = {
     "quaternion", "simulator", "simulatoransicht", "editor", "block", "blöcke", "pipe", "socket", "details",
     "app", "ball", "code", "computer", "element", "info", "navigation", "parameter", "person", "pose", "position",
     "problem", "sofa", "text", "variable", "version", "pins",
+    "min",  # minutes
     "make", "setup",  # the set-up command, „make setup“, typed as it is
 }
 # Common English words and this app's own English vocabulary (the English texts, below) that are not German.
@@ -40,7 +41,7 @@ will with without would yes you your
 """.split())
 GERMAN_TOO = {"die", "hat", "was", "will", "so", "an", "in", "also", "bald", "rate", "man", "war", "fast", "kind",
               "gift", "hell", "rock", "bad", "bitte", "wand", "arm", "hand", "name", "end", "still", "neutral",
-              "ding"}
+              "ding", "kiosk"}
 
 
 def _german_and_english(catalogue: Catalogue):

@@ -1,5 +1,5 @@
 """Rockly's main window: the block editor, the run toolbar, the docks, menus and the status bar."""
-from PySide6.QtCore import Qt, QTimer
+from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction, QActionGroup, QKeySequence
 from PySide6.QtWidgets import QDockWidget, QLabel, QMainWindow, QMessageBox
 
@@ -25,6 +25,7 @@ from rockly_desktop.ui.robot_choice import RobotChoice
 from rockly_desktop.ui.run_session import RunSession
 from rockly_desktop.ui.run_toolbar import RunToolbar
 from rockly_desktop.ui.simulator_dock import SimulatorDock
+from rockly_desktop.ui.stage_layout import BottomTabSizes, StageLayout, keep_side_docks_full_height
 from rockly_desktop.ui.state_panels import StatePanels
 from rockly_desktop.ui.tablet import QtTablet
 from rockly_desktop.ui.texts import editor_page_texts, tr
@@ -68,9 +69,9 @@ class MainWindow(QMainWindow):
         self.plot_dock = QDockWidget(tr("plot_dock", self.language), self)
         self.plot_dock.setObjectName("plot_dock")
         self.plot_dock.visibilityChanged.connect(lambda visible: visible and self.plot_panel())
-        for roomy in (self.monitor_dock, self.plot_dock):
-            roomy.visibilityChanged.connect(  # after the tab switch has been laid out
-                lambda visible, dock=roomy: visible and QTimer.singleShot(0, self, lambda: self._make_room_for(dock)))
+        self.bottom_tabs = BottomTabSizes(self, (self.console, self.monitor_dock, self.plot_dock),
+                                          roomy=(self.monitor_dock, self.plot_dock))
+        keep_side_docks_full_height(self)
         self._plot_store = None
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.simulator_dock)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.code_dock)
@@ -119,6 +120,7 @@ class MainWindow(QMainWindow):
         self.editor.sig_page_error.connect(
             lambda message: self.statusBar().showMessage(tr("editor_error", self.language, message=message), 15000))
 
+        self.stage = StageLayout(self, settings)
         self._build_menus()
         self.document.sig_profile_changed.connect(self._on_profile_changed)
         self.resize(1280, 800)
@@ -128,14 +130,8 @@ class MainWindow(QMainWindow):
             self.resizeDocks([self.code_dock], [460], Qt.Orientation.Horizontal)
             self.resizeDocks([self.simulator_dock, self.code_dock], [420, 300], Qt.Orientation.Vertical)
             self.resizeDocks([self.console], [130], Qt.Orientation.Vertical)
+        self.stage.restore_remembered()
         self._update_title()
-
-    def _make_room_for(self, dock):
-        """Give a bottom dock that needs room (a message tree, a plot) a third of the window
-        when it is shown while the bottom area is only a console strip."""
-        wanted = self.height() // 3
-        if dock.height() < wanted:
-            self.resizeDocks([dock], [wanted], Qt.Orientation.Vertical)
 
     @property
     def profile(self):
@@ -286,7 +282,7 @@ class MainWindow(QMainWindow):
         self.document.mark_modified()
 
     def _build_run_toolbar(self):
-        toolbar = RunToolbar(self.language, self)
+        toolbar = RunToolbar(self.language, self, big=self.settings.kiosk_mode)
         toolbar.run_action.triggered.connect(lambda: self.runs.run())
         toolbar.pause_action.triggered.connect(self.runs.pause)
         toolbar.step_action.triggered.connect(self.runs.step)
@@ -387,10 +383,13 @@ class MainWindow(QMainWindow):
         """Open the Preferences dialog and apply the chosen language, the Put-back preference and the
         teacher's settings."""
         dialog = PreferencesDialog(self.language, self, self.profile, self.settings.teacher,
-                                   reset_before_run=self.settings.reset_before_run)
+                                   reset_before_run=self.settings.reset_before_run, kiosk=self.settings.kiosk,
+                                   kiosk_mode=self.settings.kiosk_mode)
         if dialog.exec():
             self.settings.reset_before_run = dialog.reset_before_run
-            if dialog.teacher_tab.apply():  # the program stays; only the toolbox changes
+            if dialog.kiosk_tab is not None:
+                dialog.kiosk_tab.apply()
+            if dialog.teacher_tab is not None and dialog.teacher_tab.apply():  # the program stays; only the toolbox
                 self.editor.set_toolbox(self.profile.toolbox(self.language, *self._toolbox_choice()))
             self.set_language(dialog.language)
 
@@ -460,6 +459,8 @@ class MainWindow(QMainWindow):
         for dock in (self.simulator_dock, self.code_dock, self.variables, self.state_dock, self.console,
                      self.monitor_dock, self.plot_dock):
             view_menu.addAction(dock.toggleViewAction())
+        view_menu.addSeparator()
+        view_menu.addAction(self.stage.action_for(language))
 
         settings_menu = bar.addMenu(tr("menu_settings", language))
         self._action(settings_menu, "preferences", self.show_preferences, QKeySequence.StandardKey.Preferences)
@@ -500,7 +501,7 @@ class MainWindow(QMainWindow):
         self.health.stop()
         self.robots.shutdown()
         self.autosave.finish()
-        self.settings.save_window(self.saveGeometry(), self.saveState())
+        self.settings.save_window(self.saveGeometry(), self.stage.state_to_keep())
         self.settings.last_file = self.document.path
         self.settings.sync()
         event.accept()

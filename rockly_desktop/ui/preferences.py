@@ -12,6 +12,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from rockly_desktop.ui.kiosk_tab import KioskTab
 from rockly_desktop.ui.teacher_tab import TeacherTab
 from rockly_desktop.ui.texts import language_names, tr
 
@@ -21,10 +22,13 @@ class PreferencesDialog(QDialog):
     back before each Run (``reset_before_run``).
 
     With a ``profile`` and the ``teacher`` settings it has a Teacher tab (``teacher_tab``)
-    behind a PIN; the caller calls ``teacher_tab.apply()`` when the dialog is accepted.
+    behind a PIN; the caller calls ``teacher_tab.apply()`` when the dialog is accepted. With the
+    ``kiosk`` settings it has a Kiosk tab (``kiosk_tab``, ``apply()`` too), unlocked with the Teacher
+    tab; in ``kiosk_mode`` the toolbox level cannot be changed.
     """
 
-    def __init__(self, language: str, parent=None, profile=None, teacher=None, reset_before_run: bool = False):
+    def __init__(self, language: str, parent=None, profile=None, teacher=None, reset_before_run: bool = False,
+                 kiosk=None, kiosk_mode: bool = False):
         super().__init__(parent)
         self.setWindowTitle(tr("preferences_title", language))
         self.language_box = QComboBox(self)
@@ -44,9 +48,17 @@ class PreferencesDialog(QDialog):
         self.tabs = QTabWidget(self)
         self.tabs.addTab(general, tr("preferences_general", language))
         self.teacher_tab = None
-        if profile is not None and teacher is not None:
+        if profile is not None and teacher is not None and (teacher.has_pin or not kiosk_mode):
+            # (a visitor must not set the first PIN: with it they could leave the kiosk)
             self.teacher_tab = TeacherTab(profile, teacher, language, self)
             self.tabs.addTab(self.teacher_tab, tr("teacher_tab", language))
+            if kiosk_mode:
+                self.teacher_tab.level_box.setEnabled(False)
+                self.teacher_tab.level_box.setToolTip(tr("kiosk_level_fixed", language))
+        self.kiosk_tab = None
+        if kiosk is not None and self.teacher_tab is not None:
+            self.kiosk_tab = KioskTab(kiosk, self.teacher_tab, language, self)
+            self.tabs.addTab(self.kiosk_tab, tr("kiosk_tab", language))
         outer = QVBoxLayout(self)
         outer.addWidget(self.tabs)
         outer.addWidget(buttons)

@@ -10,13 +10,14 @@ import json
 from pathlib import Path
 
 from PySide6.QtCore import QObject, Signal
-from PySide6.QtWidgets import QFileDialog, QMessageBox
+from PySide6.QtWidgets import QMessageBox
 
 from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.export import python_module_text
 from rockly_desktop.core.program import PROGRAM_SUFFIX, Program, save_program, write_text_atomically
 from rockly_desktop.profiles.opening import read_program_to_open, unknown_blocks_error
+from rockly_desktop.ui.file_dialogs import FileDialogs
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.texts import tr
 
@@ -27,7 +28,8 @@ class ProgramFiles(QObject):
     Commands that need the page's answer (save, export, and whatever asks to save
     first) carry on when it comes: they take ``then(ok)``, called once the command has
     ended (at once when nothing had to wait; False when it failed or was cancelled).
-    ``parent`` is the widget the dialogs belong to.
+    ``parent`` is the widget the dialogs belong to; ``file_dialogs`` asks for files (kiosk mode
+    puts dialogs confined to one folder in its place).
     """
 
     sig_status = Signal(str)
@@ -42,6 +44,7 @@ class ProgramFiles(QObject):
         self.registry = registry
         self._saves_waiting = 0
         self._after_saves = []  # continuations waiting until no save waits for the page
+        self.file_dialogs = FileDialogs()
 
     @property
     def saving(self) -> bool:
@@ -98,8 +101,8 @@ class ProgramFiles(QObject):
             language = self.settings.language
             suggestion = self.document.path or str(Path(self._start_folder()) / (self.document.display_name(language)
                                                                                + PROGRAM_SUFFIX))
-            path, _ = QFileDialog.getSaveFileName(self.parent(), tr("save_as", language).replace("&", ""),
-                                                  suggestion, tr("filter_program", language))
+            path = self.file_dialogs.save_file(self.parent(), tr("save_as", language).replace("&", ""),
+                                               suggestion, tr("filter_program", language))
             if not path:
                 _report(then, False)
                 return
@@ -112,9 +115,9 @@ class ProgramFiles(QObject):
         language = self.settings.language
         if path is None:
             stem = Path(self.document.path).stem if self.document.path else tr("untitled", language)
-            path, _ = QFileDialog.getSaveFileName(self.parent(), tr("export_python", language).replace("&", ""),
-                                                  str(Path(self._start_folder()) / f"{stem}.py"),
-                                                  tr("filter_python", language))
+            path = self.file_dialogs.save_file(self.parent(), tr("export_python", language).replace("&", ""),
+                                               str(Path(self._start_folder()) / f"{stem}.py"),
+                                               tr("filter_python", language))
             if not path:
                 _report(then, False)
                 return
@@ -168,8 +171,8 @@ class ProgramFiles(QObject):
             chosen = path
             if may_replace and chosen is None:
                 language = self.settings.language
-                chosen, _ = QFileDialog.getOpenFileName(self.parent(), tr(title_key, language).replace("&", ""),
-                                                        self._start_folder(), tr(filter_key, language))
+                chosen = self.file_dialogs.open_file(self.parent(), tr(title_key, language).replace("&", ""),
+                                                     self._start_folder(), tr(filter_key, language))
             if may_replace and chosen:
                 self._open_checked(chosen, then)
             else:

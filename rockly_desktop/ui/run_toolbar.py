@@ -13,11 +13,13 @@ RUN_KEYS = "F5"  # Run's while idle, Continue's while paused
 
 
 class RunToolbar(QToolBar):
-    """Actions for running programs; ``set_state`` enables what makes sense."""
+    """Actions for running programs; ``set_state`` enables what makes sense. ``big``: larger
+    buttons and an even bigger STOP, for a fair stand's touch screen (kiosk mode), and no choice
+    of robot (a kiosk runs on the simulator)."""
 
     sig_delay_changed = Signal(float)
 
-    def __init__(self, language: str, parent=None):
+    def __init__(self, language: str, parent=None, big: bool = False):
         super().__init__(tr("run", language), parent)
         self._language = language
         self.setObjectName("run_toolbar")
@@ -36,8 +38,11 @@ class RunToolbar(QToolBar):
         self.addAction(self.stop_action)
         stop_button = self.widgetForAction(self.stop_action)
         stop_button.setObjectName("stop_button")
-        stop_button.setStyleSheet("QToolButton { background: #d32f2f; color: white; font-size: 18px; font-weight: bold;"
-                                  " border-radius: 6px; padding: 6px 22px; margin: 2px 8px; }"
+        stop_size = "font-size: 28px; padding: 12px 26px;" if big else "font-size: 18px; padding: 6px 22px;"
+        if big:
+            self.setStyleSheet("QToolButton { font-size: 19px; font-weight: bold; padding: 10px 8px; }")
+        stop_button.setStyleSheet(f"QToolButton {{ background: #d32f2f; color: white; {stop_size} font-weight: bold;"
+                                  " border-radius: 6px; margin: 2px 8px; }"
                                   "QToolButton:disabled { background: #e8a0a0; }"
                                   "QToolButton:hover { background: #b71c1c; }")
         self.addSeparator()
@@ -45,20 +50,21 @@ class RunToolbar(QToolBar):
         self.speed = QSlider(Qt.Orientation.Horizontal, self)
         self.speed.setRange(0, SLIDER_STEPS)
         self.speed.setValue(SLIDER_STEPS)
-        self.speed.setFixedWidth(140)
+        self.speed.setFixedWidth(100 if big else 140)
         self.speed.setToolTip(tr("speed_tip", language))
         self.speed.valueChanged.connect(lambda _value: self.sig_delay_changed.emit(self.delay))
         self.addWidget(self.speed)
         self.addWidget(QLabel(f" {tr('fast', language)}  ", self))
         self.addSeparator()
         # "Run on", not "Robot": the Robot menu chooses which robot, this box where the program runs
-        self.addWidget(QLabel(f" {tr('run_on', language)} ", self))
+        robot_choice = [self.addWidget(QLabel(f" {tr('run_on', language)} ", self))]
         self.backend = QComboBox(self)
         self.backend.setToolTip(tr("run_on_tip", language))
         for entry in link_kinds():
             self.backend.addItem(tr(entry.name, language), entry.kind)
-        self.addWidget(self.backend)
-        self.addSeparator()
+        robot_choice += [self.addWidget(self.backend), self.addSeparator()]
+        for action in robot_choice if big else ():  # a kiosk runs on the simulator; the room goes to big buttons
+            action.setVisible(False)
         # put the simulated robot back: also in the Robot menu, so its shortcut is the window's
         self.reset_action = self._action("reset_robot", "reset_robot_tip", "Ctrl+R", icons.SP_BrowserReload)
         self.backend.currentIndexChanged.connect(lambda _index: self.set_state(self._state))

@@ -3,13 +3,19 @@ from PySide6.QtCore import QSettings
 
 from rockly_desktop.core.app_texts import languages
 from rockly_desktop.core.paths import recordings_dir
+from rockly_desktop.ui.kiosk_settings import KioskSettings
 from rockly_desktop.ui.teacher_settings import TeacherSettings
 
 MAX_RECENT = 8
 
 
 class AppSettings:
-    """Typed access to Rockly's QSettings. ``path`` selects a settings file (tests use one)."""
+    """Typed access to Rockly's QSettings. ``path`` selects a settings file (tests use one).
+
+    In kiosk mode (``kiosk_mode``) the visitors' session leaves the teacher's own untouched: no
+    recent or last file, window layout or stage is remembered, and "Put the robot back before
+    each Run" is a setting of its own, on by default.
+    """
 
     def __init__(self, path=None):
         if path is None:
@@ -17,6 +23,7 @@ class AppSettings:
         else:
             self._store = QSettings(str(path), QSettings.Format.IniFormat)
         self.language_watchers = []  # called with the new language when it changes
+        self.kiosk_mode = False
 
     def _get(self, key, default=None):
         value = self._store.value(key)
@@ -48,17 +55,21 @@ class AppSettings:
     @property
     def recent_files(self) -> list:
         """Recently used program files, newest first."""
-        value = self._get("recent_files", [])
+        value = [] if self.kiosk_mode else self._get("recent_files", [])
         return [value] if isinstance(value, str) else list(value)
 
     def add_recent_file(self, path: str):
         """Put ``path`` at the top of the recent files (and remember it as the last file)."""
+        if self.kiosk_mode:
+            return
         files = [path] + [item for item in self.recent_files if item != path]
         self._store.setValue("recent_files", files[:MAX_RECENT])
         self.last_file = path
 
     def clear_recent_files(self):
-        """Forget the recent files."""
+        """Forget the recent files (not from a kiosk, which shows none)."""
+        if self.kiosk_mode:
+            return
         self._store.setValue("recent_files", [])
 
     @property
@@ -68,6 +79,8 @@ class AppSettings:
 
     @last_file.setter
     def last_file(self, path):
+        if self.kiosk_mode:
+            return
         self._store.setValue("last_file", path or "")
 
     @property
@@ -82,6 +95,8 @@ class AppSettings:
 
     def save_window(self, geometry, state):
         """Remember the window geometry and dock layout."""
+        if self.kiosk_mode:
+            return
         self._store.setValue("window/geometry", geometry)
         self._store.setValue("window/state", state)
 
@@ -103,13 +118,57 @@ class AppSettings:
         return TeacherSettings(self._store)
 
     @property
+    def normal_window_state(self):
+        """The dock layout to go back to when the window was closed on stage (QByteArray), or None."""
+        return self._get("window/normal_state")
+
+    @normal_window_state.setter
+    def normal_window_state(self, state):
+        if not self.kiosk_mode:
+            self._store.setValue("window/normal_state", state)
+
+    @property
+    def stage(self) -> bool:
+        """True when the window was on stage (View → Stage) when it last closed."""
+        return not self.kiosk_mode and str(self._get("window/stage", "false")).lower() == "true"
+
+    @stage.setter
+    def stage(self, value: bool):
+        if not self.kiosk_mode:
+            self._store.setValue("window/stage", "true" if value else "false")
+
+    @property
+    def stage_share(self):
+        """The share of the window's width the simulator had on stage (0..1), or None."""
+        try:
+            return float(self._get("window/stage_share"))
+        except (TypeError, ValueError):
+            return None
+
+    @stage_share.setter
+    def stage_share(self, share: float):
+        if not self.kiosk_mode:
+            self._store.setValue("window/stage_share", share)
+
+    @property
+    def kiosk(self) -> KioskSettings:
+        """The kiosk mode's settings (folders, idle minutes, the key chord that leaves it)."""
+        return KioskSettings(self._store)
+
+    @property
+    def _reset_key(self):
+        return ("kiosk/reset_before_run", "true") if self.kiosk_mode else ("reset_before_run", "false")
+
+    @property
     def reset_before_run(self) -> bool:
-        """True when the simulated robot is put back before each Run (and on New and Open); off by default."""
-        return str(self._get("reset_before_run", "false")).lower() == "true"
+        """True when the simulated robot is put back before each Run (and on New and Open); off by
+        default, on by default in kiosk mode (which keeps its own setting)."""
+        key, default = self._reset_key
+        return str(self._get(key, default)).lower() == "true"
 
     @reset_before_run.setter
     def reset_before_run(self, value: bool):
-        self._store.setValue("reset_before_run", "true" if value else "false")
+        self._store.setValue(self._reset_key[0], "true" if value else "false")
 
     @property
     def recordings_folder(self) -> str:

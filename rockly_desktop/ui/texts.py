@@ -18,7 +18,8 @@ def language_names() -> dict:
 
 def editor_page_texts(language: str) -> dict:
     """The editor page's own menu texts in ``language`` (``EditorView.start``'s ``texts``)."""
-    return {"addBreakpoint": tr("add_breakpoint", language), "removeBreakpoint": tr("remove_breakpoint", language)}
+    return {"addBreakpoint": tr("add_breakpoint", language), "removeBreakpoint": tr("remove_breakpoint", language),
+            "emptyHint": tr("empty_hint", language, run=tr("run", language))}
 
 
 def robot_problem(error, language: str) -> tuple:

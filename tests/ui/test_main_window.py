@@ -132,12 +132,3 @@ def test_closing_with_unsaved_changes_asks_first(qtbot, window, answer_prompts):
     assert window.close()
     QCoreApplication.processEvents()
 
-
-def test_the_plot_and_the_topic_monitor_get_room_when_shown(qtbot, window):
-    window.resize(1600, 1000)
-    qtbot.waitUntil(lambda: window.console.width() == 1600, timeout=3000)  # laid out at the new size
-    assert window.console.height() < 1000 // 3          # the console is a strip under the program
-    window.plot_dock.raise_()
-    qtbot.waitUntil(lambda: window.plot_dock.height() >= 1000 // 4, timeout=3000)   # about a third, less its tab bar
-    window.monitor_dock.raise_()
-    qtbot.waitUntil(lambda: window.monitor_dock.height() >= 1000 // 4, timeout=3000)

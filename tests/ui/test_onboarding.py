@@ -58,8 +58,8 @@ def test_an_example_opens_as_an_untitled_copy_and_saving_never_touches_the_shipp
 
     def choose_place(_parent, _title, suggestion, _filter):
         asked.append(suggestion)
-        return str(tmp_path / "mine.rockly"), ""
-    monkeypatch.setattr(program_files.QFileDialog, "getSaveFileName", choose_place)
+        return str(tmp_path / "mine.rockly")
+    monkeypatch.setattr(window.files.file_dialogs, "save_file", choose_place)
 
     assert completed(qtbot, window.files.open_copy, str(example), "Drive a square")
     assert (window.document.path, window.document.modified) == (None, False)

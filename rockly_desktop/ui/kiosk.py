@@ -1,0 +1,198 @@
+"""Kiosk mode for a fair stand (``rockly --kiosk [PROGRAM]``): the stage layout, a big STOP, no way
+out without the teacher's PIN or key chord, file dialogs kept in one folder, and a fresh start
+for the next visitor after a few minutes without input."""
+from datetime import datetime
+
+from PySide6.QtCore import QEvent, QObject, Qt
+from PySide6.QtGui import QKeySequence, QShortcut
+from PySide6.QtWidgets import (
+    QApplication,
+    QDialog,
+    QDialogButtonBox,
+    QDockWidget,
+    QLabel,
+    QLineEdit,
+    QVBoxLayout,
+)
+
+from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS
+from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.core.program import PROGRAM_SUFFIX, Program, save_program
+from rockly_desktop.ui.file_dialogs import ConfinedFileDialogs
+from rockly_desktop.ui.idle_watch import IdleWatch
+from rockly_desktop.ui.texts import tr
+
+
+def can_be_left(settings) -> bool:
+    """True when a teacher can leave kiosk mode: a teacher PIN or a key chord is set."""
+    return settings.teacher.has_pin or bool(settings.kiosk.quit_chord)
+
+
+class Kiosk(QObject):
+    """Turns ``window`` (a MainWindow built with ``settings.kiosk_mode`` on) into a kiosk whose start
+    program is ``start_program`` (a path, or None for an empty program). The caller shows the
+    window full screen and starts it with the same program."""
+
+    def __init__(self, window, start_program=None):
+        super().__init__(window)
+        self.window = window
+        self.settings = window.settings.kiosk
+        self.start_program = str(start_program) if start_program else None
+        self._may_close = False
+        self._starting_over = False
+        self.leave_dialog = None
+        window.stage.set_active(True)
+        window.stage.action.setEnabled(False)
+        for dock in window.findChildren(QDockWidget):
+            dock.setFeatures(QDockWidget.DockWidgetFeature.NoDockWidgetFeatures)  # no closing, no floating away
+        for roomy in (window.monitor_dock, window.plot_dock):  # their exports would open dialogs anywhere
+            roomy.hide()
+            roomy.toggleViewAction().setEnabled(False)
+        window.files.file_dialogs = ConfinedFileDialogs(self.settings.programs_folder)
+        # Chromium's own menu (Back, Reload, Save page…) where the page shows none; Blockly's menus stay
+        window.editor.setContextMenuPolicy(Qt.ContextMenuPolicy.NoContextMenu)
+        window.files.sig_program_replaced.connect(self._keep_start_program_safe)
+        window.installEventFilter(self)
+        self.chord = None
+        if self.settings.quit_chord:
+            self.chord = QShortcut(QKeySequence(self.settings.quit_chord), window)
+            self.chord.setContext(Qt.ShortcutContext.ApplicationShortcut)
+            self.chord.activated.connect(self.leave)
+        self.idle = IdleWatch(self.settings.idle_minutes * 60, window, self)
+        self.idle.sig_idle.connect(self._on_idle)
+
+    # --- leaving ------------------------------------------------------------------------
+
+    def eventFilter(self, watched, event):
+        """Closing the window (Quit, Alt+F4) asks for the teacher's PIN first."""
+        if watched is self.window and event.type() == QEvent.Type.Close and not self._may_close:
+            event.ignore()
+            self.ask_pin()
+            return True
+        return False
+
+    def ask_pin(self):
+        """Show the dialog that asks for the teacher's PIN to leave kiosk mode."""
+        if self.leave_dialog is not None:
+            self.leave_dialog.deleteLater()  # made anew: the language may have changed
+        self.leave_dialog = LeaveDialog(self.window.settings.teacher, self.window.language, self.window)
+        self.leave_dialog.accepted.connect(self.leave)
+        self.leave_dialog.open()
+
+    def leave(self):
+        """Keep the visitor's program, then close the window (the teacher gave the PIN or the chord)."""
+        self.idle.stop()
+
+        def close():
+            self.window.document.modified = False  # the visitor's program is kept in the visitors' folder
+            self._may_close = True
+            self.window.showNormal()
+            self.window.close()
+
+        self._keep_visitor_program(close)
+
+    # --- the next visitor ---------------------------------------------------------------
+
+    def _on_idle(self):
+        window = self.window
+        if self._starting_over:
+            return
+        if window.runs.state != "idle":
+            window.runs.stop()  # the next check starts over once the run has ended
+            return
+        modal = QApplication.activeModalWidget()
+        if modal is not None:  # a question nobody answers; starting over waits until it is gone
+            modal.close()
+            return
+        self._starting_over = True
+        self._keep_visitor_program(self._start_over)
+
+    def _keep_visitor_program(self, then):
+        """Save a changed program into a dated file in the visitors' folder, then ``then()``."""
+        window = self.window
+        if not window.document.modified:
+            then()
+            return
+        document = window.document
+
+        def answered(state, error):
+            if not error:
+                try:
+                    save_program(self._dated_path(), Program(document.profile.id, state["workspace"],
+                                                             document.breakpoints))
+                except (RocklyError, OSError) as problem:
+                    error = problem
+            if error:
+                window.console.append(tr("kiosk_not_kept", window.language, error=error), "error")
+            then()
+
+        window.editor.call("getState", None, answered, timeout_ms=ANSWER_TIMEOUT_MS)
+
+    def _dated_path(self):
+        folder = self.settings.visitors_folder
+        folder.mkdir(parents=True, exist_ok=True)
+        stem = datetime.now().strftime("%Y-%m-%d_%H-%M-%S")
+        path, number = folder / f"{stem}{PROGRAM_SUFFIX}", 1
+        while path.exists():
+            number += 1
+            path = folder / f"{stem}-{number}{PROGRAM_SUFFIX}"
+        return path
+
+    def _start_over(self):
+        window = self.window
+        window.document.modified = False
+
+        def opened(_ok=True):
+            window.robots.reset()
+            self._starting_over = False
+            self.idle.rest()
+            window.statusBar().showMessage(tr("kiosk_started_over", window.language), 10000)
+
+        if self.start_program:
+            window.files.open(self.start_program, then=opened)
+        else:
+            window.files.new(ask=False)
+            opened()
+
+    def _keep_start_program_safe(self):
+        """The start program is shown as a new program, so Save asks for a name in the kiosk's folder
+        instead of writing over it."""
+        if self.start_program and self.window.document.path == self.start_program:
+            self.window.document.set_file(None, False)
+
+
+class LeaveDialog(QDialog):
+    """Asks for the teacher's PIN (``teacher``: TeacherSettings); accepted only with the right one."""
+
+    def __init__(self, teacher, language: str, parent=None):
+        super().__init__(parent)
+        self.setObjectName("leave_kiosk_dialog")
+        self.setWindowTitle(tr("kiosk_leave_title", language))
+        self._teacher, self._language = teacher, language
+        self.pin = QLineEdit(self, objectName="kiosk_pin", echoMode=QLineEdit.EchoMode.Password)
+        self.problem = QLabel(self, objectName="kiosk_problem")
+        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel, self)
+        buttons.accepted.connect(self.accept)
+        buttons.rejected.connect(self.reject)
+        layout = QVBoxLayout(self)
+        layout.addWidget(QLabel(tr("kiosk_leave_text", language), self, wordWrap=True))
+        layout.addWidget(self.pin)
+        layout.addWidget(self.problem)
+        layout.addWidget(buttons)
+
+    def accept(self):
+        """Qt override: close only when the PIN is right."""
+        right = self._teacher.has_pin and self._teacher.check_pin(self.pin.text())
+        self.pin.clear()
+        if right:
+            self.problem.clear()
+            super().accept()
+        else:
+            self.problem.setText(tr("teacher_wrong_pin", self._language))
+
+    def open(self):
+        """Qt override: open with an empty PIN field."""
+        self.problem.clear()
+        self.pin.clear()
+        super().open()
+        self.pin.setFocus()

@@ -1,0 +1,166 @@
+"""How the window's docks are laid out: the stage (the simulator large, the blocks beside it, the code
+and the console out of the way) and bottom tabs that each keep their own height."""
+from PySide6.QtCore import QEvent, QObject, Qt, QTimer
+from PySide6.QtGui import QAction, QKeySequence
+
+from rockly_desktop.ui.texts import tr
+
+STAGE_SHARE = 0.62  # of the window's width the simulator gets on stage, until the person drags the edge
+MIN_SHARE, MAX_SHARE = 0.3, 0.85
+CONSOLE_STRIP = 96  # px: on stage the console is a strip under the blocks
+
+
+def keep_side_docks_full_height(window):
+    """Let the right dock area (simulator, code) own the bottom-right corner, so that a taller
+    bottom panel (console, topic monitor, plot) takes room from the blocks, never from the simulator."""
+    window.setCorner(Qt.Corner.BottomRightCorner, Qt.DockWidgetArea.RightDockWidgetArea)
+
+
+class BottomTabSizes(QObject):
+    """Each tab of the bottom dock area keeps its own height: switching tabs gives the shown tab the
+    height it had when last shown. A ``roomy`` tab (a message tree, a plot) shown for the first time
+    gets a third of the window; the console keeps the strip it had."""
+
+    def __init__(self, window, docks, roomy=()):
+        super().__init__(window)
+        self._window = window
+        self._roomy = set(roomy)
+        self._heights = {}
+        self._shown = set()  # a tab's height counts once it was shown (tabifying hides tabs never seen)
+        for dock in docks:
+            dock.visibilityChanged.connect(lambda visible, dock=dock: self._on_visibility(dock, visible))
+
+    def _on_visibility(self, dock, visible: bool):
+        if not visible:
+            if dock in self._shown and dock.height() > 0 and not self._window.isMinimized():
+                self._heights[dock] = dock.height()
+            return
+        QTimer.singleShot(0, self, lambda: self._give_height(dock))  # after the tab switch has been laid out
+
+    def _give_height(self, dock):
+        if not dock.isVisible():
+            return
+        self._shown.add(dock)
+        wanted = self._heights.get(dock)
+        if wanted is None and dock in self._roomy:
+            wanted = max(dock.height(), self._window.height() // 3)
+        if wanted is not None and wanted != dock.height():
+            self._window.resizeDocks([dock], [wanted], Qt.Orientation.Vertical)
+            QTimer.singleShot(0, self, lambda: self._correct(dock, wanted))
+
+    def _correct(self, dock, wanted: int):
+        """The size resizeDocks gives tabbed docks includes their tab bar: add what is missing."""
+        missing = wanted - dock.height()
+        if dock.isVisible() and missing:
+            self._window.resizeDocks([dock], [wanted + missing], Qt.Orientation.Vertical)
+
+
+class StageLayout(QObject):
+    """View → Stage (F11): the simulator (a real robot's state panels) takes most of ``window``,
+    the blocks stay beside it, the console is a strip under them; code, variables, topic monitor
+    and plot are closed. Leaving puts back the layout from before. ``settings`` (AppSettings)
+    remember whether the stage was on, the simulator's share of the width and the layout to go back to.
+    """
+
+    def __init__(self, window, settings):
+        super().__init__(window)
+        self._window = window
+        self._settings = settings
+        self._normal_state = None
+        self._share = settings.stage_share or STAGE_SHARE
+        self._settled = False  # the docks have the sizes given (only then is a share the person's)
+        self.action = QAction(window, checkable=True)
+        self.action.setObjectName("action_stage")
+        self.action.setShortcut(QKeySequence(Qt.Key.Key_F11))
+        self.action.toggled.connect(self._toggled)
+        window.installEventFilter(self)
+        # another robot shows or hides the simulator: arrange again once the window has done so
+        window.robots.sig_robot_changed.connect(lambda: self.active and QTimer.singleShot(0, self, self._arrange))
+
+    @property
+    def active(self) -> bool:
+        """True while the stage layout is on."""
+        return self._normal_state is not None
+
+    def action_for(self, language: str) -> QAction:
+        """The checkable View → Stage action, with its texts in ``language``."""
+        self.action.setText(tr("stage", language))
+        self.action.setToolTip(tr("stage_tip", language))
+        return self.action
+
+    def restore_remembered(self):
+        """Go on stage when the window was on stage when it last closed."""
+        if self._settings.stage:
+            self._normal_state = self._settings.normal_window_state or self._window.saveState()
+            self._arrange()
+            self.action.setChecked(True)
+
+    def set_active(self, on: bool):
+        """Go on stage, or back to the layout from before."""
+        self.action.setChecked(on)
+
+    def _toggled(self, on: bool):
+        if on == self.active:
+            return
+        if on:
+            self._normal_state = self._window.saveState()
+            self._arrange()
+        else:
+            self._keep_share()
+            self._window.restoreState(self._normal_state)
+            self._normal_state = None
+        self._settings.stage = on
+
+    def state_to_keep(self):
+        """The dock layout the window keeps when it closes: the one from before the stage while on stage
+        (the stage is remembered apart, with the simulator's share)."""
+        if not self.active:
+            return self._window.saveState()
+        self._keep_share()
+        self._settings.normal_window_state = self._normal_state
+        return self._normal_state
+
+    def _big_dock(self):
+        window = self._window
+        return window.simulator_dock if window.robots.simulated else window.state_dock
+
+    def _arrange(self):
+        window, big = self._window, self._big_dock()
+        for dock in (window.code_dock, window.variables, window.state_dock, window.monitor_dock, window.plot_dock,
+                     window.simulator_dock):
+            if dock is not big:
+                dock.hide()
+        big.show()
+        window.console.show()
+        window.console.raise_()
+        self._apply_sizes()
+        self._apply_later()
+
+    def _apply_later(self):
+        """Give the sizes again once the docks have been laid out, and count them as settled after that."""
+        self._settled = False
+        QTimer.singleShot(0, self, self._apply_sizes)
+        QTimer.singleShot(0, self, lambda: QTimer.singleShot(0, self, self._settle))
+
+    def _settle(self):
+        self._settled = True
+
+    def _apply_sizes(self):
+        if not self.active:
+            return
+        window = self._window
+        window.resizeDocks([self._big_dock()], [round(window.width() * self._share)], Qt.Orientation.Horizontal)
+        window.resizeDocks([window.console], [CONSOLE_STRIP], Qt.Orientation.Vertical)
+
+    def _keep_share(self):
+        """Remember the share of the width the person left the simulator (it may have been dragged)."""
+        width, big = self._window.width(), self._big_dock()
+        if self._settled and big.isVisible() and width > 0:
+            self._share = min(MAX_SHARE, max(MIN_SHARE, big.width() / width))
+            self._settings.stage_share = self._share
+
+    def eventFilter(self, watched, event):
+        """On stage, a window shown, grown or shrunk gives the simulator its share of its width."""
+        if watched is self._window and event.type() in (QEvent.Type.Resize, QEvent.Type.Show) and self.active:
+            self._apply_later()
+        return False

@@ -1,0 +1,108 @@
+"""The stage layout (View → Stage, F11) and bottom tabs that keep their size."""
+import pytest
+from PySide6.QtCore import Qt
+from window_tools import WindowDriver
+
+
+def simulator_area(window) -> int:
+    view = window.simulator_dock.widget()
+    return view.width() * view.height() if view is not None and view.isVisible() else 0
+
+
+def laid_out(qtbot, window, width, height):
+    window.resize(width, height)
+    qtbot.waitUntil(lambda: (window.width(), window.height()) == (width, height), timeout=3000)
+
+
+@pytest.mark.parametrize("size", [(1280, 800), (1920, 1080)])
+def test_on_stage_the_simulator_takes_at_least_half_of_the_window(qtbot, window, size):
+    width, height = size
+    laid_out(qtbot, window, width, height)
+    assert simulator_area(window) < width * height // 2            # the usual layout: a small simulator
+    stage = window.stage.action
+    assert stage.isCheckable() and stage.shortcut().toString() == "F11"
+    assert stage in window.menuBar().actions()[3].menu().actions()    # View → Stage
+    stage.trigger()
+    qtbot.waitUntil(lambda: simulator_area(window) >= width * height // 2, timeout=3000)
+    assert not window.code_dock.isVisible() and not window.variables.isVisible()
+    assert window.console.isVisible() and window.console.height() < height // 6     # a strip under the blocks
+    assert window.editor.width() >= width // 3                        # the blocks beside it
+    assert window.simulator_dock.x() > window.editor.x()
+
+
+def test_leaving_the_stage_puts_back_the_layout_from_before(qtbot, window):
+    laid_out(qtbot, window, 1280, 800)
+    window.variables.raise_()
+    qtbot.waitUntil(lambda: window.variables.isVisible(), timeout=3000)
+    before = (window.simulator_dock.width(), window.simulator_dock.height())
+    window.stage.set_active(True)
+    qtbot.waitUntil(lambda: simulator_area(window) >= 1280 * 800 // 2, timeout=3000)
+    window.stage.set_active(False)
+    qtbot.waitUntil(lambda: window.variables.isVisible(), timeout=3000)
+    assert not window.stage.action.isChecked() and not window.stage.active
+    qtbot.waitUntil(lambda: (window.simulator_dock.width(), window.simulator_dock.height()) == before, timeout=3000)
+
+
+def test_the_stage_is_remembered_across_windows(qtbot, driver):
+    first = driver.open_window()
+    laid_out(qtbot, first, 1280, 800)
+    first.code_dock.raise_()
+    first.stage.action.trigger()
+    qtbot.waitUntil(lambda: simulator_area(first) >= 1280 * 800 // 2, timeout=3000)
+    first.close()
+
+    again = WindowDriver(qtbot, driver.settings_path)
+    try:
+        window = again.open_window()
+        assert window.stage.active and window.stage.action.isChecked()
+        laid_out(qtbot, window, 1280, 800)      # (the offscreen screen is smaller: restoring fits the window into it)
+        qtbot.waitUntil(lambda: simulator_area(window) >= 1280 * 800 // 2, timeout=3000)
+        assert not window.code_dock.isVisible()
+        window.stage.action.trigger()                                      # off: the layout from before the stage
+        qtbot.waitUntil(lambda: window.code_dock.isVisible(), timeout=3000)
+        assert simulator_area(window) < 1280 * 800 // 2
+        window.close()
+        third = again.open_window()
+        assert not third.stage.active and third.code_dock.isVisible()
+    finally:
+        again.close_all()
+
+
+def test_switching_bottom_tabs_keeps_the_simulator_and_each_tab_its_size(qtbot, window):
+    laid_out(qtbot, window, 1600, 1000)
+    qtbot.waitUntil(lambda: window.console.height() < 1000 // 3, timeout=3000)   # the console is a strip
+    simulator = window.simulator_dock.size()
+    console_height = window.console.height()
+    window.plot_dock.raise_()
+    qtbot.waitUntil(lambda: window.plot_dock.height() >= 1000 // 4, timeout=3000)   # the plot gets room
+    assert window.simulator_dock.size() == simulator                      # beside the bottom tabs, untouched
+    window.monitor_dock.raise_()
+    qtbot.waitUntil(lambda: window.monitor_dock.height() >= 1000 // 4, timeout=3000)
+    window.console.raise_()
+    qtbot.waitUntil(lambda: window.console.isVisible() and window.console.height() == console_height, timeout=3000)
+    window.resizeDocks([window.console], [260], Qt.Orientation.Vertical)    # the person makes the console taller
+    qtbot.waitUntil(lambda: window.console.height() > console_height + 30, timeout=3000)
+    taller = window.console.height()
+    window.plot_dock.raise_()
+    qtbot.waitUntil(lambda: window.plot_dock.height() >= 1000 // 4, timeout=3000)
+    window.console.raise_()
+    qtbot.waitUntil(lambda: window.console.isVisible() and window.console.height() == taller, timeout=3000)
+    assert window.simulator_dock.size() == simulator
+
+
+def test_the_width_the_person_gives_the_simulator_on_stage_is_remembered(qtbot, driver):
+    first = driver.open_window()
+    laid_out(qtbot, first, 1280, 800)
+    first.stage.set_active(True)
+    qtbot.waitUntil(lambda: simulator_area(first) >= 1280 * 800 // 2, timeout=3000)
+    first.resizeDocks([first.simulator_dock], [900], Qt.Orientation.Horizontal)     # dragged wider
+    qtbot.waitUntil(lambda: abs(first.simulator_dock.width() - 900) <= 2, timeout=3000)
+    first.close()
+
+    again = WindowDriver(qtbot, driver.settings_path)
+    try:
+        window = again.open_window()
+        laid_out(qtbot, window, 1600, 1000)                                     # a bigger window: the same share
+        qtbot.waitUntil(lambda: abs(window.simulator_dock.width() - 900 * 1600 / 1280) <= 4, timeout=3000)
+    finally:
+        again.close_all()
