@@ -3,6 +3,9 @@
 Prints one line per block it enters (id and type) and what the program prints; tablet
 questions are answered from ``--answer`` options in the order they come. Ctrl+C stops
 the program (with the robot's safe stop). Exit status: 0 finished, 1 error, 130 stopped.
+The teacher's limits and switched-off capabilities set in the window's Preferences hold
+here too (a line says which); the toolbox level only filters the window's toolbox, so a
+program with blocks beyond it runs, as it does in the window.
 """
 import signal
 import sys
@@ -12,15 +15,18 @@ from rockly_desktop.core.workspace_blocks import block_types_by_id
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import BlockEntered, OutputPrinted, RunFinished
 from rockly_desktop.executor.robot_link import RosRobot, SimulatedRobot
-from rockly_desktop.executor.run_setup import make_runner
+from rockly_desktop.executor.run_setup import limits_line, make_runner
 from rockly_desktop.robot.answer_list import AnswerList
 
 EXIT_STOPPED = 130
 
 
 def run_program(program_path, answers=(), speed: float = 1.0, language: str = "en", out=print,
-                backend: str = "sim", master_uri: str = None) -> int:
-    """Run ``program_path`` headless on its profile's simulator (or on ROS 1); returns the exit status."""
+                backend: str = "sim", master_uri: str = None, teacher=None) -> int:
+    """Run ``program_path`` headless on its profile's simulator (or on ROS 1); returns the exit status.
+
+    ``teacher`` (TeacherSettings) gives the limits the run keeps; by default the window's.
+    """
     from rockly_desktop.app import generate_headless
     from rockly_desktop.profiles.opening import opening_warnings
 
@@ -45,6 +51,10 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
         from rockly_desktop.robot.ros1.connection import address_problem_text
 
         print(f"rockly run: warning: {address_problem_text(connection.address_problem)}", file=sys.stderr)
+    limits = _teacher(teacher).limits(program.profile.id)
+    line = limits_line(program.profile, limits, language)
+    if line:
+        out(line)
     control = RunControl(trace=True)
 
     def report(event):
@@ -55,7 +65,7 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
 
     previous = signal.signal(signal.SIGINT, lambda *_: control.request_stop())
     try:
-        result = make_runner(program.profile, robot, run_code, control, report, language).run()
+        result = make_runner(program.profile, robot, run_code, control, report, language, limits).run()
     except RocklyError as error:  # the profile's commands could not be made
         print(f"rockly run: {error}", file=sys.stderr)
         return 1
@@ -63,6 +73,15 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
         signal.signal(signal.SIGINT, previous)
         robot.shutdown()
     return _report_end(result, types)
+
+
+def _teacher(teacher):
+    """``teacher``, or the teacher's settings the window keeps (the same QSettings file)."""
+    if teacher is not None:
+        return teacher
+    from rockly_desktop.ui.settings import AppSettings
+
+    return AppSettings().teacher
 
 
 def _report_end(result: RunFinished, types: dict) -> int:

@@ -6,7 +6,7 @@ import pytest
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import OutputPrinted
 from rockly_desktop.executor.robot_link import SimulatedRobot
-from rockly_desktop.executor.run_setup import make_runner
+from rockly_desktop.executor.run_setup import limits_line, make_runner
 from rockly_desktop.robot.limits import Limits
 
 FAST = "ros.publish_message('/cmd_vel', 'geometry_msgs/Twist', {'linear': {'x': %s}, 'angular': {'z': %s}})\n"
@@ -150,3 +150,13 @@ def test_navigation_is_refused_under_a_limit_below_its_speed(hobbit, robot, lang
     result, _ = run(hobbit, robot, "robot.navigate_to(1, 0)\n", Limits(max_speed=0.2), language)
     assert result.outcome == "error" and words in result.message
     assert goals == []
+
+
+@pytest.mark.parametrize(("limits", "language", "line"), [
+    (Limits(), "en", None),
+    (Limits(max_turn=45), "en", "The teacher's limits apply: turning at most 45°/s."),
+    (Limits(max_speed=0.2, switched_off=frozenset({"arm", "navigation", "unknown"})), "de",
+     "Es gelten die Grenzen der Lehrkraft: Fahren höchstens 0.2 m/s; ausgeschaltet: Arm und Greifer, Navigation."),
+])
+def test_the_line_saying_which_limits_apply(hobbit, limits, language, line):
+    assert limits_line(hobbit, limits, language) == line
