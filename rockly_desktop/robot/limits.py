@@ -5,7 +5,7 @@ profile declares as its drive interface (``geometry_msgs/Twist``) are clamped to
 maximum speeds, and topics, services and actions of a switched-off capability are
 refused with a RobotCommandError. Profiles need no code for it: the names come from
 their manifest. Reading (subscribe, latest, waits) and cancelling always pass. A motion at
-the robot's own speed (HOBBIT's ``Move 0.5``) is no velocity the wrapper can clamp: the
+the robot's own speed (a base driver's "drive 0.5 m") is no velocity the wrapper can clamp: the
 profile asks ``allowed_speed`` and drives it with velocity commands when a limit is lower.
 """
 import math
