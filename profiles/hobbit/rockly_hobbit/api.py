@@ -70,6 +70,7 @@ class _Progress:
         self.done = 0.0
         self.updates = 0
         self.speed = 0.0     # m/s or °/s, as the base reports it
+        self.commanded = 0.0  # m/s or °/s last sent, for a base whose odometry reports no velocity
         self.period = None   # the longest time one update was seen to cover (s), once the base moved
 
     def add(self, odometry):
@@ -82,8 +83,9 @@ class _Progress:
             self.speed = (velocity.get("linear") or {}).get("x", 0.0)
         else:
             self.speed = math.degrees((velocity.get("angular") or {}).get("z", 0.0))
-        if abs(self.speed) > STOPPED and self.done != before:
-            self.period = max(self.period or 0.0, abs(self.done - before) / abs(self.speed))
+        speed = self.speed if abs(self.speed) > STOPPED else self.commanded
+        if abs(speed) > STOPPED and self.done != before:
+            self.period = max(self.period or 0.0, abs(self.done - before) / abs(speed))
 
     def _add_pose(self, odometry):
         pose = (odometry.get("pose") or {}).get("pose") or {}
@@ -321,6 +323,7 @@ class Hobbit(RobotCommands):
                 raise self._bump_error()
             if self.backend.pause_requested():
                 self._velocity(kind, 0.0)
+                progress.commanded = 0.0
                 seen = progress.updates
                 self.backend.wait_until(lambda seen=seen: progress.updates > seen and abs(progress.speed) <= STOPPED,
                                         STOP_SETTLE_TIMEOUT)
@@ -337,15 +340,21 @@ class Hobbit(RobotCommands):
                 near = abs(remaining) / (APPROACH * progress.period) if progress.period else top_speed
                 speed = math.copysign(min(top_speed, near), remaining)
             self._velocity(kind, speed)
-            commanded, seen = speed, progress.updates
+            commanded = progress.commanded = speed
+            seen = progress.updates
             if not self.backend.wait_until(
                     lambda seen=seen: progress.updates > seen or bumps or self.backend.pause_requested(),
                     SENSOR_TIMEOUT):
                 self.stop()
-                raise RobotTimeout(f"the base sent no odometry (/odom) for {SENSOR_TIMEOUT:g} s while driving")
+                raise RobotTimeout(
+                    f"the base sent no odometry (/odom) for {SENSOR_TIMEOUT:g} s while driving",
+                    translations={"de": f"die Basis hat beim Fahren {SENSOR_TIMEOUT:g} s lang keine Odometrie "
+                                        f"(/odom) gesendet"})
             if time.monotonic() > deadline:
                 self.stop()
-                raise RobotTimeout(f"the base did not finish '{kind} {amount:g}' in time")
+                raise RobotTimeout(f"the base did not finish '{kind} {amount:g}' in time",
+                                   translations={"de": f"die Basis ist mit „{kind} {amount:g}“ nicht rechtzeitig "
+                                                       f"fertig geworden"})
 
     def _velocity(self, kind, speed):
         """Drive straight at ``speed`` m/s (``Move``) or turn at ``speed`` °/s (``Turn``)."""
