@@ -62,15 +62,6 @@ class RobotBackend(ABC):
         if self.interrupt is not None:
             self.interrupt.hold()
 
-    def allowed_speed(self, own_speed: float, turning: bool = False) -> float:
-        """How fast a motion the robot makes at its own ``own_speed`` (m/s; turning: rad/s) may go.
-
-        ``own_speed`` itself unless a teacher's limit is lower: then the limit. A profile whose
-        robot drives a distance at its own speed (a base driver's discrete motion) asks this first
-        and, when the answer is lower, drives with velocity commands at that speed instead.
-        """
-        return own_speed
-
     @abstractmethod
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
         """Publish ``message`` (a dict shaped like ``msg_type``) on ``topic``."""

@@ -5,8 +5,9 @@ profile declares as its drive interface (``geometry_msgs/Twist``) are clamped to
 maximum speeds, and topics, services and actions of a switched-off capability are
 refused with a RobotCommandError. Profiles need no code for it: the names come from
 their manifest. Reading (subscribe, latest, waits) and cancelling always pass. A motion at
-the robot's own speed (a base driver's "drive 0.5 m") is no velocity the wrapper can clamp: the
-profile asks ``allowed_speed`` and drives it with velocity commands when a limit is lower.
+the robot's own speed (a base driver's "drive 0.5 m") is no velocity the wrapper can clamp:
+the profile asks ``allowed_speed`` (through ``RobotCommands.allowed_speed``) and drives it
+with velocity commands when a limit is lower.
 """
 import math
 from dataclasses import dataclass
@@ -144,7 +145,11 @@ class LimitedBackend(RobotBackend):
         return message
 
     def allowed_speed(self, own_speed: float, turning: bool = False) -> float:
-        """``own_speed`` (m/s; turning: rad/s), or the teacher's maximum when that is lower (said once)."""
+        """``own_speed`` (m/s; turning: rad/s), or the teacher's maximum when that is lower (said once).
+
+        Profiles ask it through ``RobotCommands.allowed_speed``; a backend wrapping this one must
+        pass it on (``__getattr__`` does), or its runs would drive at the robot's own speed.
+        """
         if turning and self._limits.max_turn is not None and math.radians(self._limits.max_turn) < own_speed:
             self._tell_once("turn_clamped", turn=self._limits.max_turn)
             return math.radians(self._limits.max_turn)

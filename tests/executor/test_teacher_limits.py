@@ -160,3 +160,20 @@ def test_navigation_is_refused_under_a_limit_below_its_speed(hobbit, robot, lang
 ])
 def test_the_line_saying_which_limits_apply(hobbit, limits, language, line):
     assert limits_line(hobbit, limits, language) == line
+
+
+def test_commands_learn_the_allowed_speed_from_the_backend_they_are_given(hobbit, robot):
+    from rockly_desktop.robot.commands import RobotCommands
+    from rockly_desktop.robot.interrupt import Interrupt
+    from rockly_desktop.robot.limits import LimitedBackend
+
+    plain = robot.backend(Interrupt())
+    notes = []
+    limited = LimitedBackend(plain, Limits(max_speed=0.2, max_turn=90), note=notes.append)
+    assert RobotCommands(plain).allowed_speed(0.3) == 0.3                     # no teacher: the robot's own
+    assert RobotCommands(limited).allowed_speed(0.3) == 0.2                   # a lower limit
+    assert RobotCommands(limited).allowed_speed(0.1) == 0.1                   # a higher one changes nothing
+    assert RobotCommands(limited).allowed_speed(1.0, turning=True) == 1.0     # 90°/s is more than 1 rad/s
+    assert RobotCommands(limited).allowed_speed(2.0, turning=True) == pytest.approx(math.pi / 2)
+    assert notes == ["Speed limit: the robot drives at most 0.2 m/s (set by the teacher).",
+                     "Speed limit: the robot turns at most 90°/s (set by the teacher)."]

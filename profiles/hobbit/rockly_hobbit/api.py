@@ -135,8 +135,8 @@ class Hobbit(RobotCommands):
         """Drive to a full pose in the ``map`` frame (position and orientation quaternion); waits."""
         values = [self.number(value, name) for value, name in
                   ((x, "x"), (y, "y"), (z, "z"), (qx, "quat x"), (qy, "quat y"), (qz, "quat z"), (qw, "quat w"))]
-        if (self.backend.allowed_speed(MOVE_SPEED) < MOVE_SPEED
-                or self.backend.allowed_speed(TURN_SPEED, turning=True) < TURN_SPEED):
+        if (self.allowed_speed(MOVE_SPEED) < MOVE_SPEED
+                or self.allowed_speed(TURN_SPEED, turning=True) < TURN_SPEED):
             raise RobotCommandError(
                 f"navigation drives at HOBBIT's own speed ({MOVE_SPEED:g} m/s, {math.degrees(TURN_SPEED):g}°/s), "
                 f"faster than the teacher's speed limit; use drive and turn",
@@ -287,7 +287,7 @@ class Hobbit(RobotCommands):
         """``Move`` metres or ``Turn`` degrees: with the base driver's discrete motion, which goes at
         HOBBIT's own speed, or, when a teacher's limit is lower, driven with ``/cmd_vel`` at the limit."""
         own = MOVE_SPEED if kind == "Move" else TURN_SPEED
-        allowed = self.backend.allowed_speed(own, turning=kind == "Turn")
+        allowed = self.allowed_speed(own, turning=kind == "Turn")
         if allowed < own:
             self._driven_motion(kind, amount, tolerance, allowed if kind == "Move" else math.degrees(allowed))
         else:
