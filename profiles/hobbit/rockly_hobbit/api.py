@@ -132,17 +132,21 @@ class Hobbit(RobotCommands):
         self.navigate_to_pose(x, y, 0.0, 0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2))
 
     def navigate_to_pose(self, x, y, z, qx, qy, qz, qw):
-        """Drive to a full pose in the ``map`` frame (position and orientation quaternion); waits."""
+        """Drive to a full pose in the ``map`` frame (position and orientation quaternion); waits.
+
+        move_base drives at HOBBIT's own speed, which Rockly cannot slow down: under a teacher's
+        lower speed limit the goal is refused before it is sent.
+        """
         values = [self.number(value, name) for value, name in
                   ((x, "x"), (y, "y"), (z, "z"), (qx, "quat x"), (qy, "quat y"), (qz, "quat z"), (qw, "quat w"))]
         if (self.allowed_speed(MOVE_SPEED) < MOVE_SPEED
                 or self.allowed_speed(TURN_SPEED, turning=True) < TURN_SPEED):
             raise RobotCommandError(
                 f"navigation drives at HOBBIT's own speed ({MOVE_SPEED:g} m/s, {math.degrees(TURN_SPEED):g}°/s), "
-                f"faster than the teacher's speed limit; use drive and turn",
+                f"faster than the teacher's speed limit; use the “drive” and “turn” blocks",
                 translations={"de": f"die Navigation fährt mit HOBBITs eigenem Tempo ({MOVE_SPEED:g} m/s, "
                                     f"{math.degrees(TURN_SPEED):g}°/s), schneller als das Tempolimit der "
-                                    f"Lehrkraft; nimm Fahren und Drehen"})
+                                    f"Lehrkraft; nimm die Blöcke „fahre“ und „drehe dich“"})
         pose = {"header": {"frame_id": "map"},
                 "pose": {"position": dict(zip("xyz", values[:3], strict=True)),
                          "orientation": dict(zip("xyzw", values[3:], strict=True))}}
