@@ -177,3 +177,17 @@ def test_commands_learn_the_allowed_speed_from_the_backend_they_are_given(hobbit
     assert RobotCommands(limited).allowed_speed(2.0, turning=True) == pytest.approx(math.pi / 2)
     assert notes == ["Speed limit: the robot drives at most 0.2 m/s (set by the teacher).",
                      "Speed limit: the robot turns at most 90°/s (set by the teacher)."]
+
+
+def test_a_limited_drive_into_the_wall_stops_at_contact_and_says_what_it_hit(hobbit):
+    robot = SimulatedRobot(hobbit, speed=20.0)
+    try:
+        seen = velocities(robot)
+        result, _ = run(hobbit, robot, "robot.drive(3, 'backward')\n", Limits(max_speed=0.2))
+        end = robot.snapshot()
+    finally:
+        robot.shutdown()
+    assert result.outcome == "error"
+    assert result.message == "The robot could not do this: HOBBIT bumped into the wall"
+    assert end["bumped"] == "wall_left" and end["linear"] == 0.0
+    assert seen[-1] == (0.0, 0.0) and all(abs(x) <= 0.2 for x, _z in seen)
