@@ -106,19 +106,19 @@ def test_a_drive_and_turn_keep_a_limit_below_the_bases_own_speed_and_end_where_a
     robot = SimulatedRobot(hobbit, speed=speed)
     try:
         seen, (commands, speeds) = velocities(robot), base_motion(robot)
-        result, output = run(hobbit, robot, DRIVE_AND_TURN, Limits(max_speed=0.1, max_turn=20))
+        result, output = run(hobbit, robot, DRIVE_AND_TURN, Limits(max_speed=0.2, max_turn=30))
         end = robot.snapshot()
     finally:
         robot.shutdown()
     assert result.outcome == "finished", result.message
     assert commands == [] or set(commands) == {"Stop"}, "a discrete motion goes at the base's own speed"
-    assert seen and all(abs(x) <= 0.1 and abs(z) <= math.radians(20) + 1e-9 for x, z in seen)
-    assert max(abs(x) for x, _ in speeds) == pytest.approx(0.1)
-    assert max(abs(z) for _, z in speeds) == pytest.approx(20)
+    assert seen and all(abs(x) <= 0.2 and abs(z) <= math.radians(30) + 1e-9 for x, z in seen)
+    assert max(abs(x) for x, _ in speeds) == pytest.approx(0.2)
+    assert max(abs(z) for _, z in speeds) == pytest.approx(30)
     assert (end["x"], end["y"]) == (pytest.approx(0.5, abs=0.005), pytest.approx(0.0, abs=0.005))
     assert math.degrees(end["theta"]) == pytest.approx(90, abs=0.5)
-    assert output == ["Speed limit: the robot drives at most 0.1 m/s (set by the teacher).",
-                      "Speed limit: the robot turns at most 20°/s (set by the teacher)."]
+    assert output == ["Speed limit: the robot drives at most 0.2 m/s (set by the teacher).",
+                      "Speed limit: the robot turns at most 30°/s (set by the teacher)."]
 
 
 def test_a_limit_at_or_above_the_bases_own_speed_keeps_the_discrete_motions(hobbit, robot):
