@@ -4,6 +4,9 @@ Prints one line per block it enters (id and type) and what the program prints; t
 questions are answered from ``--answer`` options in the order they come. Ctrl+C stops
 the program (with the robot's safe stop). Exit status: 0 finished, 1 error, 130 stopped.
 Every line it prints is in ``language`` (Rockly's catalogue, keys ``cli_*``).
+The teacher's limits and switched-off capabilities set in the window's Preferences hold
+here too (a line says which); the toolbox level only filters the window's toolbox, so a
+program with blocks beyond it runs, as it does in the window.
 """
 import signal
 import sys
@@ -13,7 +16,7 @@ from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.workspace_blocks import block_types_by_id
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import BlockEntered, OutputPrinted, RunFinished
-from rockly_desktop.executor.run_setup import make_runner
+from rockly_desktop.executor.run_setup import limits_line, make_runner
 from rockly_desktop.robot.answer_list import AnswerList
 from rockly_desktop.robot.links import DEFAULT_KIND, open_link
 
@@ -21,11 +24,12 @@ EXIT_STOPPED = 130
 
 
 def run_program(program_path, answers=(), speed: float = 1.0, language: str = "en", out=print,
-                backend: str = DEFAULT_KIND, connection: dict = None, record=None) -> int:
+                backend: str = DEFAULT_KIND, connection: dict = None, record=None, teacher=None) -> int:
     """Run ``program_path`` headless on its profile's robot over the ``backend`` kind of robot link
     (the built-in simulator by default; ``connection``: that link's settings); returns the exit status.
 
-    ``record``: the MCAP file to record the run to (none without it)."""
+    ``record``: the MCAP file to record the run to (none without it); ``teacher`` (TeacherSettings)
+    gives the limits the run keeps, by default the window's."""
     from rockly_desktop.app import generate_headless
     from rockly_desktop.profiles.opening import opening_warnings
 
@@ -48,6 +52,10 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
     for warning in robot.warnings():
         print(app_text("cli_warning", language, command="rockly run",
                        warning=app_text(f"ros_{warning.reason}", language, **warning.values)), file=sys.stderr)
+    limits = _teacher(teacher).limits(program.profile.id)
+    line = limits_line(program.profile, limits, language)
+    if line:
+        out(line)
     control = RunControl(trace=True)
 
     def report(event):
@@ -65,7 +73,7 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
         return 1
     previous = signal.signal(signal.SIGINT, lambda *_: control.request_stop())
     try:
-        result = make_runner(program.profile, robot, run_code, control, report, language,
+        result = make_runner(program.profile, robot, run_code, control, report, language, limits,
                              recording=recording).run()
     except RocklyError as error:  # the profile's commands could not be made
         return fail(error)
@@ -87,6 +95,15 @@ def _recording(record, program_path, profile, robot, types):
     program_path = Path(program_path)
     program = program_path.read_bytes() if program_path.suffix == ".rockly" else None
     return RunRecording(record, profile, robot, program_path.name, program, types)
+
+
+def _teacher(teacher):
+    """``teacher``, or the teacher's settings the window keeps (the same QSettings file)."""
+    if teacher is not None:
+        return teacher
+    from rockly_desktop.ui.settings import AppSettings
+
+    return AppSettings().teacher
 
 
 def _report_end(result: RunFinished, types: dict, language: str) -> int:

@@ -6,6 +6,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
 from program_builder import block, number, rockly_document, stack, text
 
 REPO = Path(__file__).resolve().parents[1]
@@ -197,3 +198,30 @@ def test_a_missing_file_is_explained_in_german(tmp_path):
     result = rockly_run(tmp_path / "nowhere.rockly", "--language", "de")
     assert result.returncode == 1
     assert result.stderr == f"rockly run: {tmp_path / 'nowhere.rockly'}: Die Datei gibt es nicht\n"
+def test_run_keeps_the_teachers_limits_from_the_windows_settings(tmp_path, isolated_user_folders):
+    from rockly_desktop.ui.settings import AppSettings
+
+    settings = AppSettings(isolated_user_folders / "config" / "Rockly" / "Rockly.conf")  # where the window keeps them
+    settings.teacher.set_limits("hobbit", max_speed=0.1, max_turn=30, switched_off={"arm"})
+    settings.sync()
+    program = write(tmp_path, stack(
+        block("hobbit_move", {"direction": "+"}, {"speed": number(0.3)}, id="drive"),
+        block("text_print", inputs={"TEXT": block("hobbit_position", {"coordinate": "x"})}, id="where"),
+        block("hobbit_arm_gripper", {"movement": "OpenGripper"}, id="arm")))
+    result = rockly_run(program, "--speed", "20")
+    lines = result.stdout.splitlines()
+    assert lines[0] == ("The teacher's limits apply: driving at most 0.1 m/s; turning at most 30°/s; "
+                        "switched off: Arm and gripper.")
+    assert "print   Speed limit: the robot drives at most 0.1 m/s (set by the teacher)." in lines
+    printed_x = next(line for line in lines if line.startswith("print   0.")).split()[1]
+    assert float(printed_x) == pytest.approx(0.3, abs=0.005)  # the whole way, at the limit
+    assert result.returncode == 1
+    assert ("error in block arm (hobbit_arm_gripper): The robot could not do this: "
+            "the teacher switched off “Arm and gripper” for this robot") in result.stderr
+
+
+def test_without_teacher_settings_run_says_nothing_of_limits(tmp_path):
+    program = write(tmp_path, block("hobbit_arm_gripper", {"movement": "OpenGripper"}, id="arm"))
+    result = rockly_run(program, "--speed", "50")
+    assert result.returncode == 0, result.stderr
+    assert "limits" not in result.stdout and "Speed limit" not in result.stdout

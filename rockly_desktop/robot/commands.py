@@ -23,6 +23,18 @@ class RobotCommands:
         """The RobotBackend these commands drive."""
         return self._backend
 
+    def allowed_speed(self, own_speed: float, turning: bool = False) -> float:
+        """How fast a motion the robot makes at its own ``own_speed`` (m/s; turning: rad/s) may go.
+
+        ``own_speed`` itself unless a teacher's limit is lower: then the limit (and the console
+        says so once). A command that drives a distance at the robot's own speed (a base
+        driver's discrete motion) asks this first and, when the answer is lower, drives with
+        velocity commands at that speed instead. The backend a run gives the commands answers it
+        (a teacher's ``LimitedBackend``, or a wrapper around one); any other has no limits.
+        """
+        ask = getattr(self._backend, "allowed_speed", None)
+        return own_speed if ask is None else ask(own_speed, turning)
+
     @staticmethod
     def choose(value, choices, what: str):
         """Return ``choices[value]``; a value not in ``choices`` raises a RobotCommandError listing them."""

@@ -4,7 +4,10 @@
 profile declares as its drive interface (``geometry_msgs/Twist``) are clamped to the
 maximum speeds, and topics, services and actions of a switched-off capability are
 refused with a RobotCommandError. Profiles need no code for it: the names come from
-their manifest. Reading (subscribe, latest, waits) and cancelling always pass.
+their manifest. Reading (subscribe, latest, waits) and cancelling always pass. A motion at
+the robot's own speed (a base driver's "drive 0.5 m") is no velocity the wrapper can clamp:
+the profile asks ``allowed_speed`` (through ``RobotCommands.allowed_speed``) and drives it
+with velocity commands when a limit is lower.
 """
 import math
 from dataclasses import dataclass
@@ -33,6 +36,19 @@ class Limits:
     def is_open(self) -> bool:
         """True when nothing is limited."""
         return self.max_speed is None and self.max_turn is None and not self.switched_off
+
+
+def limits_text(limits: Limits, capability_names, language: str = "en"):
+    """One line saying which of ``limits`` apply (``capability_names``: the switched-off ones'
+    names for people), in ``language``; None when nothing is limited."""
+    parts = []
+    if limits.max_speed is not None:
+        parts.append(_text("limit_speed", language, speed=limits.max_speed))
+    if limits.max_turn is not None:
+        parts.append(_text("limit_turn", language, turn=limits.max_turn))
+    if capability_names:
+        parts.append(_text("limit_off", language, names=", ".join(capability_names)))
+    return _text("limits_apply", language, limits="; ".join(parts)) if parts else None
 
 
 @dataclass(frozen=True)
@@ -114,6 +130,20 @@ class LimitedBackend(RobotBackend):
             if changed:
                 self._tell_once("turn_clamped", turn=self._limits.max_turn)
         return message
+
+    def allowed_speed(self, own_speed: float, turning: bool = False) -> float:
+        """``own_speed`` (m/s; turning: rad/s), or the teacher's maximum when that is lower (said once).
+
+        Profiles ask it through ``RobotCommands.allowed_speed``; a backend wrapping this one must
+        pass it on (``__getattr__`` does), or its runs would drive at the robot's own speed.
+        """
+        if turning and self._limits.max_turn is not None and math.radians(self._limits.max_turn) < own_speed:
+            self._tell_once("turn_clamped", turn=self._limits.max_turn)
+            return math.radians(self._limits.max_turn)
+        if not turning and self._limits.max_speed is not None and self._limits.max_speed < own_speed:
+            self._tell_once("speed_clamped", speed=self._limits.max_speed)
+            return self._limits.max_speed
+        return own_speed
 
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
         """Publish, refused for a switched-off capability, velocities clamped on drive topics."""

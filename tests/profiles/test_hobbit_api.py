@@ -491,6 +491,28 @@ def test_stop_while_a_drive_holds_ends_the_program_and_the_base_stays_where_it_h
     assert pose(later(world, sim)) == pose(held)
 
 
+
+def test_pause_halts_a_drive_under_a_speed_limit_and_continue_drives_the_rest_at_the_limit(world, sim, control, hold,
+                                                                                         backend):
+    from rockly_desktop.robot.limits import LimitedBackend, Limits
+
+    limited = Hobbit(LimitedBackend(backend, Limits(max_speed=0.1), ["/cmd_vel"]))
+    twists = record(world, "/cmd_vel")
+    drive = Background(lambda: limited.drive(1.0))
+    eventually_in(world, lambda: sim.snapshot()["x"] > 0.1)
+    control.request_pause()
+
+    held = hold.wait_until_held()
+    assert held["linear"] == 0.0
+    assert 0.1 < held["x"] < 1.0 - POSITION
+    assert pose(later(world, sim)) == pose(held), "the base moved while the program held"
+
+    control.resume()
+    assert drive.join().error is None
+    assert sim.snapshot()["x"] == pytest.approx(1.0, abs=0.005)
+    assert len(hold.snapshots) == 1
+    assert all(0.0 <= message["linear"]["x"] <= 0.1 for _topic, message in twists)
+
 # --- blocks and commands agree -------------------------------------------------------------------
 
 CHOICES_BY_BLOCK = {

@@ -13,9 +13,11 @@ the tablet), except ``show_emotion``, ``look`` and ``show_info``, which return a
 Their errors are texts of the profile's catalogue (``locale/``), shown in the run's language.
 """
 import math
+import time
 
 from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotCommands, RobotTimeout, field_value
 
+from .base import MOVE_SPEED, TURN_SPEED
 from .world import CONTACT_TOPIC, TEXTS, WORLD, blocked_on_the_way_text, bump_text, goal_problem_text
 
 HEAD_POSITIONS = (
@@ -48,6 +50,9 @@ MOVE_TOLERANCE = 0.005  # metres
 TURN_TOLERANCE = 0.5  # degrees
 DIALOG_TIMEOUT = 60.0
 SENSOR_TIMEOUT = 3.0
+APPROACH = 3        # a driven motion covers at most 1/APPROACH of what is left per odometry update
+STOPPED = 1e-3      # m/s or °/s the odometry may still report for a base that has stopped
+SETTLE_UPDATES = 10  # odometry updates a stopping base may take to report it
 
 
 class _Progress:
@@ -63,10 +68,25 @@ class _Progress:
         self._last_yaw = None
         self.done = 0.0
         self.updates = 0
+        self.speed = 0.0     # m/s or °/s, as the base reports it
+        self.commanded = 0.0  # m/s or °/s last sent, for a base whose odometry reports no velocity
+        self.period = None   # the longest time one update was seen to cover (s), once the base moved
 
     def add(self, odometry):
         """Take one odometry message into account."""
         self.updates += 1
+        before = self.done
+        self._add_pose(odometry)
+        velocity = (odometry.get("twist") or {}).get("twist") or {}
+        if self._kind == "Move":
+            self.speed = (velocity.get("linear") or {}).get("x", 0.0)
+        else:
+            self.speed = math.degrees((velocity.get("angular") or {}).get("z", 0.0))
+        speed = self.speed if abs(self.speed) > STOPPED else self.commanded
+        if abs(speed) > STOPPED and self.done != before:
+            self.period = max(self.period or 0.0, abs(self.done - before) / abs(speed))
+
+    def _add_pose(self, odometry):
         pose = (odometry.get("pose") or {}).get("pose") or {}
         position, orientation = pose.get("position") or {}, pose.get("orientation") or {}
         x, y = position.get("x", 0.0), position.get("y", 0.0)
@@ -95,7 +115,7 @@ class Hobbit(RobotCommands):
         A pause halts the base at once; on Continue it drives the rest of the way.
         """
         metres = self.number(distance, TEXTS("the_distance")) * self.choose(direction, DIRECTIONS, TEXTS("direction"))
-        self._discrete_motion("Move", metres, MOVE_TOLERANCE)
+        self._motion("Move", metres, MOVE_TOLERANCE)
 
     def turn(self, angle, direction="left"):
         """Turn on the spot by ``angle`` degrees, ``'left'`` (counter-clockwise) or ``'right'``; waits.
@@ -103,7 +123,7 @@ class Hobbit(RobotCommands):
         A pause halts the turn at once; on Continue it turns the rest of the way.
         """
         degrees = self.number(angle, TEXTS("the_angle")) * self.choose(direction, TURN_DIRECTIONS, TEXTS("direction"))
-        self._discrete_motion("Turn", degrees, TURN_TOLERANCE)
+        self._motion("Turn", degrees, TURN_TOLERANCE)
 
     def navigate_to(self, x, y, heading=0):
         """Drive to the map position (``x``, ``y``) in metres, then face ``heading`` degrees; waits."""
@@ -111,10 +131,17 @@ class Hobbit(RobotCommands):
         self.navigate_to_pose(x, y, 0.0, 0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2))
 
     def navigate_to_pose(self, x, y, z, qx, qy, qz, qw):
-        """Drive to a full pose in the ``map`` frame (position and orientation quaternion); waits."""
+        """Drive to a full pose in the ``map`` frame (position and orientation quaternion); waits.
+
+        move_base drives at HOBBIT's own speed, which Rockly cannot slow down: under a teacher's
+        lower speed limit the goal is refused before it is sent.
+        """
         values = [self.number(value, TEXTS(name)) for value, name in
                   ((x, "coordinate_x"), (y, "coordinate_y"), (z, "coordinate_z"), (qx, "quaternion_x"),
                    (qy, "quaternion_y"), (qz, "quaternion_z"), (qw, "quaternion_w"))]
+        if (self.allowed_speed(MOVE_SPEED) < MOVE_SPEED
+                or self.allowed_speed(TURN_SPEED, turning=True) < TURN_SPEED):
+            raise RobotCommandError(TEXTS("navigation_too_fast", speed=MOVE_SPEED, turn=math.degrees(TURN_SPEED)))
         pose = {"header": {"frame_id": "map"},
                 "pose": {"position": dict(zip("xyz", values[:3], strict=True)),
                          "orientation": dict(zip("xyzw", values[3:], strict=True))}}
@@ -253,6 +280,79 @@ class Hobbit(RobotCommands):
             return field_value(message, field)
         except KeyError:
             raise RobotCommandError(TEXTS("no_field", topic=topic, field=field)) from None
+
+    def _motion(self, kind, amount, tolerance):
+        """``Move`` metres or ``Turn`` degrees: with the base driver's discrete motion, which goes at
+        HOBBIT's own speed, or, when a teacher's limit is lower, driven with ``/cmd_vel`` at the limit."""
+        own = MOVE_SPEED if kind == "Move" else TURN_SPEED
+        allowed = self.allowed_speed(own, turning=kind == "Turn")
+        if allowed < own:
+            self._driven_motion(kind, amount, tolerance, allowed if kind == "Move" else math.degrees(allowed))
+        else:
+            self._discrete_motion(kind, amount, tolerance)
+
+    def _driven_motion(self, kind, amount, tolerance, top_speed):
+        """``Move``/``Turn`` by ``amount`` with velocity commands of at most ``top_speed`` (m/s, °/s),
+        measured and stopped by the odometry.
+
+        The base slows down near the end so that no odometry update covers more than a third of
+        what is left (however long an update is: a fast simulator's are long), stops well within
+        ``tolerance``, and comes back if it overshot. A pause halts it; Continue drives the rest.
+        """
+        progress, bumps = _Progress(kind), []
+        start = self.backend.latest("/odom", "nav_msgs/Odometry")
+        if start is not None:
+            progress.add(start)
+        unsubscribe_odom = self.backend.subscribe("/odom", "nav_msgs/Odometry", progress.add)
+        unsubscribe_bumper = self.backend.subscribe(
+            "/bumper", "std_msgs/Bool", lambda message: bumps.append(True) if message.get("data") else None)
+        try:
+            self._drive_until_there(kind, amount, tolerance, top_speed, progress, bumps)
+        finally:
+            unsubscribe_odom()
+            unsubscribe_bumper()
+
+    def _drive_until_there(self, kind, amount, tolerance, top_speed, progress, bumps):
+        deadline = time.monotonic() + MOTION_TIMEOUT + abs(amount) / top_speed
+        commanded, settling = None, 0
+        while True:
+            if bumps:
+                self.stop()
+                raise self._bump_error()
+            if self.backend.pause_requested():
+                self._velocity(kind, 0.0)
+                progress.commanded = 0.0
+                seen = progress.updates
+                self.backend.wait_until(lambda seen=seen: progress.updates > seen and abs(progress.speed) <= STOPPED,
+                                        STOP_SETTLE_TIMEOUT)
+                self.backend.hold()
+                deadline, commanded = time.monotonic() + MOTION_TIMEOUT + abs(amount) / top_speed, None
+                continue
+            remaining = amount - progress.done
+            if abs(remaining) <= (tolerance if commanded == 0.0 else tolerance / 4):  # aim well inside it
+                settling = settling + 1 if commanded == 0.0 else 0
+                if commanded == 0.0 and (abs(progress.speed) <= STOPPED or settling > SETTLE_UPDATES):
+                    return
+                speed = 0.0
+            else:
+                near = abs(remaining) / (APPROACH * progress.period) if progress.period else top_speed
+                speed = math.copysign(min(top_speed, near), remaining)
+            self._velocity(kind, speed)
+            commanded = progress.commanded = speed
+            seen = progress.updates
+            if not self.backend.wait_until(
+                    lambda seen=seen: progress.updates > seen or bumps or self.backend.pause_requested(),
+                    SENSOR_TIMEOUT):
+                self.stop()
+                raise RobotTimeout(TEXTS("no_odometry_while_driving", timeout=SENSOR_TIMEOUT))
+            if time.monotonic() > deadline:
+                self.stop()
+                raise RobotTimeout(TEXTS("motion_not_finished", command=f"{kind} {amount:g}"))
+
+    def _velocity(self, kind, speed):
+        """Drive straight at ``speed`` m/s (``Move``) or turn at ``speed`` °/s (``Turn``)."""
+        twist = {"linear": {"x": speed}} if kind == "Move" else {"angular": {"z": math.radians(speed)}}
+        self.backend.publish("/cmd_vel", "geometry_msgs/Twist", twist)
 
     def _discrete_motion(self, kind, amount, tolerance):
         """``Move <metres>`` / ``Turn <degrees>`` with the base driver, waiting for ``Idle``.

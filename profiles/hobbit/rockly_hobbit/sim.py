@@ -19,14 +19,15 @@ from dataclasses import dataclass
 
 from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotSimulator, TabletQuestion, twist_velocity
 
+from .base import MOVE_SPEED, TURN_SPEED
 from .world import CONTACT_TOPIC, WORLD, blocked_on_the_way, goal_problem
 
 log = logging.getLogger(__name__)
 
 TICK_SECONDS = 1 / 30
 POLL_SECONDS = 0.01          # how often a goal's thread looks at the simulation
-LINEAR_SPEED = 0.3           # m/s, for discrete motions and navigation
-ANGULAR_SPEED = math.radians(45)   # rad/s
+LINEAR_SPEED = MOVE_SPEED     # m/s, for discrete motions and navigation
+ANGULAR_SPEED = TURN_SPEED    # rad/s
 ARRIVED = 0.001              # m: a navigation goal closer than this is reached
 BATTERY_DRAIN = 1.0 / 60     # % per simulated second while standing still
 BATTERY_DRAIN_BUSY = 3.0 / 60      # % per simulated second while the base or the arm moves

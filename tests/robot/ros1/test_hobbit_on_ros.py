@@ -252,3 +252,32 @@ def test_the_teachers_limits_hold_over_ros(ros_robot, hobbit):
     assert twists[:3] == [(0.2, pytest.approx(turn)), (-0.2, pytest.approx(-turn)), (0.1, 0.2)]
     assert all(abs(x) <= 0.2 and abs(z) <= turn + 1e-9 for x, z in twists)
     assert goals == []
+
+
+def test_a_limited_drive_and_turn_send_no_cmd_vel_above_the_limit_and_end_where_asked_over_ros(ros_robot, hobbit,
+                                                                                             hobbit_robot):
+    """HOBBIT's Move/Turn go at the base's own speed (0.3 m/s, 45°/s): under a lower limit the
+    commands drive them with /cmd_vel instead, stopped by the odometry the ROS-level base publishes."""
+    from rockly_desktop.robot.limits import Limits
+
+    hobbit_robot.navigate_to(1.0, 0.5, 0)  # a known free place, whatever earlier tests did
+    twists, stop_twists = record(ros_robot, "/cmd_vel", "geometry_msgs/Twist",
+                                 lambda message: (message["linear"]["x"], message["angular"]["z"]))
+    commands, stop_commands = record(ros_robot, "/DiscreteMotionCmd", "std_msgs/String",
+                                     lambda message: message["data"])
+    speeds, stop_speeds = record(ros_robot, "/odom", "nav_msgs/Odometry",
+                                 lambda message: abs(message["twist"]["twist"]["linear"]["x"]))
+    x0, y0, theta0 = pose(ros_robot)
+    code = "robot.drive(0.5)\nrobot.turn(90, 'left')\n"
+    result = make_runner(hobbit, ros_robot, {"code": code, "variables": {}}, RunControl(), lambda e: None,
+                         "en", Limits(max_speed=0.1, max_turn=20)).run()
+    assert result.outcome == "finished", result.message
+    eventually(lambda: "Stop" in commands)  # the safe stop after the run
+    x1, y1, theta1 = pose(ros_robot)
+    for stop in (stop_twists, stop_commands, stop_speeds):
+        stop()
+    assert commands == ["Stop"], "a discrete motion goes at the base's own speed"
+    assert twists and all(abs(x) <= 0.1 and abs(z) <= math.radians(20) + 1e-9 for x, z in twists)
+    assert max(speeds) == pytest.approx(0.1)
+    assert math.hypot(x1 - x0, y1 - y0) == pytest.approx(0.5, abs=0.005)
+    assert math.remainder(theta1 - theta0 - 90, 360) == pytest.approx(0.0, abs=0.5)
