@@ -14,15 +14,15 @@ ANSWERS = {
     "hobbit/arm-with-progress.rockly": [],
     "hobbit/drive-a-square.rockly": ["Mia", "yes"],
     "turtlebot/avoid-obstacles.rockly": [],
-    "de/hobbit/aufraeumen.rockly": ["yes"],
-    "de/hobbit/arm-mit-fortschritt.rockly": [],
-    "de/hobbit/fahre-ein-quadrat.rockly": ["Mia", "yes"],
-    "de/turtlebot/hindernissen-ausweichen.rockly": [],
+    "de/hobbit/Aufräumen.rockly": ["yes"],
+    "de/hobbit/arm-mit-Fortschritt.rockly": [],
+    "de/hobbit/fahre-ein-Quadrat.rockly": ["Mia", "yes"],
+    "de/turtlebot/Hindernissen-ausweichen.rockly": [],
 }
-GERMAN = {"de/hobbit/aufraeumen.rockly": "hobbit/tidy-up.rockly",
-          "de/hobbit/arm-mit-fortschritt.rockly": "hobbit/arm-with-progress.rockly",
-          "de/hobbit/fahre-ein-quadrat.rockly": "hobbit/drive-a-square.rockly",
-          "de/turtlebot/hindernissen-ausweichen.rockly": "turtlebot/avoid-obstacles.rockly"}
+GERMAN = {"de/hobbit/Aufräumen.rockly": "hobbit/tidy-up.rockly",
+          "de/hobbit/arm-mit-Fortschritt.rockly": "hobbit/arm-with-progress.rockly",
+          "de/hobbit/fahre-ein-Quadrat.rockly": "hobbit/drive-a-square.rockly",
+          "de/turtlebot/Hindernissen-ausweichen.rockly": "turtlebot/avoid-obstacles.rockly"}
 # texts that are code (ROS names, a goal's status), the same in every language
 CODE_TEXTS = {"", "/cmd_vel", "hobbit_arm", "MoveToCandle", "feedback.data", "succeeded"}
 EXAMPLES = sorted(str(path.relative_to(REPO / "examples")) for path in (REPO / "examples").rglob("*.rockly"))

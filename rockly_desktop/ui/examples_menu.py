@@ -1,5 +1,6 @@
 """File → Examples: the example programs shipped for the active robot (and for every robot),
-each opened as an untitled copy so the shipped file is never overwritten."""
+in the window's language where they are translated (``examples/<language>/``), each opened as
+an untitled copy so the shipped file is never overwritten."""
 from pathlib import Path
 
 from PySide6.QtWidgets import QMenu
@@ -9,9 +10,13 @@ from rockly_desktop.core.program import PROGRAM_SUFFIX
 from rockly_desktop.ui.texts import tr
 
 
-def example_programs(profile_id: str, folder: Path = None) -> list:
-    """(readable name, path) of the examples for ``profile_id``, then the shared ones, each sorted by name."""
+def example_programs(profile_id: str, folder: Path = None, language: str = "en") -> list:
+    """(readable name, path) of the examples for ``profile_id``, then the shared ones, each sorted by name:
+    those of ``folder/language`` when it has examples for the robot, else the English ones."""
     folder = examples_dir() if folder is None else folder
+    translated = folder / language
+    if language != "en" and any((translated / profile_id).glob(f"*{PROGRAM_SUFFIX}")):
+        folder = translated
     found = []
     for where in (folder / profile_id, folder):
         found += sorted((readable_name(path), path) for path in where.glob(f"*{PROGRAM_SUFFIX}") if path.is_file())
@@ -40,7 +45,7 @@ class ExamplesMenu(QMenu):
     def fill(self):
         """List the active robot's examples (a disabled line when it has none)."""
         self.clear()
-        examples = example_programs(self._profile().id)
+        examples = example_programs(self._profile().id, language=self._language)
         for name, path in examples:
             action = self.addAction(name, lambda p=str(path), n=name: self._files.open_copy(p, n))
             action.setData(str(path))

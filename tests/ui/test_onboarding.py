@@ -47,6 +47,13 @@ def test_shared_examples_follow_the_robots_own(tmp_path):
 
     assert [name for name, _path in example_programs("hobbit", tmp_path)] == ["A first", "B second", "For everyone"]
     assert example_programs("turtlebot", tmp_path) == [("For everyone", tmp_path / "for-everyone.rockly")]
+
+
+def test_a_german_window_lists_the_german_examples_and_english_ones_where_none_are_translated():
+    german = [name for name, _path in example_programs("hobbit", language="de")]
+    assert german == ["Arm mit Fortschritt", "Aufräumen", "Fahre ein Quadrat"]
+    assert [path.parent.parent.name for _name, path in example_programs("turtlebot", language="de")] == ["de"]
+    assert example_programs("hobbit", language="fr") == example_programs("hobbit")
     assert readable_name(Path("avoid-obstacles.rockly")) == "Avoid obstacles"
 
 
