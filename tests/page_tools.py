@@ -57,3 +57,13 @@ def print_value(qtbot, view, block_id: str) -> str:
         Blockly.Events.fire(new (Blockly.Events.get(Blockly.Events.BLOCK_CREATE))(p));
         p.getInput('TEXT').connection.connect(ws.getBlockById({block_id!r}).outputConnection);
         return p.id; }})()""")
+
+
+# The program's top-left block (the first top block in reading order) and the part of the workspace on screen.
+START_IN_VIEW = """(() => {
+    const ws = Blockly.getMainWorkspace();
+    const view = ws.getMetricsManager().getViewMetrics(true);
+    const first = ws.getTopBlocks(true)[0].getBoundingRectangle();
+    return {view: [view.left, view.top, view.left + view.width, view.top + view.height],
+            block: [first.left, first.top, first.right, first.bottom]};
+})()"""

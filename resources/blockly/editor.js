@@ -125,18 +125,47 @@
 
   const START_MARGIN = 24;  // pixels between the view's corner and the program's
 
+  // Blockly keeps the view's centre when the editor is resized (a dock shown, the stage view),
+  // which slides the program's start off the left edge. Rockly keeps the view's top-left
+  // corner instead, and a view still showing the program's start (the person has not moved
+  // it since it opened) shows the start again: a program opened before the page had its
+  // final size may not have been scrolled all the way there.
+  let viewCorner = null;  // the view's top-left corner in workspace units, as last seen
+  let startCorner = null;  // where showProgramStart put it
+
+  function noteViewCorner() {
+    const view = workspace.getMetricsManager().getViewMetrics(true);
+    viewCorner = {left: view.left, top: view.top};
+  }
+
+  function sameCorner(a, b) {
+    return Boolean(a && b) && Math.abs(a.left - b.left) < 1 && Math.abs(a.top - b.top) < 1;
+  }
+
   /** Scroll so that the program's top-left corner is near the view's: a program opens at its start. */
   function showProgramStart() {
     if (!workspace.getTopBlocks(false).length) {
       workspace.scrollCenter();
-      return;
+    } else {
+      const box = workspace.getBlocksBoundingBox();
+      const scale = workspace.scale;
+      workspace.scroll(START_MARGIN - box.left * scale, START_MARGIN - box.top * scale);
     }
-    const box = workspace.getBlocksBoundingBox();
-    const scale = workspace.scale;
-    workspace.scroll(START_MARGIN - box.left * scale, START_MARGIN - box.top * scale);
+    noteViewCorner();  // no viewport event comes while a load has events off
+    startCorner = viewCorner;
+  }
+
+  /** After Blockly's own resize handler (window 'resize', bound at inject): the corner as before. */
+  function keepViewCorner() {
+    if (sameCorner(viewCorner, startCorner)) {
+      showProgramStart();
+    } else if (viewCorner) {
+      workspace.scroll(-viewCorner.left * workspace.scale, -viewCorner.top * workspace.scale);
+    }
   }
 
   function onWorkspaceEvent(event) {
+    if (event.type === Blockly.Events.VIEWPORT_CHANGE) noteViewCorner();
     if (loading || event.isUiEvent) return;
     if (errorBlockId && event.blockId === errorBlockId && event.type !== Blockly.Events.BLOCK_MOVE) {
       clearError();  // the child changed the block the error came from: the mark has done its job
@@ -426,6 +455,8 @@
       });
       workspace.addChangeListener(onWorkspaceEvent);
       workspace.addChangeListener(afterPlacing);
+      window.addEventListener('resize', keepViewCorner);  // added after inject's own: runs after it
+      window.addEventListener('resize', keepViewCorner);  // added after inject's: runs after Blockly's
       makeHint(texts && texts.emptyHint);
       registerContextMenu(texts || {addBreakpoint: 'Add breakpoint', removeBreakpoint: 'Remove breakpoint'});
       const program = first ? calls[first.call](first.args) : null;

@@ -2,7 +2,7 @@
 from pathlib import Path
 
 import pytest
-from page_tools import add_block_as_user, call_page, run_js
+from page_tools import START_IN_VIEW, add_block_as_user, call_page, run_js
 from program_builder import block, number, stack, workspace
 from PySide6.QtGui import QAction
 from PySide6.QtWidgets import QTextBrowser
@@ -16,14 +16,6 @@ from rockly_desktop.ui.texts import tr
 
 HINT_SHOWN = "(() => { const hint = document.getElementById('emptyHint'); return hint && !hint.hidden; })()"
 HINT_TEXT = "document.getElementById('emptyHint').textContent"
-# The program's top-left block (the first top block in reading order) and the part of the workspace on screen.
-START_IN_VIEW = """(() => {
-    const ws = Blockly.getMainWorkspace();
-    const view = ws.getMetricsManager().getViewMetrics(true);
-    const first = ws.getTopBlocks(true)[0].getBoundingRectangle();
-    return {view: [view.left, view.top, view.left + view.width, view.top + view.height],
-            block: [first.left, first.top, first.right, first.bottom]};
-})()"""
 
 
 def _examples_menu_actions(window):

@@ -1,7 +1,10 @@
 """The stage layout (View → Stage, F11) and bottom tabs that keep their size."""
 import pytest
+from page_tools import START_IN_VIEW, run_js
 from PySide6.QtCore import Qt
-from window_tools import WindowDriver
+from window_tools import WindowDriver, completed
+
+from rockly_desktop.core.paths import examples_dir
 
 
 def simulator_area(window) -> int:
@@ -106,3 +109,18 @@ def test_the_width_the_person_gives_the_simulator_on_stage_is_remembered(qtbot, 
         qtbot.waitUntil(lambda: abs(window.simulator_dock.width() - 900 * 1600 / 1280) <= 4, timeout=3000)
     finally:
         again.close_all()
+
+
+def _start_in_view(qtbot, window) -> bool:
+    where = run_js(qtbot, window.editor, START_IN_VIEW)
+    left, top, right, bottom = where["view"]
+    block_left, block_top, _right, _bottom = where["block"]
+    return left <= block_left < right and top <= block_top < bottom
+
+
+def test_going_on_stage_right_after_opening_keeps_the_programs_start_in_view(qtbot, window):
+    laid_out(qtbot, window, 1280, 800)
+    assert completed(qtbot, window.files.open, str(examples_dir() / "hobbit" / "drive-a-square.rockly"))
+    window.stage.set_active(True)
+    qtbot.waitUntil(lambda: simulator_area(window) >= 1280 * 800 // 2, timeout=3000)
+    qtbot.waitUntil(lambda: _start_in_view(qtbot, window), timeout=3000)
