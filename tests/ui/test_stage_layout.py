@@ -2,8 +2,9 @@
 import pytest
 from page_tools import START_IN_VIEW, run_js
 from PySide6.QtCore import Qt
-from window_tools import WindowDriver, completed
+from window_tools import WindowDriver
 
+from rockly_desktop.app import build_main_window
 from rockly_desktop.core.paths import examples_dir
 
 
@@ -118,9 +119,14 @@ def _start_in_view(qtbot, window) -> bool:
     return left <= block_left < right and top <= block_top < bottom
 
 
-def test_going_on_stage_right_after_opening_keeps_the_programs_start_in_view(qtbot, window):
-    laid_out(qtbot, window, 1280, 800)
-    assert completed(qtbot, window.files.open, str(examples_dir() / "hobbit" / "drive-a-square.rockly"))
+def test_going_on_stage_right_after_start_keeps_the_programs_start_in_view(qtbot, driver):
+    # The program opens as the window starts, before the page has its final size (as `rockly PROGRAM` does).
+    window = build_main_window(driver.settings_path)
+    driver.windows.append(window)
+    window.resize(1280, 800)
+    window.show()
+    with qtbot.waitSignal(window.editor.sig_ready, timeout=30000):
+        window.start(str(examples_dir() / "hobbit" / "drive-a-square.rockly"))
     window.stage.set_active(True)
     qtbot.waitUntil(lambda: simulator_area(window) >= 1280 * 800 // 2, timeout=3000)
     qtbot.waitUntil(lambda: _start_in_view(qtbot, window), timeout=3000)
