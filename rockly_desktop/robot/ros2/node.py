@@ -18,6 +18,7 @@ from concurrent.futures import ThreadPoolExecutor
 import rclpy
 from rclpy.action import ActionClient
 from rclpy.executors import SingleThreadedExecutor
+from rclpy.signals import SignalHandlerOptions
 
 from rockly_desktop.robot.ros2 import qos, wire
 from rockly_desktop.robot.ros2.ros_values import (
@@ -52,7 +53,7 @@ class Helper:
         self.started = time.monotonic()
         self._out_lock = threading.Lock()
         self._lock = threading.Lock()
-        rclpy.init()
+        rclpy.init(signal_handler_options=SignalHandlerOptions.NO)  # our SIGTERM: the safe stop first
         self.node = rclpy.create_node(f"rockly_{os.getpid()}")
         self._executor = SingleThreadedExecutor()
         self._executor.add_node(self.node)
@@ -319,6 +320,7 @@ class Helper:
     def close(self):
         self._pool.shutdown(wait=False, cancel_futures=True)
         self._executor.shutdown(timeout_sec=1.0)
+        self._spin.join(timeout=1.0)
         self.node.destroy_node()
         rclpy.try_shutdown()
 
