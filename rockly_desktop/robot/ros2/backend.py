@@ -23,6 +23,7 @@ class Ros2Graph:
         self._lock = threading.Lock()
         self._topics = {}
         self.published = set()
+        self.actions_ready = set()  # actions a goal reached: later goals need no answer before they go
         self.sent = {}  # topic -> (when, message) this node last published
         self.service_watchers = []
 
@@ -204,12 +205,16 @@ class Ros2Backend(RobotBackend):
             helper.on("feedback", gid, feedback)
         helper.on("goal_end", gid, lambda data: (helper.off("feedback", gid), helper.off("goal_end", gid),
                                                   handle.ended(data)))
+        if action in self.graph.actions_ready:
+            helper.cast("goal", gid, action, action_type, goal)  # a failure ends the goal (aborted, with why)
+            return handle
         try:
             helper.call("goal", gid, action, action_type, goal, interrupt=self.interrupt)
         except Exception:
             helper.off("feedback", gid)
             helper.off("goal_end", gid)
             raise
+        self.graph.actions_ready.add(action)
         return handle
 
     def cancel_all_goals(self, action: str) -> None:

@@ -45,6 +45,10 @@ class Failure(Exception):
         self.kind = kind
 
 
+class Reported(Failure):
+    """A failure already told to Rockly another way (a goal's end): a cast does not report it again."""
+
+
 class Helper:
     """The node and its endpoints, one per name; answers requests (see ``wire``)."""
 
@@ -85,7 +89,7 @@ class Helper:
         method = getattr(self, f"op_{op}", None)
         if method is None:
             return self._answer(mode, call_id, False, ("command", f"unknown request '{op}'"), op)
-        if op in self.WAITING_OPS:
+        if op in self.WAITING_OPS and not (op == "goal" and self._server_ready(args[1])):
             self._pool.submit(self._run, mode, call_id, op, method, args)
         else:
             self._run(mode, call_id, op, method, args)
@@ -95,6 +99,9 @@ class Helper:
     def _run(self, mode, call_id, op, method, args):
         try:
             value = method(*args)
+        except Reported as error:
+            if mode == wire.CALL:
+                self._answer(mode, call_id, False, (error.kind, str(error)), op)
         except Failure as error:
             self._answer(mode, call_id, False, (error.kind, str(error)), op)
         except (LookupError, ValueError, TypeError, AssertionError) as error:
@@ -215,6 +222,11 @@ class Helper:
         return from_message(future.result())
 
     # --- actions
+    def _server_ready(self, action) -> bool:
+        """True when a goal to ``action`` need not wait for its server (it can be sent inline)."""
+        client = self._actions.get(action)
+        return client is not None and client.server_is_ready()
+
     def _action_client(self, action, type_name):
         with self._lock:
             client = self._actions.get(action)
@@ -226,8 +238,13 @@ class Helper:
         """Send a goal; its feedback, acceptance and end come as events keyed by ``gid``."""
         client = self._action_client(action, type_name)
         if not client.wait_for_server(timeout_sec=ACTION_SERVER_WAIT):
-            raise Failure("command", f"there is no action server '{action}'")
-        goal_message = to_message(client._action_type.Goal, goal)
+            self.event("goal_end", gid, ("aborted", {}, f"there is no action server '{action}'"))
+            raise Reported("command", f"there is no action server '{action}'")
+        try:
+            goal_message = to_message(client._action_type.Goal, goal)
+        except ValueError as error:
+            self.event("goal_end", gid, ("aborted", {}, str(error)))
+            raise Reported("command", str(error)) from None
         send = self.send
         self._goals[gid] = [None, False]  # the server's handle once it accepts; cancelled before that
         future = client.send_goal_async(

@@ -6,6 +6,7 @@ Time stamps and durations also carry ROS 1's ``secs``/``nsecs`` (and accept them
 profile written for ROS 1 reads them unchanged.
 """
 import array
+import functools
 import importlib
 import importlib.util
 
@@ -76,8 +77,7 @@ def to_message(message_class, data, path=""):
         raise ValueError(f"{path or 'the message'} must be a dict of fields, not {data!r}")
     if _is_time(message_class):
         data = {_ROS1_TIME.get(name, name): value for name, value in data.items()}
-    fields = message_class.get_fields_and_field_types()
-    slots = dict(zip(fields, message_class.SLOT_TYPES, strict=True))
+    slots = _slots(message_class)
     for name, value in data.items():
         where = f"{path}.{name}" if path else name
         if name not in slots:
@@ -89,9 +89,15 @@ def to_message(message_class, data, path=""):
     return message
 
 
+@functools.cache
+def _slots(message_class) -> dict:
+    """Field name -> its rosidl type, per class (asked for every message, so kept)."""
+    return dict(zip(message_class.get_fields_and_field_types(), message_class.SLOT_TYPES, strict=True))
+
+
 def from_message(message) -> dict:
     """The message as plain dicts, lists and numbers."""
-    data = {name: _plain(getattr(message, name)) for name in message.get_fields_and_field_types()}
+    data = {name: _plain(getattr(message, name)) for name in _slots(type(message))}
     if _is_time(type(message)):
         data.update(secs=data["sec"], nsecs=data["nanosec"])
     return data
@@ -100,6 +106,7 @@ def from_message(message) -> dict:
 _ROS1_TIME = {"secs": "sec", "nsecs": "nanosec"}
 
 
+@functools.cache
 def _is_time(message_class) -> bool:
     return message_class.__module__.startswith("builtin_interfaces.") and message_class.__name__ in ("Time", "Duration")
 
