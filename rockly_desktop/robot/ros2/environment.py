@@ -76,3 +76,14 @@ def ros2_python() -> Path:
             f"({PROJECT_ROOT}), which installs the pinned ROS 2 wheels into .venv-ros2",
             "no_ros2", step=SETUP_STEP, python=str(python))
     return python
+
+
+def ros2_definition_dirs() -> list:
+    """Folders with the ROS 2 environment's interface definitions (``<dir>/<pkg>/msg/*.msg``), for a
+    ``DefinitionCatalog(profile.message_folders, installed_dirs=...)`` of the typed ROS blocks:
+    the wheels' ``share`` of ``.venv-ros2`` (read without starting the helper) and any sourced
+    ROS 2 workspaces (``AMENT_PREFIX_PATH``) — what the helper's own ``hello`` lists."""
+    configured = os.environ.get("ROCKLY_ROS2_PYTHON")
+    prefix = Path(configured).parents[1] if configured else PROJECT_ROOT / ".venv-ros2"
+    prefixes = [prefix] + [Path(entry) for entry in os.environ.get("AMENT_PREFIX_PATH", "").split(os.pathsep) if entry]
+    return [path / "share" for path in prefixes if (path / "share").is_dir()]
