@@ -71,6 +71,7 @@ class Helper:
         self._goals = {}
         self.qos_overrides = {}
         self.safe_stop = []
+        self.sim = None
 
     # --- sending to Rockly
     def send(self, frame):
@@ -320,6 +321,31 @@ class Helper:
         if not result.successful:
             raise Failure("command", f"the node '{node}' refused the parameter '{name}': {result.reason}")
 
+    # --- serving a simulator (see sim_serving)
+    def op_sim_serve(self, services, actions):
+        """Serve the world's services and actions (names -> types) from the ``rockly_sim`` node."""
+        from rockly_desktop.robot.ros2.sim_serving import SimServing
+
+        if self.sim is None:
+            self.sim = SimServing(rclpy, self.event)
+        left_out = []
+        for endpoints, serve in ((services, self.sim.serve), (actions, self.sim.offer)):
+            for name, type_name in endpoints.items():
+                try:
+                    serve(name, type_name)
+                except LookupError as error:
+                    left_out.append((name, type_name, str(error)))
+        return left_out
+
+    def op_sim_answer(self, rid, ok, data):
+        self.sim.answer(rid, ok, data)
+
+    def op_sim_feedback(self, gid, data):
+        self.sim.feedback(gid, data)
+
+    def op_sim_goal_end(self, gid, status, result, text):
+        self.sim.goal_end(gid, status, result, text)
+
     # --- the end
     def do_safe_stop(self):
         """The profile's safe stop, sent and (briefly) waited for delivery: the helper's last act."""
@@ -335,6 +361,8 @@ class Helper:
                 print(f"rockly ros2 helper: safe stop {action} failed: {error}", file=sys.stderr)
 
     def close(self):
+        if self.sim is not None:
+            self.sim.close()
         self._pool.shutdown(wait=False, cancel_futures=True)
         self._executor.shutdown(timeout_sec=1.0)
         self._spin.join(timeout=1.0)

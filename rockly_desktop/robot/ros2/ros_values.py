@@ -2,8 +2,8 @@
 
 Names may be ``pkg/msg/Type`` or the short ``pkg/Type`` (ROS 1's spelling); a dict's missing
 fields keep the type's defaults. Whole numbers are accepted for float fields, as on ROS 1.
-Time stamps and durations also carry ROS 1's ``secs``/``nsecs`` (and accept them), so a
-profile written for ROS 1 reads them unchanged.
+Time stamps and durations also carry ROS 1's ``secs``/``nsecs`` (and accept them), and a
+header's ROS 1 ``seq`` is dropped, so a profile (or simulator) written for ROS 1 runs unchanged.
 """
 import array
 import functools
@@ -18,6 +18,8 @@ _FLOATS = {"float", "double", "long double"}
 def interface_class(name: str, kind: str):
     """The class of ``name`` (``pkg/Type`` or ``pkg/KIND/Type``); kind is msg, srv or action.
 
+    An action may be named as on ROS 1, ``pkg/NameAction``.
+
     Raises LookupError naming what is missing (a package not installed in ROS 2's environment).
     """
     parts = name.strip("/").split("/")
@@ -31,6 +33,8 @@ def interface_class(name: str, kind: str):
         raise LookupError(f"'{name}' is not a ROS type name (package/Type)")
     if importlib.util.find_spec(package) is None:
         raise LookupError(f"the ROS 2 interface package '{package}' is not installed")
+    if kind == "action" and type_name.endswith("Action") and len(parts) == 2:
+        type_name = type_name[:-len("Action")]
     for each in kinds:
         try:
             return _member(importlib.import_module(f"{package}.{each}"), type_name)
@@ -77,6 +81,8 @@ def to_message(message_class, data, path=""):
         raise ValueError(f"{path or 'the message'} must be a dict of fields, not {data!r}")
     if _is_time(message_class):
         data = {_ROS1_TIME.get(name, name): value for name, value in data.items()}
+    elif _is_header(message_class) and "seq" in data:
+        data = {name: value for name, value in data.items() if name != "seq"}  # ROS 1's, gone in ROS 2
     slots = _slots(message_class)
     for name, value in data.items():
         where = f"{path}.{name}" if path else name
@@ -104,6 +110,11 @@ def from_message(message) -> dict:
 
 
 _ROS1_TIME = {"secs": "sec", "nsecs": "nanosec"}
+
+
+@functools.cache
+def _is_header(message_class) -> bool:
+    return message_class.__module__.startswith("std_msgs.") and message_class.__name__ == "Header"
 
 
 @functools.cache
