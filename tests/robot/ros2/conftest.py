@@ -11,6 +11,9 @@ import pytest
 from rockly_desktop.robot.ros2.environment import PROJECT_ROOT, Ros2Settings
 
 ROS2_PYTHON = PROJECT_ROOT / ".venv-ros2" / "bin" / "python"
+# The test robot may run another ROS 2 distribution (a Python with its rclpy), to check the wire
+# between them: ROCKLY_TEST_ROBOT_PYTHON=/path/to/jazzy-venv/bin/python
+TEST_ROBOT_PYTHON = os.environ.get("ROCKLY_TEST_ROBOT_PYTHON") or str(ROS2_PYTHON)
 TEST_NODE = Path(__file__).with_name("ros2_test_node.py")
 DOMAIN_ID = 100 + os.getpid() % 100  # this run's own: parallel runs on one machine do not meet
 
@@ -27,7 +30,7 @@ class TestRobot:
     """The test node process (tests/robot/ros2/ros2_test_node.py) and what it printed."""
 
     def __init__(self, settings):
-        self.process = subprocess.Popen([str(ROS2_PYTHON), str(TEST_NODE)], stdin=subprocess.PIPE,
+        self.process = subprocess.Popen([TEST_ROBOT_PYTHON, str(TEST_NODE)], stdin=subprocess.PIPE,
                                         stdout=subprocess.PIPE, text=True, env=settings.environment())
         self.lines = []
         ready = json.loads(self.process.stdout.readline() or "{}")
