@@ -7,7 +7,8 @@ localhost only:
   - service call: std_srvs/Trigger;
   - action round trip: a test_msgs/Fibonacci goal the server finishes at once;
   - publish rate: Twists per second the echo node receives;
-  - stop latency on the wire: stop request -> zero Twist received by the echo node.
+  - stop latency on the wire: stop request -> zero Twist received by the echo node;
+  - the helper killed (kill -9) while a command waits -> the command fails.
 Plain rclpy runs the same loops in another process (rclpy cannot live in Rockly's: Debian's
 ROS 1 owns the same module names), against the same echo node.
 
@@ -343,6 +344,25 @@ def run_all(settings, plain):
     print(f"stop latency on the wire (stop -> zero Twist at the echo node): median {median_ms(latencies):.2f} ms, "
           f"max {max(latencies) * 1000:.2f} ms over {STOP_TRIALS} stops (aim max <= 20 ms)")
     robot.shutdown()
+
+    # --- the helper killed mid-wait ----------------------------------------------------
+    import signal
+
+    failed = []
+
+    def wait():
+        try:
+            robot.backend(Interrupt()).wait_for_message("/nobody_publishes_this", "std_msgs/String", 60)
+        except Exception:
+            failed.append(time.perf_counter())
+
+    waiter = threading.Thread(target=wait)
+    waiter.start()
+    time.sleep(0.5)
+    killed = time.perf_counter()
+    os.kill(robot.helper.process.pid, signal.SIGKILL)
+    waiter.join(10)
+    print(f"helper killed mid-wait -> the command fails: {(failed[0] - killed) * 1000:.1f} ms (aim <= 2 s)")
 
 
 if __name__ == "__main__":
