@@ -11,11 +11,23 @@ import itertools
 import subprocess
 import threading
 from collections import deque
+from pathlib import Path
 
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError, RobotConnectionLost, RobotTimeout
 from rockly_desktop.robot.ros2 import wire
-from rockly_desktop.robot.ros2.environment import PROJECT_ROOT, Ros2Settings, Ros2Unavailable, ros2_python
+from rockly_desktop.robot.ros2.environment import Ros2Settings, Ros2Unavailable, ros2_python
 
+# The helper imports this package from where it is, and nothing else of Rockly's environment
+# (a PYTHONPATH would also hand it every package installed beside Rockly).
+_BOOTSTRAP = """import importlib.util, sys
+spec = importlib.util.spec_from_file_location("rockly_desktop", sys.argv[1] + "/__init__.py",
+                                              submodule_search_locations=[sys.argv[1]])
+package = sys.modules["rockly_desktop"] = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(package)
+from rockly_desktop.robot.ros2.node import main
+main()
+"""
+PACKAGE_DIR = Path(__file__).resolve().parents[2]
 START_TIMEOUT = 30.0  # loading rclpy and the DDS library, on a busy 2-core machine
 POLL_SECONDS = 0.01
 STDERR_LINES = 20
@@ -61,11 +73,11 @@ class Ros2Helper:
         self.settings = settings
         python = ros2_python()
         env = settings.environment()
-        env["PYTHONPATH"] = str(PROJECT_ROOT)  # the helper imports this package, nothing installed
+        env.pop("PYTHONPATH", None)
         env["ROS_PYTHON_CHECK_FIELDS"] = "1"  # a wrong field type is refused, not sent as garbage
         self.process = subprocess.Popen(
-            [str(python), "-m", "rockly_desktop.robot.ros2.node"], stdin=subprocess.PIPE,
-            stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, cwd=str(PROJECT_ROOT), start_new_session=True)
+            [str(python), "-c", _BOOTSTRAP, str(PACKAGE_DIR)], stdin=subprocess.PIPE,
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, cwd="/", start_new_session=True)
         self.lost = False
         self.exit_reason = ""
         self._write_lock = threading.Lock()

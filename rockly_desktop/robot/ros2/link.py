@@ -1,8 +1,11 @@
 """The robot link on ROS 2: a real robot (or a ROS-2-level simulator) through the helper process.
 
-The same public shape as the ROS 1 link: ``backend(interrupt)``, ``follow_graph``, ``graph_topics``,
-``health``, ``state``, ``safe_stop``, ``snapshot``, ``shutdown``.
+The same public shape as the ROS 1 link: ``name``, ``profile``, ``connection``, ``state``,
+``backend(interrupt)``, ``follow_graph``, ``graph_topics``, ``health``, ``safe_stop``, ``snapshot``,
+``shutdown``.
 """
+import time
+
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.executor.health import GREEN, RED, HealthItem, server_health, topic_health
 from rockly_desktop.robot.interrupt import Interrupt
@@ -10,6 +13,36 @@ from rockly_desktop.robot.ros2.backend import Ros2Backend, Ros2Graph
 from rockly_desktop.robot.ros2.client import Ros2Helper
 from rockly_desktop.robot.ros2.environment import Ros2Settings
 from rockly_desktop.robot.safe_stop import run_safe_stop
+
+
+class Ros2Connection:
+    """The link's state as the window shows it, in the ROS 1 connection's shape (``status``,
+    ``lost``, ``round_trip``, ``master_uri``); ROS 2 has no master, so ``master_uri`` is the
+    link's description ('ROS 2, domain 7, localhost')."""
+
+    def __init__(self, helper, settings):
+        self._helper = helper
+        self.master_uri = f"ROS 2, {settings.describe()}"
+        self.round_trip = None  # seconds to the helper and back, as of the last health look
+
+    @property
+    def lost(self) -> bool:
+        """True once the helper process is gone."""
+        return self._helper.lost
+
+    @property
+    def status(self) -> str:
+        """connected | lost."""
+        return "lost" if self._helper.lost else "connected"
+
+    def measure(self):
+        """Time a round trip to the helper (``round_trip``); a gone helper leaves it as it was."""
+        started = time.perf_counter()
+        try:
+            self._helper.call("ping", timeout=2.0)
+        except Exception:
+            return
+        self.round_trip = time.perf_counter() - started
 
 
 class Ros2Robot:
@@ -25,6 +58,7 @@ class Ros2Robot:
         self.profile = profile
         self.settings = settings or Ros2Settings()
         self.helper = Ros2Helper.get(self.settings)
+        self.connection = Ros2Connection(self.helper, self.settings)
         interface = profile.ros_interface
         # its last act, should Rockly die: the profile's safe stop (its publishers are made now)
         self.helper.call("configure", dict(interface.get("qos") or {}), list(profile.safe_stop), timeout=10.0)
@@ -60,7 +94,9 @@ class Ros2Robot:
         where = self.settings.describe()
         if self.helper.lost:
             return [HealthItem("ROS 2", RED, f"{where}: {self.helper.lost_error()}")]
-        link = HealthItem("ROS 2", GREEN, f"{where}, {self.helper.info.get('distro', 'ROS 2')}")
+        self.connection.measure()
+        link = HealthItem("ROS 2", GREEN, f"{where}, {self.helper.info.get('distro', 'ROS 2')}, helper round trip "
+                          f"{(self.connection.round_trip or 0) * 1000:.1f} ms")
         feed = self.follow_graph()
         return [link] + topic_health(interface, self.state.topics()) + server_health(
             interface, lambda kind, name: f"/{name.strip('/')}" in (

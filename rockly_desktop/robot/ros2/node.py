@@ -1,7 +1,8 @@
 """Rockly's ROS 2 helper process: one rclpy node that does what Rockly asks over stdin/stdout.
 
-Run as ``.venv-ros2/bin/python -m rockly_desktop.robot.ros2.node``; it imports rclpy and
-this package's helper-side modules only. Requests come as ``wire`` frames on stdin; the node
+Started by ``client.Ros2Helper`` with ``.venv-ros2``'s Python (which imports this package from
+Rockly's folder and calls ``main``); it imports rclpy and this package's helper-side modules
+only. Requests come as ``wire`` frames on stdin; the node
 spins in its own thread (subscription, feedback and result callbacks), waits that may take a
 while (a service or action server to appear) run in a small pool, everything else inline.
 

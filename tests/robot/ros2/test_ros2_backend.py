@@ -116,3 +116,11 @@ def test_the_graph_lists_the_robots_topics_with_types_and_health(ros2_robot):
     eventually(lambda: "/odom" in {info.topic for info in ros2_robot.state.topics()})
     link = ros2_robot.health()[0]
     assert link.level == "green" and "localhost" in link.detail
+
+
+def test_the_connection_says_where_and_how_fast(ros2_robot):
+    connection = ros2_robot.connection
+    assert connection.status == "connected" and not connection.lost
+    assert connection.master_uri.startswith("ROS 2, domain ")
+    ros2_robot.health()
+    assert connection.round_trip is not None
