@@ -88,7 +88,8 @@ class Ros2Helper:
         self._stderr = deque(maxlen=STDERR_LINES)
         self._hello = threading.Event()
         self.info = {}
-        threading.Thread(target=self._read_errors, name="ros2-helper-stderr", daemon=True).start()
+        self._stderr_reader = threading.Thread(target=self._read_errors, name="ros2-helper-stderr", daemon=True)
+        self._stderr_reader.start()
         threading.Thread(target=self._read, name="ros2-helper-reader", daemon=True).start()
         if not self._hello.wait(START_TIMEOUT) or self.lost:
             detail = self.exit_reason or f"no answer within {START_TIMEOUT:g} s"
@@ -145,6 +146,7 @@ class Ros2Helper:
             code = self.process.wait(timeout=1.0)
         except subprocess.TimeoutExpired:
             code = None
+        self._stderr_reader.join(timeout=1.0)  # its last words say why
         last = self._stderr[-1] if self._stderr else ""
         if not self.exit_reason:
             self.exit_reason = f"exit code {code}" + (f": {last}" if last else "")

@@ -1,7 +1,8 @@
 """A plain rclpy robot for the ROS 2 tests (run with .venv-ros2's Python; no Rockly code).
 
 Publishes /odom (reliable) and /scan (sensor-data QoS, best effort, as laser drivers do) at
-20 Hz, serves /set_light (std_srvs/SetBool) and /fibonacci (test_msgs/Fibonacci, a feedback
+20 Hz, /map_name once (transient local, as a map server keeps its map for late joiners),
+serves /set_light (std_srvs/SetBool) and /fibonacci (test_msgs/Fibonacci, a feedback
 per step every 50 ms, cancellable), has parameters max_speed and robot_name, and prints
 one JSON line per message it gets on /cmd_vel and /chatter: {"topic", "type", "message"}.
 It prints {"ready": true} once everything is up, and leaves when stdin ends.
@@ -16,7 +17,7 @@ from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
 from rclpy.action import ActionServer, CancelResponse
 from rclpy.executors import MultiThreadedExecutor
-from rclpy.qos import qos_profile_sensor_data
+from rclpy.qos import DurabilityPolicy, QoSProfile, qos_profile_sensor_data
 from sensor_msgs.msg import LaserScan
 from std_msgs.msg import String
 from std_srvs.srv import SetBool
@@ -43,6 +44,9 @@ def main():
         {"topic": "/chatter", "type": type(m).__name__, "message": {"data": m.data}}), 10)
     odom = node.create_publisher(Odometry, "/odom", 10)
     scan = node.create_publisher(LaserScan, "/scan", qos_profile_sensor_data)
+    latched = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+    map_name = node.create_publisher(String, "/map_name", latched)
+    map_name.publish(String(data="arena"))
     tick = [0]
 
     def publish():

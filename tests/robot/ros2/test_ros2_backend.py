@@ -41,6 +41,11 @@ def test_odometry_and_a_best_effort_laser_scan_are_read(backend, ros2_robot, tur
     assert commands.distance("ahead") == 1.0  # the middle ray
 
 
+def test_a_latched_topic_is_heard_by_a_late_subscriber(backend, ros2_robot):
+    eventually(lambda: "/map_name" in [name for name, _types, _count in ros2_robot.helper.call("graph")["topics"]])
+    eventually(lambda: backend.latest("/map_name", "std_msgs/String") == {"data": "arena"})
+
+
 def test_a_message_of_a_wrong_shape_is_refused_with_the_field_named(backend):
     with pytest.raises(RobotCommandError, match="linear.x"):
         backend.publish("/wrong_shape", "geometry_msgs/Twist", {"linear": {"x": "fast"}})

@@ -2,7 +2,10 @@
 safe stop, and no ROS 2 at all says which set-up step is missing."""
 import os
 import signal
+import subprocess
+import sys
 import threading
+from pathlib import Path
 
 import pytest
 from waiting import eventually
@@ -10,7 +13,7 @@ from waiting import eventually
 from rockly_desktop.core.errors import RobotConnectionLost
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.ros2.client import Ros2Helper
-from rockly_desktop.robot.ros2.environment import Ros2Unavailable
+from rockly_desktop.robot.ros2.environment import PROJECT_ROOT, Ros2Unavailable
 from rockly_desktop.robot.ros2.link import Ros2Robot
 
 
@@ -56,11 +59,15 @@ def test_a_new_link_after_the_helper_died_starts_a_new_one(own_helper, test_robo
     assert second.backend(Interrupt()).get_param("test_robot:robot_name") == "tb"
 
 
-def test_the_helpers_last_act_is_the_safe_stop(own_helper, test_robot, turtlebot, ros2_settings):
+@pytest.mark.parametrize("ending", ["SIGTERM", "end of stdin"])
+def test_the_helpers_last_act_is_the_safe_stop(own_helper, test_robot, turtlebot, ros2_settings, ending):
     robot = Ros2Robot(turtlebot, ros2_settings)
     robot.backend(Interrupt()).publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.2}})
     eventually(lambda: test_robot.received("/cmd_vel")[-1]["message"]["linear"]["x"] == 0.2)
-    robot.helper.process.send_signal(signal.SIGTERM)  # as when Rockly ends it, or its stdin ends
+    if ending == "SIGTERM":
+        robot.helper.process.send_signal(signal.SIGTERM)
+    else:
+        robot.helper.process.stdin.close()
     eventually(lambda: robot.helper.lost)
     eventually(lambda: test_robot.received("/cmd_vel")[-1]["message"]["linear"]["x"] == 0.0)
 
@@ -80,3 +87,38 @@ def test_a_helper_that_cannot_start_says_why(own_helper, turtlebot, ros2_setting
     with pytest.raises(Ros2Unavailable, match="no rclpy here") as raised:
         Ros2Robot(turtlebot, ros2_settings)
     assert raised.value.reason == "helper_failed"
+
+
+PARENT = r'''
+import sys
+from types import SimpleNamespace
+from rockly_desktop.robot.interrupt import Interrupt
+from rockly_desktop.robot.ros2.environment import Ros2Settings
+from rockly_desktop.robot.ros2.link import Ros2Robot
+profile = SimpleNamespace(ros_interface={}, safe_stop=[
+    {"publish": {"topic": "/cmd_vel", "type": "geometry_msgs/Twist", "message": {}}}])
+robot = Ros2Robot(profile, Ros2Settings(domain_id=int(sys.argv[1]), discovery="localhost"))
+robot.backend(Interrupt()).publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.3}})
+print(robot.helper.process.pid, flush=True)
+sys.stdin.read()
+'''
+
+
+def _running(pid: int) -> bool:
+    try:
+        stat = Path(f"/proc/{pid}/stat").read_text()
+    except OSError:
+        return False
+    return stat[stat.rindex(")") + 2] != "Z"
+
+
+def test_when_rockly_dies_its_helper_stops_the_robot_and_ends(test_robot, ros2_settings):
+    parent = subprocess.Popen([sys.executable, "-c", PARENT, str(ros2_settings.domain_id)], stdin=subprocess.PIPE,
+                              stdout=subprocess.PIPE, text=True, cwd=PROJECT_ROOT,
+                              env={**os.environ, "PYTHONPATH": str(PROJECT_ROOT)})
+    helper_pid = int(parent.stdout.readline())
+    eventually(lambda: test_robot.received("/cmd_vel")[-1]["message"]["linear"]["x"] == 0.3)
+    parent.kill()  # no atexit, no close: only the pipe's end tells the helper
+    parent.wait()
+    eventually(lambda: test_robot.received("/cmd_vel")[-1]["message"]["linear"]["x"] == 0.0)
+    eventually(lambda: not _running(helper_pid))
