@@ -31,7 +31,7 @@ TRIALS = 300
 ACTION_TRIALS = 50
 RATE_SECONDS = 2.0
 STOP_TRIALS = 20
-ROUNDS = 5
+ROUNDS = 10
 
 ECHO_NODE = r'''
 import os, sys, time, threading, rclpy

@@ -59,7 +59,8 @@ class Helper:
         self._out_lock = threading.Lock()
         self._lock = threading.Lock()
         rclpy.init(signal_handler_options=SignalHandlerOptions.NO)  # our SIGTERM: the safe stop first
-        self.node = rclpy.create_node(f"rockly_{os.getpid()}")
+        # no parameter services of its own: fewer entities for the executor to wait on
+        self.node = rclpy.create_node(f"rockly_{os.getpid()}", start_parameter_services=False)
         self._executor = SingleThreadedExecutor()
         self._executor.add_node(self.node)
         self._spin = threading.Thread(target=self._executor.spin, name="ros2-spin", daemon=True)
