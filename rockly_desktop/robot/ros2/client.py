@@ -10,6 +10,7 @@ import atexit
 import itertools
 import subprocess
 import threading
+import time
 from collections import deque
 from pathlib import Path
 
@@ -195,13 +196,12 @@ class Ros2Helper:
         call_id = next(self._ids)
         pending = self._pending[call_id] = _Pending()
         self._write((wire.CALL, call_id, op, args))
-        waited = 0.0
-        while not pending.done.wait(POLL_SECONDS if interrupt is not None else 1.0):
-            waited += POLL_SECONDS if interrupt is not None else 1.0
+        deadline = None if timeout is None else time.monotonic() + timeout
+        while not pending.done.wait(POLL_SECONDS if interrupt is not None else 0.1):
             if interrupt is not None and interrupt.stop_requested:
                 self._pending.pop(call_id, None)
                 raise ProgramStopped("the program was stopped")
-            if timeout is not None and waited > timeout:
+            if deadline is not None and time.monotonic() > deadline:
                 self._pending.pop(call_id, None)
                 raise RobotTimeout(f"the ROS 2 helper did not answer '{op}' within {timeout:g} s")
         if not pending.ok:

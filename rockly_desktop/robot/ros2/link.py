@@ -60,7 +60,8 @@ class Ros2Robot:
         self.helper = Ros2Helper.get(self.settings)
         self.connection = Ros2Connection(self.helper, self.settings)
         interface = profile.ros_interface
-        # its last act, should Rockly die: the profile's safe stop (its publishers are made now)
+        # its last act, should Rockly die: the profile's safe stop (its publishers are made now; one
+        # of a type ROS 2 lacks fails when the stop is done, saying so, as on ROS 1)
         self.helper.call("configure", dict(interface.get("qos") or {}), list(profile.safe_stop), timeout=10.0)
         self.graph = Ros2Graph(self.helper)
         self.graph.published.update(action["publish"]["topic"] for action in profile.safe_stop if "publish" in action)

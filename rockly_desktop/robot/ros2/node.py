@@ -34,6 +34,8 @@ FIRST_PUBLISH_WAIT = 1.0  # a new publisher waits this long for the graph's subs
 DISCOVERY_SECONDS = 3.0  # a new DDS participant may take 2 s to discover the others on this machine
 ACTION_SERVER_WAIT = 5.0
 PARAMETER_WAIT = 2.0
+SERVER_SETTLE = 0.25
+PARAMETER_TRIES = 3  # reading or setting a parameter is safe to ask again when an answer was lost
 TOPIC_WAIT = 1.0  # a subscription without a type waits this long for the topic to be discovered
 _GOAL_STATUS = {4: "succeeded", 5: "preempted", 6: "aborted"}
 
@@ -71,6 +73,7 @@ class Helper:
         self._services = {}
         self._actions = {}
         self._goals = {}
+        self._settled = set()
         self.qos_overrides = {}
         self.safe_stop = []
         self.sim = None
@@ -86,8 +89,12 @@ class Helper:
         self.send((wire.EVENT, kind, key, data))
 
     # --- requests
+    # requests that may wait (for a server, a match, an answer) run on the pool, not the reading loop
+    WAITING_OPS = {"publish_first", "subscribe", "service", "goal", "cancel_all", "get_param", "set_param"}
+
     def handle(self, frame):
-        """Do one request; calls whose op ends in ``_async`` answer later, from a pool thread."""
+        """Do one request (``op_<name>``): inline, or on the pool when it may wait (a goal to a
+        server already reached does not)."""
         mode, call_id, op, args = frame
         method = getattr(self, f"op_{op}", None)
         if method is None:
@@ -96,8 +103,6 @@ class Helper:
             self._pool.submit(self._run, mode, call_id, op, method, args)
         else:
             self._run(mode, call_id, op, method, args)
-
-    WAITING_OPS = {"publish_first", "subscribe", "service", "goal", "cancel_all", "get_param", "set_param"}
 
     def _run(self, mode, call_id, op, method, args):
         try:
@@ -124,12 +129,18 @@ class Helper:
         return value
 
     def op_configure(self, qos_overrides, safe_stop):
-        """The profile's QoS overrides and safe stop; the stop's publishers are made (and matched) now."""
+        """The profile's QoS overrides and safe stop; the stop's publishers are made (and matched) now.
+        Returns what cannot be published here (a type ROS 2's environment lacks), as texts."""
         self.qos_overrides = dict(qos_overrides or {})
         self.safe_stop = list(safe_stop or [])
+        problems = []
         for action in self.safe_stop:
             if "publish" in action:
-                self.op_publish_first(action["publish"]["topic"], action["publish"]["type"], None)
+                try:
+                    self.op_publish_first(action["publish"]["topic"], action["publish"]["type"], None)
+                except LookupError as error:
+                    problems.append(f"{action['publish']['topic']}: {error}")
+        return problems
 
     def _publisher(self, topic, type_name):
         with self._lock:
@@ -201,6 +212,15 @@ class Helper:
         return {"topics": topics, "services": services, "actions": actions}
 
     # --- services
+    def _ready(self, client, timeout, problem):
+        """Wait for ``client``'s server; the first time, also give the server SERVER_SETTLE to discover
+        us: a server that has not matched the client's reader drops its answer (Fast DDS waits 100 ms)."""
+        if not client.wait_for_service(timeout_sec=timeout):
+            raise Failure("timeout", problem)
+        if client not in self._settled:
+            time.sleep(SERVER_SETTLE)
+            self._settled.add(client)
+
     def _service_client(self, name, type_name):
         with self._lock:
             client = self._services.get(name)
@@ -212,8 +232,7 @@ class Helper:
         """Call a service (waiting up to ``timeout`` for it to appear and answer); the response dict."""
         client = self._service_client(name, type_name)
         deadline = time.monotonic() + timeout
-        if not client.wait_for_service(timeout_sec=timeout):
-            raise Failure("timeout", f"the service '{name}' is not available (waited {timeout:g} s)")
+        self._ready(client, timeout, f"the service '{name}' is not available (waited {timeout:g} s)")
         future = client.call_async(to_message(client.srv_type.Request, request))
         done = threading.Event()
         future.add_done_callback(lambda _future: done.set())
@@ -294,18 +313,18 @@ class Helper:
     def _parameter_service(self, node, kind):
         type_name = {"get": "rcl_interfaces/srv/GetParameters", "set": "rcl_interfaces/srv/SetParameters"}[kind]
         client = self._service_client(f"/{node.strip('/')}/{kind}_parameters", type_name)
-        if not client.wait_for_service(timeout_sec=PARAMETER_WAIT):
-            raise Failure("timeout", f"there is no ROS 2 node '{node}' to ask for parameters")
+        self._ready(client, PARAMETER_WAIT, f"there is no ROS 2 node '{node}' to ask for parameters")
         return client
 
     def _call(self, client, request):
-        future = client.call_async(request)
-        done = threading.Event()
-        future.add_done_callback(lambda _future: done.set())
-        if not done.wait(PARAMETER_WAIT):
+        for _try in range(PARAMETER_TRIES):
+            future = client.call_async(request)
+            done = threading.Event()
+            future.add_done_callback(lambda _future, done=done: done.set())
+            if done.wait(PARAMETER_WAIT / PARAMETER_TRIES):
+                return future.result()
             client.remove_pending_request(future)
-            raise Failure("timeout", "the node did not answer about its parameters")
-        return future.result()
+        raise Failure("timeout", "the node did not answer about its parameters")
 
     def op_get_param(self, node, name):
         """``(True, value)`` of a node's parameter, or ``(False, None)`` when it is not set."""
