@@ -262,6 +262,9 @@ class Helper:
         if not client.wait_for_server(timeout_sec=ACTION_SERVER_WAIT):
             self.event("goal_end", gid, ("aborted", {}, f"there is no action server '{action}'"))
             raise Reported("command", f"there is no action server '{action}'")
+        if client not in self._settled:  # as for a service's first call (see _ready)
+            time.sleep(SERVER_SETTLE)
+            self._settled.add(client)
         try:
             goal_message = to_message(client._action_type.Goal, goal)
         except ValueError as error:
