@@ -62,9 +62,11 @@ class Ros2Robot:
         interface = profile.ros_interface
         # its last act, should Rockly die: the profile's safe stop (its publishers are made now; one
         # of a type ROS 2 lacks fails when the stop is done, saying so, as on ROS 1)
-        self.helper.call("configure", dict(interface.get("qos") or {}), list(profile.safe_stop), timeout=10.0)
+        unknown = self.helper.call("configure", dict(interface.get("qos") or {}), list(profile.safe_stop),
+                                   timeout=10.0)
         self.graph = Ros2Graph(self.helper)
-        self.graph.published.update(action["publish"]["topic"] for action in profile.safe_stop if "publish" in action)
+        self.graph.published.update(action["publish"]["topic"] for action in profile.safe_stop
+                                    if "publish" in action and action["publish"]["topic"] not in unknown)
         self.state = StateStore()
         self.graph.service_watchers.append(self.state.record)
         self._feed = None

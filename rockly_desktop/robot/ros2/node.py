@@ -130,7 +130,7 @@ class Helper:
 
     def op_configure(self, qos_overrides, safe_stop):
         """The profile's QoS overrides and safe stop; the stop's publishers are made (and matched) now.
-        Returns what cannot be published here (a type ROS 2's environment lacks), as texts."""
+        Returns the topics that cannot be published here (a type ROS 2's environment lacks)."""
         self.qos_overrides = dict(qos_overrides or {})
         self.safe_stop = list(safe_stop or [])
         problems = []
@@ -138,8 +138,8 @@ class Helper:
             if "publish" in action:
                 try:
                     self.op_publish_first(action["publish"]["topic"], action["publish"]["type"], None)
-                except LookupError as error:
-                    problems.append(f"{action['publish']['topic']}: {error}")
+                except LookupError:
+                    problems.append(action["publish"]["topic"])
         return problems
 
     def _publisher(self, topic, type_name):

@@ -122,3 +122,15 @@ def test_when_rockly_dies_its_helper_stops_the_robot_and_ends(test_robot, ros2_s
     parent.wait()
     eventually(lambda: test_robot.received("/cmd_vel")[-1]["message"]["linear"]["x"] == 0.0)
     eventually(lambda: not _running(helper_pid))
+
+
+def test_a_safe_stop_of_a_type_ros2_lacks_fails_naming_the_package(own_helper, ros2_settings):
+    from types import SimpleNamespace
+
+    profile = SimpleNamespace(ros_interface={}, safe_stop=[
+        {"publish": {"topic": "/head/move", "type": "hobbit_msgs/HeadMove", "message": {}}},
+        {"publish": {"topic": "/cmd_vel", "type": "geometry_msgs/Twist", "message": {}}}])
+    robot = Ros2Robot(profile, ros2_settings)
+    failures = robot.safe_stop()
+    assert len(failures) == 1 and "hobbit_msgs" in failures[0] and "not installed" in failures[0]
+    robot.backend(Interrupt()).publish("/cmd_vel", "geometry_msgs/Twist", {})  # nothing left to report later
