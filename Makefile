@@ -1,16 +1,18 @@
 # Rockly: `make run` starts the app, `make test` runs the whole suite.
-# Both set up what is missing first (Debian packages, venv, Python deps, Blockly).
+# Both set up what is missing first (Debian packages, venv, Python deps, Blockly);
+# `make test` also makes .venv-ros2 (ROS 2 from pinned wheels, `make ros2`).
 
 VENV      := .venv
 PY        := $(VENV)/bin/python
 STAMP_SYS := $(VENV)/.system-packages
 STAMP_PY  := $(VENV)/.python-deps
+STAMP_ROS2 := .venv-ros2/.requirements
 BLOCKLY   := resources/blockly/vendor/.version
 # Tests and benchmarks run as root in CI, where Chromium's sandbox cannot start
 # (the app itself turns the sandbox off only when it runs as root).
 TEST_ENV  := QTWEBENGINE_DISABLE_SANDBOX=1 QT_QPA_PLATFORM=offscreen
 
-.PHONY: setup run test bench clean
+.PHONY: setup ros2 run test bench clean
 
 setup: $(STAMP_SYS) $(STAMP_PY) $(BLOCKLY)
 
@@ -28,18 +30,24 @@ $(STAMP_PY): pyproject.toml setup.py | $(PY) $(BLOCKLY)
 $(BLOCKLY): scripts/fetch-blockly.sh | $(STAMP_SYS)
 	bash scripts/fetch-blockly.sh
 
+# ROS 2 lives in its own venv and process (Debian's ROS 1 owns the same module names).
+ros2: $(STAMP_ROS2)
+
+$(STAMP_ROS2): requirements-ros2.txt scripts/setup-ros2.sh | $(STAMP_SYS)
+	bash scripts/setup-ros2.sh
+
 run: setup
 	$(PY) -m rockly_desktop
 
-test: setup
+test: setup ros2
 	$(VENV)/bin/ruff check .
 	$(TEST_ENV) $(VENV)/bin/lint-imports
 	$(TEST_ENV) $(PY) -m pytest
 
 # Byte-compiled first, as an installed Rockly is (the bare-Blockly baseline's PySide6 is too).
-bench: setup
+bench: setup ros2
 	$(PY) -m compileall -q rockly_desktop profiles
 	$(TEST_ENV) $(PY) benchmarks/run_all.py
 
 clean:
-	rm -rf $(VENV) resources/blockly/vendor
+	rm -rf $(VENV) .venv-ros2 resources/blockly/vendor

@@ -11,9 +11,15 @@ can check (a number, a text, a yes/no) or an array of primitives (a list). Array
 messages cannot be built from blocks and are left out, as is ``header.seq``, which ROS
 fills in itself.
 
+ROS 2's definitions (the files ``.venv-ros2/share`` holds, see ``robot.ros2.environment``)
+read the same way, with what ROS 2 adds: bounded strings (``string<=10``) and arrays
+(``int32[<=5]``), which ``check`` holds a value to, and default values (``int32 x 5``),
+which a new block shows. Constants (``X=1``) are no fields, on either ROS.
+
 ``check`` holds a program's message dict against its type before it is sent, so a wrong
 value gets the same clear message on the simulator as on a real robot.
 """
+import ast
 import os
 import re
 from collections.abc import Mapping
@@ -27,8 +33,10 @@ COMMON_PACKAGES = ("std_msgs", "geometry_msgs", "sensor_msgs", "nav_msgs", "std_
 
 _NUMBERS = ("int8", "uint8", "int16", "uint16", "int32", "uint32", "int64", "uint64",
             "float32", "float64", "byte", "char", "time", "duration")
-_CHECKS = {**{name: "Number" for name in _NUMBERS}, "string": "String", "bool": "Boolean"}
-_FIELD_LINE = re.compile(r"^(?P<type>[A-Za-z_][\w/]*)(?P<array>\[\d*\])?\s+(?P<name>[A-Za-z_]\w*)\s*$")
+_CHECKS = {**{name: "Number" for name in _NUMBERS}, "string": "String", "wstring": "String", "bool": "Boolean"}
+_FIELD_LINE = re.compile(r"^(?P<type>[A-Za-z_][\w/]*)(?:<=(?P<length>\d+))?"
+                         r"(?P<array>\[(?P<bounded><=)?(?P<size>\d*)\])?\s+(?P<name>[A-Za-z_]\w*)"
+                         r"(?:\s+(?P<default>\S.*?))?\s*$")
 _MAX_DEPTH = 6
 _EXPECTED = {"Number": "a number", "String": "a text", "Boolean": "true or false"}
 _STARTS = {"Number": 0, "String": "", "Boolean": False}
@@ -52,17 +60,58 @@ def installed_definition_dirs() -> list:
     return [Path(entry) for entry in dict.fromkeys(dirs)]
 
 
+@dataclass(frozen=True)
+class _Declaration:
+    """One field line: its type, whether it is an array, its name, and what ROS 2 may add."""
+
+    ros_type: str
+    is_array: bool
+    name: str
+    default: object = None     # a ROS 2 default value
+    max_length: int = None     # string<=N
+    max_items: int = None      # T[<=N] (and T[N], a fixed size)
+
+
 def _declarations(text: str) -> list:
-    """``(type, is_array, name)`` for each field line of one definition section (constants skipped)."""
+    """The ``_Declaration`` of each field line of one definition section (constants skipped)."""
     fields = []
     for raw in text.splitlines():
-        line = raw.split("#", 1)[0].strip()
-        if not line or "=" in line:
+        line = _without_comment(raw).strip()
+        if not line or re.match(r"^\S+\s+[A-Za-z_]\w*\s*=", line):
             continue
         match = _FIELD_LINE.match(line)
         if match:
-            fields.append((match["type"], bool(match["array"]), match["name"]))
+            size = match["size"]
+            fields.append(_Declaration(
+                match["type"], bool(match["array"]), match["name"], _literal(match["default"]),
+                int(match["length"]) if match["length"] else None, int(size) if size else None))
     return fields
+
+
+def _without_comment(line: str) -> str:
+    """``line`` up to its ``#`` comment (a ``#`` inside a quoted default value stays)."""
+    quote = None
+    for index, char in enumerate(line):
+        if quote:
+            quote = None if char == quote and line[index - 1] != "\\" else quote
+        elif char in "'\"":
+            quote = char
+        elif char == "#":
+            return line[:index]
+    return line
+
+
+def _literal(text):
+    """A default value as written in a ROS 2 definition, as Python (None when there is none)."""
+    if text is None:
+        return None
+    words = {"true": True, "false": False}
+    if text.lower() in words:
+        return words[text.lower()]
+    try:
+        return ast.literal_eval(re.sub(r"\b(true|false)\b", lambda m: m[1].capitalize(), text, flags=re.IGNORECASE))
+    except (ValueError, SyntaxError):
+        return text
 
 
 def _sections(text: str) -> list:
@@ -123,11 +172,12 @@ class DefinitionCatalog:
 
     def _flatten(self, declarations, package: str, prefix: str = "", depth: int = 0) -> list:
         inputs = []
-        for ros_type, is_array, name in declarations:
-            path = prefix + name
+        for declaration in declarations:
+            ros_type, is_array, path = declaration.ros_type, declaration.is_array, prefix + declaration.name
             if ros_type in _CHECKS:
                 check = "Array" if is_array else _CHECKS[ros_type]
-                inputs.append(FieldInput(path, ros_type + ("[]" if is_array else ""), check, _STARTS.get(check)))
+                start = _STARTS.get(check) if declaration.default is None else declaration.default
+                inputs.append(FieldInput(path, ros_type + ("[]" if is_array else ""), check, start))
                 continue
             resolved = None if is_array or depth >= _MAX_DEPTH else self._resolve(ros_type, package)
             if resolved is None:
@@ -165,22 +215,26 @@ class DefinitionCatalog:
         if not isinstance(data, Mapping):
             raise RobotCommandError(f"{prefix.rstrip('.') or 'the message'} must be a {type_name} "
                                     f"(a mapping of its fields), not {data!r}")
-        by_name = {name: (ros_type, is_array) for ros_type, is_array, name in declarations}
+        by_name = {declaration.name: declaration for declaration in declarations}
         for key, value in data.items():
             if key not in by_name:
                 subject = f"{prefix.rstrip('.')} (a {type_name})" if prefix else type_name
                 raise RobotCommandError(f"{subject} has no field '{key}' (it has: {', '.join(by_name) or 'none'})")
-            ros_type, is_array = by_name[key]
+            declaration = by_name[key]
             path = prefix + key
-            if is_array:
+            if declaration.is_array:
                 if not isinstance(value, (list, tuple)):
                     raise RobotCommandError(f"the field {path} needs a list, not {value!r}")
+                if declaration.max_items is not None and len(value) > declaration.max_items:
+                    raise RobotCommandError(f"the field {path} holds at most {declaration.max_items} items, "
+                                            f"not {len(value)}")
                 for index, item in enumerate(value):
-                    self._check_value(ros_type, package, item, f"{path}[{index}]")
+                    self._check_value(declaration, package, item, f"{path}[{index}]")
             else:
-                self._check_value(ros_type, package, value, path)
+                self._check_value(declaration, package, value, path)
 
-    def _check_value(self, ros_type, package, value, path):
+    def _check_value(self, declaration, package, value, path):
+        ros_type = declaration.ros_type
         check = _CHECKS.get(ros_type)
         if check is None:
             resolved = self._resolve(ros_type, package)
@@ -195,6 +249,9 @@ class DefinitionCatalog:
             fits = set(value) <= {"secs", "nsecs"}
         if not fits:
             raise RobotCommandError(f"the field {path} needs {_EXPECTED[check]}, not {value!r}")
+        if declaration.max_length is not None and len(value) > declaration.max_length:
+            raise RobotCommandError(f"the field {path} holds at most {declaration.max_length} characters, "
+                                    f"not {len(value)}")
 
     @cached_property
     def editor_catalog(self) -> dict:

@@ -50,7 +50,7 @@ MANIFEST_FIELDS = (
     FieldSpec("messages", "folder", False, "Folder with ROS definitions the robot needs: <package>/msg|srv|action/*."),
     FieldSpec("ros_interface", "ros_interface", False,
               "The robot's ROS interface: {subscribes: {TOPIC: TYPE}, publishes: {...}, services: {NAME: TYPE}, "
-              "actions: {NAME: TYPE}, streams: [TOPIC, ...]}."),
+              "actions: {NAME: TYPE}, streams: [TOPIC, ...], qos: {TOPIC: QOS} (ROS 2)}."),
     FieldSpec("safe_stop", "safe_stop", False,
               "What 'stop' means for this robot: a list of {publish: ...}, {cancel_goals: ACTION}."),
     FieldSpec("state", "state", False,
@@ -134,14 +134,37 @@ def _check_state(value):
     return None
 
 
+QOS_NAMES = ("reliable", "best_effort", "sensor_data", "transient_local")
+_QOS_KEYS = {"reliability": ("reliable", "best_effort"), "durability": ("volatile", "transient_local")}
+
+
+def _check_qos(qos):
+    """None when ``qos`` maps topics to a QoS name or {reliability, durability, depth}; else the problem."""
+    problem = (f"'qos' must map topics to one of {', '.join(QOS_NAMES)} or to "
+               "{reliability: reliable|best_effort, durability: volatile|transient_local, depth: N}")
+    if not isinstance(qos, dict):
+        return problem
+    for setting in qos.values():
+        if isinstance(setting, str):
+            if setting not in QOS_NAMES:
+                return problem
+        elif not isinstance(setting, dict) or set(setting) - {*_QOS_KEYS, "depth"} or any(
+                setting[key] not in choices for key, choices in _QOS_KEYS.items() if key in setting) or not (
+                isinstance(setting.get("depth", 1), int) and setting.get("depth", 1) > 0):
+            return problem
+    return None
+
+
 def _check_ros_interface(value):
-    if not isinstance(value, dict) or set(value) - {"subscribes", "publishes", "services", "actions", "streams"}:
-        return "must be a mapping with subscribes, publishes, services, actions and streams"
+    if not isinstance(value, dict) or set(value) - {"subscribes", "publishes", "services", "actions", "streams", "qos"}:
+        return "must be a mapping with subscribes, publishes, services, actions, streams and qos"
     streams = value.get("streams", [])
     if not isinstance(streams, list) or not set(streams) <= set(value.get("publishes", {})):
         return "'streams' must list published topics that arrive continuously (the health light watches them)"
+    if "qos" in value and _check_qos(value["qos"]):
+        return _check_qos(value["qos"])
     for part, names in value.items():
-        if part == "streams":
+        if part in ("streams", "qos"):
             continue
         if not isinstance(names, dict) or not all(isinstance(k, str) and isinstance(v, str) and "/" in v
                                                   for k, v in names.items()):

@@ -3,6 +3,7 @@ from pathlib import Path
 
 import pytest
 
+from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.core.ros_definitions import DefinitionCatalog, FieldInput, installed_definition_dirs
 
 
@@ -77,3 +78,22 @@ def test_the_installed_common_packages_are_found(monkeypatch):
 def test_ros_package_path_comes_before_the_system_folder(monkeypatch, tmp_path):
     monkeypatch.setenv("ROS_PACKAGE_PATH", f"{tmp_path / 'a'}:{tmp_path / 'b'}:{tmp_path / 'a'}")
     assert installed_definition_dirs() == [tmp_path / "a", tmp_path / "b", Path("/usr/share")]
+
+
+def test_ros2_definitions_with_bounds_defaults_and_constants(tmp_path):
+    write(tmp_path, "robo2_msgs/msg/Light.msg",
+          "# ROS 2 syntax\nuint8 RED=1\nstring NAME_CONST=\"a # not a comment\"\n"
+          "string<=8 label \"lamp\"  # a bounded string with a default\nfloat64 brightness 0.5\n"
+          "bool on true\nint32[<=3] pattern [1, 2]\nfloat32[2] size\nwstring note\n"
+          "builtin_interfaces/Time since\n")
+    write(tmp_path, "builtin_interfaces/msg/Time.msg", "int32 sec\nuint32 nanosec\n")
+    catalog = DefinitionCatalog([], installed_dirs=[tmp_path], packages=("robo2_msgs",))
+    assert [(f.path, f.check, f.start) for f in catalog.fields("robo2_msgs/Light")] == [
+        ("label", "String", "lamp"), ("brightness", "Number", 0.5), ("on", "Boolean", True),
+        ("pattern", "Array", [1, 2]), ("size", "Array", None), ("note", "String", ""),
+        ("since.sec", "Number", 0), ("since.nanosec", "Number", 0)]
+    catalog.check("robo2_msgs/Light", "msg", {"label": "desk", "pattern": [1, 2, 3]})
+    with pytest.raises(RobotCommandError, match="label holds at most 8 characters"):
+        catalog.check("robo2_msgs/Light", "msg", {"label": "a long lamp"})
+    with pytest.raises(RobotCommandError, match="pattern holds at most 3 items"):
+        catalog.check("robo2_msgs/Light", "msg", {"pattern": [1, 2, 3, 4]})

@@ -277,3 +277,21 @@ def test_reading_a_manifest_does_not_change_the_profile_files(profile):
     load_profile(profile.root, SHARED_TOOLBOXES)
     after = {path.name: (path.read_bytes(), path.stat().st_mtime_ns) for path in profile.root.glob("*.yaml")}
     assert after == before
+
+
+def _with_qos(profile, qos):
+    return profile.edit("profile.yaml", lambda data: data["ros_interface"].update({"qos": qos}))
+
+
+@pytest.mark.parametrize("qos", [{"/odom": "sensor_data"},
+                                 {"/map": {"reliability": "reliable", "durability": "transient_local", "depth": 1}}])
+def test_a_ros2_qos_for_a_topic_is_accepted(profile, qos):
+    _with_qos(profile, qos)
+    assert read_manifest(profile.root)["ros_interface"]["qos"] == qos
+
+
+@pytest.mark.parametrize("qos", [{"/odom": "fast"}, {"/odom": {"reliability": "sometimes"}}, {"/odom": {"depth": 0}},
+                                 ["/odom"]])
+def test_an_unknown_qos_is_refused_with_the_known_ones(profile, qos):
+    _with_qos(profile, qos)
+    assert_manifest_error(profile, "ros_interface", "sensor_data")

@@ -1,0 +1,369 @@
+"""ROS 2 figures through Rockly's robot interface (helper process included), each against plain
+rclpy measured in the same run.
+
+An echo node in its own process (plain rclpy, .venv-ros2), on a domain of this run's own,
+localhost only:
+  - topic round trip: publish Float64 on /ping, the echo node answers on /pong;
+  - service call: std_srvs/Trigger;
+  - action round trip: a test_msgs/Fibonacci goal the server finishes at once;
+  - publish rate: Twists per second the echo node receives;
+  - stop latency on the wire: stop request -> zero Twist received by the echo node;
+  - the helper killed (kill -9) while a command waits -> the command fails.
+Plain rclpy runs the same loops in another process (rclpy cannot live in Rockly's: Debian's
+ROS 1 owns the same module names), against the same echo node.
+
+    python benchmarks/ros2.py
+"""
+import json
+import os
+import statistics
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))
+
+ROS2_PYTHON = REPO / ".venv-ros2" / "bin" / "python"
+TRIALS = 300
+ACTION_TRIALS = 50
+RATE_SECONDS = 2.0
+STOP_TRIALS = 20
+ROUNDS = 10
+
+ECHO_NODE = r'''
+import os, sys, time, threading, rclpy
+from rclpy.action import ActionServer
+from rclpy.executors import MultiThreadedExecutor
+from rclpy.qos import QoSProfile, DurabilityPolicy
+from std_msgs.msg import Float64
+from geometry_msgs.msg import Twist
+from std_srvs.srv import Trigger
+from test_msgs.action import Fibonacci
+rclpy.init()
+node = rclpy.create_node("rockly_bench_echo")
+pong = node.create_publisher(Float64, "/pong", 1000)
+node.create_subscription(Float64, "/ping", lambda m: pong.publish(m), 1000)
+seen = node.create_publisher(Float64, "/twist_seen", 1000)
+count = [0]
+def on_twist(m):
+    count[0] += 1
+    if m.linear.x == 0 and m.angular.z == 0:
+        seen.publish(Float64(data=time.time()))
+node.create_subscription(Twist, "/cmd_vel", on_twist, 100000)
+counted = node.create_publisher(Float64, "/twist_count", 10)
+node.create_subscription(Float64, "/count_please", lambda m: counted.publish(Float64(data=float(count[0]))), 10)
+def trigger(request, response):
+    response.success, response.message = True, "ok"
+    return response
+node.create_service(Trigger, "/bench_trigger", trigger)
+def execute(goal):
+    goal.succeed()
+    return Fibonacci.Result(sequence=[0, 1])
+ActionServer(node, Fibonacci, "/bench_fib", execute)
+executor = MultiThreadedExecutor(4)
+executor.add_node(node)
+threading.Thread(target=executor.spin, daemon=True).start()
+print("ready", flush=True)
+sys.stdin.read()
+os._exit(0)
+'''
+
+# The same loops with plain rclpy (its executor spinning in a thread, as the helper's does), on
+# request: a line "topic|service|action N" or "rate SECONDS" answers one JSON line.
+PLAIN_CLIENT = r'''
+import json, os, sys, threading, time, rclpy
+from rclpy.action import ActionClient
+from rclpy.executors import SingleThreadedExecutor
+from std_msgs.msg import Float64
+from geometry_msgs.msg import Twist
+from std_srvs.srv import Trigger
+from test_msgs.action import Fibonacci
+rclpy.init()
+node = rclpy.create_node("rockly_bench_plain")
+executor = SingleThreadedExecutor()
+executor.add_node(node)
+threading.Thread(target=executor.spin, daemon=True).start()
+
+def wait_for(predicate):
+    while not predicate():
+        time.sleep(0.00005)
+
+arrivals, counts = [], []
+node.create_subscription(Float64, "/pong", lambda m: arrivals.append(time.perf_counter()), 1000)
+node.create_subscription(Float64, "/twist_count", lambda m: counts.append(m.data), 10)
+ping = node.create_publisher(Float64, "/ping", 1000)
+ask = node.create_publisher(Float64, "/count_please", 10)
+twist = node.create_publisher(Twist, "/cmd_vel", 100000)
+client = node.create_client(Trigger, "/bench_trigger")
+actions = ActionClient(node, Fibonacci, "/bench_fib")
+wait_for(lambda: ping.get_subscription_count() > 0 and node.count_publishers("/pong") > 0
+         and ask.get_subscription_count() > 0 and twist.get_subscription_count() > 0
+         and node.count_publishers("/twist_count") > 0)
+client.wait_for_service(timeout_sec=10)
+actions.wait_for_server(timeout_sec=10)
+
+def topic(n):
+    times = []
+    for _ in range(n):
+        before = len(arrivals)
+        started = time.perf_counter()
+        ping.publish(Float64(data=1.0))
+        wait_for(lambda: len(arrivals) > before)
+        times.append(arrivals[-1] - started)
+    return times
+
+def service(n):
+    times = []
+    for _ in range(n):
+        started = time.perf_counter()
+        done = threading.Event()
+        client.call_async(Trigger.Request()).add_done_callback(lambda f: done.set())
+        done.wait(5)
+        times.append(time.perf_counter() - started)
+    return times
+
+def action(n):
+    times = []
+    for _ in range(n):
+        started = time.perf_counter()
+        ended = threading.Event()
+        def accepted(future):
+            future.result().get_result_async().add_done_callback(lambda f: ended.set())
+        actions.send_goal_async(Fibonacci.Goal(order=0)).add_done_callback(accepted)
+        ended.wait(5)
+        times.append(time.perf_counter() - started)
+    return times
+
+def received_total():
+    before = len(counts)
+    ask.publish(Float64(data=0.0))
+    wait_for(lambda: len(counts) > before)
+    return counts[-1]
+
+def rate(seconds):
+    start_count = received_total()
+    deadline = time.perf_counter() + seconds
+    message = Twist()
+    while time.perf_counter() < deadline:
+        message.linear.x = 0.1
+        twist.publish(message)
+    time.sleep(0.5)
+    return (received_total() - start_count) / seconds
+
+print("ready", flush=True)
+for line in sys.stdin:
+    what, amount = line.split()
+    print(json.dumps({"topic": topic, "service": service, "action": action}[what](int(amount))
+                     if what != "rate" else rate(float(amount))), flush=True)
+os._exit(0)  # the spinning thread would abort a normal interpreter exit
+'''
+
+
+class PlainRclpy:
+    """The plain rclpy client process; ``measure(what, amount)`` runs one block of trials there."""
+
+    def __init__(self, env):
+        self.process = subprocess.Popen([str(ROS2_PYTHON), "-c", PLAIN_CLIENT], env=env, stdin=subprocess.PIPE,
+                                        stdout=subprocess.PIPE, text=True)
+        assert self.process.stdout.readline().startswith("ready")
+
+    def measure(self, what, amount):
+        self.process.stdin.write(f"{what} {amount}\n")
+        self.process.stdin.flush()
+        return json.loads(self.process.stdout.readline())
+
+    def close(self):
+        self.process.stdin.close()
+        self.process.wait(10)
+
+
+def alternating(plain, what, rockly_block, trials):
+    """Blocks of ``trials / ROUNDS`` trials, plain rclpy and Rockly taking turns (a busy machine's
+    load then weighs on both alike); all the times of each."""
+    plain_times, rockly_times = [], []
+    for _ in range(ROUNDS):
+        plain_times += plain.measure(what, trials // ROUNDS)
+        rockly_times += rockly_block(trials // ROUNDS)
+    return rockly_times, plain_times
+
+
+def median_ms(values):
+    return statistics.median(values) * 1000
+
+
+def report(name, rockly, plain, aim=1.3):
+    ratio = statistics.median(rockly) / statistics.median(plain)
+    print(f"{name}: Rockly median {median_ms(rockly):.3f} ms, rclpy median {median_ms(plain):.3f} ms, "
+          f"ratio {ratio:.2f} (aim <= {aim})")
+
+
+def main():
+    import tempfile
+
+    from rockly_desktop.robot.ros2.environment import Ros2Settings
+
+    if not ROS2_PYTHON.exists():
+        sys.exit(f"no {ROS2_PYTHON}: run 'make ros2' first")
+    settings = Ros2Settings(domain_id=200 + os.getpid() % 30, discovery="localhost")
+    home = Path(tempfile.mkdtemp(prefix="rockly-bench-ros2-"))
+    env = settings.environment()
+    env.update(ROS_HOME=str(home), ROS_LOG_DIR=str(home / "log"))
+    os.environ.update(ROS_HOME=str(home), ROS_LOG_DIR=str(home / "log"))
+    echo = subprocess.Popen([str(ROS2_PYTHON), "-c", ECHO_NODE], env=env, stdin=subprocess.PIPE,
+                            stdout=subprocess.PIPE, text=True)
+    assert echo.stdout.readline().startswith("ready")
+    plain = PlainRclpy(env)
+    try:
+        run_all(settings, plain)
+    finally:
+        from rockly_desktop.robot.ros2.client import Ros2Helper
+
+        plain.close()
+        Ros2Helper.close_current()
+        echo.stdin.close()
+        echo.wait(10)
+
+
+def run_all(settings, plain):
+    from rockly_desktop.profiles.registry import ProfileRegistry
+    from rockly_desktop.robot.interrupt import Interrupt
+    from rockly_desktop.robot.ros2.link import Ros2Robot
+
+    turtlebot = ProfileRegistry.discover().get("turtlebot")
+    started = time.perf_counter()
+    robot = Ros2Robot(turtlebot, settings)
+    print(f"link up (helper started, safe stop's publisher matched): {(time.perf_counter() - started) * 1000:.0f} ms")
+    backend = robot.backend(Interrupt())
+
+    def wait_for(predicate):
+        while not predicate():
+            time.sleep(0.00005)
+
+    # --- topic round trip ---------------------------------------------------------------
+    arrivals = []
+    backend.subscribe("/pong", "std_msgs/Float64", lambda m: arrivals.append(time.perf_counter()))
+    backend.publish("/ping", "std_msgs/Float64", {"data": 0.0})  # the first waits for the echo node to match
+    wait_for(lambda: arrivals)
+
+    def topic(n):
+        times = []
+        for _ in range(n):
+            before = len(arrivals)
+            started = time.perf_counter()
+            backend.publish("/ping", "std_msgs/Float64", {"data": 1.0})
+            wait_for(lambda before=before: len(arrivals) > before)
+            times.append(arrivals[-1] - started)
+        return times
+
+    report("topic round trip (/ping -> echo node -> /pong)", *alternating(plain, "topic", topic, TRIALS))
+
+    # --- service call -------------------------------------------------------------------
+    backend.call_service("/bench_trigger", "std_srvs/Trigger", {}, 10)
+
+    def service(n):
+        times = []
+        for _ in range(n):
+            started = time.perf_counter()
+            backend.call_service("/bench_trigger", "std_srvs/Trigger", {}, 5)
+            times.append(time.perf_counter() - started)
+        return times
+
+    report("service call (std_srvs/Trigger)", *alternating(plain, "service", service, TRIALS))
+
+    # --- action round trip --------------------------------------------------------------
+    backend.send_goal("/bench_fib", "test_msgs/Fibonacci", {"order": 0}).wait(10)
+
+    def action(n):
+        times = []
+        for _ in range(n):
+            started = time.perf_counter()
+            backend.send_goal("/bench_fib", "test_msgs/Fibonacci", {"order": 0}).wait(5)
+            times.append(time.perf_counter() - started)
+        return times
+
+    report("action round trip (goal -> succeeded)", *alternating(plain, "action", action, ACTION_TRIALS))
+
+    # --- publish rate ------------------------------------------------------------------
+    counts = []
+    backend.subscribe("/twist_count", "std_msgs/Float64", lambda m: counts.append(m["data"]))
+    backend.publish("/count_please", "std_msgs/Float64", {"data": 0.0})
+    wait_for(lambda: counts)
+
+    def received_total():
+        before = len(counts)
+        backend.publish("/count_please", "std_msgs/Float64", {"data": 0.0})
+        wait_for(lambda: len(counts) > before)
+        return counts[-1]
+
+    def rate(seconds):
+        start_count = received_total()
+        deadline = time.perf_counter() + seconds
+        while time.perf_counter() < deadline:
+            backend.publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.1}})
+        time.sleep(0.5)  # what is still on its way arrives
+        return (received_total() - start_count) / seconds
+
+    backend.publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.1}})
+    rockly_rates, plain_rates = [], []
+    for _ in range(2):
+        plain_rates.append(plain.measure("rate", RATE_SECONDS / 2))
+        rockly_rates.append(rate(RATE_SECONDS / 2))
+    rockly_rate, plain_rate = statistics.mean(rockly_rates), statistics.mean(plain_rates)
+    print(f"publish rate (Twist, received by the echo node): Rockly {rockly_rate:,.0f}/s, "
+          f"rclpy {plain_rate:,.0f}/s, ratio {plain_rate / max(rockly_rate, 1):.2f} (aim <= 1.3)")
+    previous = -1.0
+    while previous != (total := received_total()):  # the echo node has taken every Twist sent
+        previous = total
+        time.sleep(0.2)
+
+    # --- stop latency on the wire -------------------------------------------------------
+    from rockly_desktop.executor.control import RunControl
+    from rockly_desktop.executor.run_setup import make_runner
+
+    seen = []
+    backend.subscribe("/twist_seen", "std_msgs/Float64", lambda m: seen.append(m["data"]))
+    latencies = []
+    for _ in range(STOP_TRIALS):
+        control = RunControl()
+        code = "robot.backend.publish('/cmd_vel', 'geometry_msgs/Twist', {'linear': {'x': 0.2}})\nrobot.wait(60)\n"
+        runner = make_runner(turtlebot, robot, {"code": code, "variables": {}}, control, lambda e: None)
+        thread = threading.Thread(target=runner.run)
+        thread.start()
+        time.sleep(0.1)
+        before = len(seen)
+        requested = time.time()
+        control.request_stop()
+        thread.join(5)
+        deadline = time.monotonic() + 5
+        while len(seen) == before and time.monotonic() < deadline:
+            time.sleep(0.0005)
+        latencies.append(seen[before] - requested)
+    print(f"stop latency on the wire (stop -> zero Twist at the echo node): median {median_ms(latencies):.2f} ms, "
+          f"max {max(latencies) * 1000:.2f} ms over {STOP_TRIALS} stops (aim max <= 20 ms)")
+    robot.shutdown()
+
+    # --- the helper killed mid-wait ----------------------------------------------------
+    import signal
+
+    failed = []
+
+    def wait():
+        try:
+            robot.backend(Interrupt()).wait_for_message("/nobody_publishes_this", "std_msgs/String", 60)
+        except Exception:
+            failed.append(time.perf_counter())
+
+    waiter = threading.Thread(target=wait)
+    waiter.start()
+    time.sleep(0.5)
+    killed = time.perf_counter()
+    os.kill(robot.helper.process.pid, signal.SIGKILL)
+    waiter.join(10)
+    print(f"helper killed mid-wait -> the command fails: {(failed[0] - killed) * 1000:.1f} ms (aim <= 2 s)")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,249 @@
+"""The RobotBackend on ROS 2: topics, services, actions and parameters through the helper process.
+
+Every wait polls in 10 ms steps, so a stop request ends it at once, and fails at once with
+RobotConnectionLost when the helper process is gone. Publishing is one-way after a topic's
+first message (which waits for the publisher to match its subscribers); a failure of a
+one-way request is raised by the next command.
+"""
+import threading
+import time
+
+from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
+from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
+
+POLL_SECONDS = 0.01
+
+
+class Ros2Graph:
+    """What runs share over one helper: subscriptions by topic, the topics published, the
+    last message this node sent per topic, and who watches service calls (thread-safe)."""
+
+    def __init__(self, helper):
+        self.helper = helper
+        self._lock = threading.Lock()
+        self._topics = {}
+        self.published = set()
+        self.actions_ready = set()  # actions a goal reached: later goals need no answer before they go
+        self.sent = {}  # topic -> (when, message) this node last published
+        self.service_watchers = []
+
+    def topic(self, topic: str, msg_type: str) -> "Ros2Topic":
+        """The shared subscription to ``topic`` (``msg_type`` None: the graph's type)."""
+        with self._lock:
+            entry = self._topics.get(topic)
+            if entry is None:
+                entry = Ros2Topic(self.helper, topic, msg_type)
+                self._topics[topic] = entry
+            return entry
+
+    def publish(self, topic: str, msg_type: str, message: dict, interrupt=None):
+        """Publish; a topic's first message waits for the helper (publisher made, subscribers matched)."""
+        if topic in self.published:
+            self.helper.cast("publish", topic, msg_type, message)
+        else:
+            self.helper.call("publish_first", topic, msg_type, message, interrupt=interrupt)
+            self.published.add(topic)
+        self.sent[topic] = (time.monotonic(), message)
+
+    def close(self):
+        """Stop every subscription (the helper stays)."""
+        with self._lock:
+            topics, self._topics = list(self._topics.values()), {}
+        for entry in topics:
+            entry.close()
+
+
+class Ros2Topic:
+    """One subscription in the helper: the latest message (a dict) and the callbacks fanned out to."""
+
+    def __init__(self, helper, topic, msg_type):
+        self._helper = helper
+        self.name = topic
+        self.sid = helper.new_id()
+        self.latest = None
+        self.received_at = None
+        self.callbacks = []
+        helper.on("msg", self.sid, self._on_message)
+        try:
+            self.msg_type = helper.call("subscribe", self.sid, topic, msg_type)
+        except Exception:
+            helper.off("msg", self.sid)
+            raise
+
+    def _on_message(self, message):
+        self.latest = message
+        self.received_at = time.monotonic()
+        for callback in list(self.callbacks):
+            callback(message)
+
+    def close(self):
+        self._helper.off("msg", self.sid)
+        if not self._helper.lost:
+            self._helper.cast("unsubscribe", self.sid)
+
+
+class Ros2GoalHandle(GoalHandle):
+    """A goal the helper sent; its end comes as a 'goal_end' event."""
+
+    def __init__(self, backend, gid, action):
+        self._backend = backend
+        self._gid = gid
+        self._action = action
+        self.finished = threading.Event()
+        self.outcome = None
+
+    def ended(self, data):
+        """The helper's (status, result, text) for this goal."""
+        status, result, text = data
+        self.outcome = GoalOutcome(GoalStatus(status), result, text)
+        self.finished.set()
+
+    def done(self) -> bool:
+        """True once the goal reached a terminal state."""
+        return self.finished.is_set()
+
+    def wait(self, timeout: float) -> GoalOutcome:
+        """Wait (interruptibly, failing at once when the helper is gone) for the goal's end."""
+        if not self._backend.wait_for_event(self.finished, timeout):
+            raise RobotTimeout(f"the action '{self._action}' did not finish within {timeout:g} s")
+        return self.outcome
+
+    def cancel(self) -> None:
+        """Ask the action server to stop this goal."""
+        if not self.finished.is_set():
+            self._backend.graph.helper.cast("cancel_goal", self._gid)
+
+
+class Ros2Backend(RobotBackend):
+    """A RobotBackend over a Ros2Graph; ``interrupt`` ends its waits."""
+
+    def __init__(self, graph: Ros2Graph, interrupt):
+        self.graph = graph
+        self.interrupt = interrupt
+
+    @property
+    def _helper(self):
+        return self.graph.helper
+
+    def _check(self):
+        self.interrupt.check()
+        self._helper.check()
+
+    def wait_until(self, predicate, timeout: float) -> bool:
+        """Poll ``predicate`` until true (True) or ``timeout`` (False); a stop or a lost helper raises."""
+        deadline = time.monotonic() + timeout
+        while True:
+            self._check()
+            if predicate():
+                return True
+            if time.monotonic() >= deadline:
+                return False
+            self.interrupt.nap(POLL_SECONDS)
+
+    def wait_for_event(self, event: threading.Event, timeout: float) -> bool:
+        """Like wait_until for an Event, but wakes the moment it is set."""
+        deadline = time.monotonic() + timeout
+        while True:
+            self._check()
+            remaining = deadline - time.monotonic()
+            if event.wait(max(0.0, min(POLL_SECONDS, remaining))):
+                return True
+            if remaining <= 0:
+                return False
+
+    def publish(self, topic: str, msg_type: str, message: dict) -> None:
+        """Publish ``message`` on ``topic`` (reliable unless the profile's ``ros_interface.qos`` says otherwise)."""
+        self._check()
+        self.graph.publish(topic, msg_type, message, self.interrupt)
+
+    def subscribe(self, topic: str, msg_type: str, callback):
+        """Call ``callback(dict)`` per message; returns the unsubscribe function."""
+        self._check()
+        entry = self.graph.topic(topic, msg_type)
+        entry.callbacks.append(callback)
+
+        def unsubscribe():
+            if callback in entry.callbacks:
+                entry.callbacks.remove(callback)
+        return unsubscribe
+
+    def latest(self, topic: str, msg_type: str):
+        """The last message seen on ``topic`` (subscribing on first use) or sent by this node, or None."""
+        self._check()
+        entry = self.graph.topic(topic, msg_type)
+        sent_at, sent = self.graph.sent.get(topic, (None, None))
+        if sent is not None and (entry.received_at is None or sent_at >= entry.received_at):
+            return sent
+        return entry.latest
+
+    def wait_for_message(self, topic: str, msg_type: str, timeout: float) -> dict:
+        """The next message on ``topic``; RobotTimeout naming it after ``timeout``."""
+        received, arrived = [], threading.Event()
+        unsubscribe = self.subscribe(topic, msg_type, lambda message: (received.append(message), arrived.set()))
+        try:
+            if not self.wait_for_event(arrived, timeout):
+                raise RobotTimeout(f"no message arrived on the topic '{topic}' within {timeout:g} s")
+        finally:
+            unsubscribe()
+        return received[0]
+
+    def call_service(self, name: str, srv_type: str, request: dict, timeout: float) -> dict:
+        """Call a service; Stop, a lost helper and ``timeout`` end the wait at once."""
+        self._check()
+        response = self._helper.call("service", name, srv_type, request, timeout, interrupt=self.interrupt)
+        for watcher in list(self.graph.service_watchers):
+            watcher(name, "service", {"request": request, "response": response})
+        return response
+
+    def send_goal(self, action: str, action_type: str, goal: dict, feedback=None) -> GoalHandle:
+        """Send a goal (the helper waits up to 5 s for the action server); feedback as dicts."""
+        self._check()
+        helper = self._helper
+        gid = helper.new_id()
+        handle = Ros2GoalHandle(self, gid, action)
+        if feedback is not None:
+            helper.on("feedback", gid, feedback)
+        helper.on("goal_end", gid, lambda data: (helper.off("feedback", gid), helper.off("goal_end", gid),
+                                                  handle.ended(data)))
+        if action in self.graph.actions_ready:
+            helper.cast("goal", gid, action, action_type, goal)  # a failure ends the goal (aborted, with why)
+            return handle
+        try:
+            helper.call("goal", gid, action, action_type, goal, interrupt=self.interrupt)
+        except Exception:
+            helper.off("feedback", gid)
+            helper.off("goal_end", gid)
+            raise
+        self.graph.actions_ready.add(action)
+        return handle
+
+    def cancel_all_goals(self, action: str) -> None:
+        """Cancel every goal on the action server (a cancel request with a zero goal id)."""
+        self._check()
+        self._helper.cast("cancel_all", action)
+
+    def get_param(self, name: str, default=None):
+        """A node's parameter (``node:param``; ``/node/param`` means the same), or ``default``."""
+        self._check()
+        found, value = self._helper.call("get_param", *_node_and_param(name), interrupt=self.interrupt)
+        return value if found else default
+
+    def set_param(self, name: str, value) -> None:
+        """Set a node's parameter (``node:param``)."""
+        self._check()
+        self._helper.call("set_param", *_node_and_param(name), value, interrupt=self.interrupt)
+
+    def sleep(self, seconds: float) -> None:
+        """Wait ``seconds`` (pausable, stoppable; a lost helper ends it at once)."""
+        self.interrupt.sleep(seconds, watch=self._helper.check)
+
+
+def _node_and_param(name: str) -> tuple:
+    """ROS 2 parameters live on nodes: ``node:param``, or ROS 1's ``/node/param`` read the same way."""
+    if ":" in name:
+        node, param = name.split(":", 1)
+    else:
+        node, _slash, param = name.strip("/").rpartition("/")
+    if not node or not param:
+        raise RobotCommandError(f"a ROS 2 parameter is named 'node:parameter', not '{name}'")
+    return node, param

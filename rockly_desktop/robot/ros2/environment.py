@@ -1,0 +1,89 @@
+"""Where ROS 2 comes from (``.venv-ros2``) and the link settings the helper process gets.
+
+ROS 2 is installed by ``make ros2`` (``scripts/setup-ros2.sh``) into ``.venv-ros2`` beside
+Rockly's own venv; ``ROCKLY_ROS2_PYTHON`` names another Python with rclpy instead.
+"""
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+from rockly_desktop.core.errors import RocklyError
+
+PROJECT_ROOT = Path(__file__).resolve().parents[3]
+SETUP_STEP = "make ros2"
+DISCOVERY_RANGES = ("localhost", "subnet", "off", "system_default")
+
+
+class Ros2Unavailable(RocklyError):
+    """ROS 2 is not set up here, or its helper process did not start.
+
+    ``reason`` names the case for a window that says it in its own language ('no_ros2':
+    ``.venv-ros2`` is missing; 'helper_failed': it did not start); ``values`` are what the
+    message names (``step``, ``python``, ``detail``).
+    """
+
+    def __init__(self, message: str, reason: str, **values):
+        super().__init__(message)
+        self.reason = reason
+        self.values = values
+
+
+@dataclass(frozen=True)
+class Ros2Settings:
+    """How the link reaches the ROS 2 graph: domain id, discovery range and static peers.
+
+    ``None`` keeps what the environment says (``ROS_DOMAIN_ID`` etc., else ROS 2's defaults:
+    domain 0, subnet). ``peers`` are host names or addresses of robots to reach beyond
+    the range (``ROS_STATIC_PEERS``).
+    """
+
+    domain_id: int = None
+    discovery: str = None
+    peers: tuple = ()
+
+    def __post_init__(self):
+        if self.domain_id is not None and not 0 <= int(self.domain_id) <= 232:
+            raise ValueError(f"a ROS 2 domain id is 0 to 232, not {self.domain_id}")
+        if self.discovery is not None and self.discovery not in DISCOVERY_RANGES:
+            raise ValueError(f"the discovery range is one of {', '.join(DISCOVERY_RANGES)}, not {self.discovery!r}")
+
+    def environment(self, base=None) -> dict:
+        """``base`` (the process's environment) with these settings as ROS 2's variables."""
+        env = dict(os.environ if base is None else base)
+        if self.domain_id is not None:
+            env["ROS_DOMAIN_ID"] = str(int(self.domain_id))
+        if self.discovery is not None:
+            env["ROS_AUTOMATIC_DISCOVERY_RANGE"] = self.discovery.upper()
+        if self.peers:
+            env["ROS_STATIC_PEERS"] = ";".join(self.peers)
+        return env
+
+    def describe(self, environment=None) -> str:
+        """'domain 7, localhost' as the status bar and health light say it."""
+        env = self.environment(environment)
+        text = f"domain {env.get('ROS_DOMAIN_ID') or 0}, {env.get('ROS_AUTOMATIC_DISCOVERY_RANGE', 'subnet').lower()}"
+        peers = env.get("ROS_STATIC_PEERS")
+        return f"{text}, peers {peers.replace(';', ', ')}" if peers else text
+
+
+def ros2_python() -> Path:
+    """The Python that runs the helper; Ros2Unavailable naming the set-up step when there is none."""
+    configured = os.environ.get("ROCKLY_ROS2_PYTHON")
+    python = Path(configured) if configured else PROJECT_ROOT / ".venv-ros2" / "bin" / "python"
+    if not python.exists():
+        raise Ros2Unavailable(
+            f"ROS 2 is not set up on this computer (no {python}): run '{SETUP_STEP}' in Rockly's folder "
+            f"({PROJECT_ROOT}), which installs the pinned ROS 2 wheels into .venv-ros2",
+            "no_ros2", step=SETUP_STEP, python=str(python))
+    return python
+
+
+def ros2_definition_dirs() -> list:
+    """Folders with the ROS 2 environment's interface definitions (``<dir>/<pkg>/msg/*.msg``), for a
+    ``DefinitionCatalog(profile.message_folders, installed_dirs=...)`` of the typed ROS blocks:
+    the wheels' ``share`` of ``.venv-ros2`` (read without starting the helper) and any sourced
+    ROS 2 workspaces (``AMENT_PREFIX_PATH``) — what the helper's own ``hello`` lists."""
+    configured = os.environ.get("ROCKLY_ROS2_PYTHON")
+    prefix = Path(configured).parents[1] if configured else PROJECT_ROOT / ".venv-ros2"
+    prefixes = [prefix] + [Path(entry) for entry in os.environ.get("AMENT_PREFIX_PATH", "").split(os.pathsep) if entry]
+    return [path / "share" for path in prefixes if (path / "share").is_dir()]

@@ -1,0 +1,118 @@
+"""The robot link on ROS 2: a real robot (or a ROS-2-level simulator) through the helper process.
+
+The same public shape as the ROS 1 link: ``name``, ``profile``, ``connection``, ``state``,
+``backend(interrupt)``, ``follow_graph``, ``graph_topics``, ``health``, ``safe_stop``, ``snapshot``,
+``shutdown``.
+"""
+import time
+
+from rockly_desktop.core.state_store import StateStore
+from rockly_desktop.robot.health import GREEN, RED, HealthItem, server_health, topic_health
+from rockly_desktop.robot.interrupt import Interrupt
+from rockly_desktop.robot.ros2.backend import Ros2Backend, Ros2Graph
+from rockly_desktop.robot.ros2.client import Ros2Helper
+from rockly_desktop.robot.ros2.environment import Ros2Settings
+from rockly_desktop.robot.safe_stop import run_safe_stop
+
+
+class Ros2Connection:
+    """The link's state as the window shows it, in the ROS 1 connection's shape (``status``,
+    ``lost``, ``round_trip``, ``master_uri``); ROS 2 has no master, so ``master_uri`` is the
+    link's description ('ROS 2, domain 7, localhost')."""
+
+    def __init__(self, helper, settings):
+        self._helper = helper
+        self.master_uri = f"ROS 2, {settings.describe()}"
+        self.round_trip = None  # seconds to the helper and back, as of the last health look
+
+    @property
+    def lost(self) -> bool:
+        """True once the helper process is gone."""
+        return self._helper.lost
+
+    @property
+    def status(self) -> str:
+        """connected | lost."""
+        return "lost" if self._helper.lost else "connected"
+
+    def measure(self):
+        """Time a round trip to the helper (``round_trip``); a gone helper leaves it as it was."""
+        started = time.perf_counter()
+        try:
+            self._helper.call("ping", timeout=2.0)
+        except Exception:
+            return
+        self.round_trip = time.perf_counter() - started
+
+
+class Ros2Robot:
+    """A robot on ROS 2, through this process's one helper (started on first use).
+
+    ``settings`` (Ros2Settings) are the domain id, discovery range and static peers. Raises
+    Ros2Unavailable when ROS 2 is not set up (naming ``make ros2``) or its helper does not start.
+    """
+
+    name = "ros2"
+
+    def __init__(self, profile, settings: Ros2Settings = None):
+        self.profile = profile
+        self.settings = settings or Ros2Settings()
+        self.helper = Ros2Helper.get(self.settings)
+        self.connection = Ros2Connection(self.helper, self.settings)
+        interface = profile.ros_interface
+        # its last act, should Rockly die: the profile's safe stop (its publishers are made now; one
+        # of a type ROS 2 lacks fails when the stop is done, saying so, as on ROS 1)
+        unknown = self.helper.call("configure", dict(interface.get("qos") or {}), list(profile.safe_stop),
+                                   timeout=10.0)
+        self.graph = Ros2Graph(self.helper)
+        self.graph.published.update(action["publish"]["topic"] for action in profile.safe_stop
+                                    if "publish" in action and action["publish"]["topic"] not in unknown)
+        self.state = StateStore()
+        self.graph.service_watchers.append(self.state.record)
+        self._feed = None
+
+    def follow_graph(self):
+        """Start filling ``state`` from every topic of the graph (for the panels); idempotent."""
+        if self._feed is None:
+            from rockly_desktop.robot.ros2.state_feed import Ros2StateFeed
+
+            self._feed = Ros2StateFeed(self.graph, self.state)
+        return self._feed
+
+    def backend(self, interrupt: Interrupt):
+        """A backend whose waits end when ``interrupt`` is stopped or the helper is gone."""
+        return Ros2Backend(self.graph, interrupt)
+
+    def snapshot(self):
+        """A real robot has no simulator view."""
+        return None
+
+    def graph_topics(self) -> list:
+        """(topic, type, publisher count) of the ROS 2 graph (once ``follow_graph`` runs)."""
+        return self._feed.graph_topics() if self._feed is not None else []
+
+    def health(self) -> list:
+        """HealthItems: the link (domain, discovery range), the robot's topics, services and action servers."""
+        interface = self.profile.ros_interface
+        where = self.settings.describe()
+        if self.helper.lost:
+            return [HealthItem("ROS 2", RED, f"{where}: {self.helper.lost_error()}")]
+        self.connection.measure()
+        link = HealthItem("ROS 2", GREEN, f"{where}, {self.helper.info.get('distro', 'ROS 2')}, helper round trip "
+                          f"{(self.connection.round_trip or 0) * 1000:.1f} ms")
+        feed = self.follow_graph()
+        return [link] + topic_health(interface, self.state.topics()) + server_health(
+            interface, lambda kind, name: f"/{name.strip('/')}" in (
+                feed.services() if kind == "services" else feed.actions()))
+
+    def safe_stop(self) -> list:
+        """Do the profile's safe stop now; returns what failed."""
+        return run_safe_stop(self.profile.safe_stop, self.backend(Interrupt()))
+
+    def shutdown(self):
+        """Stop the robot safely and stop following the graph; the helper stays for the process."""
+        if self._feed is not None:
+            self._feed.stop()
+            self._feed = None
+        self.safe_stop()
+        self.graph.close()

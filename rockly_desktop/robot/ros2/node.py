@@ -1,0 +1,432 @@
+"""Rockly's ROS 2 helper process: one rclpy node that does what Rockly asks over stdin/stdout.
+
+Started by ``client.Ros2Helper`` with ``.venv-ros2``'s Python (which imports this package from
+Rockly's folder and calls ``main``); it imports rclpy and this package's helper-side modules
+only. Requests come as ``wire`` frames on stdin; the node
+spins in its own thread (subscription, feedback and result callbacks), waits that may take a
+while (a service or action server to appear) run in a small pool, everything else inline.
+
+When stdin ends (Rockly quit or died) or SIGTERM comes, its last act is the profile's safe
+stop (given by ``configure``), then it leaves.
+"""
+import os
+import signal
+import sys
+import threading
+import time
+from concurrent.futures import ThreadPoolExecutor
+
+import rclpy
+from rclpy.action import ActionClient
+from rclpy.executors import SingleThreadedExecutor
+from rclpy.signals import SignalHandlerOptions
+
+from rockly_desktop.robot.ros2 import qos, wire
+from rockly_desktop.robot.ros2.ros_values import (
+    from_message,
+    interface_class,
+    parameter_value,
+    to_message,
+    to_parameter_value,
+)
+
+FIRST_PUBLISH_WAIT = 1.0  # a new publisher waits this long for the graph's subscribers to match
+DISCOVERY_SECONDS = 3.0  # a new DDS participant may take 2 s to discover the others on this machine
+ACTION_SERVER_WAIT = 5.0
+PARAMETER_WAIT = 2.0
+SERVER_SETTLE = 0.25
+PARAMETER_TRIES = 3  # reading or setting a parameter is safe to ask again when an answer was lost
+TOPIC_WAIT = 1.0  # a subscription without a type waits this long for the topic to be discovered
+_GOAL_STATUS = {4: "succeeded", 5: "preempted", 6: "aborted"}
+
+
+class Failure(Exception):
+    """A request that cannot be done; ``kind`` is 'timeout' or 'command' (Rockly's error class)."""
+
+    def __init__(self, kind, text):
+        super().__init__(text)
+        self.kind = kind
+
+
+class Reported(Failure):
+    """A failure already told to Rockly another way (a goal's end): a cast does not report it again."""
+
+
+class Helper:
+    """The node and its endpoints, one per name; answers requests (see ``wire``)."""
+
+    def __init__(self, out):
+        self._out = out
+        self.started = time.monotonic()
+        self._out_lock = threading.Lock()
+        self._lock = threading.Lock()
+        rclpy.init(signal_handler_options=SignalHandlerOptions.NO)  # our SIGTERM: the safe stop first
+        # no parameter services of its own: fewer entities for the executor to wait on
+        self.node = rclpy.create_node(f"rockly_{os.getpid()}", start_parameter_services=False)
+        self._executor = SingleThreadedExecutor()
+        self._executor.add_node(self.node)
+        self._spin = threading.Thread(target=self._executor.spin, name="ros2-spin", daemon=True)
+        self._spin.start()
+        self._pool = ThreadPoolExecutor(8, thread_name_prefix="ros2-wait")
+        self._publishers = {}
+        self._subscriptions = {}
+        self._services = {}
+        self._actions = {}
+        self._goals = {}
+        self._settled = set()
+        self.qos_overrides = {}
+        self.safe_stop = []
+        self.sim = None
+
+    # --- sending to Rockly
+    def send(self, frame):
+        data = wire.encode(frame)
+        with self._out_lock:
+            self._out.write(data)
+            self._out.flush()
+
+    def event(self, kind, key, data=None):
+        self.send((wire.EVENT, kind, key, data))
+
+    # --- requests
+    # requests that may wait (for a server, a match, an answer) run on the pool, not the reading loop
+    WAITING_OPS = {"publish_first", "subscribe", "service", "goal", "cancel_all", "get_param", "set_param"}
+
+    def handle(self, frame):
+        """Do one request (``op_<name>``): inline, or on the pool when it may wait (a goal to a
+        server already reached does not)."""
+        mode, call_id, op, args = frame
+        method = getattr(self, f"op_{op}", None)
+        if method is None:
+            return self._answer(mode, call_id, False, ("command", f"unknown request '{op}'"), op)
+        if op in self.WAITING_OPS and not (op == "goal" and self._server_ready(args[1])):
+            self._pool.submit(self._run, mode, call_id, op, method, args)
+        else:
+            self._run(mode, call_id, op, method, args)
+
+    def _run(self, mode, call_id, op, method, args):
+        try:
+            value = method(*args)
+        except Reported as error:
+            if mode == wire.CALL:
+                self._answer(mode, call_id, False, (error.kind, str(error)), op)
+        except Failure as error:
+            self._answer(mode, call_id, False, (error.kind, str(error)), op)
+        except (LookupError, ValueError, TypeError, AssertionError) as error:
+            self._answer(mode, call_id, False, ("command", str(error)), op)
+        except Exception as error:  # the helper must outlive a failed request
+            self._answer(mode, call_id, False, ("command", f"{type(error).__name__}: {error}"), op)
+        else:
+            self._answer(mode, call_id, True, value, op)
+
+    def _answer(self, mode, call_id, ok, value, op):
+        if mode == wire.CALL:
+            self.send((wire.REPLY, call_id, ok, value))
+        elif not ok:
+            self.event("failed", op, value)
+
+    def op_ping(self, value=None):
+        return value
+
+    def op_configure(self, qos_overrides, safe_stop):
+        """The profile's QoS overrides and safe stop; the stop's publishers are made (and matched) now.
+        Returns the topics that cannot be published here (a type ROS 2's environment lacks)."""
+        self.qos_overrides = dict(qos_overrides or {})
+        self.safe_stop = list(safe_stop or [])
+        problems = []
+        for action in self.safe_stop:
+            if "publish" in action:
+                try:
+                    self.op_publish_first(action["publish"]["topic"], action["publish"]["type"], None)
+                except LookupError:
+                    problems.append(action["publish"]["topic"])
+        return problems
+
+    def _publisher(self, topic, type_name):
+        with self._lock:
+            entry = self._publishers.get(topic)
+            if entry is None:
+                message_class = interface_class(type_name, "msg")
+                publisher = self.node.create_publisher(
+                    message_class, topic, qos.for_publisher(topic, self.qos_overrides))
+                entry = self._publishers[topic] = (publisher, message_class)
+            return entry
+
+    def op_publish_first(self, topic, type_name, message):
+        """Make the publisher, wait (≤ 1 s) until the subscribers the graph lists have matched it, publish."""
+        publisher, _class = self._publisher(topic, type_name)
+        self._match(publisher, topic)
+        if message is not None:
+            self.op_publish(topic, type_name, message)
+
+    def _match(self, publisher, topic):
+        """Wait (≤ 1 s) until ``publisher`` has matched every subscriber the graph lists for ``topic``,
+        and at least one: discovery is gradual in ROS 2, a robot's subscriber may not be known yet
+        (in the helper's first seconds, it waits until discovery had DISCOVERY_SECONDS)."""
+        deadline = max(time.monotonic() + FIRST_PUBLISH_WAIT, self.started + DISCOVERY_SECONDS)
+        while (publisher.get_subscription_count() < max(1, self.node.count_subscribers(topic))
+               and time.monotonic() < deadline):
+            time.sleep(0.005)
+
+    def op_publish(self, topic, type_name, message):
+        """Publish; while the publisher has matched nobody but the graph lists subscribers, match first."""
+        publisher, message_class = self._publisher(topic, type_name)
+        if publisher.get_subscription_count() == 0 and self.node.count_subscribers(topic) > 0:
+            self._match(publisher, topic)
+        publisher.publish(to_message(message_class, message))
+
+    def op_subscribe(self, sid, topic, type_name):
+        """Subscribe (QoS matched to the publishers); messages come as ('msg', sid, dict) events.
+
+        Without a type, the graph's type of ``topic`` is used. Returns the type.
+        """
+        deadline = time.monotonic() + TOPIC_WAIT
+        while not type_name:
+            type_name = (dict(self.node.get_topic_names_and_types()).get(topic) or [None])[0]
+            if type_name:
+                break
+            if time.monotonic() >= deadline:
+                raise Failure("timeout", f"there is no topic '{topic}' (nobody publishes it)")
+            time.sleep(0.01)
+        message_class = interface_class(type_name, "msg")
+        profile = qos.for_subscription(topic, type_name, self.node.get_publishers_info_by_topic(topic),
+                                       self.qos_overrides)
+        send = self.send
+        subscription = self.node.create_subscription(
+            message_class, topic, lambda message: send((wire.EVENT, "msg", sid, from_message(message))), profile)
+        self._subscriptions[sid] = subscription
+        return type_name
+
+    def op_unsubscribe(self, sid):
+        subscription = self._subscriptions.pop(sid, None)
+        if subscription is not None:
+            self.node.destroy_subscription(subscription)
+
+    def op_graph(self):
+        """Topics (name, types, publisher count), services and action names of the ROS 2 graph."""
+        topics = [(name, types, self.node.count_publishers(name))
+                  for name, types in self.node.get_topic_names_and_types()]
+        services = [name for name, _types in self.node.get_service_names_and_types()]
+        actions = sorted({name[:-len("/_action/send_goal")] for name in services
+                          if name.endswith("/_action/send_goal")})
+        return {"topics": topics, "services": services, "actions": actions}
+
+    # --- services
+    def _ready(self, client, timeout, problem):
+        """Wait for ``client``'s server; the first time, also give the server SERVER_SETTLE to discover
+        us: a server that has not matched the client's reader drops its answer (Fast DDS waits 100 ms)."""
+        if not client.wait_for_service(timeout_sec=timeout):
+            raise Failure("timeout", problem)
+        if client not in self._settled:
+            time.sleep(SERVER_SETTLE)
+            self._settled.add(client)
+
+    def _service_client(self, name, type_name):
+        with self._lock:
+            client = self._services.get(name)
+            if client is None:
+                client = self._services[name] = (self.node.create_client(interface_class(type_name, "srv"), name))
+            return client
+
+    def op_service(self, name, type_name, request, timeout):
+        """Call a service (waiting up to ``timeout`` for it to appear and answer); the response dict."""
+        client = self._service_client(name, type_name)
+        deadline = time.monotonic() + timeout
+        self._ready(client, timeout, f"the service '{name}' is not available (waited {timeout:g} s)")
+        future = client.call_async(to_message(client.srv_type.Request, request))
+        done = threading.Event()
+        future.add_done_callback(lambda _future: done.set())
+        if not done.wait(max(0.0, deadline - time.monotonic())):
+            client.remove_pending_request(future)
+            raise Failure("timeout", f"the service '{name}' did not answer within {timeout:g} s")
+        if future.exception() is not None:
+            raise Failure("command", f"the service '{name}' failed: {future.exception()}")
+        return from_message(future.result())
+
+    # --- actions
+    def _server_ready(self, action) -> bool:
+        """True when a goal to ``action`` need not wait for its server (it can be sent inline)."""
+        client = self._actions.get(action)
+        return client is not None and client.server_is_ready()
+
+    def _action_client(self, action, type_name):
+        with self._lock:
+            client = self._actions.get(action)
+            if client is None:
+                client = self._actions[action] = ActionClient(self.node, interface_class(type_name, "action"), action)
+            return client
+
+    def op_goal(self, gid, action, type_name, goal):
+        """Send a goal; its feedback, acceptance and end come as events keyed by ``gid``."""
+        client = self._action_client(action, type_name)
+        if not client.wait_for_server(timeout_sec=ACTION_SERVER_WAIT):
+            self.event("goal_end", gid, ("aborted", {}, f"there is no action server '{action}'"))
+            raise Reported("command", f"there is no action server '{action}'")
+        if client not in self._settled:  # as for a service's first call (see _ready)
+            time.sleep(SERVER_SETTLE)
+            self._settled.add(client)
+        try:
+            goal_message = to_message(client._action_type.Goal, goal)
+        except ValueError as error:
+            self.event("goal_end", gid, ("aborted", {}, str(error)))
+            raise Reported("command", str(error)) from None
+        send = self.send
+        self._goals[gid] = [None, False]  # the server's handle once it accepts; cancelled before that
+        future = client.send_goal_async(
+            goal_message, feedback_callback=lambda message: send(
+                (wire.EVENT, "feedback", gid, from_message(message.feedback))))
+        future.add_done_callback(lambda done: self._goal_answered(gid, done))
+
+    def _goal_answered(self, gid, future):
+        entry = self._goals[gid]
+        handle = future.result()
+        if handle is None or not handle.accepted:
+            self._goals.pop(gid, None)
+            self.event("goal_end", gid, ("rejected", {}, "the action server rejected the goal"))
+            return
+        entry[0] = handle
+        if entry[1]:
+            handle.cancel_goal_async()
+        handle.get_result_async().add_done_callback(lambda done: self._goal_ended(gid, done))
+
+    def _goal_ended(self, gid, future):
+        self._goals.pop(gid, None)
+        response = future.result()
+        status = _GOAL_STATUS.get(response.status, "aborted")
+        self.event("goal_end", gid, (status, from_message(response.result), ""))
+
+    def op_cancel_goal(self, gid):
+        entry = self._goals.get(gid)
+        if entry is None:
+            return
+        if entry[0] is None:
+            entry[1] = True
+        else:
+            entry[0].cancel_goal_async()
+
+    def op_cancel_all(self, action):
+        """Cancel every goal of ``action``, whoever sent it (a zero goal id and stamp means all)."""
+        from action_msgs.srv import CancelGoal
+
+        client = self._service_client(f"{action.rstrip('/')}/_action/cancel_goal", "action_msgs/srv/CancelGoal")
+        if client.wait_for_service(timeout_sec=FIRST_PUBLISH_WAIT):
+            client.call_async(CancelGoal.Request())
+
+    # --- parameters
+    def _parameter_service(self, node, kind):
+        type_name = {"get": "rcl_interfaces/srv/GetParameters", "set": "rcl_interfaces/srv/SetParameters"}[kind]
+        client = self._service_client(f"/{node.strip('/')}/{kind}_parameters", type_name)
+        self._ready(client, PARAMETER_WAIT, f"there is no ROS 2 node '{node}' to ask for parameters")
+        return client
+
+    def _call(self, client, request):
+        for _try in range(PARAMETER_TRIES):
+            future = client.call_async(request)
+            done = threading.Event()
+            future.add_done_callback(lambda _future, done=done: done.set())
+            if done.wait(PARAMETER_WAIT / PARAMETER_TRIES):
+                return future.result()
+            client.remove_pending_request(future)
+        raise Failure("timeout", "the node did not answer about its parameters")
+
+    def op_get_param(self, node, name):
+        """``(True, value)`` of a node's parameter, or ``(False, None)`` when it is not set."""
+        client = self._parameter_service(node, "get")
+        response = self._call(client, client.srv_type.Request(names=[name]))
+        value = parameter_value(response.values[0]) if response.values else None
+        return (value is not None, value)
+
+    def op_set_param(self, node, name, value):
+        from rcl_interfaces.msg import Parameter
+
+        client = self._parameter_service(node, "set")
+        request = client.srv_type.Request(parameters=[Parameter(name=name, value=to_parameter_value(value))])
+        result = self._call(client, request).results[0]
+        if not result.successful:
+            raise Failure("command", f"the node '{node}' refused the parameter '{name}': {result.reason}")
+
+    # --- serving a simulator (see sim_serving)
+    def op_sim_serve(self, services, actions):
+        """Serve the world's services and actions (names -> types) from the ``rockly_sim`` node."""
+        from rockly_desktop.robot.ros2.sim_serving import SimServing
+
+        if self.sim is None:
+            self.sim = SimServing(rclpy, self.event)
+        left_out = []
+        for endpoints, serve in ((services, self.sim.serve), (actions, self.sim.offer)):
+            for name, type_name in endpoints.items():
+                try:
+                    serve(name, type_name)
+                except LookupError as error:
+                    left_out.append((name, type_name, str(error)))
+        return left_out
+
+    def op_sim_answer(self, rid, ok, data):
+        self.sim.answer(rid, ok, data)
+
+    def op_sim_feedback(self, gid, data):
+        self.sim.feedback(gid, data)
+
+    def op_sim_goal_end(self, gid, status, result, text):
+        self.sim.goal_end(gid, status, result, text)
+
+    # --- the end
+    def do_safe_stop(self):
+        """The profile's safe stop, sent and (briefly) waited for delivery: the helper's last act."""
+        for action in self.safe_stop:
+            try:
+                if "publish" in action:
+                    body = action["publish"]
+                    self.op_publish(body["topic"], body["type"], dict(body.get("message") or {}))
+                    self._publishers[body["topic"]][0].wait_for_all_acked(rclpy.duration.Duration(seconds=0.5))
+                else:
+                    self.op_cancel_all(action["cancel_goals"])
+            except Exception as error:  # every part of the stop is tried
+                print(f"rockly ros2 helper: safe stop {action} failed: {error}", file=sys.stderr)
+
+    def close(self):
+        if self.sim is not None:
+            self.sim.close()
+        self._pool.shutdown(wait=False, cancel_futures=True)
+        self._executor.shutdown(timeout_sec=1.0)
+        self._spin.join(timeout=1.0)
+        self.node.destroy_node()
+        rclpy.try_shutdown()
+
+
+def _leave_on_term(_signum, _frame):
+    raise SystemExit(0)
+
+
+def main():
+    stdin, stdout = sys.stdin.buffer, sys.stdout.buffer
+    sys.stdout = sys.stderr  # nothing but frames may reach Rockly's pipe
+    signal.signal(signal.SIGTERM, _leave_on_term)
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl+C is Rockly's to handle (a safe stop, then EOF)
+    helper = Helper(stdout)
+    import rclpy.utilities
+
+    distro = os.environ.get("ROS_DISTRO") or "kilted"
+    helper.event("hello", wire.PROTOCOL, {"pid": os.getpid(), "distro": distro,
+                                          "domain": rclpy.utilities.get_default_context().get_domain_id(),
+                                          "share": sorted(_share_dirs())})
+    try:
+        while True:
+            frame = wire.read_frame(stdin)
+            if frame is None:
+                break
+            helper.handle(frame)
+    finally:
+        helper.do_safe_stop()
+        helper.close()
+
+
+def _share_dirs():
+    """Folders holding the installed interface packages' definitions (``<dir>/<pkg>/msg/*.msg``):
+    this Python's prefix (the wheels put them there) and any sourced ROS 2 workspaces."""
+    prefixes = [sys.prefix] + [entry for entry in os.environ.get("AMENT_PREFIX_PATH", "").split(os.pathsep) if entry]
+    return {os.path.join(prefix, "share") for prefix in prefixes if os.path.isdir(os.path.join(prefix, "share"))}
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,166 @@
+"""rclpy interface classes by name, and plain dicts <-> rclpy messages (runs in the ROS 2 helper).
+
+Names may be ``pkg/msg/Type`` or the short ``pkg/Type`` (ROS 1's spelling); a dict's missing
+fields keep the type's defaults. Whole numbers are accepted for float fields, as on ROS 1.
+Time stamps and durations also carry ROS 1's ``secs``/``nsecs`` (and accept them), and a
+header's ROS 1 ``seq`` is dropped, so a profile (or simulator) written for ROS 1 runs unchanged.
+"""
+import array
+import functools
+import importlib
+import importlib.util
+
+from rosidl_parser.definition import AbstractNestedType, BasicType, NamespacedType
+
+_FLOATS = {"float", "double", "long double"}
+
+
+def interface_class(name: str, kind: str):
+    """The class of ``name`` (``pkg/Type`` or ``pkg/KIND/Type``); kind is msg, srv or action.
+
+    An action may be named as on ROS 1, ``pkg/NameAction``.
+
+    Raises LookupError naming what is missing (a package not installed in ROS 2's environment).
+    """
+    parts = name.strip("/").split("/")
+    if len(parts) == 3:
+        package, kind, type_name = parts
+        kinds = (kind,)
+    elif len(parts) == 2:
+        package, type_name = parts
+        kinds = (kind, "action", "srv") if kind == "msg" else (kind,)  # an action's or service's own messages
+    else:
+        raise LookupError(f"'{name}' is not a ROS type name (package/Type)")
+    if importlib.util.find_spec(package) is None:
+        raise LookupError(f"the ROS 2 interface package '{package}' is not installed")
+    if kind == "action" and type_name.endswith("Action") and len(parts) == 2:
+        type_name = type_name[:-len("Action")]
+    for each in kinds:
+        try:
+            return _member(importlib.import_module(f"{package}.{each}"), type_name)
+        except (ImportError, AttributeError):
+            continue
+    raise LookupError(f"the ROS 2 package '{package}' has no {kind} type '{type_name}'")
+
+
+def _member(module, type_name: str):
+    """``Type`` of a module, or a part of one the graph names with an underscore
+    (``Fibonacci_FeedbackMessage``, an action's feedback topic; ``SetBool_Request``)."""
+    if hasattr(module, type_name):
+        return getattr(module, type_name)
+    base, _underscore, part = type_name.partition("_")
+    owner = getattr(module, base)
+    return getattr(owner, part) if hasattr(owner, part) else getattr(owner.Impl, part)
+
+
+def _class_of(namespaced: NamespacedType):
+    return getattr(importlib.import_module(".".join(namespaced.namespaces)), namespaced.name)
+
+
+def _value(slot, value, path):
+    if isinstance(slot, NamespacedType):
+        return to_message(_class_of(slot), value, path)
+    if isinstance(slot, AbstractNestedType):
+        item = slot.value_type
+        if isinstance(item, NamespacedType):
+            return [to_message(_class_of(item), entry, f"{path}[{index}]") for index, entry in enumerate(value)]
+        if isinstance(item, BasicType) and item.typename in _FLOATS:
+            return [float(entry) for entry in value]
+        return value
+    if isinstance(slot, BasicType) and slot.typename in _FLOATS and isinstance(value, int):
+        return float(value)
+    return value
+
+
+def to_message(message_class, data, path=""):
+    """A ``message_class`` instance with the fields of the dict ``data`` (ValueError names a bad field)."""
+    message = message_class()
+    if not data:
+        return message
+    if not isinstance(data, dict):
+        raise ValueError(f"{path or 'the message'} must be a dict of fields, not {data!r}")
+    if _is_time(message_class):
+        data = {_ROS1_TIME.get(name, name): value for name, value in data.items()}
+    elif _is_header(message_class) and "seq" in data:
+        data = {name: value for name, value in data.items() if name != "seq"}  # ROS 1's, gone in ROS 2
+    slots = _slots(message_class)
+    for name, value in data.items():
+        where = f"{path}.{name}" if path else name
+        if name not in slots:
+            raise ValueError(f"{message_class.__name__} has no field '{where}'")
+        try:
+            setattr(message, name, _value(slots[name], value, where))
+        except (AssertionError, TypeError, ValueError) as error:
+            raise ValueError(f"the field '{where}' cannot be {value!r} ({error or 'wrong type'})") from None
+    return message
+
+
+@functools.cache
+def _slots(message_class) -> dict:
+    """Field name -> its rosidl type, per class (asked for every message, so kept)."""
+    return dict(zip(message_class.get_fields_and_field_types(), message_class.SLOT_TYPES, strict=True))
+
+
+def from_message(message) -> dict:
+    """The message as plain dicts, lists and numbers."""
+    data = {name: _plain(getattr(message, name)) for name in _slots(type(message))}
+    if _is_time(type(message)):
+        data.update(secs=data["sec"], nsecs=data["nanosec"])
+    return data
+
+
+_ROS1_TIME = {"secs": "sec", "nsecs": "nanosec"}
+
+
+@functools.cache
+def _is_header(message_class) -> bool:
+    return message_class.__module__.startswith("std_msgs.") and message_class.__name__ == "Header"
+
+
+@functools.cache
+def _is_time(message_class) -> bool:
+    return message_class.__module__.startswith("builtin_interfaces.") and message_class.__name__ in ("Time", "Duration")
+
+
+def _plain(value):
+    if hasattr(value, "get_fields_and_field_types"):
+        return from_message(value)
+    if isinstance(value, list):
+        return [_plain(entry) for entry in value]
+    if isinstance(value, array.array) or hasattr(value, "tolist"):
+        return value.tolist()
+    return value
+
+
+def parameter_value(value) -> object:
+    """A rcl_interfaces ParameterValue as a Python value (None when the parameter is not set)."""
+    kinds = {1: "bool_value", 2: "integer_value", 3: "double_value", 4: "string_value",
+             5: "byte_array_value", 6: "bool_array_value", 7: "integer_array_value",
+             8: "double_array_value", 9: "string_array_value"}
+    field = kinds.get(value.type)
+    return None if field is None else _plain(getattr(value, field))
+
+
+def to_parameter_value(value):
+    """A Python value as a rcl_interfaces ParameterValue."""
+    from rcl_interfaces.msg import ParameterValue
+
+    if isinstance(value, bool):
+        return ParameterValue(type=1, bool_value=value)
+    if isinstance(value, int):
+        return ParameterValue(type=2, integer_value=value)
+    if isinstance(value, float):
+        return ParameterValue(type=3, double_value=value)
+    if isinstance(value, str):
+        return ParameterValue(type=4, string_value=value)
+    if isinstance(value, (list, tuple)) and value:
+        first = value[0]
+        if isinstance(first, bool):
+            return ParameterValue(type=6, bool_array_value=list(value))
+        if isinstance(first, int):
+            return ParameterValue(type=7, integer_array_value=list(value))
+        if isinstance(first, float):
+            return ParameterValue(type=8, double_array_value=[float(v) for v in value])
+        if isinstance(first, str):
+            return ParameterValue(type=9, string_array_value=list(value))
+    raise ValueError(f"a ROS 2 parameter cannot hold {value!r}")

@@ -1,0 +1,171 @@
+"""Running a profile's simulator on ROS 2: its SimWorld bridged to the graph through the helper.
+
+As on ROS 1 (``robot.ros1.sim_bridge``), the manifest's ``ros_interface`` says what the real
+robot subscribes, publishes, serves and offers as actions. Messages from ROS 2 go into the
+world; what the simulator publishes goes out; services and actions are answered by the
+simulator's handlers (the helper's ``sim_serving`` holds the ROS 2 side). Endpoints whose
+interface package ROS 2's environment lacks (a robot's own messages) are left out, said once.
+
+``Ros2SimulatorNode`` is the whole of ``rockly sim PROFILE --ros2``; ``run_ros2_simulator_node``
+runs it until a stop event.
+"""
+import logging
+import threading
+
+from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
+from rockly_desktop.robot.interrupt import Interrupt
+from rockly_desktop.robot.ros2.client import Ros2Helper
+from rockly_desktop.robot.ros2.environment import Ros2Settings
+
+log = logging.getLogger(__name__)
+
+
+class Ros2SimBridge:
+    """Connects ``world`` to ROS 2 as ``interface`` says, through ``helper``."""
+
+    def __init__(self, world, interface: dict, helper):
+        self._world = world
+        self._helper = helper
+        self._interrupt = Interrupt()  # stopped by close(): a question waiting for a person ends
+        self.left_out = []  # (name, type, why) of endpoints ROS 2 cannot carry here
+        self._sids = []
+        for topic, msg_type in interface.get("subscribes", {}).items():
+            self._bridge_in(topic, msg_type)
+        for topic, msg_type in interface.get("publishes", {}).items():
+            self._bridge_out(topic, msg_type)
+        for name in interface.get("services", {}):
+            helper.on("sim_call", name, lambda data, name=name: self._serve(name, *data))
+        for name in interface.get("actions", {}):
+            helper.on("sim_goal", name, lambda data, name=name: self._execute(name, *data))
+            helper.on("sim_cancel", name, self._cancel)
+        self._goals = {}
+        for name, type_name, why in helper.call("sim_serve", dict(interface.get("services", {})),
+                                                 dict(interface.get("actions", {})), timeout=10.0):
+            self._leave_out(name, type_name, why)
+
+    def _bridge_in(self, topic, msg_type):
+        sid = self._helper.new_id()
+        self._helper.on("msg", sid, lambda data: self._world.publish(topic, msg_type, data))
+        try:
+            self._helper.call("subscribe", sid, topic, msg_type, timeout=10.0)
+        except RobotCommandError as error:
+            self._helper.off("msg", sid)
+            self._leave_out(topic, msg_type, error)
+            return
+        self._sids.append(sid)
+
+    def _bridge_out(self, topic, msg_type):
+        try:
+            self._helper.call("publish_first", topic, msg_type, None, timeout=10.0)
+        except RobotCommandError as error:
+            self._leave_out(topic, msg_type, error)
+            return
+        helper = self._helper
+
+        def forward(data):
+            if not helper.lost:
+                helper.cast("publish", topic, msg_type, data)
+        self._world.subscribe(topic, forward)
+
+    def _leave_out(self, name, type_name, error):
+        self.left_out.append((name, type_name, str(error)))
+        log.info("not on ROS 2: %s (%s): %s", name, type_name, error)
+
+    def _serve(self, name, rid, request):
+        threading.Thread(target=self._answer, args=(name, rid, request), daemon=True,
+                         name=f"rockly-sim-call-{name}").start()
+
+    def _answer(self, name, rid, request):
+        try:
+            response = self._world.call_service(name, request, self._interrupt)
+        except (ProgramStopped, RobotCommandError) as error:
+            log.warning("the simulated service %s failed: %s", name, error)
+            self._helper.cast("sim_answer", rid, False, None)
+            return
+        if not self._helper.lost:
+            self._helper.cast("sim_answer", rid, True, response)
+
+    def _execute(self, name, gid, goal):
+        helper = self._helper
+
+        def feedback(data):
+            if not helper.lost:
+                helper.cast("sim_feedback", gid, data)
+
+        sim_goal = self._world.send_goal(name, goal, feedback)
+        self._goals[gid] = sim_goal
+        threading.Thread(target=self._finish, args=(gid, sim_goal), daemon=True,
+                         name=f"rockly-sim-goal-{name}").start()
+
+    def _finish(self, gid, sim_goal):
+        while not self._world.wait_for(lambda: sim_goal.outcome is not None, 0.02):
+            if self._interrupt.stop_requested:
+                sim_goal.cancelled.set()
+        self._goals.pop(gid, None)
+        outcome = sim_goal.outcome
+        if not self._helper.lost:
+            self._helper.cast("sim_goal_end", gid, outcome.status.value, outcome.result, outcome.text)
+
+    def _cancel(self, gid):
+        sim_goal = self._goals.get(gid)
+        if sim_goal is not None:
+            sim_goal.cancelled.set()
+
+    def close(self):
+        """End waiting questions and goals (cancelled); the helper's servers end with it."""
+        self._interrupt.request_stop()
+
+
+class Ros2SimulatorNode:
+    """``profile``'s simulator served on ROS 2 through this process's helper; ``shutdown()`` ends it.
+
+    ``tablet`` is the simulator's tablet port. Raises Ros2Unavailable when ROS 2 is not set up.
+    """
+
+    def __init__(self, profile, settings: Ros2Settings = None, speed=1.0, tablet=None):
+        from rockly_desktop.robot.sim_world import SimWorld
+
+        self.settings = settings or Ros2Settings()
+        self.helper = Ros2Helper.get(self.settings)
+        self.world = SimWorld()
+        self.simulator = profile.create("simulator", self.world, tablet=tablet, speed=speed)
+        self._bridge = Ros2SimBridge(self.world, profile.ros_interface, self.helper)
+        self.simulator.start()
+        self._ended = False
+
+    @property
+    def where(self) -> str:
+        """'ROS 2, domain 7, localhost' for the window and the console."""
+        return f"ROS 2, {self.settings.describe()}"
+
+    @property
+    def left_out(self) -> list:
+        """(name, type, why) of the robot's endpoints ROS 2's environment cannot carry."""
+        return list(self._bridge.left_out)
+
+    def shutdown(self):
+        """End waiting questions and goals, stop the simulator (its safe stop first) and the helper. Once only."""
+        if self._ended:
+            return
+        self._ended = True
+        self._bridge.close()
+        if hasattr(self.simulator, "safe_stop"):
+            try:
+                self.simulator.safe_stop()
+            except Exception:
+                log.exception("the simulator's safe stop failed")
+        self.simulator.shutdown()
+        Ros2Helper.close_current()
+
+
+def run_ros2_simulator_node(profile, settings=None, speed=1.0, tablet=None, stop_event=None, on_ready=None):
+    """Serve ``profile``'s simulator on ROS 2 until ``stop_event`` is set; ``on_ready(node)`` once it is up."""
+    node = Ros2SimulatorNode(profile, settings, speed, tablet)
+    if on_ready is not None:
+        on_ready(node)
+    stop_event = stop_event or threading.Event()
+    try:
+        while not stop_event.wait(0.2):
+            pass
+    finally:
+        node.shutdown()

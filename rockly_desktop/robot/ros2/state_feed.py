@@ -1,0 +1,75 @@
+"""Filling a StateStore from the ROS 2 graph: every topic's messages, and the graph itself.
+
+A thread asks the helper once a second for the graph (topics with their types and publisher
+counts, services, action servers) and subscribes to new topics through the shared Ros2Graph;
+the helper's messages are recorded as they come. Widgets read the store, never the helper.
+"""
+import logging
+import threading
+
+log = logging.getLogger(__name__)
+
+POLL_SECONDS = 1.0
+# ROS 2's own chatter, not the robot's
+IGNORED_TOPICS = {"/parameter_events", "/rosout"}
+
+
+class Ros2StateFeed:
+    """Keeps ``store`` filled from the graph of ``ros_graph``'s helper until ``stop()``."""
+
+    def __init__(self, ros_graph, store):
+        self._ros_graph = ros_graph
+        self._store = store
+        self._subscribed = set()
+        self._unknown = set()
+        self._graph = {"topics": [], "services": [], "actions": []}
+        self._stopped = threading.Event()
+        self._thread = threading.Thread(target=self._poll, name="rockly-ros2-graph", daemon=True)
+        self._thread.start()
+
+    def graph_topics(self) -> list:
+        """(topic, type as ``pkg/Type``, publisher count) of every topic of the graph, as of the last poll."""
+        return sorted((topic, short_type(types[0]), count) for topic, types, count in self._graph["topics"]
+                      if types and topic not in IGNORED_TOPICS)
+
+    def services(self) -> set:
+        """Names of the graph's services, as of the last poll."""
+        return set(self._graph["services"])
+
+    def actions(self) -> set:
+        """Names of the graph's action servers, as of the last poll."""
+        return set(self._graph["actions"])
+
+    def stop(self):
+        """Stop watching the graph (subscriptions stay with the shared Ros2Graph)."""
+        self._stopped.set()
+
+    def _poll(self):
+        helper = self._ros_graph.helper
+        while not self._stopped.is_set() and not helper.lost:
+            try:
+                self._graph = helper.call("graph", timeout=5.0)
+                for topic, msg_type, count in self.graph_topics():
+                    if count:
+                        self._follow(topic, msg_type)
+            except Exception as error:
+                log.debug("reading the ROS 2 graph failed: %s", error)
+            self._stopped.wait(POLL_SECONDS)
+
+    def _follow(self, topic, msg_type):
+        if topic in self._subscribed or (topic, msg_type) in self._unknown:
+            return
+        try:
+            entry = self._ros_graph.topic(topic, msg_type)
+        except Exception as error:
+            log.info("cannot follow %s (%s): %s", topic, msg_type, error)
+            self._unknown.add((topic, msg_type))
+            return
+        entry.callbacks.append(lambda message: self._store.record(topic, msg_type, message))
+        self._subscribed.add(topic)
+
+
+def short_type(msg_type: str) -> str:
+    """``pkg/msg/Type`` as Rockly's panels name types (``pkg/Type``, as on ROS 1)."""
+    parts = msg_type.split("/")
+    return f"{parts[0]}/{parts[-1]}"

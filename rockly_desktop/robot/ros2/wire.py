@@ -1,0 +1,38 @@
+"""The protocol between Rockly and its ROS 2 helper: length-prefixed pickled tuples over pipes.
+
+A frame is a 4-byte big-endian length and a pickle (protocol 5) of a tuple. Both ends are
+this package (the helper is Rockly's own child on anonymous pipes), so pickle is safe here
+and is the fastest standard-library encoding of the nested dicts, bytes and NaNs ROS
+messages hold (faster than JSON; msgpack would be a new dependency on both sides).
+
+Rockly → helper: ``(CALL, id, op, args)`` wants an answer, ``(CAST, 0, op, args)`` does not.
+Helper → Rockly: ``(REPLY, id, ok, value)`` answers a call (value is the error text when not
+ok); ``(EVENT, kind, key, data)`` reports messages, feedback, goal ends and failures of casts.
+The helper's first frame is ``(EVENT, "hello", PROTOCOL, info)``; a client refuses another
+protocol version. Standard library only: the helper's Python imports this too.
+"""
+import pickle
+import struct
+
+PROTOCOL = 1
+CALL, CAST, REPLY, EVENT = "call", "cast", "reply", "event"
+
+_HEADER = struct.Struct(">I")
+
+
+def encode(frame: tuple) -> bytes:
+    """One frame as bytes to write."""
+    body = pickle.dumps(frame, protocol=5)
+    return _HEADER.pack(len(body)) + body
+
+
+def read_frame(stream):
+    """The next frame from a binary stream, or None at its end (the other side is gone)."""
+    header = stream.read(_HEADER.size)
+    if len(header) < _HEADER.size:
+        return None
+    size, = _HEADER.unpack(header)
+    body = stream.read(size)
+    if len(body) < size:
+        return None
+    return pickle.loads(body)

@@ -1,0 +1,78 @@
+"""Fixtures for the ROS 2 tests: a plain rclpy test robot in its own process, on a domain of
+this test run's own, localhost only, and Rockly's ROS 2 link to it."""
+import json
+import os
+import subprocess
+import threading
+from pathlib import Path
+
+import pytest
+
+from rockly_desktop.robot.ros2.environment import PROJECT_ROOT, Ros2Settings
+
+ROS2_PYTHON = PROJECT_ROOT / ".venv-ros2" / "bin" / "python"
+# The test robot may run another ROS 2 distribution (a Python with its rclpy), to check the wire
+# between them: ROCKLY_TEST_ROBOT_PYTHON=/path/to/jazzy-venv/bin/python
+TEST_ROBOT_PYTHON = os.environ.get("ROCKLY_TEST_ROBOT_PYTHON") or str(ROS2_PYTHON)
+TEST_NODE = Path(__file__).with_name("ros2_test_node.py")
+DOMAIN_ID = 100 + os.getpid() % 100  # this run's own: parallel runs on one machine do not meet
+
+
+@pytest.fixture(scope="session")
+def ros2_settings():
+    """The link settings of this test run: its own domain id, discovery on this machine only."""
+    if not ROS2_PYTHON.exists():
+        pytest.fail(f"the ROS 2 tests need {ROS2_PYTHON}: run 'make ros2' first")
+    return Ros2Settings(domain_id=DOMAIN_ID, discovery="localhost")
+
+
+class TestRobot:
+    """The test node process (tests/robot/ros2/ros2_test_node.py) and what it printed."""
+
+    def __init__(self, settings):
+        self.process = subprocess.Popen([TEST_ROBOT_PYTHON, str(TEST_NODE)], stdin=subprocess.PIPE,
+                                        stdout=subprocess.PIPE, text=True, env=settings.environment())
+        self.lines = []
+        ready = json.loads(self.process.stdout.readline() or "{}")
+        assert ready.get("ready"), "the ROS 2 test node did not start"
+        threading.Thread(target=self._read, daemon=True).start()
+
+    def _read(self):
+        for line in self.process.stdout:
+            self.lines.append(json.loads(line))
+
+    def received(self, topic) -> list:
+        """The messages the test node got on ``topic``, as {"type", "message"} dicts."""
+        return [line for line in list(self.lines) if line.get("topic") == topic]
+
+    def stop(self):
+        self.process.stdin.close()
+        try:
+            self.process.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            self.process.kill()
+            self.process.wait()
+
+
+@pytest.fixture(scope="module")
+def test_robot(ros2_settings):
+    robot = TestRobot(ros2_settings)
+    yield robot
+    robot.stop()
+
+
+@pytest.fixture(scope="module")
+def turtlebot(registry):
+    return registry.get("turtlebot")
+
+
+@pytest.fixture(scope="module")
+def ros2_robot(test_robot, turtlebot, ros2_settings):
+    """Rockly's ROS 2 link to the test robot, with the TurtleBot profile; its helper ends with the module."""
+    from rockly_desktop.robot.ros2.client import Ros2Helper
+    from rockly_desktop.robot.ros2.link import Ros2Robot
+
+    robot = Ros2Robot(turtlebot, ros2_settings)
+    yield robot
+    robot.shutdown()
+    Ros2Helper.close_current()
