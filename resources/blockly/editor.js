@@ -4,8 +4,9 @@
  * Python -> page: {call, id, args} on the bridge's `toPage` signal.
  * Page -> Python: {reply: id, result | error}, or {event: 'hello' | 'changed' | 'error', ...}
  * through the bridge's `fromPage` slot. Python queues its calls until `setup` has run;
- * `setup` may carry a first call (the program to open at start) so it shows in one go, or
- * build the workspace `hidden` ahead of the program, which then comes with `show`.
+ * `setup` may carry a first call (the program to open at start) so it shows in one go, and
+ * may build the workspace `hidden` ahead of the window, which then shows it with `show`;
+ * the first call's answer comes back as `program: {result | error}`.
  * A program with block types the page does not know is refused with `unknownTypes`, one
  * with a block without a type with `untypedBlock` (its number); a program that loads
  * answers with `replacedFields` when Blockly could not keep some of its field values.
@@ -459,7 +460,15 @@
       window.addEventListener('resize', keepViewCorner);  // added after inject's: runs after Blockly's
       makeHint(texts && texts.emptyHint);
       registerContextMenu(texts || {addBreakpoint: 'Add breakpoint', removeBreakpoint: 'Remove breakpoint'});
-      const program = first ? calls[first.call](first.args) : null;
+      // The first call's own answer, or its error: a program that cannot be shown must not stop the editor.
+      let program = null;
+      if (first) {
+        try {
+          program = {result: calls[first.call](first.args)};
+        } catch (error) {
+          program = {error: String(error && error.message || error)};
+        }
+      }
       return {blockTypes: Object.keys(Blockly.Blocks), program};
     },
     load({workspace: json, breakpoints: ids}) {

@@ -217,7 +217,8 @@ class EditorView(QWebEngineView):
         self.channel.open()
         self.sig_ready.emit()
         if callback is not None:
-            callback(result.get("program"), None)
+            first_answer = result.get("program") or {}
+            callback(first_answer.get("result"), first_answer.get("error"))
 
     def _show_prepared(self, callback):
         """Send start()'s first call and ``show`` ahead of every other call; ready once the first is answered."""

@@ -163,6 +163,17 @@ def test_a_page_started_before_its_prepared_setup_was_sent_starts_as_asked(qtbot
     assert workspace_shown(qtbot, view) == "visible"
 
 
+def test_a_first_program_blockly_cannot_load_leaves_the_editor_working(qtbot, hobbit):
+    view = shown_editor(qtbot)
+    broken = workspace(block("hobbit_move", inputs={"no_such_input": number(1)}))
+    answers = []
+    view.start(hobbit.editor_config("en"), "en", ("load", {"workspace": broken}),
+               lambda result, error: answers.append((result, error)))
+    qtbot.waitUntil(lambda: bool(answers), timeout=30000)
+    assert answers[0][0] is None and "no_such_input" in answers[0][1]
+    assert call(qtbot, view, "load", {"workspace": workspace(block("hobbit_stop"))}) == ({"loaded": True}, None)
+
+
 def test_unknown_page_call_is_an_error_not_a_hang(qtbot, editor):
     result, error = call(qtbot, editor, "formatDisk")
     assert result is None and "unknown call" in error
