@@ -5,10 +5,10 @@ blocks nest one level per ``next``, far deeper than Python's recursion limit.
 """
 import xml.etree.ElementTree as ElementTree
 from collections import Counter
-from xml.sax.saxutils import escape, quoteattr
 
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import ProgramFileError
+from rockly_desktop.core.xml_text import escape, quoteattr
 
 
 def iter_blocks(workspace: dict):
