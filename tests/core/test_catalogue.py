@@ -75,6 +75,15 @@ def test_a_po_file_is_read_by_key_with_joined_lines_and_escapes_and_without_its_
     assert read_po(tmp_path / "de.po")["long"].fuzzy and not read_po(tmp_path / "de.po")["greet"].fuzzy
 
 
+def test_a_po_file_with_an_unknown_escape_or_an_unquoted_text_is_refused_with_its_line(tmp_path):
+    (tmp_path / "bad.po").write_text('msgctxt "k"\nmsgid "a \\q b"\nmsgstr ""\n', encoding="utf-8")
+    with pytest.raises(ValueError, match=r"bad.po:2: unknown escape \\q"):
+        read_po(tmp_path / "bad.po")
+    (tmp_path / "open.po").write_text('msgctxt "k"\nmsgid "not closed\nmsgstr ""\n', encoding="utf-8")
+    with pytest.raises(ValueError, match="open.po:2: not a quoted text"):
+        read_po(tmp_path / "open.po")
+
+
 def test_a_text_is_looked_up_by_key_with_its_values(catalogue):
     assert catalogue.text("greet", "de", name="Mia") == "Hallo, Mia!"
     assert catalogue.text("greet", "en", name="Mia") == "Hello, Mia!"
