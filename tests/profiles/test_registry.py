@@ -257,8 +257,8 @@ def test_discovery_imports_no_profile_code_and_no_qt_in_a_fresh_interpreter(tmp_
     assert report["errors"] == []
     assert report["after_discover"] == []
     assert report["qt"] == []
-    # the commands know the house they drive in
-    assert report["after_load"] == ["rockly_hobbit", "rockly_hobbit.api", "rockly_hobbit.world"]
+    # the commands know the house they drive in, and the base's own speeds (base)
+    assert report["after_load"] == ["rockly_hobbit", "rockly_hobbit.api", "rockly_hobbit.base", "rockly_hobbit.world"]
     assert report["api"] == "rockly_hobbit.api:Hobbit"
 
 
