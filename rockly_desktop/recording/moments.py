@@ -51,8 +51,8 @@ class Moments:
         self._blocks = _Series(recording.on(channels.BLOCKS), lambda entry: entry.data["block"])
         self._variables = _Series(recording.on(channels.VARIABLES), lambda entry: entry.data.get("values") or {})
         self._snapshots = _Series(recording.on(channels.SIMULATOR), lambda entry: entry.data)
-        output = recording.on(channels.OUTPUT)
-        self._output_times = [entry.time for entry in output]
+        self._output = recording.on(channels.OUTPUT)
+        self._output_times = [entry.time for entry in self._output]
         self._commands = recording.on(channels.COMMANDS)
         self._command_times = [entry.time for entry in self._commands]
         ends = [entry.time for entry in recording.on(channels.RUN) if entry.data.get("event") == "end"]
@@ -61,7 +61,12 @@ class Moments:
     @property
     def output(self) -> list:
         """The lines the program printed, in order."""
-        return [entry.data.get("text", "") for entry in self.recording.on(channels.OUTPUT)]
+        return [entry.data.get("text", "") for entry in self._output]
+
+    def printed_lines(self, count: int) -> list:
+        """The first ``count`` lines printed, each after its time since the run began ("  1.25 s  text")."""
+        return [f"{entry.time:7.2f} s  {entry.data.get('text', '')}"
+                for entry in self._output[:count]]
 
     def at(self, seconds: float) -> Moment:
         """The run as it was ``seconds`` after the recording began."""

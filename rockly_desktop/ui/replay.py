@@ -1,5 +1,6 @@
 """Replaying a recorded run in the window: the block that ran glows, the Variables dock and the
-Simulator view show that moment. Replay only ever changes what is on screen: it sends nothing
+Simulator view show that moment, the Console what had been printed by then and the Plot the
+recorded series with a cursor at it. Replay only ever changes what is on screen: it sends nothing
 to a robot, and a file that is no recording changes nothing at all.
 """
 from PySide6.QtCore import QObject
@@ -7,18 +8,26 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox
 
 from rockly_desktop.recording.moments import Moments
 from rockly_desktop.recording.reading import RecordingUnreadable, read_recording
+from rockly_desktop.recording.topics import RecordedTopics
 from rockly_desktop.ui.block_badges import badge_texts
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.texts import tr
 
 
 class Replay(QObject):
-    """Drives the ``bar`` (``ReplayBar``) and shows its moments in the ``editor``, the ``variables`` dock
-    and the ``simulator`` dock (whose live refresh pauses while a moment is shown)."""
+    """Drives the ``bar`` (``ReplayBar``) and shows its moments in the ``editor``, the ``variables`` dock,
+    the ``simulator`` dock (whose live refresh pauses while a moment is shown), the ``console`` and the
+    plot panel."""
 
-    def __init__(self, bar, editor, variables, simulator, language: str, parent=None, badges=lambda: True):
-        """``badges()`` says whether the blocks' badges are shown (not at the Starter level)."""
+    def __init__(self, bar, editor, variables, simulator, language: str, parent=None, badges=lambda: True,
+                 console=None, plot=lambda: None):
+        """``badges()`` says whether the blocks' badges are shown (not at the Starter level); ``plot()`` is
+        the Plot panel, or None while there is none."""
         super().__init__(parent)
+        self.console = console
+        self._plot = plot
+        self.topics = None
+        self._shown_printed = None
         self._badges_wanted = badges
         self._shown_badges = None
         self.bar = bar
@@ -51,6 +60,7 @@ class Replay(QObject):
                 box.open()
             return False
         self.moments = Moments(recording)
+        self.topics = RecordedTopics(recording)
         self.bar.show_timeline(self.moments.duration, self.moments.markers(),
                                "" if recording.complete else tr("replay_cut_short", self.language))
         return True
@@ -69,6 +79,12 @@ class Replay(QObject):
             self._shown_block = moment.block
             self.editor.call("highlight", {"id": moment.block})
         self.variables.show_values(moment.variables)
+        if self.console is not None and moment.printed != self._shown_printed:
+            self._shown_printed = moment.printed
+            self.console.show_recorded(self.moments.printed_lines(moment.printed))
+        plot = self._plot()
+        if plot is not None:
+            plot.show_recorded(self.topics, seconds, self.moments.duration)
         if self._badges_wanted():
             badges = self.moments.badges(seconds)
             if badges != self._shown_badges:
@@ -80,6 +96,11 @@ class Replay(QObject):
             view.set_snapshot(moment.snapshot)
 
     def _back_to_live(self):
-        self._shown_block = self._shown_badges = None
+        self._shown_block = self._shown_badges = self._shown_printed = None
         self.editor.call("highlight", {"id": None})
+        if self.console is not None:
+            self.console.show_live()
+        plot = self._plot()
+        if plot is not None:
+            plot.show_live()
         self.simulator.resume()

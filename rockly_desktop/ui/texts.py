@@ -334,6 +334,7 @@ _TEXTS = {
     "badge_rejected": ("✗ refused", "✗ abgelehnt"),
     "badge_timed_out": ("⏱ timed out {seconds}", "⏱ Zeit abgelaufen {seconds}"),
     "badge_failed": ("✗ failed {seconds}", "✗ fehlgeschlagen {seconds}"),
+    "plot_replay_axis": ("Time since the run began", "Zeit seit dem Start"),
 }
 
 

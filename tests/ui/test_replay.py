@@ -1,5 +1,7 @@
 """Replaying a recorded run in the window (real QtWebEngine + Blockly): every run is recorded, its
 timeline shows under the workspace, and a moment lights the block and shows the values of then."""
+from pathlib import Path
+
 from page_tools import call_page, run_js
 from program_builder import block, number, stack, workspace
 from PySide6.QtWidgets import QMessageBox
@@ -99,3 +101,58 @@ def test_blocks_that_talk_to_the_robot_get_badges_live_and_in_the_replay_not_at_
     window.replay_bar.jump_to(0.0)
     window.replay_bar.jump_to(window.replay_bar.duration)
     assert badge(qtbot, window, "info") is None
+
+
+def glowing(image) -> bool:
+    """Whether a grab of the editor shows a highlighted block's yellow glow (a few dozen pixels of it)."""
+    found = 0
+    for y in range(0, image.height(), 3):
+        for x in range(0, image.width(), 3):
+            colour = image.pixelColor(x, y)
+            found += colour.red() > 230 and 150 < colour.green() < 215 and colour.blue() < 60
+    return found > 30
+
+
+def shot(widget, name):
+    """Save ``widget`` as /tmp/replay_shots/NAME.png (to look at)."""
+    folder = Path("/tmp/replay_shots")
+    folder.mkdir(exist_ok=True)
+    assert widget.grab().save(str(folder / f"{name}.png"))
+
+
+def test_the_console_and_the_plot_follow_the_replay(qtbot, driver):
+    window = driver.open_window(simulator_speed=2.0)
+    window.plot_dock.raise_()
+    window.plot_panel().add_curve("/odom", "pose.pose.position.x")
+    say = [block("text_print", inputs={"TEXT": block("text", {"TEXT": f"lap {lap}"})}, id=f"say{lap}")
+           for lap in (1, 2)]
+    result = run_to_the_end(qtbot, window, stack(
+        say[0], block("hobbit_move", {"direction": "+"}, {"speed": number(1)}, id="drive"), say[1]))
+    assert result.outcome == "finished"
+    qtbot.waitUntil(window.replay_bar.isVisible, timeout=5000)
+    printed = window.replay.moments.recording.on(channels.OUTPUT)
+    assert [entry.data["text"] for entry in printed] == ["lap 1", "lap 2"]
+    odom_x = window.replay.topics.series("/odom", "pose.pose.position.x")
+    assert len(odom_x[0]) > 2 and odom_x[1][-1] > odom_x[1][0]  # it drove forward
+
+    middle = (printed[0].time + printed[1].time) / 2
+    page_before = window.editor.grab().toImage()
+    window.replay_bar.jump_to(middle)
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=5000)
+    qtbot.waitUntil(lambda: glowing(window.editor.grab().toImage()) and window.editor.grab().toImage() != page_before,
+                    timeout=5000)  # the page has painted the glow where it is now
+    lines = window.console.recorded_lines()
+    assert len(lines) == 1 and lines[0].endswith("lap 1")  # what had been printed by then
+    plot = window.plot_panel()
+    assert plot.replaying and abs(plot.cursor.value() - window.replay_bar.position) < 1e-9
+    times, values = plot.curve_item("/odom", "pose.pose.position.x").getData()
+    assert list(times) == odom_x[0] and list(values) == odom_x[1]  # the whole recorded series
+    shot(window, "replay_plot")
+    window.console.raise_()
+    shot(window, "replay_console")
+
+    window.replay_bar.jump_to(window.replay_bar.duration)
+    qtbot.waitUntil(lambda: len(window.console.recorded_lines()) == 2, timeout=5000)
+    window.replay_bar.close_timeline()
+    assert not plot.replaying and plot.cursor is None
+    assert window.console.recorded_lines() == [] and window.console.lines()[-1] != ""
