@@ -92,7 +92,9 @@ class MainWindow(QMainWindow):
         self.runs.sig_status.connect(lambda text: self.statusBar().showMessage(text))
         self.tablet.sig_dismissed.connect(self.runs.stop)
         self.replay = Replay(self.replay_bar, self.editor, self.variables, self.simulator_dock, self.language, self,
-                             lambda: badges_shown(self.settings, self.profile.id), self.console, self._made_plot)
+                             lambda: badges_shown(self.settings, self.profile.id), self.console, self._made_plot,
+                             lambda: self.state_dock.widget() if isinstance(self.state_dock.widget(), StatePanels)
+                             else None)
         self.runs.sig_state_changed.connect(lambda state: state == "starting" and self.replay.close())
         self.runs.sig_finished.connect(lambda _result: self.runs.last_recording and self.replay.open(
             self.runs.last_recording, quiet=True))

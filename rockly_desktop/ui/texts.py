@@ -335,6 +335,9 @@ _TEXTS = {
     "badge_timed_out": ("⏱ timed out {seconds}", "⏱ Zeit abgelaufen {seconds}"),
     "badge_failed": ("✗ failed {seconds}", "✗ fehlgeschlagen {seconds}"),
     "plot_replay_axis": ("Time since the run began", "Zeit seit dem Start"),
+    "plan_title": ("Recorded path (/odom)", "Aufgezeichneter Weg (/odom)"),
+    "plan_pose": ("x {x:.2f}  y {y:.2f} m  θ {heading:.0f}°", "x {x:.2f}  y {y:.2f} m  θ {heading:.0f}°"),
+    "plan_no_pose": ("no position yet", "noch keine Position"),
 }
 
 
