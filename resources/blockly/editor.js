@@ -46,6 +46,7 @@
   // for Python's keywords.
   python.pythonGenerator.addReservedWords('robot,ros,__rockly__');
   guardLargeResults(python.pythonGenerator, python.Order);
+  RocklyValues.instrument(python.pythonGenerator, python.Order);
 
   function loadScript(src) {
     return new Promise((resolve, reject) => {
@@ -241,10 +242,14 @@
     };
   }
 
-  /** The program as it runs: a hook before every statement and in every loop, and its variables. */
-  function runCode() {
+  /**
+   * The program as it runs: a hook before every statement and in every loop, and its variables;
+   * with `values`, every expression block's value also passes `__rockly__.value`.
+   */
+  function runCode(values) {
     const generator = python.pythonGenerator;
     generator.rocklyGuarded = true;
+    generator.rocklyValues = Boolean(values);
     generator.STATEMENT_PREFIX = '__rockly__.block(%1)\n';
     generator.INFINITE_LOOP_TRAP = '__rockly__.check()\n';
     try {
@@ -259,6 +264,7 @@
       return {code, variables, breakpoints: [...breakpoints]};
     } finally {
       generator.rocklyGuarded = false;
+      generator.rocklyValues = false;
       generator.STATEMENT_PREFIX = null;
       generator.INFINITE_LOOP_TRAP = null;
     }
@@ -477,8 +483,8 @@
     getState() {
       return state();
     },
-    getRunCode() {
-      return runCode();
+    getRunCode({values}) {
+      return runCode(values);
     },
     highlight({id}) {
       workspace.highlightBlock(id || null);
@@ -505,6 +511,11 @@
     clearMarks() {
       clearMarks();
       RocklyBadges.show(workspace, {});
+      RocklyValues.show({});
+      return true;
+    },
+    setValues({values, label}) {
+      RocklyValues.show(values || {}, label);
       return true;
     },
     setBadges({badges}) {

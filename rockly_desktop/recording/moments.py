@@ -53,6 +53,8 @@ class Moments:
         self._snapshots = _Series(recording.on(channels.SIMULATOR), lambda entry: entry.data)
         self._output = recording.on(channels.OUTPUT)
         self._output_times = [entry.time for entry in self._output]
+        self._values = recording.on(channels.VALUES)
+        self._values_times = [entry.time for entry in self._values]
         self._commands = recording.on(channels.COMMANDS)
         self._command_times = [entry.time for entry in self._commands]
         ends = [entry.time for entry in recording.on(channels.RUN) if entry.data.get("event") == "end"]
@@ -72,6 +74,13 @@ class Moments:
         """The run as it was ``seconds`` after the recording began."""
         return Moment(self._blocks.at(seconds), self._variables.at(seconds, {}), self._snapshots.at(seconds),
                       bisect.bisect_right(self._output_times, seconds))
+
+    def values(self, seconds: float) -> dict:
+        """Block id -> the text of the expression block's last value ``seconds`` into the run."""
+        values = {}
+        for entry in self._values[:bisect.bisect_right(self._values_times, seconds)]:
+            values.update(entry.data.get("values") or {})
+        return values
 
     def badges(self, seconds: float) -> dict:
         """Block id -> (state, seconds) as the blocks' badges showed them ``seconds`` into the run."""

@@ -26,7 +26,7 @@ class Replay(QObject):
 
     def __init__(self, bar, editor, variables, simulator, language: str, parent=None, badges=lambda: True,
                  console=None, plot=lambda: None, state_panels=lambda: None):
-        """``badges()`` says whether the blocks' badges are shown (not at the Starter level); ``plot()`` is
+        """``badges()`` says whether the blocks' badges and values are shown (not at the Starter level); ``plot()`` is
         the Plot panel and ``state_panels()`` the Robot state panels, each None while there is none."""
         super().__init__(parent)
         self.console = console
@@ -39,6 +39,7 @@ class Replay(QObject):
         self._shown_printed = None
         self._badges_wanted = badges
         self._shown_badges = None
+        self._shown_values = None
         self.bar = bar
         self.editor = editor
         self.variables = variables
@@ -103,6 +104,10 @@ class Replay(QObject):
             if badges != self._shown_badges:
                 self._shown_badges = badges
                 self.editor.call("setBadges", {"badges": badge_texts(badges, self.language)})
+            values = self.moments.values(seconds)
+            if values != self._shown_values:
+                self._shown_values = values
+                self.editor.call("setValues", {"values": values, "label": tr("block_value", self.language)})
         self._show_state(seconds)
         view = self.simulator.view
         if moment.snapshot is not None and view is not None:
@@ -123,7 +128,7 @@ class Replay(QObject):
         panels.set_store(self.topics.at(seconds))
 
     def _back_to_live(self):
-        self._shown_block = self._shown_badges = self._shown_printed = None
+        self._shown_block = self._shown_badges = self._shown_printed = self._shown_values = None
         self.editor.call("highlight", {"id": None})
         if self.console is not None:
             self.console.show_live()

@@ -1,5 +1,6 @@
 """Replaying a recorded run in the window (real QtWebEngine + Blockly): every run is recorded, its
 timeline shows under the workspace, and a moment lights the block and shows the values of then."""
+import json
 from pathlib import Path
 
 from page_tools import call_page, run_js
@@ -156,3 +157,59 @@ def test_the_console_and_the_plot_follow_the_replay(qtbot, driver):
     window.replay_bar.close_timeline()
     assert not plot.replaying and plot.cursor is None
     assert window.console.recorded_lines() == [] and window.console.lines()[-1] != ""
+
+
+HOVER_SCRIPT = """(() => {
+  clearInterval(window.rocklyHovering);
+  const path = Blockly.getMainWorkspace().getBlockById(%s).pathObject.svgPath;
+  const point = () => {
+    const box = path.getBoundingClientRect();
+    const at = {bubbles: true, clientX: box.left + 6, clientY: box.bottom - 6, pointerType: 'mouse'};
+    path.dispatchEvent(new PointerEvent('pointerout', at));
+    setTimeout(() => {
+      path.dispatchEvent(new PointerEvent('pointerover', at));
+      path.dispatchEvent(new PointerEvent('pointermove', at));
+    }, 20);
+  };
+  point();
+  // Blockly shows a tooltip 750 ms after the pointer rests, unless a gesture blocks tooltips then: again.
+  window.rocklyHovering = setInterval(() => Blockly.Tooltip.isVisible() ? clearInterval(window.rocklyHovering)
+                                                                        : point(), 1500);
+  return true;
+})()"""
+
+
+def hover(qtbot, window, block_id):
+    """Point at ``block_id`` as a mouse would; the text of the tooltip Blockly shows then."""
+    run_js(qtbot, window.editor, "Blockly.Tooltip.hide(), true")
+    run_js(qtbot, window.editor, HOVER_SCRIPT % json.dumps(block_id))
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "Blockly.Tooltip.isVisible()"), timeout=10000)
+    return run_js(qtbot, window.editor, "Blockly.Tooltip.getDiv().innerText")
+
+
+def test_an_expression_block_shows_its_last_value_on_hover_live_and_in_the_replay_not_at_the_starter_level(
+        qtbot, window):
+    sum_block = block("math_arithmetic", {"OP": "ADD"}, {"A": number(1), "B": block(
+        "variables_get", {"VAR": {"id": "laps"}}, id="laps_now")}, id="sum")
+    program = stack(block("variables_set", {"VAR": {"id": "laps"}}, {"VALUE": number(2)}, id="two"),
+                    block("text_print", inputs={"TEXT": sum_block}, id="say"))
+    assert run_to_the_end(qtbot, window, program, variables=["laps"]).outcome == "finished"
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "RocklyValues.lastValue('sum')") == "3", timeout=5000)
+    assert run_js(qtbot, window.editor, "RocklyValues.lastValue('laps_now')") == "2"
+    text = hover(qtbot, window, "sum")
+    assert text.splitlines()[-1] == "Last value: 3" and len(text.splitlines()) > 1  # below Blockly's own tooltip
+    shot(window.editor, "value_on_hover")
+    assert "__rockly__.value" not in call_page(qtbot, window.editor, "getState")["python"]  # exported Python is plain
+    assert "value" not in str(call_page(qtbot, window.editor, "getState")["workspace"]).replace("VALUE", "")
+
+    window.replay_bar.jump_to(0.0)  # before the sum was worked out
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "RocklyValues.lastValue('sum')") is None, timeout=5000)
+    assert hover(qtbot, window, "sum").splitlines()[-1] != "Last value: 3"
+    window.replay_bar.jump_to(window.replay_bar.duration)
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "RocklyValues.lastValue('sum')") == "3", timeout=5000)
+
+    window.settings.teacher.set_level("hobbit", "starter")
+    assert run_to_the_end(qtbot, window, program, variables=["laps"]).outcome == "finished"
+    assert "__rockly__.value" not in call_page(qtbot, window.editor, "getRunCode", {"values": False})["code"]
+    assert run_js(qtbot, window.editor, "RocklyValues.lastValue('sum')") is None
+    assert "Last value" not in hover(qtbot, window, "sum")
