@@ -2,7 +2,7 @@
 
 The replay asks ``Moments.at(seconds)`` for the block that was running then, the
 variables' values, the simulator's state and how many lines had been printed, and puts
-``markers()`` on its timeline: errors, pauses (and breakpoints), bumps and goal outcomes.
+``markers()`` on its timeline: errors, pauses, breakpoints, bumps and goal outcomes.
 """
 import bisect
 from dataclasses import dataclass
@@ -26,7 +26,7 @@ class Moment:
 
 @dataclass(frozen=True)
 class Marker:
-    """Something worth finding on the timeline: ``kind`` is 'error', 'pause', 'bump' or 'goal'."""
+    """Something worth finding on the timeline: ``kind`` is 'error', 'pause', 'breakpoint', 'bump' or 'goal'."""
 
     time: float
     kind: str
@@ -90,12 +90,14 @@ class Moments:
         return states.states
 
     def markers(self) -> list:
-        """Errors, pauses, bumps and goal outcomes, in time order."""
+        """Errors, pauses, breakpoints (a pause at one), bumps and goal outcomes, in time order."""
         found = []
         for entry in self.recording.entries:
             data = entry.data
             if entry.channel == channels.RUN and data.get("event") == "end" and data.get("outcome") == "error":
                 found.append(Marker(entry.time, "error", data.get("message") or ""))
+            elif entry.channel == channels.RUN and data.get("event") == "pause" and data.get("reason") == "breakpoint":
+                found.append(Marker(entry.time, "breakpoint", data.get("block") or ""))
             elif entry.channel == channels.RUN and data.get("event") == "pause":
                 found.append(Marker(entry.time, "pause", data.get("reason") or ""))
             elif entry.channel == channels.COMMANDS and data.get("kind") == "failed":

@@ -339,6 +339,7 @@ _TEXTS = {
     "plan_pose": ("x {x:.2f}  y {y:.2f} m  θ {heading:.0f}°", "x {x:.2f}  y {y:.2f} m  θ {heading:.0f}°"),
     "plan_no_pose": ("no position yet", "noch keine Position"),
     "block_value": ("Last value", "Letzter Wert"),
+    "marker_breakpoint": ("Stopped at a breakpoint", "Am Haltepunkt angehalten"),
 }
 
 

@@ -5,6 +5,7 @@ from pathlib import Path
 
 from page_tools import call_page, run_js
 from program_builder import block, number, stack, workspace
+from PySide6.QtCore import QPoint, Qt
 from PySide6.QtWidgets import QMessageBox
 
 from rockly_desktop.recording import channels
@@ -213,3 +214,22 @@ def test_an_expression_block_shows_its_last_value_on_hover_live_and_in_the_repla
     assert "__rockly__.value" not in call_page(qtbot, window.editor, "getRunCode", {"values": False})["code"]
     assert run_js(qtbot, window.editor, "RocklyValues.lastValue('sum')") is None
     assert "Last value" not in hover(qtbot, window, "sum")
+
+
+def test_a_breakpoint_is_a_marker_of_its_own_and_a_click_on_it_jumps_there(qtbot, window):
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(stack(
+        block("hobbit_head", {"head_position": "up_center"}, id="first"),
+        block("hobbit_head", {"head_position": "down_center"}, id="second")))})
+    call_page(qtbot, window.editor, "setBreakpoints", {"ids": ["second"]})
+    window.runs.run()
+    qtbot.waitUntil(lambda: window.runs.state == "paused", timeout=10000)
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=10000):
+        window.runs.resume()
+    bar = window.replay_bar
+    qtbot.waitUntil(bar.isVisible, timeout=5000)
+    marker = next(marker for marker in bar.markers.markers if marker.kind == "breakpoint")
+    assert [m.kind for m in bar.markers.markers] == ["breakpoint"]
+    strip = bar.markers
+    qtbot.mouseClick(strip, Qt.MouseButton.LeftButton, pos=QPoint(round(strip._x(marker.time)), strip.height() // 2))
+    assert abs(bar.position - marker.time) < 0.001
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["second"], timeout=5000)
