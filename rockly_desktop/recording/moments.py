@@ -53,6 +53,7 @@ class Moments:
         self._snapshots = _Series(recording.on(channels.SIMULATOR), lambda entry: entry.data)
         self._output = recording.on(channels.OUTPUT)
         self._output_times = [entry.time for entry in self._output]
+        self._printed = None
         self._values = recording.on(channels.VALUES)
         self._values_times = [entry.time for entry in self._values]
         self._commands = recording.on(channels.COMMANDS)
@@ -65,10 +66,11 @@ class Moments:
         """The lines the program printed, in order."""
         return [entry.data.get("text", "") for entry in self._output]
 
-    def printed_lines(self, count: int) -> list:
-        """The first ``count`` lines printed, each after its time since the run began ("  1.25 s  text")."""
-        return [f"{entry.time:7.2f} s  {entry.data.get('text', '')}"
-                for entry in self._output[:count]]
+    def printed_lines(self) -> list:
+        """The lines printed, each after its time since the run began ("   1.25 s  text"); the same list each time."""
+        if self._printed is None:
+            self._printed = [f"{entry.time:7.2f} s  {entry.data.get('text', '')}" for entry in self._output]
+        return self._printed
 
     def at(self, seconds: float) -> Moment:
         """The run as it was ``seconds`` after the recording began."""

@@ -83,7 +83,7 @@ class RecordedTopics:
 
 
 class TopicsAt:
-    """A read-only state store at one moment: ``latest(topic)`` and ``value(topic, path)``."""
+    """A read-only state store at one moment, as far as the state panels read one: ``latest(topic)``."""
 
     def __init__(self, topics: RecordedTopics, seconds: float):
         self.topics = topics
@@ -92,11 +92,3 @@ class TopicsAt:
     def latest(self, topic: str):
         """The newest message on ``topic`` at this moment, or None."""
         return self.topics.latest_at(topic, self.seconds)
-
-    def value(self, topic: str, path: str, default=None):
-        """A field of the newest message at this moment, or ``default``."""
-        message = self.latest(topic)
-        try:
-            return field_value(message, path) if message is not None else default
-        except KeyError:
-            return default

@@ -26,6 +26,8 @@ class ConsoleDock(QDockWidget):
         self.replay_view.setObjectName("console_replay")
         self.replay_view.setReadOnly(True)
         self.replay_view.setFont(self.view.font())
+        self.replay_view.setMaximumBlockCount(MAX_LINES)
+        self._recorded = (None, 0)  # the replay's lines and how many of them are shown
         self._stack = QStackedWidget(self)
         self._stack.addWidget(self.view)
         self._stack.addWidget(self.replay_view)
@@ -55,15 +57,23 @@ class ConsoleDock(QDockWidget):
         """The console's lines without their time stamps."""
         return [line[10:] for line in self.view.toPlainText().splitlines()]
 
-    def show_recorded(self, lines):
-        """Show ``lines`` (a replay's output up to its moment, the last MAX_LINES kept) with the last in sight."""
-        self.replay_view.setPlainText("\n".join(list(lines)[-MAX_LINES:]))
+    def show_recorded(self, lines: list, count: int):
+        """Show the first ``count`` of ``lines`` (a replay's output; the last MAX_LINES of them), the last in
+        sight. Moving on in the same ``lines`` only adds the lines that came since."""
+        shown_lines, shown = self._recorded
+        if lines is shown_lines and shown <= count and shown:
+            if count > shown:
+                self.replay_view.appendPlainText("\n".join(lines[max(shown, count - MAX_LINES):count]))
+        else:
+            self.replay_view.setPlainText("\n".join(lines[max(0, count - MAX_LINES):count]))
+        self._recorded = (lines, count)
         self.replay_view.moveCursor(self.replay_view.textCursor().MoveOperation.End)
         self.replay_view.ensureCursorVisible()
         self._stack.setCurrentWidget(self.replay_view)
 
     def show_live(self):
         """Show the log again (the replay closed)."""
+        self._recorded = (None, 0)
         self._stack.setCurrentWidget(self.view)
 
     def recorded_lines(self) -> list:

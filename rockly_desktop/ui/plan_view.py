@@ -10,6 +10,7 @@ from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QColor, QPainter, QPainterPath, QPen
 from PySide6.QtWidgets import QWidget
 
+from rockly_desktop.ui.state_panels import number_format
 from rockly_desktop.ui.texts import tr
 
 _MARGIN_M = 0.75     # room around the path, in metres
@@ -63,13 +64,17 @@ class PlanView(QWidget):
     def _grid(self, painter) -> float:
         scale = self._scale()
         step = next((s for s in _GRID_STEPS if s * scale >= 40), _GRID_STEPS[-1])
-        low_x, low_y, high_x, high_y = self.bounds
+        corner = self.to_widget(self.bounds[0], self.bounds[3])  # where the plan's top left is drawn
+        low_x = self.bounds[0] - corner.x() / scale  # the metres the whole widget shows
+        high_x = low_x + self.width() / scale
+        high_y = self.bounds[3] + (corner.y() - _TOP) / scale
+        low_y = high_y - (self.height() - _TOP) / scale
         painter.setPen(QPen(QColor("#e0e0e0"), 1))
-        x = math.floor(low_x / step) * step
+        x = math.ceil(low_x / step) * step
         while x <= high_x:
             painter.drawLine(self.to_widget(x, low_y), self.to_widget(x, high_y))
             x += step
-        y = math.floor(low_y / step) * step
+        y = math.ceil(low_y / step) * step
         while y <= high_y:
             painter.drawLine(self.to_widget(low_x, y), self.to_widget(high_x, y))
             y += step
@@ -102,7 +107,8 @@ class PlanView(QWidget):
         painter.setPen(QColor("#333333"))
         if self.poses:
             x, y, heading = self.poses[-1]
-            where = tr("plan_pose", self.language, x=x, y=y, heading=math.degrees(heading))
+            where = number_format(self.language).format(tr("plan_pose", self.language), x=x, y=y,
+                                                        heading=math.degrees(heading))
         else:
             where = tr("plan_no_pose", self.language)
         painter.drawText(QRectF(6, 2, self.width() - 12, 20), Qt.AlignmentFlag.AlignVCenter,
@@ -111,4 +117,5 @@ class PlanView(QWidget):
         bottom = self.height() - 8
         painter.setPen(QPen(QColor("#333333"), 2))
         painter.drawLine(QPointF(10, bottom), QPointF(10 + length, bottom))
-        painter.drawText(QRectF(14 + length, bottom - 14, 80, 20), Qt.AlignmentFlag.AlignVCenter, f"{step:g} m")
+        painter.drawText(QRectF(14 + length, bottom - 14, 80, 20), Qt.AlignmentFlag.AlignVCenter,
+                         number_format(self.language).format("{:g} m", step))

@@ -435,15 +435,15 @@ class PlotPanel(QWidget):
     def show_recorded(self, topics, seconds: float, duration: float):
         """Show the curves' series recorded in ``topics`` (a ``RecordedTopics``), the x axis in seconds since
         the run began (0 to ``duration``), with the cursor at ``seconds``; the live plot waits meanwhile."""
-        if topics is not self._recorded:
-            self._recorded, self._recorded_series, self._duration = topics, {}, duration
-            self.timer.stop()
-            self.plot_item.setLabel("bottom", self._t("plot_replay_axis"), units="s", color=_FOREGROUND)
         if self.cursor is None:
             self.cursor = pg.InfiniteLine(angle=90, movable=False, pen=pg.mkPen("#c62828", width=2))
             self.plot_item.addItem(self.cursor, ignoreBounds=True)
         self.cursor.setValue(seconds)
-        self._draw()
+        if topics is not self._recorded:  # the series are drawn once; a moment only moves the cursor
+            self._recorded, self._recorded_series, self._duration = topics, {}, duration
+            self.timer.stop()
+            self.plot_item.setLabel("bottom", self._t("plot_replay_axis"), units="s", color=_FOREGROUND)
+            self._draw()
 
     def show_live(self):
         """Follow the robot again (the replay closed)."""

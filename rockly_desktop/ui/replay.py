@@ -95,7 +95,7 @@ class Replay(QObject):
         self.variables.show_values(moment.variables)
         if self.console is not None and moment.printed != self._shown_printed:
             self._shown_printed = moment.printed
-            self.console.show_recorded(self.moments.printed_lines(moment.printed))
+            self.console.show_recorded(self.moments.printed_lines(), moment.printed)
         plot = self._plot()
         if plot is not None:
             plot.show_recorded(self.topics, seconds, self.moments.duration)

@@ -155,6 +155,8 @@ def test_the_console_and_the_plot_follow_the_replay(qtbot, driver):
 
     window.replay_bar.jump_to(window.replay_bar.duration)
     qtbot.waitUntil(lambda: len(window.console.recorded_lines()) == 2, timeout=5000)
+    window.replay_bar.jump_to(0.0)  # back before anything was printed
+    assert window.console.recorded_lines() == [] and window.console.replay_view.isVisible()
     window.replay_bar.close_timeline()
     assert not plot.replaying and plot.cursor is None
     assert window.console.recorded_lines() == [] and window.console.lines()[-1] != ""
