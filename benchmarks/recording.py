@@ -7,7 +7,10 @@
 (b) a 1 kHz topic: the cost per message of the state store taking it, without and with
     a recording listening (rate cap 10 per second: most messages are counted and left out);
 (c) GUI event-loop delay p99 in the main window while a tight loop runs at full speed,
-    with the window's recording off (kept: 0) and on.
+    with the window's recording off (kept: 0) and on;
+(d) values on the blocks: the same loop whose statement holds two expression blocks, the
+    code as the page writes it with values off and on (each expression's value through
+    ``__rockly__.value(ID, ...)``), both recorded.
 
     python benchmarks/recording.py
 """
@@ -36,14 +39,28 @@ for count in range({ITERATIONS}):
 """
 
 
-def run_once(recorder=None) -> float:
+VALUES_OFF = f"""n = 0
+for count in range({ITERATIONS}):
+    __rockly__.check()
+    __rockly__.block('set')
+    n = (n + 1) % 7
+"""
+VALUES_ON = f"""n = 0
+for count in range({ITERATIONS}):
+    __rockly__.check()
+    __rockly__.block('set')
+    n = __rockly__.value('rest', (__rockly__.value('sum', (__rockly__.value('get', (n)) + 1)) % 7))
+"""
+
+
+def run_once(recorder=None, code=CODE) -> float:
     from rockly_desktop.executor.control import RunControl
     from rockly_desktop.executor.runner import ProgramRunner
 
-    runner = ProgramRunner(CODE, {"Number": Number}, RunControl(), lambda event: None, {"n": "n"},
+    runner = ProgramRunner(code, {"Number": Number}, RunControl(), lambda event: None, {"n": "n"},
                            entered=None if recorder is None else recorder.blocks)
     if recorder is not None:
-        recorder.follow(runner.hooks, runner.variables_snapshot)
+        recorder.follow(runner.hooks, runner.variables_snapshot, values=runner.values_snapshot)
     started = time.perf_counter()
     result = runner.run()
     elapsed = time.perf_counter() - started
@@ -66,6 +83,24 @@ def per_block(folder: Path):
     plain, recorded = statistics.median(off), statistics.median(on)
     print(f"(a) {ITERATIONS:,}-iteration loop: per block {plain / ITERATIONS * 1e9:.0f} ns without a recording, "
           f"{recorded / ITERATIONS * 1e9:.0f} ns with one, ratio {recorded / plain:.2f} (aim <= {AIM})")
+
+
+def per_value_block(folder: Path):
+    from rockly_desktop.recording.recorder import Recorder
+
+    times = {VALUES_OFF: [], VALUES_ON: []}
+    for trial in range(7):
+        for code, found in times.items():
+            recorder = Recorder(folder / f"values{trial}.mcap")
+            recorder.start({"program": "benchmark"})
+            try:
+                found.append(run_once(recorder, code))
+            finally:
+                recorder.close()
+    plain, watched = statistics.median(times[VALUES_OFF]), statistics.median(times[VALUES_ON])
+    print(f"(d) values on the blocks (3 expression blocks a statement, recorded): per statement "
+          f"{plain / ITERATIONS * 1e9:.0f} ns with values off, {watched / ITERATIONS * 1e9:.0f} ns on, ratio "
+          f"{watched / plain:.2f}; {(watched - plain) / ITERATIONS / 3 * 1e9:.0f} ns per expression block")
 
 
 def per_message(folder: Path):
@@ -145,3 +180,4 @@ if __name__ == "__main__":
         per_block(Path(folder))
         per_message(Path(folder))
         gui_while_recording(Path(folder))
+        per_value_block(Path(folder))

@@ -47,6 +47,7 @@
   // for Python's keywords.
   python.pythonGenerator.addReservedWords('robot,ros,__rockly__');
   guardLargeResults(python.pythonGenerator, python.Order);
+  RocklyValues.instrument(python.pythonGenerator, python.Order);
 
   function loadScript(src) {
     return new Promise((resolve, reject) => {
@@ -271,10 +272,14 @@
     };
   }
 
-  /** The program as it runs: a hook before every statement and in every loop, and its variables. */
-  function runCode() {
+  /**
+   * The program as it runs: a hook before every statement and in every loop, and its variables;
+   * with `values`, every expression block's value also passes `__rockly__.value`.
+   */
+  function runCode(values) {
     const generator = python.pythonGenerator;
     generator.rocklyGuarded = true;
+    generator.rocklyValues = Boolean(values);
     generator.STATEMENT_PREFIX = '__rockly__.block(%1)\n';
     generator.INFINITE_LOOP_TRAP = '__rockly__.check()\n';
     try {
@@ -289,6 +294,7 @@
       return {code, variables, breakpoints: [...breakpoints]};
     } finally {
       generator.rocklyGuarded = false;
+      generator.rocklyValues = false;
       generator.STATEMENT_PREFIX = null;
       generator.INFINITE_LOOP_TRAP = null;
     }
@@ -517,8 +523,8 @@
     getState() {
       return state();
     },
-    getRunCode() {
-      return runCode();
+    getRunCode({values}) {
+      return runCode(values);
     },
     highlight({id}) {
       workspace.highlightBlock(id || null);
@@ -545,6 +551,11 @@
     clearMarks() {
       clearMarks();
       RocklyBadges.show(workspace, {});
+      RocklyValues.show({});
+      return true;
+    },
+    setValues({values, label}) {
+      RocklyValues.show(values || {}, label);
       return true;
     },
     setBadges({badges}) {

@@ -41,7 +41,8 @@ class RunRecording:
     def follow(self, runner):
         """Record ``runner``'s blocks and variables (and the simulator's state), from the start."""
         self._hooks = runner.hooks
-        self.recorder.follow(runner.hooks, runner.variables_snapshot, self._robot.snapshot, self._block_types)
+        self.recorder.follow(runner.hooks, runner.variables_snapshot, self._robot.snapshot, self._block_types,
+                             runner.values_snapshot)
         self.recorder.note(channels.RUN, {"event": "start"})
 
     def command(self, entry: dict):

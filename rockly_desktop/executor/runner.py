@@ -1,7 +1,8 @@
 """Running a generated program in the current thread: no Qt, testable on its own.
 
 The page instruments the code: ``__rockly__.block('ID')`` before every statement block
-and ``__rockly__.check()`` at the top of every loop body. Those calls are where pause,
+and ``__rockly__.check()`` at the top of every loop body (and, when the blocks show their
+values, ``__rockly__.value('ID', value)`` around every expression block). Those calls are where pause,
 step, breakpoints, slow motion and stop happen; robot waits watch the same Interrupt,
 so a stop also ends a long drive or a dialog.
 """
@@ -41,12 +42,18 @@ class BlockHooks:
         self._emit = emit
         self._variables = variables
         self.current_block = None
+        self.values = {}  # expression block id -> its last value (when the code hands them in)
 
     def block(self, block_id: str):
         """Called before each statement block."""
         self.current_block = block_id
         if self._control.attention:
             self._at_block(block_id)
+
+    def value(self, block_id: str, value):
+        """Called with each expression block's value (values on): kept as its last, and passed on."""
+        self.values[block_id] = value
+        return value
 
     def check(self):
         """Called at the top of each loop body, so even an empty loop can be stopped."""
@@ -134,6 +141,16 @@ class ProgramRunner:
                 values[display] = value_text(self.globals.get(python_name), self.language)
             except Exception as error:
                 values[display] = f"<{type(error).__name__}>"
+        return values
+
+    def values_snapshot(self) -> dict:
+        """The expression blocks' last values: block id -> the value as people read it (``value_text``)."""
+        values = {}
+        for block_id, value in dict(self.hooks.values).items():  # a copy: the program goes on meanwhile
+            try:
+                values[block_id] = value_text(value, self.language)
+            except Exception as error:
+                values[block_id] = f"<{type(error).__name__}>"
         return values
 
     def variables_event(self) -> VariablesChanged:

@@ -5,6 +5,7 @@ BLOCKS = "/rockly/blocks"      # a block entered (its time is the message's log 
 VARIABLES = "/rockly/variables"
 OUTPUT = "/rockly/output"      # what the program printed
 COMMANDS = "/rockly/commands"  # what the program sent to the robot, and what came back
+VALUES = "/rockly/values"      # expression blocks' last values, the ones that changed (when values are on)
 SIMULATOR = "/rockly/simulator"  # the simulator's snapshots, for the replay's simulator view
 STATS = "/rockly/recording"    # what the recording left out (rate cap, full queue)
 
@@ -18,6 +19,8 @@ SCHEMAS = {
         "block": _TEXT, "type": _TEXT, "sampled": {"type": "boolean"}}, "required": ["block"]}),
     VARIABLES: ("rockly.Variables", {"type": "object", "properties": {
         "values": {"type": "object", "additionalProperties": {"type": ["string", "null"]}}}}),
+    VALUES: ("rockly.BlockValues", {"type": "object", "properties": {
+        "values": {"type": "object", "additionalProperties": {"type": "string"}}}}),
     OUTPUT: ("rockly.Output", {"type": "object", "properties": {"text": _TEXT}}),
     COMMANDS: ("rockly.Command", {"type": "object", "properties": {
         "kind": {"enum": ["publish", "call", "response", "goal", "feedback", "outcome", "cancel", "failed"]},

@@ -2,7 +2,7 @@
 
 The replay asks ``Moments.at(seconds)`` for the block that was running then, the
 variables' values, the simulator's state and how many lines had been printed, and puts
-``markers()`` on its timeline: errors, pauses (and breakpoints), bumps and goal outcomes.
+``markers()`` on its timeline: errors, pauses, breakpoints, bumps and goal outcomes.
 """
 import bisect
 from dataclasses import dataclass
@@ -26,7 +26,7 @@ class Moment:
 
 @dataclass(frozen=True)
 class Marker:
-    """Something worth finding on the timeline: ``kind`` is 'error', 'pause', 'bump' or 'goal'."""
+    """Something worth finding on the timeline: ``kind`` is 'error', 'pause', 'breakpoint', 'bump' or 'goal'."""
 
     time: float
     kind: str
@@ -51,8 +51,11 @@ class Moments:
         self._blocks = _Series(recording.on(channels.BLOCKS), lambda entry: entry.data["block"])
         self._variables = _Series(recording.on(channels.VARIABLES), lambda entry: entry.data.get("values") or {})
         self._snapshots = _Series(recording.on(channels.SIMULATOR), lambda entry: entry.data)
-        output = recording.on(channels.OUTPUT)
-        self._output_times = [entry.time for entry in output]
+        self._output = recording.on(channels.OUTPUT)
+        self._output_times = [entry.time for entry in self._output]
+        self._printed = None
+        self._values = recording.on(channels.VALUES)
+        self._values_times = [entry.time for entry in self._values]
         self._commands = recording.on(channels.COMMANDS)
         self._command_times = [entry.time for entry in self._commands]
         ends = [entry.time for entry in recording.on(channels.RUN) if entry.data.get("event") == "end"]
@@ -61,12 +64,25 @@ class Moments:
     @property
     def output(self) -> list:
         """The lines the program printed, in order."""
-        return [entry.data.get("text", "") for entry in self.recording.on(channels.OUTPUT)]
+        return [entry.data.get("text", "") for entry in self._output]
+
+    def printed_lines(self) -> list:
+        """The lines printed, each after its time since the run began ("   1.25 s  text"); the same list each time."""
+        if self._printed is None:
+            self._printed = [f"{entry.time:7.2f} s  {entry.data.get('text', '')}" for entry in self._output]
+        return self._printed
 
     def at(self, seconds: float) -> Moment:
         """The run as it was ``seconds`` after the recording began."""
         return Moment(self._blocks.at(seconds), self._variables.at(seconds, {}), self._snapshots.at(seconds),
                       bisect.bisect_right(self._output_times, seconds))
+
+    def values(self, seconds: float) -> dict:
+        """Block id -> the text of the expression block's last value ``seconds`` into the run."""
+        values = {}
+        for entry in self._values[:bisect.bisect_right(self._values_times, seconds)]:
+            values.update(entry.data.get("values") or {})
+        return values
 
     def badges(self, seconds: float) -> dict:
         """Block id -> (state, seconds) as the blocks' badges showed them ``seconds`` into the run."""
@@ -76,12 +92,14 @@ class Moments:
         return states.states
 
     def markers(self) -> list:
-        """Errors, pauses, bumps and goal outcomes, in time order."""
+        """Errors, pauses, breakpoints (a pause at one), bumps and goal outcomes, in time order."""
         found = []
         for entry in self.recording.entries:
             data = entry.data
             if entry.channel == channels.RUN and data.get("event") == "end" and data.get("outcome") == "error":
                 found.append(Marker(entry.time, "error", data.get("message") or ""))
+            elif entry.channel == channels.RUN and data.get("event") == "pause" and data.get("reason") == "breakpoint":
+                found.append(Marker(entry.time, "breakpoint", data.get("block") or ""))
             elif entry.channel == channels.RUN and data.get("event") == "pause":
                 found.append(Marker(entry.time, "pause", data.get("reason") or ""))
             elif entry.channel == channels.COMMANDS and data.get("kind") == "failed":

@@ -33,8 +33,9 @@ class Entry:
 class Recording:
     """A recording as read: metadata, the ``.rockly`` program (bytes or None), Rockly's events in
     time order, message counts per topic, the robot topics' message times (``topic_times``,
-    seconds), channels as ``{topic: (message encoding, schema name, schema encoding)}``, the
-    first event's time (ns since the epoch) and whether the file was finished."""
+    seconds), their messages as stored (``topic_data``, bytes in the same order), each robot topic's
+    ``Schema`` record (``topic_schemas``), channels as ``{topic: (message encoding, schema name,
+    schema encoding)}``, the first event's time (ns since the epoch) and whether the file was finished."""
 
     path: str
     metadata: dict = field(default_factory=dict)
@@ -42,6 +43,8 @@ class Recording:
     entries: list = field(default_factory=list)
     counts: dict = field(default_factory=dict)
     topic_times: dict = field(default_factory=dict)
+    topic_data: dict = field(default_factory=dict)
+    topic_schemas: dict = field(default_factory=dict)
     channels: dict = field(default_factory=dict)
     start_ns: int = 0
     complete: bool = False
@@ -59,7 +62,7 @@ class Recording:
 def read_recording(path) -> Recording:
     """Read ``path``; raises RecordingUnreadable for a file that is not a Rockly recording."""
     recording = Recording(str(path))
-    schemas, topic_of, rockly = {}, {}, []
+    schemas, topic_of, rockly, robot = {}, {}, [], {}
     try:
         stream = open(path, "rb")
     except OSError as error:
@@ -72,6 +75,8 @@ def read_recording(path) -> Recording:
                 elif isinstance(record, Channel):
                     schema = schemas.get(record.schema_id)
                     topic_of[record.id] = record.topic
+                    if schema is not None and not record.topic.startswith("/rockly/"):
+                        recording.topic_schemas[record.topic] = schema
                     recording.channels[record.topic] = (record.message_encoding, schema.name if schema else "",
                                                         schema.encoding if schema else "")
                 elif isinstance(record, Message):
@@ -80,7 +85,7 @@ def read_recording(path) -> Recording:
                     if topic.startswith("/rockly/"):
                         rockly.append((record.log_time, topic, record.data))
                     else:
-                        recording.topic_times.setdefault(topic, []).append(record.log_time)
+                        robot.setdefault(topic, []).append((record.log_time, record.data))
                 elif isinstance(record, Metadata) and record.name == channels.METADATA:
                     recording.metadata = dict(record.metadata)
                 elif isinstance(record, Attachment) and record.name == channels.PROGRAM_ATTACHMENT:
@@ -99,6 +104,8 @@ def read_recording(path) -> Recording:
     recording.start_ns = rockly[0][0] if rockly else 0
     recording.entries = [Entry((stamp - recording.start_ns) / 1e9, topic, json.loads(data))
                          for stamp, topic, data in rockly]
-    recording.topic_times = {topic: sorted((stamp - recording.start_ns) / 1e9 for stamp in stamps)
-                             for topic, stamps in recording.topic_times.items()}
+    for topic, messages in robot.items():
+        messages.sort(key=lambda item: item[0])
+        recording.topic_times[topic] = [(stamp - recording.start_ns) / 1e9 for stamp, _data in messages]
+        recording.topic_data[topic] = [data for _stamp, data in messages]
     return recording

@@ -2,8 +2,8 @@
 
 The program's thread and the robot's threads only put small tuples in a queue (or, for
 blocks, in a deque the block hook fills while it has budget); the writer thread wakes
-every ``TICK_SECONDS``, writes what came in time order, samples the variables and the
-simulator's state, and closes a chunk every ``FLUSH_SECONDS`` so that a crash loses at
+every ``TICK_SECONDS``, writes what came in time order, samples the variables, the
+expression blocks' values and the simulator's state, and closes a chunk every ``FLUSH_SECONDS`` so that a crash loses at
 most that much. Memory stays bounded whatever the rates: topics are capped per topic at
 ``topic_rate`` messages a second, blocks at ``BLOCKS_PER_TICK`` per tick (a tight loop is
 then sampled), and a full queue drops what comes (counted in the recording's stats).
@@ -54,6 +54,8 @@ class Recorder:
         self._variables = None
         self._snapshot = None
         self._last_variables = None
+        self._values = None
+        self._last_values = {}
         self._last_snapshot = None
         self._next_snapshot = 0.0
         self.blocks = deque()  # (monotonic_ns, block id), filled by the block hook
@@ -72,10 +74,12 @@ class Recorder:
         self._thread = threading.Thread(target=self._run, name="rockly-recorder", daemon=True)
         self._thread.start()
 
-    def follow(self, hooks, variables=None, snapshot=None, block_types=None):
+    def follow(self, hooks, variables=None, snapshot=None, block_types=None, values=None):
         """Record the blocks ``hooks`` enters (it fills ``self.blocks`` while ``hooks.block_budget`` lasts),
-        the ``variables()`` when they change and the simulator's ``snapshot()``."""
+        the ``variables()`` when they change, the simulator's ``snapshot()`` and the expression blocks'
+        ``values()`` (those that changed)."""
         self._hooks = hooks
+        self._values = values
         self._variables = variables
         self._snapshot = snapshot
         self._block_types = dict(block_types or {})
@@ -169,6 +173,12 @@ class Recorder:
             if values != self._last_variables:
                 self._last_variables = values
                 items.append((self._clock(), channels.VARIABLES, {"values": values}))
+        if self._values is not None:
+            values = self._values()
+            changed = {block: text for block, text in values.items() if self._last_values.get(block) != text}
+            if changed:
+                self._last_values = values
+                items.append((self._clock(), channels.VALUES, {"values": changed}))
         if self._snapshot is not None and (final or time.monotonic() >= self._next_snapshot):
             self._next_snapshot = time.monotonic() + SNAPSHOT_SECONDS
             snapshot = self._snapshot()

@@ -10,7 +10,8 @@ STARTER_LEVEL = "starter"
 
 
 def badges_shown(settings, profile_id: str) -> bool:
-    """False at the Starter level the teacher chose for this robot; True otherwise."""
+    """False at the Starter level the teacher chose for this robot; True otherwise (badges, and the
+    expression blocks' values on hover, alike)."""
     return settings.teacher.level(profile_id) != STARTER_LEVEL
 
 

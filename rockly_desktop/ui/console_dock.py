@@ -1,8 +1,12 @@
-"""The Console dock: what the program prints and what the robot reports, with times."""
+"""The Console dock: what the program prints and what the robot reports, with times.
+
+During a replay it shows, in a view of its own, what the recorded program had printed up to
+the moment (``show_recorded``), the last line in sight; ``show_live`` goes back to the log.
+"""
 import time
 
 from PySide6.QtGui import QColor, QFontDatabase, QTextCharFormat
-from PySide6.QtWidgets import QDockWidget, QPlainTextEdit
+from PySide6.QtWidgets import QDockWidget, QPlainTextEdit, QStackedWidget
 
 _COLOURS = {"output": "#202020", "robot": "#2e7d32", "info": "#1f5fa8", "error": "#c62828"}
 MAX_LINES = 5000
@@ -18,7 +22,16 @@ class ConsoleDock(QDockWidget):
         self.view.setReadOnly(True)
         self.view.setMaximumBlockCount(MAX_LINES)
         self.view.setFont(QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont))
-        self.setWidget(self.view)
+        self.replay_view = QPlainTextEdit(self)
+        self.replay_view.setObjectName("console_replay")
+        self.replay_view.setReadOnly(True)
+        self.replay_view.setFont(self.view.font())
+        self.replay_view.setMaximumBlockCount(MAX_LINES)
+        self._recorded = (None, 0)  # the replay's lines and how many of them are shown
+        self._stack = QStackedWidget(self)
+        self._stack.addWidget(self.view)
+        self._stack.addWidget(self.replay_view)
+        self.setWidget(self._stack)
 
     def append(self, text: str, kind: str = "output"):
         """Add one line, stamped with the time of day."""
@@ -43,3 +56,26 @@ class ConsoleDock(QDockWidget):
     def lines(self) -> list:
         """The console's lines without their time stamps."""
         return [line[10:] for line in self.view.toPlainText().splitlines()]
+
+    def show_recorded(self, lines: list, count: int):
+        """Show the first ``count`` of ``lines`` (a replay's output; the last MAX_LINES of them), the last in
+        sight. Moving on in the same ``lines`` only adds the lines that came since."""
+        shown_lines, shown = self._recorded
+        if lines is shown_lines and shown <= count and shown:
+            if count > shown:
+                self.replay_view.appendPlainText("\n".join(lines[max(shown, count - MAX_LINES):count]))
+        else:
+            self.replay_view.setPlainText("\n".join(lines[max(0, count - MAX_LINES):count]))
+        self._recorded = (lines, count)
+        self.replay_view.moveCursor(self.replay_view.textCursor().MoveOperation.End)
+        self.replay_view.ensureCursorVisible()
+        self._stack.setCurrentWidget(self.replay_view)
+
+    def show_live(self):
+        """Show the log again (the replay closed)."""
+        self._recorded = (None, 0)
+        self._stack.setCurrentWidget(self.view)
+
+    def recorded_lines(self) -> list:
+        """The lines the replay view shows."""
+        return self.replay_view.toPlainText().splitlines() if self._stack.currentWidget() is self.replay_view else []

@@ -93,7 +93,9 @@ class MainWindow(QMainWindow):
         self.runs.sig_status.connect(lambda text: self.statusBar().showMessage(text))
         self.tablet.sig_dismissed.connect(self.runs.stop)
         self.replay = Replay(self.replay_bar, self.editor, self.variables, self.simulator_dock, self.language, self,
-                             lambda: badges_shown(self.settings, self.profile.id))
+                             lambda: badges_shown(self.settings, self.profile.id), self.console, self._made_plot,
+                             lambda: self.state_dock.widget() if isinstance(self.state_dock.widget(), StatePanels)
+                             else None)
         self.runs.sig_state_changed.connect(lambda state: state == "starting" and self.replay.close())
         self.runs.sig_finished.connect(lambda _result: self.runs.last_recording and self.replay.open(
             self.runs.last_recording, quiet=True))
@@ -214,7 +216,7 @@ class MainWindow(QMainWindow):
         monitor = TopicMonitor(robot.state, robot.graph_topics, self.language)
         monitor.sig_plot_requested.connect(self._plot)
         self._replace_dock_widget(self.monitor_dock, monitor)
-        had_plot = self.plot_dock.widget() is not None and self.plot_dock.widget().objectName() == "plot_panel"
+        had_plot = self._made_plot() is not None
         self._plot_store = robot.state
         self._replace_dock_widget(self.plot_dock, QLabel(self.plot_dock))  # the plot is made when first shown
         if had_plot:
@@ -223,6 +225,10 @@ class MainWindow(QMainWindow):
             self.simulator_dock.show_robot(None, None, tr("real_robot_view", self.language))
         else:
             self.simulator_dock.show_robot(robot, view_class(language=self.language) if view_class else None)
+
+    def _made_plot(self):
+        widget = self.plot_dock.widget()
+        return widget if widget is not None and widget.objectName() == "plot_panel" else None
 
     def plot_panel(self):
         """The Plot dock's panel, made on first use (pyqtgraph takes a while to load)."""

@@ -6,6 +6,9 @@ samples it has not seen yet into its own bounded buffer per curve (the store kee
 history; the panel keeps up to 5 minutes), and draws the last 10 s / 30 s / 60 s / 5 min with
 pyqtgraph, time on the x axis in seconds relative to now (0 = now, -30 = 30 s ago).
 
+During a replay (``show_recorded``) the curves show their recorded series instead, over the whole
+run (time since it began) with a vertical cursor at the replay's moment; ``show_live`` goes back.
+
 Fields arrive by drag and drop (text ``"topic|field.path"``, see
 :func:`~rockly_desktop.core.field_paths.field_mime_text`) or through the "Add…" menu. Clicking a
 curve's legend entry hides or shows it.
@@ -117,6 +120,10 @@ class PlotPanel(QWidget):
         self._window = DEFAULT_WINDOW
         self._paused = False
         self._now = None  # the moment the plot shows as 0 s
+        self._recorded = None  # a replay's RecordedTopics while one is shown
+        self._recorded_series = {}
+        self._duration = 0.0
+        self.cursor = None
 
         self.timer = QTimer(self)
         self.timer.setInterval(REFRESH_INTERVAL_MS)
@@ -351,6 +358,9 @@ class PlotPanel(QWidget):
 
     def refresh(self):
         """Read the samples that arrived since the last refresh and redraw (nothing while paused)."""
+        if self._recorded is not None:
+            self._draw()
+            return
         if self._paused:
             return
         self._now = self._clock()
@@ -372,12 +382,23 @@ class PlotPanel(QWidget):
         read_new_samples(self._store, curve.topic, curve.path, curve.buffer)
 
     def _shown(self, curve):
-        """(times, values) of a curve's samples inside the window ending at the shown moment."""
+        """(times, values) of a curve's samples inside the window ending at the shown moment (in a replay:
+        its recorded series)."""
+        if self._recorded is not None:
+            key = (curve.topic, curve.path)
+            if key not in self._recorded_series:
+                self._recorded_series[key] = tuple(np.array(part) for part in self._recorded.series(*key))
+            return self._recorded_series[key]
         if self._now is None:
             return np.empty(0), np.empty(0)
         return curve.buffer.between(self._now - self._window, self._now)
 
     def _draw(self):
+        if self._recorded is not None:
+            for curve in self._curves:
+                curve.item.setData(*self._shown(curve))
+            self.plot_item.setXRange(0, max(self._duration, 0.001), padding=0.015)
+            return
         for curve in self._curves:
             times, values = self._shown(curve)
             # Copies: the buffer reuses its memory, pyqtgraph keeps what it gets.
@@ -389,7 +410,7 @@ class PlotPanel(QWidget):
         self.plot_item.setXRange(-self._window, 0, padding=0.015)
 
     def _update_timer(self):
-        if self.isVisible() and not self._paused and self._curves:
+        if self.isVisible() and not self._paused and self._curves and self._recorded is None:
             if not self.timer.isActive():
                 self.timer.start()
         else:
@@ -404,12 +425,45 @@ class PlotPanel(QWidget):
         super().hideEvent(event)
         self.timer.stop()
 
+    # --- replay ---
+
+    @property
+    def replaying(self) -> bool:
+        """Whether a replay's recorded series are shown."""
+        return self._recorded is not None
+
+    def show_recorded(self, topics, seconds: float, duration: float):
+        """Show the curves' series recorded in ``topics`` (a ``RecordedTopics``), the x axis in seconds since
+        the run began (0 to ``duration``), with the cursor at ``seconds``; the live plot waits meanwhile."""
+        if self.cursor is None:
+            self.cursor = pg.InfiniteLine(angle=90, movable=False, pen=pg.mkPen("#c62828", width=2))
+            self.plot_item.addItem(self.cursor, ignoreBounds=True)
+        self.cursor.setValue(seconds)
+        if topics is not self._recorded:  # the series are drawn once; a moment only moves the cursor
+            self._recorded, self._recorded_series, self._duration = topics, {}, duration
+            self.timer.stop()
+            self.plot_item.setLabel("bottom", self._t("plot_replay_axis"), units="s", color=_FOREGROUND)
+            self._draw()
+
+    def show_live(self):
+        """Follow the robot again (the replay closed)."""
+        if self._recorded is None:
+            return
+        self._recorded, self._recorded_series = None, {}
+        self.plot_item.removeItem(self.cursor)
+        self.cursor = None
+        self.plot_item.setLabel("bottom", self._t("plot_time_axis"), units="s", color=_FOREGROUND)
+        self._now = self._now if self._paused else self._clock()
+        self._draw()
+        self.refresh()
+        self._update_timer()
+
     # --- the Add… form ---
 
     def reload_topics(self):
         """Offer the store's topics in the Add… form (keeping what is typed)."""
         typed = self.topic_box.currentText()
-        names = [info.topic for info in self._store.topics()]
+        names = self._recorded.names if self._recorded is not None else [info.topic for info in self._store.topics()]
         if names != [self.topic_box.itemText(i) for i in range(self.topic_box.count())]:
             self.topic_box.blockSignals(True)
             self.topic_box.clear()
@@ -419,7 +473,8 @@ class PlotPanel(QWidget):
         self._offer_fields(self.topic_box.currentText())
 
     def _offer_fields(self, topic):
-        message = self._store.latest(topic.strip()) if topic.strip() else None
+        latest = self._store.latest if self._recorded is None else self._recorded.at(self._duration).latest
+        message = latest(topic.strip()) if topic.strip() else None
         self.field_completer.model().setStringList(numeric_paths(message) if message is not None else [])
 
     def _add_from_form(self):

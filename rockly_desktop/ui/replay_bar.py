@@ -15,7 +15,7 @@ from rockly_desktop.ui.texts import tr
 
 SPEEDS = (0.25, 0.5, 1.0, 2.0, 4.0)
 PLAY_MS = 33
-_COLOURS = {"error": "#d32f2f", "pause": "#f9a825", "bump": "#6a1b9a", "goal": "#2e7d32"}
+_COLOURS = {"error": "#d32f2f", "pause": "#f9a825", "breakpoint": "#1565c0", "bump": "#6a1b9a", "goal": "#2e7d32"}
 _CLICK_PIXELS = 6
 
 

@@ -50,6 +50,8 @@ class RunSession(QObject):
         self.last_recording = None  # the path of the last run's recording
         self._recording = None
         self._badges_shown = None  # the badge states last sent to the page
+        self._values_on = False  # the run hands its expression blocks' values in (not at the Starter level)
+        self._values_shown = None  # the values last sent to the page
         self._delay = 0.0
         self._start_request = None  # the run waiting for the page's code; None when cancelled
         self._switch_interval = sys.getswitchinterval()
@@ -71,7 +73,10 @@ class RunSession(QObject):
         request = object()
         self._start_request = request
         self._set_state("starting")
-        self.editor.call("getRunCode", None, lambda run_code, error: self._start(request, run_code, error, step_first),
+        self._values_on = badges_shown(self.settings, self.document.profile.id)
+        self._values_shown = None
+        self.editor.call("getRunCode", {"values": self._values_on},
+                         lambda run_code, error: self._start(request, run_code, error, step_first),
                          timeout_ms=ANSWER_TIMEOUT_MS)
         return True
 
@@ -202,6 +207,16 @@ class RunSession(QObject):
         self._highlight(runner.hooks.current_block)
         self.variables.show_values(runner.variables_snapshot())
         self._show_badges()
+        self._show_block_values()
+
+    def _show_block_values(self):
+        """Send the expression blocks' last values when they changed (shown on hover)."""
+        if not self._values_on or self.thread is None:
+            return
+        values = self.thread.runner.values_snapshot()
+        if values != self._values_shown:
+            self._values_shown = values
+            self.editor.call("setValues", {"values": values, "label": tr("block_value", self.settings.language)})
 
     def _show_badges(self):
         """Send the blocks' badges when their states changed (the run's recording keeps them)."""
@@ -241,6 +256,7 @@ class RunSession(QObject):
         self.last_result = result
         self._highlight(None)
         self._show_badges()
+        self._show_block_values()
         if result.outcome == "error":
             self.console.append(result.message, "error")
             self.editor.call("markError", {"id": result.block_id, "message": result.message})

@@ -1,4 +1,8 @@
-"""The Simulator dock: the profile's own view of its simulated robot, refreshed at 30 Hz."""
+"""The Simulator dock: the profile's own view of its simulated robot, refreshed at 30 Hz.
+
+A replay of a real robot's run puts its plan view here for a while (``show_recorded_view``;
+the dock shows even where a real robot hides it), ``show_live_view`` puts the live one back.
+"""
 from PySide6.QtCore import Qt, QTimer
 from PySide6.QtWidgets import QDockWidget, QLabel
 
@@ -16,9 +20,13 @@ class SimulatorDock(QDockWidget):
         self._timer = QTimer(self)
         self._timer.setInterval(REFRESH_MS)
         self._timer.timeout.connect(self.refresh)
+        self._live = None  # (the live widget, whether the dock was hidden) while a recorded view is shown
 
     def show_robot(self, robot, view, note: str = "—"):
         """Show ``robot``'s simulation in ``view``; without a view, show ``note`` instead."""
+        if self._live is not None:  # the robot changed during a replay: its recorded view goes too
+            self._live[0].deleteLater()
+            self._live = None
         self.robot = robot
         self.view = view
         old = self.widget()
@@ -49,3 +57,26 @@ class SimulatorDock(QDockWidget):
         if self.robot is not None and self.view is not None:
             self.refresh()
             self._timer.start()
+
+    def show_recorded_view(self, widget):
+        """Show ``widget`` (a replay's plan view) instead of the live view, the dock shown."""
+        self.stop()
+        if self._live is None:
+            self._live = (self.widget(), self.isHidden())
+            self._live[0].hide()
+        else:
+            self.widget().deleteLater()
+        self.setWidget(widget)
+        self.show()
+
+    def show_live_view(self):
+        """Put the live view back as it was before ``show_recorded_view`` (nothing if none was shown)."""
+        if self._live is None:
+            return
+        live, hidden = self._live
+        self._live = None
+        self.widget().deleteLater()
+        self.setWidget(live)
+        live.show()
+        self.setHidden(hidden)
+        self.resume()

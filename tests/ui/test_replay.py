@@ -1,7 +1,11 @@
 """Replaying a recorded run in the window (real QtWebEngine + Blockly): every run is recorded, its
 timeline shows under the workspace, and a moment lights the block and shows the values of then."""
+import json
+from pathlib import Path
+
 from page_tools import call_page, run_js
 from program_builder import block, number, stack, workspace
+from PySide6.QtCore import QPoint, Qt
 from PySide6.QtWidgets import QMessageBox
 
 from rockly_desktop.recording import channels
@@ -99,3 +103,135 @@ def test_blocks_that_talk_to_the_robot_get_badges_live_and_in_the_replay_not_at_
     window.replay_bar.jump_to(0.0)
     window.replay_bar.jump_to(window.replay_bar.duration)
     assert badge(qtbot, window, "info") is None
+
+
+def glowing(image) -> bool:
+    """Whether a grab of the editor shows a highlighted block's yellow glow (a few dozen pixels of it)."""
+    found = 0
+    for y in range(0, image.height(), 3):
+        for x in range(0, image.width(), 3):
+            colour = image.pixelColor(x, y)
+            found += colour.red() > 230 and 150 < colour.green() < 215 and colour.blue() < 60
+    return found > 30
+
+
+def shot(widget, name):
+    """Save ``widget`` as /tmp/replay_shots/NAME.png (to look at)."""
+    folder = Path("/tmp/replay_shots")
+    folder.mkdir(exist_ok=True)
+    assert widget.grab().save(str(folder / f"{name}.png"))
+
+
+def test_the_console_and_the_plot_follow_the_replay(qtbot, driver):
+    window = driver.open_window(simulator_speed=2.0)
+    window.plot_dock.raise_()
+    window.plot_panel().add_curve("/odom", "pose.pose.position.x")
+    say = [block("text_print", inputs={"TEXT": block("text", {"TEXT": f"lap {lap}"})}, id=f"say{lap}")
+           for lap in (1, 2)]
+    result = run_to_the_end(qtbot, window, stack(
+        say[0], block("hobbit_move", {"direction": "+"}, {"speed": number(1)}, id="drive"), say[1]))
+    assert result.outcome == "finished"
+    qtbot.waitUntil(window.replay_bar.isVisible, timeout=5000)
+    printed = window.replay.moments.recording.on(channels.OUTPUT)
+    assert [entry.data["text"] for entry in printed] == ["lap 1", "lap 2"]
+    odom_x = window.replay.topics.series("/odom", "pose.pose.position.x")
+    assert len(odom_x[0]) > 2 and odom_x[1][-1] > odom_x[1][0]  # it drove forward
+
+    middle = (printed[0].time + printed[1].time) / 2
+    page_before = window.editor.grab().toImage()
+    window.replay_bar.jump_to(middle)
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=5000)
+    qtbot.waitUntil(lambda: glowing(window.editor.grab().toImage()) and window.editor.grab().toImage() != page_before,
+                    timeout=5000)  # the page has painted the glow where it is now
+    lines = window.console.recorded_lines()
+    assert len(lines) == 1 and lines[0].endswith("lap 1")  # what had been printed by then
+    plot = window.plot_panel()
+    assert plot.replaying and abs(plot.cursor.value() - window.replay_bar.position) < 1e-9
+    times, values = plot.curve_item("/odom", "pose.pose.position.x").getData()
+    assert list(times) == odom_x[0] and list(values) == odom_x[1]  # the whole recorded series
+    shot(window, "replay_plot")
+    window.console.raise_()
+    shot(window, "replay_console")
+
+    window.replay_bar.jump_to(window.replay_bar.duration)
+    qtbot.waitUntil(lambda: len(window.console.recorded_lines()) == 2, timeout=5000)
+    window.replay_bar.jump_to(0.0)  # back before anything was printed
+    assert window.console.recorded_lines() == [] and window.console.replay_view.isVisible()
+    window.replay_bar.close_timeline()
+    assert not plot.replaying and plot.cursor is None
+    assert window.console.recorded_lines() == [] and window.console.lines()[-1] != ""
+
+
+HOVER_SCRIPT = """(() => {
+  clearInterval(window.rocklyHovering);
+  const path = Blockly.getMainWorkspace().getBlockById(%s).pathObject.svgPath;
+  const point = () => {
+    const box = path.getBoundingClientRect();
+    const at = {bubbles: true, clientX: box.left + 6, clientY: box.bottom - 6, pointerType: 'mouse'};
+    path.dispatchEvent(new PointerEvent('pointerout', at));
+    setTimeout(() => {
+      path.dispatchEvent(new PointerEvent('pointerover', at));
+      path.dispatchEvent(new PointerEvent('pointermove', at));
+    }, 20);
+  };
+  point();
+  // Blockly shows a tooltip 750 ms after the pointer rests, unless a gesture blocks tooltips then: again.
+  window.rocklyHovering = setInterval(() => Blockly.Tooltip.isVisible() ? clearInterval(window.rocklyHovering)
+                                                                        : point(), 1500);
+  return true;
+})()"""
+
+
+def hover(qtbot, window, block_id):
+    """Point at ``block_id`` as a mouse would; the text of the tooltip Blockly shows then."""
+    run_js(qtbot, window.editor, "Blockly.Tooltip.hide(), true")
+    run_js(qtbot, window.editor, HOVER_SCRIPT % json.dumps(block_id))
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "Blockly.Tooltip.isVisible()"), timeout=10000)
+    return run_js(qtbot, window.editor, "Blockly.Tooltip.getDiv().innerText")
+
+
+def test_an_expression_block_shows_its_last_value_on_hover_live_and_in_the_replay_not_at_the_starter_level(
+        qtbot, window):
+    sum_block = block("math_arithmetic", {"OP": "ADD"}, {"A": number(1), "B": block(
+        "variables_get", {"VAR": {"id": "laps"}}, id="laps_now")}, id="sum")
+    program = stack(block("variables_set", {"VAR": {"id": "laps"}}, {"VALUE": number(2)}, id="two"),
+                    block("text_print", inputs={"TEXT": sum_block}, id="say"))
+    assert run_to_the_end(qtbot, window, program, variables=["laps"]).outcome == "finished"
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "RocklyValues.lastValue('sum')") == "3", timeout=5000)
+    assert run_js(qtbot, window.editor, "RocklyValues.lastValue('laps_now')") == "2"
+    text = hover(qtbot, window, "sum")
+    assert text.splitlines()[-1] == "Last value: 3" and len(text.splitlines()) > 1  # below Blockly's own tooltip
+    shot(window.editor, "value_on_hover")
+    assert "__rockly__.value" not in call_page(qtbot, window.editor, "getState")["python"]  # exported Python is plain
+    assert "value" not in str(call_page(qtbot, window.editor, "getState")["workspace"]).replace("VALUE", "")
+
+    window.replay_bar.jump_to(0.0)  # before the sum was worked out
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "RocklyValues.lastValue('sum')") is None, timeout=5000)
+    assert hover(qtbot, window, "sum").splitlines()[-1] != "Last value: 3"
+    window.replay_bar.jump_to(window.replay_bar.duration)
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "RocklyValues.lastValue('sum')") == "3", timeout=5000)
+
+    window.settings.teacher.set_level("hobbit", "starter")
+    assert run_to_the_end(qtbot, window, program, variables=["laps"]).outcome == "finished"
+    assert "__rockly__.value" not in call_page(qtbot, window.editor, "getRunCode", {"values": False})["code"]
+    assert run_js(qtbot, window.editor, "RocklyValues.lastValue('sum')") is None
+    assert "Last value" not in hover(qtbot, window, "sum")
+
+
+def test_a_breakpoint_is_a_marker_of_its_own_and_a_click_on_it_jumps_there(qtbot, window):
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(stack(
+        block("hobbit_head", {"head_position": "up_center"}, id="first"),
+        block("hobbit_head", {"head_position": "down_center"}, id="second")))})
+    call_page(qtbot, window.editor, "setBreakpoints", {"ids": ["second"]})
+    window.runs.run()
+    qtbot.waitUntil(lambda: window.runs.state == "paused", timeout=10000)
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=10000):
+        window.runs.resume()
+    bar = window.replay_bar
+    qtbot.waitUntil(bar.isVisible, timeout=5000)
+    marker = next(marker for marker in bar.markers.markers if marker.kind == "breakpoint")
+    assert [m.kind for m in bar.markers.markers] == ["breakpoint"]
+    strip = bar.markers
+    qtbot.mouseClick(strip, Qt.MouseButton.LeftButton, pos=QPoint(round(strip._x(marker.time)), strip.height() // 2))
+    assert abs(bar.position - marker.time) < 0.001
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["second"], timeout=5000)
