@@ -1,10 +1,17 @@
 """Start-up work off the GUI thread: the event loop keeps running while it is done."""
+import json
+import os
+import subprocess
+import sys
 import threading
+from pathlib import Path
 
 import pytest
 from PySide6.QtCore import QTimer
 
 from rockly_desktop.app import while_events_run
+
+REPO = Path(__file__).resolve().parents[1]
 
 
 def test_work_runs_in_another_thread_while_the_event_loop_runs(qapp):
@@ -24,3 +31,15 @@ def test_the_work_s_exception_is_raised_in_the_calling_thread(qapp):
 
     with pytest.raises(LookupError, match="no such profile"):
         while_events_run(work)
+
+
+def test_the_window_s_modules_leave_what_start_up_does_not_need_unimported():
+    """Plotting, recordings, ROS and YAML are imported when first used, not by the window's start."""
+    script = ("import sys, json; import rockly_desktop.ui.main_window; "
+              "print(json.dumps(sorted(name for name in ('numpy', 'pyqtgraph', 'mcap', 'mcap_ros1', 'rospy', 'genpy', "
+              "'rclpy', 'yaml', 'urllib.request') if name in sys.modules)))")
+    env = dict(os.environ, QT_QPA_PLATFORM="offscreen")
+    result = subprocess.run([sys.executable, "-c", script], cwd=REPO, env=env, capture_output=True, text=True,
+                            timeout=60, check=False)
+    assert result.returncode == 0, result.stderr
+    assert json.loads(result.stdout) == []
