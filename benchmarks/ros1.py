@@ -22,6 +22,7 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 sys.path.insert(0, str(REPO / "tests"))
 
+from _stop_on_the_wire import stop_latencies  # noqa: E402
 from ros_helpers import RosMaster, ros_environment  # noqa: E402
 
 TRIALS = 300
@@ -187,28 +188,10 @@ def run_all(master):
           f"ratio {plain_rate / max(rockly_rate, 1):.2f}")
 
     # --- stop latency on the wire -------------------------------------------------------
-    from rockly_desktop.executor.control import RunControl
-    from rockly_desktop.executor.run_setup import make_runner
-
     seen = []
     rospy.Subscriber("/twist_seen", Float64, lambda m: seen.append(m.data))
     time.sleep(0.3)
-    latencies = []
-    for _ in range(STOP_TRIALS):
-        control = RunControl()
-        code = "robot.backend.publish('/cmd_vel', 'geometry_msgs/Twist', {'linear': {'x': 0.2}})\nrobot.wait(60)\n"
-        runner = make_runner(hobbit, robot, {"code": code, "variables": {}}, control, lambda e: None)
-        thread = threading.Thread(target=runner.run)
-        thread.start()
-        time.sleep(0.1)
-        before = len(seen)
-        requested = time.time()
-        control.request_stop()
-        thread.join(5)
-        deadline = time.monotonic() + 5
-        while len(seen) == before and time.monotonic() < deadline:
-            time.sleep(0.0005)
-        latencies.append(seen[before] - requested)
+    latencies = stop_latencies(hobbit, robot, seen, STOP_TRIALS)
     print(f"stop latency on the wire (stop -> zero Twist at a separate node): median {median_ms(latencies):.2f} ms, "
           f"max {max(latencies) * 1000:.2f} ms over {STOP_TRIALS} stops (aim max <= 50 ms)")
 

@@ -26,6 +26,8 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
+from _stop_on_the_wire import stop_latencies  # noqa: E402
+
 ROS2_PYTHON = REPO / ".venv-ros2" / "bin" / "python"
 TRIALS = 300
 ACTION_TRIALS = 50
@@ -320,27 +322,9 @@ def run_all(settings, plain):
         time.sleep(0.2)
 
     # --- stop latency on the wire -------------------------------------------------------
-    from rockly_desktop.executor.control import RunControl
-    from rockly_desktop.executor.run_setup import make_runner
-
     seen = []
     backend.subscribe("/twist_seen", "std_msgs/Float64", lambda m: seen.append(m["data"]))
-    latencies = []
-    for _ in range(STOP_TRIALS):
-        control = RunControl()
-        code = "robot.backend.publish('/cmd_vel', 'geometry_msgs/Twist', {'linear': {'x': 0.2}})\nrobot.wait(60)\n"
-        runner = make_runner(turtlebot, robot, {"code": code, "variables": {}}, control, lambda e: None)
-        thread = threading.Thread(target=runner.run)
-        thread.start()
-        time.sleep(0.1)
-        before = len(seen)
-        requested = time.time()
-        control.request_stop()
-        thread.join(5)
-        deadline = time.monotonic() + 5
-        while len(seen) == before and time.monotonic() < deadline:
-            time.sleep(0.0005)
-        latencies.append(seen[before] - requested)
+    latencies = stop_latencies(turtlebot, robot, seen, STOP_TRIALS)
     print(f"stop latency on the wire (stop -> zero Twist at the echo node): median {median_ms(latencies):.2f} ms, "
           f"max {max(latencies) * 1000:.2f} ms over {STOP_TRIALS} stops (aim max <= 20 ms)")
     robot.shutdown()
