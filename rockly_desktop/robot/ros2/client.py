@@ -71,6 +71,14 @@ class Ros2Helper:
         if helper is not None:
             helper.close()
 
+    @classmethod
+    def end(cls, helper: "Ros2Helper"):
+        """End ``helper``; the next ``get`` starts a new one if it was the process's."""
+        with cls._current_lock:
+            if cls._current is helper:
+                cls._current = None
+        helper.close()
+
     def __init__(self, settings: Ros2Settings):
         self.settings = settings
         python = ros2_python()

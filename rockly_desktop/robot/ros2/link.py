@@ -43,7 +43,7 @@ class Ros2Connection:
 
 
 class Ros2Robot:
-    """A robot on ROS 2, through this process's one helper (started on first use).
+    """A robot on ROS 2, through this process's one helper (started on first use, ended by ``shutdown``).
 
     ``settings`` (Ros2Settings) are the domain id, discovery range and static peers. Raises
     Ros2Unavailable when ROS 2 is not set up (naming ``make ros2``) or its helper does not start.
@@ -141,9 +141,12 @@ class Ros2Robot:
         return run_safe_stop(self.profile.safe_stop, self.backend(Interrupt()))
 
     def shutdown(self):
-        """Stop the robot safely and stop following the graph; the helper stays for the process."""
+        """Stop the robot safely, stop following the graph and end the helper (its last act is the
+        safe stop too): no process is left when the window closes or ``rockly run`` ends."""
         if self._feed is not None:
             self._feed.stop()
             self._feed = None
-        self.safe_stop()
-        self.graph.close()
+        if not self.helper.lost:
+            self.safe_stop()
+            self.graph.close()
+        Ros2Helper.end(self.helper)
