@@ -11,7 +11,9 @@ from waiting import eventually
 from rockly_desktop.robot.link import RobotLink
 from rockly_desktop.robot.links import open_link
 from rockly_desktop.robot.ros2.client import Ros2Helper
-from rockly_desktop.robot.ros2.environment import PROJECT_ROOT
+from rockly_desktop.robot.ros2.environment import PROJECT_ROOT, Ros2Settings
+
+ROS2_PYTHON = PROJECT_ROOT / ".venv-ros2" / "bin" / "python"
 
 
 @pytest.fixture(scope="module")
@@ -121,3 +123,30 @@ def test_errors_on_blocks_are_said_in_the_runs_language(linked):
         backend.call_service("/nobody_here", "std_srvs/SetBool", {"data": True}, 0.2)
     assert silent.value.in_language("de").startswith("der Dienst")
     assert str(silent.value) == "the service '/nobody_here' is not available (waited 0.2 s)"
+
+
+def test_rockly_sim_on_ros2_with_its_window_serves_odometry_and_ends_on_sigterm(tmp_path, ros2_settings):
+    domain = ros2_settings.domain_id + 2
+    simulator = rockly_process(tmp_path, "sim", "turtlebot", "--ros2", "--domain", domain, "--discovery", "localhost")
+    try:
+        assert "is up on ROS (close its window" in simulator.stdout.readline()
+        heard = subprocess.run([str(ROS2_PYTHON), "-c", ODOMETRY_LISTENER], capture_output=True, text=True,
+                               timeout=60, env=Ros2Settings(domain, "localhost").environment())
+    finally:
+        simulator.terminate()
+        simulator.wait(timeout=30)
+    assert heard.stdout.strip() == "odom frame: odom", heard.stderr
+    assert simulator.returncode == 0, simulator.stderr.read()
+
+
+ODOMETRY_LISTENER = r"""
+import rclpy
+from nav_msgs.msg import Odometry
+rclpy.init()
+node = rclpy.create_node("odometry_listener")
+heard = []
+node.create_subscription(Odometry, "/odom", heard.append, 10)
+while not heard:
+    rclpy.spin_once(node, timeout_sec=0.1)
+print("odom frame:", heard[0].header.frame_id)
+"""
