@@ -1,6 +1,7 @@
 """``rockly sim PROFILE --ros``: a profile's simulated robot served on a robot link's middleware.
 
-Which option serves on what (``--ros``: a ROS 1 node) is the robot-link registry's (``robot/links.py``).
+Which option serves on what (``--ros``: a ROS 1 node, ``--ros2``: ROS 2 through its helper) is the
+robot-link registry's (``robot/links.py``).
 
 By default a small window shows the robot and asks its tablet questions beyond ``--answer``;
 ``--no-window`` runs it headless. Closing the window, Ctrl+C or SIGTERM ends the node (exit 0).

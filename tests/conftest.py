@@ -19,7 +19,7 @@ os.environ.setdefault("QTWEBENGINE_DISABLE_SANDBOX", "1")
 import PySide6.QtWebEngineWidgets  # noqa: F401 - must be imported before the QApplication exists
 import pytest
 
-pytest_plugins = ["leak_check", "ros_fixtures"]
+pytest_plugins = ["leak_check", "ros_fixtures", "ros2_fixtures"]
 
 REPO = Path(__file__).resolve().parents[1]
 HOBBIT_DIR = REPO / "profiles" / "hobbit"

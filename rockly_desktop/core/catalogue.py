@@ -65,6 +65,8 @@ def read_po_entries(path) -> list:
         word, rest = (last, line) if line.startswith('"') else line.split(" ", 1)
         if word not in ("msgctxt", "msgid", "msgstr") or not rest.startswith('"'):
             raise ValueError(f"{path}:{number}: cannot read {line!r}")
+        if word in ("msgctxt", "msgid") and "msgid" in current and not line.startswith('"'):
+            raise ValueError(f"{path}:{number}: the entry before has no msgstr")
         text = _po_string(rest, f"{path}:{number}")
         current[word] = current.get(word, "") + text if line.startswith('"') else text
         last = word

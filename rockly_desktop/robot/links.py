@@ -37,8 +37,10 @@ class ConnectionSetting:
     help: str = ""
 
     def default_value(self) -> str:
-        """The value to offer when none is remembered: from this computer's environment, else ``default``."""
-        return next((os.environ[name] for name in self.environment if os.environ.get(name)), self.default)
+        """The value to offer when none is remembered: from this computer's environment (a choice's
+        value in any case, e.g. LOCALHOST for localhost), else ``default``."""
+        value = next((os.environ[name] for name in self.environment if os.environ.get(name)), self.default)
+        return next((choice for choice, _text in self.choices if choice.lower() == value.lower()), value)
 
 
 @dataclass(frozen=True)
@@ -77,6 +79,21 @@ ROS1_SETTINGS = (
     ConnectionSetting("host", "connect_host", ("ROS_IP", "ROS_HOSTNAME"), hint="connect_host_hint"),
 )
 
+ROS2_SETTINGS = (
+    ConnectionSetting("domain_id", "connect_domain", ("ROS_DOMAIN_ID",), "0", hint="connect_domain_hint",
+                      example="232", option="--domain",
+                      help="ROS 2 domain id, 0 to 232 (default: $ROS_DOMAIN_ID or 0)"),
+    ConnectionSetting("discovery", "connect_discovery", ("ROS_AUTOMATIC_DISCOVERY_RANGE",), "subnet",
+                      choices=tuple((value, f"connect_discovery_{value}")
+                                    for value in ("localhost", "subnet", "off", "system_default")),
+                      option="--discovery", help="ROS 2 discovery range: localhost, subnet, off or system_default "
+                                                 "(default: $ROS_AUTOMATIC_DISCOVERY_RANGE or subnet)"),
+    ConnectionSetting("peers", "connect_peers", ("ROS_STATIC_PEERS",), hint="connect_peers_hint",
+                      example="192.168.100.100; robot.local", option="--peers",
+                      help="ROS 2 static peers beyond the discovery range, e.g. '192.168.1.30;robot.local' "
+                           "(default: $ROS_STATIC_PEERS)"),
+)
+
 LINKS = {entry.kind: entry for entry in (
     LinkKind("sim", "rockly_desktop.robot.sim_link:SimulatedRobot", "backend_simulator", "the built-in simulator",
              simulated=True),
@@ -84,6 +101,9 @@ LINKS = {entry.kind: entry for entry in (
              settings=ROS1_SETTINGS,
              settings_group="ros", explanation="connect_explanation",
              sim_option="--ros", sim_server="rockly_desktop.robot.ros1.sim_bridge:serve_simulator"),
+    LinkKind("ros2", "rockly_desktop.robot.ros2.link:Ros2Robot", "backend_ros2", "a robot over ROS 2",
+             settings=ROS2_SETTINGS, settings_group="ros2", explanation="connect_explanation_ros2",
+             sim_option="--ros2", sim_server="rockly_desktop.robot.ros2.sim_bridge:serve_simulator"),
 )}
 DEFAULT_KIND = "sim"
 

@@ -18,7 +18,7 @@ CONNECT_TIMEOUT = 1.0  # seconds a robot chosen in the window has to answer
 
 
 class RobotChoice(QObject):
-    """The active robot for the document's profile; ``kind`` is a kind of robot link ('sim', 'ros1').
+    """The active robot for the document's profile; ``kind`` is a kind of robot link ('sim', 'ros1', 'ros2').
 
     Simulators answer tablet questions on ``tablet``; connections are remembered in
     ``settings``; ``parent`` is the widget the connection dialog belongs to.
@@ -139,7 +139,8 @@ class RobotChoice(QObject):
         robot = self._robots.get((self.kind, self.document.profile.id))
         status = robot.status() if robot is not None else None
         state = status.state if status is not None else "connecting"
-        self.status.setText(tr(f"ros_{state}", self.settings.language))
+        text = tr(f"ros_{state}", self.settings.language)
+        self.status.setText(f"{text} — {status.where}" if status is not None else text)  # e.g. its domain on ROS 2
         self.status.setStyleSheet(f"color: {STATUS_COLOURS[state]}; font-weight: bold;")
         if status is not None and status.round_trip is not None:
             self.status.setToolTip(f"{status.where} — {status.round_trip * 1000:.1f} ms")

@@ -39,8 +39,8 @@ class SimulatorWindow(QMainWindow):
         self.simulator = None
         self.view = self._make_view()
         self.setCentralWidget(self.view)
-        self.master_label = QLabel(self)
-        self.statusBar().addPermanentWidget(self.master_label)
+        self.where_label = QLabel(self)
+        self.statusBar().addPermanentWidget(self.where_label)
         self._timer = QTimer(self)
         self._timer.setInterval(REFRESH_MS)
         self._timer.timeout.connect(self.refresh)
@@ -60,12 +60,13 @@ class SimulatorWindow(QMainWindow):
         label.setMinimumSize(360, 120)
         return label
 
-    def show_simulator(self, simulator, master_uri: str):
-        """Draw ``simulator.snapshot()`` in the view, 30 times a second; name ``master_uri``."""
+    def show_simulator(self, simulator, where: str):
+        """Draw ``simulator.snapshot()`` in the view, 30 times a second; name ``where`` it is served
+        (a ROS master's URI, or 'ROS 2, domain 7, localhost')."""
         self.simulator = simulator
         self.setWindowTitle(tr("sim_window_title", self.language, robot=self.profile.display_name(self.language),
-                               master=master_uri))
-        self.master_label.setText(tr("sim_window_master", self.language, master=master_uri))
+                               master=where))
+        self.where_label.setText(tr("sim_window_where", self.language, where=where))
         self.statusBar().showMessage(tr("sim_window_status", self.language))
         if hasattr(self.view, "set_snapshot"):
             self.refresh()

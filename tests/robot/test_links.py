@@ -27,12 +27,13 @@ REPO = Path(__file__).resolve().parents[2]
 PROTOCOL = [name for name in dir(RobotLink) if not name.startswith("_")]
 
 
-def test_the_registry_lists_the_simulator_first_then_ros1_each_named_in_both_languages():
+def test_the_registry_lists_the_simulator_first_then_ros1_and_ros2_each_named_in_both_languages():
     kinds = [entry.kind for entry in link_kinds()]
-    assert kinds[:2] == ["sim", "ros1"] and links.DEFAULT_KIND == "sim"
+    assert kinds == ["sim", "ros1", "ros2"] and links.DEFAULT_KIND == "sim"
     names = {entry.kind: (tr(entry.name, "en"), tr(entry.name, "de")) for entry in link_kinds()}
     assert names["sim"] == ("Simulator (built in)", "Simulator (eingebaut)")
     assert names["ros1"] == ("Real robot (ROS 1)…", "Echter Roboter (ROS 1)…")
+    assert names["ros2"] == ("Real robot (ROS 2)…", "Echter Roboter (ROS 2)…")
     assert [entry.kind for entry in link_kinds() if entry.simulated] == ["sim"]
 
 
@@ -50,6 +51,7 @@ def test_each_connection_setting_has_a_window_label_and_ros1_asks_for_master_and
     for entry in link_kinds():
         for setting in entry.settings:
             assert tr(setting.label, "en") != tr(setting.label, "de")
+            assert all(tr(text, "en") != tr(text, "de") for _value, text in setting.choices)
         assert bool(entry.settings) == (entry.settings_group is not None) == (not entry.simulated)
 
 
@@ -71,7 +73,7 @@ def test_an_unknown_kind_is_refused_naming_the_known_ones(hobbit):
                     lambda: check_available("ros3")):
         with pytest.raises(UnknownRobotLink) as caught:
             attempt()
-        assert str(caught.value) == "there is no robot link 'ros3' (Rockly knows: sim, ros1)"
+        assert str(caught.value) == "there is no robot link 'ros3' (Rockly knows: sim, ros1, ros2)"
         assert isinstance(caught.value, RobotUnavailable)
 
 
@@ -91,6 +93,41 @@ def test_ros1_without_rospy_is_unavailable_naming_the_set_up_step(monkeypatch, h
         problem, next_step = robot_problem(caught.value, language)
         assert problem and "make setup" in next_step
     check_available("sim")  # the simulator is always there
+
+
+def test_ros2_asks_for_domain_discovery_range_and_peers_with_its_own_options(monkeypatch):
+    settings = link_kind("ros2").settings
+    assert [(setting.name, setting.option) for setting in settings] == [
+        ("domain_id", "--domain"), ("discovery", "--discovery"), ("peers", "--peers")]
+    assert [value for value, _text in settings[1].choices] == ["localhost", "subnet", "off", "system_default"]
+    monkeypatch.setenv("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
+    monkeypatch.setenv("ROS_DOMAIN_ID", "42")
+    assert (settings[0].default_value(), settings[1].default_value()) == ("42", "localhost")
+    args = cli._tool_parser().parse_args(["run", "p.rockly", "--backend", "ros2", "--domain", "7"])
+    assert cli._connection("ros2", args) == {"domain_id": "7", "discovery": None, "peers": None}
+    assert cli._tool_parser().parse_args(["sim", "turtlebot", "--ros2", "--domain", "7"]).serve_on == "ros2"
+
+
+def test_ros2_without_its_environment_is_unavailable_naming_the_set_up_step(monkeypatch, tmp_path, hobbit):
+    monkeypatch.setenv("ROCKLY_ROS2_PYTHON", str(tmp_path / "no-ros2" / "bin" / "python"))
+    with pytest.raises(RobotUnavailable) as caught:
+        open_link("ros2", hobbit, {"domain_id": "7"})
+    assert caught.value.reason == "no_ros2" and "run 'make ros2' in Rockly's folder" in str(caught.value)
+    for language in ("en", "de"):
+        problem, next_step = robot_problem(caught.value, language)
+        assert "ROS 2" in problem and "make ros2" in next_step
+
+
+@pytest.mark.parametrize("connection, reason, named", [
+    ({"domain_id": "233"}, "bad_domain", "233"), ({"domain_id": "seven"}, "bad_domain", "seven"),
+    ({"discovery": "planet"}, "bad_discovery", "planet")])
+def test_a_ros2_setting_it_cannot_take_is_said_in_the_window_language(hobbit, connection, reason, named):
+    with pytest.raises(RobotUnavailable) as caught:
+        open_link("ros2", hobbit, connection)
+    assert caught.value.reason == reason
+    for language in ("en", "de"):
+        problem, next_step = robot_problem(caught.value, language)
+        assert named in problem and next_step
 
 
 def test_the_command_line_offers_the_registry_kinds_and_their_options(monkeypatch):
@@ -118,7 +155,7 @@ def rockly(*args, prelude=""):
 def test_run_with_an_unknown_backend_names_the_kinds_there_are(tmp_path):
     result = rockly("run", tmp_path / "p.rockly", "--backend", "ros3")
     assert result.returncode == 2
-    assert "invalid choice: 'ros3' (choose from 'sim', 'ros1')" in result.stderr
+    assert "invalid choice: 'ros3' (choose from 'sim', 'ros1', 'ros2')" in result.stderr
 
 
 def test_run_on_ros1_without_rospy_names_the_set_up_step(tmp_path):

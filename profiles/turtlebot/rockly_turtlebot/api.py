@@ -274,8 +274,7 @@ class TurtleBot(RobotCommands):
         progress = _Progress(kind, start)
         bumps = []
         unsubscribe = self.backend.subscribe(ODOM, ODOMETRY, progress.add)
-        unsubscribe_bumper = self.backend.subscribe(
-            SENSORS, SENSOR_STATE, lambda message: bumps.append(True) if message.get("bumper") else None)
+        unsubscribe_bumper = self._bumper(bumps)
         try:
             try:
                 outcome = self._follow(progress, command, arrived, target, stall_amount, bumps)
@@ -291,6 +290,15 @@ class TurtleBot(RobotCommands):
         finally:
             unsubscribe()
             unsubscribe_bumper()
+
+    def _bumper(self, bumps):
+        """Note each bump on ``bumps``; returns the unsubscribe function. A robot whose middleware lacks
+        turtlebot3_msgs (a ROS 2 environment without them) drives without the bumper."""
+        try:
+            return self.backend.subscribe(
+                SENSORS, SENSOR_STATE, lambda message: bumps.append(True) if message.get("bumper") else None)
+        except RobotCommandError:
+            return lambda: None
 
     def _follow(self, progress, command, arrived, target, stall_amount, bumps):
         """Send velocities until arrived, paused, bumped or stalled; each new odometry message gets a new one."""

@@ -8,8 +8,10 @@ one-way request is raised by the next command.
 import threading
 import time
 
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
+from rockly_desktop.robot.ros2.client import words
 
 POLL_SECONDS = 0.01
 
@@ -94,8 +96,8 @@ class Ros2GoalHandle(GoalHandle):
 
     def ended(self, data):
         """The helper's (status, result, text) for this goal."""
-        status, result, text = data
-        self.outcome = GoalOutcome(GoalStatus(status), result, text)
+        status, result, said = data
+        self.outcome = GoalOutcome(GoalStatus(status), result, words(said))
         self.finished.set()
 
     def done(self) -> bool:
@@ -105,7 +107,7 @@ class Ros2GoalHandle(GoalHandle):
     def wait(self, timeout: float) -> GoalOutcome:
         """Wait (interruptibly, failing at once when the helper is gone) for the goal's end."""
         if not self._backend.wait_for_event(self.finished, timeout):
-            raise RobotTimeout(f"the action '{self._action}' did not finish within {timeout:g} s")
+            raise RobotTimeout(app_local_text("sim_action_timeout", action=self._action, timeout=timeout))
         return self.outcome
 
     def cancel(self) -> None:
@@ -182,7 +184,7 @@ class Ros2Backend(RobotBackend):
         unsubscribe = self.subscribe(topic, msg_type, lambda message: (received.append(message), arrived.set()))
         try:
             if not self.wait_for_event(arrived, timeout):
-                raise RobotTimeout(f"no message arrived on the topic '{topic}' within {timeout:g} s")
+                raise RobotTimeout(app_local_text("sim_no_message", topic=topic, timeout=timeout))
         finally:
             unsubscribe()
         return received[0]
@@ -245,5 +247,5 @@ def _node_and_param(name: str) -> tuple:
     else:
         node, _slash, param = name.strip("/").rpartition("/")
     if not node or not param:
-        raise RobotCommandError(f"a ROS 2 parameter is named 'node:parameter', not '{name}'")
+        raise RobotCommandError(app_local_text("ros2_bad_parameter_name", name=name))
     return node, param

@@ -71,6 +71,14 @@ class Ros2Helper:
         if helper is not None:
             helper.close()
 
+    @classmethod
+    def end(cls, helper: "Ros2Helper"):
+        """End ``helper``; the next ``get`` starts a new one if it was the process's."""
+        with cls._current_lock:
+            if cls._current is helper:
+                cls._current = None
+        helper.close()
+
     def __init__(self, settings: Ros2Settings):
         self.settings = settings
         python = ros2_python()
@@ -94,7 +102,7 @@ class Ros2Helper:
         self._stderr_reader.start()
         threading.Thread(target=self._read, name="ros2-helper-reader", daemon=True).start()
         if not self._hello.wait(START_TIMEOUT) or self.lost:
-            detail = self.exit_reason or f"no answer within {START_TIMEOUT:g} s"
+            detail = self.exit_reason or app_local_text("ros2_no_hello", timeout=START_TIMEOUT)
             self.close()
             raise Ros2Unavailable(f"the ROS 2 helper did not start with {python}: {detail}",
                                   "helper_failed", python=str(python), detail=detail)
@@ -131,7 +139,7 @@ class Ros2Helper:
         _kind, kind, key, data = frame
         if kind == "hello":
             if key != wire.PROTOCOL:
-                self.exit_reason = f"it speaks protocol {key}, this Rockly {wire.PROTOCOL}"
+                self.exit_reason = app_local_text("ros2_other_protocol", helper=key, rockly=wire.PROTOCOL)
                 self.process.kill()
                 return
             self.info = data
@@ -151,7 +159,8 @@ class Ros2Helper:
         self._stderr_reader.join(timeout=1.0)  # its last words say why
         last = self._stderr[-1] if self._stderr else ""
         if not self.exit_reason:
-            self.exit_reason = f"exit code {code}" + (f": {last}" if last else "")
+            self.exit_reason = (app_local_text("ros2_exit_code_said", code=code, last=last) if last
+                                else app_local_text("ros2_exit_code", code=code))
         self.lost = True
         self._hello.set()
         for pending in list(self._pending.values()):
@@ -178,8 +187,7 @@ class Ros2Helper:
         if self.lost:
             raise self.lost_error()
         if self._failures:
-            kind, text = self._failures.popleft()
-            raise _error(kind, text)
+            raise _error(*self._failures.popleft())
 
     def cast(self, op: str, *args):
         """Send a request that gets no answer (its failure is raised by a later ``check``)."""
@@ -203,7 +211,7 @@ class Ros2Helper:
                 raise ProgramStopped("the program was stopped")
             if deadline is not None and time.monotonic() > deadline:
                 self._pending.pop(call_id, None)
-                raise RobotTimeout(f"the ROS 2 helper did not answer '{op}' within {timeout:g} s")
+                raise RobotTimeout(app_local_text("ros2_helper_timeout", op=op, timeout=timeout))
         if not pending.ok:
             if self.lost and pending.value is None:
                 raise self.lost_error()
@@ -237,5 +245,14 @@ class Ros2Helper:
         atexit.unregister(self.close)
 
 
-def _error(kind: str, text: str) -> RobotCommandError:
+def words(said):
+    """The helper's words (``wire.said``) as Rockly's catalogue text, or the plain text it sent."""
+    if isinstance(said, tuple):
+        key, values = said
+        return app_local_text(key, **values)
+    return said
+
+
+def _error(kind: str, said) -> RobotCommandError:
+    text = words(said)
     return RobotTimeout(text) if kind == "timeout" else RobotCommandError(text)

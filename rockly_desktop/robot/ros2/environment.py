@@ -4,28 +4,24 @@ ROS 2 is installed by ``make ros2`` (``scripts/setup-ros2.sh``) into ``.venv-ros
 Rockly's own venv; ``ROCKLY_ROS2_PYTHON`` names another Python with rclpy instead.
 """
 import os
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.robot.link import RobotUnavailable
 
 PROJECT_ROOT = Path(__file__).resolve().parents[3]
 SETUP_STEP = "make ros2"
 DISCOVERY_RANGES = ("localhost", "subnet", "off", "system_default")
 
 
-class Ros2Unavailable(RocklyError):
-    """ROS 2 is not set up here, or its helper process did not start.
+class Ros2Unavailable(RobotUnavailable):
+    """ROS 2 is not set up here, its helper process did not start, or a link setting is wrong.
 
     ``reason`` names the case for a window that says it in its own language ('no_ros2':
-    ``.venv-ros2`` is missing; 'helper_failed': it did not start); ``values`` are what the
-    message names (``step``, ``python``, ``detail``).
+    ``.venv-ros2`` is missing; 'helper_failed': it did not start; 'bad_domain': the domain id is
+    not 0 to 232); ``values`` are what the message names (``step``, ``python``, ``detail``, ``domain``).
     """
-
-    def __init__(self, message: str, reason: str, **values):
-        super().__init__(message)
-        self.reason = reason
-        self.values = values
 
 
 @dataclass(frozen=True)
@@ -46,6 +42,22 @@ class Ros2Settings:
             raise ValueError(f"a ROS 2 domain id is 0 to 232, not {self.domain_id}")
         if self.discovery is not None and self.discovery not in DISCOVERY_RANGES:
             raise ValueError(f"the discovery range is one of {', '.join(DISCOVERY_RANGES)}, not {self.discovery!r}")
+
+    @classmethod
+    def from_connection(cls, connection: dict) -> "Ros2Settings":
+        """The settings the connection dialog or the command line gave (``domain_id``, ``discovery``,
+        ``peers`` as texts; a missing one keeps the environment's). Ros2Unavailable ('bad_domain',
+        'bad_discovery') for a value ROS 2 cannot take."""
+        domain = (connection.get("domain_id") or "").strip()
+        if domain and not (domain.isdigit() and 0 <= int(domain) <= 232):
+            raise Ros2Unavailable(f"a ROS 2 domain id is a whole number from 0 to 232, not '{domain}'",
+                                  "bad_domain", domain=domain)
+        discovery = (connection.get("discovery") or "").strip().lower() or None
+        if discovery is not None and discovery not in DISCOVERY_RANGES:
+            raise Ros2Unavailable(f"the discovery range is one of {', '.join(DISCOVERY_RANGES)}, not '{discovery}'",
+                                  "bad_discovery", discovery=discovery, known=", ".join(DISCOVERY_RANGES))
+        peers = tuple(peer for peer in re.split(r"[;,\s]+", connection.get("peers") or "") if peer)
+        return cls(int(domain) if domain else None, discovery, peers)
 
     def environment(self, base=None) -> dict:
         """``base`` (the process's environment) with these settings as ROS 2's variables."""

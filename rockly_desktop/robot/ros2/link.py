@@ -1,17 +1,14 @@
-"""The robot link on ROS 2: a real robot (or a ROS-2-level simulator) through the helper process.
-
-The same public shape as the ROS 1 link: ``name``, ``profile``, ``connection``, ``state``,
-``backend(interrupt)``, ``follow_graph``, ``graph_topics``, ``health``, ``safe_stop``, ``snapshot``,
-``shutdown``.
-"""
+"""A robot over ROS 2 as a robot link (``robot/link.py``): a real robot (or a ROS-2-level simulator)
+through this process's helper process (``client``)."""
 import time
 
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.robot.health import GREEN, RED, HealthItem, server_health, topic_health
 from rockly_desktop.robot.interrupt import Interrupt
+from rockly_desktop.robot.link import LinkStatus
 from rockly_desktop.robot.ros2.backend import Ros2Backend, Ros2Graph
 from rockly_desktop.robot.ros2.client import Ros2Helper
-from rockly_desktop.robot.ros2.environment import Ros2Settings
+from rockly_desktop.robot.ros2.environment import Ros2Settings, Ros2Unavailable, ros2_python
 from rockly_desktop.robot.safe_stop import run_safe_stop
 
 
@@ -46,13 +43,13 @@ class Ros2Connection:
 
 
 class Ros2Robot:
-    """A robot on ROS 2, through this process's one helper (started on first use).
+    """A robot on ROS 2, through this process's one helper (started on first use, ended by ``shutdown``).
 
     ``settings`` (Ros2Settings) are the domain id, discovery range and static peers. Raises
     Ros2Unavailable when ROS 2 is not set up (naming ``make ros2``) or its helper does not start.
     """
 
-    name = "ros2"
+    kind = "ros2"
 
     def __init__(self, profile, settings: Ros2Settings = None):
         self.profile = profile
@@ -71,6 +68,22 @@ class Ros2Robot:
         self.graph.service_watchers.append(self.state.record)
         self._feed = None
 
+    @classmethod
+    def unavailable(cls):
+        """Ros2Unavailable ('no_ros2', naming ``make ros2``) when there is no ROS 2 Python here; starts nothing."""
+        try:
+            ros2_python()
+        except Ros2Unavailable as problem:
+            return problem
+        return None
+
+    @classmethod
+    def open(cls, profile, connection: dict = None, *, tablet=None, speed: float = 1.0, timeout: float = 5.0):
+        """The robot on ``connection``'s ``domain_id``, ``discovery`` range and static ``peers``
+        (Ros2Settings.from_connection); the robot's own nodes answer its tablet, and ROS 2 has no
+        master to wait for, so ``tablet``, ``speed`` and ``timeout`` are not used."""
+        return cls(profile, Ros2Settings.from_connection(connection or {}))
+
     def follow_graph(self):
         """Start filling ``state`` from every topic of the graph (for the panels); idempotent."""
         if self._feed is None:
@@ -86,6 +99,24 @@ class Ros2Robot:
     def snapshot(self):
         """A real robot has no simulator view."""
         return None
+
+    def recording_encoder(self):
+        """None: the robot's topics are recorded as JSON (a CDR encoder needs mcap-ros2-support)."""
+        return None
+
+    def reset(self):
+        """A real robot cannot be put back."""
+        raise NotImplementedError("a real robot cannot be put back")
+
+    def status(self) -> LinkStatus:
+        """The helper's state (connected | lost), where the link goes ('ROS 2, domain 7, localhost')
+        and the last round trip to the helper."""
+        connection = self.connection
+        return LinkStatus(connection.status, connection.master_uri, connection.round_trip)
+
+    def warnings(self) -> list:
+        """Nothing to warn about: ROS 2 needs no address of this computer."""
+        return []
 
     def graph_topics(self) -> list:
         """(topic, type, publisher count) of the ROS 2 graph (once ``follow_graph`` runs)."""
@@ -110,9 +141,12 @@ class Ros2Robot:
         return run_safe_stop(self.profile.safe_stop, self.backend(Interrupt()))
 
     def shutdown(self):
-        """Stop the robot safely and stop following the graph; the helper stays for the process."""
+        """Stop the robot safely, stop following the graph and end the helper (its last act is the
+        safe stop too): no process is left when the window closes or ``rockly run`` ends."""
         if self._feed is not None:
             self._feed.stop()
             self._feed = None
-        self.safe_stop()
-        self.graph.close()
+        if not self.helper.lost:
+            self.safe_stop()
+            self.graph.close()
+        Ros2Helper.end(self.helper)

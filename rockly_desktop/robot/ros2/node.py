@@ -23,6 +23,7 @@ from rclpy.signals import SignalHandlerOptions
 
 from rockly_desktop.robot.ros2 import qos, wire
 from rockly_desktop.robot.ros2.ros_values import (
+    BadValue,
     from_message,
     interface_class,
     parameter_value,
@@ -40,11 +41,12 @@ TOPIC_WAIT = 1.0  # a subscription without a type waits this long for the topic 
 _GOAL_STATUS = {4: "succeeded", 5: "preempted", 6: "aborted"}
 
 
-class Failure(Exception):
-    """A request that cannot be done; ``kind`` is 'timeout' or 'command' (Rockly's error class)."""
+class Failure(wire.TextError):
+    """A request that cannot be done; ``kind`` is 'timeout' or 'command' (Rockly's error class), its
+    words Rockly's catalogue text ``key`` with ``values``."""
 
-    def __init__(self, kind, text):
-        super().__init__(text)
+    def __init__(self, kind, key, **values):
+        super().__init__(key, **values)
         self.kind = kind
 
 
@@ -109,11 +111,11 @@ class Helper:
             value = method(*args)
         except Reported as error:
             if mode == wire.CALL:
-                self._answer(mode, call_id, False, (error.kind, str(error)), op)
+                self._answer(mode, call_id, False, (error.kind, wire.said(error)), op)
         except Failure as error:
-            self._answer(mode, call_id, False, (error.kind, str(error)), op)
+            self._answer(mode, call_id, False, (error.kind, wire.said(error)), op)
         except (LookupError, ValueError, TypeError, AssertionError) as error:
-            self._answer(mode, call_id, False, ("command", str(error)), op)
+            self._answer(mode, call_id, False, ("command", wire.said(error)), op)
         except Exception as error:  # the helper must outlive a failed request
             self._answer(mode, call_id, False, ("command", f"{type(error).__name__}: {error}"), op)
         else:
@@ -186,7 +188,7 @@ class Helper:
             if type_name:
                 break
             if time.monotonic() >= deadline:
-                raise Failure("timeout", f"there is no topic '{topic}' (nobody publishes it)")
+                raise Failure("timeout", "ros_no_topic", topic=topic)
             time.sleep(0.01)
         message_class = interface_class(type_name, "msg")
         profile = qos.for_subscription(topic, type_name, self.node.get_publishers_info_by_topic(topic),
@@ -212,11 +214,12 @@ class Helper:
         return {"topics": topics, "services": services, "actions": actions}
 
     # --- services
-    def _ready(self, client, timeout, problem):
+    def _ready(self, client, wait, key, **values):
         """Wait for ``client``'s server; the first time, also give the server SERVER_SETTLE to discover
-        us: a server that has not matched the client's reader drops its answer (Fast DDS waits 100 ms)."""
-        if not client.wait_for_service(timeout_sec=timeout):
-            raise Failure("timeout", problem)
+        us: a server that has not matched the client's reader drops its answer (Fast DDS waits 100 ms).
+        A server that does not come fails with the text ``key`` and ``values``."""
+        if not client.wait_for_service(timeout_sec=wait):
+            raise Failure("timeout", key, **values)
         if client not in self._settled:
             time.sleep(SERVER_SETTLE)
             self._settled.add(client)
@@ -232,15 +235,15 @@ class Helper:
         """Call a service (waiting up to ``timeout`` for it to appear and answer); the response dict."""
         client = self._service_client(name, type_name)
         deadline = time.monotonic() + timeout
-        self._ready(client, timeout, f"the service '{name}' is not available (waited {timeout:g} s)")
+        self._ready(client, timeout, "sim_service_missing", name=name, timeout=timeout)
         future = client.call_async(to_message(client.srv_type.Request, request))
         done = threading.Event()
         future.add_done_callback(lambda _future: done.set())
         if not done.wait(max(0.0, deadline - time.monotonic())):
             client.remove_pending_request(future)
-            raise Failure("timeout", f"the service '{name}' did not answer within {timeout:g} s")
+            raise Failure("timeout", "ros_service_timeout", name=name, timeout=timeout)
         if future.exception() is not None:
-            raise Failure("command", f"the service '{name}' failed: {future.exception()}")
+            raise Failure("command", "sim_service_failed", name=name, error=str(future.exception()))
         return from_message(future.result())
 
     # --- actions
@@ -260,16 +263,16 @@ class Helper:
         """Send a goal; its feedback, acceptance and end come as events keyed by ``gid``."""
         client = self._action_client(action, type_name)
         if not client.wait_for_server(timeout_sec=ACTION_SERVER_WAIT):
-            self.event("goal_end", gid, ("aborted", {}, f"there is no action server '{action}'"))
-            raise Reported("command", f"there is no action server '{action}'")
+            self.event("goal_end", gid, ("aborted", {}, ("sim_no_action", {"action": action})))
+            raise Reported("command", "sim_no_action", action=action)
         if client not in self._settled:  # as for a service's first call (see _ready)
             time.sleep(SERVER_SETTLE)
             self._settled.add(client)
         try:
             goal_message = to_message(client._action_type.Goal, goal)
-        except ValueError as error:
-            self.event("goal_end", gid, ("aborted", {}, str(error)))
-            raise Reported("command", str(error)) from None
+        except BadValue as error:
+            self.event("goal_end", gid, ("aborted", {}, wire.said(error)))
+            raise Reported("command", error.key, **error.values) from None
         send = self.send
         self._goals[gid] = [None, False]  # the server's handle once it accepts; cancelled before that
         future = client.send_goal_async(
@@ -282,7 +285,7 @@ class Helper:
         handle = future.result()
         if handle is None or not handle.accepted:
             self._goals.pop(gid, None)
-            self.event("goal_end", gid, ("rejected", {}, "the action server rejected the goal"))
+            self.event("goal_end", gid, ("rejected", {}, ("ros2_goal_rejected", {})))
             return
         entry[0] = handle
         if entry[1]:
@@ -316,7 +319,7 @@ class Helper:
     def _parameter_service(self, node, kind):
         type_name = {"get": "rcl_interfaces/srv/GetParameters", "set": "rcl_interfaces/srv/SetParameters"}[kind]
         client = self._service_client(f"/{node.strip('/')}/{kind}_parameters", type_name)
-        self._ready(client, PARAMETER_WAIT, f"there is no ROS 2 node '{node}' to ask for parameters")
+        self._ready(client, PARAMETER_WAIT, "ros2_no_parameter_node", node=node)
         return client
 
     def _call(self, client, request):
@@ -327,7 +330,7 @@ class Helper:
             if done.wait(PARAMETER_WAIT / PARAMETER_TRIES):
                 return future.result()
             client.remove_pending_request(future)
-        raise Failure("timeout", "the node did not answer about its parameters")
+        raise Failure("timeout", "ros2_parameters_silent")
 
     def op_get_param(self, node, name):
         """``(True, value)`` of a node's parameter, or ``(False, None)`` when it is not set."""
@@ -343,7 +346,7 @@ class Helper:
         request = client.srv_type.Request(parameters=[Parameter(name=name, value=to_parameter_value(value))])
         result = self._call(client, request).results[0]
         if not result.successful:
-            raise Failure("command", f"the node '{node}' refused the parameter '{name}': {result.reason}")
+            raise Failure("command", "ros2_parameter_refused", node=node, name=name, reason=result.reason)
 
     # --- serving a simulator (see sim_serving)
     def op_sim_serve(self, services, actions):
@@ -358,7 +361,7 @@ class Helper:
                 try:
                     serve(name, type_name)
                 except LookupError as error:
-                    left_out.append((name, type_name, str(error)))
+                    left_out.append((name, type_name, wire.said(error)))
         return left_out
 
     def op_sim_answer(self, rid, ok, data):

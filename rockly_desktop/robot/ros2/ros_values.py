@@ -12,6 +12,17 @@ import importlib.util
 
 from rosidl_parser.definition import AbstractNestedType, BasicType, NamespacedType
 
+from rockly_desktop.robot.ros2.wire import TextError
+
+
+class MissingInterface(TextError, LookupError):
+    """A ROS 2 interface type this environment does not have (its words: a catalogue text)."""
+
+
+class BadValue(TextError, ValueError):
+    """A value a ROS 2 message or parameter cannot hold (its words: a catalogue text)."""
+
+
 _FLOATS = {"float", "double", "long double"}
 
 
@@ -30,9 +41,9 @@ def interface_class(name: str, kind: str):
         package, type_name = parts
         kinds = (kind, "action", "srv") if kind == "msg" else (kind,)  # an action's or service's own messages
     else:
-        raise LookupError(f"'{name}' is not a ROS type name (package/Type)")
+        raise MissingInterface("ros2_not_a_type", name=name)
     if importlib.util.find_spec(package) is None:
-        raise LookupError(f"the ROS 2 interface package '{package}' is not installed")
+        raise MissingInterface("ros2_no_package", package=package)
     if kind == "action" and type_name.endswith("Action") and len(parts) == 2:
         type_name = type_name[:-len("Action")]
     for each in kinds:
@@ -40,7 +51,7 @@ def interface_class(name: str, kind: str):
             return _member(importlib.import_module(f"{package}.{each}"), type_name)
         except (ImportError, AttributeError):
             continue
-    raise LookupError(f"the ROS 2 package '{package}' has no {kind} type '{type_name}'")
+    raise MissingInterface("ros2_no_type", package=package, kind=kind, type=type_name)
 
 
 def _member(module, type_name: str):
@@ -78,7 +89,9 @@ def to_message(message_class, data, path=""):
     if not data:
         return message
     if not isinstance(data, dict):
-        raise ValueError(f"{path or 'the message'} must be a dict of fields, not {data!r}")
+        if path:
+            raise BadValue("ros2_field_not_fields", field=path, value=repr(data))
+        raise BadValue("ros2_message_not_fields", value=repr(data))
     if _is_time(message_class):
         data = {_ROS1_TIME.get(name, name): value for name, value in data.items()}
     elif _is_header(message_class) and "seq" in data:
@@ -87,11 +100,15 @@ def to_message(message_class, data, path=""):
     for name, value in data.items():
         where = f"{path}.{name}" if path else name
         if name not in slots:
-            raise ValueError(f"{message_class.__name__} has no field '{where}'")
+            raise BadValue("ros2_no_field", type=message_class.__name__, field=where)
         try:
             setattr(message, name, _value(slots[name], value, where))
+        except BadValue:
+            raise
         except (AssertionError, TypeError, ValueError) as error:
-            raise ValueError(f"the field '{where}' cannot be {value!r} ({error or 'wrong type'})") from None
+            if str(error):
+                raise BadValue("ros2_bad_field", field=where, value=repr(value), error=str(error)) from None
+            raise BadValue("ros2_wrong_type_field", field=where, value=repr(value)) from None
     return message
 
 
@@ -163,4 +180,4 @@ def to_parameter_value(value):
             return ParameterValue(type=8, double_array_value=[float(v) for v in value])
         if isinstance(first, str):
             return ParameterValue(type=9, string_array_value=list(value))
-    raise ValueError(f"a ROS 2 parameter cannot hold {value!r}")
+    raise BadValue("ros2_bad_parameter_value", value=repr(value))

@@ -6,15 +6,15 @@ world; what the simulator publishes goes out; services and actions are answered 
 simulator's handlers (the helper's ``sim_serving`` holds the ROS 2 side). Endpoints whose
 interface package ROS 2's environment lacks (a robot's own messages) are left out, said once.
 
-``Ros2SimulatorNode`` is the whole of ``rockly sim PROFILE --ros2``; ``run_ros2_simulator_node``
-runs it until a stop event.
+``Ros2SimulatorNode`` is the whole of ``rockly sim PROFILE --ros2`` (made by ``serve_simulator``,
+the registry's ``sim_server``).
 """
 import logging
 import threading
 
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.ros2.client import Ros2Helper
+from rockly_desktop.robot.ros2.client import Ros2Helper, words
 from rockly_desktop.robot.ros2.environment import Ros2Settings
 
 log = logging.getLogger(__name__)
@@ -41,7 +41,7 @@ class Ros2SimBridge:
         self._goals = {}
         for name, type_name, why in helper.call("sim_serve", dict(interface.get("services", {})),
                                                  dict(interface.get("actions", {})), timeout=10.0):
-            self._leave_out(name, type_name, why)
+            self._leave_out(name, type_name, words(why))
 
     def _bridge_in(self, topic, msg_type):
         sid = self._helper.new_id()
@@ -158,14 +158,7 @@ class Ros2SimulatorNode:
         Ros2Helper.close_current()
 
 
-def run_ros2_simulator_node(profile, settings=None, speed=1.0, tablet=None, stop_event=None, on_ready=None):
-    """Serve ``profile``'s simulator on ROS 2 until ``stop_event`` is set; ``on_ready(node)`` once it is up."""
-    node = Ros2SimulatorNode(profile, settings, speed, tablet)
-    if on_ready is not None:
-        on_ready(node)
-    stop_event = stop_event or threading.Event()
-    try:
-        while not stop_event.wait(0.2):
-            pass
-    finally:
-        node.shutdown()
+def serve_simulator(profile, connection: dict, speed: float = 1.0, tablet=None) -> Ros2SimulatorNode:
+    """``profile``'s simulator on ROS 2 with ``connection``'s domain id, discovery range and peers
+    (the registry's ``sim_server``, ``rockly sim PROFILE --ros2``)."""
+    return Ros2SimulatorNode(profile, Ros2Settings.from_connection(connection), speed, tablet)

@@ -6,18 +6,37 @@ and is the fastest standard-library encoding of the nested dicts, bytes and NaNs
 messages hold (faster than JSON; msgpack would be a new dependency on both sides).
 
 Rockly → helper: ``(CALL, id, op, args)`` wants an answer, ``(CAST, 0, op, args)`` does not.
-Helper → Rockly: ``(REPLY, id, ok, value)`` answers a call (value is the error text when not
-ok); ``(EVENT, kind, key, data)`` reports messages, feedback, goal ends and failures of casts.
+Helper → Rockly: ``(REPLY, id, ok, value)`` answers a call (when not ok, value is ``(kind, words)``:
+'timeout' or 'command', and the error's words, see ``said``); ``(EVENT, kind, key, data)`` reports
+messages, feedback, goal ends and failures of casts (``(kind, words)`` too).
 The helper's first frame is ``(EVENT, "hello", PROTOCOL, info)``; a client refuses another
 protocol version. Standard library only: the helper's Python imports this too.
 """
 import pickle
 import struct
 
-PROTOCOL = 1
+PROTOCOL = 2
 CALL, CAST, REPLY, EVENT = "call", "cast", "reply", "event"
 
 _HEADER = struct.Struct(">I")
+
+
+class TextError(Exception):
+    """An error (in the helper) whose words are Rockly's catalogue text ``key`` with ``values``:
+    Rockly's side says it in the run's language (``resources/locale``; the helper reads no catalogue)."""
+
+    def __init__(self, key: str, **values):
+        super().__init__(key, values)
+        self.key = key
+        self.values = values
+
+    def __str__(self) -> str:
+        return f"{self.key} {self.values}"
+
+
+def said(error: Exception):
+    """``error``'s words as they cross the pipe: ``(key, values)`` of a TextError, else its plain text."""
+    return (error.key, error.values) if isinstance(error, TextError) else str(error)
 
 
 def encode(frame: tuple) -> bytes:

@@ -1,5 +1,6 @@
-"""Fixtures for the ROS 2 tests: a plain rclpy test robot in its own process, on a domain of
-this test run's own, localhost only, and Rockly's ROS 2 link to it."""
+"""Fixtures for the ROS 2 tests (a plugin conftest.py loads, as ``ros_fixtures`` for ROS 1): a plain
+rclpy test robot in its own process, on a domain of this test run's own, localhost only, and
+Rockly's ROS 2 link to it."""
 import json
 import os
 import subprocess
@@ -14,7 +15,7 @@ ROS2_PYTHON = PROJECT_ROOT / ".venv-ros2" / "bin" / "python"
 # The test robot may run another ROS 2 distribution (a Python with its rclpy), to check the wire
 # between them: ROCKLY_TEST_ROBOT_PYTHON=/path/to/jazzy-venv/bin/python
 TEST_ROBOT_PYTHON = os.environ.get("ROCKLY_TEST_ROBOT_PYTHON") or str(ROS2_PYTHON)
-TEST_NODE = Path(__file__).with_name("ros2_test_node.py")
+TEST_NODE = Path(__file__).parent / "robot" / "ros2" / "ros2_test_node.py"
 DOMAIN_ID = 100 + os.getpid() % 100  # this run's own: parallel runs on one machine do not meet
 
 
