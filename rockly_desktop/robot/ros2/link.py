@@ -12,6 +12,7 @@ from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.ros2.backend import Ros2Backend, Ros2Graph
 from rockly_desktop.robot.ros2.client import Ros2Helper
 from rockly_desktop.robot.ros2.environment import Ros2Settings
+from rockly_desktop.robot.ros_versions import link_backend
 from rockly_desktop.robot.safe_stop import run_safe_stop
 
 
@@ -107,7 +108,7 @@ class Ros2Robot:
 
     def safe_stop(self) -> list:
         """Do the profile's safe stop now; returns what failed."""
-        return run_safe_stop(self.profile.safe_stop, self.backend(Interrupt()))
+        return run_safe_stop(self.profile.safe_stop, link_backend(self, Interrupt()))
 
     def shutdown(self):
         """Stop the robot safely and stop following the graph; the helper stays for the process."""

@@ -1,0 +1,5 @@
+"""The ROS versions and ROS 2 distributions a profile may name in ``ros_versions`` (manifest and robot both read them)."""
+
+DISTRIBUTIONS = ("humble", "iron", "jazzy", "kilted", "rolling")  # oldest first
+VERSIONS = ("ros1", "ros2")
+KEYS = VERSIONS + DISTRIBUTIONS
