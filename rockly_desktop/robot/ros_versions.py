@@ -203,6 +203,7 @@ def link_backend(link, interrupt):
 def versioned_backend(profile, backend, distribution: str = None):
     """``backend`` sending what ``profile`` declares per ROS version as the robot wants it; ``backend``
     itself when the profile declares nothing per version (or it is versioned already)."""
-    if not profile.ros_versions or isinstance(backend, VersionedBackend):
+    versions = getattr(profile, "ros_versions", None)  # a stand-in profile (tests, tools) may have none
+    if not versions or isinstance(backend, VersionedBackend):
         return backend
-    return VersionedBackend(backend, profile.ros_versions, profile.ros_interface, distribution)
+    return VersionedBackend(backend, versions, profile.ros_interface, distribution)
