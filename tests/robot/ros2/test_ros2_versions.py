@@ -6,6 +6,7 @@ subscriber decides, and the TurtleBot's commands and its safe stop arrive as Twi
 """
 import json
 import os
+import signal
 import subprocess
 import threading
 from pathlib import Path
@@ -16,7 +17,10 @@ from waiting import eventually
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.run_setup import make_runner
 from rockly_desktop.robot.interrupt import Interrupt
+from rockly_desktop.robot.ros2.client import Ros2Helper
 from rockly_desktop.robot.ros2.environment import PROJECT_ROOT, Ros2Settings
+from rockly_desktop.robot.ros2.link import Ros2Robot
+from rockly_desktop.robot.ros_versions import link_backend
 
 ROS2_PYTHON = PROJECT_ROOT / ".venv-ros2" / "bin" / "python"
 STAMPED_NODE = Path(__file__).with_name("ros2_stamped_node.py")
@@ -47,20 +51,24 @@ def heard(settings):
         process.wait()
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture
 def link(heard, registry, settings):
-    from rockly_desktop.robot.ros2.client import Ros2Helper
-    from rockly_desktop.robot.ros2.link import Ros2Robot
-
+    """Rockly's ROS 2 link to the test robot with the TurtleBot profile, through a helper of its own."""
+    Ros2Helper.close_current()
     robot = Ros2Robot(registry.get("turtlebot"), settings)
     yield robot
-    robot.shutdown()
+    if not robot.helper.lost:
+        robot.shutdown()
     Ros2Helper.close_current()
 
 
+def graph_lists_twist_stamped(link):
+    """True once the helper's graph lists the robot's TwistStamped subscriber on /cmd_vel."""
+    return "geometry_msgs/msg/TwistStamped" in link.backend(Interrupt()).topic_types("/cmd_vel")
+
+
 def test_the_turtlebots_commands_and_safe_stop_reach_a_jazzy_robot_as_twist_stamped(link, heard, registry):
-    backend = link.backend(Interrupt())
-    eventually(lambda: "geometry_msgs/msg/TwistStamped" in backend.topic_types("/cmd_vel"), timeout=20)
+    eventually(lambda: graph_lists_twist_stamped(link), timeout=20)
     # written for a Twist, as every TurtleBot program is (the TurtleBot's drive also reads
     # /sensor_state, whose turtlebot3_msgs this ROS 2 environment lacks)
     code = "ros.publish_message('/cmd_vel', 'geometry_msgs/Twist', {'linear': {'x': 0.1}})\nrobot.stop()\n"
@@ -77,3 +85,13 @@ def test_the_turtlebots_commands_and_safe_stop_reach_a_jazzy_robot_as_twist_stam
     eventually(lambda: len(heard) > count)
     assert link.safe_stop() == []
     eventually(lambda: heard[-1]["message"]["linear"]["x"] == 0.0 and len(heard) > count + 1)
+
+
+def test_the_helpers_last_act_stops_a_jazzy_robot_in_the_type_it_was_sent(link, heard):
+    eventually(lambda: graph_lists_twist_stamped(link), timeout=20)
+    link_backend(link, Interrupt()).publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.2}})
+    eventually(lambda: heard and heard[-1]["message"]["linear"]["x"] == pytest.approx(0.2))
+    link.helper.process.send_signal(signal.SIGTERM)
+    eventually(lambda: link.helper.lost)
+    eventually(lambda: heard[-1]["message"]["linear"]["x"] == 0.0)
+    assert heard[-1]["type"] == "TwistStamped"
