@@ -16,7 +16,12 @@ from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.limits import LimitedBackend, Limits
 from rockly_desktop.robot.ros_versions import (
-    VersionedBackend, converted, declared_type, link_backend, robot_type, stamped_part,
+    VersionedBackend,
+    converted,
+    declared_type,
+    link_backend,
+    robot_type,
+    stamped_part,
 )
 from rockly_desktop.robot.sim_link import SimulatedRobot
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
