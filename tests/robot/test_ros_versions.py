@@ -155,3 +155,13 @@ def test_a_teachers_limit_clamps_the_stamped_twists_of_a_jazzy_turtlebot(make_ro
     assert result.outcome == "finished", result.message
     speeds = [message["twist"].get("linear", {}).get("x", 0.0) for msg_type, message in seen if msg_type == STAMPED]
     assert len(speeds) == len(seen) and max(speeds) == pytest.approx(0.05)
+
+
+@pytest.mark.parametrize(("distribution", "wanted"), [("jazzy", STAMPED), (None, TWIST)])
+def test_commands_learn_the_resolved_type_through_the_sdk_under_a_teachers_limits(distribution, wanted):
+    versioned = VersionedBackend(SimBackend(SimWorld(), Interrupt()), TURTLEBOT.ros_versions,
+                                 TURTLEBOT.ros_interface, distribution)
+    commands = TURTLEBOT.create("api", LimitedBackend(versioned, Limits(max_speed=0.1), ["/cmd_vel"]))
+    assert commands.ros_type("/cmd_vel") == wanted
+    assert commands.ros_type("/odom", "nav_msgs/Odometry") == "nav_msgs/Odometry"
+    assert TURTLEBOT.create("api", SimBackend(SimWorld(), Interrupt())).ros_type("/cmd_vel", TWIST) == TWIST
