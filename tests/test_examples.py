@@ -78,3 +78,29 @@ def test_a_german_example_is_its_english_one_with_every_text_in_german(german, e
 
 def test_every_english_example_has_a_german_one():
     assert sorted(GERMAN.values()) == sorted(example for example in EXAMPLES if not example.startswith("de/"))
+
+
+@pytest.mark.parametrize("example", [example for example in EXAMPLES if "turtlebot/" in example])
+def test_a_turtlebot_example_runs_unchanged_on_a_robot_declared_jazzy(example, monkeypatch, capsys):
+    """The same program on a TurtleBot that wants TwistStamped on /cmd_vel (ROS 2 Jazzy on): it runs to
+    its end, and everything it (and its safe stop) sends on /cmd_vel is a TwistStamped."""
+    from rockly_desktop import run_command
+    from rockly_desktop.robot.limits import Limits
+
+    sent_types = []
+
+    def open_link(*arguments, **options):
+        robot = real_open_link(*arguments, **options)
+        robot.world.tap(lambda topic, msg_type, _message: sent_types.append(msg_type) if topic == "/cmd_vel" else None)
+        return robot
+
+    real_open_link = run_command.open_link
+    monkeypatch.setattr(run_command, "open_link", open_link)
+    language = "de" if example.startswith("de/") else "en"
+    lines = []
+    status = run_command.run_program(REPO / "examples" / example, speed=25, language=language, out=lines.append,
+                                     connection={"ros_distribution": "jazzy"},
+                                     teacher=type("NoLimits", (), {"limits": lambda self, _id: Limits()})())
+    assert status == 0 and capsys.readouterr().out.splitlines()[-1] == ("fertig" if language == "de" else "finished")
+    assert any("turtlebot_drive" in line for line in lines)
+    assert sent_types and set(sent_types) == {"geometry_msgs/TwistStamped"}

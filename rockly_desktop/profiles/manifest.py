@@ -10,6 +10,7 @@ from pathlib import Path
 
 from rockly_desktop.core.app_texts import languages
 from rockly_desktop.core.errors import ManifestError
+from rockly_desktop.core.ros_distributions import KEYS as ROS_VERSION_KEYS
 from rockly_desktop.profiles.i18n import is_localized
 from rockly_desktop.profiles.yaml_files import read_yaml_mapping
 
@@ -51,6 +52,10 @@ MANIFEST_FIELDS = (
     FieldSpec("ros_interface", "ros_interface", False,
               "The robot's ROS interface: {subscribes: {TOPIC: TYPE}, publishes: {...}, services: {NAME: TYPE}, "
               "actions: {NAME: TYPE}, streams: [TOPIC, ...], qos: {TOPIC: QOS} (ROS 2)}."),
+    FieldSpec("ros_versions", "ros_versions", False,
+              "Types that differ per ROS version: {NAME: {ros1|ros2|DISTRIBUTION: TYPE}}, e.g. "
+              "{/cmd_vel: {jazzy: geometry_msgs/TwistStamped}}; a distribution (humble, iron, jazzy, kilted, "
+              "rolling) counts from that one on; elsewhere the ros_interface type holds."),
     FieldSpec("safe_stop", "safe_stop", False,
               "What 'stop' means for this robot: a list of {publish: ...}, {cancel_goals: ACTION}."),
     FieldSpec("state", "state", False,
@@ -59,7 +64,8 @@ MANIFEST_FIELDS = (
     FieldSpec("legacy_fields", "legacy_fields", False,
               "Old field names of saved programs: {block_type: {old_field: {field: new, values: {old: new}}}}."),
     FieldSpec("velocity_topics", "velocity_topics", False,
-              "The drive interface: geometry_msgs/Twist topics (e.g. [/cmd_vel]) a teacher's speed limits clamp."),
+              "The drive interface: geometry_msgs/Twist (or TwistStamped) topics (e.g. [/cmd_vel]) a teacher's "
+              "speed limits clamp."),
     FieldSpec("capabilities", "capabilities", False,
               "Parts a teacher can switch off: [{id, name, blocks: [TYPE...], topics: [...], services: [...], "
               "actions: [...]}]; their commands are refused, their blocks hidden."),
@@ -169,6 +175,29 @@ def _check_ros_interface(value):
         if not isinstance(names, dict) or not all(isinstance(k, str) and isinstance(v, str) and "/" in v
                                                   for k, v in names.items()):
             return f"'{part}' must map ROS names to types like geometry_msgs/Twist"
+    return None
+
+
+def _check_ros_versions(value, ros_interface):
+    """None when ``value`` maps names declared in ``ros_interface`` to {version or distribution: type}."""
+    if not isinstance(value, dict) or not value:
+        return "must map ROS names to their types per version, e.g. {/cmd_vel: {jazzy: geometry_msgs/TwistStamped}}"
+    declared = set()
+    for part in ("subscribes", "publishes", "services", "actions"):
+        names = ros_interface.get(part) if isinstance(ros_interface, dict) else None
+        declared.update("/" + str(name).strip("/") for name in (names or {}))
+    keys = ", ".join(ROS_VERSION_KEYS)
+    for name, types in value.items():
+        if not isinstance(name, str) or "/" + name.strip("/") not in declared:
+            return f"'{name}' is not in ros_interface: declare it there with its usual type first"
+        if not isinstance(types, dict) or not types:
+            return f"'{name}' must map ROS versions or distributions ({keys}) to types"
+        for key, type_name in types.items():
+            if key not in ROS_VERSION_KEYS:
+                return f"'{name}': unknown ROS version or distribution '{key}' (use {keys})"
+            if not isinstance(type_name, str) or type_name.count("/") not in (1, 2) or not all(
+                    type_name.split("/")):
+                return f"'{name}.{key}' must be a type like geometry_msgs/TwistStamped, not {type_name!r}"
     return None
 
 
@@ -306,7 +335,10 @@ def read_manifest(profile_dir: Path) -> dict:
             if spec.required:
                 raise ManifestError(path, spec.name, f"is missing: {spec.description}")
             continue
-        problem = _check(spec, data[spec.name], profile_dir)
+        if spec.kind == "ros_versions":
+            problem = _check_ros_versions(data[spec.name], data.get("ros_interface", {}))
+        else:
+            problem = _check(spec, data[spec.name], profile_dir)
         if problem:
             raise ManifestError(path, spec.name, problem)
     return data

@@ -100,6 +100,11 @@ class Profile:
         return [self.root / folder] if folder else []
 
     @property
+    def ros_versions(self) -> dict:
+        """What differs per ROS version: ``{NAME: {ros1|ros2|DISTRIBUTION: TYPE}}`` (see ``robot/ros_versions.py``)."""
+        return self.manifest.get("ros_versions", {})
+
+    @property
     def velocity_topics(self) -> list:
         """The drive interface: the ``geometry_msgs/Twist`` topics a teacher's speed limits clamp."""
         return self.manifest.get("velocity_topics", [])

@@ -35,6 +35,16 @@ class RobotCommands:
         ask = getattr(self._backend, "allowed_speed", None)
         return own_speed if ask is None else ask(own_speed, turning)
 
+    def ros_type(self, name: str, msg_type: str = None) -> str:
+        """The type this robot wants on the ROS ``name`` (the profile's ``ros_versions`` resolved for it).
+
+        Commands need not ask before publishing: a message written for the ``ros_interface`` type
+        (a Twist dict on ``/cmd_vel``) is sent as the type the robot wants (a TwistStamped). This is
+        for commands that read or show the type. ``msg_type`` where nothing differs per version.
+        """
+        ask = getattr(self._backend, "type_for", None)
+        return msg_type if ask is None else ask(name, msg_type)
+
     @staticmethod
     def choose(value, choices, what: str):
         """Return ``choices[value]``; a value not in ``choices`` raises a RobotCommandError listing them."""

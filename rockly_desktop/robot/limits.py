@@ -1,7 +1,7 @@
 """A teacher's limits, enforced on the backend every command of a run goes through.
 
 ``LimitedBackend`` wraps the run's RobotBackend: velocity commands on the topics a
-profile declares as its drive interface (``geometry_msgs/Twist``) are clamped to the
+profile declares as its drive interface (``geometry_msgs/Twist`` or ``TwistStamped``) are clamped to the
 maximum speeds, and topics, services and actions of a switched-off capability are
 refused with a RobotCommandError. Profiles need no code for it: the names come from
 their manifest. Reading (subscribe, latest, waits) and cancelling always pass. A motion at
@@ -85,7 +85,7 @@ def _clamp_vector(vector, limit: float):
 class LimitedBackend(RobotBackend):
     """A RobotBackend that keeps a run within a teacher's ``Limits``.
 
-    ``velocity_topics`` are the Twist topics clamped; ``capabilities`` the switched-off
+    ``velocity_topics`` are the Twist (or TwistStamped) topics clamped; ``capabilities`` the switched-off
     ones. ``note(text)`` is told once per run when a speed was clamped. Errors and notes
     are in ``language``.
     """
@@ -120,6 +120,9 @@ class LimitedBackend(RobotBackend):
 
     def _clamped(self, message: dict) -> dict:
         message = dict(message or {})
+        if isinstance(message.get("twist"), dict):  # a TwistStamped: its twist is clamped
+            message["twist"] = self._clamped(message["twist"])
+            return message
         if self._limits.max_speed is not None:
             message["linear"], changed = _clamp_vector(message.get("linear", {}), self._limits.max_speed)
             if changed:

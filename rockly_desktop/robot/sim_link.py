@@ -2,6 +2,7 @@
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.robot.health import GREEN, HealthItem, server_health, topic_health
 from rockly_desktop.robot.interrupt import Interrupt
+from rockly_desktop.robot.ros_versions import link_backend
 from rockly_desktop.robot.safe_stop import run_safe_stop
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
 
@@ -13,6 +14,7 @@ class SimulatedRobot:
     """
 
     kind = "sim"
+    ros_distribution = None  # the ROS 2 distribution the robot plays (robot/ros_versions.py); None: none
 
     def __init__(self, profile, tablet=None, speed: float = 1.0):
         self.profile = profile
@@ -29,8 +31,11 @@ class SimulatedRobot:
 
     @classmethod
     def open(cls, profile, connection: dict = None, *, tablet=None, speed: float = 1.0, timeout: float = 5.0):
-        """The profile's simulator, started now (it needs no connection)."""
-        return cls(profile, tablet=tablet, speed=speed)
+        """The profile's simulator, started now (it needs no connection; ``ros_distribution`` in
+        ``connection`` makes it the robot of that ROS 2 distribution, e.g. 'jazzy')."""
+        robot = cls(profile, tablet=tablet, speed=speed)
+        robot.ros_distribution = (connection or {}).get("ros_distribution")
+        return robot
 
     def backend(self, interrupt: Interrupt):
         """A backend whose waits end when ``interrupt`` is stopped."""
@@ -67,7 +72,7 @@ class SimulatedRobot:
 
     def safe_stop(self) -> list:
         """Do the profile's safe stop now; returns what failed."""
-        return run_safe_stop(self.profile.safe_stop, self.backend(Interrupt()))
+        return run_safe_stop(self.profile.safe_stop, link_backend(self, Interrupt()))
 
     def recording_encoder(self):
         """The simulator's ROS-shaped messages as ROS 1 writes them, where genpy is installed (else None: JSON)."""

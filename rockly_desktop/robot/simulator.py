@@ -38,8 +38,10 @@ def checked_speed(speed) -> float:
 
 
 def twist_velocity(message):
-    """``(linear.x, angular.z)`` of a ``geometry_msgs/Twist`` dict (missing parts are 0), or
-    None when the message is no Twist or holds a value that is not a finite number."""
+    """``(linear.x, angular.z)`` of a ``geometry_msgs/Twist`` (or ``TwistStamped``) dict (missing parts
+    are 0), or None when the message is no Twist or holds a value that is not a finite number."""
+    if isinstance(message, dict) and isinstance(message.get("twist"), dict):
+        message = message["twist"]
     try:
         linear = float((message.get("linear") or {}).get("x", 0.0))
         angular = float((message.get("angular") or {}).get("z", 0.0))

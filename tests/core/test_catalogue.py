@@ -79,7 +79,8 @@ def test_a_po_file_with_an_unknown_escape_or_an_unquoted_text_is_refused_with_it
     (tmp_path / "bad.po").write_text('msgctxt "k"\nmsgid "a \\q b"\nmsgstr ""\n', encoding="utf-8")
     with pytest.raises(ValueError, match=r"bad.po:2: unknown escape \\q"):
         read_po(tmp_path / "bad.po")
-    (tmp_path / "short.po").write_text('msgctxt "a"\nmsgid "A"\n\nmsgctxt "b"\nmsgid "B"\nmsgstr ""\n', encoding="utf-8")
+    short = 'msgctxt "a"\nmsgid "A"\n\nmsgctxt "b"\nmsgid "B"\nmsgstr ""\n'
+    (tmp_path / "short.po").write_text(short, encoding="utf-8")
     with pytest.raises(ValueError, match="short.po:4: the entry before has no msgstr"):
         read_po(tmp_path / "short.po")
     (tmp_path / "open.po").write_text('msgctxt "k"\nmsgid "not closed\nmsgstr ""\n', encoding="utf-8")

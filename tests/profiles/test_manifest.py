@@ -295,3 +295,30 @@ def test_a_ros2_qos_for_a_topic_is_accepted(profile, qos):
 def test_an_unknown_qos_is_refused_with_the_known_ones(profile, qos):
     _with_qos(profile, qos)
     assert_manifest_error(profile, "ros_interface", "sensor_data")
+
+
+def _with_versions(profile, versions):
+    return set_field(profile, "ros_versions", versions)
+
+
+@pytest.mark.parametrize("versions", [{"/cmd_vel": {"jazzy": "geometry_msgs/TwistStamped"}},
+                                      {"cmd_vel": {"ros1": "geometry_msgs/Twist", "ros2": "geometry_msgs/msg/Twist",
+                                                   "kilted": "geometry_msgs/TwistStamped"}}])
+def test_types_per_ros_version_are_accepted_and_loaded(profile, versions):
+    _with_versions(profile, versions)
+    assert load_profile(profile.root, SHARED_TOOLBOXES).ros_versions == versions
+
+
+@pytest.mark.parametrize(("versions", "problem"), [
+    ({"/cmd_vel": {"jazz": "geometry_msgs/TwistStamped"}},
+     "'/cmd_vel': unknown ROS version or distribution 'jazz' (use ros1, ros2, humble, iron, jazzy, kilted, rolling)"),
+    ({"/no_such_topic": {"jazzy": "geometry_msgs/TwistStamped"}},
+     "'/no_such_topic' is not in ros_interface: declare it there with its usual type first"),
+    ({"/cmd_vel": {"jazzy": "TwistStamped"}}, "'/cmd_vel.jazzy' must be a type like geometry_msgs/TwistStamped"),
+    ({"/cmd_vel": "geometry_msgs/TwistStamped"}, "'/cmd_vel' must map ROS versions or distributions (ros1, ros2"),
+    ({"/cmd_vel": {}}, "'/cmd_vel' must map ROS versions or distributions"),
+    ([], "must map ROS names to their types per version, e.g. {/cmd_vel: {jazzy: geometry_msgs/TwistStamped}}"),
+])
+def test_a_bad_type_per_ros_version_is_refused_saying_what_to_write(profile, versions, problem):
+    _with_versions(profile, versions)
+    assert_manifest_error(profile, "ros_versions", problem)

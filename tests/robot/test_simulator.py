@@ -266,6 +266,9 @@ def test_a_flush_with_nothing_queued_publishes_nothing(world):
     ({"angular": {"z": float("nan")}}, None),
     ({"linear": 3}, None),
     ("stop", None),
+    ({"header": {"frame_id": "base_link"}, "twist": {"linear": {"x": 0.1}, "angular": {"z": 0.5}}}, (0.1, 0.5)),
+    ({"header": {}, "twist": {}}, (0.0, 0.0)),
+    ({"twist": {"linear": {"x": "fast"}}}, None),
 ])
-def test_a_twist_gives_its_velocity_or_none(message, velocity):
+def test_a_twist_or_a_stamped_twist_gives_its_velocity_or_none(message, velocity):
     assert twist_velocity(message) == velocity

@@ -8,10 +8,12 @@ They read the same whether generated from blocks or written by hand::
         else:
             robot.drive(0.2, 'forward')
 
-Everything goes through the robot's standard topics: ``/cmd_vel`` (geometry_msgs/Twist) moves
-it, ``/odom`` (nav_msgs/Odometry) says where it is, ``/scan`` (sensor_msgs/LaserScan) what its
-laser sees and ``/battery_state`` (sensor_msgs/BatteryState) how full its battery is; a
-``bumper`` on ``/sensor_state`` (turtlebot3_msgs/SensorState) ends a motion as a bump.
+Everything goes through the robot's standard topics: ``/cmd_vel`` (geometry_msgs/Twist; a
+TurtleBot on ROS 2 Jazzy or newer gets it as the TwistStamped it wants, see ``ros_versions`` in
+profile.yaml) moves it, ``/odom`` (nav_msgs/Odometry) says where it is, ``/scan``
+(sensor_msgs/LaserScan) what its laser sees and ``/battery_state`` (sensor_msgs/BatteryState)
+how full its battery is; a ``bumper`` on ``/sensor_state`` (turtlebot3_msgs/SensorState) ends a
+motion as a bump.
 
 ``drive``, ``turn`` and ``drive_for`` are closed loops on the odometry: they send velocities
 until ``/odom`` says the robot got there, then stop it. Each new velocity is chosen so the

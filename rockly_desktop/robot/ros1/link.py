@@ -5,6 +5,7 @@ from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.robot.health import GREEN, RED, HealthItem, server_health, topic_health
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.link import LinkStatus, LinkWarning
+from rockly_desktop.robot.ros_versions import link_backend
 from rockly_desktop.robot.safe_stop import run_safe_stop
 
 SETUP_STEP = "run `make setup` in Rockly's folder (it installs Debian's ROS 1: python3-rospy and its tools)"
@@ -122,7 +123,7 @@ class RosRobot:
 
     def safe_stop(self) -> list:
         """Do the profile's safe stop now; returns what failed."""
-        return run_safe_stop(self.profile.safe_stop, self.backend(Interrupt()))
+        return run_safe_stop(self.profile.safe_stop, link_backend(self, Interrupt()))
 
     def shutdown(self):
         """Stop the robot safely and stop following the graph; the node stays up."""

@@ -119,6 +119,8 @@ class Ros2GoalHandle(GoalHandle):
 class Ros2Backend(RobotBackend):
     """A RobotBackend over a Ros2Graph; ``interrupt`` ends its waits."""
 
+    ros_version = "ros2"
+
     def __init__(self, graph: Ros2Graph, interrupt):
         self.graph = graph
         self.interrupt = interrupt
@@ -157,6 +159,12 @@ class Ros2Backend(RobotBackend):
         """Publish ``message`` on ``topic`` (reliable unless the profile's ``ros_interface.qos`` says otherwise)."""
         self._check()
         self.graph.publish(topic, msg_type, message, self.interrupt)
+
+    def topic_types(self, topic: str) -> list:
+        """The types the ROS 2 graph lists for ``topic`` (its publishers' and subscribers'), as pkg/msg/Type."""
+        self._check()
+        return [type_name for name, types, _count in self._helper.call("graph", interrupt=self.interrupt)["topics"]
+                if name == topic for type_name in types]
 
     def subscribe(self, topic: str, msg_type: str, callback):
         """Call ``callback(dict)`` per message; returns the unsubscribe function."""

@@ -9,6 +9,7 @@ from rockly_desktop.robot.link import LinkStatus
 from rockly_desktop.robot.ros2.backend import Ros2Backend, Ros2Graph
 from rockly_desktop.robot.ros2.client import Ros2Helper
 from rockly_desktop.robot.ros2.environment import Ros2Settings, Ros2Unavailable, ros2_python
+from rockly_desktop.robot.ros_versions import link_backend
 from rockly_desktop.robot.safe_stop import run_safe_stop
 
 
@@ -138,7 +139,7 @@ class Ros2Robot:
 
     def safe_stop(self) -> list:
         """Do the profile's safe stop now; returns what failed."""
-        return run_safe_stop(self.profile.safe_stop, self.backend(Interrupt()))
+        return run_safe_stop(self.profile.safe_stop, link_backend(self, Interrupt()))
 
     def shutdown(self):
         """Stop the robot safely, stop following the graph and end the helper (its last act is the

@@ -145,10 +145,15 @@ class Helper:
         return problems
 
     def _publisher(self, topic, type_name):
+        """The publisher on ``topic``: one per topic (Fast DDS refuses a second type on a topic in one
+        participant), so another type replaces it (a Jazzy robot's TwistStamped the safe stop's Twist)."""
+        message_class = interface_class(type_name, "msg")
         with self._lock:
             entry = self._publishers.get(topic)
+            if entry is not None and entry[1] is not message_class:
+                self.node.destroy_publisher(entry[0])
+                entry = None
             if entry is None:
-                message_class = interface_class(type_name, "msg")
                 publisher = self.node.create_publisher(
                     message_class, topic, qos.for_publisher(topic, self.qos_overrides))
                 entry = self._publishers[topic] = (publisher, message_class)
@@ -380,7 +385,11 @@ class Helper:
             try:
                 if "publish" in action:
                     body = action["publish"]
-                    self.op_publish(body["topic"], body["type"], dict(body.get("message") or {}))
+                    current = self._publishers.get(body["topic"])
+                    if current and current[1] is not interface_class(body["type"], "msg") and not body.get("message"):
+                        current[0].publish(current[1]())  # an all-zero stop in the type the robot was sent
+                    else:
+                        self.op_publish(body["topic"], body["type"], dict(body.get("message") or {}))
                     self._publishers[body["topic"]][0].wait_for_all_acked(rclpy.duration.Duration(seconds=0.5))
                 else:
                     self.op_cancel_all(action["cancel_goals"])
