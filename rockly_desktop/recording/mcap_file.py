@@ -1,8 +1,9 @@
 """One MCAP file being written: channels made as they are first used, chunks closed on demand.
 
 Rockly's own events go in JSON channels (``json`` messages, a ``jsonschema`` schema); a
-robot's topics go in ``ros1`` channels with their ``ros1msg`` schema when the run's encoder
-can serialise them, else in a JSON channel named like the topic.
+robot's topics go in channels of the run's encoder's encodings (``ros1`` with ``ros1msg``
+schemas, ``cdr`` with ``ros2msg`` ones) when it can serialise them, else in a JSON channel
+named like the topic.
 """
 import json
 
@@ -50,10 +51,13 @@ class McapFile:
         schema_id = self._schema(schema_name, "jsonschema", json_bytes(schema))
         self._add(self._channel(topic, "json", schema_id), topic, log_ns, json_bytes(value))
 
-    def write_ros1(self, topic: str, msg_type: str, definition: str, log_ns: int, data: bytes):
-        """A serialised ROS 1 message of ``msg_type`` (full ``definition`` text, as rosbag keeps it)."""
-        schema_id = self._schema(msg_type, "ros1msg", definition.encode("utf-8"))
-        self._add(self._channel(topic, "ros1", schema_id), topic, log_ns, data)
+    def write_ros(self, topic: str, encodings: tuple, schema_name: str, definition: str, log_ns: int, data: bytes):
+        """A serialised ROS message whose ``encodings`` are (message encoding, schema encoding): ('ros1',
+        'ros1msg') or ('cdr', 'ros2msg'); its schema is named ``schema_name``, with the full ``definition``
+        text (as rosbag and rosbag2 keep it)."""
+        message_encoding, schema_encoding = encodings
+        schema_id = self._schema(schema_name, schema_encoding, definition.encode("utf-8"))
+        self._add(self._channel(topic, message_encoding, schema_id), topic, log_ns, data)
 
     def attach(self, log_ns: int, name: str, media_type: str, data: bytes):
         """Store a file (the program) in the recording."""

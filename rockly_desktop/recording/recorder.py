@@ -31,8 +31,10 @@ _STOP = object()
 class Recorder:
     """Streams one run to the MCAP file at ``path``.
 
-    ``encoder(msg_type, message) -> (definition, bytes)`` serialises a robot topic's message as
-    ROS 1 does (None: topics are written as JSON); ``topic_rate`` caps each topic (messages a
+    ``encoder(msg_type, message) -> (definition, bytes)`` serialises a robot topic's message in its
+    ROS encoding, which the encoder names (``message_encoding``: 'ros1' or 'cdr'; ``schema_encoding``:
+    'ros1msg' or 'ros2msg'; ``schema_name(msg_type)``); None: topics are written as JSON, as is a
+    type the encoder cannot encode (said once in the log); ``topic_rate`` caps each topic (messages a
     second, 0 or less: no topic is recorded); ``clock()`` gives nanoseconds since the epoch.
     """
 
@@ -196,7 +198,9 @@ class Recorder:
                 log.info("recording %s as JSON: %s cannot be encoded (%s)", topic, msg_type, error)
                 self._unencodable.add(msg_type)
             else:
-                self._file.write_ros1(topic, msg_type, definition, log_ns, data)
+                encoder = self._encoder
+                self._file.write_ros(topic, (encoder.message_encoding, encoder.schema_encoding),
+                                     encoder.schema_name(msg_type), definition, log_ns, data)
                 return
         if isinstance(message, dict):
             self._file.write_json(topic, msg_type, {"type": "object"}, log_ns, message)

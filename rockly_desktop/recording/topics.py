@@ -1,7 +1,8 @@
 """The robot's recorded topics, decoded as the panels read them: messages as dicts, by time.
 
-ROS 1 topics are decoded with mcap-ros1-support from the schema the file carries (no ROS
-installation needed), JSON ones as they are; a topic is decoded when it is first asked for.
+ROS 1 topics are decoded with mcap-ros1-support, ROS 2 ones (``cdr``) with mcap-ros2-support
+(imported when a recording has some), from the schema the file carries (no ROS installation
+needed), JSON ones as they are; a topic is decoded when it is first asked for.
 ``at(seconds)`` is a read-only stand-in for the robot's state store at a moment of the run
 (``latest(topic)``), what the state panels read during a replay.
 """
@@ -33,6 +34,7 @@ class RecordedTopics:
         self.recording = recording
         self._decoded = {}
         self._ros1 = DecoderFactory()
+        self._ros2 = None
 
     @property
     def names(self) -> list:
@@ -54,10 +56,19 @@ class RecordedTopics:
         try:
             if encoding == "json":
                 return json.loads(data)
-            decoder = self._ros1.decoder_for(encoding, self.recording.topic_schemas.get(topic))
+            decoder = self._factory(encoding).decoder_for(encoding, self.recording.topic_schemas.get(topic))
             return message_dict(decoder(data)) if decoder else None
         except Exception:  # a message the schema does not fit: that one is left out
             return None
+
+    def _factory(self, encoding: str):
+        if encoding != "cdr":
+            return self._ros1
+        if self._ros2 is None:
+            from mcap_ros2.decoder import DecoderFactory as Ros2DecoderFactory
+
+            self._ros2 = Ros2DecoderFactory()
+        return self._ros2
 
     def latest_at(self, topic: str, seconds: float):
         """The newest message of ``topic`` at ``seconds``, or None."""

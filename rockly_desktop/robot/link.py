@@ -94,7 +94,9 @@ class RobotLink(Protocol):
 
     def recording_encoder(self):
         """``encoder(msg_type, message) -> (schema text, bytes)`` writing the robot's topics in their
-        ROS encoding into a recording (``recording/``), or None: the topics are recorded as JSON."""
+        ROS encoding into a recording (``recording/``), or None: the topics are recorded as JSON. The
+        encoder names its encodings: ``message_encoding`` ('ros1', 'cdr'), ``schema_encoding``
+        ('ros1msg', 'ros2msg') and ``schema_name(msg_type)`` (``pkg/Type``, ``pkg/msg/Type``)."""
 
     def reset(self):
         """Put the simulated robot back as it started; NotImplementedError for a real robot."""

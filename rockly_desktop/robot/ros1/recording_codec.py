@@ -14,11 +14,21 @@ from rockly_desktop.robot.ros1.message_values import to_message
 
 
 class Ros1Encoder:
-    """``encoder(msg_type, message) -> (definition, bytes)``; raises for a type it cannot find."""
+    """``encoder(msg_type, message) -> (definition, bytes)``, with ``message_encoding`` 'ros1',
+    ``schema_encoding`` 'ros1msg' and ``schema_name(msg_type)`` the type as it is; raises for a type
+    it cannot find."""
+
+    message_encoding = "ros1"
+    schema_encoding = "ros1msg"
 
     def __init__(self, definition_folders=()):
         self._folders = list(definition_folders)
         self._types = None
+
+    @staticmethod
+    def schema_name(msg_type: str) -> str:
+        """ROS 1 names a schema as its type (``pkg/Type``)."""
+        return msg_type
 
     def __call__(self, msg_type: str, message):
         if not isinstance(message, genpy.Message):

@@ -102,8 +102,10 @@ class Ros2Robot:
         return None
 
     def recording_encoder(self):
-        """None: the robot's topics are recorded as JSON (a CDR encoder needs mcap-ros2-support)."""
-        return None
+        """The robot's messages as ROS 2 writes them (CDR; ``ros2msg`` schemas from ROS 2's ``.msg`` files)."""
+        from rockly_desktop.robot.ros2.recording_codec import Ros2Encoder
+
+        return Ros2Encoder()
 
     def reset(self):
         """A real robot cannot be put back."""
