@@ -31,7 +31,9 @@ def test_the_registry_opens_a_ros2_link_with_the_whole_robot_link_protocol(linke
     assert linked.kind == "ros2"
     assert [name for name in dir(RobotLink) if not name.startswith("_") and not hasattr(linked, name)] == []
     assert linked.helper.settings == ros2_settings  # its domain, discovery on this machine only
-    assert linked.warnings() == [] and linked.snapshot() is None and linked.recording_encoder() is None
+    assert linked.warnings() == [] and linked.snapshot() is None
+    encoder = linked.recording_encoder()  # its topics are recorded as rosbag2 writes them
+    assert (encoder.message_encoding, encoder.schema_encoding) == ("cdr", "ros2msg")
     with pytest.raises(NotImplementedError):
         linked.reset()
 
