@@ -76,10 +76,11 @@ def test_the_turtlebots_commands_and_safe_stop_reach_a_jazzy_robot_as_twist_stam
                          lambda event: None)
     result = runner.run()
     assert result.outcome == "finished", result.message
-    eventually(lambda: any(line["message"]["linear"]["x"] == pytest.approx(0.1) for line in heard))
+    # the drive, then the stop and the run's safe stop after it (the last heard is a stop)
+    eventually(lambda: any(line["message"]["linear"]["x"] == pytest.approx(0.1) for line in heard)
+               and heard[-1]["message"]["linear"]["x"] == 0.0)
     assert {line["type"] for line in heard} == {"TwistStamped"}
     assert all(line["frame_id"] == "base_link" and line["stamped"] for line in heard)
-    assert heard[-1]["message"]["linear"]["x"] == 0.0  # the run's end: its safe stop
     count = len(heard)
     link.backend(Interrupt()).publish("/cmd_vel", "geometry_msgs/TwistStamped", {"twist": {"linear": {"x": 0.05}}})
     eventually(lambda: len(heard) > count)
