@@ -33,6 +33,14 @@ class Marker:
     text: str
 
 
+def _blocks_entered(recording: Recording) -> list:
+    """The entries that say which block ran from when: blocks entered, and pauses, which name the
+    block they hold at (a block's entry may be noted a moment after a pause the program made in it)."""
+    pauses = [entry for entry in recording.on(channels.RUN)
+              if entry.data.get("event") == "pause" and entry.data.get("block")]
+    return sorted(recording.on(channels.BLOCKS) + pauses, key=lambda entry: entry.time)
+
+
 class _Series:
     def __init__(self, entries, value):
         self.times = [entry.time for entry in entries]
@@ -48,7 +56,7 @@ class Moments:
 
     def __init__(self, recording: Recording):
         self.recording = recording
-        self._blocks = _Series(recording.on(channels.BLOCKS), lambda entry: entry.data["block"])
+        self._blocks = _Series(_blocks_entered(recording), lambda entry: entry.data["block"])
         self._variables = _Series(recording.on(channels.VARIABLES), lambda entry: entry.data.get("values") or {})
         self._snapshots = _Series(recording.on(channels.SIMULATOR), lambda entry: entry.data)
         self._output = recording.on(channels.OUTPUT)

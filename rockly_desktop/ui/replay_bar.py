@@ -108,12 +108,16 @@ class ReplayBar(QWidget):
         self._timer.setInterval(PLAY_MS)
         self._timer.timeout.connect(self._advance)
         self._played_at = None
+        self._exact = None  # the time last jumped to, finer than the slider's milliseconds
         self._show_play_state()
         self.hide()
 
     @property
     def position(self) -> float:
-        """The scrubber's time, in seconds from the recording's start."""
+        """The scrubber's time, in seconds from the recording's start: exactly the time jumped to (a
+        marker's events may be a fraction of the slider's millisecond apart), else the slider's."""
+        if self._exact is not None and _slider_value(self._exact) == self.slider.value():
+            return self._exact
         return self.slider.value() / 1000
 
     def show_timeline(self, duration: float, markers, note: str = ""):
@@ -132,7 +136,11 @@ class ReplayBar(QWidget):
 
     def jump_to(self, seconds: float):
         """Move the scrubber to ``seconds`` (and show that moment)."""
-        self.slider.setValue(int(round(seconds * 1000)))
+        self._exact = seconds
+        if self.slider.value() == _slider_value(seconds):  # the same millisecond: no valueChanged comes
+            self._on_slider(self.slider.value())
+        else:
+            self.slider.setValue(_slider_value(seconds))
 
     def toggle_play(self):
         """Play from the scrubber (from the start when at the end), or pause."""
@@ -186,3 +194,8 @@ def under(widget: QWidget, bar: ReplayBar) -> QWidget:
     column.addWidget(widget, 1)
     column.addWidget(bar)
     return holder
+
+
+def _slider_value(seconds: float) -> int:
+    """The slider's value (milliseconds) for ``seconds``."""
+    return int(round(seconds * 1000))

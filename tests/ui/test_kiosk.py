@@ -118,6 +118,9 @@ def test_the_key_chord_leaves_the_kiosk(qtbot, open_kiosk):
 
 def test_the_kiosk_has_blocklys_menus_but_not_the_browsers(qtbot, open_kiosk):
     window, _kiosk = open_kiosk()
+    # Full screen and on stage, the page is resized after it is ready: a click meanwhile may miss.
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "[window.innerWidth, window.innerHeight]")
+                    == [window.editor.width(), window.editor.height()], timeout=5000)
     page = window.editor.focusProxy() or window.editor
     qtbot.mouseClick(page, Qt.MouseButton.RightButton, pos=QPoint(40, page.height() - 60))   # under the categories
     qtbot.mouseClick(page, Qt.MouseButton.RightButton, pos=QPoint(page.width() // 2, page.height() // 2))

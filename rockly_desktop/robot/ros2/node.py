@@ -34,7 +34,7 @@ from rockly_desktop.robot.ros2.ros_values import (
 FIRST_PUBLISH_WAIT = 1.0  # a new publisher waits this long for the graph's subscribers to match
 DISCOVERY_SECONDS = 3.0  # a new DDS participant may take 2 s to discover the others on this machine
 ACTION_SERVER_WAIT = 5.0
-PARAMETER_WAIT = 2.0
+PARAMETER_WAIT = 5.0  # a node's parameter service: a fresh helper's discovery (DISCOVERY_SECONDS) and then some
 SERVER_SETTLE = 0.25
 PARAMETER_TRIES = 3  # reading or setting a parameter is safe to ask again when an answer was lost
 TOPIC_WAIT = 1.0  # a subscription without a type waits this long for the topic to be discovered
