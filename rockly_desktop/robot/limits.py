@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from rockly_desktop.core.app_texts import app_local_text, app_text
 from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.robot.interface import RobotBackend
+from rockly_desktop.robot.wrapped_backend import WrappedBackend
 
 
 def _text(key: str, language: str, **values) -> str:
@@ -82,7 +83,7 @@ def _clamp_vector(vector, limit: float):
     return clamped, changed
 
 
-class LimitedBackend(RobotBackend):
+class LimitedBackend(WrappedBackend):
     """A RobotBackend that keeps a run within a teacher's ``Limits``.
 
     ``velocity_topics`` are the Twist (or TwistStamped) topics clamped; ``capabilities`` the switched-off
@@ -92,8 +93,7 @@ class LimitedBackend(RobotBackend):
 
     def __init__(self, inner: RobotBackend, limits: Limits, velocity_topics=(), capabilities=(),
                  language: str = "en", note=None):
-        self._inner = inner
-        self.interrupt = inner.interrupt
+        super().__init__(inner)
         self._limits = limits
         self._velocity_topics = {_ros_name(topic) for topic in velocity_topics}
         self._blocked = {}  # (kind, ROS name) -> the capability's name
@@ -104,9 +104,6 @@ class LimitedBackend(RobotBackend):
         self._language = language
         self.note = note
         self._noted = set()
-
-    def __getattr__(self, name):
-        return getattr(self._inner, name)  # backend-specific extras (connect_publisher, wait_for_event)
 
     def _refuse(self, kind: str, name: str):
         capability = self._blocked.get((kind, _ros_name(name)))
@@ -138,7 +135,7 @@ class LimitedBackend(RobotBackend):
         """``own_speed`` (m/s; turning: rad/s), or the teacher's maximum when that is lower (said once).
 
         Profiles ask it through ``RobotCommands.allowed_speed``; a backend wrapping this one must
-        pass it on (``__getattr__`` does), or its runs would drive at the robot's own speed.
+        pass it on (a ``WrappedBackend`` does), or its runs would drive at the robot's own speed.
         """
         if turning and self._limits.max_turn is not None and math.radians(self._limits.max_turn) < own_speed:
             self._tell_once("turn_clamped", turn=self._limits.max_turn)
@@ -155,22 +152,6 @@ class LimitedBackend(RobotBackend):
             message = self._clamped(message)
         self._inner.publish(topic, msg_type, message)
 
-    def subscribe(self, topic: str, msg_type: str, callback):
-        """Subscribe (reading is never limited)."""
-        return self._inner.subscribe(topic, msg_type, callback)
-
-    def wait_until(self, predicate, timeout: float) -> bool:
-        """Wait until ``predicate()`` is true or ``timeout`` passes."""
-        return self._inner.wait_until(predicate, timeout)
-
-    def latest(self, topic: str, msg_type: str):
-        """The last message on ``topic``."""
-        return self._inner.latest(topic, msg_type)
-
-    def wait_for_message(self, topic: str, msg_type: str, timeout: float) -> dict:
-        """Wait for the next message on ``topic``."""
-        return self._inner.wait_for_message(topic, msg_type, timeout)
-
     def call_service(self, name: str, srv_type: str, request: dict, timeout: float) -> dict:
         """Call a service, refused for a switched-off capability."""
         self._refuse("services", name)
@@ -181,18 +162,3 @@ class LimitedBackend(RobotBackend):
         self._refuse("actions", action)
         return self._inner.send_goal(action, action_type, goal, feedback)
 
-    def cancel_all_goals(self, action: str) -> None:
-        """Cancel goals (always allowed: it only ever makes the robot do less)."""
-        self._inner.cancel_all_goals(action)
-
-    def get_param(self, name: str, default=None):
-        """A ROS parameter's value."""
-        return self._inner.get_param(name, default)
-
-    def set_param(self, name: str, value) -> None:
-        """Set a ROS parameter."""
-        self._inner.set_param(name, value)
-
-    def sleep(self, seconds: float) -> None:
-        """Wait ``seconds``."""
-        self._inner.sleep(seconds)

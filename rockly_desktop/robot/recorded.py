@@ -9,6 +9,7 @@ action), and ``type``, ``data``, ``status``, ``text``, ``seconds`` where they ap
 import time
 
 from rockly_desktop.robot.interface import GoalHandle, RobotBackend
+from rockly_desktop.robot.wrapped_backend import WrappedBackend
 
 
 def _failed(name: str, error: Exception, started: float) -> dict:
@@ -49,16 +50,12 @@ class RecordedGoal(GoalHandle):
         self._inner.cancel()
 
 
-class RecordedBackend(RobotBackend):
+class RecordedBackend(WrappedBackend):
     """A RobotBackend that tells ``note(entry)`` what the program sent and what came back."""
 
     def __init__(self, inner: RobotBackend, note):
-        self._inner = inner
-        self.interrupt = inner.interrupt
+        super().__init__(inner)
         self._note = note
-
-    def __getattr__(self, name):
-        return getattr(self._inner, name)  # backend-specific extras (connect_publisher, wait_for_event, note)
 
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
         """Publish (noted before it goes, so a refused one is noted with its failure)."""
@@ -69,22 +66,6 @@ class RecordedBackend(RobotBackend):
         except Exception as error:
             self._note(_failed(topic, error, started))
             raise
-
-    def subscribe(self, topic: str, msg_type: str, callback):
-        """Subscribe (the topics themselves are recorded from the state store)."""
-        return self._inner.subscribe(topic, msg_type, callback)
-
-    def wait_until(self, predicate, timeout: float) -> bool:
-        """Wait until ``predicate()`` is true or ``timeout`` passes."""
-        return self._inner.wait_until(predicate, timeout)
-
-    def latest(self, topic: str, msg_type: str):
-        """The last message on ``topic``."""
-        return self._inner.latest(topic, msg_type)
-
-    def wait_for_message(self, topic: str, msg_type: str, timeout: float) -> dict:
-        """Wait for the next message on ``topic``."""
-        return self._inner.wait_for_message(topic, msg_type, timeout)
 
     def call_service(self, name: str, srv_type: str, request: dict, timeout: float) -> dict:
         """Call a service; the request, then the response or the failure, are noted."""
@@ -121,14 +102,3 @@ class RecordedBackend(RobotBackend):
         self._note({"kind": "cancel", "name": action})
         self._inner.cancel_all_goals(action)
 
-    def get_param(self, name: str, default=None):
-        """A ROS parameter's value."""
-        return self._inner.get_param(name, default)
-
-    def set_param(self, name: str, value) -> None:
-        """Set a ROS parameter."""
-        self._inner.set_param(name, value)
-
-    def sleep(self, seconds: float) -> None:
-        """Wait ``seconds``."""
-        self._inner.sleep(seconds)

@@ -17,6 +17,7 @@ import time
 
 from rockly_desktop.core.ros_distributions import DISTRIBUTIONS
 from rockly_desktop.robot.interface import RobotBackend
+from rockly_desktop.robot.wrapped_backend import WrappedBackend
 
 FRAME_ID = "base_link"   # the frame a stamped velocity command is given in: the robot's own
 RECHECK_SECONDS = 0.5    # while the graph lists no type for a name, look again at most this often
@@ -100,7 +101,7 @@ def stamped_part(message, msg_type: str):
     return message.get(field) if field and isinstance(message, dict) else message
 
 
-class VersionedBackend(RobotBackend):
+class VersionedBackend(WrappedBackend):
     """A RobotBackend sending each message as the type the robot wants (see the module's docstring).
 
     ``versions`` is the profile's ``ros_versions`` and ``ros_interface`` its interface; the
@@ -110,17 +111,13 @@ class VersionedBackend(RobotBackend):
     """
 
     def __init__(self, inner: RobotBackend, versions: dict, ros_interface: dict, distribution: str = None):
-        self._inner = inner
-        self.interrupt = inner.interrupt
+        super().__init__(inner)
         self._variants = {ros_name(name): dict(entry) for name, entry in (versions or {}).items()}
         self._base = base_types(ros_interface or {})
         self.ros_version = getattr(inner, "ros_version", "sim")
         self.distribution = distribution
         self._resolved = {}   # ROS name -> (type, whether that is final)
         self._checked = {}    # ROS name -> when the graph was last asked
-
-    def __getattr__(self, name):
-        return getattr(self._inner, name)  # backend-specific extras (graph, connect_publisher, ...)
 
     def type_for(self, name: str, msg_type: str = None) -> str:
         """The type the robot wants on ``name`` (``msg_type``, or the interface's, where nothing differs)."""
@@ -153,22 +150,6 @@ class VersionedBackend(RobotBackend):
                 message, msg_type = changed, wanted
         self._inner.publish(topic, msg_type, message)
 
-    def subscribe(self, topic: str, msg_type: str, callback):
-        """Subscribe (types of what a robot publishes are used as given)."""
-        return self._inner.subscribe(topic, msg_type, callback)
-
-    def wait_until(self, predicate, timeout: float) -> bool:
-        """Wait until ``predicate()`` is true or ``timeout`` passes."""
-        return self._inner.wait_until(predicate, timeout)
-
-    def latest(self, topic: str, msg_type: str):
-        """The last message on ``topic``."""
-        return self._inner.latest(topic, msg_type)
-
-    def wait_for_message(self, topic: str, msg_type: str, timeout: float) -> dict:
-        """Wait for the next message on ``topic``."""
-        return self._inner.wait_for_message(topic, msg_type, timeout)
-
     def call_service(self, name: str, srv_type: str, request: dict, timeout: float) -> dict:
         """Call a service with the type the robot has for it."""
         return self._inner.call_service(name, self.type_for(name, srv_type), request, timeout)
@@ -176,22 +157,6 @@ class VersionedBackend(RobotBackend):
     def send_goal(self, action: str, action_type: str, goal: dict, feedback=None):
         """Send an action goal with the type the robot has for it."""
         return self._inner.send_goal(action, self.type_for(action, action_type), goal, feedback)
-
-    def cancel_all_goals(self, action: str) -> None:
-        """Cancel the action's goals."""
-        self._inner.cancel_all_goals(action)
-
-    def get_param(self, name: str, default=None):
-        """A ROS parameter's value."""
-        return self._inner.get_param(name, default)
-
-    def set_param(self, name: str, value) -> None:
-        """Set a ROS parameter."""
-        self._inner.set_param(name, value)
-
-    def sleep(self, seconds: float) -> None:
-        """Wait ``seconds``."""
-        self._inner.sleep(seconds)
 
 
 def link_backend(link, interrupt):
