@@ -11,6 +11,7 @@ import time
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
+from rockly_desktop.robot.next_message import next_message
 from rockly_desktop.robot.ros2.client import words
 
 POLL_SECONDS = 0.01
@@ -188,14 +189,7 @@ class Ros2Backend(RobotBackend):
 
     def wait_for_message(self, topic: str, msg_type: str, timeout: float) -> dict:
         """The next message on ``topic``; RobotTimeout naming it after ``timeout``."""
-        received, arrived = [], threading.Event()
-        unsubscribe = self.subscribe(topic, msg_type, lambda message: (received.append(message), arrived.set()))
-        try:
-            if not self.wait_for_event(arrived, timeout):
-                raise RobotTimeout(app_local_text("sim_no_message", topic=topic, timeout=timeout))
-        finally:
-            unsubscribe()
-        return received[0]
+        return next_message(self, topic, msg_type, timeout)
 
     def call_service(self, name: str, srv_type: str, request: dict, timeout: float) -> dict:
         """Call a service; Stop, a lost helper and ``timeout`` end the wait at once."""
