@@ -31,8 +31,8 @@ from rockly_desktop.robot.ros2.ros_values import (
     to_parameter_value,
 )
 
-FIRST_PUBLISH_WAIT = 1.0  # a new publisher waits this long for the graph's subscribers to match
-DISCOVERY_SECONDS = 3.0  # a new DDS participant may take 2 s to discover the others on this machine
+FIRST_PUBLISH_WAIT = 2.0  # a new publisher waits this long for the graph's subscribers to match
+DISCOVERY_SECONDS = 5.0  # a new DDS participant may take 2 s (a busy machine: more) to discover the others
 ACTION_SERVER_WAIT = 5.0
 PARAMETER_WAIT = 5.0  # a node's parameter service: a fresh helper's discovery (DISCOVERY_SECONDS) and then some
 SERVER_SETTLE = 0.25
@@ -160,14 +160,14 @@ class Helper:
             return entry
 
     def op_publish_first(self, topic, type_name, message):
-        """Make the publisher, wait (≤ 1 s) until the subscribers the graph lists have matched it, publish."""
+        """Make the publisher, wait until the subscribers the graph lists have matched it (``_match``), publish."""
         publisher, _class = self._publisher(topic, type_name)
         self._match(publisher, topic)
         if message is not None:
             self.op_publish(topic, type_name, message)
 
     def _match(self, publisher, topic):
-        """Wait (≤ 1 s) until ``publisher`` has matched every subscriber the graph lists for ``topic``,
+        """Wait (≤ FIRST_PUBLISH_WAIT) until ``publisher`` has matched every subscriber the graph lists for ``topic``,
         and at least one: discovery is gradual in ROS 2, a robot's subscriber may not be known yet
         (in the helper's first seconds, it waits until discovery had DISCOVERY_SECONDS)."""
         deadline = max(time.monotonic() + FIRST_PUBLISH_WAIT, self.started + DISCOVERY_SECONDS)
