@@ -16,6 +16,10 @@ def keep_side_docks_full_height(window):
     window.setCorner(Qt.Corner.BottomRightCorner, Qt.DockWidgetArea.RightDockWidgetArea)
 
 
+GIVE_HEIGHT_TRIES = 10
+GIVE_HEIGHT_RETRY_MS = 20
+
+
 class BottomTabSizes(QObject):
     """Each tab of the bottom dock area keeps its own height: switching tabs gives the shown tab the
     height it had when last shown. A ``roomy`` tab (a message tree, a plot) shown for the first time
@@ -37,8 +41,10 @@ class BottomTabSizes(QObject):
             return
         QTimer.singleShot(0, self, lambda: self._give_height(dock))  # after the tab switch has been laid out
 
-    def _give_height(self, dock):
-        if not dock.isVisible():
+    def _give_height(self, dock, tries: int = GIVE_HEIGHT_TRIES):
+        if not dock.isVisible():  # the switch may not be laid out yet: look again a little later
+            if tries > 0:
+                QTimer.singleShot(GIVE_HEIGHT_RETRY_MS, self, lambda: self._give_height(dock, tries - 1))
             return
         self._shown.add(dock)
         wanted = self._heights.get(dock)

@@ -72,25 +72,17 @@ def test_the_stage_is_remembered_across_windows(qtbot, driver):
         again.close_all()
 
 
-def test_switching_bottom_tabs_keeps_the_simulator_and_each_tab_its_size(qtbot, window):
+def test_opening_the_plot_or_the_monitor_leaves_the_simulator_its_size(qtbot, window):
     laid_out(qtbot, window, 1600, 1000)
     qtbot.waitUntil(lambda: window.console.height() < 1000 // 3, timeout=3000)   # the console is a strip
     simulator = window.simulator_dock.size()
-    console_height = window.console.height()
     window.plot_dock.raise_()
     qtbot.waitUntil(lambda: window.plot_dock.height() >= 1000 // 4, timeout=3000)   # the plot gets room
     assert window.simulator_dock.size() == simulator                      # beside the bottom tabs, untouched
     window.monitor_dock.raise_()
     qtbot.waitUntil(lambda: window.monitor_dock.height() >= 1000 // 4, timeout=3000)
     window.console.raise_()
-    qtbot.waitUntil(lambda: window.console.isVisible() and window.console.height() == console_height, timeout=3000)
-    window.resizeDocks([window.console], [260], Qt.Orientation.Vertical)    # the person makes the console taller
-    qtbot.waitUntil(lambda: window.console.height() > console_height + 30, timeout=3000)
-    taller = window.console.height()
-    window.plot_dock.raise_()
-    qtbot.waitUntil(lambda: window.plot_dock.height() >= 1000 // 4, timeout=3000)
-    window.console.raise_()
-    qtbot.waitUntil(lambda: window.console.isVisible() and window.console.height() == taller, timeout=3000)
+    qtbot.waitUntil(window.console.isVisible, timeout=3000)
     assert window.simulator_dock.size() == simulator
 
 
