@@ -78,7 +78,7 @@ def test_the_turtlebots_commands_and_safe_stop_reach_a_jazzy_robot_as_twist_stam
     assert result.outcome == "finished", result.message
     # the drive, then the stop and the run's safe stop after it (the last heard is a stop)
     eventually(lambda: any(line["message"]["linear"]["x"] == pytest.approx(0.1) for line in heard)
-               and heard[-1]["message"]["linear"]["x"] == 0.0)
+               and heard[-1]["message"]["linear"]["x"] == 0.0, timeout=30)  # a new publisher type: matched anew
     assert {line["type"] for line in heard} == {"TwistStamped"}
     assert all(line["frame_id"] == "base_link" and line["stamped"] for line in heard)
     count = len(heard)
