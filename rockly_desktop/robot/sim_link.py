@@ -23,6 +23,7 @@ class SimulatedRobot:
         self.world.tap(self.state.record)
         self.simulator = profile.create("simulator", self.world, tablet=tablet, speed=speed)
         self.simulator.start()
+        self._encoder = None
 
     @classmethod
     def unavailable(cls):
@@ -75,12 +76,17 @@ class SimulatedRobot:
         return run_safe_stop(self.profile.safe_stop, link_backend(self, Interrupt()))
 
     def recording_encoder(self):
-        """The simulator's ROS-shaped messages as ROS 1 writes them, where genpy is installed (else None: JSON)."""
-        try:
-            from rockly_desktop.robot.ros1.recording_codec import Ros1Encoder
-        except ImportError:
-            return None
-        return Ros1Encoder(self.profile.message_folders)
+        """The simulator's ROS-shaped messages as ROS 1 writes them, where genpy is installed (else None:
+        JSON). One encoder for the session, whose message classes for the simulator's topics are made
+        on the first call, before a run starts (not by the recording's writer while the program runs)."""
+        if self._encoder is None:
+            try:
+                from rockly_desktop.robot.ros1.recording_codec import Ros1Encoder
+            except ImportError:
+                return None
+            self._encoder = Ros1Encoder(self.profile.message_folders)
+            self._encoder.prepare(msg_type for _topic, msg_type in self.world.topics())
+        return self._encoder
 
     def reset(self):
         """Put the simulated robot back as it started (its profile's ``reset()``)."""

@@ -1,5 +1,8 @@
 """A run on the built-in simulator, recorded: what the mcap library reads back."""
 import json
+import subprocess
+import sys
+from pathlib import Path
 
 import pytest
 from recorded_reading import channels_and_messages, metadata_and_attachments
@@ -19,6 +22,7 @@ PROGRAM = {"code": "\n".join([
     "__rockly__.block('say')", "print('done', n)", ""]), "variables": {"n": "n"}}
 TYPES = {"set": "variables_set", "look": "hobbit_look", "emo": "hobbit_emo", "drive": "hobbit_move",
          "again": "math_change", "say": "text_print"}
+REPO = Path(__file__).resolve().parents[2]
 DOCUMENT = json.dumps({"rockly": 1, "profile": "hobbit", "workspace": {}}).encode()
 
 
@@ -79,3 +83,27 @@ def test_the_program_and_what_ran_are_stored_in_the_file(recorded):
     assert metadata["rockly"]["program"] == "square.rockly"
     assert (metadata["rockly"]["profile"], metadata["rockly"]["robot"]) == ("hobbit", "sim")
     assert read_recording(recorded).complete
+
+
+FRESH_PROCESS = """
+import sys
+from rockly_desktop.profiles.registry import ProfileRegistry
+from rockly_desktop.robot.sim_link import SimulatedRobot
+robot = SimulatedRobot(ProfileRegistry.discover().get("hobbit"))
+encoder = robot.recording_encoder()
+assert robot.recording_encoder() is encoder
+modules = set(sys.modules)
+for _topic, msg_type in robot.world.topics():
+    encoder(msg_type, {})
+robot.shutdown()
+print(sorted(set(sys.modules) - modules))
+"""
+
+
+def test_the_simulators_encoder_is_made_once_with_its_topics_message_classes_ready():
+    """The recording's writer must not import message classes while a program runs beside it (in a
+    fresh process: this one has imported them all by now)."""
+    done = subprocess.run([sys.executable, "-c", FRESH_PROCESS], capture_output=True, text=True, timeout=60,
+                          cwd=REPO)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "[]"
