@@ -327,7 +327,6 @@ def run_all(settings, plain):
     latencies = stop_latencies(turtlebot, robot, seen, STOP_TRIALS)
     print(f"stop latency on the wire (stop -> zero Twist at the echo node): median {median_ms(latencies):.2f} ms, "
           f"max {max(latencies) * 1000:.2f} ms over {STOP_TRIALS} stops (aim max <= 20 ms)")
-    robot.shutdown()
 
     # --- the helper killed mid-wait ----------------------------------------------------
     import signal
@@ -347,6 +346,7 @@ def run_all(settings, plain):
     os.kill(robot.helper.process.pid, signal.SIGKILL)
     waiter.join(10)
     print(f"helper killed mid-wait -> the command fails: {(failed[0] - killed) * 1000:.1f} ms (aim <= 2 s)")
+    robot.shutdown()
 
 
 if __name__ == "__main__":

@@ -11,6 +11,7 @@ import importlib
 import os
 from dataclasses import dataclass
 
+from rockly_desktop.core.ros_distributions import DISTRIBUTIONS
 from rockly_desktop.robot.link import RobotUnavailable
 
 
@@ -21,9 +22,10 @@ class ConnectionSetting:
     ``label`` and ``hint`` are window text keys (``ui/texts.py``); the default is the first
     of the ``environment`` variables that is set, else ``default``; ``example`` is a long
     typical value (the field is made wide enough for it). ``choices`` ((value, text key)
-    pairs) make it a choice among those values (e.g. ROS 2's discovery range) instead of a
-    typed text. ``option`` is its ``rockly run`` and ``rockly sim`` option, with ``help``
-    (English, as the whole command line).
+    pairs; no key: the value is a name, the same in every language, e.g. Jazzy) make it a
+    choice among those values (e.g. ROS 2's discovery range) instead of a typed text; a
+    choice's ``hint`` is its tooltip. ``option`` is its ``rockly run`` and ``rockly sim``
+    option, with ``help`` (English, as the whole command line).
     """
 
     name: str
@@ -38,9 +40,12 @@ class ConnectionSetting:
 
     def default_value(self) -> str:
         """The value to offer when none is remembered: from this computer's environment (a choice's
-        value in any case, e.g. LOCALHOST for localhost), else ``default``."""
+        value in any case, e.g. LOCALHOST for localhost; one that is no choice, e.g. a ROS 1
+        ROS_DISTRO, is not offered), else ``default``."""
         value = next((os.environ[name] for name in self.environment if os.environ.get(name)), self.default)
-        return next((choice for choice, _text in self.choices if choice.lower() == value.lower()), value)
+        if not self.choices:
+            return value
+        return next((choice for choice, _text in self.choices if choice.lower() == value.lower()), self.default)
 
 
 @dataclass(frozen=True)
@@ -92,6 +97,14 @@ ROS2_SETTINGS = (
                       example="192.168.100.100; robot.local", option="--peers",
                       help="ROS 2 static peers beyond the discovery range, e.g. '192.168.1.30;robot.local' "
                            "(default: $ROS_STATIC_PEERS)"),
+    ConnectionSetting("ros_distribution", "connect_distribution", ("ROS_DISTRO",), "auto",
+                      hint="connect_distribution_hint",
+                      choices=(("auto", "connect_distribution_auto"),
+                               *((name, None) for name in DISTRIBUTIONS)),
+                      option="--ros-distro",
+                      help="the robot's ROS 2 distribution, where types differ (a Jazzy robot's TwistStamped "
+                           f"/cmd_vel): auto (the robot's graph says), {', '.join(DISTRIBUTIONS)} "
+                           "(default: $ROS_DISTRO or auto)"),
 )
 
 LINKS = {entry.kind: entry for entry in (

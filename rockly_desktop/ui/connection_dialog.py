@@ -49,8 +49,10 @@ class ConnectionDialog(QDialog):
     def _choice(self, setting, value: str, language: str) -> QComboBox:
         box = QComboBox(self)
         for choice, text in setting.choices:
-            box.addItem(tr(text, language), choice)
+            box.addItem(tr(text, language) if text else choice.capitalize(), choice)
         box.setCurrentIndex(max(box.findData(value), 0))
+        if setting.hint:
+            box.setToolTip(tr(setting.hint, language))
         return box
 
     @property

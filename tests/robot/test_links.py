@@ -51,7 +51,7 @@ def test_each_connection_setting_has_a_window_label_and_ros1_asks_for_master_and
     for entry in link_kinds():
         for setting in entry.settings:
             assert tr(setting.label, "en") != tr(setting.label, "de")
-            assert all(tr(text, "en") != tr(text, "de") for _value, text in setting.choices)
+            assert all(tr(text, "en") != tr(text, "de") for _value, text in setting.choices if text)
         assert bool(entry.settings) == (entry.settings_group is not None) == (not entry.simulated)
 
 
@@ -98,13 +98,22 @@ def test_ros1_without_rospy_is_unavailable_naming_the_set_up_step(monkeypatch, h
 def test_ros2_asks_for_domain_discovery_range_and_peers_with_its_own_options(monkeypatch):
     settings = link_kind("ros2").settings
     assert [(setting.name, setting.option) for setting in settings] == [
-        ("domain_id", "--domain"), ("discovery", "--discovery"), ("peers", "--peers")]
+        ("domain_id", "--domain"), ("discovery", "--discovery"), ("peers", "--peers"),
+        ("ros_distribution", "--ros-distro")]
     assert [value for value, _text in settings[1].choices] == ["localhost", "subnet", "off", "system_default"]
     monkeypatch.setenv("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
     monkeypatch.setenv("ROS_DOMAIN_ID", "42")
     assert (settings[0].default_value(), settings[1].default_value()) == ("42", "localhost")
     args = cli._tool_parser().parse_args(["run", "p.rockly", "--backend", "ros2", "--domain", "7"])
-    assert cli._connection("ros2", args) == {"domain_id": "7", "discovery": None, "peers": None}
+    assert cli._connection("ros2", args) == {"domain_id": "7", "discovery": None, "peers": None,
+                                             "ros_distribution": None}
+    assert [value for value, _text in settings[3].choices] == ["auto", "humble", "iron", "jazzy", "kilted", "rolling"]
+    monkeypatch.delenv("ROS_DISTRO", raising=False)
+    assert settings[3].default_value() == "auto"
+    monkeypatch.setenv("ROS_DISTRO", "Jazzy")
+    assert settings[3].default_value() == "jazzy"
+    monkeypatch.setenv("ROS_DISTRO", "noetic")  # a ROS 1 set-up's
+    assert settings[3].default_value() == "auto"
     assert cli._tool_parser().parse_args(["sim", "turtlebot", "--ros2", "--domain", "7"]).serve_on == "ros2"
 
 
@@ -120,7 +129,7 @@ def test_ros2_without_its_environment_is_unavailable_naming_the_set_up_step(monk
 
 @pytest.mark.parametrize("connection, reason, named", [
     ({"domain_id": "233"}, "bad_domain", "233"), ({"domain_id": "seven"}, "bad_domain", "seven"),
-    ({"discovery": "planet"}, "bad_discovery", "planet")])
+    ({"discovery": "planet"}, "bad_discovery", "planet"), ({"ros_distribution": "foxy"}, "bad_distribution", "foxy")])
 def test_a_ros2_setting_it_cannot_take_is_said_in_the_window_language(hobbit, connection, reason, named):
     with pytest.raises(RobotUnavailable) as caught:
         open_link("ros2", hobbit, connection)

@@ -29,7 +29,7 @@ def ros2_window(qtbot, window, test_robot, ros2_settings, monkeypatch):
     backend = window.run_toolbar.backend
     backend.setCurrentIndex(backend.findData("ros2"))
     assert window.robots.kind == "ros2" and len(asked) == 1
-    assert list(asked[0]) == ["domain_id", "discovery", "peers"]
+    assert list(asked[0]) == ["domain_id", "discovery", "peers", "ros_distribution"]
     window.asked = asked
     return window
 
@@ -44,7 +44,8 @@ def test_choosing_ros2_connects_shows_the_domain_and_remembers_the_settings(qtbo
     qtbot.waitUntil(lambda: "ROS connected" in ros2_window.robots.status.text(), timeout=5000)
     assert where in ros2_window.robots.status.text() and ros2_window.robots.status.isVisible()
     assert ros2_window.settings.link_connection(ROS2, "hobbit") == {
-        "domain_id": str(ros2_settings.domain_id), "discovery": "localhost", "peers": None}
+        "domain_id": str(ros2_settings.domain_id), "discovery": "localhost", "peers": None,
+        "ros_distribution": "auto"}
     health = ros2_window.health
     qtbot.waitUntil(lambda: where in health.toolTip(), timeout=10000)
     assert "ROS 2" in health.toolTip()

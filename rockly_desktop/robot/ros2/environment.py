@@ -8,6 +8,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
+from rockly_desktop.core.ros_distributions import DISTRIBUTIONS
 from rockly_desktop.robot.link import RobotUnavailable
 
 PROJECT_ROOT = Path(__file__).resolve().parents[3]
@@ -20,8 +21,27 @@ class Ros2Unavailable(RobotUnavailable):
 
     ``reason`` names the case for a window that says it in its own language ('no_ros2':
     ``.venv-ros2`` is missing; 'helper_failed': it did not start; 'bad_domain': the domain id is
-    not 0 to 232); ``values`` are what the message names (``step``, ``python``, ``detail``, ``domain``).
+    not 0 to 232; 'bad_discovery', 'bad_distribution': a name it does not know); ``values`` are
+    what the message names (``step``, ``python``, ``detail``, ``domain``, …).
     """
+
+
+def declared_distribution(connection: dict) -> "str | None":
+    """The ROS 2 distribution ``connection`` declares for the robot (``ros_distribution``, e.g. 'jazzy'), or
+    None for 'auto' or none (the robot's graph decides, see ``robot/ros_versions.py``). Ros2Unavailable
+    ('bad_distribution') for a name Rockly does not know."""
+    name = (connection.get("ros_distribution") or "").strip().lower()
+    if name in ("", "auto"):
+        return None
+    if name not in DISTRIBUTIONS:
+        raise Ros2Unavailable(f"Rockly knows the ROS 2 distributions {', '.join(DISTRIBUTIONS)}, not '{name}'",
+                              "bad_distribution", distribution=name, known=", ".join(("auto",) + DISTRIBUTIONS))
+    return name
+
+
+def ros2_name(distribution: str = None) -> str:
+    """'ROS 2', or 'ROS 2 Jazzy' for a declared distribution."""
+    return f"ROS 2 {distribution.capitalize()}" if distribution else "ROS 2"
 
 
 @dataclass(frozen=True)

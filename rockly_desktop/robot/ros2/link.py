@@ -8,7 +8,13 @@ from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.link import LinkStatus
 from rockly_desktop.robot.ros2.backend import Ros2Backend, Ros2Graph
 from rockly_desktop.robot.ros2.client import Ros2Helper
-from rockly_desktop.robot.ros2.environment import Ros2Settings, Ros2Unavailable, ros2_python
+from rockly_desktop.robot.ros2.environment import (
+    Ros2Settings,
+    Ros2Unavailable,
+    declared_distribution,
+    ros2_name,
+    ros2_python,
+)
 from rockly_desktop.robot.ros_versions import link_backend
 from rockly_desktop.robot.safe_stop import run_safe_stop
 
@@ -16,11 +22,11 @@ from rockly_desktop.robot.safe_stop import run_safe_stop
 class Ros2Connection:
     """The link's state as the window shows it, in the ROS 1 connection's shape (``status``,
     ``lost``, ``round_trip``, ``master_uri``); ROS 2 has no master, so ``master_uri`` is the
-    link's description ('ROS 2, domain 7, localhost')."""
+    link's description ('ROS 2, domain 7, localhost'; 'ROS 2 Jazzy, …' with a declared distribution)."""
 
-    def __init__(self, helper, settings):
+    def __init__(self, helper, settings, ros_distribution: str = None):
         self._helper = helper
-        self.master_uri = f"ROS 2, {settings.describe()}"
+        self.master_uri = f"{ros2_name(ros_distribution)}, {settings.describe()}"
         self.round_trip = None  # seconds to the helper and back, as of the last health look
 
     @property
@@ -46,17 +52,20 @@ class Ros2Connection:
 class Ros2Robot:
     """A robot on ROS 2, through this process's one helper (started on first use, ended by ``shutdown``).
 
-    ``settings`` (Ros2Settings) are the domain id, discovery range and static peers. Raises
-    Ros2Unavailable when ROS 2 is not set up (naming ``make ros2``) or its helper does not start.
+    ``settings`` (Ros2Settings) are the domain id, discovery range and static peers;
+    ``ros_distribution`` the robot's declared ROS 2 distribution (None: its graph says which types
+    it wants, ``robot/ros_versions.py``). Raises Ros2Unavailable when ROS 2 is not set up (naming
+    ``make ros2``) or its helper does not start.
     """
 
     kind = "ros2"
 
-    def __init__(self, profile, settings: Ros2Settings = None):
+    def __init__(self, profile, settings: Ros2Settings = None, ros_distribution: str = None):
         self.profile = profile
         self.settings = settings or Ros2Settings()
+        self.ros_distribution = ros_distribution
         self.helper = Ros2Helper.get(self.settings)
-        self.connection = Ros2Connection(self.helper, self.settings)
+        self.connection = Ros2Connection(self.helper, self.settings, ros_distribution)
         interface = profile.ros_interface
         # its last act, should Rockly die: the profile's safe stop (its publishers are made now; one
         # of a type ROS 2 lacks fails when the stop is done, saying so, as on ROS 1)
@@ -81,9 +90,11 @@ class Ros2Robot:
     @classmethod
     def open(cls, profile, connection: dict = None, *, tablet=None, speed: float = 1.0, timeout: float = 5.0):
         """The robot on ``connection``'s ``domain_id``, ``discovery`` range and static ``peers``
-        (Ros2Settings.from_connection); the robot's own nodes answer its tablet, and ROS 2 has no
-        master to wait for, so ``tablet``, ``speed`` and ``timeout`` are not used."""
-        return cls(profile, Ros2Settings.from_connection(connection or {}))
+        (Ros2Settings.from_connection), of its declared ``ros_distribution``; the robot's own nodes
+        answer its tablet, and ROS 2 has no master to wait for, so ``tablet``, ``speed`` and
+        ``timeout`` are not used."""
+        connection = connection or {}
+        return cls(profile, Ros2Settings.from_connection(connection), declared_distribution(connection))
 
     def follow_graph(self):
         """Start filling ``state`` from every topic of the graph (for the panels); idempotent."""

@@ -15,17 +15,21 @@ import threading
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.ros2.client import Ros2Helper, words
-from rockly_desktop.robot.ros2.environment import Ros2Settings
+from rockly_desktop.robot.ros2.environment import Ros2Settings, declared_distribution, ros2_name
+from rockly_desktop.robot.ros_versions import base_types, converted, declared_type, ros_name
 
 log = logging.getLogger(__name__)
 
 
 class Ros2SimBridge:
-    """Connects ``world`` to ROS 2 as ``interface`` says, through ``helper``."""
+    """Connects ``world`` to ROS 2 as ``interface`` says, through ``helper``; a topic ``wanted`` names
+    ({ROS name: type}) is carried as that type (a Jazzy robot's TwistStamped ``/cmd_vel``), the world
+    keeping the interface's."""
 
-    def __init__(self, world, interface: dict, helper):
+    def __init__(self, world, interface: dict, helper, wanted: dict = None):
         self._world = world
         self._helper = helper
+        self._wanted = {ros_name(name): type_name for name, type_name in (wanted or {}).items()}
         self._interrupt = Interrupt()  # stopped by close(): a question waiting for a person ends
         self.left_out = []  # (name, type, why) of endpoints ROS 2 cannot carry here
         self._sids = []
@@ -45,9 +49,11 @@ class Ros2SimBridge:
 
     def _bridge_in(self, topic, msg_type):
         sid = self._helper.new_id()
-        self._helper.on("msg", sid, lambda data: self._world.publish(topic, msg_type, data))
+        wire_type = self._wanted.get(ros_name(topic), msg_type)
+        self._helper.on("msg", sid, lambda data: self._world.publish(topic, msg_type,
+                                                                     converted(data, wire_type, msg_type)))
         try:
-            self._helper.call("subscribe", sid, topic, msg_type, timeout=10.0)
+            self._helper.call("subscribe", sid, topic, wire_type, timeout=10.0)
         except RobotCommandError as error:
             self._helper.off("msg", sid)
             self._leave_out(topic, msg_type, error)
@@ -55,16 +61,17 @@ class Ros2SimBridge:
         self._sids.append(sid)
 
     def _bridge_out(self, topic, msg_type):
+        wire_type = self._wanted.get(ros_name(topic), msg_type)
         try:
-            self._helper.call("publish_first", topic, msg_type, None, timeout=10.0)
+            self._helper.call("publish_first", topic, wire_type, None, timeout=10.0)
         except RobotCommandError as error:
-            self._leave_out(topic, msg_type, error)
+            self._leave_out(topic, wire_type, error)
             return
         helper = self._helper
 
         def forward(data):
             if not helper.lost:
-                helper.cast("publish", topic, msg_type, data)
+                helper.cast("publish", topic, wire_type, converted(data, msg_type, wire_type))
         self._world.subscribe(topic, forward)
 
     def _leave_out(self, name, type_name, error):
@@ -119,24 +126,28 @@ class Ros2SimBridge:
 class Ros2SimulatorNode:
     """``profile``'s simulator served on ROS 2 through this process's helper; ``shutdown()`` ends it.
 
-    ``tablet`` is the simulator's tablet port. Raises Ros2Unavailable when ROS 2 is not set up.
+    ``tablet`` is the simulator's tablet port; ``ros_distribution`` the ROS 2 distribution it plays
+    (its topics as a robot of that one has them: a Jazzy TurtleBot's TwistStamped ``/cmd_vel``; None:
+    ROS 2's usual types). Raises Ros2Unavailable when ROS 2 is not set up.
     """
 
-    def __init__(self, profile, settings: Ros2Settings = None, speed=1.0, tablet=None):
+    def __init__(self, profile, settings: Ros2Settings = None, speed=1.0, tablet=None, ros_distribution: str = None):
         from rockly_desktop.robot.sim_world import SimWorld
 
         self.settings = settings or Ros2Settings()
+        self.ros_distribution = ros_distribution
         self.helper = Ros2Helper.get(self.settings)
         self.world = SimWorld()
         self.simulator = profile.create("simulator", self.world, tablet=tablet, speed=speed)
-        self._bridge = Ros2SimBridge(self.world, profile.ros_interface, self.helper)
+        self._bridge = Ros2SimBridge(self.world, profile.ros_interface, self.helper,
+                                     played_types(profile, ros_distribution))
         self.simulator.start()
         self._ended = False
 
     @property
     def where(self) -> str:
-        """'ROS 2, domain 7, localhost' for the window and the console."""
-        return f"ROS 2, {self.settings.describe()}"
+        """'ROS 2, domain 7, localhost' ('ROS 2 Jazzy, …' playing a distribution) for the window and the console."""
+        return f"{ros2_name(self.ros_distribution)}, {self.settings.describe()}"
 
     @property
     def left_out(self) -> list:
@@ -158,7 +169,16 @@ class Ros2SimulatorNode:
         Ros2Helper.close_current()
 
 
+def played_types(profile, distribution: str = None) -> dict:
+    """{ROS name: type} of the names ``profile``'s ``ros_versions`` vary, as a ROS 2 robot of ``distribution``
+    has them."""
+    bases = base_types(profile.ros_interface)
+    return {ros_name(name): declared_type(bases.get(ros_name(name)), variants, "ros2", distribution)
+            for name, variants in (getattr(profile, "ros_versions", None) or {}).items()}
+
+
 def serve_simulator(profile, connection: dict, speed: float = 1.0, tablet=None) -> Ros2SimulatorNode:
-    """``profile``'s simulator on ROS 2 with ``connection``'s domain id, discovery range and peers
-    (the registry's ``sim_server``, ``rockly sim PROFILE --ros2``)."""
-    return Ros2SimulatorNode(profile, Ros2Settings.from_connection(connection), speed, tablet)
+    """``profile``'s simulator on ROS 2 with ``connection``'s domain id, discovery range, peers and
+    the ROS 2 distribution it plays (the registry's ``sim_server``, ``rockly sim PROFILE --ros2``)."""
+    return Ros2SimulatorNode(profile, Ros2Settings.from_connection(connection), speed, tablet,
+                             declared_distribution(connection))

@@ -11,13 +11,13 @@ from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.ros2.client import Ros2Helper
 from rockly_desktop.robot.ros2.environment import PROJECT_ROOT
 from rockly_desktop.robot.ros2.link import Ros2Robot
-from rockly_desktop.robot.ros2.sim_bridge import Ros2SimulatorNode
+from rockly_desktop.robot.ros2.sim_bridge import Ros2SimulatorNode, serve_simulator
 
 ROS2_PYTHON = PROJECT_ROOT / ".venv-ros2" / "bin" / "python"
 
 DRIVER = r'''
 import json, sys, threading, time, rclpy
-from geometry_msgs.msg import Twist
+from geometry_msgs.msg import Twist, TwistStamped
 from nav_msgs.msg import Odometry
 from rclpy.qos import qos_profile_sensor_data
 from sensor_msgs.msg import LaserScan
@@ -27,18 +27,19 @@ seen = {"odom": [], "scan": 0}
 node.create_subscription(Odometry, "/odom", lambda m: seen["odom"].append(m.pose.pose.position.x), 10)
 node.create_subscription(LaserScan, "/scan", lambda m: seen.__setitem__("scan", seen["scan"] + 1),
                          qos_profile_sensor_data)
-drive = node.create_publisher(Twist, "/cmd_vel", 10)
+stamped = sys.argv[1:] == ["stamped"]  # a Jazzy TurtleBot's /cmd_vel
+drive = node.create_publisher(TwistStamped if stamped else Twist, "/cmd_vel", 10)
 threading.Thread(target=rclpy.spin, args=(node,), daemon=True).start()
 deadline = time.monotonic() + 30
 while not (seen["odom"] and seen["scan"] and drive.get_subscription_count()) and time.monotonic() < deadline:
     time.sleep(0.01)
 start = seen["odom"][-1] if seen["odom"] else None
-message = Twist()
-message.linear.x = 0.2
+message = TwistStamped() if stamped else Twist()
+(message.twist if stamped else message).linear.x = 0.2
 while time.monotonic() < deadline and seen["odom"] and seen["odom"][-1] < start + 0.05:
     drive.publish(message)
     time.sleep(0.05)
-drive.publish(Twist())
+drive.publish(TwistStamped() if stamped else Twist())
 print(json.dumps({"start": start, "end": seen["odom"][-1] if seen["odom"] else None, "scans": seen["scan"]}))
 '''
 
@@ -60,6 +61,21 @@ def test_a_plain_rclpy_node_drives_the_simulated_turtlebot(simulated_turtlebot, 
     assert ("/sensor_state", "turtlebot3_msgs/SensorState") in [
         (name, type_name) for name, type_name, _why in simulated_turtlebot.left_out]
     assert "domain" in simulated_turtlebot.where
+
+
+def test_a_simulator_playing_jazzy_is_driven_with_twist_stamped(turtlebot, ros2_settings):
+    """``rockly sim turtlebot --ros2 --ros-distro jazzy``: /cmd_vel is a TwistStamped topic, as on a Jazzy TurtleBot."""
+    Ros2Helper.close_current()
+    node = serve_simulator(turtlebot, {"domain_id": str(ros2_settings.domain_id), "discovery": "localhost",
+                                       "ros_distribution": "jazzy"}, speed=5.0)
+    try:
+        assert node.where.startswith("ROS 2 Jazzy, domain")
+        driven = subprocess.run([str(ROS2_PYTHON), "-c", DRIVER, "stamped"], env=ros2_settings.environment(),
+                                capture_output=True, text=True, timeout=60)
+        result = json.loads(driven.stdout.strip().splitlines()[-1])
+        assert result["end"] >= result["start"] + 0.05
+    finally:
+        node.shutdown()
 
 
 class _CountingSimulator:
