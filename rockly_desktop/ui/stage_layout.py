@@ -32,7 +32,7 @@ class BottomTabSizes(QObject):
         window.installEventFilter(self)
 
     def eventFilter(self, watched, event):
-        """Once the window has laid its docks out anew (a layout restored, a dock closed), see which
+        """Once the window has laid its docks out anew (a layout restored, say), see which
         bottom tab is on screen: Qt changes tabs that way without telling."""
         if watched is self._window and event.type() == QEvent.Type.LayoutRequest:
             QTimer.singleShot(0, self, self._see_current)
