@@ -16,10 +16,6 @@ def keep_side_docks_full_height(window):
     window.setCorner(Qt.Corner.BottomRightCorner, Qt.DockWidgetArea.RightDockWidgetArea)
 
 
-GIVE_HEIGHT_TRIES = 10
-GIVE_HEIGHT_RETRY_MS = 20
-
-
 class BottomTabSizes(QObject):
     """Each tab of the bottom dock area keeps its own height: switching tabs gives the shown tab the
     height it had when last shown. A ``roomy`` tab (a message tree, a plot) shown for the first time
@@ -28,25 +24,32 @@ class BottomTabSizes(QObject):
     def __init__(self, window, docks, roomy=()):
         super().__init__(window)
         self._window = window
+        self._docks = tuple(docks)
         self._roomy = set(roomy)
         self._heights = {}
-        self._shown = set()  # a tab's height counts once it was shown (tabifying hides tabs never seen)
-        for dock in docks:
-            dock.visibilityChanged.connect(lambda visible, dock=dock: self._on_visibility(dock, visible))
+        self._current = None  # the bottom tab on screen, as last seen
+        window.tabifiedDockWidgetActivated.connect(self._switched)
+        window.installEventFilter(self)
 
-    def _on_visibility(self, dock, visible: bool):
-        if not visible:
-            if dock in self._shown and dock.height() > 0 and not self._window.isMinimized():
-                self._heights[dock] = dock.height()
-            return
-        QTimer.singleShot(0, self, lambda: self._give_height(dock))  # after the tab switch has been laid out
+    def eventFilter(self, watched, event):
+        """Once the window has laid its docks out anew (a layout restored, say), see which
+        bottom tab is on screen: Qt changes tabs that way without telling."""
+        if watched is self._window and event.type() == QEvent.Type.LayoutRequest:
+            QTimer.singleShot(0, self, self._see_current)
+        return False
 
-    def _give_height(self, dock, tries: int = GIVE_HEIGHT_TRIES):
-        if not dock.isVisible():  # the switch may not be laid out yet: look again a little later
-            if tries > 0:
-                QTimer.singleShot(GIVE_HEIGHT_RETRY_MS, self, lambda: self._give_height(dock, tries - 1))
+    def _see_current(self):
+        # Qt keeps the tabs not shown at their size, moved off screen.
+        self._current = next((dock for dock in self._docks if dock.isVisible() and dock.y() >= 0), self._current)
+
+    def _switched(self, dock):
+        """A tab was raised (by the person or in code); the tab left still has its size, off screen."""
+        left = self._current
+        if dock not in self._docks or dock is left:
             return
-        self._shown.add(dock)
+        if left is not None and left.height() > 0 and not self._window.isMinimized():
+            self._heights[left] = left.height()
+        self._current = dock
         wanted = self._heights.get(dock)
         if wanted is None and dock in self._roomy:
             wanted = max(dock.height(), self._window.height() // 3)
@@ -57,7 +60,7 @@ class BottomTabSizes(QObject):
     def _correct(self, dock, wanted: int):
         """The size resizeDocks gives tabbed docks includes their tab bar: add what is missing."""
         missing = wanted - dock.height()
-        if dock.isVisible() and missing:
+        if dock is self._current and missing:
             self._window.resizeDocks([dock], [wanted + missing], Qt.Orientation.Vertical)
 
 

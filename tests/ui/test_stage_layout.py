@@ -72,18 +72,45 @@ def test_the_stage_is_remembered_across_windows(qtbot, driver):
         again.close_all()
 
 
-def test_opening_the_plot_or_the_monitor_leaves_the_simulator_its_size(qtbot, window):
+def near(height: int, wanted: int) -> bool:
+    return abs(height - wanted) <= 3
+
+
+def test_switching_bottom_tabs_keeps_the_simulator_and_each_tab_its_size(qtbot, window):
     laid_out(qtbot, window, 1600, 1000)
-    qtbot.waitUntil(lambda: window.console.height() < 1000 // 3, timeout=3000)   # the console is a strip
-    simulator = window.simulator_dock.size()
+    qtbot.waitUntil(lambda: window.console.height() < 1000 // 4, timeout=3000)   # the console is a strip
+    simulator, strip = window.simulator_dock.size(), window.console.height()
     window.plot_dock.raise_()
     qtbot.waitUntil(lambda: window.plot_dock.height() >= 1000 // 4, timeout=3000)   # the plot gets room
     assert window.simulator_dock.size() == simulator                      # beside the bottom tabs, untouched
     window.monitor_dock.raise_()
     qtbot.waitUntil(lambda: window.monitor_dock.height() >= 1000 // 4, timeout=3000)
     window.console.raise_()
-    qtbot.waitUntil(window.console.isVisible, timeout=3000)
+    qtbot.waitUntil(lambda: near(window.console.height(), strip), timeout=3000)   # its own strip again
     assert window.simulator_dock.size() == simulator
+
+
+def test_a_quick_round_of_bottom_tabs_brings_the_console_strip_back(qtbot, window):
+    laid_out(qtbot, window, 1600, 1000)
+    qtbot.waitUntil(lambda: window.console.height() < 1000 // 4, timeout=3000)
+    simulator, strip = window.simulator_dock.size(), window.console.height()
+    for dock in (window.plot_dock, window.monitor_dock, window.console):    # raised before any is laid out
+        dock.raise_()
+    qtbot.waitUntil(lambda: near(window.console.height(), strip), timeout=3000)
+    assert window.simulator_dock.size() == simulator
+
+
+def test_a_bottom_tab_the_person_resized_gets_that_height_back(qtbot, window):
+    laid_out(qtbot, window, 1600, 1000)
+    qtbot.waitUntil(lambda: window.console.height() < 1000 // 4, timeout=3000)
+    strip = window.console.height()
+    window.resizeDocks([window.console], [260], Qt.Orientation.Vertical)   # the person drags it taller
+    qtbot.waitUntil(lambda: window.console.height() > strip + 30, timeout=3000)
+    taller = window.console.height()
+    window.plot_dock.raise_()
+    qtbot.waitUntil(lambda: window.plot_dock.height() >= 1000 // 4, timeout=3000)
+    window.console.raise_()
+    qtbot.waitUntil(lambda: near(window.console.height(), taller), timeout=3000)
 
 
 def test_the_width_the_person_gives_the_simulator_on_stage_is_remembered(qtbot, driver):
