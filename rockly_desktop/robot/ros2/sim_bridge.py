@@ -127,7 +127,7 @@ class Ros2SimulatorNode:
     """``profile``'s simulator served on ROS 2 through this process's helper; ``shutdown()`` ends it.
 
     ``tablet`` is the simulator's tablet port; ``ros_distribution`` the ROS 2 distribution it plays
-    (its topics as a robot of that one has them: a Jazzy TurtleBot's TwistStamped ``/cmd_vel``; None:
+    (its topics as a robot of that one has them: a Jazzy robot's TwistStamped ``/cmd_vel``; None:
     ROS 2's usual types). Raises Ros2Unavailable when ROS 2 is not set up.
     """
 
