@@ -77,7 +77,7 @@ os._exit(0)
 '''
 
 # The same loops with plain rclpy (its executor spinning in a thread, as the helper's does), on
-# request: a line "topic|service|action N" or "rate SECONDS" answers one JSON line.
+# request: a line "topic|service|action|rate N" answers one JSON line.
 PLAIN_CLIENT = r'''
 import json, os, sys, threading, time, rclpy
 from rclpy.action import ActionClient
@@ -101,7 +101,7 @@ node.create_subscription(Float64, "/pong", lambda m: arrivals.append(time.perf_c
 node.create_subscription(Float64, "/twist_count", lambda m: counts.append(m.data), 10)
 ping = node.create_publisher(Float64, "/ping", 1000)
 ask = node.create_publisher(Float64, "/count_please", 10)
-twist = node.create_publisher(Twist, "/cmd_vel", 100000)
+twist = node.create_publisher(Twist, "/cmd_vel", 10)  # the QoS Rockly publishes commands with: reliable, depth 10
 client = node.create_client(Trigger, "/bench_trigger")
 actions = ActionClient(node, Fibonacci, "/bench_fib")
 wait_for(lambda: ping.get_subscription_count() > 0 and node.count_publishers("/pong") > 0
@@ -158,9 +158,9 @@ def settled_total():
 
 def rate(n):
     start_count = settled_total()
-    message = Twist()
     started = time.perf_counter()
-    for _ in range(n):
+    for _ in range(n):  # a new message each time, as a program's block makes one from its values
+        message = Twist()
         message.linear.x = 0.1
         twist.publish(message)
     elapsed = time.perf_counter() - started

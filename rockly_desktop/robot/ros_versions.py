@@ -14,6 +14,7 @@ Twist dict) is sent as the type the robot wants (a TwistStamped with a header st
 profile commands, the safe stop and a teacher's limits are written once.
 """
 import time
+import weakref
 
 from rockly_desktop.core.ros_distributions import DISTRIBUTIONS
 from rockly_desktop.robot.interface import RobotBackend
@@ -101,23 +102,36 @@ def stamped_part(message, msg_type: str):
     return message.get(field) if field and isinstance(message, dict) else message
 
 
+class LearntTypes:
+    """What a robot's graph said about the types it wants, shared by the backends of one link."""
+
+    def __init__(self):
+        self.resolved = {}   # ROS name -> (type, whether that is final)
+        self.checked = {}    # ROS name -> when the graph was last asked
+
+
 class VersionedBackend(WrappedBackend):
     """A RobotBackend sending each message as the type the robot wants (see the module's docstring).
 
     ``versions`` is the profile's ``ros_versions`` and ``ros_interface`` its interface; the
     version is the inner backend's ``ros_version`` ('ros1', 'ros2'; the simulator 'sim'), its
     graph the inner backend's ``topic_types(name)`` where it has one; ``distribution`` the
-    robot's declared ROS 2 distribution (None: not declared).
+    robot's declared ROS 2 distribution (None: not declared). ``learnt`` keeps what the graph
+    said (a link's, shared by its runs and its safe stop); ``recheck`` False uses a type learnt
+    before as it is, asking the graph only for a name never asked about (the safe stop: its zero
+    velocity must not wait for a graph query).
     """
 
-    def __init__(self, inner: RobotBackend, versions: dict, ros_interface: dict, distribution: str = None):
+    def __init__(self, inner: RobotBackend, versions: dict, ros_interface: dict, distribution: str = None,
+                 learnt: LearntTypes = None, recheck: bool = True):
         super().__init__(inner)
         self._variants = {ros_name(name): dict(entry) for name, entry in (versions or {}).items()}
         self._base = base_types(ros_interface or {})
         self.ros_version = getattr(inner, "ros_version", "sim")
         self.distribution = distribution
-        self._resolved = {}   # ROS name -> (type, whether that is final)
-        self._checked = {}    # ROS name -> when the graph was last asked
+        learnt = learnt or LearntTypes()
+        self._resolved, self._checked = learnt.resolved, learnt.checked
+        self._recheck = recheck
 
     def type_for(self, name: str, msg_type: str = None) -> str:
         """The type the robot wants on ``name`` (``msg_type``, or the interface's, where nothing differs)."""
@@ -125,7 +139,8 @@ class VersionedBackend(WrappedBackend):
         if key not in self._variants:
             return msg_type or self._base.get(key)
         known = self._resolved.get(key)
-        if known is not None and (known[1] or time.monotonic() - self._checked.get(key, 0) < RECHECK_SECONDS):
+        if known is not None and (known[1] or not self._recheck
+                                  or time.monotonic() - self._checked.get(key, 0) < RECHECK_SECONDS):
             return known[0]
         graph = getattr(self._inner, "topic_types", None)
         listed = graph(key) if graph is not None else None
@@ -159,16 +174,24 @@ class VersionedBackend(WrappedBackend):
         return self._inner.send_goal(action, self.type_for(action, action_type), goal, feedback)
 
 
-def link_backend(link, interrupt):
+_LEARNT = weakref.WeakKeyDictionary()  # link -> LearntTypes
+
+
+def link_backend(link, interrupt, stopping: bool = False):
     """``link.backend(interrupt)`` sending what its profile declares per ROS version as its robot wants it
-    (``link.ros_distribution``, where a link has one, is the robot's declared ROS 2 distribution)."""
-    return versioned_backend(link.profile, link.backend(interrupt), getattr(link, "ros_distribution", None))
+    (``link.ros_distribution``, where a link has one, is the robot's declared ROS 2 distribution). The
+    link's backends share what its graph said; ``stopping`` (the safe stop) uses that as it is."""
+    learnt = _LEARNT.setdefault(link, LearntTypes())
+    return versioned_backend(link.profile, link.backend(interrupt), getattr(link, "ros_distribution", None),
+                             learnt, recheck=not stopping)
 
 
-def versioned_backend(profile, backend, distribution: str = None):
-    """``backend`` sending what ``profile`` declares per ROS version as the robot wants it; ``backend``
-    itself when the profile declares nothing per version (or it is versioned already)."""
+def versioned_backend(profile, backend, distribution: str = None, learnt: LearntTypes = None,
+                      recheck: bool = True):
+    """``backend`` sending what ``profile`` declares per ROS version as the robot wants it (see
+    VersionedBackend); ``backend`` itself when the profile declares nothing per version (or it is
+    versioned already)."""
     versions = getattr(profile, "ros_versions", None)  # a stand-in profile (tests, tools) may have none
     if not versions or isinstance(backend, VersionedBackend):
         return backend
-    return VersionedBackend(backend, versions, profile.ros_interface, distribution)
+    return VersionedBackend(backend, versions, profile.ros_interface, distribution, learnt, recheck)

@@ -73,7 +73,7 @@ class SimulatedRobot:
 
     def safe_stop(self) -> list:
         """Do the profile's safe stop now; returns what failed."""
-        return run_safe_stop(self.profile.safe_stop, link_backend(self, Interrupt()))
+        return run_safe_stop(self.profile.safe_stop, link_backend(self, Interrupt(), stopping=True))
 
     def recording_encoder(self):
         """The simulator's ROS-shaped messages as ROS 1 writes them, where genpy is installed (else None:

@@ -123,7 +123,7 @@ class RosRobot:
 
     def safe_stop(self) -> list:
         """Do the profile's safe stop now; returns what failed."""
-        return run_safe_stop(self.profile.safe_stop, link_backend(self, Interrupt()))
+        return run_safe_stop(self.profile.safe_stop, link_backend(self, Interrupt(), stopping=True))
 
     def shutdown(self):
         """Stop the robot safely and stop following the graph; the node stays up."""

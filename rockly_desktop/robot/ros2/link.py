@@ -152,7 +152,7 @@ class Ros2Robot:
 
     def safe_stop(self) -> list:
         """Do the profile's safe stop now; returns what failed."""
-        return run_safe_stop(self.profile.safe_stop, link_backend(self, Interrupt()))
+        return run_safe_stop(self.profile.safe_stop, link_backend(self, Interrupt(), stopping=True))
 
     def shutdown(self):
         """Stop the robot safely, stop following the graph and end the helper (its last act is the

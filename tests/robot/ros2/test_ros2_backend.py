@@ -6,8 +6,10 @@ import pytest
 from waiting import eventually
 
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError, RobotTimeout
+from rockly_desktop.robot import ros_versions
 from rockly_desktop.robot.interface import GoalStatus
 from rockly_desktop.robot.interrupt import Interrupt
+from rockly_desktop.robot.ros_versions import link_backend
 
 
 @pytest.fixture
@@ -109,8 +111,26 @@ def test_a_stop_ends_a_wait_for_a_message_at_once(ros2_robot):
 
 def test_the_safe_stop_publishes_a_zero_twist(ros2_robot, test_robot):
     ros2_robot.backend(Interrupt()).publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.1}})
-    eventually(lambda: test_robot.received("/cmd_vel")[-1]["message"]["linear"]["x"] == 0.1)
+    eventually(lambda: any(line["message"]["linear"]["x"] == 0.1 for line in test_robot.received("/cmd_vel")))
     assert ros2_robot.safe_stop() == []
+    eventually(lambda: test_robot.received("/cmd_vel")[-1]["message"]["linear"]["x"] == 0.0)
+
+
+def test_the_safe_stop_does_not_wait_for_a_graph_query_once_a_run_learnt_the_type(ros2_robot, test_robot,
+                                                                                 monkeypatch):
+    """A Twist robot's type is looked at again every RECHECK_SECONDS by runs (it may be discovered late);
+    the safe stop sends the type learnt, so its zero velocity never waits for the graph."""
+    monkeypatch.setattr(ros_versions, "RECHECK_SECONDS", 0.0)
+    link_backend(ros2_robot, Interrupt()).publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.12}})
+    eventually(lambda: any(line["message"]["linear"]["x"] == 0.12 for line in test_robot.received("/cmd_vel")))
+    asked = []
+    call = ros2_robot.helper.call
+    ros2_robot.helper.call = lambda op, *args, **options: asked.append(op) or call(op, *args, **options)
+    try:
+        assert ros2_robot.safe_stop() == []
+    finally:
+        del ros2_robot.helper.call
+    assert "graph" not in asked
     eventually(lambda: test_robot.received("/cmd_vel")[-1]["message"]["linear"]["x"] == 0.0)
 
 

@@ -16,6 +16,7 @@ from waiting import eventually
 
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.run_setup import make_runner
+from rockly_desktop.robot import ros_versions
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.ros2.client import Ros2Helper
 from rockly_desktop.robot.ros2.environment import PROJECT_ROOT, Ros2Settings
@@ -86,6 +87,23 @@ def test_the_turtlebots_commands_and_safe_stop_reach_a_jazzy_robot_as_twist_stam
     eventually(lambda: len(heard) > count)
     assert link.safe_stop() == []
     eventually(lambda: heard[-1]["message"]["linear"]["x"] == 0.0 and len(heard) > count + 1)
+
+
+def test_the_safe_stop_sends_the_type_a_run_learnt_without_asking_the_graph_again(link, heard, monkeypatch):
+    """The zero velocity must not wait for a graph query (one on every stop: milliseconds, more under load)."""
+    monkeypatch.setattr(ros_versions, "RECHECK_SECONDS", 0.0)  # a run's backend would ask again at once
+    eventually(lambda: graph_lists_twist_stamped(link), timeout=20)
+    link_backend(link, Interrupt()).publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.2}})
+    eventually(lambda: heard and heard[-1]["message"]["linear"]["x"] == pytest.approx(0.2), timeout=30)
+    asked = []
+    call = link.helper.call
+    link.helper.call = lambda op, *args, **options: asked.append(op) or call(op, *args, **options)
+    try:
+        assert link.safe_stop() == []
+    finally:
+        del link.helper.call
+    assert "graph" not in asked
+    eventually(lambda: heard[-1]["message"]["linear"]["x"] == 0.0 and heard[-1]["type"] == "TwistStamped")
 
 
 def test_the_helpers_last_act_stops_a_jazzy_robot_in_the_type_it_was_sent(link, heard):
