@@ -26,6 +26,7 @@ class BadValue(TextError, ValueError):
 _FLOATS = {"float", "double", "long double"}
 
 
+@functools.cache  # every publish asks (a name found once stays found; a missing one is looked for again)
 def interface_class(name: str, kind: str):
     """The class of ``name`` (``pkg/Type`` or ``pkg/KIND/Type``); kind is msg, srv or action.
 
@@ -69,8 +70,6 @@ def _class_of(namespaced: NamespacedType):
 
 
 def _value(slot, value, path):
-    if isinstance(slot, NamespacedType):
-        return to_message(_class_of(slot), value, path)
     if isinstance(slot, AbstractNestedType):
         item = slot.value_type
         if isinstance(item, NamespacedType):
@@ -85,9 +84,15 @@ def _value(slot, value, path):
 
 def to_message(message_class, data, path=""):
     """A ``message_class`` instance with the fields of the dict ``data`` (ValueError names a bad field)."""
-    message = message_class()
+    return _fill(message_class(), data, path)
+
+
+def _fill(message, data, path):
+    """``message`` with the fields of ``data`` set; a nested message is filled where it is (cheaper
+    than a new one, which its setter would check again)."""
     if not data:
         return message
+    message_class = type(message)
     if not isinstance(data, dict):
         if path:
             raise BadValue("ros2_field_not_fields", field=path, value=repr(data))
@@ -101,8 +106,12 @@ def to_message(message_class, data, path=""):
         where = f"{path}.{name}" if path else name
         if name not in slots:
             raise BadValue("ros2_no_field", type=message_class.__name__, field=where)
+        slot = slots[name]
+        if isinstance(slot, NamespacedType):
+            _fill(getattr(message, name), value, where)
+            continue
         try:
-            setattr(message, name, _value(slots[name], value, where))
+            setattr(message, name, _value(slot, value, where))
         except BadValue:
             raise
         except (AssertionError, TypeError, ValueError) as error:
