@@ -8,6 +8,7 @@ Widgets read the store, never rospy.
 import logging
 import threading
 
+from rockly_desktop.robot.followed_topics import FollowedTopics
 from rockly_desktop.robot.ros1.connection import ask_master
 
 log = logging.getLogger(__name__)
@@ -20,9 +21,7 @@ class RosStateFeed:
 
     def __init__(self, ros_graph, store):
         self._ros_graph = ros_graph
-        self._store = store
-        self._subscribed = set()
-        self._unknown = set()
+        self._followed = FollowedTopics(store, lambda topic, msg_type: ros_graph.topic(topic, msg_type).raw_callbacks)
         self._topics = []
         self._services = set()
         self._stopped = threading.Event()
@@ -53,19 +52,7 @@ class RosStateFeed:
                     self._topics = sorted((topic, msg_type, len(publishers.get(topic, [])))
                                           for topic, msg_type in types.items())
                     for topic, msg_type in types.items():
-                        self._follow(topic, msg_type)
+                        self._followed.follow(topic, msg_type)
                 except Exception as error:
                     log.debug("reading the ROS graph failed: %s", error)
             self._stopped.wait(POLL_SECONDS)
-
-    def _follow(self, topic, msg_type):
-        if topic in self._subscribed or (topic, msg_type) in self._unknown:
-            return
-        try:
-            entry = self._ros_graph.topic(topic, msg_type)
-        except Exception as error:
-            log.info("cannot follow %s (%s): %s", topic, msg_type, error)
-            self._unknown.add((topic, msg_type))
-            return
-        entry.raw_callbacks.append(lambda message: self._store.record(topic, msg_type, message))
-        self._subscribed.add(topic)

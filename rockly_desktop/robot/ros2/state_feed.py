@@ -7,6 +7,8 @@ the helper's messages are recorded as they come. Widgets read the store, never t
 import logging
 import threading
 
+from rockly_desktop.robot.followed_topics import FollowedTopics
+
 log = logging.getLogger(__name__)
 
 POLL_SECONDS = 1.0
@@ -19,9 +21,7 @@ class Ros2StateFeed:
 
     def __init__(self, ros_graph, store):
         self._ros_graph = ros_graph
-        self._store = store
-        self._subscribed = set()
-        self._unknown = set()
+        self._followed = FollowedTopics(store, lambda topic, msg_type: ros_graph.topic(topic, msg_type).callbacks)
         self._graph = {"topics": [], "services": [], "actions": []}
         self._stopped = threading.Event()
         self._thread = threading.Thread(target=self._poll, name="rockly-ros2-graph", daemon=True)
@@ -51,22 +51,10 @@ class Ros2StateFeed:
                 self._graph = helper.call("graph", timeout=5.0)
                 for topic, msg_type, count in self.graph_topics():
                     if count:
-                        self._follow(topic, msg_type)
+                        self._followed.follow(topic, msg_type)
             except Exception as error:
                 log.debug("reading the ROS 2 graph failed: %s", error)
             self._stopped.wait(POLL_SECONDS)
-
-    def _follow(self, topic, msg_type):
-        if topic in self._subscribed or (topic, msg_type) in self._unknown:
-            return
-        try:
-            entry = self._ros_graph.topic(topic, msg_type)
-        except Exception as error:
-            log.info("cannot follow %s (%s): %s", topic, msg_type, error)
-            self._unknown.add((topic, msg_type))
-            return
-        entry.callbacks.append(lambda message: self._store.record(topic, msg_type, message))
-        self._subscribed.add(topic)
 
 
 def short_type(msg_type: str) -> str:
