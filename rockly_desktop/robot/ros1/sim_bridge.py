@@ -18,6 +18,7 @@ from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.robot.interface import GoalStatus
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.ros1.message_values import from_message, to_message
+from rockly_desktop.robot.served_simulator import ServedSimulator
 
 log = logging.getLogger(__name__)
 
@@ -109,7 +110,7 @@ class SimRosBridge:
         return server
 
 
-class SimulatorNode:
+class SimulatorNode(ServedSimulator):
     """``profile``'s simulator served on ROS by this process's node; ``shutdown()`` ends it all.
 
     ``tablet`` is the simulator's tablet port (``ask``/``notify``), called from ROS's
@@ -125,26 +126,14 @@ class SimulatorNode:
         self.simulator = profile.create("simulator", self.world, tablet=tablet, speed=speed)
         self._bridge = SimRosBridge(self.world, profile.ros_interface, types)
         self.simulator.start()
-        self._ended = False
 
     @property
     def where(self) -> str:
         """The ROS master the node is registered with (the window names it)."""
         return self.connection.master_uri
 
-    def shutdown(self):
-        """End waiting questions and goals, stop the simulator (its safe stop first), and end the
-        node: its publishers, subscribers and services are taken off the master. Once only."""
-        if self._ended:
-            return
-        self._ended = True
-        self._bridge.close()
-        if hasattr(self.simulator, "safe_stop"):
-            try:
-                self.simulator.safe_stop()
-            except Exception:
-                log.exception("the simulator's safe stop failed")
-        self.simulator.shutdown()
+    def _leave(self):
+        """End the node: its publishers, subscribers and services are taken off the master."""
         self.connection.shutdown("rockly sim ended")
 
 

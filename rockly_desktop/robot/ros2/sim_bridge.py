@@ -17,6 +17,7 @@ from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.ros2.client import Ros2Helper, words
 from rockly_desktop.robot.ros2.environment import Ros2Settings, declared_distribution, ros2_name
 from rockly_desktop.robot.ros_versions import base_types, converted, declared_type, ros_name
+from rockly_desktop.robot.served_simulator import ServedSimulator
 
 log = logging.getLogger(__name__)
 
@@ -123,7 +124,7 @@ class Ros2SimBridge:
         self._interrupt.request_stop()
 
 
-class Ros2SimulatorNode:
+class Ros2SimulatorNode(ServedSimulator):
     """``profile``'s simulator served on ROS 2 through this process's helper; ``shutdown()`` ends it.
 
     ``tablet`` is the simulator's tablet port; ``ros_distribution`` the ROS 2 distribution it plays
@@ -142,7 +143,6 @@ class Ros2SimulatorNode:
         self._bridge = Ros2SimBridge(self.world, profile.ros_interface, self.helper,
                                      played_types(profile, ros_distribution))
         self.simulator.start()
-        self._ended = False
 
     @property
     def where(self) -> str:
@@ -154,18 +154,8 @@ class Ros2SimulatorNode:
         """(name, type, why) of the robot's endpoints ROS 2's environment cannot carry."""
         return list(self._bridge.left_out)
 
-    def shutdown(self):
-        """End waiting questions and goals, stop the simulator (its safe stop first) and the helper. Once only."""
-        if self._ended:
-            return
-        self._ended = True
-        self._bridge.close()
-        if hasattr(self.simulator, "safe_stop"):
-            try:
-                self.simulator.safe_stop()
-            except Exception:
-                log.exception("the simulator's safe stop failed")
-        self.simulator.shutdown()
+    def _leave(self):
+        """End the helper (its servers and publishers with it)."""
         Ros2Helper.close_current()
 
 
