@@ -1,6 +1,7 @@
 """Fixtures for the ROS 2 tests (a plugin conftest.py loads, as ``ros_fixtures`` for ROS 1): a plain
 rclpy test robot in its own process, on a domain of this test run's own, localhost only, and
 Rockly's ROS 2 link to it."""
+import contextlib
 import json
 import os
 import subprocess
@@ -17,6 +18,18 @@ ROS2_PYTHON = PROJECT_ROOT / ".venv-ros2" / "bin" / "python"
 TEST_ROBOT_PYTHON = os.environ.get("ROCKLY_TEST_ROBOT_PYTHON") or str(ROS2_PYTHON)
 TEST_NODE = Path(__file__).parent / "robot" / "ros2" / "ros2_test_node.py"
 DOMAIN_ID = 100 + os.getpid() % 100  # this run's own: parallel runs on one machine do not meet
+
+
+@contextlib.contextmanager
+def requests_to(helper):
+    """The names of the requests Rockly sends ``helper`` (``call``) while the block runs, as a list."""
+    asked = []
+    call = helper.call
+    helper.call = lambda op, *args, **options: asked.append(op) or call(op, *args, **options)
+    try:
+        yield asked
+    finally:
+        del helper.call
 
 
 @pytest.fixture(scope="session")

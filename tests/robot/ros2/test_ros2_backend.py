@@ -3,6 +3,7 @@ import math
 import threading
 
 import pytest
+from ros2_fixtures import requests_to
 from waiting import eventually
 
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError, RobotTimeout
@@ -123,13 +124,8 @@ def test_the_safe_stop_does_not_wait_for_a_graph_query_once_a_run_learnt_the_typ
     monkeypatch.setattr(ros_versions, "RECHECK_SECONDS", 0.0)
     link_backend(ros2_robot, Interrupt()).publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.12}})
     eventually(lambda: any(line["message"]["linear"]["x"] == 0.12 for line in test_robot.received("/cmd_vel")))
-    asked = []
-    call = ros2_robot.helper.call
-    ros2_robot.helper.call = lambda op, *args, **options: asked.append(op) or call(op, *args, **options)
-    try:
+    with requests_to(ros2_robot.helper) as asked:
         assert ros2_robot.safe_stop() == []
-    finally:
-        del ros2_robot.helper.call
     assert "graph" not in asked
     eventually(lambda: test_robot.received("/cmd_vel")[-1]["message"]["linear"]["x"] == 0.0)
 

@@ -12,6 +12,7 @@ import threading
 from pathlib import Path
 
 import pytest
+from ros2_fixtures import requests_to
 from waiting import eventually
 
 from rockly_desktop.executor.control import RunControl
@@ -95,13 +96,8 @@ def test_the_safe_stop_sends_the_type_a_run_learnt_without_asking_the_graph_agai
     eventually(lambda: graph_lists_twist_stamped(link), timeout=20)
     link_backend(link, Interrupt()).publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.2}})
     eventually(lambda: heard and heard[-1]["message"]["linear"]["x"] == pytest.approx(0.2), timeout=30)
-    asked = []
-    call = link.helper.call
-    link.helper.call = lambda op, *args, **options: asked.append(op) or call(op, *args, **options)
-    try:
+    with requests_to(link.helper) as asked:
         assert link.safe_stop() == []
-    finally:
-        del link.helper.call
     assert "graph" not in asked
     eventually(lambda: heard[-1]["message"]["linear"]["x"] == 0.0 and heard[-1]["type"] == "TwistStamped")
 
