@@ -9,20 +9,13 @@
 
     python benchmarks/executor.py
 """
-import os
 import statistics
-import sys
 import threading
 import time
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))
-sys.path.insert(0, str(REPO / "tests"))
-os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
-os.environ.setdefault("QTWEBENGINE_DISABLE_SANDBOX", "1")
-
-from program_builder import block, number, stack, workspace  # noqa: E402
+import _paths  # noqa: F401 - its set-up: Rockly and the tests' helpers importable, Qt offscreen
+from program_builder import block, number, stack, workspace
 
 ITERATIONS = 100_000
 STOP_TRIALS = 15

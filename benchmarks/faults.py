@@ -9,7 +9,6 @@
 
     python benchmarks/faults.py
 """
-import os
 import statistics
 import subprocess
 import sys
@@ -17,15 +16,11 @@ import tempfile
 import time
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))
-sys.path.insert(0, str(REPO / "tests"))
-os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
-os.environ.setdefault("QTWEBENGINE_DISABLE_SANDBOX", "1")
+from _paths import REPO
 
 sys.path.insert(0, str(REPO / "benchmarks"))
-from executor import event_loop_delays  # noqa: E402 - the executor benchmark's event-loop probe
-from program_builder import block, number, rockly_document, stack, text, workspace  # noqa: E402
+from executor import event_loop_delays
+from program_builder import block, number, rockly_document, stack, text, workspace
 
 STOP_TRIALS = 5
 

@@ -14,19 +14,13 @@
 
     python benchmarks/recording.py
 """
-import os
 import statistics
-import sys
 import tempfile
 import time
 from numbers import Number
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))
-sys.path.insert(0, str(REPO / "tests"))
-os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
-os.environ.setdefault("QTWEBENGINE_DISABLE_SANDBOX", "1")
+import _paths  # noqa: F401 - its set-up: Rockly and the tests' helpers importable, Qt offscreen
 
 ITERATIONS = 100_000
 MESSAGES = 100_000

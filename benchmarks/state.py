@@ -10,18 +10,12 @@ import argparse
 import os
 import statistics
 import subprocess
-import sys
 import tempfile
 import time
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))
-sys.path.insert(0, str(REPO / "tests"))
-os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
-os.environ.setdefault("QTWEBENGINE_DISABLE_SANDBOX", "1")
-
-from ros_helpers import RosMaster, ros_environment  # noqa: E402
+from _paths import REPO
+from ros_helpers import RosMaster, ros_environment
 
 PUBLISHER = r'''
 import math, sys, time, rospy
