@@ -38,6 +38,7 @@ PARAMETER_WAIT = 5.0  # a node's parameter service: a fresh helper's discovery (
 SERVER_SETTLE = 0.25
 PARAMETER_TRIES = 3  # reading or setting a parameter is safe to ask again when an answer was lost
 TOPIC_WAIT = 1.0  # a subscription without a type waits this long for the topic to be discovered
+REPLACE_WAIT = 1.0  # a publisher of a new type waits this long for the one it replaces to be gone
 _GOAL_STATUS = {4: "succeeded", 5: "preempted", 6: "aborted"}
 
 
@@ -154,10 +155,22 @@ class Helper:
                 self.node.destroy_publisher(entry[0])
                 entry = None
             if entry is None:
-                publisher = self.node.create_publisher(
-                    message_class, topic, qos.for_publisher(topic, self.qos_overrides))
-                entry = self._publishers[topic] = (publisher, message_class)
+                entry = self._publishers[topic] = (self._new_publisher(topic, message_class), message_class)
             return entry
+
+    def _new_publisher(self, topic, message_class):
+        """A publisher of ``message_class`` on ``topic``. One of another type destroyed just before may live
+        on while the spinning executor holds it (rclpy destroys a handle once it is not in use), and DDS
+        then refuses the new type: the executor is woken to let go of it, and the publisher made again."""
+        deadline = time.monotonic() + REPLACE_WAIT
+        while True:
+            try:
+                return self.node.create_publisher(message_class, topic, qos.for_publisher(topic, self.qos_overrides))
+            except RuntimeError:  # rclpy's RCLError: what rcl refuses
+                if time.monotonic() >= deadline:
+                    raise
+                self._executor.wake()
+                time.sleep(0.005)
 
     def op_publish_first(self, topic, type_name, message):
         """Make the publisher, wait until the subscribers the graph lists have matched it (``_match``), publish."""
@@ -210,9 +223,21 @@ class Helper:
             self.node.destroy_subscription(subscription)
 
     def op_graph(self):
-        """Topics (name, types, publisher count), services and action names of the ROS 2 graph."""
-        topics = [(name, types, self.node.count_publishers(name))
-                  for name, types in self.node.get_topic_names_and_types()]
+        """Topics (name, types, publisher count), services and action names of the ROS 2 graph.
+
+        A topic's publishers are the others' (not this node's own), and their types come first:
+        a state feed following the graph then never subscribes to what only Rockly publishes, in the
+        type Rockly happened to publish first (Fast DDS allows one type per topic in a participant,
+        so that subscription would refuse the publisher of the type a robot wants, a TwistStamped).
+        """
+        me = (self.node.get_name(), self.node.get_namespace())
+        topics = []
+        for name, types in self.node.get_topic_names_and_types():
+            others = [info for info in self.node.get_publishers_info_by_topic(name)
+                      if (info.node_name, info.node_namespace) != me]
+            published = list(dict.fromkeys(info.topic_type for info in others))
+            topics.append((name, published + [type_name for type_name in types if type_name not in published],
+                           len(others)))
         services = [name for name, _types in self.node.get_service_names_and_types()]
         actions = sorted({name[:-len("/_action/send_goal")] for name in services
                           if name.endswith("/_action/send_goal")})

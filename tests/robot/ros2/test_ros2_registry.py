@@ -67,19 +67,22 @@ def rockly_process(home, *args, **extra_env):
                             text=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
 
 
-def test_rockly_run_on_ros2_drives_rockly_sim_turtlebot_on_ros2(tmp_path, ros2_settings):
+@pytest.mark.parametrize("distribution", ["auto", "jazzy"])  # jazzy: a TwistStamped /cmd_vel on both sides
+def test_rockly_run_on_ros2_drives_rockly_sim_turtlebot_on_ros2(tmp_path, ros2_settings, distribution):
     program = tmp_path / "drive.rockly"
     program.write_text(rockly_document([stack(
         block("text_print", id="before", inputs={"TEXT": block("turtlebot_distance", {"direction": "ahead"})}),
         block("turtlebot_drive", {"direction": "forward"}, inputs={"distance": number(0.3)}),
         block("text_print", id="after", inputs={"TEXT": block("turtlebot_distance", {"direction": "ahead"})}),
     )], profile="turtlebot"))
-    domain = ros2_settings.domain_id + 1  # the simulated TurtleBot's own: the test robot also has /odom, /cmd_vel
+    # the simulated TurtleBot's own domain: the test robot also has /odom, /cmd_vel
+    domain = ros2_settings.domain_id + (1 if distribution == "auto" else 2)
     simulator = rockly_process(tmp_path, "sim", "turtlebot", "--ros2", "--no-window", "--domain", domain,
-                               "--discovery", "localhost", "--speed", "5")
+                               "--discovery", "localhost", "--speed", "5", "--ros-distro", distribution)
     try:
         assert "is up on ROS" in simulator.stdout.readline()
-        run = rockly_process(tmp_path, "run", program, "--backend", "ros2", "--domain", domain, "--language", "en")
+        run = rockly_process(tmp_path, "run", program, "--backend", "ros2", "--domain", domain, "--language", "en",
+                             "--ros-distro", distribution)
         out, err = run.communicate(timeout=180)
     finally:
         simulator.terminate()

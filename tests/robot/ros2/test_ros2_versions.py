@@ -102,6 +102,21 @@ def test_the_safe_stop_sends_the_type_a_run_learnt_without_asking_the_graph_agai
     eventually(lambda: heard[-1]["message"]["linear"]["x"] == 0.0 and heard[-1]["type"] == "TwistStamped")
 
 
+def test_a_jazzy_robot_is_driven_while_its_graph_is_followed_for_the_panels(link, heard, registry):
+    """The window follows the whole graph; Rockly's own Twist publisher (the safe stop's, made at once)
+    must not make it subscribe to /cmd_vel as Twist, which would refuse the TwistStamped publisher."""
+    feed = link.follow_graph()
+    eventually(lambda: "/cmd_vel" in {topic for topic, _type, _count in feed.graph_topics()}, timeout=20)
+    eventually(lambda: graph_lists_twist_stamped(link), timeout=20)
+    code = "ros.publish_message('/cmd_vel', 'geometry_msgs/Twist', {'linear': {'x': 0.07}})\n"
+    result = make_runner(registry.get("turtlebot"), link, {"code": code, "variables": {}}, RunControl(),
+                         lambda event: None).run()
+    assert result.outcome == "finished", result.message
+    eventually(lambda: any(line["message"]["linear"]["x"] == pytest.approx(0.07) for line in heard), timeout=30)
+    assert {line["type"] for line in heard} == {"TwistStamped"}
+    assert dict((topic, count) for topic, _type, count in feed.graph_topics())["/cmd_vel"] == 0  # only Rockly's
+
+
 def test_the_helpers_last_act_stops_a_jazzy_robot_in_the_type_it_was_sent(link, heard):
     eventually(lambda: graph_lists_twist_stamped(link), timeout=20)
     link_backend(link, Interrupt()).publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.2}})
