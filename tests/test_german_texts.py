@@ -25,7 +25,7 @@ ALLOWED = {
     "quaternion", "simulator", "simulatoransicht", "editor", "block", "blöcke", "pipe", "socket", "details",
     "app", "ball", "code", "computer", "element", "info", "navigation", "parameter", "person", "pose", "position",
     "problem", "sofa", "text", "variable", "version", "pins",
-    "min",  # minutes
+    "min", "ms",  # minutes, milliseconds
     "make", "setup",  # the set-up command, „make setup“, typed as it is
     "distribution", "distributionen", "jazzy", "twiststamped",  # ROS 2's own names
 }

@@ -5,30 +5,38 @@ robot streams (fresh, late or silent), each of its services and action servers.
 """
 from dataclasses import dataclass
 
+from rockly_desktop.core.app_texts import app_local_text
+
 GREEN, AMBER, RED = "green", "amber", "red"
 FRESH_SECONDS, LATE_SECONDS = 2.0, 10.0
 
 
 @dataclass(frozen=True)
 class HealthItem:
-    """One part of the robot's link: its name, level (green | amber | red) and a detail text."""
+    """One part of the robot's link: its name, level (green | amber | red) and a detail text (a
+    ``LocalText``, said in the window's language; ``str()`` is English, as the command line says it)."""
 
-    name: str
+    name: object
     level: str
-    detail: str
+    detail: object
 
 
-def topic_health(interface: dict, topics: list) -> list:
-    """Items for the topics the robot streams continuously, from the state store's TopicInfo list."""
+def topic_health(interface: dict, topics: list, unreadable: dict = None) -> list:
+    """Items for the topics the robot streams continuously, from the state store's TopicInfo list;
+    ``unreadable`` names the interface package each topic Rockly cannot read here lacks."""
     seen = {info.topic: info for info in topics}
+    unreadable = unreadable or {}
     items = []
     for topic in interface.get("streams", []):
         info = seen.get(topic)
-        if info is None:
-            items.append(HealthItem(topic, RED, "no message yet"))
-            continue
-        level = GREEN if info.age < FRESH_SECONDS else AMBER if info.age < LATE_SECONDS else RED
-        items.append(HealthItem(topic, level, f"{info.rate:.1f} Hz, last {info.age:.1f} s ago"))
+        if info is None and topic in unreadable:
+            items.append(HealthItem(topic, AMBER, app_local_text("health_missing_package", package=unreadable[topic])))
+        elif info is None:
+            items.append(HealthItem(topic, RED, app_local_text("health_no_message")))
+        else:
+            level = GREEN if info.age < FRESH_SECONDS else AMBER if info.age < LATE_SECONDS else RED
+            items.append(HealthItem(topic, level, app_local_text("health_topic_rate", rate=f"{info.rate:.1f}",
+                                                                 age=f"{info.age:.1f}")))
     return items
 
 
@@ -38,7 +46,8 @@ def server_health(interface: dict, available) -> list:
     for kind in ("services", "actions"):
         for name in interface.get(kind, {}):
             up = available(kind, name)
-            items.append(HealthItem(name, GREEN if up else RED, "available" if up else "not available"))
+            items.append(HealthItem(name, GREEN if up else RED,
+                                    app_local_text("health_available" if up else "health_not_available")))
     return items
 
 

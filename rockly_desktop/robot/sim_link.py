@@ -1,4 +1,5 @@
 """The built-in simulator as a robot link (``robot/link.py``): the profile's simulator in this process."""
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.robot.health import GREEN, HealthItem, server_health, topic_health
 from rockly_desktop.robot.interrupt import Interrupt
@@ -64,7 +65,7 @@ class SimulatedRobot:
     def health(self) -> list:
         """HealthItems of the simulated robot (its interface as the manifest declares it)."""
         interface = self.profile.ros_interface
-        link = HealthItem("simulator", GREEN, "the built-in simulator is running")
+        link = HealthItem(app_local_text("health_simulator"), GREEN, app_local_text("health_simulator_running"))
 
         def has_server(kind, name):
             return self.world.has_service(name) if kind == "services" else self.world.has_action(name)

@@ -44,12 +44,18 @@ class HealthBar(QLabel):
         summary = tr("health_" + self.level, self.language)
         self.setText(f"<span style='color:{colour}; font-size:16px'>●</span> {summary}")
         rows = "".join(f"<tr><td style='color:{COLOURS[item.level]}'>{SYMBOLS[item.level]}</td>"
-                       f"<td>{_escape(item.name)}</td><td>{_escape(item.detail)}</td></tr>" for item in self.items)
+                       f"<td>{_escape(_said_in(item.name, self.language))}</td>"
+                       f"<td>{_escape(_said_in(item.detail, self.language))}</td></tr>" for item in self.items)
         self.setToolTip(f"<b>{tr('health_title', self.language)}</b><table>{rows}</table>")
 
     def stop(self):
         """Stop asking (the robot is going away)."""
         self._timer.stop()
+
+
+def _said_in(text, language: str) -> str:
+    """A health item's name or detail in ``language`` (a catalogue text) or as it is (a topic's name)."""
+    return text.in_language(language) if hasattr(text, "in_language") else str(text)
 
 
 def _escape(text: str) -> str:

@@ -10,7 +10,7 @@ from program_builder import block, rockly_document
 
 from rockly_desktop import cli
 from rockly_desktop.robot import links
-from rockly_desktop.robot.health import GREEN, HealthItem
+from rockly_desktop.robot.health import GREEN
 from rockly_desktop.robot.link import RobotLink, RobotUnavailable
 from rockly_desktop.robot.links import (
     LinkKind,
@@ -181,7 +181,10 @@ def test_the_simulator_link_opens_from_the_registry_and_needs_no_connection(hobb
         assert robot.kind == "sim" and robot.status() is None and robot.warnings() == []
         robot.follow_graph()  # nothing to start: its world fills the state store from the beginning
         assert ("/odom", "nav_msgs/Odometry", 1) in robot.graph_topics()
-        assert robot.health()[0] == HealthItem("simulator", GREEN, "the built-in simulator is running")
+        link = robot.health()[0]
+        assert (str(link.name), link.level) == ("simulator", GREEN)
+        assert str(link.detail) == "the built-in simulator is running"
+        assert link.detail.in_language("de") == "der eingebaute Simulator läuft"
         assert robot.snapshot() is not None and robot.safe_stop() == []
     finally:
         robot.shutdown()

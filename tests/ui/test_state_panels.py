@@ -61,7 +61,7 @@ def test_panels_follow_a_run_on_the_simulator(qtbot, window):
 
 def test_health_is_green_on_the_simulator_with_details(qtbot, window):
     qtbot.waitUntil(lambda: window.health.level == "green", timeout=5000)
-    assert [item.name for item in window.health.items] == [
+    assert [str(item.name) for item in window.health.items] == [
         "simulator", "/odom", "/battery_state", "/joint_states", "/MMUI", "hobbit_arm", "move_base"]
     assert "Connection: all good" in window.health.text()
 

@@ -1,6 +1,7 @@
 """A robot over ROS 1 as a robot link (``robot/link.py``), through this process's one node."""
 import importlib.util
 
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.robot.health import GREEN, RED, HealthItem, server_health, topic_health
 from rockly_desktop.robot.interrupt import Interrupt
@@ -112,9 +113,9 @@ class RosRobot:
         interface = self.profile.ros_interface
         connection = self.connection
         if connection.lost:
-            return [HealthItem("ROS master", RED, f"{connection.master_uri} does not answer")]
-        link = HealthItem("ROS master", GREEN, f"{connection.master_uri}, round trip "
-                          f"{(connection.round_trip or 0) * 1000:.1f} ms")
+            return [HealthItem("ROS master", RED, app_local_text("health_master_silent", uri=connection.master_uri))]
+        link = HealthItem("ROS master", GREEN, app_local_text("health_master", uri=connection.master_uri,
+                                                              ms=f"{(connection.round_trip or 0) * 1000:.1f}"))
         feed = self.follow_graph()
         publishers = {topic: count for topic, _type, count in feed.graph_topics()}
         return [link] + topic_health(interface, self.state.topics()) + server_health(

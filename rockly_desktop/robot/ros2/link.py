@@ -2,6 +2,7 @@
 through this process's helper process (``client``)."""
 import time
 
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.robot.health import GREEN, RED, HealthItem, server_health, topic_health
 from rockly_desktop.robot.interrupt import Interrupt
@@ -15,7 +16,7 @@ from rockly_desktop.robot.ros2.environment import (
     ros2_name,
     ros2_python,
 )
-from rockly_desktop.robot.ros_versions import link_backend
+from rockly_desktop.robot.ros_versions import base_types, link_backend
 from rockly_desktop.robot.safe_stop import run_safe_stop
 
 
@@ -77,6 +78,10 @@ class Ros2Robot:
         self.state = StateStore()
         self.graph.service_watchers.append(self.state.record)
         self._feed = None
+        streamed = {name: type_name for name, type_name in base_types(interface).items()
+                    if name in set(interface.get("streams", []))}
+        # the topics whose interface package ROS 2's environment lacks, by package (said by the health light)
+        self._unreadable = {name: package for name, package in self.helper.call("missing", streamed, timeout=10.0)}
 
     @classmethod
     def unavailable(cls):
@@ -141,12 +146,14 @@ class Ros2Robot:
         interface = self.profile.ros_interface
         where = self.settings.describe()
         if self.helper.lost:
-            return [HealthItem("ROS 2", RED, f"{where}: {self.helper.lost_error()}")]
+            return [HealthItem("ROS 2", RED, app_local_text("health_ros2_lost", where=where,
+                                                            error=str(self.helper.lost_error())))]
         self.connection.measure()
-        link = HealthItem("ROS 2", GREEN, f"{where}, {self.helper.info.get('distro', 'ROS 2')}, helper round trip "
-                          f"{(self.connection.round_trip or 0) * 1000:.1f} ms")
+        link = HealthItem("ROS 2", GREEN, app_local_text("health_ros2", where=where,
+                                                         distro=self.helper.info.get("distro", "ROS 2"),
+                                                         ms=f"{(self.connection.round_trip or 0) * 1000:.1f}"))
         feed = self.follow_graph()
-        return [link] + topic_health(interface, self.state.topics()) + server_health(
+        return [link] + topic_health(interface, self.state.topics(), self._unreadable) + server_health(
             interface, lambda kind, name: f"/{name.strip('/')}" in (
                 feed.services() if kind == "services" else feed.actions()))
 

@@ -24,6 +24,7 @@ from rclpy.signals import SignalHandlerOptions
 from rockly_desktop.robot.ros2 import qos, wire
 from rockly_desktop.robot.ros2.ros_values import (
     BadValue,
+    MissingInterface,
     from_message,
     interface_class,
     parameter_value,
@@ -130,6 +131,16 @@ class Helper:
 
     def op_ping(self, value=None):
         return value
+
+    def op_missing(self, types):
+        """(name, package) of the ``types`` ({name: message type}) whose interface package is not installed here."""
+        missing = []
+        for name, type_name in types.items():
+            try:
+                interface_class(type_name, "msg")
+            except MissingInterface as error:
+                missing.append((name, error.values.get("package", type_name)))
+        return missing
 
     def op_configure(self, qos_overrides, safe_stop):
         """The profile's QoS overrides and safe stop; the stop's publishers are made (and matched) now.

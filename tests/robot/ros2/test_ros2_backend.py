@@ -135,8 +135,12 @@ def test_the_graph_lists_the_robots_topics_with_types_and_health(ros2_robot):
     eventually(lambda: ("/odom", "nav_msgs/Odometry", 1) in ros2_robot.graph_topics())
     assert ("/scan", "sensor_msgs/LaserScan", 1) in ros2_robot.graph_topics()
     eventually(lambda: "/odom" in {info.topic for info in ros2_robot.state.topics()})
-    link = ros2_robot.health()[0]
-    assert link.level == "green" and "localhost" in link.detail
+    health = {str(item.name): item for item in ros2_robot.health()}
+    assert health["ROS 2"].level == "green" and "localhost" in str(health["ROS 2"].detail)
+    # the TurtleBot's bumper: turtlebot3_msgs is not in ROS 2's environment here, which is said, in German too
+    bumper = health["/sensor_state"]
+    assert bumper.level == "amber" and "turtlebot3_msgs is not installed" in str(bumper.detail)
+    assert "turtlebot3_msgs ist in der ROS-2-Umgebung nicht installiert" in bumper.detail.in_language("de")
 
 
 def test_the_connection_says_where_and_how_fast(ros2_robot):

@@ -42,7 +42,7 @@ def test_its_status_and_health_name_the_domain_and_the_discovery_range(linked, r
     where = f"domain {ros2_settings.domain_id}, localhost"
     assert linked.status().state == "connected" and linked.status().where == f"ROS 2, {where}"
     link = linked.health()[0]
-    assert (link.name, link.level) == ("ROS 2", "green") and link.detail.startswith(where)
+    assert (link.name, link.level) == ("ROS 2", "green") and str(link.detail).startswith(where)
     assert linked.status().round_trip is not None  # measured by the health look
 
 
