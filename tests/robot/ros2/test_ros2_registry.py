@@ -94,6 +94,24 @@ def test_rockly_run_on_ros2_drives_rockly_sim_turtlebot_on_ros2(tmp_path, ros2_s
     assert simulator.returncode == 0
 
 
+@pytest.mark.parametrize(("example", "language", "distribution"), [
+    ("turtlebot/avoid-obstacles.rockly", "en", "auto"), ("de/turtlebot/Hindernissen-ausweichen.rockly", "de", "jazzy")])
+def test_the_turtlebot_examples_run_unchanged_on_ros2(tmp_path, ros2_settings, example, language, distribution):
+    domain = ros2_settings.domain_id + 3
+    simulator = rockly_process(tmp_path, "sim", "turtlebot", "--ros2", "--no-window", "--domain", domain,
+                               "--discovery", "localhost", "--speed", "5", "--ros-distro", distribution)
+    try:
+        assert "is up on ROS" in simulator.stdout.readline()
+        run = rockly_process(tmp_path, "run", PROJECT_ROOT / "examples" / example, "--backend", "ros2",
+                             "--domain", domain, "--language", language, "--ros-distro", distribution)
+        out, err = run.communicate(timeout=180)
+    finally:
+        simulator.terminate()
+        simulator.wait(timeout=30)
+    assert run.returncode == 0, err
+    assert out.splitlines()[-1] == {"en": "finished", "de": "fertig"}[language]
+
+
 def test_rockly_run_on_ros2_without_ros2_names_the_set_up_step(tmp_path):
     program = tmp_path / "p.rockly"
     program.write_text(rockly_document([block("text_print", id="p")], profile="turtlebot"))
