@@ -98,8 +98,9 @@ def test_rockly_run_on_ros2_drives_rockly_sim_turtlebot_on_ros2(tmp_path, ros2_s
     ("turtlebot/avoid-obstacles.rockly", "en", "auto"), ("de/turtlebot/Hindernissen-ausweichen.rockly", "de", "jazzy")])
 def test_the_turtlebot_examples_run_unchanged_on_ros2(tmp_path, ros2_settings, example, language, distribution):
     domain = ros2_settings.domain_id + 3
+    # 3 times real time: the example steers by its laser, which a loaded machine delivers later
     simulator = rockly_process(tmp_path, "sim", "turtlebot", "--ros2", "--no-window", "--domain", domain,
-                               "--discovery", "localhost", "--speed", "5", "--ros-distro", distribution)
+                               "--discovery", "localhost", "--speed", "3", "--ros-distro", distribution)
     try:
         assert "is up on ROS" in simulator.stdout.readline()
         run = rockly_process(tmp_path, "run", PROJECT_ROOT / "examples" / example, "--backend", "ros2",
