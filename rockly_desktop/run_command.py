@@ -71,7 +71,7 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
                        reason=error.strerror or error), file=sys.stderr)
         robot.shutdown()
         return 1
-    previous = signal.signal(signal.SIGINT, lambda *_: control.request_stop())
+    previous = signal.signal(signal.SIGINT, _once(control.request_stop))
     try:
         result = make_runner(program.profile, robot, run_code, control, report, language, limits,
                              recording=recording).run()
@@ -83,6 +83,18 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
             recording.close()
         robot.shutdown()
     return _report_end(result, types, language)
+
+
+def _once(stop):
+    """A signal handler calling ``stop()`` for the first signal only: a second Ctrl+C interrupting the
+    first inside ``stop()`` would wait forever for the lock the first one holds."""
+    stopping = []
+
+    def handler(*_):
+        if not stopping:
+            stopping.append(True)
+            stop()
+    return handler
 
 
 def _recording(record, program_path, profile, robot, types):

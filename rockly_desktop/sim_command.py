@@ -9,7 +9,7 @@ By default a small window shows the robot and asks its tablet questions beyond `
 import os
 import signal
 import sys
-import threading
+import time
 
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.robot import links
@@ -39,15 +39,18 @@ def serve_simulator(profile_id: str, kind: str = "ros1", connection: dict = None
 
 
 def _serve_headless(profile, kind, connection, speed, answers, out) -> int:
-    stop = threading.Event()
-    previous = signal.signal(signal.SIGINT, lambda *_: stop.set())
-    previous_term = signal.signal(signal.SIGTERM, lambda *_: stop.set())
+    # The handler only notes the signal: one that takes a lock (an Event's set()) can interrupt the
+    # main thread holding that lock, or a second signal interrupt the first handler inside it, and
+    # then waits for itself forever (SIGTERM followed by Ctrl+C did).
+    signalled = []
+    previous = signal.signal(signal.SIGINT, lambda *_: signalled.append(True))
+    previous_term = signal.signal(signal.SIGTERM, lambda *_: signalled.append(True))
     try:
         server = links.serve_simulator(kind, profile, connection, speed, AnswerList(answers, out))
         try:
             out(f"simulated {profile.display_name()} is up on ROS (Ctrl+C ends it)")
-            while not stop.wait(0.2):
-                pass
+            while not signalled:
+                time.sleep(0.2)  # seen within 0.2 s
         finally:
             server.shutdown()
     except RocklyError as error:

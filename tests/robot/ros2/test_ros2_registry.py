@@ -1,6 +1,7 @@
 """ROS 2 from the robot-link registry, as a person reaches it: ``open_link("ros2", ...)`` with the
 connection dialog's settings, and the command line (``rockly sim turtlebot --ros2`` served, a
 ``rockly run --backend ros2`` program driving it), against plain rclpy nodes on this run's domain."""
+import signal
 import subprocess
 import sys
 
@@ -111,6 +112,23 @@ def test_the_turtlebot_examples_run_unchanged_on_ros2(tmp_path, ros2_settings, e
         simulator.wait(timeout=30)
     assert run.returncode == 0, err
     assert out.splitlines()[-1] == {"en": "finished", "de": "fertig"}[language]
+
+
+def test_rockly_sim_ends_on_a_burst_of_signals(tmp_path, ros2_settings):
+    """SIGTERM and then Ctrl+C, or Ctrl+C pressed again while it ends, end it too: a signal handler that
+    took a lock (an Event's set()) once hung for good when a second signal interrupted the first."""
+    simulator = rockly_process(tmp_path, "sim", "turtlebot", "--ros2", "--no-window", "--domain",
+                               ros2_settings.domain_id + 4, "--discovery", "localhost")
+    try:
+        assert "is up on ROS" in simulator.stdout.readline()
+        for _ in range(20):
+            simulator.send_signal(signal.SIGTERM)
+            simulator.send_signal(signal.SIGINT)
+        simulator.wait(timeout=30)  # a late signal may find the default handlers back: any exit will do
+    finally:
+        if simulator.poll() is None:
+            simulator.kill()
+            simulator.wait()
 
 
 def test_rockly_run_on_ros2_without_ros2_names_the_set_up_step(tmp_path):
