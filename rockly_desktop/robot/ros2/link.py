@@ -78,10 +78,10 @@ class Ros2Robot:
         self.state = StateStore()
         self.graph.service_watchers.append(self.state.record)
         self._feed = None
-        streamed = {name: type_name for name, type_name in base_types(interface).items()
-                    if name in set(interface.get("streams", []))}
+        types = base_types(interface)
+        streamed = {name: types[name] for name in interface.get("streams", []) if name in types}
         # the topics whose interface package ROS 2's environment lacks, by package (said by the health light)
-        self._unreadable = {name: package for name, package in self.helper.call("missing", streamed, timeout=10.0)}
+        self._unreadable = dict(self.helper.call("missing", streamed, timeout=10.0))
 
     @classmethod
     def unavailable(cls):
