@@ -1,9 +1,11 @@
 """ROS 2 figures through Rockly's robot interface (helper process included), each against plain
 rclpy measured in the same run.
 
-An echo node in its own process (plain rclpy, .venv-ros2), on a domain of this run's own,
-localhost only:
-  - topic round trip: publish Float64 on /ping, the echo node answers on /pong;
+An echo node in its own process (plain rclpy, .venv-ros2, one single-threaded executor: rclpy's
+multi-threaded one adds milliseconds to every answer, which would hide the helper's hop), on a
+domain of this run's own, localhost only:
+  - topic round trip: publish Float64 on /ping, the echo node answers on /pong (a round trip not
+    back within LOST_AFTER is tried again, so a lost message cannot hang the benchmark);
   - service call: std_srvs/Trigger;
   - action round trip: a test_msgs/Fibonacci goal the server finishes at once;
   - publish rate: a burst of Twists to the subscribed echo node, per second from the first
@@ -34,14 +36,16 @@ ROS2_PYTHON = REPO / ".venv-ros2" / "bin" / "python"
 TRIALS = 300
 ACTION_TRIALS = 50
 BURST = 2000
+BURSTS = 5  # each of Rockly and plain rclpy, taking turns: the rate is the median
 SETTLED_SECONDS = 0.3
 STOP_TRIALS = 20
 ROUNDS = 10
+LOST_AFTER = 1.0  # a round trip not back by then is taken as lost, and tried again
 
 ECHO_NODE = r'''
 import os, sys, time, threading, rclpy
 from rclpy.action import ActionServer
-from rclpy.executors import MultiThreadedExecutor
+from rclpy.executors import SingleThreadedExecutor
 from rclpy.qos import QoSProfile, DurabilityPolicy
 from std_msgs.msg import Float64
 from geometry_msgs.msg import Twist
@@ -68,7 +72,7 @@ def execute(goal):
     goal.succeed()
     return Fibonacci.Result(sequence=[0, 1])
 ActionServer(node, Fibonacci, "/bench_fib", execute)
-executor = MultiThreadedExecutor(4)
+executor = SingleThreadedExecutor()
 executor.add_node(node)
 threading.Thread(target=executor.spin, daemon=True).start()
 print("ready", flush=True)
@@ -86,18 +90,24 @@ from std_msgs.msg import Float64
 from geometry_msgs.msg import Twist
 from std_srvs.srv import Trigger
 from test_msgs.action import Fibonacci
+LOST_AFTER = 1.0
 rclpy.init()
 node = rclpy.create_node("rockly_bench_plain")
 executor = SingleThreadedExecutor()
 executor.add_node(node)
 threading.Thread(target=executor.spin, daemon=True).start()
 
-def wait_for(predicate):
+def wait_for(predicate, timeout=10.0):
+    """Whether ``predicate`` came true within ``timeout`` seconds."""
+    deadline = time.perf_counter() + timeout
     while not predicate():
+        if time.perf_counter() > deadline:
+            return False
         time.sleep(0.00005)
+    return True
 
-arrivals, counts = [], []
-node.create_subscription(Float64, "/pong", lambda m: arrivals.append(time.perf_counter()), 1000)
+arrivals, counts = {}, []
+node.create_subscription(Float64, "/pong", lambda m: arrivals.setdefault(m.data, time.perf_counter()), 1000)
 node.create_subscription(Float64, "/twist_count", lambda m: counts.append(m.data), 10)
 ping = node.create_publisher(Float64, "/ping", 1000)
 ask = node.create_publisher(Float64, "/count_please", 10)
@@ -112,12 +122,12 @@ actions.wait_for_server(timeout_sec=10)
 
 def topic(n):
     times = []
-    for _ in range(n):
-        before = len(arrivals)
+    while len(times) < n:  # a ping or pong lost (rarely) is sent again
+        key = time.perf_counter()  # each ping its own value: a late pong is not taken for the next
         started = time.perf_counter()
-        ping.publish(Float64(data=1.0))
-        wait_for(lambda: len(arrivals) > before)
-        times.append(arrivals[-1] - started)
+        ping.publish(Float64(data=key))
+        if wait_for(lambda: key in arrivals, LOST_AFTER):
+            times.append(arrivals[key] - started)
     return times
 
 def service(n):
@@ -145,7 +155,7 @@ def action(n):
 def received_total():
     before = len(counts)
     ask.publish(Float64(data=0.0))
-    wait_for(lambda: len(counts) > before)
+    assert wait_for(lambda: len(counts) > before), "the echo node did not say its count"
     return counts[-1]
 
 def settled_total():
@@ -251,24 +261,29 @@ def run_all(settings, plain):
     print(f"link up (helper started, safe stop's publisher matched): {(time.perf_counter() - started) * 1000:.0f} ms")
     backend = robot.backend(Interrupt())
 
-    def wait_for(predicate):
+    def wait_for(predicate, timeout=10.0):
+        """Whether ``predicate`` came true within ``timeout`` seconds."""
+        deadline = time.perf_counter() + timeout
         while not predicate():
+            if time.perf_counter() > deadline:
+                return False
             time.sleep(0.00005)
+        return True
 
     # --- topic round trip ---------------------------------------------------------------
-    arrivals = []
-    backend.subscribe("/pong", "std_msgs/Float64", lambda m: arrivals.append(time.perf_counter()))
+    arrivals = {}
+    backend.subscribe("/pong", "std_msgs/Float64", lambda m: arrivals.setdefault(m["data"], time.perf_counter()))
     backend.publish("/ping", "std_msgs/Float64", {"data": 0.0})  # the first waits for the echo node to match
-    wait_for(lambda: arrivals)
+    assert wait_for(lambda: arrivals), "the echo node did not answer"
 
     def topic(n):
         times = []
-        for _ in range(n):
-            before = len(arrivals)
+        while len(times) < n:  # a ping or pong lost (rarely) is sent again
+            key = time.perf_counter()  # each ping its own value: a late pong is not taken for the next
             started = time.perf_counter()
-            backend.publish("/ping", "std_msgs/Float64", {"data": 1.0})
-            wait_for(lambda before=before: len(arrivals) > before)
-            times.append(arrivals[-1] - started)
+            backend.publish("/ping", "std_msgs/Float64", {"data": key})
+            if wait_for(lambda key=key: key in arrivals, LOST_AFTER):
+                times.append(arrivals[key] - started)
         return times
 
     report("topic round trip (/ping -> echo node -> /pong)", *alternating(plain, "topic", topic, TRIALS))
@@ -303,12 +318,12 @@ def run_all(settings, plain):
     counts = []
     backend.subscribe("/twist_count", "std_msgs/Float64", lambda m: counts.append(m["data"]))
     backend.publish("/count_please", "std_msgs/Float64", {"data": 0.0})
-    wait_for(lambda: counts)
+    assert wait_for(lambda: counts), "the echo node did not say its count"
 
     def received_total():
         before = len(counts)
         backend.publish("/count_please", "std_msgs/Float64", {"data": 0.0})
-        wait_for(lambda: len(counts) > before)
+        assert wait_for(lambda: len(counts) > before), "the echo node did not say its count"
         return counts[-1]
 
     def settled_total():
@@ -329,7 +344,7 @@ def run_all(settings, plain):
 
     backend.publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.1}})
     rockly_runs, plain_runs = [], []
-    for _ in range(3):
+    for _ in range(BURSTS):
         plain_runs.append(plain.measure("rate", BURST))
         rockly_runs.append(rate(BURST))
     rockly_rate = statistics.median(run[0] for run in rockly_runs)

@@ -42,10 +42,11 @@ class Ros2Graph:
     def publish(self, topic: str, msg_type: str, message: dict, interrupt=None):
         """Publish; a topic's first message waits for the helper (publisher made, subscribers matched)."""
         if topic in self.published:
-            self.helper.cast("publish", topic, msg_type, message)
+            self.helper.publish(topic, msg_type, message)
         else:
             self.helper.call("publish_first", topic, msg_type, message, interrupt=interrupt)
             self.published.add(topic)
+            self.helper.ask_layout(msg_type)  # the next messages go encoded
         self.sent[topic] = (time.monotonic(), message)
 
     def close(self):

@@ -17,6 +17,7 @@ from pathlib import Path
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError, RobotConnectionLost, RobotTimeout
 from rockly_desktop.robot.ros2 import wire
+from rockly_desktop.robot.ros2.cdr_encoding import MessageEncoder, NotEncodable
 from rockly_desktop.robot.ros2.environment import Ros2Settings, Ros2Unavailable, ros2_python
 
 # The helper imports this package from where it is, and nothing else of Rockly's environment
@@ -36,12 +37,13 @@ STDERR_LINES = 20
 
 
 class _Pending:
-    __slots__ = ("done", "ok", "value")
+    __slots__ = ("done", "ok", "value", "then")
 
-    def __init__(self):
+    def __init__(self, then=None):
         self.done = threading.Event()
         self.ok = False
         self.value = None
+        self.then = then  # called (ok, value) on the reader thread when the answer comes
 
 
 class Ros2Helper:
@@ -95,6 +97,7 @@ class Ros2Helper:
         self._pending = {}
         self._handlers = {}
         self._failures = deque(maxlen=10)
+        self._encoders = {}  # message type -> its MessageEncoder, or None: sent as fields
         self._stderr = deque(maxlen=STDERR_LINES)
         self._hello = threading.Event()
         self.info = {}
@@ -134,6 +137,8 @@ class Ros2Helper:
         if pending is not None:
             pending.ok, pending.value = ok, value
             pending.done.set()
+            if pending.then is not None:
+                pending.then(ok, value)
 
     def _event(self, frame):
         _kind, kind, key, data = frame
@@ -193,6 +198,39 @@ class Ros2Helper:
         """Send a request that gets no answer (its failure is raised by a later ``check``)."""
         self.check()
         self._write((wire.CAST, 0, op, args))
+
+    def publish(self, topic: str, msg_type: str, message):
+        """Publish without waiting (a failure is raised by a later ``check``): as CDR bytes encoded
+        here once the helper gave the type's layout, else as fields for the helper to check."""
+        encoder = self._encoders.get(msg_type)
+        if msg_type not in self._encoders:
+            self.ask_layout(msg_type)
+        elif encoder is not None:
+            try:
+                raw = encoder.encode(message)
+            except NotEncodable:
+                pass  # the helper checks it, and says what is wrong
+            else:
+                return self.cast("publish_raw", topic, msg_type, raw)
+        self.cast("publish", topic, msg_type, message)
+
+    def encoder(self, msg_type: str):
+        """``msg_type``'s MessageEncoder once the helper gave its layout, else None (sent as fields)."""
+        return self._encoders.get(msg_type)
+
+    def ask_layout(self, msg_type: str):
+        """Ask the helper for ``msg_type``'s layout (once) without waiting; its messages go as fields until it comes."""
+        if msg_type in self._encoders:
+            return
+        self._encoders[msg_type] = None
+
+        def answered(ok, layout):
+            if ok and layout is not None:
+                self._encoders[msg_type] = MessageEncoder(layout)
+        self.check()
+        call_id = next(self._ids)
+        self._pending[call_id] = _Pending(then=answered)
+        self._write((wire.CALL, call_id, "layout", (msg_type,)))
 
     def call(self, op: str, *args, interrupt=None, timeout: float = None):
         """Send a request and wait for its answer (interruptibly when ``interrupt`` is given).

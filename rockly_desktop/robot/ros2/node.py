@@ -22,6 +22,7 @@ from rclpy.executors import SingleThreadedExecutor
 from rclpy.signals import SignalHandlerOptions
 
 from rockly_desktop.robot.ros2 import qos, wire
+from rockly_desktop.robot.ros2.layouts import layout
 from rockly_desktop.robot.ros2.ros_values import (
     BadValue,
     MissingInterface,
@@ -54,6 +55,34 @@ class Failure(wire.TextError):
 
 class Reported(Failure):
     """A failure already told to Rockly another way (a goal's end): a cast does not report it again."""
+
+
+class Later:
+    """An answer that comes later (a service's response): settled once (the response and its deadline
+    may race), and given to the request's ``answer_with`` whichever of the two comes first."""
+
+    def __init__(self):
+        self.settled = threading.Event()
+        self._lock = threading.Lock()
+        self._outcome = None
+        self._answer = None
+
+    def answer_with(self, answer):
+        """Answer the request with ``answer(ok, value)`` once settled (at once if it is)."""
+        with self._lock:
+            self._answer, outcome = answer, self._outcome
+        if outcome is not None:
+            answer(*outcome)
+
+    def settle(self, ok, value):
+        """The outcome; a later one is ignored."""
+        with self._lock:
+            if self._outcome is not None:
+                return
+            self._outcome, answer = (ok, value), self._answer
+        self.settled.set()
+        if answer is not None:
+            answer(ok, value)
 
 
 class Helper:
@@ -103,14 +132,26 @@ class Helper:
         method = getattr(self, f"op_{op}", None)
         if method is None:
             return self._answer(mode, call_id, False, ("command", f"unknown request '{op}'"), op)
-        if op in self.WAITING_OPS and not (op == "goal" and self._server_ready(args[1])):
+        if op in self.WAITING_OPS and not self._at_once(op, args):
             self._pool.submit(self._run, mode, call_id, op, method, args)
         else:
             self._run(mode, call_id, op, method, args)
 
+    def _at_once(self, op, args) -> bool:
+        """Whether a request that may wait will not, this time (its server is reached: it is only sent)."""
+        if op == "goal":
+            return self._server_ready(args[1])
+        if op == "service":
+            client = self._services.get(args[0])
+            return client is not None and client in self._settled and client.service_is_ready()
+        return False
+
     def _run(self, mode, call_id, op, method, args):
         try:
             value = method(*args)
+            if isinstance(value, Later):
+                value.answer_with(lambda ok, answer: self._answer(mode, call_id, ok, answer, op))
+                return
         except Reported as error:
             if mode == wire.CALL:
                 self._answer(mode, call_id, False, (error.kind, wire.said(error)), op)
@@ -200,11 +241,25 @@ class Helper:
             time.sleep(0.005)
 
     def op_publish(self, topic, type_name, message):
-        """Publish; while the publisher has matched nobody but the graph lists subscribers, match first."""
+        """Publish the fields ``message`` (checked: a wrong one is named)."""
+        publisher, message_class = self._matched_publisher(topic, type_name)
+        publisher.publish(to_message(message_class, message))
+
+    def op_publish_raw(self, topic, type_name, raw):
+        """Publish a message Rockly's side encoded from the type's layout (``op_layout``), as it is."""
+        publisher, _message_class = self._matched_publisher(topic, type_name)
+        publisher.publish(raw)
+
+    def op_layout(self, type_name):
+        """The layout of ``type_name`` for Rockly's side to encode its messages (``layouts``), or None."""
+        return layout(interface_class(type_name, "msg"))
+
+    def _matched_publisher(self, topic, type_name):
+        """The publisher on ``topic``; while it has matched nobody but the graph lists subscribers, matched first."""
         publisher, message_class = self._publisher(topic, type_name)
         if publisher.get_subscription_count() == 0 and self.node.count_subscribers(topic) > 0:
             self._match(publisher, topic)
-        publisher.publish(to_message(message_class, message))
+        return publisher, message_class
 
     def op_subscribe(self, sid, topic, type_name):
         """Subscribe (QoS matched to the publishers); messages come as ('msg', sid, dict) events.
@@ -273,19 +328,34 @@ class Helper:
             return client
 
     def op_service(self, name, type_name, request, timeout):
-        """Call a service (waiting up to ``timeout`` for it to appear and answer); the response dict."""
+        """Call a service (waiting up to ``timeout`` for it to appear and answer): the response dict, Later.
+
+        A server already reached is only sent the request (inline, see ``_at_once``): the response is
+        answered from the spinning thread as it comes, and a pool thread keeps the deadline."""
         client = self._service_client(name, type_name)
         deadline = time.monotonic() + timeout
-        self._ready(client, timeout, "sim_service_missing", name=name, timeout=timeout)
+        if not self._at_once("service", (name,)):
+            self._ready(client, timeout, "sim_service_missing", name=name, timeout=timeout)
         future = client.call_async(to_message(client.srv_type.Request, request))
-        done = threading.Event()
-        future.add_done_callback(lambda _future: done.set())
-        if not done.wait(max(0.0, deadline - time.monotonic())):
+        response = Later()
+
+        def responded(_future):
+            if future.exception() is not None:
+                failure = Failure("command", "sim_service_failed", name=name, error=str(future.exception()))
+                response.settle(False, (failure.kind, wire.said(failure)))
+            else:
+                response.settle(True, from_message(future.result()))
+        future.add_done_callback(responded)
+        self._pool.submit(self._expire, response, max(0.0, deadline - time.monotonic()), client, future, name, timeout)
+        return response
+
+    @staticmethod
+    def _expire(response, seconds, client, future, name, timeout):
+        """The service call's deadline: unanswered by then, it fails as timed out."""
+        if not response.settled.wait(seconds):
             client.remove_pending_request(future)
-            raise Failure("timeout", "ros_service_timeout", name=name, timeout=timeout)
-        if future.exception() is not None:
-            raise Failure("command", "sim_service_failed", name=name, error=str(future.exception()))
-        return from_message(future.result())
+            failure = Failure("timeout", "ros_service_timeout", name=name, timeout=timeout)
+            response.settle(False, (failure.kind, wire.said(failure)))
 
     # --- actions
     def _server_ready(self, action) -> bool:

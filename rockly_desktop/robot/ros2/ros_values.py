@@ -65,7 +65,8 @@ def _member(module, type_name: str):
     return getattr(owner, part) if hasattr(owner, part) else getattr(owner.Impl, part)
 
 
-def _class_of(namespaced: NamespacedType):
+def class_of(namespaced: NamespacedType):
+    """The rclpy class of a nested field's type."""
     return getattr(importlib.import_module(".".join(namespaced.namespaces)), namespaced.name)
 
 
@@ -73,7 +74,7 @@ def _value(slot, value, path):
     if isinstance(slot, AbstractNestedType):
         item = slot.value_type
         if isinstance(item, NamespacedType):
-            return [to_message(_class_of(item), entry, f"{path}[{index}]") for index, entry in enumerate(value)]
+            return [to_message(class_of(item), entry, f"{path}[{index}]") for index, entry in enumerate(value)]
         if isinstance(item, BasicType) and item.typename in _FLOATS:
             return [float(entry) for entry in value]
         return value
@@ -97,16 +98,16 @@ def _fill(message, data, path):
         if path:
             raise BadValue("ros2_field_not_fields", field=path, value=repr(data))
         raise BadValue("ros2_message_not_fields", value=repr(data))
-    if _is_time(message_class):
+    if is_time(message_class):
         data = {_ROS1_TIME.get(name, name): value for name, value in data.items()}
-    elif _is_header(message_class) and "seq" in data:
+    elif is_header(message_class) and "seq" in data:
         data = {name: value for name, value in data.items() if name != "seq"}  # ROS 1's, gone in ROS 2
-    slots = _slots(message_class)
+    fields = slots(message_class)
     for name, value in data.items():
         where = f"{path}.{name}" if path else name
-        if name not in slots:
+        if name not in fields:
             raise BadValue("ros2_no_field", type=message_class.__name__, field=where)
-        slot = slots[name]
+        slot = fields[name]
         if isinstance(slot, NamespacedType):
             _fill(getattr(message, name), value, where)
             continue
@@ -122,15 +123,15 @@ def _fill(message, data, path):
 
 
 @functools.cache
-def _slots(message_class) -> dict:
+def slots(message_class) -> dict:
     """Field name -> its rosidl type, per class (asked for every message, so kept)."""
     return dict(zip(message_class.get_fields_and_field_types(), message_class.SLOT_TYPES, strict=True))
 
 
 def from_message(message) -> dict:
     """The message as plain dicts, lists and numbers."""
-    data = {name: _plain(getattr(message, name)) for name in _slots(type(message))}
-    if _is_time(type(message)):
+    data = {name: _plain(getattr(message, name)) for name in slots(type(message))}
+    if is_time(type(message)):
         data.update(secs=data["sec"], nsecs=data["nanosec"])
     return data
 
@@ -139,12 +140,14 @@ _ROS1_TIME = {"secs": "sec", "nsecs": "nanosec"}
 
 
 @functools.cache
-def _is_header(message_class) -> bool:
+def is_header(message_class) -> bool:
+    """Whether ``message_class`` is std_msgs/Header (ROS 1's ``seq`` is dropped from it)."""
     return message_class.__module__.startswith("std_msgs.") and message_class.__name__ == "Header"
 
 
 @functools.cache
-def _is_time(message_class) -> bool:
+def is_time(message_class) -> bool:
+    """Whether ``message_class`` is a stamp or a duration (ROS 1's ``secs``/``nsecs`` are taken too)."""
     return message_class.__module__.startswith("builtin_interfaces.") and message_class.__name__ in ("Time", "Duration")
 
 

@@ -72,7 +72,7 @@ class Ros2SimBridge:
 
         def forward(data):
             if not helper.lost:
-                helper.cast("publish", topic, wire_type, converted(data, msg_type, wire_type))
+                helper.publish(topic, wire_type, converted(data, msg_type, wire_type))
         self._world.subscribe(topic, forward)
 
     def _leave_out(self, name, type_name, error):
