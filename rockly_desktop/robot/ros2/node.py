@@ -23,6 +23,7 @@ from rclpy.signals import SignalHandlerOptions
 
 from rockly_desktop.robot.ros2 import qos, wire
 from rockly_desktop.robot.ros2.layouts import layout
+from rockly_desktop.robot.ros2.topic_reader import TopicReader
 from rockly_desktop.robot.ros2.ros_values import (
     BadValue,
     MissingInterface,
@@ -102,7 +103,8 @@ class Helper:
         self._spin.start()
         self._pool = ThreadPoolExecutor(8, thread_name_prefix="ros2-wait")
         self._publishers = {}
-        self._subscriptions = {}
+        # subscriptions: on a node of their own, read without the executor (topic_reader)
+        self.topics = TopicReader(rclpy.create_node(f"rockly_{os.getpid()}_topics", start_parameter_services=False))
         self._services = {}
         self._actions = {}
         self._goals = {}
@@ -278,15 +280,12 @@ class Helper:
         profile = qos.for_subscription(topic, type_name, self.node.get_publishers_info_by_topic(topic),
                                        self.qos_overrides)
         send = self.send
-        subscription = self.node.create_subscription(
-            message_class, topic, lambda message: send((wire.EVENT, "msg", sid, from_message(message))), profile)
-        self._subscriptions[sid] = subscription
+        self.topics.subscribe(sid, message_class, topic,
+                              lambda message: send((wire.EVENT, "msg", sid, from_message(message))), profile)
         return type_name
 
     def op_unsubscribe(self, sid):
-        subscription = self._subscriptions.pop(sid, None)
-        if subscription is not None:
-            self.node.destroy_subscription(subscription)
+        self.topics.unsubscribe(sid)
 
     def op_graph(self):
         """Topics (name, types, publisher count), services and action names of the ROS 2 graph.
@@ -508,6 +507,8 @@ class Helper:
         self._pool.shutdown(wait=False, cancel_futures=True)
         self._executor.shutdown(timeout_sec=1.0)
         self._spin.join(timeout=1.0)
+        self.topics.close()
+        self.topics.node.destroy_node()
         self.node.destroy_node()
         rclpy.try_shutdown()
 

@@ -149,3 +149,23 @@ def test_the_connection_says_where_and_how_fast(ros2_robot):
     assert connection.master_uri.startswith("ROS 2, domain ")
     ros2_robot.health()
     assert connection.round_trip is not None
+
+
+def test_an_ended_subscription_hears_nothing_more_and_a_new_one_hears_again(ros2_robot):
+    helper = ros2_robot.helper
+    first, second = helper.new_id(), helper.new_id()
+    heard = {first: [], second: []}
+    for sid in heard:
+        helper.on("msg", sid, heard[sid].append)
+    try:
+        helper.call("subscribe", first, "/odom", "nav_msgs/Odometry", timeout=10)
+        eventually(lambda: heard[first])
+        helper.call("unsubscribe", first, timeout=10)
+        ended_with = len(heard[first])
+        helper.call("subscribe", second, "/odom", "nav_msgs/Odometry", timeout=10)
+        eventually(lambda: len(heard[second]) >= 5)  # a quarter of a second of the robot's 20 Hz odometry
+        assert len(heard[first]) <= ended_with + 1  # one taken as it ended may still come
+    finally:
+        helper.call("unsubscribe", second, timeout=10)
+        for sid in heard:
+            helper.off("msg", sid)
