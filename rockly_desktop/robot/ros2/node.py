@@ -23,7 +23,6 @@ from rclpy.signals import SignalHandlerOptions
 
 from rockly_desktop.robot.ros2 import qos, wire
 from rockly_desktop.robot.ros2.layouts import layout
-from rockly_desktop.robot.ros2.topic_reader import TopicReader
 from rockly_desktop.robot.ros2.ros_values import (
     BadValue,
     MissingInterface,
@@ -33,6 +32,7 @@ from rockly_desktop.robot.ros2.ros_values import (
     to_message,
     to_parameter_value,
 )
+from rockly_desktop.robot.ros2.topic_reader import TopicReader
 
 FIRST_PUBLISH_WAIT = 2.0  # a new publisher waits this long for the graph's subscribers to match
 DISCOVERY_SECONDS = 5.0  # a new DDS participant may take 2 s (a busy machine: more) to discover the others
