@@ -10,10 +10,13 @@ pinned rclpy of ``requirements-ros2.txt``).
 """
 import contextlib
 import threading
+import time
 import traceback
 
 from rclpy.exceptions import InvalidHandle
 from rclpy.impl.implementation_singleton import rclpy_implementation as _rclpy
+
+ERROR_PAUSE = 0.05  # after a turn that failed, so that a lasting fault does not spin
 
 
 class TopicReader:
@@ -52,28 +55,36 @@ class TopicReader:
     def _read(self):
         context = self.node.context
         while self._running and context.ok():
-            with self._lock:
-                subscriptions = list(self._subscriptions.values())
-            with contextlib.ExitStack() as held:  # a handle in use is not destroyed under the wait
-                taken = []
-                for subscription in subscriptions:
-                    try:
-                        held.enter_context(subscription.handle)
-                    except InvalidHandle:
-                        continue
-                    taken.append(subscription)
-                held.enter_context(self._changed.handle)
-                held.enter_context(context.handle)
-                wait_set = _rclpy.WaitSet(len(taken), 1, 0, 0, 0, 0, context.handle)
-                wait_set.clear_entities()
-                for subscription in taken:
-                    wait_set.add_subscription(subscription.handle)
-                wait_set.add_guard_condition(self._changed.handle)
-                wait_set.wait(-1)
-                ready = wait_set.get_ready_entities("subscription")
-                for subscription in taken:
-                    if subscription.handle.pointer in ready:
-                        self._deliver(subscription)
+            try:
+                self._turn(context)
+            except Exception:  # the reading goes on: the subscriptions are the panels' and the program's
+                traceback.print_exc()
+                time.sleep(ERROR_PAUSE)
+
+    def _turn(self, context):
+        """Wait until a subscription has a message (or they changed), and pass the messages on."""
+        with self._lock:
+            subscriptions = list(self._subscriptions.values())
+        with contextlib.ExitStack() as held:  # a handle in use is not destroyed under the wait
+            taken = []
+            for subscription in subscriptions:
+                try:
+                    held.enter_context(subscription.handle)
+                except InvalidHandle:
+                    continue
+                taken.append(subscription)
+            held.enter_context(self._changed.handle)
+            held.enter_context(context.handle)
+            wait_set = _rclpy.WaitSet(len(taken), 1, 0, 0, 0, 0, context.handle)
+            wait_set.clear_entities()
+            for subscription in taken:
+                wait_set.add_subscription(subscription.handle)
+            wait_set.add_guard_condition(self._changed.handle)
+            wait_set.wait(-1)
+            ready = wait_set.get_ready_entities("subscription")
+            for subscription in taken:
+                if subscription.handle.pointer in ready:
+                    self._deliver(subscription)
 
     @staticmethod
     def _deliver(subscription):
