@@ -211,7 +211,8 @@ class Ros2Helper:
             except NotEncodable:
                 pass  # the helper checks it, and says what is wrong
             else:
-                return self.cast("publish_raw", topic, msg_type, raw)
+                self.cast("publish_raw", topic, msg_type, raw)
+                return
         self.cast("publish", topic, msg_type, message)
 
     def encoder(self, msg_type: str):
@@ -226,8 +227,10 @@ class Ros2Helper:
 
         def answered(ok, layout):
             if ok and layout is not None:
-                self._encoders[msg_type] = MessageEncoder(layout)
-        self.check()
+                try:
+                    self._encoders[msg_type] = MessageEncoder(layout)
+                except ValueError:  # a layout this side cannot follow: the type goes as fields
+                    pass
         call_id = next(self._ids)
         self._pending[call_id] = _Pending(then=answered)
         self._write((wire.CALL, call_id, "layout", (msg_type,)))
