@@ -9,6 +9,7 @@ registry.
 from dataclasses import dataclass, field
 from typing import Protocol
 
+from rockly_desktop.core.catalogue import LocalText
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.robot.interrupt import Interrupt
@@ -45,10 +46,11 @@ class LinkWarning:
 @dataclass(frozen=True)
 class LinkStatus:
     """How the connection to a robot is: ``state`` connected | connecting | lost, ``where`` it
-    goes (e.g. the ROS master's URI) and the last round trip in seconds (None: not measured)."""
+    goes (e.g. the ROS master's URI, or a catalogue text: a ROS 2 domain) and the last round trip
+    in seconds (None: not measured)."""
 
     state: str
-    where: str
+    where: "str | LocalText"
     round_trip: float = None
 
 

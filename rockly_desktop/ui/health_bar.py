@@ -7,7 +7,7 @@ from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QLabel
 
 from rockly_desktop.robot.health import overall
-from rockly_desktop.ui.texts import tr
+from rockly_desktop.ui.texts import said_in, tr
 
 COLOURS = {"green": "#2e7d32", "amber": "#f9a825", "red": "#c62828"}
 SYMBOLS = {"green": "✔", "amber": "!", "red": "✖"}
@@ -44,18 +44,13 @@ class HealthBar(QLabel):
         summary = tr("health_" + self.level, self.language)
         self.setText(f"<span style='color:{colour}; font-size:16px'>●</span> {summary}")
         rows = "".join(f"<tr><td style='color:{COLOURS[item.level]}'>{SYMBOLS[item.level]}</td>"
-                       f"<td>{_escape(_said_in(item.name, self.language))}</td>"
-                       f"<td>{_escape(_said_in(item.detail, self.language))}</td></tr>" for item in self.items)
+                       f"<td>{_escape(said_in(item.name, self.language))}</td>"
+                       f"<td>{_escape(said_in(item.detail, self.language))}</td></tr>" for item in self.items)
         self.setToolTip(f"<b>{tr('health_title', self.language)}</b><table>{rows}</table>")
 
     def stop(self):
         """Stop asking (the robot is going away)."""
         self._timer.stop()
-
-
-def _said_in(text, language: str) -> str:
-    """A health item's name or detail in ``language`` (a catalogue text) or as it is (a topic's name)."""
-    return text.in_language(language) if hasattr(text, "in_language") else str(text)
 
 
 def _escape(text: str) -> str:

@@ -11,7 +11,7 @@ from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.robot.links import DEFAULT_KIND, check_available, link_kind, open_link
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
 from rockly_desktop.ui.message_boxes import plain_message_box
-from rockly_desktop.ui.texts import robot_problem, tr
+from rockly_desktop.ui.texts import robot_problem, said_in, tr
 
 STATUS_COLOURS = {"connected": "#2e7d32", "connecting": "#f9a825", "lost": "#c62828"}
 CONNECT_TIMEOUT = 1.0  # seconds a robot chosen in the window has to answer
@@ -139,11 +139,13 @@ class RobotChoice(QObject):
         robot = self._robots.get((self.kind, self.document.profile.id))
         status = robot.status() if robot is not None else None
         state = status.state if status is not None else "connecting"
-        text = tr(f"ros_{state}", self.settings.language)
-        self.status.setText(f"{text} — {status.where}" if status is not None else text)  # e.g. its domain on ROS 2
+        language = self.settings.language
+        text = tr(f"ros_{state}", language)
+        where = said_in(status.where, language) if status is not None else ""
+        self.status.setText(f"{text} — {where}" if status is not None else text)  # e.g. its domain on ROS 2
         self.status.setStyleSheet(f"color: {STATUS_COLOURS[state]}; font-weight: bold;")
         if status is not None and status.round_trip is not None:
-            self.status.setToolTip(f"{status.where} — {status.round_trip * 1000:.1f} ms")
+            self.status.setToolTip(f"{where} — {status.round_trip * 1000:.1f} ms")
 
     def shutdown(self):
         """Stop every robot safely (the window is closing)."""

@@ -11,6 +11,11 @@ def tr(key: str, language: str, **values) -> str:
     return app_text(key, language, **values)
 
 
+def said_in(text, language: str) -> str:
+    """A catalogue text (``LocalText``) in ``language``, or anything else as it is (a topic's name, a URI)."""
+    return text.in_language(language) if hasattr(text, "in_language") else str(text)
+
+
 def language_names() -> dict:
     """{code: the language's name in itself} of every language Rockly speaks."""
     return {code: language_name(code) for code in languages()}

@@ -16,6 +16,11 @@ ROS2 = link_kind("ros2")
 def ros2_window(qtbot, window, test_robot, ros2_settings, monkeypatch):
     """The window connected to the test robot: the dialog (shown, its fields filled in as a person
     would) is accepted; the ROS 2 helper ends with the window."""
+    return connected(window, ros2_settings, monkeypatch)
+
+
+def connected(window, ros2_settings, monkeypatch):
+    """``window`` connected to the test robot through the connection dialog, its fields filled in."""
     asked = []
 
     def fill_in(dialog):
@@ -49,6 +54,14 @@ def test_choosing_ros2_connects_shows_the_domain_and_remembers_the_settings(qtbo
     health = ros2_window.health
     qtbot.waitUntil(lambda: where in health.toolTip(), timeout=10000)
     assert "ROS 2" in health.toolTip()
+
+
+def test_a_german_window_says_the_domain_in_german(qtbot, german_window, test_robot, ros2_settings, monkeypatch):
+    window = connected(german_window, ros2_settings, monkeypatch)
+    where = f"Domäne {ros2_settings.domain_id}, localhost"
+    qtbot.waitUntil(lambda: where in window.robots.status.text(), timeout=5000)
+    assert "domain" not in window.robots.status.text()
+    qtbot.waitUntil(lambda: where in window.health.toolTip(), timeout=10000)
 
 
 def test_the_topic_monitor_lists_the_ros2_graph(qtbot, ros2_window):

@@ -8,6 +8,8 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
+from rockly_desktop.core.app_texts import app_local_text
+from rockly_desktop.core.catalogue import LocalText
 from rockly_desktop.core.ros_distributions import DISTRIBUTIONS
 from rockly_desktop.robot.link import RobotUnavailable
 
@@ -90,12 +92,16 @@ class Ros2Settings:
             env["ROS_STATIC_PEERS"] = ";".join(self.peers)
         return env
 
-    def describe(self, environment=None) -> str:
-        """'domain 7, localhost' as the status bar and health light say it."""
+    def describe(self, environment=None) -> LocalText:
+        """'domain 7, localhost' (the range as ROS names it) as the status bar and health light say it,
+        in their language."""
         env = self.environment(environment)
-        text = f"domain {env.get('ROS_DOMAIN_ID') or 0}, {env.get('ROS_AUTOMATIC_DISCOVERY_RANGE', 'subnet').lower()}"
+        where = {"domain": env.get("ROS_DOMAIN_ID") or 0,
+                 "range": env.get("ROS_AUTOMATIC_DISCOVERY_RANGE", "subnet").lower()}
         peers = env.get("ROS_STATIC_PEERS")
-        return f"{text}, peers {peers.replace(';', ', ')}" if peers else text
+        if peers:
+            return app_local_text("ros2_where_peers", peers=peers.replace(";", ", "), **where)
+        return app_local_text("ros2_where", **where)
 
 
 def ros2_python() -> Path:

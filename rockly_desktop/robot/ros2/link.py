@@ -27,7 +27,7 @@ class Ros2Connection:
 
     def __init__(self, helper, settings, ros_distribution: str = None):
         self._helper = helper
-        self.master_uri = f"{ros2_name(ros_distribution)}, {settings.describe()}"
+        self.master_uri = app_local_text("ros2_link_where", ros=ros2_name(ros_distribution), where=settings.describe())
         self.round_trip = None  # seconds to the helper and back, as of the last health look
 
     @property

@@ -12,6 +12,8 @@ the registry's ``sim_server``).
 import logging
 import threading
 
+from rockly_desktop.core.app_texts import app_local_text
+from rockly_desktop.core.catalogue import LocalText
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.ros2.client import Ros2Helper, words
@@ -145,9 +147,9 @@ class Ros2SimulatorNode(ServedSimulator):
         self.simulator.start()
 
     @property
-    def where(self) -> str:
+    def where(self) -> LocalText:
         """'ROS 2, domain 7, localhost' ('ROS 2 Jazzy, …' playing a distribution) for the window and the console."""
-        return f"{ros2_name(self.ros_distribution)}, {self.settings.describe()}"
+        return app_local_text("ros2_link_where", ros=ros2_name(self.ros_distribution), where=self.settings.describe())
 
     @property
     def left_out(self) -> list:

@@ -41,10 +41,13 @@ def test_the_registry_opens_a_ros2_link_with_the_whole_robot_link_protocol(linke
 
 def test_its_status_and_health_name_the_domain_and_the_discovery_range(linked, ros2_settings):
     where = f"domain {ros2_settings.domain_id}, localhost"
-    assert linked.status().state == "connected" and linked.status().where == f"ROS 2, {where}"
+    assert linked.status().state == "connected" and str(linked.status().where) == f"ROS 2, {where}"
     link = linked.health()[0]
     assert (link.name, link.level) == ("ROS 2", "green") and str(link.detail).startswith(where)
     assert linked.status().round_trip is not None  # measured by the health look
+    german = f"Domäne {ros2_settings.domain_id}, localhost"
+    assert linked.status().where.in_language("de") == f"ROS 2, {german}"
+    assert link.detail.in_language("de").startswith(german)
 
 
 def test_the_topic_monitor_sees_the_ros2_graph(linked):

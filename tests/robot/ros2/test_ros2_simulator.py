@@ -60,7 +60,7 @@ def test_a_plain_rclpy_node_drives_the_simulated_turtlebot(simulated_turtlebot, 
     assert result["end"] >= result["start"] + 0.05
     assert ("/sensor_state", "turtlebot3_msgs/SensorState") in [
         (name, type_name) for name, type_name, _why in simulated_turtlebot.left_out]
-    assert "domain" in simulated_turtlebot.where
+    assert "domain" in str(simulated_turtlebot.where)
 
 
 def test_a_simulator_playing_jazzy_is_driven_with_twist_stamped(turtlebot, ros2_settings):
@@ -69,7 +69,7 @@ def test_a_simulator_playing_jazzy_is_driven_with_twist_stamped(turtlebot, ros2_
     node = serve_simulator(turtlebot, {"domain_id": str(ros2_settings.domain_id), "discovery": "localhost",
                                        "ros_distribution": "jazzy"}, speed=5.0)
     try:
-        assert node.where.startswith("ROS 2 Jazzy, domain")
+        assert str(node.where).startswith("ROS 2 Jazzy, domain")
         driven = subprocess.run([str(ROS2_PYTHON), "-c", DRIVER, "stamped"], env=ros2_settings.environment(),
                                 capture_output=True, text=True, timeout=60)
         result = json.loads(driven.stdout.strip().splitlines()[-1])
