@@ -146,7 +146,8 @@ def test_the_graph_lists_the_robots_topics_with_types_and_health(ros2_robot):
 def test_the_connection_says_where_and_how_fast(ros2_robot):
     connection = ros2_robot.connection
     assert connection.status == "connected" and not connection.lost
-    assert connection.master_uri.startswith("ROS 2, domain ")
+    assert str(connection.master_uri).startswith("ROS 2, domain ")
+    assert connection.master_uri.in_language("de").startswith("ROS 2, Domäne ")
     ros2_robot.health()
     assert connection.round_trip is not None
 
