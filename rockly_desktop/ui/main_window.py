@@ -16,6 +16,7 @@ from rockly_desktop.ui.examples_menu import ExamplesMenu
 from rockly_desktop.ui.health_bar import HealthBar
 from rockly_desktop.ui.help_dialogs import show_first_steps, show_shortcuts
 from rockly_desktop.ui.message_boxes import plain_message_box
+from rockly_desktop.ui.plain_text import mnemonic_free, plain_label
 from rockly_desktop.ui.preferences import PreferencesDialog
 from rockly_desktop.ui.program_files import ProgramFiles
 from rockly_desktop.ui.recovery_prompt import RecoveryPrompt
@@ -82,7 +83,7 @@ class MainWindow(QMainWindow):
         self.tabifyDockWidget(self.console, self.monitor_dock)
         self.tabifyDockWidget(self.console, self.plot_dock)
         self.console.raise_()
-        self.profile_label = QLabel(self)
+        self.profile_label = plain_label(parent=self, objectName="profile_label")
         self.tablet = QtTablet(self, self.profile.display_name())
         self.tablet.sig_notice.connect(lambda _robot, text: self.console.append(
             tr("robot_says", self.language, text=text), "robot"))
@@ -452,7 +453,8 @@ class MainWindow(QMainWindow):
         robot_menu = bar.addMenu(tr("menu_robot", language))
         self.profile_actions = QActionGroup(self)
         for profile in self.registry.profiles.values():
-            action = QAction(f"{profile.display_name(language)} ({profile.version})", self, checkable=True)
+            action = QAction(mnemonic_free(f"{profile.display_name(language)} ({profile.version})"), self,
+                             checkable=True)
             action.setData(profile.id)
             action.setChecked(profile.id == self.profile.id)
             action.triggered.connect(lambda _checked=False, pid=profile.id: self.choose_profile(pid))
@@ -481,7 +483,7 @@ class MainWindow(QMainWindow):
     def _fill_recent_menu(self):
         self.recent_menu.clear()
         for path in self.settings.recent_files:
-            self.recent_menu.addAction(path, lambda p=path: self.files.open(p))
+            self.recent_menu.addAction(mnemonic_free(path), lambda p=path: self.files.open(p))
         self.recent_menu.addSeparator()
         self.recent_menu.addAction(tr("clear_recent", self.language), self.settings.clear_recent_files)
 
