@@ -1,7 +1,7 @@
 """Rockly's main window: the block editor, the run toolbar, the docks, menus and the status bar."""
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QEvent, Qt, QTimer
 from PySide6.QtGui import QAction, QActionGroup, QKeySequence
-from PySide6.QtWidgets import QDockWidget, QLabel, QMainWindow, QMessageBox
+from PySide6.QtWidgets import QApplication, QDockWidget, QLabel, QMainWindow, QMessageBox
 
 from rockly_desktop import __version__
 from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS, EditorView
@@ -108,6 +108,7 @@ class MainWindow(QMainWindow):
 
         self.files = ProgramFiles(self.document, self.editor, settings, registry, self)
         self.files.sig_status.connect(lambda text: self.statusBar().showMessage(text, 8000))
+        self.files.may_reload = lambda: self.runs.state == "idle"
         self.files.sig_show_program.connect(self.show_program)
         self.files.sig_program_replaced.connect(self.robots.reset_if_wanted)
         self.files.sig_program_replaced.connect(self.variables.clear)
@@ -486,6 +487,17 @@ class MainWindow(QMainWindow):
             self.recent_menu.addAction(mnemonic_free(path), lambda p=path: self.files.open(p))
         self.recent_menu.addSeparator()
         self.recent_menu.addAction(tr("clear_recent", self.language), self.settings.clear_recent_files)
+
+    def event(self, event):
+        """Qt override: back at the front, the window takes in a change another window or program made
+        to its file (once the activation is over: a question must not open inside it)."""
+        if event.type() == QEvent.Type.WindowActivate:
+            QTimer.singleShot(0, self, self._follow_disk)
+        return super().event(event)
+
+    def _follow_disk(self):
+        if self.runs.state == "idle" and not self._close_waiting and QApplication.activeModalWidget() is None:
+            self.files.follow_disk()
 
     # --- closing ------------------------------------------------------------------------
 
