@@ -5,6 +5,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QLabel
 from window_tools import WindowDriver
 
+from rockly_desktop.ui.plain_text import tooltip_text
 from rockly_desktop.ui.preferences import PreferencesDialog
 from rockly_desktop.ui.settings import AppSettings
 from rockly_desktop.ui.state_panels import StatePanels
@@ -77,3 +78,10 @@ def test_a_profiles_html_name_and_labels_show_as_literal_text(qtbot, tmp_path):
         assert tab.capability_boxes["arm"].text() == f"{HOSTILE} && arm"  # drawn as "& arm", no shortcut
     finally:
         driver.close_all()
+
+
+def test_a_tool_tip_shows_html_like_text_as_written():
+    document = QtGui.QTextDocument()
+    document.setHtml(tooltip_text(f"{HOSTILE}\n& more"))
+    assert document.toPlainText() == f"{HOSTILE}\n& more"
+    assert tooltip_text("") == ""
