@@ -2,12 +2,14 @@
 import XML, export Python, and restoring a program a crash left unsaved.
 
 Every failure is shown as a plain message; a failed open or import leaves the program
-on screen untouched, and a failed save leaves the file on disk untouched. A file another
-window or program changed since this window opened or saved it is never written over
-unasked: Save asks whether to save as another file, overwrite or reload it, and when the
-window comes back to the front an unchanged program is reloaded (a changed one asks). A program that
+on screen untouched, and a failed save leaves the file on disk untouched. A program that
 opens with changes (its profile is not installed, or its blocks could not take some of
 its values) is opened as changed, with a message saying what changed.
+
+A file another window or program changed since this window opened or saved it (its
+``core.file_stamp`` differs) is never written over unasked: Save asks whether to save as
+another file, overwrite or reload it; when the window comes back to the front, a program
+without changes of its own is reloaded and one with changes asks.
 """
 import json
 from pathlib import Path

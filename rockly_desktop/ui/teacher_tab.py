@@ -55,8 +55,9 @@ class TeacherTab(QStackedWidget):
         self.unlock_button.clicked.connect(self.unlock)
         layout.addRow(self.unlock_button)
         self.problem = QLabel(page, objectName="teacher_problem", wordWrap=True)
-        if not first_time and self._teacher.pin_wait() > 0:  # said at once, before anyone types in vain
-            self.problem.setText(wait_text(self._teacher.pin_wait(), language))
+        wait = 0 if first_time else self._teacher.pin_wait()
+        if wait > 0:  # said at once, before anyone types in vain
+            self.problem.setText(wait_text(wait, language))
         layout.addRow(self.problem)
         return page
 
