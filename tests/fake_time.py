@@ -5,7 +5,7 @@ from waiting import eventually
 class FakeTime:
     """Stands in for a module's ``time`` (``monkeypatch.setattr(module, "time", FakeTime())``).
 
-    ``monotonic()`` is ``now``.
+    ``monotonic()`` and ``time()`` are ``now``.
     """
 
     def __init__(self):
@@ -13,6 +13,10 @@ class FakeTime:
         self.reads = 0
 
     def monotonic(self):
+        self.reads += 1
+        return self.now
+
+    def time(self):
         self.reads += 1
         return self.now
 

@@ -20,6 +20,7 @@ from pathlib import Path
 from rockly_desktop.core import deep_json
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import ProgramFileError
+from rockly_desktop.core.file_stamp import FileStamp, stamp_written
 
 FORMAT_NAME = "rockly-program"
 FORMAT_VERSION = 1
@@ -121,8 +122,9 @@ def load_program(path) -> Program:
     return parse_program(read_text_file(path), path)
 
 
-def write_text_atomically(path, text: str) -> None:
-    """Replace ``path`` with ``text`` so that readers see the old or the new file, never half.
+def write_text_atomically(path, text: str):
+    """Replace ``path`` with ``text`` so that readers see the old or the new file, never half;
+    return the FileStamp of what was written (None for something not a regular file).
 
     The text goes to a temporary file in the target's folder, is flushed to disk and then
     renamed over the target. An existing file keeps its permission bits; a new one gets
@@ -146,9 +148,10 @@ def write_text_atomically(path, text: str) -> None:
         raise ProgramFileError(path, app_local_text("file_not_saved_folder"))
     if existing is not None and not stat.S_ISREG(existing.st_mode):
         _write_directly(path, data)
-        return
+        return None
     target = Path(os.path.realpath(path)) if os.path.islink(path) else path
-    _replace_file(path, target, data, stat.S_IMODE(existing.st_mode) if existing else _new_file_mode())
+    written = _replace_file(path, target, data, stat.S_IMODE(existing.st_mode) if existing else _new_file_mode())
+    return stamp_written(written, data)
 
 
 def _write_directly(path: Path, data: bytes) -> None:
@@ -161,9 +164,11 @@ def _write_directly(path: Path, data: bytes) -> None:
         raise ProgramFileError(path, app_local_text("file_not_saved", problem=error.strerror)) from None
 
 
-def _replace_file(path: Path, target: Path, data: bytes, mode: int) -> None:
+def _replace_file(path: Path, target: Path, data: bytes, mode: int) -> os.stat_result:
     """Write ``data`` to a temporary file next to ``target`` and rename it over ``target``;
-    errors name ``path`` (what the person asked for)."""
+    errors name ``path`` (what the person asked for). Returns the new file's status, taken
+    before the rename, which keeps its inode, size and modification time: what another
+    writer puts there after the rename cannot be taken for this one's."""
     folder = target.parent if str(target.parent) else Path(".")
     remove_stale_temp_files(target)
     try:
@@ -176,6 +181,7 @@ def _replace_file(path: Path, target: Path, data: bytes, mode: int) -> None:
             stream.flush()
             os.fsync(stream.fileno())
         os.chmod(temp_name, mode)
+        written = os.stat(temp_name)
         os.replace(temp_name, target)
     except BaseException as error:
         try:
@@ -185,6 +191,7 @@ def _replace_file(path: Path, target: Path, data: bytes, mode: int) -> None:
         if isinstance(error, OSError):
             raise ProgramFileError(path, app_local_text("file_not_saved", problem=error.strerror)) from None
         raise
+    return written
 
 
 STALE_TEMP_SECONDS = 60  # older than any save still writing
@@ -222,6 +229,6 @@ def _new_file_mode() -> int:
     return 0o666 & ~umask
 
 
-def save_program(path, program: Program) -> None:
-    """Write a program to disk atomically."""
-    write_text_atomically(path, program.to_json())
+def save_program(path, program: Program) -> FileStamp:
+    """Write a program to disk atomically; the FileStamp of what was written (None: not a regular file)."""
+    return write_text_atomically(path, program.to_json())

@@ -11,7 +11,9 @@ meanwhile. A lock file appears already locked (it is locked under a temporary na
 renamed), so a lock file that can be locked has no owner.
 
 A recovery file is a ``.rockly`` program with one more key: ``"recovery": {"file": the
-program's file or null, "saved_at": ISO 8601 time, "pid": ...}``; any Rockly can open it.
+program's file or null, "saved_at": ISO 8601 time, "pid": ..., "file_stamp": the program
+file's FileStamp as the window last read or wrote it, or absent}``; any Rockly can open it.
+The stamp lets the window that restores the program notice that the file changed since.
 """
 import fcntl
 import os
@@ -22,6 +24,7 @@ from pathlib import Path
 
 from rockly_desktop.core import deep_json, paths
 from rockly_desktop.core.errors import ProgramFileError
+from rockly_desktop.core.file_stamp import FileStamp
 from rockly_desktop.core.program import (
     PROGRAM_SUFFIX,
     Program,
@@ -67,13 +70,16 @@ class RecoverySession:
         self.lock_path = self.folder / f"{name}{LOCK_SUFFIX}"
         self._lock = None
 
-    def write(self, program: Program, program_path=None):
-        """Keep ``program`` (belonging to the file ``program_path``, None if never saved),
-        replacing the last copy atomically; raises ProgramFileError when it cannot."""
+    def write(self, program: Program, program_path=None, file_stamp=None):
+        """Keep ``program`` (belonging to the file ``program_path``, None if never saved, which was
+        ``file_stamp`` when the window read or wrote it), replacing the last copy atomically;
+        raises ProgramFileError when it cannot."""
         if self._lock is None:
             self._hold_lock()
         saved_at = datetime.now(timezone.utc).isoformat(timespec="seconds")
         recovery = {"file": str(program_path) if program_path else None, "saved_at": saved_at, "pid": os.getpid()}
+        if program_path and file_stamp is not None:
+            recovery["file_stamp"] = file_stamp.to_json()
         write_text_atomically(self.path, program.to_json(extra={"recovery": recovery}))
 
     def remove(self):
@@ -105,13 +111,15 @@ class Recovery:
     ``discard``-ed (deleted) or ``release``-d (left for a later start).
 
     ``program_path`` is the file the program belongs to (None: it was never saved);
-    ``saved_at`` when the copy was written (timezone-aware).
+    ``saved_at`` when the copy was written (timezone-aware); ``file_stamp`` the program file's
+    FileStamp as the window knew it (None: not known, a copy an older Rockly wrote).
     """
 
     path: Path
     program_path: str
     saved_at: datetime
     program: Program = field(repr=False)
+    file_stamp: FileStamp = None
     _lock: int = field(default=None, repr=False)
 
     @property
@@ -149,7 +157,7 @@ def read_recovery(path) -> Recovery:
     program_path = details.get("file")
     if saved_at.tzinfo is None or not (program_path is None or isinstance(program_path, str)):
         raise ProgramFileError(path, "the recovery file's \"recovery\" is not valid")
-    return Recovery(path, program_path, saved_at, program)
+    return Recovery(path, program_path, saved_at, program, FileStamp.from_json(details.get("file_stamp")))
 
 
 def claim_abandoned(folder=None):

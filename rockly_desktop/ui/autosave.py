@@ -87,7 +87,7 @@ class Autosave(QObject):
             return
         program = Program(self.document.profile.id, self._workspace, self.document.breakpoints)
         try:
-            self.session.write(program, self.document.path)
+            self.session.write(program, self.document.path, self.document.disk_stamp)
         except ProgramFileError as error:
             self.sig_failed.emit(tr("autosave_failed", self._language(), error=error))
             return

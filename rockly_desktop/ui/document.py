@@ -1,4 +1,5 @@
-"""The program the window edits, as its helpers share it: file, robot profile, breakpoints, changes.
+"""The program the window edits, as its helpers share it: file, robot profile, breakpoints, changes,
+and what its file was on disk when this window last read or wrote it.
 
 No widgets: the window's helpers (file commands, the run session, the robot choice)
 read and change it, and the window follows its signals (title, Robot menu, editor).
@@ -7,11 +8,13 @@ from pathlib import Path
 
 from PySide6.QtCore import QObject, Signal
 
+from rockly_desktop.core.file_stamp import stamp_file
 from rockly_desktop.ui.texts import tr
 
 
 class Document(QObject):
-    """The open program: ``path`` (None until saved), ``profile``, ``breakpoints`` (block ids), ``modified``."""
+    """The open program: ``path`` (None until saved), ``profile``, ``breakpoints`` (block ids), ``modified``;
+    ``disk_stamp``, the FileStamp of ``path`` as this window last read or wrote it (None: not known)."""
 
     sig_changed = Signal()  # path or modified flag changed
     sig_profile_changed = Signal(object)  # the Profile programs are now made for
@@ -22,6 +25,7 @@ class Document(QObject):
         self._path = None
         self._modified = False
         self.breakpoints = []
+        self.disk_stamp = None
 
     @property
     def path(self):
@@ -54,11 +58,26 @@ class Document(QObject):
         """The person changed the program."""
         self.modified = True
 
-    def set_file(self, path, modified: bool):
-        """The program on screen now belongs to ``path`` (None: no file yet)."""
+    def set_file(self, path, modified: bool, disk_stamp=None):
+        """The program on screen now belongs to ``path`` (None: no file yet), which was ``disk_stamp``
+        when this window read or wrote it."""
         self._path = str(path) if path else None
         self._modified = modified
+        self.disk_stamp = disk_stamp if path else None
         self.sig_changed.emit()
+
+    def changed_on_disk(self):
+        """The file's FileStamp now when another window or program changed its content since this
+        window read or wrote it; None while it has not (or is gone: saving then loses nothing)."""
+        if self._path is None or self.disk_stamp is None:
+            return None
+        now = stamp_file(self._path, self.disk_stamp)
+        if now is None or now == self.disk_stamp:
+            return None
+        if now.sha256 == self.disk_stamp.sha256:  # touched, or written again with the same content
+            self.disk_stamp = now
+            return None
+        return now
 
     def display_name(self, language: str) -> str:
         """The file name for the title bar and prompts."""

@@ -7,6 +7,7 @@ from PySide6.QtWidgets import QMenu
 
 from rockly_desktop.core.paths import examples_dir
 from rockly_desktop.core.program import PROGRAM_SUFFIX
+from rockly_desktop.ui.plain_text import mnemonic_free
 from rockly_desktop.ui.texts import tr
 
 
@@ -47,7 +48,7 @@ class ExamplesMenu(QMenu):
         self.clear()
         examples = example_programs(self._profile().id, language=self._language)
         for name, path in examples:
-            action = self.addAction(name, lambda p=str(path), n=name: self._files.open_copy(p, n))
+            action = self.addAction(mnemonic_free(name), lambda p=str(path), n=name: self._files.open_copy(p, n))
             action.setData(str(path))
         if not examples:
             self.addAction(tr("no_examples", self._language)).setEnabled(False)

@@ -20,6 +20,7 @@ from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.program import PROGRAM_SUFFIX, Program, save_program
 from rockly_desktop.ui.file_dialogs import ConfinedFileDialogs
 from rockly_desktop.ui.idle_watch import IdleWatch
+from rockly_desktop.ui.teacher_settings import wait_text
 from rockly_desktop.ui.texts import tr
 
 
@@ -170,7 +171,7 @@ class LeaveDialog(QDialog):
         self.setWindowTitle(tr("kiosk_leave_title", language))
         self._teacher, self._language = teacher, language
         self.pin = QLineEdit(self, objectName="kiosk_pin", echoMode=QLineEdit.EchoMode.Password)
-        self.problem = QLabel(self, objectName="kiosk_problem")
+        self.problem = QLabel(self, objectName="kiosk_problem", wordWrap=True)
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel, self)
         buttons.accepted.connect(self.accept)
         buttons.rejected.connect(self.reject)
@@ -182,17 +183,20 @@ class LeaveDialog(QDialog):
 
     def accept(self):
         """Qt override: close only when the PIN is right."""
-        right = self._teacher.has_pin and self._teacher.check_pin(self.pin.text())
+        pin = self.pin.text()
         self.pin.clear()
-        if right:
-            self.problem.clear()
-            super().accept()
-        else:
+        if not self._teacher.has_pin:
             self.problem.setText(tr("teacher_wrong_pin", self._language))
+            return
+        answer = self._teacher.try_pin(pin)
+        self.problem.setText(answer.problem(self._language))
+        if answer.right:
+            super().accept()
 
     def open(self):
         """Qt override: open with an empty PIN field."""
-        self.problem.clear()
+        wait = self._teacher.pin_wait()
+        self.problem.setText(wait_text(wait, self._language) if wait > 0 else "")
         self.pin.clear()
         super().open()
         self.pin.setFocus()

@@ -1,7 +1,7 @@
 """Rockly's main window: the block editor, the run toolbar, the docks, menus and the status bar."""
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QEvent, Qt, QTimer
 from PySide6.QtGui import QAction, QActionGroup, QKeySequence
-from PySide6.QtWidgets import QDockWidget, QLabel, QMainWindow, QMessageBox
+from PySide6.QtWidgets import QApplication, QDockWidget, QLabel, QMainWindow, QMessageBox
 
 from rockly_desktop import __version__
 from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS, EditorView
@@ -16,6 +16,7 @@ from rockly_desktop.ui.examples_menu import ExamplesMenu
 from rockly_desktop.ui.health_bar import HealthBar
 from rockly_desktop.ui.help_dialogs import show_first_steps, show_shortcuts
 from rockly_desktop.ui.message_boxes import plain_message_box
+from rockly_desktop.ui.plain_text import mnemonic_free, plain_label
 from rockly_desktop.ui.preferences import PreferencesDialog
 from rockly_desktop.ui.program_files import ProgramFiles
 from rockly_desktop.ui.recovery_prompt import RecoveryPrompt
@@ -82,7 +83,7 @@ class MainWindow(QMainWindow):
         self.tabifyDockWidget(self.console, self.monitor_dock)
         self.tabifyDockWidget(self.console, self.plot_dock)
         self.console.raise_()
-        self.profile_label = QLabel(self)
+        self.profile_label = plain_label(parent=self, objectName="profile_label")
         self.tablet = QtTablet(self, self.profile.display_name())
         self.tablet.sig_notice.connect(lambda _robot, text: self.console.append(
             tr("robot_says", self.language, text=text), "robot"))
@@ -107,6 +108,7 @@ class MainWindow(QMainWindow):
 
         self.files = ProgramFiles(self.document, self.editor, settings, registry, self)
         self.files.sig_status.connect(lambda text: self.statusBar().showMessage(text, 8000))
+        self.files.may_reload = lambda: self.runs.state == "idle"
         self.files.sig_show_program.connect(self.show_program)
         self.files.sig_program_replaced.connect(self.robots.reset_if_wanted)
         self.files.sig_program_replaced.connect(self.variables.clear)
@@ -452,7 +454,8 @@ class MainWindow(QMainWindow):
         robot_menu = bar.addMenu(tr("menu_robot", language))
         self.profile_actions = QActionGroup(self)
         for profile in self.registry.profiles.values():
-            action = QAction(f"{profile.display_name(language)} ({profile.version})", self, checkable=True)
+            action = QAction(mnemonic_free(f"{profile.display_name(language)} ({profile.version})"), self,
+                             checkable=True)
             action.setData(profile.id)
             action.setChecked(profile.id == self.profile.id)
             action.triggered.connect(lambda _checked=False, pid=profile.id: self.choose_profile(pid))
@@ -481,9 +484,20 @@ class MainWindow(QMainWindow):
     def _fill_recent_menu(self):
         self.recent_menu.clear()
         for path in self.settings.recent_files:
-            self.recent_menu.addAction(path, lambda p=path: self.files.open(p))
+            self.recent_menu.addAction(mnemonic_free(path), lambda p=path: self.files.open(p))
         self.recent_menu.addSeparator()
         self.recent_menu.addAction(tr("clear_recent", self.language), self.settings.clear_recent_files)
+
+    def event(self, event):
+        """Qt override: back at the front, the window takes in a change another window or program made
+        to its file (once the activation is over: a question must not open inside it)."""
+        if event.type() == QEvent.Type.WindowActivate:
+            QTimer.singleShot(0, self, self._follow_disk)
+        return super().event(event)
+
+    def _follow_disk(self):
+        if self.runs.state == "idle" and not self._close_waiting and QApplication.activeModalWidget() is None:
+            self.files.follow_disk()
 
     # --- closing ------------------------------------------------------------------------
 

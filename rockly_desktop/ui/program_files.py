@@ -5,6 +5,11 @@ Every failure is shown as a plain message; a failed open or import leaves the pr
 on screen untouched, and a failed save leaves the file on disk untouched. A program that
 opens with changes (its profile is not installed, or its blocks could not take some of
 its values) is opened as changed, with a message saying what changed.
+
+A file another window or program changed since this window opened or saved it (its
+``core.file_stamp`` differs) is never written over unasked: Save asks whether to save as
+another file, overwrite or reload it; when the window comes back to the front, a program
+without changes of its own is reloaded and one with changes asks.
 """
 import json
 from pathlib import Path
@@ -13,10 +18,13 @@ from PySide6.QtCore import QObject, Signal
 from PySide6.QtWidgets import QMessageBox
 
 from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS
-from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.core.app_texts import app_local_text
+from rockly_desktop.core.errors import ProgramFileError, RocklyError
 from rockly_desktop.core.export import python_module_text
+from rockly_desktop.core.file_stamp import stamp_file
 from rockly_desktop.core.program import PROGRAM_SUFFIX, Program, save_program, write_text_atomically
 from rockly_desktop.profiles.opening import read_program_to_open, unknown_blocks_error
+from rockly_desktop.ui.disk_changes import OVERWRITE, RELOAD, SAVE_AS, changed_on_disk_box
 from rockly_desktop.ui.file_dialogs import FileDialogs
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.texts import tr
@@ -29,7 +37,8 @@ class ProgramFiles(QObject):
     first) carry on when it comes: they take ``then(ok)``, called once the command has
     ended (at once when nothing had to wait; False when it failed or was cancelled).
     ``parent`` is the widget the dialogs belong to; ``file_dialogs`` asks for files (kiosk mode
-    puts dialogs confined to one folder in its place).
+    puts dialogs confined to one folder in its place); ``may_reload()`` says whether the program on
+    screen may be replaced now (not while it runs).
     """
 
     sig_status = Signal(str)
@@ -45,6 +54,8 @@ class ProgramFiles(QObject):
         self._saves_waiting = 0
         self._after_saves = []  # continuations waiting until no save waits for the page
         self.file_dialogs = FileDialogs()
+        self.may_reload = lambda: True
+        self._asked_about = None  # the change on disk last asked about (asked once, until Save)
 
     @property
     def saving(self) -> bool:
@@ -89,11 +100,28 @@ class ProgramFiles(QObject):
         self.maybe_save(then=go_on)
 
     def save(self, then=None):
-        """Save to the current file, or ask for one."""
+        """Save to the current file (asking first when it changed on disk), or ask for one."""
         if self.document.path is None:
             self.save_as(then=then)
+            return
+        changed = self.document.changed_on_disk()
+        if changed is None:
+            self._write(self.document.path, then, guard=True)
         else:
-            self._write(self.document.path, then)
+            self._settle_disk_change(changed, then)
+
+    def follow_disk(self):
+        """Take in a change another window or program made to the file (the window came back to the
+        front): a program without changes here is reloaded; with changes, the person is asked once."""
+        if self._saves_waiting:
+            return
+        changed = self.document.changed_on_disk()
+        if changed is None or changed == self._asked_about:
+            return
+        if self.document.modified or not self.may_reload():
+            self._settle_disk_change(changed, None)
+        else:
+            self._reload(None)
 
     def save_as(self, path=None, then=None):
         """Save under a new name."""
@@ -157,8 +185,9 @@ class ProgramFiles(QObject):
 
     # --- helpers ------------------------------------------------------------------------
 
-    def _set_file(self, path, modified: bool):
-        self.document.set_file(path, modified)
+    def _set_file(self, path, modified: bool, disk_stamp=None):
+        self._asked_about = None
+        self.document.set_file(path, modified, disk_stamp)
         if path:
             self.settings.add_recent_file(str(path))
 
@@ -180,7 +209,33 @@ class ProgramFiles(QObject):
 
         self.maybe_save(then=go_on)
 
+    def _settle_disk_change(self, changed, then):
+        """Ask what to do with the file ``changed`` on disk (its FileStamp now), then do it."""
+        self._asked_about = changed
+        language, may_reload = self.settings.language, self.may_reload()
+        answer = changed_on_disk_box(self.document.display_name(language), language, self.parent(), may_reload).exec()
+        if answer == OVERWRITE:
+            self._write(self.document.path, then, guard=True, accepted=changed)
+        elif answer == SAVE_AS:
+            self.save_as(then=then)
+        elif answer == RELOAD and may_reload:
+            self._reload(then)
+        else:
+            _report(then, False)
+
+    def _reload(self, then):
+        """Show the file as it is on disk now; ``then(False)``: nothing of this window's was saved."""
+        name = self.document.display_name(self.settings.language)
+
+        def reloaded(ok):
+            if ok:
+                self.sig_status.emit(tr("reloaded", self.settings.language, name=name))
+            _report(then, False)
+
+        self._open_checked(self.document.path, reloaded)
+
     def _open_checked(self, path, then, recovery=None, copy_of=None):
+        disk_stamp = stamp_file(path)  # before reading: a change made while reading is noticed, not missed
         try:
             program = read_program_to_open(path, self.registry, self.document.profile)
         except RocklyError as error:
@@ -204,7 +259,9 @@ class ProgramFiles(QObject):
                 changed = bool(program.missing_profile or program.replaced_fields)
                 if recovery is not None:
                     self.document.breakpoints = list(program.breakpoints)
-                    self._set_file(recovery.program_path, True)
+                    # the file as the crashed window knew it: changed since, Save asks before writing
+                    self._set_file(recovery.program_path, True,
+                                   recovery.file_stamp or (recovery.program_path and stamp_file(recovery.program_path)))
                     self.sig_status.emit(tr("restored", language))
                 elif copy_of is not None:
                     self.document.breakpoints = list(program.breakpoints)
@@ -216,7 +273,7 @@ class ProgramFiles(QObject):
                     self.sig_status.emit(tr("imported", language, path=path))
                 else:
                     self.document.breakpoints = list(program.breakpoints)
-                    self._set_file(path, changed)
+                    self._set_file(path, changed, disk_stamp)
                     self.sig_status.emit(tr("opened", language, path=path))
                 if changed:
                     self._show_opening_changes(program)
@@ -249,10 +306,17 @@ class ProgramFiles(QObject):
         box.setObjectName("opening_changes_box")
         box.open()
 
-    def _write(self, path, then):
+    def _write(self, path, then, guard=False, accepted=None):
+        """Save to ``path``; with ``guard`` (the document's own file) only while the file on disk is
+        as this window knew it, or is ``accepted``, the change the person chose to overwrite."""
         def write(state):
-            save_program(path, Program(self.document.profile.id, state["workspace"], self.document.breakpoints))
-            self._set_file(path, False)
+            if guard:
+                now = self.document.changed_on_disk()
+                if now is not None and now != accepted:
+                    raise ProgramFileError(path, app_local_text("file_changed_meanwhile"))
+            disk_stamp = save_program(path, Program(self.document.profile.id, state["workspace"],
+                                                    self.document.breakpoints))
+            self._set_file(path, False, disk_stamp)
             self.sig_status.emit(tr("saved", self.settings.language, path=path))
 
         self._saves_waiting += 1

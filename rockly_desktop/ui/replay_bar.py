@@ -11,6 +11,7 @@ from PySide6.QtCore import QRectF, Qt, QTimer, Signal
 from PySide6.QtGui import QColor, QPainter
 from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QSlider, QToolButton, QVBoxLayout, QWidget
 
+from rockly_desktop.ui.plain_text import tooltip_text
 from rockly_desktop.ui.texts import tr
 
 SPEEDS = (0.25, 0.5, 1.0, 2.0, 4.0)
@@ -51,7 +52,7 @@ class MarkerStrip(QWidget):
     def mouseMoveEvent(self, event):
         """Qt override: the marker under the pointer as a tooltip."""
         marker = self.nearest(event.position().x())
-        self.setToolTip(tr(f"marker_{marker.kind}", self.language, text=marker.text) if marker else "")
+        self.setToolTip(tooltip_text(tr(f"marker_{marker.kind}", self.language, text=marker.text)) if marker else "")
 
     def mousePressEvent(self, event):
         """Qt override: jump to the marker clicked."""

@@ -5,12 +5,13 @@ Owns the robots it made (one simulator per profile, one link per kind and profil
 connection dialog and the connection indicator in the status bar.
 """
 from PySide6.QtCore import QObject, QTimer, Signal
-from PySide6.QtWidgets import QLabel, QMessageBox
+from PySide6.QtWidgets import QMessageBox
 
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.robot.links import DEFAULT_KIND, check_available, link_kind, open_link
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
 from rockly_desktop.ui.message_boxes import plain_message_box
+from rockly_desktop.ui.plain_text import plain_label, tooltip_text
 from rockly_desktop.ui.texts import robot_problem, said_in, tr
 
 STATUS_COLOURS = {"connected": "#2e7d32", "connecting": "#f9a825", "lost": "#c62828"}
@@ -34,7 +35,7 @@ class RobotChoice(QObject):
         self.settings = settings
         self.kind = DEFAULT_KIND
         self._robots = {}
-        self.status = QLabel(parent)
+        self.status = plain_label(parent=parent)
         self.status.hide()
         self._timer = QTimer(self)
         self._timer.setInterval(500)
@@ -145,7 +146,7 @@ class RobotChoice(QObject):
         self.status.setText(f"{text} — {where}" if status is not None else text)  # e.g. its domain on ROS 2
         self.status.setStyleSheet(f"color: {STATUS_COLOURS[state]}; font-weight: bold;")
         if status is not None and status.round_trip is not None:
-            self.status.setToolTip(f"{where} — {status.round_trip * 1000:.1f} ms")
+            self.status.setToolTip(tooltip_text(f"{where} — {status.round_trip * 1000:.1f} ms"))
 
     def shutdown(self):
         """Stop every robot safely (the window is closing)."""

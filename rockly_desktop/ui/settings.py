@@ -1,4 +1,12 @@
-"""What Rockly remembers between starts: layout, language, profile, last and recent files."""
+"""What Rockly remembers between starts: layout, language, profile, last and recent files.
+
+The settings file holds the teacher's PIN hash and limits: only its owner may read it (0600,
+in a folder of Rockly's own kept 0700). QSettings rewrites the file through a temporary one
+and keeps the mode the file had, so the file is made private before QSettings first writes it.
+"""
+import os
+from pathlib import Path
+
 from PySide6.QtCore import QSettings
 
 from rockly_desktop.core.app_texts import languages
@@ -22,6 +30,7 @@ class AppSettings:
             self._store = QSettings("Rockly", "Rockly")
         else:
             self._store = QSettings(str(path), QSettings.Format.IniFormat)
+        keep_private(Path(self._store.fileName()), own_folder=path is None)
         self.language_watchers = []  # called with the new language when it changes
         self.kiosk_mode = False
 
@@ -204,6 +213,21 @@ class AppSettings:
     def sync(self):
         """Write to disk now."""
         self._store.sync()
+
+
+def keep_private(file: Path, own_folder: bool) -> None:
+    """Make the settings ``file`` readable by its owner only (0600), made empty if missing; its folder
+    0700 when Rockly makes it or when it is Rockly's ``own_folder``. Failures are left to QSettings
+    (a read-only home still starts Rockly)."""
+    try:
+        if not file.parent.exists():
+            file.parent.mkdir(mode=0o700, parents=True)
+        elif own_folder:
+            os.chmod(file.parent, 0o700)
+        os.close(os.open(file, os.O_WRONLY | os.O_CREAT | os.O_CLOEXEC, 0o600))
+        os.chmod(file, 0o600)
+    except OSError:
+        pass
 
 
 def _count(value, default: int) -> int:

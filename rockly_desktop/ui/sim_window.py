@@ -6,10 +6,11 @@ shows tablet questions through ``QtTablet``, which marshals them to the GUI thre
 lets the ROS thread wait for the person's answer.
 """
 from PySide6.QtCore import Qt, QTimer, Signal
-from PySide6.QtWidgets import QLabel, QMainWindow
+from PySide6.QtWidgets import QMainWindow
 
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.ui.plain_text import plain_label
 from rockly_desktop.ui.simulator_dock import REFRESH_MS
 from rockly_desktop.ui.tablet import QtTablet
 from rockly_desktop.ui.texts import tr
@@ -39,7 +40,7 @@ class SimulatorWindow(QMainWindow):
         self.simulator = None
         self.view = self._make_view()
         self.setCentralWidget(self.view)
-        self.where_label = QLabel(self)
+        self.where_label = plain_label(parent=self)
         self.statusBar().addPermanentWidget(self.where_label)
         self._timer = QTimer(self)
         self._timer.setInterval(REFRESH_MS)
@@ -54,7 +55,7 @@ class SimulatorWindow(QMainWindow):
                 return view_class(language=self.language)
         except RocklyError as error:
             note = str(error)
-        label = QLabel(note or tr("sim_no_view", self.language), self)
+        label = plain_label(note or tr("sim_no_view", self.language), self)
         label.setWordWrap(True)
         label.setAlignment(Qt.AlignmentFlag.AlignCenter)
         label.setMinimumSize(360, 120)

@@ -4,7 +4,9 @@ A replay of a real robot's run puts its plan view here for a while (``show_recor
 the dock shows even where a real robot hides it), ``show_live_view`` puts the live one back.
 """
 from PySide6.QtCore import Qt, QTimer
-from PySide6.QtWidgets import QDockWidget, QLabel
+from PySide6.QtWidgets import QDockWidget
+
+from rockly_desktop.ui.plain_text import plain_label
 
 REFRESH_MS = 33
 
@@ -33,7 +35,7 @@ class SimulatorDock(QDockWidget):
         if old is not None:
             old.deleteLater()
         if view is None:
-            label = QLabel(note, self)
+            label = plain_label(note, self)
             label.setWordWrap(True)
             label.setAlignment(Qt.AlignmentFlag.AlignCenter)
             self.setWidget(label)

@@ -15,11 +15,12 @@ import math
 import string
 
 from PySide6.QtCore import QLocale, Qt, QTimer
-from PySide6.QtWidgets import QFormLayout, QGroupBox, QLabel, QScrollArea, QVBoxLayout, QWidget
+from PySide6.QtWidgets import QFormLayout, QGroupBox, QScrollArea, QVBoxLayout, QWidget
 
 from rockly_desktop.core.state_store import field_value
 from rockly_desktop.profiles.i18n import localize
 from rockly_desktop.robot.laser import nearest_in_scan
+from rockly_desktop.ui.plain_text import mnemonic_free, plain_label
 from rockly_desktop.ui.texts import tr
 
 REFRESH_MS = 100
@@ -100,13 +101,13 @@ class StatePanels(QScrollArea):
         body = QWidget(self)
         layout = QVBoxLayout(body)
         for panel in panels:
-            box = QGroupBox(localize(panel["panel"], language), body)
+            box = QGroupBox(mnemonic_free(localize(panel["panel"], language)), body)
             form = QFormLayout(box)
             for row in panel["rows"]:
-                value = QLabel(NO_VALUE, box)
+                value = plain_label(NO_VALUE, box)  # a robot's text, as it comes
                 value.setObjectName(f"state:{row['topic']}:{row['field']}")
                 value.setWordWrap(True)     # a long value (a question) wraps, never cut off
-                form.addRow(localize(row["label"], language), value)
+                form.addRow(plain_label(localize(row["label"], language), box), value)
                 self._rows.append((row, value))
             layout.addWidget(box)
         layout.addStretch(1)

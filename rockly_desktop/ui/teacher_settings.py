@@ -1,17 +1,65 @@
 """A teacher's settings per robot profile: toolbox level, maximum speeds, capabilities switched
-off; and the PIN that guards them, kept only as a salted PBKDF2 hash."""
+off; and the PIN that guards them, kept only as a salted PBKDF2 hash.
+
+Wrong PINs cost time: from the third wrong one in a row the next PIN is taken only after a
+wait that doubles with every further wrong one (5 s, 10 s, 20 s … at most 15 minutes), so
+guessing a 4-digit PIN by script takes months instead of minutes. The count and the end of
+the wait are kept in the settings file, so closing the dialog or restarting Rockly does not
+shorten the wait.
+"""
 import hashlib
 import hmac
+import math
 import os
+import time
+from dataclasses import dataclass
 
 from rockly_desktop.robot.limits import Limits
+from rockly_desktop.ui.texts import tr
 
 _ITERATIONS = 200_000
 MIN_PIN_LENGTH = 4
+FREE_WRONG_PINS = 2      # typing slips that cost nothing
+FIRST_WAIT_SECONDS = 5.0
+MAX_WAIT_SECONDS = 15 * 60
 
 
 def _hash(pin: str, salt: bytes) -> str:
     return hashlib.pbkdf2_hmac("sha256", pin.encode("utf-8"), salt, _ITERATIONS).hex()
+
+
+def wait_after(wrong_pins: int) -> float:
+    """Seconds before the next PIN is taken after ``wrong_pins`` wrong ones in a row."""
+    if wrong_pins <= FREE_WRONG_PINS:
+        return 0.0
+    return min(MAX_WAIT_SECONDS, FIRST_WAIT_SECONDS * 2 ** min(wrong_pins - FREE_WRONG_PINS - 1, 16))
+
+
+@dataclass(frozen=True)
+class PinAnswer:
+    """What a PIN typed got: ``right``; ``wait``, seconds before the next PIN is taken; ``refused``
+    when the PIN was not looked at because an earlier wait had not passed."""
+
+    right: bool
+    wait: float = 0.0
+    refused: bool = False
+
+    def problem(self, language: str) -> str:
+        """What to tell the person ("" for a right PIN)."""
+        if self.right:
+            return ""
+        if self.refused:
+            return wait_text(self.wait, language)
+        wrong = tr("teacher_wrong_pin", language)
+        return f"{wrong} {wait_text(self.wait, language)}" if self.wait > 0 else wrong
+
+
+def wait_text(seconds: float, language: str) -> str:
+    """'Too many wrong PINs: the next one is taken in … seconds/minutes.' in ``language``."""
+    if seconds > 90:
+        return tr("teacher_pin_wait_minutes", language, minutes=math.ceil(seconds / 60))
+    whole = max(1, math.ceil(seconds))
+    return tr("teacher_pin_wait_second" if whole == 1 else "teacher_pin_wait_seconds", language, seconds=whole)
 
 
 class TeacherSettings:
@@ -35,12 +83,46 @@ class TeacherSettings:
         return self._get("pin") is not None
 
     def set_pin(self, pin: str):
-        """Keep a hash of ``pin`` (with a new random salt), never the PIN itself."""
+        """Keep a hash of ``pin`` (with a new random salt), never the PIN itself; wrong PINs are forgotten."""
         salt = os.urandom(16)
         self._set("pin", f"pbkdf2_sha256${_ITERATIONS}${salt.hex()}${_hash(pin, salt)}")
+        self._count_wrong_pins(0)
 
-    def check_pin(self, pin: str) -> bool:
-        """True when ``pin`` is the PIN that was set."""
+    def try_pin(self, pin: str) -> PinAnswer:
+        """Check ``pin`` against the PIN that was set, unless a wait after wrong PINs has not passed."""
+        wait = self.pin_wait()
+        if wait > 0:
+            return PinAnswer(False, wait, refused=True)
+        if self._matches(pin):
+            self._count_wrong_pins(0)
+            return PinAnswer(True)
+        wrong = self._wrong_pins() + 1
+        self._count_wrong_pins(wrong)
+        return PinAnswer(False, wait_after(wrong))
+
+    def pin_wait(self) -> float:
+        """Seconds until the next PIN is taken (0: now)."""
+        try:
+            left = float(self._get("pin_wait_until", 0)) - time.time()
+        except (TypeError, ValueError):
+            left = MAX_WAIT_SECONDS  # a damaged entry does not open the lock
+        if left > MAX_WAIT_SECONDS:  # the clock was put back: the wait starts again, no longer than the longest
+            left = MAX_WAIT_SECONDS
+            self._set("pin_wait_until", time.time() + left)
+        return max(0.0, left)
+
+    def _wrong_pins(self) -> int:
+        try:
+            return max(0, int(self._get("wrong_pins", 0)))
+        except (TypeError, ValueError):
+            return FREE_WRONG_PINS + 1
+
+    def _count_wrong_pins(self, count: int):
+        self._set("wrong_pins", count)
+        self._set("pin_wait_until", time.time() + wait_after(count) if count else 0)
+        self._store.sync()  # on disk at once: a restart must not forget the wait
+
+    def _matches(self, pin: str) -> bool:
         stored = str(self._get("pin", ""))
         try:
             _scheme, _iterations, salt, expected = stored.split("$")

@@ -14,7 +14,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from rockly_desktop.ui.teacher_settings import MIN_PIN_LENGTH
+from rockly_desktop.ui.plain_text import mnemonic_free, plain_label
+from rockly_desktop.ui.teacher_settings import MIN_PIN_LENGTH, wait_text
 from rockly_desktop.ui.texts import tr
 
 
@@ -53,7 +54,10 @@ class TeacherTab(QStackedWidget):
         self.unlock_button.setAutoDefault(False)
         self.unlock_button.clicked.connect(self.unlock)
         layout.addRow(self.unlock_button)
-        self.problem = QLabel(page, objectName="teacher_problem")
+        self.problem = QLabel(page, objectName="teacher_problem", wordWrap=True)
+        wait = 0 if first_time else self._teacher.pin_wait()
+        if wait > 0:  # said at once, before anyone types in vain
+            self.problem.setText(wait_text(wait, language))
         layout.addRow(self.problem)
         return page
 
@@ -75,10 +79,12 @@ class TeacherTab(QStackedWidget):
                 self.problem.setText(tr("teacher_pin_mismatch", self._language))
                 return
             self._teacher.set_pin(pin)
-        elif not self._teacher.check_pin(pin):
-            self.problem.setText(tr("teacher_wrong_pin", self._language))
-            self.pin.clear()
-            return
+        else:
+            answer = self._teacher.try_pin(pin)
+            if not answer.right:
+                self.problem.setText(answer.problem(self._language))
+                self.pin.clear()
+                return
         self.pin.clear()
         self.setCurrentIndex(1)
 
@@ -87,7 +93,8 @@ class TeacherTab(QStackedWidget):
         limits = teacher.limits(profile.id)
         page = QWidget(self)
         outer = QVBoxLayout(page)
-        outer.addWidget(QLabel(tr("teacher_for", language, name=profile.display_name(language))))
+        outer.addWidget(plain_label(tr("teacher_for", language, name=profile.display_name(language)), page,
+                                    objectName="teacher_for"))
         form = QFormLayout()
         outer.addLayout(form)
         self.level_box = QComboBox(page, objectName="teacher_level")
@@ -112,7 +119,7 @@ class TeacherTab(QStackedWidget):
         form.addRow(tr("teacher_max_turn", language), self.max_turn)
         self.capability_boxes = {}
         for capability in profile.capabilities:
-            box = QCheckBox(profile.localize(capability["name"], language), page)
+            box = QCheckBox(mnemonic_free(profile.localize(capability["name"], language)), page)
             box.setObjectName(f"teacher_capability_{capability['id']}")
             box.setChecked(capability["id"] not in limits.switched_off)
             self.capability_boxes[capability["id"]] = box

@@ -6,6 +6,7 @@ from PySide6.QtGui import QFont, QPalette, QStandardItem, QStandardItemModel
 from rockly_desktop.core.field_paths import child_fields, field_mime_text
 from rockly_desktop.core.message_text import summary, value_kind, value_text
 from rockly_desktop.core.topic_rows import row_cells
+from rockly_desktop.ui.plain_text import tooltip_text
 from rockly_desktop.ui.texts import tr
 
 LIST_LIMIT = 50           # list items shown before "… N more"
@@ -251,7 +252,7 @@ class MessageModel(QStandardItemModel):
         tip = ""
         if kind == "number" and path:
             flags |= Qt.ItemFlag.ItemIsDragEnabled
-            tip = tr("monitor_plot_tip", self._language, path=path)
+            tip = tooltip_text(tr("monitor_plot_tip", self._language, path=path))  # a robot's field names
         for item in (field, cell):
             item.setFlags(flags)
             item.setToolTip(tip)

@@ -112,7 +112,7 @@ def test_the_first_pin_must_be_long_enough_and_typed_twice_and_is_kept_only_hash
     teacher._store.sync()
     stored = driver.settings_path.read_text(encoding="utf-8")
     assert "123456" not in stored and "pbkdf2_sha256" in stored
-    assert teacher.check_pin("123456") and not teacher.check_pin("123457")
+    assert not teacher.try_pin("123457").right and teacher.try_pin("123456").right
 
 
 def test_enter_in_the_pin_field_unlocks_and_does_not_close_the_dialog(qtbot, driver, registry):
