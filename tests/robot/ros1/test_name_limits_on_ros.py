@@ -71,11 +71,11 @@ def rockly(ros_master, recorder, hobbit):
     from rockly_desktop.robot.ros1.link import RosRobot
 
     robot = RosRobot(hobbit, ros_master.uri)
-    saved = rospy.names.get_mappings(), rospy.names.get_resolved_mappings()
     rospy.names.reload_mappings(REMAPS)
     rospy.names.initialize_mappings(rospy.get_name())
     yield robot
-    rospy.names._mappings, rospy.names._resolved_mappings = saved
+    rospy.names.reload_mappings(sys.argv)  # as init_node read them
+    rospy.names.initialize_mappings(rospy.get_name())
     robot.shutdown()
 
 

@@ -70,6 +70,17 @@ def test_a_switched_off_topic_is_refused_by_any_name_rclpy_expands_to_it(ros2_ro
     assert f"sent as {name}" not in chatter(test_robot)
 
 
+def test_a_switched_off_service_and_action_are_refused_by_names_rclpy_expands_to_them(ros2_robot):
+    """The test robot serves /set_light and /fibonacci: switched off, neither is reached by another spelling."""
+    lights = Capability("lights", "Lights", services=frozenset({"/set_light"}), actions=frozenset({"fibonacci"}))
+    backend = LimitedBackend(link_backend(ros2_robot, Interrupt()), Limits(switched_off=frozenset({"lights"})),
+                             capabilities=[lights])
+    with pytest.raises(RobotCommandError, match="switched off “Lights”"):
+        backend.call_service("{ns}set_light", "std_srvs/SetBool", {"data": True}, 5.0)
+    with pytest.raises(RobotCommandError, match="switched off “Lights”"):
+        backend.send_goal("{namespace}fibonacci", "test_msgs/Fibonacci", {"order": 3})
+
+
 @pytest.mark.parametrize(("name", "language", "message"), [
     ("~/../chatter", "en", "“~/../chatter” is not a valid ROS name on this robot"),
     ("{ns}/chatter", "de", "„{ns}/chatter“ ist auf diesem Roboter kein gültiger ROS-Name"),
