@@ -133,10 +133,16 @@ def test_a_switched_off_action_is_refused_by_its_remapped_name(rockly, hobbit):
     assert refused.value.in_language("de") == "die Lehrkraft hat „Arm und Greifer“ für diesen Roboter ausgeschaltet"
 
 
-def test_an_empty_name_is_refused_under_a_limit_with_a_clear_message(rockly):
+@pytest.mark.parametrize(("name", "language", "message"), [
+    ("", "en", "“” is not a valid ROS name on this robot"),
+    ("cmd vel", "de", "„cmd vel“ ist auf diesem Roboter kein gültiger ROS-Name"),  # the master registers it nowhere
+    ("http://robot/cmd_vel", "en", "“http://robot/cmd_vel” is not a valid ROS name on this robot"),
+])
+def test_a_name_rospy_or_the_master_refuses_is_refused_under_a_limit_with_a_clear_message(rockly, name, language,
+                                                                                          message):
     with pytest.raises(RobotCommandError) as refused:
-        talk_switched_off(rockly).publish("", "std_msgs/String", {"data": "x"})
-    assert refused.value.in_language("en") == "“” is not a valid ROS name on this robot"
+        talk_switched_off(rockly).publish(name, "std_msgs/String", {"data": "x"})
+    assert refused.value.in_language(language) == message
 
 
 # --- fuzzing the names: ~, relative names, remapped names, double and trailing slashes, look-alikes
