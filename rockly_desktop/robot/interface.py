@@ -62,6 +62,17 @@ class RobotBackend(ABC):
         if self.interrupt is not None:
             self.interrupt.hold()
 
+    def resolve_name(self, name: str, kind: str = "topics") -> str:
+        """The topic, service or action (``kind``: 'topics', 'services', 'actions') a command given
+        ``name`` reaches, as this backend's middleware resolves it; RobotCommandError for a name it
+        would refuse. A backend on a ROS middleware asks it (substitutions, ``~``, namespace, remappings).
+
+        This default suits a robot whose names are matched exactly, as the simulator's world does:
+        a command reaches ``/cmd_vel`` only by that very name, so the name with one leading slash
+        (``cmd_vel/`` is ``/cmd_vel`` too) names at least everything it can reach.
+        """
+        return "/" + str(name).strip("/")
+
     @abstractmethod
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
         """Publish ``message`` (a dict shaped like ``msg_type``) on ``topic``."""

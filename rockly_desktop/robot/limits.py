@@ -4,10 +4,14 @@
 profile declares as its drive interface (``geometry_msgs/Twist`` or ``TwistStamped``) are clamped to the
 maximum speeds, and topics, services and actions of a switched-off capability are
 refused with a RobotCommandError. Profiles need no code for it: the names come from
-their manifest. Reading (subscribe, latest, waits) and cancelling always pass. A motion at
-the robot's own speed (a base driver's "drive 0.5 m") is no velocity the wrapper can clamp:
-the profile asks ``allowed_speed`` (through ``RobotCommands.allowed_speed``) and drives it
-with velocity commands when a limit is lower.
+their manifest. Names are compared as the robot's middleware resolves them (the backend's
+``resolve_name``: ``{ns}cmd_vel``, ``~/...``, a namespace or a remapping may all reach
+``/cmd_vel``), the program's and the manifest's alike; a name the middleware refuses is
+refused here too. While a speed is limited, a Twist is clamped on whatever topic it goes (a
+drive topic remapped where the manifest cannot know). Reading (subscribe, latest, waits) and
+cancelling always pass. A motion at the robot's own speed (a base driver's "drive 0.5 m") is
+no velocity the wrapper can clamp: the profile asks ``allowed_speed`` (through
+``RobotCommands.allowed_speed``) and drives it with velocity commands when a limit is lower.
 """
 import math
 from dataclasses import dataclass
@@ -15,7 +19,11 @@ from dataclasses import dataclass
 from rockly_desktop.core.app_texts import app_local_text, app_text
 from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.robot.interface import RobotBackend
+from rockly_desktop.robot.ros_versions import short_type
 from rockly_desktop.robot.wrapped_backend import WrappedBackend
+
+DRIVE_TYPES = frozenset({"geometry_msgs/Twist", "geometry_msgs/TwistStamped"})
+MAX_NAMES = 4096  # resolved names a run keeps (a program may make names without end)
 
 
 def _text(key: str, language: str, **values) -> str:
@@ -95,20 +103,49 @@ class LimitedBackend(WrappedBackend):
                  language: str = "en", note=None):
         super().__init__(inner)
         self._limits = limits
-        self._velocity_topics = {_ros_name(topic) for topic in velocity_topics}
-        self._blocked = {}  # (kind, ROS name) -> the capability's name
-        for capability in capabilities:
-            for kind in ("topics", "services", "actions"):
-                for name in getattr(capability, kind):
-                    self._blocked[(kind, _ros_name(name))] = capability.name
+        self._declared_velocity_topics = tuple(velocity_topics)
+        self._declared_blocked = [(kind, name, capability.name) for capability in capabilities
+                                  for kind in ("topics", "services", "actions") for name in getattr(capability, kind)]
+        self._velocity_topics = None  # the resolved names, on first use (resolving may ask the robot's middleware)
+        self._blocked = None  # (kind, resolved name) -> the capability's name
+        self._resolved = {}  # (kind, name) -> resolved name
         self._language = language
         self.note = note
         self._noted = set()
 
-    def _refuse(self, kind: str, name: str):
-        capability = self._blocked.get((kind, _ros_name(name)))
+    def resolved(self, name, kind: str = "topics") -> str:
+        """``name`` as the robot's middleware resolves it (the backend's ``resolve_name``, asked once per
+        name): the topic, service or action a command given ``name`` reaches. RobotCommandError when
+        the middleware would refuse the name: what cannot be resolved is not sent."""
+        key = (kind, str(name))
+        found = self._resolved.get(key)
+        if found is None:
+            if len(self._resolved) >= MAX_NAMES:
+                self._resolved.clear()
+            found = self._resolved[key] = self._inner.resolve_name(key[1], kind)
+        return found
+
+    def _declared(self, name, kind: str) -> str:
+        """A manifest's name as the profile's commands reach it (as written where the middleware refuses it)."""
+        try:
+            return self.resolved(name, kind)
+        except RobotCommandError:
+            return _ros_name(name)
+
+    def _resolve_declared(self):
+        if self._blocked is None:
+            self._velocity_topics = {self._declared(topic, "topics") for topic in self._declared_velocity_topics}
+            self._blocked = {(kind, self._declared(name, kind)): capability
+                             for kind, name, capability in self._declared_blocked}
+
+    def _refuse(self, kind: str, name: str) -> str:
+        """``name`` resolved; RobotCommandError when it is refused or belongs to a switched-off capability."""
+        resolved = self.resolved(name, kind)
+        self._resolve_declared()
+        capability = self._blocked.get((kind, resolved))
         if capability is not None:
             raise RobotCommandError(app_local_text("limit_switched_off", name=capability))
+        return resolved
 
     def _tell_once(self, key: str, **values):
         if key not in self._noted and self.note is not None:
@@ -145,20 +182,28 @@ class LimitedBackend(WrappedBackend):
             return self._limits.max_speed
         return own_speed
 
+    def _drives(self, resolved: str, msg_type) -> bool:
+        """Whether a message of ``msg_type`` on the (resolved) topic is a velocity to clamp: on a drive
+        topic, and while a speed is limited, every Twist (wherever a drive topic was remapped to)."""
+        speed_limited = self._limits.max_speed is not None or self._limits.max_turn is not None
+        return resolved in self._velocity_topics or (speed_limited and short_type(msg_type) in DRIVE_TYPES)
+
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
         """Publish, refused for a switched-off capability, velocities clamped on drive topics."""
-        self._refuse("topics", topic)
-        if _ros_name(topic) in self._velocity_topics and isinstance(message, dict):
-            message = self._clamped(message)
+        if not self._limits.is_open:
+            if self._drives(self._refuse("topics", topic), msg_type) and isinstance(message, dict):
+                message = self._clamped(message)
         self._inner.publish(topic, msg_type, message)
 
     def call_service(self, name: str, srv_type: str, request: dict, timeout: float) -> dict:
         """Call a service, refused for a switched-off capability."""
-        self._refuse("services", name)
+        if not self._limits.is_open:
+            self._refuse("services", name)
         return self._inner.call_service(name, srv_type, request, timeout)
 
     def send_goal(self, action: str, action_type: str, goal: dict, feedback=None):
         """Send an action goal, refused for a switched-off capability."""
-        self._refuse("actions", action)
+        if not self._limits.is_open:
+            self._refuse("actions", action)
         return self._inner.send_goal(action, action_type, goal, feedback)
 

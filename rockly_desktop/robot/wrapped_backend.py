@@ -16,6 +16,10 @@ class WrappedBackend(RobotBackend):
             raise AttributeError(name)
         return getattr(self._inner, name)
 
+    def resolve_name(self, name: str, kind: str = "topics") -> str:
+        """``name`` as the inner backend's middleware resolves it."""
+        return self._inner.resolve_name(name, kind)
+
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
         """Publish on ``topic``."""
         self._inner.publish(topic, msg_type, message)

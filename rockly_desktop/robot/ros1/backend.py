@@ -211,6 +211,19 @@ class Ros1Backend(RobotBackend):
             if remaining <= 0:
                 return False
 
+    def resolve_name(self, name: str, kind: str = "topics") -> str:
+        """``name`` as rospy resolves it for a publisher, subscriber or service proxy (this node's
+        namespace, ``~`` its own name, the command line's remappings); an action as actionlib does
+        (remapped first, then resolved). RobotCommandError for a name rospy or the master refuses
+        (empty; holding a space or a colon: the master registers it nowhere)."""
+        import rospy
+
+        name = str(name)
+        resolved = rospy.resolve_name(rospy.remap_name(name) if kind == "actions" else name) if name else ""
+        if not resolved or " " in resolved or ":" in resolved:
+            raise RobotCommandError(app_local_text("ros_bad_name", name=name))
+        return resolved
+
     def connect_publisher(self, topic: str, msg_type: str):
         """The publisher of ``topic``; on first use, or while nobody is connected yet, wait (≤ 1 s)
         until the subscribers the master lists have connected."""

@@ -157,6 +157,12 @@ class Ros2Backend(RobotBackend):
             if remaining <= 0:
                 return False
 
+    def resolve_name(self, name: str, kind: str = "topics") -> str:
+        """``name`` as the helper's node resolves it (rclpy's expansion and remapping; an action's name
+        resolves as a topic's); RobotCommandError for a name ROS 2 refuses. Asked once per name."""
+        self._check()
+        return self._helper.resolved(str(name), kind == "services", self.interrupt)
+
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
         """Publish ``message`` on ``topic`` (reliable unless the profile's ``ros_interface.qos`` says otherwise)."""
         self._check()

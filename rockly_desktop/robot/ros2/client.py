@@ -34,6 +34,7 @@ PACKAGE_DIR = Path(__file__).resolve().parents[2]
 START_TIMEOUT = 30.0  # loading rclpy and the DDS library, on a busy 2-core machine
 POLL_SECONDS = 0.01
 STDERR_LINES = 20
+MAX_NAMES = 4096  # names whose resolution is kept
 
 
 class _Pending:
@@ -98,6 +99,7 @@ class Ros2Helper:
         self._handlers = {}
         self._failures = deque(maxlen=10)
         self._encoders = {}  # message type -> its MessageEncoder, or None: sent as fields
+        self._names = {}  # (name, whether a service) -> the name the helper's node resolves it to, "" refused
         self._stderr = deque(maxlen=STDERR_LINES)
         self._hello = threading.Event()
         self.info = {}
@@ -214,6 +216,19 @@ class Ros2Helper:
                 self.cast("publish_raw", topic, msg_type, raw)
                 return
         self.cast("publish", topic, msg_type, message)
+
+    def resolved(self, name: str, service: bool = False, interrupt=None) -> str:
+        """``name`` as the helper's node resolves a topic or action (a service: ``service``) of that
+        name (``op_resolve``), asked once per name; RobotCommandError for a name ROS 2 refuses."""
+        key = (name, service)
+        found = self._names.get(key)
+        if found is None:
+            if len(self._names) >= MAX_NAMES:  # a program making names without end keeps no more
+                self._names.clear()
+            found = self._names[key] = self.call("resolve", name, service, interrupt=interrupt) or ""
+        if not found:
+            raise RobotCommandError(app_local_text("ros_bad_name", name=name))
+        return found
 
     def encoder(self, msg_type: str):
         """``msg_type``'s MessageEncoder once the helper gave its layout, else None (sent as fields)."""

@@ -175,6 +175,15 @@ class Helper:
     def op_ping(self, value=None):
         return value
 
+    def op_resolve(self, name, service):
+        """The topic or action (a service: ``service``) ``name`` reaches from this node: expanded
+        (``{ns}``, ``{node}``, ``~``) and remapped as rclpy does when it makes one; None for a name
+        rcl refuses. Publishers, service and action clients are all made on this node."""
+        try:
+            return (self.node.resolve_service_name if service else self.node.resolve_topic_name)(name)
+        except (RuntimeError, ValueError, TypeError):  # rcl's RCLError; a name pybind cannot take (a NUL)
+            return None
+
     def op_missing(self, types):
         """(name, package) of the ``types`` ({name: message type}) whose interface package is not installed here."""
         missing = []
