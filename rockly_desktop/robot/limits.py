@@ -2,19 +2,25 @@
 
 ``LimitedBackend`` wraps the run's RobotBackend: velocity commands on the topics a
 profile declares as its drive interface (``geometry_msgs/Twist`` or ``TwistStamped``) are clamped to the
-maximum speeds, and topics, services and actions of a switched-off capability are
-refused with a RobotCommandError. Profiles need no code for it: the names come from
+maximum speeds (anything else there under a speed limit, another type or a speed that is no
+number, is refused: ``robot/velocity_messages.py``), and topics, services and actions of a
+switched-off capability are refused with a RobotCommandError, an action's own topics and services
+included (``robot/capability_coverage.py``). Profiles need no code for it: the names come from
 their manifest. Reading (subscribe, latest, waits) and cancelling always pass. A motion at
-the robot's own speed (a base driver's "drive 0.5 m") is no velocity the wrapper can clamp:
-the profile asks ``allowed_speed`` (through ``RobotCommands.allowed_speed``) and drives it
-with velocity commands when a limit is lower.
+the robot's own speed (a base driver's "drive 0.5 m", a navigation goal) is no velocity the
+wrapper can clamp: the manifest lists those names (``own_speed``, ``robot/own_speed.py``) and they
+are refused under a lower limit; the profile asks ``allowed_speed`` (through
+``RobotCommands.allowed_speed``) and drives such motions with velocity commands instead.
 """
 import math
 from dataclasses import dataclass
 
 from rockly_desktop.core.app_texts import app_local_text, app_text
 from rockly_desktop.core.errors import RobotCommandError
+from rockly_desktop.robot.capability_coverage import Coverage, Covered
 from rockly_desktop.robot.interface import RobotBackend
+from rockly_desktop.robot.own_speed import OwnSpeed
+from rockly_desktop.robot.velocity_messages import velocity_problem
 from rockly_desktop.robot.wrapped_backend import WrappedBackend
 
 
@@ -92,23 +98,29 @@ class LimitedBackend(WrappedBackend):
     """
 
     def __init__(self, inner: RobotBackend, limits: Limits, velocity_topics=(), capabilities=(),
-                 language: str = "en", note=None):
+                 language: str = "en", note=None, own_speed: OwnSpeed = None):
         super().__init__(inner)
         self._limits = limits
         self._velocity_topics = {_ros_name(topic) for topic in velocity_topics}
-        self._blocked = {}  # (kind, ROS name) -> the capability's name
-        for capability in capabilities:
-            for kind in ("topics", "services", "actions"):
-                for name in getattr(capability, kind):
-                    self._blocked[(kind, _ros_name(name))] = capability.name
+        self._blocked = Coverage([Covered(capability.name, capability.topics, capability.services, capability.actions)
+                                  for capability in capabilities], _ros_name)
+        own_speed = own_speed or OwnSpeed()
+        self._own_speed = Coverage([own_speed.covered(True)] if own_speed.too_fast_for(limits) else [], _ros_name)
+        self._stops = [(_ros_name(topic), message) for topic, message in own_speed.stops]
         self._language = language
         self.note = note
         self._noted = set()
 
-    def _refuse(self, kind: str, name: str):
-        capability = self._blocked.get((kind, _ros_name(name)))
+    def _refuse(self, kind: str, name: str, message=None):
+        capability = self._blocked.reached_by(kind, name)
         if capability is not None:
             raise RobotCommandError(app_local_text("limit_switched_off", name=capability))
+        if self._own_speed.reached_by(kind, name) and (_ros_name(name), message) not in self._stops:
+            raise RobotCommandError(app_local_text("limit_own_speed", name=str(name)))
+
+    @property
+    def _speed_limited(self) -> bool:
+        return self._limits.max_speed is not None or self._limits.max_turn is not None
 
     def _tell_once(self, key: str, **values):
         if key not in self._noted and self.note is not None:
@@ -146,9 +158,14 @@ class LimitedBackend(WrappedBackend):
         return own_speed
 
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
-        """Publish, refused for a switched-off capability, velocities clamped on drive topics."""
-        self._refuse("topics", topic)
-        if _ros_name(topic) in self._velocity_topics and isinstance(message, dict):
+        """Publish, refused for a switched-off capability, velocities clamped on drive topics (where,
+        under a speed limit, anything but a Twist or TwistStamped of numbers is refused)."""
+        self._refuse("topics", topic, message)
+        if _ros_name(topic) in self._velocity_topics and self._speed_limited:
+            problem = velocity_problem(msg_type, message)
+            if problem is not None:
+                key, values = problem
+                raise RobotCommandError(app_local_text(key, topic=str(topic), **values))
             message = self._clamped(message)
         self._inner.publish(topic, msg_type, message)
 

@@ -1,0 +1,52 @@
+"""Every ROS name a part of a robot is reached by, for a teacher's limits to refuse them all.
+
+A manifest names an action (``hobbit_arm``); a program can still reach its server by the
+action's own topics and services: on ROS 1 by publishing an ``ArmServerActionGoal`` on
+``hobbit_arm/goal``, on ROS 2 by calling ``hobbit_arm/_action/send_goal``. ``Coverage`` answers
+for each ROS name which covered part it reaches, the action's topics and services included.
+Cancelling is left out (``ACTION/cancel``, ``ACTION/_action/cancel_goal``): it only ever stops a
+part, and a teacher's limits never keep a robot from stopping.
+"""
+from dataclasses import dataclass
+
+# The names actionlib (ROS 1) and ROS 2 actions put under an action's name, cancelling left out.
+ACTION_TOPICS = ("goal", "status", "feedback", "result", "_action/feedback", "_action/status")
+ACTION_SERVICES = ("_action/send_goal", "_action/get_result")
+
+
+@dataclass(frozen=True)
+class Covered:
+    """A part of a robot and the ROS names its manifest says it uses."""
+
+    label: object
+    topics: frozenset = frozenset()
+    services: frozenset = frozenset()
+    actions: frozenset = frozenset()
+
+
+class Coverage:
+    """Which ``Covered`` part (its ``label``) a topic, service or action name reaches.
+
+    ``normalise(name)`` makes names comparable (the limits' own resolution of a ROS name).
+    """
+
+    def __init__(self, parts, normalise):
+        self._normalise = normalise
+        self._names = {}  # (kind, name) -> label
+        for part in parts:
+            for kind in ("topics", "services", "actions"):
+                for name in getattr(part, kind):
+                    self._names[(kind, normalise(name))] = part.label
+            for action in part.actions:
+                base = normalise(action)
+                for topic in ACTION_TOPICS:
+                    self._names[("topics", normalise(f"{base}/{topic}"))] = part.label
+                for service in ACTION_SERVICES:
+                    self._names[("services", normalise(f"{base}/{service}"))] = part.label
+
+    def __bool__(self):
+        return bool(self._names)
+
+    def reached_by(self, kind: str, name):
+        """The label of the part ``name`` reaches as a ``kind`` ('topics', 'services', 'actions'), or None."""
+        return self._names.get((kind, self._normalise(name)))
