@@ -1,8 +1,8 @@
 """Every ROS name a part of a robot is reached by, for a teacher's limits to refuse them all.
 
-A manifest names an action (``hobbit_arm``); a program can still reach its server by the
-action's own topics and services: on ROS 1 by publishing an ``ArmServerActionGoal`` on
-``hobbit_arm/goal``, on ROS 2 by calling ``hobbit_arm/_action/send_goal``. ``Coverage`` answers
+A manifest names an action (``arm``); a program can still reach its server by the action's
+own topics and services: on ROS 1 by publishing its ``...ActionGoal`` on ``arm/goal``, on
+ROS 2 by calling ``arm/_action/send_goal``. ``Coverage`` answers
 for each ROS name which covered part it reaches, the action's topics and services included.
 Cancelling is left out (``ACTION/cancel``, ``ACTION/_action/cancel_goal``): it only ever stops a
 part, and a teacher's limits never keep a robot from stopping.

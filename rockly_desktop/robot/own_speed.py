@@ -1,7 +1,7 @@
 """Motions a robot makes at its own speed, which a teacher's speed limit cannot slow down.
 
-HOBBIT's base driver drives ``Move 2`` on ``/DiscreteMotionCmd`` at 0.3 m/s, and move_base
-drives a navigation goal at its planner's speed: no velocity in these messages can be clamped.
+A base driver may drive a distance (``Move 2``) at its own fixed speed, and move_base drives a
+navigation goal at its planner's speed: no velocity in these messages can be clamped.
 A manifest lists such names under ``own_speed`` with the speeds they go at; while a teacher's
 limit is below those speeds they are refused (a profile's own commands then drive with velocity
 commands, ``RobotCommands.allowed_speed``). The profile's safe-stop messages always pass.
