@@ -1,6 +1,7 @@
 """Putting a run together: the profile's commands on a robot, the runner, the safe stop."""
 from rockly_desktop.executor.runner import ProgramRunner
 from rockly_desktop.robot.limits import Capability, LimitedBackend, Limits, limits_text
+from rockly_desktop.robot.own_speed import OwnSpeed
 from rockly_desktop.robot.recorded import RecordedBackend
 from rockly_desktop.robot.ros_commands import RosCommands
 from rockly_desktop.robot.ros_versions import link_backend
@@ -15,8 +16,10 @@ def _switched_off(profile, limits: Limits, language: str) -> list:
 
 def limited_backend(profile, backend, limits: Limits, language: str) -> LimitedBackend:
     """``backend`` kept within a teacher's ``limits``, from what the profile's manifest declares:
-    its drive interface (``velocity_topics``) and the capabilities switched off."""
-    return LimitedBackend(backend, limits, profile.velocity_topics, _switched_off(profile, limits, language), language)
+    its drive interface (``velocity_topics``), the capabilities switched off and the motions at the
+    robot's own speed (``own_speed``, whose safe-stop messages pass)."""
+    return LimitedBackend(backend, limits, profile.velocity_topics, _switched_off(profile, limits, language), language,
+                          own_speed=OwnSpeed.from_manifest(profile.own_speed, profile.safe_stop))
 
 
 def limits_line(profile, limits: Limits, language: str):

@@ -66,6 +66,10 @@ MANIFEST_FIELDS = (
     FieldSpec("velocity_topics", "velocity_topics", False,
               "The drive interface: geometry_msgs/Twist (or TwistStamped) topics (e.g. [/cmd_vel]) a teacher's "
               "speed limits clamp."),
+    FieldSpec("own_speed", "own_speed", False,
+              "Motions the robot makes at its own speed, which no speed limit can slow: {speed: M/S, turn: DEG/S, "
+              "topics: [...], services: [...], actions: [...]}; refused while a teacher's limit is lower (the "
+              "safe_stop's messages always pass)."),
     FieldSpec("capabilities", "capabilities", False,
               "Parts a teacher can switch off: [{id, name, blocks: [TYPE...], topics: [...], services: [...], "
               "actions: [...]}]; their commands are refused, their blocks hidden."),
@@ -259,6 +263,19 @@ def _check_capabilities(value):
     return None
 
 
+def _check_own_speed(value):
+    if not isinstance(value, dict):
+        return "must be a mapping with speed, turn, topics, services, actions"
+    unknown = set(value) - {"speed", "turn", "topics", "services", "actions"}
+    if unknown:
+        return f"unknown key(s) {sorted(unknown)} (use speed, turn, topics, services, actions)"
+    for key in ("speed", "turn"):
+        speed = value.get(key)
+        if speed is not None and (isinstance(speed, bool) or not isinstance(speed, (int, float)) or not speed > 0):
+            return f"'{key}' must be a number above zero"
+    return _check_names(value, ("topics", "services", "actions"), "own_speed")
+
+
 def _check_levels(value):
     problem = _check_entries(value, "levels", ("categories", "blocks"))
     if problem:
@@ -315,6 +332,8 @@ def _check(spec: FieldSpec, value, root: Path):
     elif kind == "velocity_topics":
         if not isinstance(value, list) or not all(isinstance(topic, str) and topic.startswith("/") for topic in value):
             return "must be a list of topic names like /cmd_vel"
+    elif kind == "own_speed":
+        return _check_own_speed(value)
     elif kind == "capabilities":
         return _check_capabilities(value)
     elif kind == "levels":

@@ -110,6 +110,11 @@ class Profile:
         return self.manifest.get("velocity_topics", [])
 
     @property
+    def own_speed(self) -> dict:
+        """Motions at the robot's own speed: ``{speed, turn, topics, services, actions}`` ({}: none)."""
+        return self.manifest.get("own_speed", {})
+
+    @property
     def capabilities(self) -> list:
         """Parts a teacher can switch off: ``[{id, name, blocks, topics, services, actions}]``."""
         return self.manifest.get("capabilities", [])

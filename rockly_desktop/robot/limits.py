@@ -2,24 +2,31 @@
 
 ``LimitedBackend`` wraps the run's RobotBackend: velocity commands on the topics a
 profile declares as its drive interface (``geometry_msgs/Twist`` or ``TwistStamped``) are clamped to the
-maximum speeds, and topics, services and actions of a switched-off capability are
-refused with a RobotCommandError. Profiles need no code for it: the names come from
+maximum speeds (anything else there under a speed limit, another type or a speed that is no
+number, is refused: ``robot/velocity_messages.py``), and topics, services and actions of a
+switched-off capability are refused with a RobotCommandError, an action's own topics and services
+included (``robot/capability_coverage.py``). Profiles need no code for it: the names come from
 their manifest. Names are compared as the robot's middleware resolves them (the backend's
 ``resolve_name``: ``{ns}cmd_vel``, ``~/...``, a namespace or a remapping may all reach
 ``/cmd_vel``), the program's and the manifest's alike; a name the middleware refuses is
-refused here too. While a speed is limited, a Twist is clamped on whatever topic it goes (a
-drive topic remapped where the manifest cannot know). Reading (subscribe, latest, waits) and
-cancelling always pass. A motion at the robot's own speed (a base driver's "drive 0.5 m") is
-no velocity the wrapper can clamp: the profile asks ``allowed_speed`` (through
-``RobotCommands.allowed_speed``) and drives it with velocity commands when a limit is lower.
+refused here too. While a speed is limited, a Twist is held to the limit on whatever topic it
+goes (a drive topic remapped where the manifest cannot know). Reading (subscribe, latest,
+waits) and cancelling always pass. A motion at the robot's own speed (a base driver's "drive
+0.5 m", a navigation goal) is no velocity the wrapper can clamp: the manifest lists those names
+(``own_speed``, ``robot/own_speed.py``) and they are refused under a lower limit; the profile
+asks ``allowed_speed`` (through ``RobotCommands.allowed_speed``) and drives such motions with
+velocity commands instead.
 """
 import math
 from dataclasses import dataclass
 
 from rockly_desktop.core.app_texts import app_local_text, app_text
 from rockly_desktop.core.errors import RobotCommandError
+from rockly_desktop.robot.capability_coverage import Coverage, Covered
 from rockly_desktop.robot.interface import RobotBackend
+from rockly_desktop.robot.own_speed import OwnSpeed
 from rockly_desktop.robot.ros_versions import short_type
+from rockly_desktop.robot.velocity_messages import velocity_problem
 from rockly_desktop.robot.wrapped_backend import WrappedBackend
 
 DRIVE_TYPES = frozenset({"geometry_msgs/Twist", "geometry_msgs/TwistStamped"})
@@ -100,14 +107,15 @@ class LimitedBackend(WrappedBackend):
     """
 
     def __init__(self, inner: RobotBackend, limits: Limits, velocity_topics=(), capabilities=(),
-                 language: str = "en", note=None):
+                 language: str = "en", note=None, own_speed: OwnSpeed = None):
         super().__init__(inner)
         self._limits = limits
         self._declared_velocity_topics = tuple(velocity_topics)
-        self._declared_blocked = [(kind, name, capability.name) for capability in capabilities
-                                  for kind in ("topics", "services", "actions") for name in getattr(capability, kind)]
-        self._velocity_topics = None  # the resolved names, on first use (resolving may ask the robot's middleware)
-        self._blocked = None  # (kind, resolved name) -> the capability's name
+        self._declared_capabilities = [Covered(capability.name, capability.topics, capability.services,
+                                               capability.actions) for capability in capabilities]
+        self._declared_own_speed = own_speed or OwnSpeed()
+        # The manifest's names resolved, on first use (resolving may ask the robot's middleware):
+        self._velocity_topics = self._blocked = self._own_speed = self._stops = None
         self._resolved = {}  # (kind, name) -> resolved name
         self._language = language
         self.note = note
@@ -134,18 +142,28 @@ class LimitedBackend(WrappedBackend):
 
     def _resolve_declared(self):
         if self._blocked is None:
+            own_speed = self._declared_own_speed
             self._velocity_topics = {self._declared(topic, "topics") for topic in self._declared_velocity_topics}
-            self._blocked = {(kind, self._declared(name, kind)): capability
-                             for kind, name, capability in self._declared_blocked}
+            self._blocked = Coverage(self._declared_capabilities, self._declared)
+            self._own_speed = Coverage([own_speed.covered(True)] if own_speed.too_fast_for(self._limits) else [],
+                                       self._declared)
+            self._stops = [(self._declared(topic, "topics"), message) for topic, message in own_speed.stops]
 
-    def _refuse(self, kind: str, name: str) -> str:
-        """``name`` resolved; RobotCommandError when it is refused or belongs to a switched-off capability."""
+    def _refuse(self, kind: str, name: str, message=None) -> str:
+        """``name`` resolved; RobotCommandError when it is refused, belongs to a switched-off capability or
+        starts a motion at the robot's own speed above the limit (the safe stop's ``message`` passes)."""
         resolved = self.resolved(name, kind)
         self._resolve_declared()
-        capability = self._blocked.get((kind, resolved))
+        capability = self._blocked.reached_by(kind, resolved)
         if capability is not None:
             raise RobotCommandError(app_local_text("limit_switched_off", name=capability))
+        if self._own_speed.reached_by(kind, resolved) and (resolved, message) not in self._stops:
+            raise RobotCommandError(app_local_text("limit_own_speed", name=str(name)))
         return resolved
+
+    @property
+    def _speed_limited(self) -> bool:
+        return self._limits.max_speed is not None or self._limits.max_turn is not None
 
     def _tell_once(self, key: str, **values):
         if key not in self._noted and self.note is not None:
@@ -182,17 +200,25 @@ class LimitedBackend(WrappedBackend):
             return self._limits.max_speed
         return own_speed
 
-    def _drives(self, resolved: str, msg_type) -> bool:
-        """Whether a message of ``msg_type`` on the (resolved) topic is a velocity to clamp: on a drive
-        topic, and while a speed is limited, every Twist (wherever a drive topic was remapped to)."""
-        speed_limited = self._limits.max_speed is not None or self._limits.max_turn is not None
-        return resolved in self._velocity_topics or (speed_limited and short_type(msg_type) in DRIVE_TYPES)
+    def _limited(self, resolved: str, topic, msg_type, message):
+        """``message`` held to a speed limit: on a drive topic only a Twist (or TwistStamped) of numbers
+        passes, clamped; elsewhere a Twist is clamped too (wherever a drive topic was remapped to)."""
+        if not self._speed_limited:
+            return message
+        if resolved in self._velocity_topics or short_type(msg_type) in DRIVE_TYPES:
+            problem = velocity_problem(msg_type, message)
+            if problem is not None:
+                key, values = problem
+                raise RobotCommandError(app_local_text(key, topic=str(topic), **values))
+            return self._clamped(message)
+        return message
 
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
-        """Publish, refused for a switched-off capability, velocities clamped on drive topics."""
+        """Publish, refused for a switched-off capability, velocities held to the limit on drive topics
+        and, under a speed limit, every Twist on any topic (where anything but a Twist or TwistStamped
+        of numbers is refused on a drive topic)."""
         if not self._limits.is_open:
-            if self._drives(self._refuse("topics", topic), msg_type) and isinstance(message, dict):
-                message = self._clamped(message)
+            message = self._limited(self._refuse("topics", topic, message), topic, msg_type, message)
         self._inner.publish(topic, msg_type, message)
 
     def call_service(self, name: str, srv_type: str, request: dict, timeout: float) -> dict:

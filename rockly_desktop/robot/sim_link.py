@@ -3,9 +3,19 @@ from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.robot.health import GREEN, HealthItem, server_health, topic_health
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.ros_versions import link_backend
+from rockly_desktop.robot.ros_versions import link_backend, ros_name, short_type
 from rockly_desktop.robot.safe_stop import run_safe_stop
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+
+
+def listened_types(profile) -> dict:
+    """{topic: {types}} the profile's simulated robot subscribes with: its ``ros_interface`` type and
+    the ones ``ros_versions`` give the name on other versions (a simulator takes either)."""
+    listens = {}
+    for topic, type_name in (profile.ros_interface.get("subscribes") or {}).items():
+        variants = (profile.ros_versions.get(topic) or profile.ros_versions.get(ros_name(topic)) or {}).values()
+        listens[ros_name(topic)] = {short_type(name) for name in (type_name, *variants)}
+    return listens
 
 
 class SimulatedRobot:
@@ -25,6 +35,7 @@ class SimulatedRobot:
         self.simulator = profile.create("simulator", self.world, tablet=tablet, speed=speed)
         self.simulator.start()
         self._encoder = None
+        self._listens = listened_types(profile)
 
     @classmethod
     def unavailable(cls):
@@ -40,8 +51,9 @@ class SimulatedRobot:
         return robot
 
     def backend(self, interrupt: Interrupt):
-        """A backend whose waits end when ``interrupt`` is stopped."""
-        return SimBackend(self.world, interrupt)
+        """A backend whose waits end when ``interrupt`` is stopped; a message the simulated robot
+        would not get on a real ROS (another type than it listens for, values that do not fit) is refused."""
+        return SimBackend(self.world, interrupt, self._listens, self.profile.ros_types)
 
     def follow_graph(self):
         """Nothing to start: the simulated world fills ``state`` from the beginning."""

@@ -15,6 +15,7 @@ from collections import defaultdict
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout, RocklyError
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
+from rockly_desktop.robot.ros_versions import ros_name, short_type
 
 log = logging.getLogger(__name__)
 
@@ -219,18 +220,36 @@ class SimGoalHandle(GoalHandle):
 
 
 class SimBackend(RobotBackend):
-    """A RobotBackend on a SimWorld; every wait ends within ~10 ms of a stop request."""
+    """A RobotBackend on a SimWorld; every wait ends within ~10 ms of a stop request.
 
-    def __init__(self, world: SimWorld, interrupt):
+    ``listens`` ({topic: {types}}) are the types the simulated robot subscribes with, and ``types``
+    (a DefinitionCatalog) the definitions Rockly knows: a message of another type on such a topic,
+    or one whose values do not fit its type (a speed as the text "1.0" or as true), is refused with
+    a RobotCommandError, as a real ROS would not deliver it.
+    """
+
+    def __init__(self, world: SimWorld, interrupt, listens=None, types=None):
         self._world = world
         self.interrupt = interrupt
+        self._listens = listens or {}
+        self._types = types
 
     def subscribe(self, topic: str, msg_type: str, callback):
         """Call ``callback`` for each message on ``topic``; returns the unsubscribe function."""
         return self._world.subscribe(topic, callback)
 
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
-        """Publish ``message`` on ``topic``."""
+        """Publish ``message`` on ``topic``, refused as a real ROS would not deliver it (see the class)."""
+        expected = self._listens.get(ros_name(topic))
+        if msg_type and expected and short_type(msg_type) not in expected:
+            raise RobotCommandError(app_local_text("sim_type_not_heard", topic=topic, type=msg_type,
+                                                   expected=" / ".join(sorted(expected))))
+        if msg_type and self._types is not None:
+            try:
+                self._types.check(short_type(msg_type), "msg", message)
+            except RobotCommandError as error:
+                raise RobotCommandError(app_local_text("sim_message_refused", type=msg_type, topic=topic,
+                                                       problem=str(error))) from None
         self._world.publish(topic, msg_type, message)
 
     def latest(self, topic: str, msg_type: str):

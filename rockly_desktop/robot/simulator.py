@@ -27,6 +27,8 @@ import numbers
 import threading
 import time
 
+from rockly_desktop.robot.velocity_messages import is_velocity_number
+
 
 def checked_speed(speed) -> float:
     """``speed`` as a float; ValueError unless it is a finite number above zero."""
@@ -39,15 +41,21 @@ def checked_speed(speed) -> float:
 
 def twist_velocity(message):
     """``(linear.x, angular.z)`` of a ``geometry_msgs/Twist`` (or ``TwistStamped``) dict (missing parts
-    are 0), or None when the message is no Twist or holds a value that is not a finite number."""
+    are 0), or None when the message is no Twist or holds a value that is not a finite number.
+
+    A text ("1.0") or a bool is no number here: a real ROS refuses it in a float64 field, so a
+    simulated robot must not drive on it either.
+    """
     if isinstance(message, dict) and isinstance(message.get("twist"), dict):
         message = message["twist"]
     try:
-        linear = float((message.get("linear") or {}).get("x", 0.0))
-        angular = float((message.get("angular") or {}).get("z", 0.0))
-    except (AttributeError, TypeError, ValueError):
+        linear = (message.get("linear") or {}).get("x", 0.0)
+        angular = (message.get("angular") or {}).get("z", 0.0)
+    except AttributeError:
         return None
-    return (linear, angular) if math.isfinite(linear) and math.isfinite(angular) else None
+    if not (is_velocity_number(linear) and is_velocity_number(angular)):
+        return None
+    return (float(linear), float(angular)) if math.isfinite(linear) and math.isfinite(angular) else None
 
 
 class RobotSimulator:

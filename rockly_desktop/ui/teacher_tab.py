@@ -95,6 +95,11 @@ class TeacherTab(QStackedWidget):
         outer = QVBoxLayout(page)
         outer.addWidget(plain_label(tr("teacher_for", language, name=profile.display_name(language)), page,
                                     objectName="teacher_for"))
+        if not teacher.has_own_limits(profile.id) and not limits.is_open:
+            default = QLabel(tr("teacher_default_limits", language), page, objectName="teacher_default_limits")
+            default.setWordWrap(True)
+            default.setTextFormat(Qt.TextFormat.PlainText)
+            outer.addWidget(default)
         form = QFormLayout()
         outer.addLayout(form)
         self.level_box = QComboBox(page, objectName="teacher_level")

@@ -283,11 +283,11 @@ class Hobbit(RobotCommands):
 
     def _motion(self, kind, amount, tolerance):
         """``Move`` metres or ``Turn`` degrees: with the base driver's discrete motion, which goes at
-        HOBBIT's own speed, or, when a teacher's limit is lower, driven with ``/cmd_vel`` at the limit."""
-        own = MOVE_SPEED if kind == "Move" else TURN_SPEED
-        allowed = self.allowed_speed(own, turning=kind == "Turn")
-        if allowed < own:
-            self._driven_motion(kind, amount, tolerance, allowed if kind == "Move" else math.degrees(allowed))
+        HOBBIT's own speeds, or, when a teacher's limit is below either, driven with ``/cmd_vel`` at
+        the limit (a discrete motion is refused then: the manifest's ``own_speed``)."""
+        allowed_move, allowed_turn = self.allowed_speed(MOVE_SPEED), self.allowed_speed(TURN_SPEED, turning=True)
+        if allowed_move < MOVE_SPEED or allowed_turn < TURN_SPEED:  # the limits refuse a discrete motion then
+            self._driven_motion(kind, amount, tolerance, allowed_move if kind == "Move" else math.degrees(allowed_turn))
         else:
             self._discrete_motion(kind, amount, tolerance)
 

@@ -76,11 +76,16 @@ def _value(slot, value, path):
         if isinstance(item, NamespacedType):
             return [to_message(class_of(item), entry, f"{path}[{index}]") for index, entry in enumerate(value)]
         if isinstance(item, BasicType) and item.typename in _FLOATS:
-            return [float(entry) for entry in value]
+            return [float(entry) if _whole_number(entry) else entry for entry in value]
         return value
-    if isinstance(slot, BasicType) and slot.typename in _FLOATS and isinstance(value, int):
+    if isinstance(slot, BasicType) and slot.typename in _FLOATS and _whole_number(value):
         return float(value)
     return value
+
+
+def _whole_number(value) -> bool:
+    """True for an int that goes into a float field as on ROS 1; a bool or a text does not (rclpy refuses it)."""
+    return isinstance(value, int) and not isinstance(value, bool)
 
 
 def to_message(message_class, data, path=""):
