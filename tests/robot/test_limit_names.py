@@ -43,7 +43,7 @@ def limited(robot, limits, velocity_topics=("cmd_vel",), capabilities=(ARM,)):
 @pytest.mark.parametrize("name", ["cmd_vel", "{ns}cmd_vel", "teleop", "/lab/cmd_vel"])
 def test_a_velocity_reaching_the_drive_topic_by_any_name_is_clamped(name):
     robot = RemappingRobot()
-    limited(robot, Limits(max_speed=0.1)).publish(name, "lab_msgs/Velocity", {"linear": {"x": 1.0}})
+    limited(robot, Limits(max_speed=0.1)).publish(name, "geometry_msgs/Twist", {"linear": {"x": 1.0}})
     assert robot.sent == [(name, {"linear": {"x": 0.1}})]
 
 
