@@ -281,7 +281,8 @@ class Helper:
                                        self.qos_overrides)
         send = self.send
         self.topics.subscribe(sid, message_class, topic,
-                              lambda message: send((wire.EVENT, "msg", sid, from_message(message))), profile)
+                              lambda message: send((wire.EVENT, "msg", sid, from_message(message, compact=True))),
+                              profile)
         return type_name
 
     def op_unsubscribe(self, sid):
