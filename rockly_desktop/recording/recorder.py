@@ -129,6 +129,11 @@ class Recorder:
                 with self._bytes_lock:
                     self._queued_bytes -= item[2][3]
 
+    def stats(self) -> dict:
+        """What was not recorded so far: per topic ``capped`` (the rate cap) and ``dropped`` (the queue's bytes
+        full), and ``overflow`` (the queue's count full)."""
+        return {"capped": dict(self._capped), "overflow": self._overflow, "dropped": dict(self._dropped)}
+
     # --- the writer thread -------------------------------------------------------------------
 
     def close(self):
@@ -141,9 +146,7 @@ class Recorder:
         self._write_pending(final=True)
         if self._dropped:
             log.warning("recording %s: messages dropped while the writer was behind: %s", self.path, self._dropped)
-        self._file.write_json(channels.STATS, *channels.SCHEMAS[channels.STATS], self._clock(),
-                              {"capped": dict(self._capped), "overflow": self._overflow,
-                               "dropped": dict(self._dropped)})
+        self._file.write_json(channels.STATS, *channels.SCHEMAS[channels.STATS], self._clock(), self.stats())
         self._file.close()
 
     def _run(self):
