@@ -4,6 +4,7 @@ The Topic monitor lets a numeric field be dragged to the Plot panel as ``"topic|
 the Plot panel completes the paths of a topic's numeric fields. Paths are the ones
 :func:`rockly_desktop.core.state_store.field_value` reads.
 """
+import array
 import re
 from itertools import islice
 
@@ -34,7 +35,7 @@ def numeric_paths(message, prefix: str = "") -> list:
     if isinstance(message, dict):
         for key, value in message.items():
             paths += numeric_paths(value, f"{prefix}.{key}" if prefix else str(key))
-    elif isinstance(message, (list, tuple)) and prefix:
+    elif isinstance(message, (list, tuple, array.array)) and prefix:
         for index, value in enumerate(message[:MAX_INDEXED_ITEMS]):
             paths += numeric_paths(value, f"{prefix}[{index}]")
     elif isinstance(message, (int, float)) and not isinstance(message, bool) and prefix:

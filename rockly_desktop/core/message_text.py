@@ -1,4 +1,5 @@
 """How the Topic monitor writes a message's values: numbers exactly, strings quoted, lists summed up."""
+import array
 import json
 import numbers
 from itertools import islice
@@ -11,7 +12,7 @@ def value_kind(value) -> str:
     """``"dict"``, ``"list"``, ``"number"`` (not a bool) or ``"leaf"``."""
     if isinstance(value, dict):
         return "dict"
-    if isinstance(value, (list, tuple)):
+    if isinstance(value, (list, tuple, array.array)):  # array: a long one kept compact (core/message_arrays)
         return "list"
     if isinstance(value, numbers.Real) and not isinstance(value, bool):
         return "number"

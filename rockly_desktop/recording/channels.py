@@ -28,7 +28,7 @@ SCHEMAS = {
         "seconds": {"type": "number"}}, "required": ["kind", "name"]}),
     SIMULATOR: ("rockly.SimulatorSnapshot", {"type": "object"}),
     STATS: ("rockly.RecordingStats", {"type": "object", "properties": {
-        "capped": {"type": "object"}, "overflow": {"type": "integer"}}}),
+        "capped": {"type": "object"}, "overflow": {"type": "integer"}, "dropped": {"type": "object"}}}),
 }
 PROGRAM_ATTACHMENT = "program.rockly"
 METADATA = "rockly"

@@ -4,9 +4,12 @@ The program's thread and the robot's threads only put small tuples in a queue (o
 blocks, in a deque the block hook fills while it has budget); the writer thread wakes
 every ``TICK_SECONDS``, writes what came in time order, samples the variables, the
 expression blocks' values and the simulator's state, and closes a chunk every ``FLUSH_SECONDS`` so that a crash loses at
-most that much. Memory stays bounded whatever the rates: topics are capped per topic at
+most that much. Memory stays bounded whatever the rates and sizes: topics are capped per topic at
 ``topic_rate`` messages a second, blocks at ``BLOCKS_PER_TICK`` per tick (a tight loop is
-then sampled), and a full queue drops what comes (counted in the recording's stats).
+then sampled), a full queue drops what comes (counted in the recording's stats as ``overflow``),
+and the robot's messages waiting in it hold at most ``QUEUE_BYTES`` (``message_bytes``'s
+estimate): a camera's message that does not fit while the writer is behind is dropped and
+counted per topic (``dropped``), so a slow disk or encoder never fills memory.
 """
 import logging
 import queue
@@ -14,6 +17,7 @@ import threading
 import time
 from collections import deque
 
+from rockly_desktop.core.message_size import message_bytes
 from rockly_desktop.recording import channels
 from rockly_desktop.recording.mcap_file import McapFile
 
@@ -24,6 +28,7 @@ FLUSH_SECONDS = 1.0
 SNAPSHOT_SECONDS = 0.2
 BLOCKS_PER_TICK = 100
 QUEUE_SIZE = 20_000
+QUEUE_BYTES = 64 * 2 ** 20
 
 _STOP = object()
 
@@ -48,6 +53,9 @@ class Recorder:
         self._last_sent = {}
         self._capped = {}
         self._overflow = 0
+        self._dropped = {}
+        self._queued_bytes = 0
+        self._bytes_lock = threading.Lock()
         self._unencodable = set()
         self._file = None
         self._thread = None
@@ -104,13 +112,27 @@ class Recorder:
             self._capped[topic] = self._capped.get(topic, 0) + 1
             return
         self._last_sent[topic] = now
-        self._put((now, None, (topic, msg_type, message)))
+        size = message_bytes(message)
+        with self._bytes_lock:
+            if self._queued_bytes + size > QUEUE_BYTES:
+                self._dropped[topic] = self._dropped.get(topic, 0) + 1
+                return
+            self._queued_bytes += size
+        self._put((now, None, (topic, msg_type, message, size)))
 
     def _put(self, item):
         try:
             self._queue.put_nowait(item)
         except queue.Full:
             self._overflow += 1
+            if item[1] is None:
+                with self._bytes_lock:
+                    self._queued_bytes -= item[2][3]
+
+    def stats(self) -> dict:
+        """What was not recorded so far: per topic ``capped`` (the rate cap) and ``dropped`` (the queue's bytes
+        full), and ``overflow`` (the queue's count full)."""
+        return {"capped": dict(self._capped), "overflow": self._overflow, "dropped": dict(self._dropped)}
 
     # --- the writer thread -------------------------------------------------------------------
 
@@ -122,8 +144,9 @@ class Recorder:
         self._thread.join()
         self._thread = None
         self._write_pending(final=True)
-        self._file.write_json(channels.STATS, *channels.SCHEMAS[channels.STATS], self._clock(),
-                              {"capped": dict(self._capped), "overflow": self._overflow})
+        if self._dropped:
+            log.warning("recording %s: messages dropped while the writer was behind: %s", self.path, self._dropped)
+        self._file.write_json(channels.STATS, *channels.SCHEMAS[channels.STATS], self._clock(), self.stats())
         self._file.close()
 
     def _run(self):
@@ -144,12 +167,15 @@ class Recorder:
                 items.append(self._queue.get_nowait())
             except queue.Empty:
                 break
+        taken = sum(payload[3] for _stamp, channel, payload in items if channel is None)
+        with self._bytes_lock:
+            self._queued_bytes -= taken
         items += self._block_items()
         items += self._samples(final)
         items.sort(key=lambda item: item[0])
         for log_ns, channel, payload in items:
             if channel is None:
-                self._write_topic(log_ns, *payload)
+                self._write_topic(log_ns, *payload[:3])
             else:
                 self._file.write_json(channel, *channels.SCHEMAS[channel], log_ns, payload)
 

@@ -188,7 +188,7 @@ class MessageModel(QStandardItemModel):
     def _sync(self, parent: QStandardItem, value, path):
         entries = list(child_fields(value, path, LIST_LIMIT))
         labels = [entry[0] for entry in entries]
-        if isinstance(value, (list, tuple)) and len(value) > LIST_LIMIT:
+        if value_kind(value) == "list" and len(value) > LIST_LIMIT:
             labels.append(tr("monitor_more", self._language, count=len(value) - LIST_LIMIT))
         rows = parent.rowCount()
         keep = 0

@@ -6,7 +6,8 @@ only while it is visible) and stays cheap whatever the message rate: the table r
 only the cells whose text changed, and the tree is updated in place (so it keeps its
 expanded branches) and not at all while the topic's newest message is the same object.
 A numeric field can be dragged to a plot ("topic|field.path") or double-clicked to
-ask for one (``sig_plot_requested``).
+ask for one (``sig_plot_requested``). When the store's byte budget cut the selected topic's
+history (a camera's images), a line under its message says so.
 """
 import math
 import time
@@ -151,6 +152,11 @@ class TopicMonitor(QWidget):
         self.message_type = QLabel(self)
         self.message_type.setTextFormat(Qt.TextFormat.PlainText)
         self.message_type.setForegroundRole(QPalette.ColorRole.PlaceholderText)
+        self.history_note = QLabel(self)
+        self.history_note.setTextFormat(Qt.TextFormat.PlainText)
+        self.history_note.setWordWrap(True)
+        self.history_note.setForegroundRole(QPalette.ColorRole.PlaceholderText)
+        self.history_note.hide()
         self._build_tree()
         self.placeholder = QLabel(tr("monitor_choose", self._language), self)
         self.placeholder.setAlignment(Qt.AlignmentFlag.AlignCenter)
@@ -171,6 +177,7 @@ class TopicMonitor(QWidget):
         title.addWidget(self.message_type, 1)
         message_layout.addLayout(title)
         message_layout.addWidget(self._message_stack, 1)
+        message_layout.addWidget(self.history_note)
         return message_pane
 
     def _build_tree(self):
@@ -274,6 +281,17 @@ class TopicMonitor(QWidget):
         entries = topic_entries(infos, None if self._graph is None else self._graph_topics)
         self.table_model.update(entries)
         self._show_count()
+        self._show_history_note(infos.get(self._topic))
+
+    def _show_history_note(self, info):
+        """Say under the message when the store's byte budget cut the selected topic's history."""
+        if info is None or not info.cut:
+            self.history_note.hide()
+            return
+        megabytes = f"{self._store.topic_budget() / 2 ** 20:.3g}"
+        self.history_note.setText(tr("monitor_history_cut", self._language, topic=info.topic, kept=info.kept,
+                                     megabytes=megabytes))
+        self.history_note.show()
 
     def _show_message(self):
         topic = self._topic
@@ -302,6 +320,7 @@ class TopicMonitor(QWidget):
         self._topic = topic
         self._shown = _NOTHING_SHOWN
         self._show_title()
+        self._show_history_note(next((info for info in self._store.topics() if info.topic == topic), None))
         self._show_message()  # also while paused: the user asked to see this topic
 
     def _show_title(self):

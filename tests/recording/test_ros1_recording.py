@@ -22,7 +22,7 @@ def test_a_run_on_ros1_records_the_robots_topics_as_it_published_them(ros_robot,
     assert result.outcome == "finished", result
     published = {m["header"]["seq"]: m  # the ROS-level simulator leaves stamps at 0
                  for m in (from_message(raw) if not isinstance(raw, dict) else raw
-                           for _t, raw in ros_robot.state._topics["/odom"].history)}
+                           for _t, raw, _size in ros_robot.state._topics["/odom"].history)}
 
     found, messages = channels_and_messages(path)
     assert found["/odom"] == ("ros1", "nav_msgs/Odometry", "ros1msg")

@@ -33,7 +33,7 @@ def test_a_run_on_ros2_records_the_robots_topics_in_cdr(ros2_robot, test_robot, 
         eventually(lambda: recording.recorder._file.counts.get("/odder", 0) == 1)
     recording.emit(RunFinished("finished", None, ""))
     published = {m["twist"]["twist"]["linear"]["x"]: without_ros1_time(m)  # stamps are 0: the speeds differ
-                 for _t, m in ros2_robot.state._topics["/odom"].history}
+                 for _t, m, _size in ros2_robot.state._topics["/odom"].history}
 
     found, decoded = {}, {}
     with open(path, "rb") as stream:

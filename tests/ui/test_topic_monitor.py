@@ -1,5 +1,8 @@
 """The Topic monitor: topics with types, publishers, rates and ages; the selected topic's newest
-message as a tree that keeps its shape; filter, sorting, pause; dragging and plotting fields."""
+message as a tree that keeps its shape; filter, sorting, pause; dragging and plotting fields;
+a note when the store's byte budget cut a topic's history."""
+
+import array
 
 import pytest
 from PySide6.QtCore import QPoint, Qt, QTimer
@@ -407,3 +410,30 @@ def test_double_clicking_a_numeric_field_asks_for_a_plot(store, make_monitor, qt
     with qtbot.assertNotEmitted(monitor.sig_plot_requested):
         double_click("child_frame_id")
     assert not monitor.field_index("no.such.field").isValid()
+
+
+# ----------------------------------------------------------------------------- a camera's history
+
+def camera_image(number):
+    """A 1 MB image as the ROS 2 helper hands it over: its pixels compact (array.array)."""
+    return {"header": {"frame_id": "camera", "seq": number}, "height": 1024, "width": 1024, "encoding": "mono8",
+            "data": array.array("B", bytes([number % 256]) * (1 << 20))}
+
+
+@pytest.mark.parametrize("language, words", [("en", "only the last 1"), ("de", "nur die letzten 1")])
+def test_the_monitor_says_when_the_byte_budget_cut_a_topics_history(store, make_monitor, language, words):
+    store.record("/odom", ODOM, odometry(1.0))
+    for number in range(40):
+        store.record("/camera", "sensor_msgs/Image", camera_image(number))
+    monitor = make_monitor(language=language, shown=True)
+    assert monitor.select_topic("/odom")
+    assert monitor.history_note.isHidden()
+    assert monitor.select_topic("/camera")
+    note = monitor.history_note.text()
+    assert not monitor.history_note.isHidden()
+    assert words in note and "/camera" in note and "16 MB" in note  # 15 or 16 messages of 1 MB
+    assert shown_value(monitor, "data").startswith("(1048576) [39, 39, 39")  # a compact array, not 1 M rows
+    labels = child_labels(monitor, "data")
+    assert len(labels) == LIST_LIMIT + 1 and str((1 << 20) - LIST_LIMIT) in labels[-1]  # … and "N more"
+    monitor.select_topic("/odom")
+    assert monitor.history_note.isHidden()

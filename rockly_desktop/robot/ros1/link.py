@@ -38,9 +38,9 @@ class RosRobot:
         for action in profile.safe_stop:  # connected now, so a stop never waits for them
             if "publish" in action:
                 safe_backend.connect_publisher(action["publish"]["topic"], action["publish"]["type"])
-        from rockly_desktop.robot.ros1.message_values import from_message
+        from rockly_desktop.robot.ros1.message_values import shown_message
 
-        self.state = StateStore(decode=from_message)
+        self.state = StateStore(decode=shown_message)
         self.graph.service_watchers.append(self.state.record)  # this node's calls, e.g. the tablet's questions
         self._feed = None
 

@@ -15,6 +15,7 @@ import genmsg.msgs
 import genpy
 
 from rockly_desktop.core.errors import RobotCommandError
+from rockly_desktop.core.message_arrays import SHOWN_ITEMS
 
 _INT_RANGES = {
     "int8": (-2 ** 7, 2 ** 7 - 1), "byte": (-2 ** 7, 2 ** 7 - 1),
@@ -42,23 +43,31 @@ def to_message(cls, data=None):
     return _to_message(cls, data, "")
 
 
-def from_message(msg) -> dict:
+def from_message(msg, compact: bool = False) -> dict:
     """A plain dict from a genpy message: nested messages as dicts, arrays as lists, ``uint8[]``
-    as a list of numbers, ``time``/``duration`` as ``{"secs": .., "nsecs": ..}``."""
+    as a list of numbers (with ``compact``: as the ``bytes`` rospy gave when it holds more than
+    ``SHOWN_ITEMS``, what the panels show of a camera image), ``time``/``duration`` as
+    ``{"secs": .., "nsecs": ..}``."""
     if not isinstance(msg, genpy.Message):
         raise RobotCommandError(f"from_message needs a ROS message, got {msg!r}")
-    return {name: _from_value(getattr(msg, name)) for name in msg.__slots__}
+    return {name: _from_value(getattr(msg, name), compact) for name in msg.__slots__}
 
 
-def _from_value(value):
+def shown_message(message) -> dict:
+    """What the state store's panels read of a recorded message: a rospy message as a compact dict
+    (``from_message``), a dict (a service call this node made) as it is."""
+    return message if isinstance(message, dict) else from_message(message, compact=True)
+
+
+def _from_value(value, compact=False):
     if isinstance(value, genpy.Message):
-        return from_message(value)
+        return from_message(value, compact)
     if isinstance(value, genpy.TVal):
         return {"secs": value.secs, "nsecs": value.nsecs}
     if isinstance(value, (bytes, bytearray)):
-        return list(value)
+        return bytes(value) if compact and len(value) > SHOWN_ITEMS else list(value)
     if isinstance(value, (list, tuple)):
-        return [_from_value(v) for v in value]
+        return [_from_value(v, compact) for v in value]
     return value
 
 

@@ -10,6 +10,7 @@ import time
 
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
+from rockly_desktop.core.message_arrays import as_lists
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
 from rockly_desktop.robot.next_message import next_message
 from rockly_desktop.robot.ros2.client import words
@@ -58,15 +59,21 @@ class Ros2Graph:
 
 
 class Ros2Topic:
-    """One subscription in the helper: the latest message (a dict) and the callbacks fanned out to."""
+    """One subscription in the helper: the latest message and the callbacks fanned out to.
+
+    The helper sends a message's arrays of numbers compact (``array.array``): ``callbacks`` and
+    ``latest`` get them as lists (``as_lists``, what a program works with), ``raw_callbacks`` as they
+    came (the state feed: a camera's 1 MB image stays 1 MB in the state store)."""
 
     def __init__(self, helper, topic, msg_type):
         self._helper = helper
         self.name = topic
         self.sid = helper.new_id()
-        self.latest = None
+        self._latest = None
+        self._latest_lists = (None, None)  # (the latest message as it came, as lists) once asked
         self.received_at = None
         self.callbacks = []
+        self.raw_callbacks = []
         helper.on("msg", self.sid, self._on_message)
         try:
             self.msg_type = helper.call("subscribe", self.sid, topic, msg_type)
@@ -74,11 +81,25 @@ class Ros2Topic:
             helper.off("msg", self.sid)
             raise
 
+    @property
+    def latest(self):
+        """The newest message as a dict of lists, or None."""
+        message = self._latest
+        came, lists = self._latest_lists
+        if came is not message:
+            lists = None if message is None else as_lists(message)
+            self._latest_lists = (message, lists)
+        return lists
+
     def _on_message(self, message):
-        self.latest = message
+        self._latest = message
         self.received_at = time.monotonic()
-        for callback in list(self.callbacks):
+        for callback in list(self.raw_callbacks):
             callback(message)
+        if self.callbacks:
+            data = as_lists(message)
+            for callback in list(self.callbacks):
+                callback(data)
 
     def close(self):
         self._helper.off("msg", self.sid)

@@ -3,6 +3,7 @@ through this process's helper process (``client``)."""
 import time
 
 from rockly_desktop.core.app_texts import app_local_text
+from rockly_desktop.core.message_arrays import as_shown
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.robot.health import GREEN, RED, HealthItem, server_health, topic_health
 from rockly_desktop.robot.interrupt import Interrupt
@@ -75,7 +76,7 @@ class Ros2Robot:
         self.graph = Ros2Graph(self.helper)
         self.graph.published.update(action["publish"]["topic"] for action in profile.safe_stop
                                     if "publish" in action and action["publish"]["topic"] not in unknown)
-        self.state = StateStore()
+        self.state = StateStore(decode=as_shown)  # the helper's compact arrays: small ones as lists
         self.graph.service_watchers.append(self.state.record)
         self._feed = None
         types = base_types(interface)

@@ -273,9 +273,13 @@ class Helper:
         return publisher, message_class
 
     def op_subscribe(self, sid, topic, type_name):
-        """Subscribe (QoS matched to the publishers); messages come as ('msg', sid, dict) events.
+        """Subscribe (QoS matched to the publishers); messages come as ('msg', sid, dict) events, their
+        arrays of numbers compact (``from_message``'s ``compact``).
 
-        Without a type, the graph's type of ``topic`` is used. Returns the type.
+        Without a type, the graph's type of ``topic`` is used. Returns the type. Nothing queues here:
+        the reading thread writes each message to the pipe, and while Rockly's side reads slower than a
+        robot publishes (a camera), the write waits and the subscription's own history (its QoS depth)
+        keeps the latest messages, dropping the oldest.
         """
         deadline = time.monotonic() + TOPIC_WAIT
         while not type_name:
@@ -290,7 +294,8 @@ class Helper:
                                        self.qos_overrides)
         send = self.send
         self.topics.subscribe(sid, message_class, topic,
-                              lambda message: send((wire.EVENT, "msg", sid, from_message(message))), profile)
+                              lambda message: send((wire.EVENT, "msg", sid, from_message(message, compact=True))),
+                              profile)
         return type_name
 
     def op_unsubscribe(self, sid):

@@ -133,9 +133,11 @@ def slots(message_class) -> dict:
     return dict(zip(message_class.get_fields_and_field_types(), message_class.SLOT_TYPES, strict=True))
 
 
-def from_message(message) -> dict:
-    """The message as plain dicts, lists and numbers."""
-    data = {name: _plain(getattr(message, name)) for name in slots(type(message))}
+def from_message(message, compact: bool = False) -> dict:
+    """The message as plain dicts, lists and numbers; with ``compact``, its sequences of numbers
+    (``uint8[]``, ``float32[]``) stay ``array.array`` (a topic's messages cross the pipe so, and Rockly's
+    side makes them lists for a program, ``core/message_arrays.py``)."""
+    data = {name: _plain(getattr(message, name), compact) for name in slots(type(message))}
     if is_time(type(message)):
         data.update(secs=data["sec"], nsecs=data["nanosec"])
     return data
@@ -156,12 +158,19 @@ def is_time(message_class) -> bool:
     return message_class.__module__.startswith("builtin_interfaces.") and message_class.__name__ in ("Time", "Duration")
 
 
-def _plain(value):
+_COMPACT_ITEMS = 64  # a fixed-size array (numpy) of more items stays compact too
+
+
+def _plain(value, compact=False):
     if hasattr(value, "get_fields_and_field_types"):
-        return from_message(value)
+        return from_message(value, compact)
     if isinstance(value, list):
-        return [_plain(entry) for entry in value]
-    if isinstance(value, array.array) or hasattr(value, "tolist"):
+        return [_plain(entry, compact) for entry in value]
+    if isinstance(value, array.array):
+        return value if compact else value.tolist()
+    if hasattr(value, "tolist"):
+        if compact and value.size > _COMPACT_ITEMS and value.dtype.char in array.typecodes:
+            return array.array(value.dtype.char, value.tobytes())
         return value.tolist()
     return value
 

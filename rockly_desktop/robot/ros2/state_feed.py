@@ -21,7 +21,7 @@ class Ros2StateFeed:
 
     def __init__(self, ros_graph, store):
         self._ros_graph = ros_graph
-        self._followed = FollowedTopics(store, lambda topic, msg_type: ros_graph.topic(topic, msg_type).callbacks)
+        self._followed = FollowedTopics(store, lambda topic, msg_type: ros_graph.topic(topic, msg_type).raw_callbacks)
         self._graph = {"topics": [], "services": [], "actions": []}
         self._stopped = threading.Event()
         self._thread = threading.Thread(target=self._poll, name="rockly-ros2-graph", daemon=True)

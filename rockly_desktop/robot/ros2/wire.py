@@ -15,7 +15,7 @@ protocol version. Standard library only: the helper's Python imports this too.
 import pickle
 import struct
 
-PROTOCOL = 3
+PROTOCOL = 4
 CALL, CAST, REPLY, EVENT = "call", "cast", "reply", "event"
 
 _HEADER = struct.Struct(">I")
