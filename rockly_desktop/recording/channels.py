@@ -32,3 +32,35 @@ SCHEMAS = {
 }
 PROGRAM_ATTACHMENT = "program.rockly"
 METADATA = "rockly"
+
+_KINDS = {"object": dict, "array": list, "string": str, "number": (int, float), "integer": int, "boolean": bool}
+
+
+def fits(topic: str, value) -> bool:
+    """Whether ``value`` is what Rockly's channel ``topic`` holds: its JSON schema's types, enums and
+    required keys (the part of JSON Schema ``SCHEMAS`` use), where a null stands for "none" in it."""
+    return isinstance(value, dict) and _fits(SCHEMAS[topic][1], value)
+
+
+def _fits(schema: dict, value) -> bool:
+    if value is None:
+        return True
+    if "enum" in schema and value not in schema["enum"]:
+        return False
+    kinds = schema.get("type", ())
+    kinds = [kinds] if isinstance(kinds, str) else kinds
+    if kinds and not any(_is(kind, value) for kind in kinds):
+        return False
+    if not isinstance(value, dict):
+        return True
+    if any(key not in value for key in schema.get("required", ())):
+        return False
+    properties, others = schema.get("properties", {}), schema.get("additionalProperties", {})
+    return all(_fits(properties.get(key, others if isinstance(others, dict) else {}), item)
+               for key, item in value.items())
+
+
+def _is(kind: str, value) -> bool:
+    if kind == "null":
+        return value is None
+    return isinstance(value, _KINDS[kind]) and not (isinstance(value, bool) and kind in ("number", "integer"))

@@ -15,7 +15,7 @@ def _ending(entry) -> str:
     seconds = f" ({data['seconds']:.2f} s)" if isinstance(data.get("seconds"), (int, float)) else ""
     if data["kind"] == "outcome":
         text = f": {data['text']}" if data.get("text") else ""
-        return f"goal {data['name']} {data['status']}{text}{seconds}"
+        return f"goal {data['name']} {data.get('status') or ''}{text}{seconds}"
     if data["kind"] == "response":
         return f"call {data['name']} answered{seconds}"
     return f"{data['name']} failed: {data.get('text', '')}{seconds}"
