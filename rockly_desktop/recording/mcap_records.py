@@ -19,6 +19,7 @@ from mcap.records import Attachment, Channel, Chunk, DataEnd, Footer, Message, M
 
 MAGIC = b"\x89MCAP0\r\n"
 _HEADER = struct.Struct("<BQ")
+_MESSAGE_HEAD = struct.Struct("<HIQQ")  # channel id, sequence, log time, publish time; then the data
 _CHUNK_HEAD = struct.Struct("<QQQI")  # start, end, uncompressed size, crc; then the compression's name
 _READERS = {0x02: Footer.read, 0x03: Schema.read, 0x04: Channel.read, 0x09: Attachment.read,
             0x0C: Metadata.read, 0x0F: DataEnd.read}
@@ -34,7 +35,7 @@ class Bounds:
     record_bytes: int = 64 * MiB
     chunk_bytes: int = 64 * MiB
     total_bytes: int = 2048 * MiB
-    records: int = 5_000_000
+    records: int = 2_000_000
 
 
 @dataclass
@@ -98,11 +99,17 @@ def _count(report: ReadReport, bounds: Bounds):
 
 def _parse(opcode: int, body: bytes, report: ReadReport):
     """The record of ``opcode`` in ``body``; None for one Rockly does not read, or a garbled one (counted)."""
-    if opcode != _MESSAGE and opcode not in _READERS:
+    if opcode == _MESSAGE:  # most records: read straight from the bytes
+        if len(body) < _MESSAGE_HEAD.size:
+            report.damaged += 1
+            return None
+        channel_id, sequence, log_time, publish_time = _MESSAGE_HEAD.unpack_from(body)
+        return Message(channel_id=channel_id, sequence=sequence, log_time=log_time, publish_time=publish_time,
+                       data=body[_MESSAGE_HEAD.size:])
+    if opcode not in _READERS:
         return None
-    stream = ReadDataStream(io.BytesIO(body))
     try:
-        return Message.read(stream, len(body)) if opcode == _MESSAGE else _READERS[opcode](stream)
+        return _READERS[opcode](ReadDataStream(io.BytesIO(body)))
     except Exception:  # a record cut or garbled inside: left out
         report.damaged += 1
         return None

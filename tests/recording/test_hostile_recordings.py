@@ -148,3 +148,16 @@ def test_a_damaged_recording_opens_or_is_refused_in_words_never_with_another_err
         return
     timeline_lines(recording)
     Moments(recording).markers()
+
+
+def test_rockly_recordings_list_says_its_messages_in_the_language_asked_and_lists_a_hostile_file_as_it_is(tmp_path):
+    folder = tmp_path / "recordings"
+    folder.mkdir()
+    listing = subprocess.run([sys.executable, "-m", "rockly_desktop", "recordings", "list", "--folder", str(folder),
+                              "--language", "de"], capture_output=True, text=True, timeout=REPLAY_SECONDS, cwd=REPO)
+    assert listing.returncode == 0 and listing.stdout.strip() == f"Keine Aufzeichnungen in {folder}."
+    hole = folder / "2026-05-01_09-00-00_tour_sim.mcap"
+    sparse(hole, 2 << 30)
+    listing = subprocess.run([sys.executable, "-m", "rockly_desktop", "recordings", "list", "--folder", str(folder),
+                              "--language", "de"], capture_output=True, text=True, timeout=REPLAY_SECONDS, cwd=REPO)
+    assert listing.returncode == 0 and listing.stdout.split() == ["2097152.0", "KiB", str(hole)]
