@@ -38,6 +38,21 @@ def problem_text(error: OSError, language: str) -> str:
     return error.strerror or str(error)
 
 
+def held(path) -> bool:
+    """Whether a run is recording to ``path`` now (it holds the file's lock)."""
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_CLOEXEC)
+    except OSError:
+        return False
+    try:
+        fcntl.flock(fd, fcntl.LOCK_SH | fcntl.LOCK_NB)
+    except BlockingIOError:
+        return True
+    finally:
+        os.close(fd)
+    return False
+
+
 def disk_full(error: OSError) -> bool:
     """Whether ``error`` says the disk (or the user's quota) is full."""
     return error.errno in _DISK_FULL

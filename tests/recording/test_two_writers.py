@@ -1,5 +1,6 @@
 """Two runs recording to one file: the second is refused before its robot moves and the first one's
 recording stays whole; the file's lock goes with a run killed by SIGKILL."""
+import datetime
 import signal
 import subprocess
 import sys
@@ -9,6 +10,8 @@ from program_builder import block, number, rockly_document, stack, text
 from waiting import eventually
 
 from rockly_desktop.recording import channels
+from rockly_desktop.recording.library import keep_last, new_recording_path, recordings_in
+from rockly_desktop.recording.mcap_file import McapFile
 from rockly_desktop.recording.reading import RecordingUnreadable, read_recording
 
 REPO = Path(__file__).resolve().parents[2]
@@ -71,3 +74,17 @@ def test_a_second_run_recording_to_a_held_file_is_refused_the_first_file_stays_w
     assert after.returncode == 0, after.stderr
     recording = read_recording(out)
     assert recording.complete and recording.metadata["program"] == "after.rockly"
+
+
+def test_the_last_n_kept_never_deletes_a_recording_a_run_is_writing(tmp_path):
+    folder = tmp_path / "recordings"
+    older = new_recording_path(folder, "a.rockly", "sim", datetime.datetime(2026, 5, 1, 9, 0))
+    writing = new_recording_path(folder, "b.rockly", "sim", datetime.datetime(2026, 5, 1, 9, 1))
+    older.write_bytes(b"")
+    file = McapFile(writing)  # another window's run, recording
+    try:
+        assert keep_last(folder, 0) == [older]
+        assert recordings_in(folder) == [writing]
+    finally:
+        file.close()
+    assert keep_last(folder, 0) == [writing]
