@@ -22,7 +22,7 @@ from rockly_desktop.core.app_texts import app_text
 
 LIBRARY = "rockly"
 CHUNK_BYTES = 256 * 1024
-_DISK_FULL = (errno.ENOSPC, errno.EDQUOT, errno.EFBIG)
+_DISK_FULL = (errno.ENOSPC, errno.EDQUOT)
 
 
 class RecordingHeld(OSError):

@@ -1,6 +1,6 @@
 """An MCAP file's records read within bounds: a hostile or broken file costs bounded memory and time.
 
-``read_records(stream, bounds)`` yields the Schema, Channel, Message, Metadata, Attachment, DataEnd
+``read_records(stream, report, bounds)`` yields the Schema, Channel, Message, Metadata, Attachment, DataEnd
 and Footer records in file order (a chunk's records in its place). What it leaves out it counts
 in a ``ReadReport``: a record or chunk bigger than its bound is skipped unread (a seek, never a
 read of gigabytes), one that is garbled is skipped, and reading stops where the file stops making
@@ -20,7 +20,6 @@ from mcap.records import Attachment, Channel, Chunk, DataEnd, Footer, Message, M
 MAGIC = b"\x89MCAP0\r\n"
 _HEADER = struct.Struct("<BQ")
 _MESSAGE_HEAD = struct.Struct("<HIQQ")  # channel id, sequence, log time, publish time; then the data
-_CHUNK_HEAD = struct.Struct("<QQQI")  # start, end, uncompressed size, crc; then the compression's name
 _READERS = {0x02: Footer.read, 0x03: Schema.read, 0x04: Channel.read, 0x09: Attachment.read,
             0x0C: Metadata.read, 0x0F: DataEnd.read}
 _MESSAGE, _CHUNK = 0x05, 0x06
@@ -34,14 +33,15 @@ class Bounds:
 
     record_bytes: int = 64 * MiB
     chunk_bytes: int = 64 * MiB
-    total_bytes: int = 2048 * MiB
+    total_bytes: int = 1024 * MiB
     records: int = 2_000_000
 
 
 @dataclass
 class ReadReport:
     """What reading left out: ``too_big`` records or chunks skipped for their size, ``damaged`` ones
-    that could not be read, and ``stopped`` early ('' read to the end, 'too_big' at the bounds)."""
+    that could not be read, and ``stopped`` early ('' read to the end, 'too_big' at the bounds); the
+    ``records`` and bytes ``decompressed`` so far."""
 
     too_big: int = 0
     damaged: int = 0
@@ -105,7 +105,7 @@ def _parse(opcode: int, body: bytes, report: ReadReport):
             return None
         channel_id, sequence, log_time, publish_time = _MESSAGE_HEAD.unpack_from(body)
         return Message(channel_id=channel_id, sequence=sequence, log_time=log_time, publish_time=publish_time,
-                       data=body[_MESSAGE_HEAD.size:])
+                       data=bytes(body[_MESSAGE_HEAD.size:]))
     if opcode not in _READERS:
         return None
     try:
@@ -131,7 +131,7 @@ def _chunk_records(body: bytes, report: ReadReport, bounds: Bounds):
         report.damaged += 1
         return
     report.decompressed += len(data)
-    offset, end = 0, len(data)
+    view, offset, end = memoryview(data), 0, len(data)  # records are read from it without copies
     while offset + _HEADER.size <= end:
         opcode, length = _HEADER.unpack_from(data, offset)
         offset += _HEADER.size
@@ -139,7 +139,7 @@ def _chunk_records(body: bytes, report: ReadReport, bounds: Bounds):
             report.damaged += 1
             return
         _count(report, bounds)
-        record = _parse(opcode, data[offset:offset + length], report)
+        record = _parse(opcode, view[offset:offset + length], report)
         offset += length
         if record is not None:
             yield record
@@ -160,4 +160,4 @@ def _decompressed(chunk: Chunk):
             return None
     except Exception:  # not what its compression says
         return None
-    return bytes(data) if len(data) == limit else None
+    return data if len(data) == limit else None

@@ -18,7 +18,7 @@ from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.recording import channels
 from rockly_desktop.recording.mcap_records import Bounds, NotMcap, ReadReport, read_records
 
-ROBOT_BYTES = 256 << 20   # the robot's messages kept, in all (beyond: left out, said)
+ROBOT_BYTES = 128 << 20   # the robot's messages kept, in all (beyond: left out, said)
 EVENT_BYTES = 1 << 20     # one event of Rockly's (beyond: damaged)
 BOUNDS = Bounds()
 

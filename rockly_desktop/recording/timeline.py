@@ -38,7 +38,8 @@ def timeline_lines(recording: Recording) -> list:
     """The timeline of ``recording`` as text lines, a header first."""
     meta = recording.metadata
     lines = [f"# {meta.get('program', '?')} on {meta.get('robot', '?')} ({meta.get('profile', '?')}), "
-             f"started {meta.get('started', '?')}" + ("" if recording.complete else " - cut short, read to its end")]
+             f"started {meta.get('started', '?')}" + ("" if recording.complete or recording.read_in_part
+                                                    else " - cut short, read to its end")]
     blocks = [entry for entry in recording.entries if entry.channel == channels.BLOCKS]
     ends = [entry.time for entry in recording.entries if entry.channel == channels.RUN
             and entry.data.get("event") == "end"]
