@@ -11,7 +11,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from mcap.writer import CompressionType
 
-from rockly_desktop.recording import channels
+from rockly_desktop.recording import channels, reading
+from rockly_desktop.recording.mcap_records import Bounds
 from rockly_desktop.recording.moments import Moments
 from rockly_desktop.recording.reading import RecordingUnreadable, read_recording
 from rockly_desktop.recording.timeline import timeline_lines
@@ -161,3 +162,23 @@ def test_rockly_recordings_list_says_its_messages_in_the_language_asked_and_list
     listing = subprocess.run([sys.executable, "-m", "rockly_desktop", "recordings", "list", "--folder", str(folder),
                               "--language", "de"], capture_output=True, text=True, timeout=REPLAY_SECONDS, cwd=REPO)
     assert listing.returncode == 0 and listing.stdout.split() == ["2097152.0", "KiB", str(hole)]
+
+
+def test_reading_stops_at_its_bounds_on_everything_and_says_how_far_it_read(tmp_path, monkeypatch):
+    path = tmp_path / "long.mcap"
+    with_zero_chunks(path, 6, MiB)  # robot messages of 1 MiB each, between a start and an end
+    whole = read_recording(path)
+    assert whole.complete and whole.notes() == [] and len(whole.topic_data["/camera"]) == 6
+
+    in_part = read_recording(path, Bounds(total_bytes=3 * MiB + 1000))
+    assert in_part.read_in_part and not in_part.complete
+    assert [str(note) for note in in_part.notes()] == [
+        "This recording is too big to read whole: only its first 0.5 s were read."]
+    assert timeline_lines(in_part)[0] == "# tour.rockly on sim (hobbit), started 2026-05-01T09:00:00+00:00"
+    assert read_recording(path, Bounds(records=8)).read_in_part
+
+    monkeypatch.setattr(reading, "ROBOT_BYTES", 2 * MiB + 100)
+    kept = read_recording(path)
+    assert len(kept.topic_data["/camera"]) == 2 and kept.on(channels.RUN)[-1].data["event"] == "end"
+    assert [note.in_language("de") for note in kept.notes()] == [
+        "Die Topics des Roboters sind zu groß, um sie ganz zu behalten: sie werden bis 0.0 s gezeigt."]
