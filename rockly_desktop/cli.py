@@ -9,7 +9,8 @@
     (``rockly plugins ...`` is the older name of ``rockly profiles ...`` and still works)
     rockly export PROGRAM -o OUT.py     write the Python generated from a program (-o -: to standard output)
     rockly run PROGRAM [--answer A]...  run a program on the simulator (or --backend KIND), without a window
-    (export and run take --language en|de: the blocks' texts and every message; default: the app's language)
+    (export, run, replay and recordings list take --language en|de: the blocks' texts and every message;
+     default: the app's language)
     rockly sim PROFILE --ros            the profile's simulated robot as a ROS 1 node, in a small window
     rockly run PROGRAM --record OUT.mcap  ... and record the run
     rockly replay RECORDING.mcap        print a recorded run's timeline (block, time, outcome)
@@ -66,10 +67,12 @@ def _tool_parser() -> argparse.ArgumentParser:
 
     replay = commands.add_parser("replay", help="print a recorded run's timeline")
     replay.add_argument("recording", type=Path, help="an .mcap file Rockly recorded")
+    _language_option(replay)
     recordings = commands.add_parser("recordings", help="recorded runs")
     listing = recordings.add_subparsers(dest="recordings_command", required=True).add_parser(
         "list", help="list the recordings in the recordings folder")
     listing.add_argument("--folder", type=Path, help="another folder (default: the one the preferences name)")
+    _language_option(listing)
 
     sim = commands.add_parser("sim", help="run a profile's simulated robot as a ROS node, in a small window")
     sim.add_argument("profile", help="the robot profile id (see rockly profiles list)")
@@ -251,7 +254,9 @@ def main(argv=None) -> int:
         if args.command in ("replay", "recordings"):
             from rockly_desktop.recording_command import list_recordings, replay
 
-            return replay(args.recording) if args.command == "replay" else list_recordings(args.folder)
+            language = args.language or _app_language()
+            return (replay(args.recording, language) if args.command == "replay"
+                    else list_recordings(args.folder, language))
         if args.command == "sim":
             from rockly_desktop.sim_command import serve_simulator
 

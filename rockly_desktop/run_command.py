@@ -17,6 +17,7 @@ from rockly_desktop.core.workspace_blocks import block_types_by_id
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import BlockEntered, OutputPrinted, RunFinished
 from rockly_desktop.executor.run_setup import limits_line, make_runner
+from rockly_desktop.recording.mcap_file import disk_full, problem_text
 from rockly_desktop.robot.answer_list import AnswerList
 from rockly_desktop.robot.links import DEFAULT_KIND, open_link
 
@@ -65,12 +66,16 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
             out(app_text("cli_print", language, text=event.text))
 
     try:
-        recording = _recording(record, program_path, program.profile, robot, types)
+        recording = _recording(record, program_path, program.profile, robot, types, language)
     except OSError as error:
-        print(app_text("cli_cannot_record", language, command="rockly run", path=record,
-                       reason=error.strerror or error), file=sys.stderr)
-        robot.shutdown()
-        return 1
+        if not disk_full(error):  # a path the person can mend: nothing has moved yet
+            print(app_text("cli_cannot_record", language, command="rockly run", path=record,
+                           reason=problem_text(error, language)), file=sys.stderr)
+            robot.shutdown()
+            return 1
+        recording = None  # a full disk never keeps the program from running
+        print(app_text("cli_warning", language, command="rockly run", warning=app_text(
+            "recording_not_started", language, path=record, reason=problem_text(error, language))), file=sys.stderr)
     previous = signal.signal(signal.SIGINT, _once(control.request_stop))
     try:
         result = make_runner(program.profile, robot, run_code, control, report, language, limits,
@@ -97,16 +102,21 @@ def _once(stop):
     return handler
 
 
-def _recording(record, program_path, profile, robot, types):
+def _recording(record, program_path, profile, robot, types, language):
+    """The run's recording to ``record`` (None without one); a write failing later is said once."""
     if record is None:
         return None
     from pathlib import Path
 
     from rockly_desktop.executor.run_recording import RunRecording
 
+    def stopped(error):
+        print(app_text("cli_warning", language, command="rockly run", warning=app_text(
+            "recording_stopped", language, path=record, reason=problem_text(error, language))), file=sys.stderr)
+
     program_path = Path(program_path)
     program = program_path.read_bytes() if program_path.suffix == ".rockly" else None
-    return RunRecording(record, profile, robot, program_path.name, program, types)
+    return RunRecording(record, profile, robot, program_path.name, program, types, on_stopped=stopped)
 
 
 def _teacher(teacher):

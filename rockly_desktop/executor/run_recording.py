@@ -22,12 +22,15 @@ class RunRecording:
 
     ``program`` is the ``.rockly`` file's bytes (stored in the recording), ``block_types``
     maps block ids to their types, ``topic_rate`` caps each robot topic (messages a second).
+    Raises OSError when the recording cannot be begun (``mcap_file.RecordingHeld``: another run
+    records to ``path``); ``on_stopped(error)`` is called once if a write fails later (a full disk),
+    from the recording's thread: the run goes on unrecorded from then.
     """
 
     def __init__(self, path, profile, robot, program_name: str, program: bytes = None, block_types=None,
-                 topic_rate: float = 10.0):
+                 topic_rate: float = 10.0, on_stopped=None):
         self.path = path
-        self.recorder = Recorder(path, robot.recording_encoder(), topic_rate)
+        self.recorder = Recorder(path, robot.recording_encoder(), topic_rate, on_stopped=on_stopped)
         self._robot = robot
         self._block_types = block_types or {}
         self._hooks = None

@@ -32,3 +32,48 @@ SCHEMAS = {
 }
 PROGRAM_ATTACHMENT = "program.rockly"
 METADATA = "rockly"
+
+_KINDS = {"object": (dict,), "array": (list,), "string": (str,), "number": (int, float), "integer": (int,),
+          "boolean": (bool,), "null": ()}
+
+
+def fits(topic: str, value) -> bool:
+    """Whether ``value`` is what Rockly's channel ``topic`` holds: its JSON schema's types, enums and
+    required keys (the part of JSON Schema ``SCHEMAS`` use), where a null stands for "none" in it."""
+    if topic not in _CHECKS:
+        _CHECKS[topic] = _check(SCHEMAS[topic][1])
+    return isinstance(value, dict) and _CHECKS[topic](value)
+
+
+def _check(schema: dict):
+    """A function telling whether a value fits ``schema`` (made once per channel: events are many)."""
+    if not schema:
+        return _anything
+    kinds = schema.get("type", ())
+    kinds = (kinds,) if isinstance(kinds, str) else tuple(kinds)
+    types = tuple(python for kind in kinds for python in _KINDS[kind])
+    not_bool = "boolean" not in kinds  # True is an int to Python, not a number to JSON
+    enum, required = schema.get("enum"), tuple(schema.get("required", ()))
+    properties = {key: _check(part) for key, part in schema.get("properties", {}).items()}
+    others = schema.get("additionalProperties", {})
+    other = _check(others if isinstance(others, dict) else {})
+
+    def check(value) -> bool:
+        if value is None:
+            return True
+        if enum is not None and value not in enum:
+            return False
+        if types and (not isinstance(value, types) or not_bool and isinstance(value, bool)):
+            return False
+        if isinstance(value, dict):
+            return all(key in value for key in required) and all(
+                properties.get(key, other)(item) for key, item in value.items())
+        return True
+    return check
+
+
+def _anything(_value) -> bool:
+    return True
+
+
+_CHECKS = {}

@@ -3,6 +3,8 @@ import datetime
 import re
 from pathlib import Path
 
+from rockly_desktop.recording.mcap_file import held
+
 SUFFIX = ".mcap"
 _UNSAFE = re.compile(r"[^\w.-]+")
 _NAMED = re.compile(r"^\d{4}-\d{2}-\d{2}_\d{2}-\d{2}-\d{2}(-\d+)?_.+\.mcap$")
@@ -34,8 +36,10 @@ def recordings_in(folder) -> list:
 
 
 def keep_last(folder, count: int) -> list:
-    """Delete all but the newest ``count`` recordings Rockly named in ``folder``; returns the deleted paths."""
+    """Delete all but the newest ``count`` recordings Rockly named in ``folder``, but for those a run is
+    recording to now (another window's); returns the deleted paths."""
     old = recordings_in(folder)[:-count] if count > 0 else recordings_in(folder)
+    old = [path for path in old if not held(path)]
     for path in old:
         path.unlink(missing_ok=True)
     return old

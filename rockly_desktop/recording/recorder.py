@@ -10,6 +10,8 @@ then sampled), a full queue drops what comes (counted in the recording's stats a
 and the robot's messages waiting in it hold at most ``QUEUE_BYTES`` (``message_bytes``'s
 estimate): a camera's message that does not fit while the writer is behind is dropped and
 counted per topic (``dropped``), so a slow disk or encoder never fills memory.
+A write that fails (a full disk) stops the recording, not the run: what was written stays
+readable, what comes later is dropped, and ``on_stopped(error)`` is called once.
 """
 import logging
 import queue
@@ -40,11 +42,15 @@ class Recorder:
     ROS encoding, which the encoder names (``message_encoding``: 'ros1' or 'cdr'; ``schema_encoding``:
     'ros1msg' or 'ros2msg'; ``schema_name(msg_type)``); None: topics are written as JSON, as is a
     type the encoder cannot encode (said once in the log); ``topic_rate`` caps each topic (messages a
-    second, 0 or less: no topic is recorded); ``clock()`` gives nanoseconds since the epoch.
+    second, 0 or less: no topic is recorded); ``clock()`` gives nanoseconds since the epoch;
+    ``on_stopped(error)`` is called once, from the writer thread or ``close``, when a write fails
+    (``stopped`` is then that OSError).
     """
 
-    def __init__(self, path, encoder=None, topic_rate: float = 10.0, clock=None):
+    def __init__(self, path, encoder=None, topic_rate: float = 10.0, clock=None, on_stopped=None):
         self.path = path
+        self.stopped = None
+        self._on_stopped = on_stopped
         self._encoder = encoder
         self._gap = int(1e9 / topic_rate) if topic_rate > 0 else None
         self._offset = time.time_ns() - time.monotonic_ns()  # block hooks stamp with monotonic_ns
@@ -74,13 +80,18 @@ class Recorder:
     # --- set-up --------------------------------------------------------------------------
 
     def start(self, metadata: dict, program: bytes = None):
-        """Open the file, store ``metadata`` and the ``.rockly`` ``program`` and start the writer thread."""
+        """Open the file, store ``metadata`` and the ``.rockly`` ``program`` and start the writer thread;
+        raises OSError when that cannot be written (no file is left then)."""
         self._file = McapFile(self.path)
         now = self._clock()
-        self._file.metadata(channels.METADATA, metadata)
-        if program is not None:
-            self._file.attach(now, channels.PROGRAM_ATTACHMENT, "application/json", program)
-        self._file.flush()
+        try:
+            self._file.metadata(channels.METADATA, metadata)
+            if program is not None:
+                self._file.attach(now, channels.PROGRAM_ATTACHMENT, "application/json", program)
+            self._file.flush()
+        except OSError:
+            self._file.discard()
+            raise
         self._thread = threading.Thread(target=self._run, name="rockly-recorder", daemon=True)
         self._thread.start()
 
@@ -104,7 +115,7 @@ class Recorder:
     def topic(self, topic: str, msg_type: str, message):
         """Record a robot topic's message, unless it comes sooner than the rate cap allows (or is no
         topic: a simulator's service calls and goals, which the commands channel holds)."""
-        if "/" not in msg_type:
+        if "/" not in msg_type or self.stopped is not None:
             return
         now = self._clock()
         gap = self._gap
@@ -122,9 +133,11 @@ class Recorder:
 
     def _put(self, item):
         try:
+            if self.stopped is not None:
+                raise queue.Full  # nothing more is written: the item goes as if the queue were full
             self._queue.put_nowait(item)
         except queue.Full:
-            self._overflow += 1
+            self._overflow += self.stopped is None
             if item[1] is None:
                 with self._bytes_lock:
                     self._queued_bytes -= item[2][3]
@@ -143,22 +156,39 @@ class Recorder:
         self._stopping.set()
         self._thread.join()
         self._thread = None
-        self._write_pending(final=True)
-        if self._dropped:
-            log.warning("recording %s: messages dropped while the writer was behind: %s", self.path, self._dropped)
-        self._file.write_json(channels.STATS, *channels.SCHEMAS[channels.STATS], self._clock(), self.stats())
-        self._file.close()
+        try:
+            if self.stopped is None:
+                self._write_pending(final=True)
+                if self._dropped:
+                    log.warning("recording %s: messages dropped while the writer was behind: %s",
+                                self.path, self._dropped)
+                self._file.write_json(channels.STATS, *channels.SCHEMAS[channels.STATS], self._clock(), self.stats())
+            self._file.close()
+        except OSError as error:
+            self._stop(error)
+            self._file.close()
 
     def _run(self):
         last_flush = time.monotonic()
-        while not self._stopping.wait(TICK_SECONDS):
+        while self.stopped is None and not self._stopping.wait(TICK_SECONDS):
             try:
                 self._write_pending()
                 if time.monotonic() - last_flush >= FLUSH_SECONDS:
                     self._file.flush()
                     last_flush = time.monotonic()
+            except OSError as error:
+                self._stop(error)
             except Exception:  # a recording must never take the run down
                 log.exception("recording %s failed", self.path)
+
+    def _stop(self, error: OSError):
+        """A write failed: the recording ends here (once)."""
+        if self.stopped is not None:
+            return
+        self.stopped = error
+        log.info("recording %s stopped: %s", self.path, error)
+        if self._on_stopped is not None:
+            self._on_stopped(error)
 
     def _write_pending(self, final: bool = False):
         items = []

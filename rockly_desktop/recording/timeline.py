@@ -15,7 +15,7 @@ def _ending(entry) -> str:
     seconds = f" ({data['seconds']:.2f} s)" if isinstance(data.get("seconds"), (int, float)) else ""
     if data["kind"] == "outcome":
         text = f": {data['text']}" if data.get("text") else ""
-        return f"goal {data['name']} {data['status']}{text}{seconds}"
+        return f"goal {data['name']} {data.get('status') or ''}{text}{seconds}"
     if data["kind"] == "response":
         return f"call {data['name']} answered{seconds}"
     return f"{data['name']} failed: {data.get('text', '')}{seconds}"
@@ -38,7 +38,8 @@ def timeline_lines(recording: Recording) -> list:
     """The timeline of ``recording`` as text lines, a header first."""
     meta = recording.metadata
     lines = [f"# {meta.get('program', '?')} on {meta.get('robot', '?')} ({meta.get('profile', '?')}), "
-             f"started {meta.get('started', '?')}" + ("" if recording.complete else " - cut short, read to its end")]
+             f"started {meta.get('started', '?')}" + ("" if recording.complete or recording.read_in_part
+                                                    else " - cut short, read to its end")]
     blocks = [entry for entry in recording.entries if entry.channel == channels.BLOCKS]
     ends = [entry.time for entry in recording.entries if entry.channel == channels.RUN
             and entry.data.get("event") == "end"]

@@ -55,7 +55,8 @@ class Replay(QObject):
 
     def open(self, path, quiet: bool = False) -> bool:
         """Show the timeline of the recording at ``path``. A file that cannot be read is said in a message
-        box (``quiet``: only logged, e.g. after a run) and nothing changes; returns whether it opened."""
+        box and nothing changes, what reading left out of one in a message box and the bar's note (``quiet``,
+        e.g. after a run: only in the note); returns whether it opened."""
         # Imported when first used: reading and decoding recordings (mcap, numpy) costs 0.1 s at start.
         from rockly_desktop.recording.moments import Moments
         from rockly_desktop.recording.odometry import RecordedPath
@@ -66,10 +67,8 @@ class Replay(QObject):
             recording = read_recording(path)
         except RecordingUnreadable as error:
             if not quiet:
-                box = plain_message_box(self.parent(), QMessageBox.Icon.Warning,
-                                        tr("recording_unreadable", self.language), str(error))
-                box.setObjectName("recording_unreadable_box")
-                box.open()
+                self._say("recording_unreadable_box", tr("recording_unreadable", self.language),
+                          error.in_language(self.language))
             return False
         self.moments = Moments(recording)
         self.topics = RecordedTopics(recording)
@@ -77,9 +76,18 @@ class Replay(QObject):
         self.plan = None
         path = None if recording.on(channels.SIMULATOR) else RecordedPath(self.topics)
         self.path = path or None
-        self.bar.show_timeline(self.moments.duration, self.moments.markers(),
-                               "" if recording.complete else tr("replay_cut_short", self.language))
+        notes = "\n".join(note.in_language(self.language) for note in recording.notes())
+        short = [tr(key, self.language) for key, shown in (("replay_cut_short", not recording.complete),
+                                                            ("replay_parts_left_out", notes)) if shown]
+        self.bar.show_timeline(self.moments.duration, self.moments.markers(), " ".join(short), notes)
+        if notes and not quiet:
+            self._say("recording_partly_read_box", tr("recording_partly_read", self.language), notes)
         return True
+
+    def _say(self, name: str, title: str, text: str):
+        box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, title, text)
+        box.setObjectName(name)
+        box.open()
 
     def close(self):
         """Hide the timeline (a run is starting, or another program opens)."""

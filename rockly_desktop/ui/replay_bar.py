@@ -121,9 +121,11 @@ class ReplayBar(QWidget):
             return self._exact
         return self.slider.value() / 1000
 
-    def show_timeline(self, duration: float, markers, note: str = ""):
-        """Show the bar for a recording ``duration`` s long with its ``markers``; the scrubber at its end."""
+    def show_timeline(self, duration: float, markers, note: str = "", details: str = ""):
+        """Show the bar for a recording ``duration`` s long with its ``markers``; the scrubber at its end;
+        ``note`` follows the time, ``details`` (what the note stands for) is its tooltip."""
         self.pause()
+        self.time_label.setToolTip(details)
         self.duration = max(0.0, duration)
         self._note = note
         self.markers.duration, self.markers.markers = self.duration, list(markers)

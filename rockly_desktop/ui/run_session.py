@@ -34,6 +34,7 @@ class RunSession(QObject):
     sig_state_changed = Signal(str)
     sig_finished = Signal(object)  # RunFinished, once the run's thread has ended
     sig_status = Signal(str)  # a status-bar message; empty: clear it
+    sig_recording_problem = Signal(str)  # the run is not recorded, or its recording stopped (from any thread)
 
     def __init__(self, document, editor, robots, console, variables, settings, parent):
         super().__init__(parent)
@@ -59,6 +60,7 @@ class RunSession(QObject):
         self._follow = QTimer(self)
         self._follow.setInterval(FOLLOW_MS)
         self._follow.timeout.connect(self._follow_run)
+        self.sig_recording_problem.connect(lambda text: self.console.append(text, "error"))
 
     # --- commands -----------------------------------------------------------------------
 
@@ -103,7 +105,8 @@ class RunSession(QObject):
             robot = self.robots.robot()
             profile = self.document.profile
             limits = self.settings.teacher.limits(profile.id)  # kept by the backend, on any robot
-            recording = open_run_recording(self.settings, self.document, self.editor.workspace, robot)
+            recording = open_run_recording(self.settings, self.document, self.editor.workspace, robot,
+                                           self.sig_recording_problem.emit)
             self.last_recording = recording.path if recording is not None else None
             self._recording = recording if badges_shown(self.settings, profile.id) else None
             self._badges_shown = None
