@@ -132,15 +132,17 @@ class Recorder:
         self._put((now, None, (topic, msg_type, message, size)))
 
     def _put(self, item):
-        try:
-            if self.stopped is not None:
-                raise queue.Full  # nothing more is written: the item goes as if the queue were full
-            self._queue.put_nowait(item)
-        except queue.Full:
-            self._overflow += self.stopped is None
-            if item[1] is None:
-                with self._bytes_lock:
-                    self._queued_bytes -= item[2][3]
+        """Queue ``item``; when the queue is full or the recording stopped it is let go (a robot
+        message's bytes given back)."""
+        if self.stopped is None:
+            try:
+                self._queue.put_nowait(item)
+                return
+            except queue.Full:
+                self._overflow += 1
+        if item[1] is None:
+            with self._bytes_lock:
+                self._queued_bytes -= item[2][3]
 
     def stats(self) -> dict:
         """What was not recorded so far: per topic ``capped`` (the rate cap) and ``dropped`` (the queue's bytes
