@@ -13,6 +13,8 @@ from window_tools import completed
 from rockly_desktop.recording import channels
 from rockly_desktop.recording.reading import read_recording
 from rockly_desktop.recording.recorder import Recorder
+from rockly_desktop.robot.links import link_kind
+from rockly_desktop.ui.connection_dialog import ConnectionDialog
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "turtlebot" / "avoid-obstacles.rockly"
 
@@ -62,6 +64,18 @@ def test_new_open_an_example_and_a_robot_switch_end_the_replay_and_clear_the_var
     assert window.variables.values() == {}
     live, view = window.robot().snapshot(), window.simulator_dock.view  # the view shows the robot as it is
     qtbot.waitUntil(lambda: (view._snapshot["x"], view._snapshot["y"]) == (live["x"], live["y"]), timeout=5000)
+
+
+def test_running_on_a_robot_over_ros_instead_ends_the_replay_and_clears_the_variables(qtbot, window, ros_master,
+                                                                                     hobbit_on_ros, monkeypatch):
+    run_hobbit_counting_laps(qtbot, window)
+    window.settings.remember_link_connection(link_kind("ros1"), "hobbit", {"master": ros_master.uri,
+                                                                            "host": "127.0.0.1"})
+    monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
+    window.run_toolbar.backend.setCurrentIndex(window.run_toolbar.backend.findData("ros1"))
+    assert window.robots.kind == "ros1"
+    qtbot.waitUntil(lambda: not window.replay_bar.isVisible(), timeout=5000)
+    assert window.variables.values() == {}
 
 
 def test_a_recording_of_hobbit_is_not_replayed_onto_the_turtlebot(qtbot, window):
