@@ -4,7 +4,7 @@ and the window manager cut its title: "Etwas ist s…fgegangen").
 
 The title's width is the minimum width of the box's button row, not of its text: a minimum width on
 the text label replaces the label's own size hint, so QMessageBox saw a label narrower than its
-text, did not wrap it and cut it mid-word ("HOBBIT bumped in"). With the row holding the width,
+text, did not wrap it and cut it mid-word (a bump's message ended "bumped in"). With the row holding the width,
 QMessageBox measures the text as it is and wraps it when it is wider than its limits.
 """
 from PySide6.QtCore import Qt

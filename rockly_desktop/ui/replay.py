@@ -4,8 +4,8 @@ of its recorded ``/odom``), the Robot state panels the recorded topics then, the
 been printed by then and the Plot the recorded series with a cursor at it. Replay only ever
 changes what is on screen: it sends nothing to a robot, and a file that is no recording changes
 nothing at all. A recording shows only on the robot it was recorded with (its profile) and, for a
-simulator's run, in the same solid world: HOBBIT's run on the TurtleBot's arena would show a
-robot where no robot was.
+simulator's run, in the same solid world: one robot's run drawn in another robot's world would
+show a robot where no robot was.
 """
 from PySide6.QtCore import QObject
 from PySide6.QtWidgets import QFileDialog, QMessageBox
