@@ -41,10 +41,13 @@ class RunFinished:
     """The run ended. ``outcome``: 'finished', 'stopped' or 'error'.
 
     For an error, ``block_id`` is the block it came from, ``message`` a plain-language
-    explanation and ``details`` the traceback.
+    explanation and ``details`` the traceback (None when the robot refused: ``by_robot``,
+    a bump, a capability the teacher switched off, a goal it could not reach — what the
+    robot says is all there is to tell, nothing in Rockly or the program broke).
     """
 
     outcome: str
     block_id: str = None
     message: str = None
     details: str = None
+    by_robot: bool = False

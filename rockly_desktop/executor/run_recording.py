@@ -35,9 +35,13 @@ class RunRecording:
         self._block_types = block_types or {}
         self._hooks = None
         self.badges = BadgeStates()  # what the blocks' commands did so far, for their badges
-        self.recorder.start({"program": program_name, "profile": profile.id, "robot": robot.kind,
-                             "started": datetime.datetime.now().astimezone().isoformat(timespec="seconds"),
-                             "rockly": __version__}, program)
+        metadata = {"program": program_name, "profile": profile.id, "robot": robot.kind,
+                    "started": datetime.datetime.now().astimezone().isoformat(timespec="seconds"),
+                    "rockly": __version__}
+        world = getattr(robot, "world_id", None)  # a simulator's solid world: a replay shows only there
+        if world is not None:
+            metadata["world"] = world
+        self.recorder.start(metadata, program)
         robot.state.add_listener(self.recorder.topic)
         robot.follow_graph()  # a ROS robot fills its state store only when asked
 

@@ -13,7 +13,7 @@ import time
 import tokenize
 import traceback
 
-from rockly_desktop.core.errors import ProgramStopped
+from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.executor import large_results
 from rockly_desktop.executor.events import (
     BlockEntered,
@@ -168,6 +168,8 @@ class ProgramRunner:
         except SyntaxError as error:
             result = RunFinished("error", None, text("unreadable", self.language, detail=error.msg),
                                  traceback.format_exc())
+        except RobotCommandError as error:  # the robot's own refusal: its words, no traceback
+            result = RunFinished("error", self.hooks.current_block, self.explain(error), by_robot=True)
         except Exception as error:
             result = RunFinished("error", self.hooks.current_block, self.explain(error), _program_traceback(error))
         self._finish()

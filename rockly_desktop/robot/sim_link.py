@@ -50,6 +50,12 @@ class SimulatedRobot:
         robot.ros_distribution = (connection or {}).get("ros_distribution")
         return robot
 
+    @property
+    def world_id(self):
+        """The fingerprint of the simulator's solid world (``World.fingerprint``), None when it has none."""
+        world = self.simulator.solid_world
+        return world.fingerprint() if world is not None else None
+
     def backend(self, interrupt: Interrupt):
         """A backend whose waits end when ``interrupt`` is stopped; a message the simulated robot
         would not get on a real ROS (another type than it listens for, values that do not fit) is refused."""

@@ -69,6 +69,7 @@ class RobotSimulator:
     """
 
     NAME = "simulated robot"  # names the clock thread and the simulator in messages
+    solid_world = None  # the World (robot/world_map.py) it moves in, if it has a solid one: recordings name it
     TICK_SECONDS = 0.1        # real seconds between two ticks of the clock
 
     def __init__(self, world, tablet=None, speed=1.0):

@@ -19,6 +19,7 @@ plain text shown in every language. It is written as it follows "bumped into" (i
 Obstacles are polygons; a circle becomes a 16-sided one, so the laser and the bumper see the
 same shape. Nothing here imports Qt: the same world serves ``rockly run`` and the window.
 """
+import hashlib
 import math
 from dataclasses import dataclass
 from pathlib import Path
@@ -124,6 +125,13 @@ class World:
         obstacles = [_obstacle(entry, f"{where}: obstacles[{index}]", texts)
                      for index, entry in enumerate(data.get("obstacles") or [])]
         return cls(obstacles, data.get("radius", 0), data.get("area"))
+
+    def fingerprint(self) -> str:
+        """A short id of the world's geometry (area, robot radius, obstacles and their outlines): the same
+        rooms give the same id, and a recording made in one world is not shown in another."""
+        shape = repr((self.area, self.radius, [(o.id, o.kind, tuple((round(x, 6), round(y, 6)) for x, y in o.points))
+                                               for o in self.obstacles]))
+        return hashlib.sha256(shape.encode("utf-8")).hexdigest()[:16]
 
     def obstacle(self, obstacle_id: str) -> Obstacle:
         """The obstacle with this id; KeyError when there is none."""

@@ -96,7 +96,7 @@ class MainWindow(QMainWindow):
         self.replay = Replay(self.replay_bar, self.editor, self.variables, self.simulator_dock, self.language, self,
                              lambda: badges_shown(self.settings, self.profile.id), self.console, self._made_plot,
                              lambda: self.state_dock.widget() if isinstance(self.state_dock.widget(), StatePanels)
-                             else None)
+                             else None, self.robots, registry)
         self.runs.sig_state_changed.connect(lambda state: state == "starting" and self.replay.close())
         self.runs.sig_finished.connect(lambda _result: self.runs.last_recording and self.replay.open(
             self.runs.last_recording, quiet=True))
@@ -111,7 +111,8 @@ class MainWindow(QMainWindow):
         self.files.may_reload = lambda: self.runs.state == "idle"
         self.files.sig_show_program.connect(self.show_program)
         self.files.sig_program_replaced.connect(self.robots.reset_if_wanted)
-        self.files.sig_program_replaced.connect(self.variables.clear)
+        self.files.sig_program_replaced.connect(self._forget_old_program)
+        self.robots.sig_robot_changed.connect(self._forget_old_program)
         self.autosave = Autosave(self.document, self.editor, RecoverySession(), lambda: self.language, self)
         self.autosave.sig_failed.connect(lambda text: self.statusBar().showMessage(text, 8000))
         self.runs.sig_state_changed.connect(lambda state: state == "starting" and self.autosave.flush())
@@ -227,6 +228,12 @@ class MainWindow(QMainWindow):
             self.simulator_dock.show_robot(None, None, tr("real_robot_view", self.language))
         else:
             self.simulator_dock.show_robot(robot, view_class(language=self.language) if view_class else None)
+
+    def _forget_old_program(self):
+        """Another program or robot is on screen: the last run's replay, variables and marks are not its own."""
+        self.replay.end()
+        self.variables.clear()
+        self.editor.call("clearMarks")
 
     def _made_plot(self):
         widget = self.plot_dock.widget()

@@ -1,12 +1,17 @@
-"""Message boxes whose text is shown as typed (Qt would render a text containing a tag as HTML) and
-whose window is wide enough for its whole title (a short text made a narrow box, and the window
-manager cut its title: "Etwas ist s…fgegangen")."""
+"""Message boxes whose text is shown as typed (Qt would render a text containing a tag as HTML), whole
+(wrapped, never cut) and in a window wide enough for its whole title (a short text made a narrow box,
+and the window manager cut its title: "Etwas ist s…fgegangen").
+
+The title's width is the minimum width of the box's button row, not of its text: a minimum width on
+the text label replaces the label's own size hint, so QMessageBox saw a label narrower than its
+text, did not wrap it and cut it mid-word (a bump's message ended "bumped in"). With the row holding the width,
+QMessageBox measures the text as it is and wraps it when it is wider than its limits.
+"""
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QFont, QFontMetrics
-from PySide6.QtWidgets import QMessageBox
+from PySide6.QtWidgets import QDialogButtonBox, QMessageBox
 
 TITLE_BAR_EXTRA = 160   # pixels of a title bar that are not its text: icon, buttons, margins
-ICON_COLUMN = 60        # pixels of a message box left of its text: the icon and the margins
 
 
 def title_width(title: str, font: QFont) -> int:
@@ -21,6 +26,7 @@ def plain_message_box(parent, icon, title: str, text: str, buttons=QMessageBox.S
     """A QMessageBox showing ``text`` (and any informative or detailed text) as plain text."""
     box = QMessageBox(icon, title, text, buttons, parent)
     box.setTextFormat(Qt.TextFormat.PlainText)
-    # the text's minimum width holds however often QMessageBox lays itself out anew (a spacer would not)
-    box.setStyleSheet(f"QLabel#qt_msgbox_label {{ min-width: {title_width(title, box.font()) - ICON_COLUMN}px; }}")
+    margins = box.layout().contentsMargins()
+    # a widget's minimum width holds however often QMessageBox lays itself out anew (a spacer would not)
+    box.findChild(QDialogButtonBox).setMinimumWidth(title_width(title, box.font()) - margins.left() - margins.right())
     return box

@@ -3,7 +3,9 @@ Simulator view show that moment (for a real robot's run, without simulator snaps
 of its recorded ``/odom``), the Robot state panels the recorded topics then, the Console what had
 been printed by then and the Plot the recorded series with a cursor at it. Replay only ever
 changes what is on screen: it sends nothing to a robot, and a file that is no recording changes
-nothing at all.
+nothing at all. A recording shows only on the robot it was recorded with (its profile) and, for a
+simulator's run, in the same solid world: one robot's run drawn in another robot's world would
+show a robot where no robot was.
 """
 from PySide6.QtCore import QObject
 from PySide6.QtWidgets import QFileDialog, QMessageBox
@@ -21,10 +23,14 @@ class Replay(QObject):
     plot panel."""
 
     def __init__(self, bar, editor, variables, simulator, language: str, parent=None, badges=lambda: True,
-                 console=None, plot=lambda: None, state_panels=lambda: None):
+                 console=None, plot=lambda: None, state_panels=lambda: None, robots=None, registry=None):
         """``badges()`` says whether the blocks' badges and values are shown (not at the Starter level); ``plot()`` is
-        the Plot panel and ``state_panels()`` the Robot state panels, each None while there is none."""
+        the Plot panel and ``state_panels()`` the Robot state panels, each None while there is none;
+        ``robots`` (a ``RobotChoice``) is the window's robot, whose profile and world a recording must have
+        (None: any recording shows); the ``registry``'s profiles name the robot of a recording made on another."""
         super().__init__(parent)
+        self._robots = robots
+        self._registry = registry
         self.console = console
         self._plot = plot
         self._state_panels = state_panels
@@ -70,6 +76,14 @@ class Replay(QObject):
                 self._say("recording_unreadable_box", tr("recording_unreadable", self.language),
                           error.in_language(self.language))
             return False
+        refusal = self._shown_elsewhere(recording.metadata)
+        if refusal is not None:
+            if not quiet:
+                box = plain_message_box(self.parent(), QMessageBox.Icon.Information,
+                                        tr("recording_other_robot_title", self.language), refusal)
+                box.setObjectName("recording_other_robot_box")
+                box.open()
+            return False
         self.moments = Moments(recording)
         self.topics = RecordedTopics(recording)
         self.simulator.show_live_view()
@@ -93,6 +107,27 @@ class Replay(QObject):
         """Hide the timeline (a run is starting, or another program opens)."""
         if self.bar.isVisible():
             self.bar.close_timeline()
+
+    def end(self):
+        """Hide the timeline and forget the recording: another program or robot is on screen, and the
+        old run's moments are not its own."""
+        self.close()
+        self.moments = self.topics = self.path = self.plan = None
+
+    def _shown_elsewhere(self, metadata: dict):
+        """Why a recording with ``metadata`` cannot show on the window's robot now, or None when it can."""
+        if self._robots is None:
+            return None
+        profile = self._robots.document.profile
+        recorded = metadata.get("profile")
+        if recorded and recorded != profile.id:
+            profiles = self._registry.profiles if self._registry is not None else {}
+            name = profiles[recorded].display_name(self.language) if recorded in profiles else recorded
+            return tr("recording_other_robot", self.language, robot=name, here=profile.display_name(self.language))
+        world, here = metadata.get("world"), self._robots.world_id()
+        if world and here is not None and world != here:
+            return tr("recording_other_world", self.language, robot=profile.display_name(self.language))
+        return None
 
     def show_moment(self, seconds: float):
         """Show the run as it was ``seconds`` after it began."""

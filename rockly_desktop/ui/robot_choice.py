@@ -78,6 +78,12 @@ class RobotChoice(QObject):
         self.sig_robot_changed.emit()
         return True
 
+    def world_id(self):
+        """The solid world of the active robot (a simulator's ``world_id``); None for a real robot, a
+        simulator without one, or a robot not made yet."""
+        robot = self._robots.get((self.kind, self.document.profile.id))
+        return getattr(robot, "world_id", None)
+
     @property
     def simulated(self) -> bool:
         """True when the active robot is the profile's simulator in this process (shown in the

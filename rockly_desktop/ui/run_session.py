@@ -7,7 +7,6 @@ speed never floods the GUI, while a pause shows the exact block and values.
 import sys
 
 from PySide6.QtCore import QObject, QTimer, Signal
-from PySide6.QtWidgets import QMessageBox
 
 from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS
 from rockly_desktop.core.errors import RocklyError
@@ -15,7 +14,7 @@ from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import RunFinished, RunPaused, RunResumed, VariablesChanged
 from rockly_desktop.executor.qt_adapter import ProgramThread
 from rockly_desktop.ui.block_badges import badge_texts, badges_shown
-from rockly_desktop.ui.message_boxes import plain_message_box
+from rockly_desktop.ui.run_messages import run_problem_box
 from rockly_desktop.ui.texts import robot_problem, tr
 
 FOLLOW_MS = 33
@@ -263,11 +262,8 @@ class RunSession(QObject):
         if result.outcome == "error":
             self.console.append(result.message, "error")
             self.editor.call("markError", {"id": result.block_id, "message": result.message})
-            box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, tr("error_title", language),
-                                    result.message)
-            box.setObjectName("run_error_box")
-            box.setDetailedText(result.details or "")
-            box.open()
+            run_problem_box(self.parent(), result, self.document.profile.display_name(language), language,
+                            kiosk=self.settings.kiosk_mode).open()
         else:
             self.console.append(tr("run_finished" if result.outcome == "finished" else "run_stopped", language), "info")
         self.sig_status.emit("")

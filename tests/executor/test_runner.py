@@ -165,14 +165,14 @@ def test_an_error_names_its_block_in_plain_words_with_the_traceback_at_hand():
     assert ended == [True]
 
 
-def test_a_failing_robot_command_is_reported_on_its_block():
+def test_a_failing_robot_command_is_reported_on_its_block_as_the_robots_refusal_without_a_traceback():
     def refuse(*_args):
         raise RobotCommandError("the arm is blocked")
 
     code = "__rockly__.block('arm')\nrobot_move()\n"
     runner, recorder = run_to_end(code, namespace={"robot_move": refuse})
     assert recorder.events[-1] == RunFinished("error", "arm", "The robot could not do this: the arm is blocked",
-                                              recorder.events[-1].details)
+                                              details=None, by_robot=True)
 
 
 def test_slow_motion_waits_at_every_block():

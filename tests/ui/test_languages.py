@@ -124,7 +124,9 @@ def test_a_profiles_command_error_is_all_german_in_a_german_window(qtbot, german
     assert (result.outcome, result.block_id, result.message) == ("error", "drive", GERMAN_DISTANCE_ERROR)
     boxes = [box for box in german_window.findChildren(QMessageBox)
              if box.objectName() == "run_error_box" and box.isVisible()]
-    assert boxes and (boxes[0].windowTitle(), boxes[0].text()) == ("Etwas ist schiefgegangen", GERMAN_DISTANCE_ERROR)
+    marked = "Der Block, den HOBBIT gerade ausgeführt hat, ist rot markiert."
+    assert boxes and (boxes[0].windowTitle(), boxes[0].text()) == (  # what the robot says, not "Etwas ist schief…"
+        "Nachricht von HOBBIT", f"{GERMAN_DISTANCE_ERROR}\n\n{marked}")
 
 
 # --- the ROS connection -----------------------------------------------------------------------

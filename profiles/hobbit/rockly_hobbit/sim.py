@@ -256,6 +256,7 @@ class SimHobbit(RobotSimulator):
     """
 
     NAME = "simulated HOBBIT"
+    solid_world = WORLD
     TICK_SECONDS = TICK_SECONDS
 
     def __init__(self, world, tablet=None, speed=1.0):

@@ -65,6 +65,7 @@ class SimTurtleBot(RobotSimulator):
     def __init__(self, world, tablet=None, speed=1.0, boxes=BOXES, start=(0.0, 0.0, 0.0), room=ROOM):
         super().__init__(world, tablet, speed)
         self._arena = Arena(room, boxes)
+        self.solid_world = self._arena
         x, y, theta = (float(value) for value in start)
         if not self._arena.fits(x, y):
             raise ValueError(f"the TurtleBot does not fit at ({x:g}, {y:g}): it would overlap a wall or a box")
