@@ -88,6 +88,11 @@ class Ros2Helper:
             return helper
 
     @classmethod
+    def spare(cls) -> "Ros2Helper | None":
+        """The spare kept beside the process's helper (it may still be starting), or None."""
+        return cls._spare
+
+    @classmethod
     def _take_spare(cls, settings) -> "Ros2Helper | None":
         """The spare, once started, when it has ``settings`` and lives; else None (and it is ended)."""
         spare, cls._spare = cls._spare, None

@@ -227,9 +227,11 @@ class Ros2Robot:
         if not_replaced is not None:
             return [HealthItem("ROS 2", RED, app_local_text("health_ros2_lost", where=where, error=app_local_text(
                 "health_ros2_not_replaced", reason=replacing, error=not_replaced)))]
-        if replacing is not None or self.helper.lost:
-            error = replacing or self.helper.lost_error().message
-            return [HealthItem("ROS 2", RED, app_local_text("health_ros2_replacing", where=where, error=error))]
+        if replacing is not None:
+            return [HealthItem("ROS 2", RED, app_local_text("health_ros2_replacing", where=where, error=replacing))]
+        if self.helper.lost:  # ended by Rockly (the link is going away): nothing replaces it
+            return [HealthItem("ROS 2", RED, app_local_text("health_ros2_lost", where=where,
+                                                            error=self.helper.lost_error().message))]
         replaced = self.replaced
         if replaced is not None and time.time() - replaced.at < REPLACED_SHOWN_SECONDS:
             values = {"where": where, "time": time.strftime("%H:%M:%S", time.localtime(replaced.at)),

@@ -40,8 +40,19 @@ def faulty_link(test_robot, turtlebot, ros2_settings):
         process.wait(timeout=10)
 
 
+def spare_knows_the_robot() -> bool:
+    """True once the spare helper has discovered the test robot (a spare is minutes old when a fault comes;
+    one started a moment ago may not have met the robot yet: DDS discovery takes a few seconds here)."""
+    spare = Ros2Helper.spare()
+    if spare is None or spare.lost:
+        return False
+    spare.started()
+    return "/odom" in [name for name, _types, _count in spare.call("graph", timeout=5.0)["topics"]]
+
+
 def fault(robot, kind: str) -> float:
-    """SIGSTOP or kill -9 the link's helper; when it was done (``time.monotonic()``)."""
+    """SIGSTOP or kill -9 the link's helper once the spare is ready; when it was done (``time.monotonic()``)."""
+    eventually(spare_knows_the_robot, timeout=20)
     robot.faulted.append(robot.helper.process)
     os.kill(robot.helper.process.pid, FAULTS[kind])
     return time.monotonic()
