@@ -212,14 +212,20 @@ class Ros2Helper:
         self.process.kill()  # a stopped process too; its pipe's end then tells every waiting caller
 
     def _measure(self):
-        """Time a round trip to the helper every ROUND_TRIP_SECONDS (``round_trip``), off the window's thread."""
+        """Time a round trip to the helper every ROUND_TRIP_SECONDS (``round_trip``), off the window's
+        thread; a ping of its own, which leaves a failed cast to the command it belongs to (``check``)."""
         while not self._closed.wait(ROUND_TRIP_SECONDS) and not self.lost:
+            call_id = next(self._ids)
+            pending = self._pending[call_id] = _Pending()
             started = time.perf_counter()
             try:
-                self.call("ping", timeout=2.0)
-            except Exception:
-                continue
-            self.round_trip = time.perf_counter() - started
+                self._write((wire.CALL, call_id, "ping", ()))
+            except RobotConnectionLost:
+                return
+            if pending.done.wait(2.0) and pending.ok:
+                self.round_trip = time.perf_counter() - started
+            else:
+                self._pending.pop(call_id, None)
 
     # --- reading
     def _read_errors(self):
