@@ -6,7 +6,9 @@ Twist it gets on /cmd_vel with its arrival time. The TurtleBot program drives an
   - hung: the helper is stopped (SIGSTOP) and STOP pressed at once -> zero velocity on the wire
     (the hung helper is found out, ended, and the spare sends the safe stop);
   - the time to find out a hung helper (SIGSTOP -> lost) and a killed one (kill -9 -> lost), and
-    kill -9 -> zero velocity on the wire.
+    kill -9 -> zero velocity on the wire;
+  - the longest health look (what the window's health light asks twice a second, on its thread)
+    while the helper hangs, against the longest with a healthy helper.
 Between faults the spare that took over is given SPARE_SETTLE to discover the robot (a spare
 started a moment ago has not met it yet, as a real spare has, minutes after connecting).
 
@@ -104,6 +106,17 @@ def until_lost(helper, timeout: float = 10.0) -> float:
     return time.monotonic()
 
 
+def longest_health_look(robot, until) -> float:
+    """The longest ``robot.health()`` (seconds) of looks every 10 ms until ``until()`` is true."""
+    longest = 0.0
+    while not until():
+        started = time.perf_counter()
+        robot.health()
+        longest = max(longest, time.perf_counter() - started)
+        time.sleep(0.01)
+    return longest
+
+
 def ms(seconds) -> str:
     return f"{seconds * 1000:.1f} ms"
 
@@ -126,6 +139,8 @@ def run():
     faulted = []
     try:
         time.sleep(SPARE_SETTLE)
+        looked_until = time.monotonic() + 1.0
+        healthy_look = longest_health_look(robot, lambda: time.monotonic() > looked_until)
         baseline = []
         for _ in range(BASELINE_TRIALS):
             control, thread = start_drive(robot)
@@ -136,7 +151,7 @@ def run():
             thread.join(10)
             baseline.append(recorder.first_zero_after(asked) - asked)
 
-        hung_stop, hung_found, killed_found, killed_stop = [], [], [], []
+        hung_stop, hung_found, killed_found, killed_stop, hung_looks = [], [], [], [], []
         for kind in ["hung"] * FAULT_TRIALS + ["killed"] * FAULT_TRIALS:
             control, thread = start_drive(robot)
             assert recorder.driving(), "the recorder heard no drive"
@@ -147,6 +162,7 @@ def run():
             os.kill(helper.process.pid, signal.SIGSTOP if kind == "hung" else signal.SIGKILL)
             if kind == "hung":
                 control.request_stop()  # STOP pressed as the helper hangs
+                hung_looks.append(longest_health_look(robot, lambda helper=helper: helper.lost))
                 hung_found.append(until_lost(helper) - at)
                 hung_stop.append((recorder.first_zero_after(wall) or float("nan")) - wall)
             else:
@@ -167,6 +183,8 @@ def run():
         print(f"killed helper found out (kill -9 -> lost): median {ms(statistics.median(killed_found))}, "
               f"max {ms(max(killed_found))}; kill -9 -> zero velocity on the wire: median "
               f"{ms(statistics.median(killed_stop))}, max {ms(max(killed_stop))} (aim <= 2 s)")
+        print(f"longest health look (on the window's thread) while the helper hangs: {ms(max(hung_looks))}, "
+              f"healthy {ms(healthy_look)} (aim <= 100 ms; it took 2 s a look before)")
     finally:
         robot.shutdown()
         Ros2Helper.close_current()
