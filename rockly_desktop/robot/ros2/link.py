@@ -70,7 +70,8 @@ class Replacement:
 
 
 class Ros2Robot:
-    """A robot on ROS 2, through this process's one helper (started on first use, ended by ``shutdown``).
+    """A robot on ROS 2, through this process's one helper (started on first use, replaced when lost,
+    ended by ``shutdown``).
 
     ``settings`` (Ros2Settings) are the domain id, discovery range and static peers;
     ``ros_distribution`` the robot's declared ROS 2 distribution (None: its graph says which types
@@ -131,7 +132,9 @@ class Ros2Robot:
         run's command, follow the graph again if it was followed."""
         reason = self._replacing
         with self._feed_lock:
-            followed, self._feed = self._feed is not None, None
+            feed, self._feed = self._feed, None
+        if feed is not None:
+            feed.stop()
         while True:
             try:
                 self._attach(Ros2Helper.get(self.settings, spare=True), match=False)
@@ -147,7 +150,7 @@ class Ros2Robot:
         self._replacing = None
         self._attached.set()
         log.warning("the ROS 2 helper was replaced (%s); safe stop failures: %s", reason, failures or "none")
-        if followed and not self._shut.is_set():
+        if feed is not None and not self._shut.is_set():
             self.follow_graph()
 
     def graph_for_run(self, interrupt: Interrupt) -> Ros2Graph:
