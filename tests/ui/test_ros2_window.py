@@ -1,8 +1,12 @@
 """The window on a robot over ROS 2: a plain rclpy test robot (publishing /odom) on this run's own
 domain, chosen in the Run-on box as "Real robot (ROS 2)…" through the connection dialog."""
+import os
+import signal
+import time
+
 import pytest
 from page_tools import call_page
-from program_builder import block, number, workspace
+from program_builder import block, number, stack, text, workspace
 from waiting import eventually
 
 from rockly_desktop.robot.links import link_kind
@@ -123,3 +127,58 @@ def test_a_bad_domain_id_is_refused_in_the_windows_words_and_the_simulator_stays
     assert window.robots.kind == "sim" and backend.currentData() == "sim"
     assert shown == [("“300” is not a ROS 2 domain id.",
                       "A domain id is a whole number from 0 to 232; ask the robot's owner for it.")]
+
+
+def longest_stall(seconds: float) -> float:
+    """The longest the window's event loop kept a 10 ms timer waiting during ``seconds`` (s)."""
+    from PySide6.QtCore import QEventLoop, QTimer
+
+    ticks = [time.monotonic()]
+    timer = QTimer()
+    timer.setInterval(10)
+    timer.timeout.connect(lambda: ticks.append(time.monotonic()))
+    loop = QEventLoop()
+    timer.start()
+    QTimer.singleShot(int(seconds * 1000), loop.quit)
+    loop.exec()
+    timer.stop()
+    ticks.append(time.monotonic())
+    return max(later - earlier for earlier, later in zip(ticks, ticks[1:], strict=False))
+
+
+def speed_on_the_wire(test_robot):
+    received = test_robot.received("/cmd_vel")
+    return received[-1]["message"]["linear"]["x"] if received else None
+
+
+def test_a_hung_helper_never_stalls_the_window_and_a_new_one_stops_the_robot(qtbot, ros2_window, test_robot):
+    call_page(qtbot, ros2_window.editor, "load", {"workspace": workspace(stack(
+        block("ros_publish_message", {"message_type": "geometry_msgs/Twist"},
+              {"topic": text("/cmd_vel"), "field:linear.x": number(0.2)}, id="drive"),
+        block("ros_wait", inputs={"seconds": number(60)}, id="wait")))})
+    ros2_window.runs.run()
+    qtbot.waitUntil(lambda: speed_on_the_wire(test_robot) == 0.2, timeout=10000)
+    helper = ros2_window.robot().helper
+    os.kill(helper.process.pid, signal.SIGSTOP)
+    try:
+        assert longest_stall(4.0) < 1.0  # the health light asked twice a second all along (it took 2 s a look)
+        qtbot.waitUntil(lambda: speed_on_the_wire(test_robot) == 0.0, timeout=10000)
+        qtbot.waitUntil(lambda: ros2_window.runs.state == "idle", timeout=10000)
+        assert ros2_window.runs.last_result.outcome == "error"
+        assert "stopped answering" in ros2_window.runs.last_result.message or "said nothing" in \
+            ros2_window.runs.last_result.message
+        qtbot.waitUntil(lambda: "helper was replaced" in ros2_window.health.toolTip(), timeout=5000)
+        assert ros2_window.health.items[0].level == "amber" and "ROS connected" in ros2_window.robots.status.text()
+    finally:
+        if helper.process.poll() is None:  # never left stopped
+            os.kill(helper.process.pid, signal.SIGCONT)
+            helper.process.kill()
+            helper.process.wait()
+
+    ros2_window.runs.run()  # no reconnect
+    qtbot.waitUntil(lambda: ros2_window.runs.state == "running", timeout=10000)
+    qtbot.waitUntil(lambda: speed_on_the_wire(test_robot) == 0.2, timeout=10000)
+    with qtbot.waitSignal(ros2_window.runs.sig_finished, timeout=10000) as blocker:
+        ros2_window.run_toolbar.stop_action.trigger()
+    assert blocker.args[0].outcome == "stopped"
+    qtbot.waitUntil(lambda: speed_on_the_wire(test_robot) == 0.0, timeout=10000)

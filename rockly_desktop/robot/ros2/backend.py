@@ -140,13 +140,21 @@ class Ros2GoalHandle(GoalHandle):
 
 
 class Ros2Backend(RobotBackend):
-    """A RobotBackend over a Ros2Graph; ``interrupt`` ends its waits."""
+    """A RobotBackend over a Ros2Graph; ``interrupt`` ends its waits. ``graph`` may be a function
+    ``graph(interrupt)`` giving it at the first command (a link whose helper is being replaced)."""
 
     ros_version = "ros2"
 
-    def __init__(self, graph: Ros2Graph, interrupt):
-        self.graph = graph
+    def __init__(self, graph, interrupt):
+        self._graph = graph
         self.interrupt = interrupt
+
+    @property
+    def graph(self) -> Ros2Graph:
+        """The graph this backend works through (the same for all its commands)."""
+        if callable(self._graph):
+            self._graph = self._graph(self.interrupt)
+        return self._graph
 
     @property
     def _helper(self):

@@ -1,13 +1,20 @@
 """Rockly's side of the ROS 2 helper: starts the process, sends requests, routes its answers.
 
 One helper per Rockly process (``Ros2Helper.get``), started on first use and ended with
-Rockly (``atexit``, or ``close``). A reader thread takes every frame the helper writes:
-answers wake their caller, events go to the handlers registered for them. When the helper's
-pipe ends (it died), every caller waiting and every later request fail at once with
-RobotConnectionLost; the helper itself sends the safe stop as its last act when it can.
+Rockly (``atexit``, or ``close``); a link may keep a spare beside it (``get(spare=True)``),
+started and discovered already, that takes over at once when the helper is lost. A reader
+thread takes every frame the helper writes: answers wake their caller, events go to the
+handlers registered for them. The helper says it is alive every ``wire.HEARTBEAT_SECONDS``;
+a watch thread (which never writes, so a full pipe cannot hold it) ends a helper that keeps
+Rockly waiting HUNG_AFTER for its next frame (stopped, frozen). When the helper's pipe ends
+(it died or was ended), every caller waiting and every later request fail at once with
+RobotConnectionLost, and the ``on_lost`` handlers are told (the link replaces it); the helper
+itself sends the safe stop as its last act when it can.
 """
 import atexit
 import itertools
+import logging
+import re
 import subprocess
 import threading
 import time
@@ -30,11 +37,19 @@ spec.loader.exec_module(package)
 from rockly_desktop.robot.ros2.node import main
 main()
 """
+log = logging.getLogger(__name__)
+
 PACKAGE_DIR = Path(__file__).resolve().parents[2]
 START_TIMEOUT = 30.0  # loading rclpy and the DDS library, on a busy 2-core machine
 POLL_SECONDS = 0.01
 STDERR_LINES = 20
 MAX_NAMES = 4096  # names whose resolution is kept
+# Rockly waiting this long for the next frame (heartbeats come every wire.HEARTBEAT_SECONDS): the helper is hung.
+# Within the 2 s promise of a safe stop, with room for the spare's stop; far above a loaded machine's hiccups.
+HUNG_AFTER = 1.0
+WATCH_SECONDS = 0.1
+_COLOURS = re.compile(r"\x1b\[[0-9;]*m")
+ROUND_TRIP_SECONDS = 0.5  # how often the round trip to the helper is measured (for the health light)
 
 
 class _Pending:
@@ -51,11 +66,13 @@ class Ros2Helper:
     """The running helper process and its pipes (see ``wire`` for the frames)."""
 
     _current = None
+    _spare = None
     _current_lock = threading.Lock()
 
     @classmethod
-    def get(cls, settings: Ros2Settings = None) -> "Ros2Helper":
-        """The process's helper with ``settings``; a helper with other settings is ended first."""
+    def get(cls, settings: Ros2Settings = None, spare: bool = False) -> "Ros2Helper":
+        """The process's helper with ``settings``; a helper with other settings (or a lost one) is
+        ended first, and replaced by the spare when there is one. ``spare``: keep a spare started."""
         settings = settings or Ros2Settings()
         with cls._current_lock:
             helper = cls._current
@@ -63,66 +80,167 @@ class Ros2Helper:
                 helper.close()
                 helper = None
             if helper is None:
-                helper = cls._current = cls(settings)
+                helper = cls._current = cls._take_spare(settings) or cls(settings)
+            if spare and (cls._spare is None or cls._spare.lost):
+                if cls._spare is not None:
+                    cls._spare.close()
+                cls._spare = cls(settings, wait=False)  # its process is there now, its start goes on beside
+                threading.Thread(target=cls._spare.start_quietly, name="ros2-spare-start", daemon=True).start()
             return helper
 
     @classmethod
+    def spare(cls) -> "Ros2Helper | None":
+        """The spare kept beside the process's helper (it may still be starting), or None."""
+        return cls._spare
+
+    @classmethod
+    def _take_spare(cls, settings) -> "Ros2Helper | None":
+        """The spare, once started, when it has ``settings`` and lives; else None (and it is ended)."""
+        spare, cls._spare = cls._spare, None
+        if spare is None:
+            return None
+        try:
+            spare.started()
+        except Ros2Unavailable:
+            return None
+        if spare.lost or spare.settings != settings:
+            spare.close()
+            return None
+        return spare
+
+    @classmethod
     def close_current(cls):
-        """End the process's helper, if one runs (at exit, and by tests)."""
+        """End the process's helper and its spare, if they run (at exit, and by tests)."""
         with cls._current_lock:
-            helper, cls._current = cls._current, None
-        if helper is not None:
-            helper.close()
+            helpers, cls._current, cls._spare = (cls._current, cls._spare), None, None
+        for helper in helpers:
+            if helper is not None:
+                helper.close()
 
     @classmethod
     def end(cls, helper: "Ros2Helper"):
-        """End ``helper``; the next ``get`` starts a new one if it was the process's."""
+        """End ``helper`` (and the spare, when it was the process's); the next ``get`` starts a new one."""
         with cls._current_lock:
+            spare = None
             if cls._current is helper:
-                cls._current = None
+                cls._current, spare, cls._spare = None, cls._spare, None
         helper.close()
+        if spare is not None:
+            spare.close()
 
-    def __init__(self, settings: Ros2Settings):
+    def __init__(self, settings: Ros2Settings, wait: bool = True):
+        """Start the helper with ``settings``; ``wait`` (the default) until it said hello (``started``)."""
         self.settings = settings
-        python = ros2_python()
+        self.python = python = ros2_python()
         env = settings.environment()
         env.pop("PYTHONPATH", None)
         env["ROS_PYTHON_CHECK_FIELDS"] = "1"  # a wrong field type is refused, not sent as garbage
         self.process = subprocess.Popen(
             [str(python), "-c", _BOOTSTRAP, str(PACKAGE_DIR)], stdin=subprocess.PIPE,
             stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, cwd="/", start_new_session=True)
+        atexit.register(self.close)
         self.lost = False
+        self.hung = False  # it was ended for keeping Rockly waiting (see HUNG_AFTER)
         self.exit_reason = ""
+        self.round_trip = None  # seconds to the helper and back, as last measured
         self._write_lock = threading.Lock()
         self._ids = itertools.count(1)
         self._pending = {}
         self._handlers = {}
+        self._lost_handlers = []
         self._failures = deque(maxlen=10)
         self._encoders = {}  # message type -> its MessageEncoder, or None: sent as fields
         self._names = {}  # (name, whether a service) -> the name the helper's node resolves it to, "" refused
         self._stderr = deque(maxlen=STDERR_LINES)
         self._hello = threading.Event()
+        self._start_lock = threading.Lock()
+        self._start_done = False
+        self._start_failure = None
+        self._closed = threading.Event()
+        self._waiting_since = None  # when the reader began waiting for the next frame; None: it has one
         self.info = {}
         self._stderr_reader = threading.Thread(target=self._read_errors, name="ros2-helper-stderr", daemon=True)
         self._stderr_reader.start()
         threading.Thread(target=self._read, name="ros2-helper-reader", daemon=True).start()
-        if not self._hello.wait(START_TIMEOUT) or self.lost:
-            detail = self.exit_reason or app_local_text("ros2_no_hello", timeout=START_TIMEOUT)
-            self.close()
-            raise Ros2Unavailable(f"the ROS 2 helper did not start with {python}: {detail}",
-                                  "helper_failed", python=str(python), detail=detail)
-        atexit.register(self.close)
+        if wait:
+            self.started()
+
+    def started(self):
+        """Wait until the helper said hello (then its watch begins); Ros2Unavailable saying why if it did not."""
+        with self._start_lock:
+            if not self._start_done:
+                self._start_done = True
+                if not self._hello.wait(START_TIMEOUT) or self.lost:
+                    detail = self.exit_reason or app_local_text("ros2_no_hello", timeout=START_TIMEOUT)
+                    self.close()
+                    self._start_failure = Ros2Unavailable(
+                        f"the ROS 2 helper did not start with {self.python}: {detail}", "helper_failed",
+                        python=str(self.python), detail=detail)
+                else:
+                    threading.Thread(target=self._watch, name="ros2-helper-watch", daemon=True).start()
+                    threading.Thread(target=self._measure, name="ros2-helper-round-trip", daemon=True).start()
+        if self._start_failure is not None:
+            raise self._start_failure
+
+    def start_quietly(self):
+        """``started``, for a spare: a failure is logged (the spare is then not taken)."""
+        try:
+            self.started()
+        except Ros2Unavailable as problem:
+            log.warning("the spare ROS 2 helper did not start: %s", problem)
+
+    def on_lost(self, handler):
+        """Call ``handler(helper)`` once the helper is lost (on the reader thread: it must not wait)."""
+        self._lost_handlers.append(handler)
+        if self.lost:
+            handler(self)
+
+    # --- liveness
+    def _watch(self):
+        """End the helper when the reader has waited HUNG_AFTER for its next frame. A watch that woke
+        late (this process had no CPU) judges only at its next look, when the reader has caught up."""
+        looked = time.monotonic()
+        while not self._closed.wait(WATCH_SECONDS) and not self.lost:
+            now, since = time.monotonic(), self._waiting_since
+            on_time, looked = now - looked < WATCH_SECONDS + HUNG_AFTER / 2, now
+            if on_time and since is not None and now - since > HUNG_AFTER:
+                self._end_hung(now - since)
+                return
+
+    def _end_hung(self, silent: float):
+        self.exit_reason = app_local_text("ros2_helper_hung", seconds=f"{silent:.1f}")
+        self.hung = True
+        log.warning("the ROS 2 helper (pid %s) said nothing for %.1f s: ended", self.process.pid, silent)
+        self.process.kill()  # a stopped process too; its pipe's end then tells every waiting caller
+
+    def _measure(self):
+        """Time a round trip to the helper every ROUND_TRIP_SECONDS (``round_trip``), off the window's
+        thread; a ping of its own, which leaves a failed cast to the command it belongs to (``check``)."""
+        while not self._closed.wait(ROUND_TRIP_SECONDS) and not self.lost:
+            call_id = next(self._ids)
+            pending = self._pending[call_id] = _Pending()
+            started = time.perf_counter()
+            try:
+                self._write((wire.CALL, call_id, "ping", ()))
+            except RobotConnectionLost:
+                return
+            if pending.done.wait(2.0) and pending.ok:
+                self.round_trip = time.perf_counter() - started
+            else:
+                self._pending.pop(call_id, None)
 
     # --- reading
     def _read_errors(self):
-        for line in self.process.stderr:
-            self._stderr.append(line.decode(errors="replace").rstrip())
+        for line in self.process.stderr:  # without the colours of Fast DDS's log: the lines may be shown
+            self._stderr.append(_COLOURS.sub("", line.decode(errors="replace")).rstrip())
 
     def _read(self):
         stream = self.process.stdout
         try:
             while True:
+                self._waiting_since = time.monotonic()
                 frame = wire.read_frame(stream)
+                self._waiting_since = None
                 if frame is None:
                     break
                 if frame[0] == wire.REPLY:
@@ -153,7 +271,7 @@ class Ros2Helper:
             self._hello.set()
         elif kind == "failed":
             self._failures.append(data)
-        else:
+        elif kind != "alive":
             handler = self._handlers.get((kind, key))
             if handler is not None:
                 handler(data)
@@ -173,6 +291,11 @@ class Ros2Helper:
         for pending in list(self._pending.values()):
             pending.done.set()
         self._pending.clear()
+        for handler in list(self._lost_handlers) if not self._closed.is_set() else []:  # not when Rockly ended it
+            try:
+                handler(self)
+            except Exception:  # one handler's failure must not keep the others from hearing it
+                log.exception("a handler of the lost ROS 2 helper failed")
 
     # --- requests
     def _write(self, frame):
@@ -287,12 +410,18 @@ class Ros2Helper:
         return next(self._ids)
 
     def close(self):
-        """End the helper: its stdin closes, it does the safe stop and leaves (killed after 3 s)."""
-        try:
-            with self._write_lock:
+        """End the helper: its stdin closes, it does the safe stop and leaves (killed after 3 s; at once
+        when a write to it hangs: a helper that does not read cannot hear the close)."""
+        self._closed.set()
+        if self._write_lock.acquire(timeout=1.0):
+            try:
                 self.process.stdin.close()
-        except OSError:
-            pass  # it is gone already
+            except OSError:
+                pass  # it is gone already
+            finally:
+                self._write_lock.release()
+        else:
+            self.process.kill()
         try:
             self.process.wait(timeout=3.0)
         except subprocess.TimeoutExpired:

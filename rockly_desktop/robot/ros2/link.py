@@ -1,11 +1,20 @@
 """A robot over ROS 2 as a robot link (``robot/link.py``): a real robot (or a ROS-2-level simulator)
-through this process's helper process (``client``)."""
+through this process's helper process (``client``).
+
+A helper that is lost (it died, or hung and was ended) is replaced at once by the spare the link
+keeps started, which sends the profile's safe stop (in the types the robot's graph taught); the
+run that was going fails saying why, the next run goes through the new helper, and the health
+light says what happened. Nothing of this waits on the window's thread.
+"""
+import logging
+import threading
 import time
+from dataclasses import dataclass
 
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.message_arrays import as_shown
 from rockly_desktop.core.state_store import StateStore
-from rockly_desktop.robot.health import GREEN, RED, HealthItem, server_health, topic_health
+from rockly_desktop.robot.health import AMBER, GREEN, RED, HealthItem, server_health, topic_health
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.link import LinkStatus
 from rockly_desktop.robot.ros2.backend import Ros2Backend, Ros2Graph
@@ -20,39 +29,50 @@ from rockly_desktop.robot.ros2.environment import (
 from rockly_desktop.robot.ros_versions import base_types, link_backend
 from rockly_desktop.robot.safe_stop import run_safe_stop
 
+log = logging.getLogger(__name__)
+
+REPLACED_SHOWN_SECONDS = 60.0  # the health light says amber this long after a helper was replaced
+RETRY_SECONDS = 2.0  # a replacement that could not start is tried again after this
+
 
 class Ros2Connection:
     """The link's state as the window shows it, in the ROS 1 connection's shape (``status``,
     ``lost``, ``round_trip``, ``master_uri``); ROS 2 has no master, so ``master_uri`` is the
     link's description ('ROS 2, domain 7, localhost'; 'ROS 2 Jazzy, …' with a declared distribution)."""
 
-    def __init__(self, helper, settings, ros_distribution: str = None):
-        self._helper = helper
+    def __init__(self, link, settings, ros_distribution: str = None):
+        self._link = link
         self.master_uri = app_local_text("ros2_link_where", ros=ros2_name(ros_distribution), where=settings.describe())
-        self.round_trip = None  # seconds to the helper and back, as of the last health look
 
     @property
     def lost(self) -> bool:
-        """True once the helper process is gone."""
-        return self._helper.lost
+        """True while the link has no live helper (it is being replaced)."""
+        return self._link.helper.lost
 
     @property
     def status(self) -> str:
         """connected | lost."""
-        return "lost" if self._helper.lost else "connected"
+        return "lost" if self.lost else "connected"
 
-    def measure(self):
-        """Time a round trip to the helper (``round_trip``); a gone helper leaves it as it was."""
-        started = time.perf_counter()
-        try:
-            self._helper.call("ping", timeout=2.0)
-        except Exception:
-            return
-        self.round_trip = time.perf_counter() - started
+    @property
+    def round_trip(self):
+        """Seconds to the helper and back, as last measured (by the helper's own thread), or None."""
+        return self._link.helper.round_trip
+
+
+@dataclass(frozen=True)
+class Replacement:
+    """A lost helper replaced: when (``time.time()``), why (``reason``, a catalogue text) and what of
+    the safe stop the new helper sent failed (empty: it was sent)."""
+
+    at: float
+    reason: object
+    failures: tuple
 
 
 class Ros2Robot:
-    """A robot on ROS 2, through this process's one helper (started on first use, ended by ``shutdown``).
+    """A robot on ROS 2, through this process's one helper (started on first use, replaced when lost,
+    ended by ``shutdown``).
 
     ``settings`` (Ros2Settings) are the domain id, discovery range and static peers;
     ``ros_distribution`` the robot's declared ROS 2 distribution (None: its graph says which types
@@ -66,23 +86,81 @@ class Ros2Robot:
         self.profile = profile
         self.settings = settings or Ros2Settings()
         self.ros_distribution = ros_distribution
-        self.helper = Ros2Helper.get(self.settings)
-        self.connection = Ros2Connection(self.helper, self.settings, ros_distribution)
-        interface = profile.ros_interface
-        # its last act, should Rockly die: the profile's safe stop (its publishers are made now; one
-        # of a type ROS 2 lacks fails when the stop is done, saying so, as on ROS 1)
-        unknown = self.helper.call("configure", dict(interface.get("qos") or {}), list(profile.safe_stop),
-                                   timeout=10.0)
-        self.graph = Ros2Graph(self.helper)
-        self.graph.published.update(action["publish"]["topic"] for action in profile.safe_stop
-                                    if "publish" in action and action["publish"]["topic"] not in unknown)
         self.state = StateStore(decode=as_shown)  # the helper's compact arrays: small ones as lists
-        self.graph.service_watchers.append(self.state.record)
         self._feed = None
+        self._feed_lock = threading.Lock()
+        self._shut = threading.Event()
+        self.replaced = None  # the last Replacement of a lost helper
+        self._replacing = None  # why the helper being replaced was lost (a catalogue text); None: not replacing
+        self._not_replaced = None  # why no new helper started, while that is so
+        self._attached = threading.Event()  # clear while a lost helper is replaced: runs wait for the new one
+        self._replacer = None  # the thread replacing a lost helper
+        self._attach(Ros2Helper.get(self.settings, spare=True), match=True)
+        self._attached.set()
+        self.connection = Ros2Connection(self, self.settings, ros_distribution)
+        interface = profile.ros_interface
         types = base_types(interface)
         streamed = {name: types[name] for name in interface.get("streams", []) if name in types}
         # the topics whose interface package ROS 2's environment lacks, by package (said by the health light)
         self._unreadable = dict(self.helper.call("missing", streamed, timeout=10.0))
+
+    def _attach(self, helper, match: bool):
+        """Work through ``helper``: its last act, should Rockly die, is the profile's safe stop (its
+        publishers are made now, and matched when ``match``; one of a type ROS 2 lacks fails when the
+        stop is done, saying so, as on ROS 1); a new graph over it; told when it is lost."""
+        profile = self.profile
+        unknown = helper.call("configure", dict(profile.ros_interface.get("qos") or {}), list(profile.safe_stop),
+                              match, timeout=10.0)
+        graph = Ros2Graph(helper)
+        graph.published.update(action["publish"]["topic"] for action in profile.safe_stop
+                               if "publish" in action and action["publish"]["topic"] not in unknown)
+        graph.service_watchers.append(self.state.record)
+        self.helper, self.graph = helper, graph
+        helper.on_lost(self._lost)
+
+    def _lost(self, helper):
+        """``helper`` is lost (on its reader thread): replace it on a thread of its own."""
+        if helper is not self.helper or self._shut.is_set():
+            return
+        self._attached.clear()
+        self._replacing = app_local_text("ros2_helper_ended", reason=helper.exit_reason
+                                         or app_local_text("ros2_pipe_closed"))
+        self._replacer = threading.Thread(target=self._replace, name="ros2-helper-replace", daemon=True)
+        self._replacer.start()
+
+    def _replace(self):
+        """Take the spare (or start a helper) until one works, send the safe stop through it before any
+        run's command, follow the graph again if it was followed."""
+        reason = self._replacing
+        with self._feed_lock:
+            feed, self._feed = self._feed, None
+        if feed is not None:
+            feed.stop()
+        while True:
+            try:
+                self._attach(Ros2Helper.get(self.settings, spare=True), match=False)
+                break
+            except Exception as error:  # no helper starts now (ROS 2 broken?): said by the health light, tried again
+                log.warning("the ROS 2 helper could not be replaced: %s", error)
+                self._not_replaced = str(error)
+                if self._shut.wait(RETRY_SECONDS):
+                    return
+        self._not_replaced = None
+        failures = self.safe_stop()
+        self.replaced = Replacement(time.time(), reason, tuple(failures))
+        self._replacing = None
+        self._attached.set()
+        log.warning("the ROS 2 helper was replaced (%s); safe stop failures: %s", reason, failures or "none")
+        if feed is not None and not self._shut.is_set():
+            self.follow_graph()
+
+    def graph_for_run(self, interrupt: Interrupt) -> Ros2Graph:
+        """The graph a run works through: a helper being replaced is waited for (a stop ends the wait),
+        except by the replacement's own safe stop."""
+        if threading.current_thread() is not self._replacer:
+            while not self._attached.wait(0.01) and not self._shut.is_set():
+                interrupt.check()
+        return self.graph
 
     @classmethod
     def unavailable(cls):
@@ -104,15 +182,17 @@ class Ros2Robot:
 
     def follow_graph(self):
         """Start filling ``state`` from every topic of the graph (for the panels); idempotent."""
-        if self._feed is None:
-            from rockly_desktop.robot.ros2.state_feed import Ros2StateFeed
+        with self._feed_lock:
+            if self._feed is None:
+                from rockly_desktop.robot.ros2.state_feed import Ros2StateFeed
 
-            self._feed = Ros2StateFeed(self.graph, self.state)
-        return self._feed
+                self._feed = Ros2StateFeed(self.graph, self.state)
+            return self._feed
 
     def backend(self, interrupt: Interrupt):
-        """A backend whose waits end when ``interrupt`` is stopped or the helper is gone."""
-        return Ros2Backend(self.graph, interrupt)
+        """A backend whose waits end when ``interrupt`` is stopped or the helper is gone; made at once,
+        it works through the helper of its first command (one being replaced is waited for)."""
+        return Ros2Backend(self.graph_for_run, interrupt)
 
     def snapshot(self):
         """A real robot has no simulator view."""
@@ -143,16 +223,30 @@ class Ros2Robot:
         return self._feed.graph_topics() if self._feed is not None else []
 
     def health(self) -> list:
-        """HealthItems: the link (domain, discovery range), the robot's topics, services and action servers."""
+        """HealthItems: the link (domain, discovery range; a helper lost or replaced lately), the
+        robot's topics, services and action servers. Asks the helper nothing (the window's thread)."""
         interface = self.profile.ros_interface
         where = self.settings.describe()
-        if self.helper.lost:
+        replacing, not_replaced = self._replacing, self._not_replaced
+        if not_replaced is not None:
+            return [HealthItem("ROS 2", RED, app_local_text("health_ros2_lost", where=where, error=app_local_text(
+                "health_ros2_not_replaced", reason=replacing, error=not_replaced)))]
+        if replacing is not None:
+            return [HealthItem("ROS 2", RED, app_local_text("health_ros2_replacing", where=where, error=replacing))]
+        if self.helper.lost:  # ended by Rockly (the link is going away): nothing replaces it
             return [HealthItem("ROS 2", RED, app_local_text("health_ros2_lost", where=where,
-                                                            error=str(self.helper.lost_error())))]
-        self.connection.measure()
-        link = HealthItem("ROS 2", GREEN, app_local_text("health_ros2", where=where,
-                                                         distro=self.helper.info.get("distro", "ROS 2"),
-                                                         ms=f"{(self.connection.round_trip or 0) * 1000:.1f}"))
+                                                            error=self.helper.lost_error().message))]
+        replaced = self.replaced
+        if replaced is not None and time.time() - replaced.at < REPLACED_SHOWN_SECONDS:
+            values = {"where": where, "time": time.strftime("%H:%M:%S", time.localtime(replaced.at)),
+                      "reason": replaced.reason}
+            link = HealthItem("ROS 2", AMBER, app_local_text("health_ros2_replaced_unsafe", **values,
+                                                             failures="; ".join(replaced.failures))
+                              if replaced.failures else app_local_text("health_ros2_replaced", **values))
+        else:
+            link = HealthItem("ROS 2", GREEN, app_local_text("health_ros2", where=where,
+                                                             distro=self.helper.info.get("distro", "ROS 2"),
+                                                             ms=f"{(self.connection.round_trip or 0) * 1000:.1f}"))
         feed = self.follow_graph()
         return [link] + topic_health(interface, self.state.topics(), self._unreadable) + server_health(
             interface, lambda kind, name: f"/{name.strip('/')}" in (
@@ -165,9 +259,14 @@ class Ros2Robot:
     def shutdown(self):
         """Stop the robot safely, stop following the graph and end the helper (its last act is the
         safe stop too): no process is left when the window closes or ``rockly run`` ends."""
-        if self._feed is not None:
-            self._feed.stop()
-            self._feed = None
+        self._shut.set()
+        replacer = self._replacer
+        if replacer is not None:
+            replacer.join(timeout=10.0)  # the helper it takes is then ended below
+        with self._feed_lock:
+            feed, self._feed = self._feed, None
+        if feed is not None:
+            feed.stop()
         if not self.helper.lost:
             self.safe_stop()
             self.graph.close()

@@ -6,8 +6,9 @@ only. Requests come as ``wire`` frames on stdin; the node
 spins in its own thread (subscription, feedback and result callbacks), waits that may take a
 while (a service or action server to appear) run in a small pool, everything else inline.
 
-When stdin ends (Rockly quit or died) or SIGTERM comes, its last act is the profile's safe
-stop (given by ``configure``), then it leaves.
+A thread of its own says it is alive every ``wire.HEARTBEAT_SECONDS`` (Rockly ends a helper
+that falls silent). When stdin ends (Rockly quit or died) or SIGTERM comes, its last act is the
+profile's safe stop (given by ``configure``), then it leaves.
 """
 import os
 import signal
@@ -123,6 +124,16 @@ class Helper:
     def event(self, kind, key, data=None):
         self.send((wire.EVENT, kind, key, data))
 
+    def beat(self):
+        """Say 'alive' every HEARTBEAT_SECONDS until Rockly's pipe closes (its own thread: a request
+        that waits long does not hold it up, a stopped or frozen process does)."""
+        while True:
+            time.sleep(wire.HEARTBEAT_SECONDS)
+            try:
+                self.event("alive", None)
+            except (OSError, ValueError):
+                return
+
     # --- requests
     # requests that may wait (for a server, a match, an answer) run on the pool, not the reading loop
     WAITING_OPS = {"publish_first", "subscribe", "service", "goal", "cancel_all", "get_param", "set_param"}
@@ -194,16 +205,21 @@ class Helper:
                 missing.append((name, error.values.get("package", type_name)))
         return missing
 
-    def op_configure(self, qos_overrides, safe_stop):
-        """The profile's QoS overrides and safe stop; the stop's publishers are made (and matched) now.
-        Returns the topics that cannot be published here (a type ROS 2's environment lacks)."""
+    def op_configure(self, qos_overrides, safe_stop, match=True):
+        """The profile's QoS overrides and safe stop; the stop's publishers are made now, and matched
+        unless ``match`` is False (a helper replacing a lost one: its stop must not wait behind a topic
+        nobody subscribes to; a publish matches first anyway). Returns the topics that cannot be
+        published here (a type ROS 2's environment lacks)."""
         self.qos_overrides = dict(qos_overrides or {})
         self.safe_stop = list(safe_stop or [])
         problems = []
         for action in self.safe_stop:
             if "publish" in action:
                 try:
-                    self.op_publish_first(action["publish"]["topic"], action["publish"]["type"], None)
+                    if match:
+                        self.op_publish_first(action["publish"]["topic"], action["publish"]["type"], None)
+                    else:
+                        self._publisher(action["publish"]["topic"], action["publish"]["type"])
                 except LookupError:
                     problems.append(action["publish"]["topic"])
         return problems
@@ -266,9 +282,11 @@ class Helper:
         return layout(interface_class(type_name, "msg"))
 
     def _matched_publisher(self, topic, type_name):
-        """The publisher on ``topic``; while it has matched nobody but the graph lists subscribers, matched first."""
+        """The publisher on ``topic``; while it has matched nobody but the graph lists subscribers (or
+        the helper is too young to know them all: a spare taking over sends the safe stop), matched first."""
         publisher, message_class = self._publisher(topic, type_name)
-        if publisher.get_subscription_count() == 0 and self.node.count_subscribers(topic) > 0:
+        if publisher.get_subscription_count() == 0 and (
+                self.node.count_subscribers(topic) > 0 or time.monotonic() < self.started + DISCOVERY_SECONDS):
             self._match(publisher, topic)
         return publisher, message_class
 
@@ -543,6 +561,7 @@ def main():
     helper.event("hello", wire.PROTOCOL, {"pid": os.getpid(), "distro": distro,
                                           "domain": rclpy.utilities.get_default_context().get_domain_id(),
                                           "share": sorted(_share_dirs())})
+    threading.Thread(target=helper.beat, name="ros2-heartbeat", daemon=True).start()
     try:
         while True:
             frame = wire.read_frame(stdin)

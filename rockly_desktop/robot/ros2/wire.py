@@ -10,12 +10,15 @@ Helper → Rockly: ``(REPLY, id, ok, value)`` answers a call (when not ok, value
 'timeout' or 'command', and the error's words, see ``said``); ``(EVENT, kind, key, data)`` reports
 messages, feedback, goal ends and failures of casts (``(kind, words)`` too).
 The helper's first frame is ``(EVENT, "hello", PROTOCOL, info)``; a client refuses another
-protocol version. Standard library only: the helper's Python imports this too.
+protocol version. From then on it says ``(EVENT, "alive", None, None)`` every HEARTBEAT_SECONDS,
+whatever its requests are doing: a helper silent for longer is hung (``client``).
+Standard library only: the helper's Python imports this too.
 """
 import pickle
 import struct
 
 PROTOCOL = 4
+HEARTBEAT_SECONDS = 0.2
 CALL, CAST, REPLY, EVENT = "call", "cast", "reply", "event"
 
 _HEADER = struct.Struct(">I")

@@ -121,7 +121,19 @@ def test_the_helpers_last_act_stops_a_jazzy_robot_in_the_type_it_was_sent(link, 
     eventually(lambda: graph_lists_twist_stamped(link), timeout=20)
     link_backend(link, Interrupt()).publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.2}})
     eventually(lambda: heard and heard[-1]["message"]["linear"]["x"] == pytest.approx(0.2))
-    link.helper.process.send_signal(signal.SIGTERM)
-    eventually(lambda: link.helper.lost)
+    helper = link.helper
+    helper.process.send_signal(signal.SIGTERM)
+    eventually(lambda: helper.lost)
     eventually(lambda: heard[-1]["message"]["linear"]["x"] == 0.0)
     assert heard[-1]["type"] == "TwistStamped"
+
+
+def test_a_killed_helpers_replacement_stops_a_jazzy_robot_in_the_type_it_was_sent(link, heard):
+    eventually(lambda: graph_lists_twist_stamped(link), timeout=20)
+    link_backend(link, Interrupt()).publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.2}})
+    eventually(lambda: heard and heard[-1]["message"]["linear"]["x"] == pytest.approx(0.2))
+    count = len(heard)
+    link.helper.process.kill()  # no last act: the new helper sends the stop
+    eventually(lambda: len(heard) > count and heard[-1]["message"]["linear"]["x"] == 0.0)
+    assert heard[-1]["type"] == "TwistStamped" and heard[-1]["stamped"]
+    eventually(lambda: link.replaced is not None and not link.helper.lost)
