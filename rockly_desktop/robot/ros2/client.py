@@ -319,6 +319,15 @@ class Ros2Helper:
         if self._failures:
             raise _error(*self._failures.popleft())
 
+    def drop_failures(self) -> list:
+        """Let go of the earlier casts' failures nobody was told yet (logged): the safe stop's commands
+        must not be refused for a program's last bad message. Returns them."""
+        dropped = []
+        while self._failures:
+            dropped.append(self._failures.popleft())
+            log.warning("a command before the safe stop failed: %s", _error(*dropped[-1]))
+        return dropped
+
     def cast(self, op: str, *args):
         """Send a request that gets no answer (its failure is raised by a later ``check``)."""
         self.check()

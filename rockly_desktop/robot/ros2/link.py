@@ -253,7 +253,8 @@ class Ros2Robot:
                 feed.services() if kind == "services" else feed.actions()))
 
     def safe_stop(self) -> list:
-        """Do the profile's safe stop now; returns what failed."""
+        """Do the profile's safe stop now (whatever the program's last commands did); returns what failed."""
+        self.helper.drop_failures()
         return run_safe_stop(self.profile.safe_stop, link_backend(self, Interrupt(), stopping=True))
 
     def shutdown(self):

@@ -120,3 +120,17 @@ def test_stop_while_the_helper_hangs_reaches_the_robot_within_2_s(faulty_link, t
     stopped_within_the_promise(test_robot, faulted_at)
     assert run.finished().outcome in ("stopped", "error")
 
+
+
+def test_a_refused_message_left_unsaid_by_the_program_does_not_keep_the_safe_stop_from_the_robot(faulty_link,
+                                                                                                 test_robot):
+    """A publish the helper refuses is said by the next command; when the program ends right after it,
+    that next command is the safe stop's zero velocity, which must still reach the robot."""
+    robot = faulty_link
+    code = ("robot.backend.publish('/cmd_vel', 'geometry_msgs/Twist', {'linear': {'x': 0.2}})\n"
+            "robot.wait(0.5)\n"
+            "robot.backend.publish('/cmd_vel', 'geometry_msgs/Twist', {'linear': {'x': 'fast'}})\n")
+    run = Run(robot, code)
+    eventually(lambda: speed_on_the_wire(test_robot) == 0.2)
+    run.finished()
+    eventually(lambda: speed_on_the_wire(test_robot) == 0.0)
