@@ -71,13 +71,15 @@ class Moments:
 
     @property
     def output(self) -> list:
-        """The lines the program printed, in order."""
-        return [entry.data.get("text", "") for entry in self._output]
+        """The lines the program printed, in order (those recorded: not the ones printed too fast)."""
+        return [entry.data.get("text", "") for entry in self._output if "skipped" not in entry.data]
 
-    def printed_lines(self) -> list:
-        """The lines printed, each after its time since the run began ("   1.25 s  text"); the same list each time."""
+    def printed_lines(self, skipped_text) -> list:
+        """The lines printed, each after its time since the run began ("   1.25 s  text"); lines printed too fast to
+        record are one line of ``skipped_text(count)``. The same list each time."""
         if self._printed is None:
-            self._printed = [f"{entry.time:7.2f} s  {entry.data.get('text', '')}" for entry in self._output]
+            self._printed = [f"{entry.time:7.2f} s  " + (skipped_text(entry.data["skipped"]) if "skipped" in entry.data
+                                                         else entry.data.get("text", "")) for entry in self._output]
         return self._printed
 
     def at(self, seconds: float) -> Moment:

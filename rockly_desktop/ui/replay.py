@@ -97,7 +97,8 @@ class Replay(QObject):
         self.variables.show_values(moment.variables)
         if self.console is not None and moment.printed != self._shown_printed:
             self._shown_printed = moment.printed
-            self.console.show_recorded(self.moments.printed_lines(), moment.printed)
+            self.console.show_recorded(self.moments.printed_lines(
+                lambda count: tr("output_not_recorded", self.language, count=count)), moment.printed)
         plot = self._plot()
         if plot is not None:
             plot.show_recorded(self.topics, seconds, self.moments.duration)
