@@ -8,10 +8,10 @@ nothing at all.
 from PySide6.QtCore import QObject
 from PySide6.QtWidgets import QFileDialog, QMessageBox
 
-from rockly_desktop.recording import channels
 from rockly_desktop.ui.block_badges import badge_texts
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.plan_view import PlanView
+from rockly_desktop.ui.recording_reader import RecordingReader
 from rockly_desktop.ui.texts import tr
 
 
@@ -42,6 +42,8 @@ class Replay(QObject):
         self.simulator = simulator
         self.language = language
         self.moments = None
+        self._printed = None  # the lines printed, as the console shows them
+        self._reader = None  # the RecordingReader whose recording is to be shown
         self._shown_block = None
         bar.sig_moment.connect(self.show_moment)
         bar.sig_closed.connect(self._back_to_live)
@@ -53,38 +55,44 @@ class Replay(QObject):
         if path:
             self.open(path)
 
-    def open(self, path, quiet: bool = False) -> bool:
-        """Show the timeline of the recording at ``path``. A file that cannot be read is said in a message
-        box (``quiet``: only logged, e.g. after a run) and nothing changes; returns whether it opened."""
-        # Imported when first used: reading and decoding recordings (mcap, numpy) costs 0.1 s at start.
-        from rockly_desktop.recording.moments import Moments
-        from rockly_desktop.recording.odometry import RecordedPath
-        from rockly_desktop.recording.reading import RecordingUnreadable, read_recording
-        from rockly_desktop.recording.topics import RecordedTopics
+    def open(self, path, quiet: bool = False):
+        """Show the timeline of the recording at ``path`` once a thread of its own has read it (the window goes on
+        meanwhile). A file that cannot be read is said in a message box (``quiet``: only logged, e.g. after a run)
+        and nothing changes; a later ``open`` or ``close`` drops what this one reads."""
+        reader = RecordingReader(path, lambda count: tr("output_not_recorded", self.language, count=count), self)
+        reader.quiet = quiet
+        self._reader = reader
+        reader.sig_read.connect(self._read)  # queued: this object lives in the GUI thread
+        reader.finished.connect(reader.deleteLater)
+        reader.start()
 
-        try:
-            recording = read_recording(path)
-        except RecordingUnreadable as error:
-            if not quiet:
-                box = plain_message_box(self.parent(), QMessageBox.Icon.Warning,
-                                        tr("recording_unreadable", self.language), str(error))
-                box.setObjectName("recording_unreadable_box")
-                box.open()
-            return False
-        self.moments = Moments(recording)
-        self.topics = RecordedTopics(recording)
+    def _read(self, reader):
+        if reader is not self._reader:  # another recording was asked for, or a run started meanwhile
+            return
+        self._reader = None
+        if reader.error is not None and not reader.quiet:
+            box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, tr("recording_unreadable", self.language),
+                                    str(reader.error))
+            box.setObjectName("recording_unreadable_box")
+            box.open()
+        data = reader.data
+        if data is None:
+            return
+        self.moments, self.topics, self.path, self._printed = data.moments, data.topics, data.path, data.printed
         self.simulator.show_live_view()
         self.plan = None
-        path = None if recording.on(channels.SIMULATOR) else RecordedPath(self.topics)
-        self.path = path or None
-        self.bar.show_timeline(self.moments.duration, self.moments.markers(),
-                               "" if recording.complete else tr("replay_cut_short", self.language))
-        return True
+        self.bar.show_timeline(self.moments.duration, data.markers,
+                               "" if data.complete else tr("replay_cut_short", self.language))
 
     def close(self):
-        """Hide the timeline (a run is starting, or another program opens)."""
+        """Hide the timeline (a run is starting, or another program opens); a recording being read is not shown."""
+        self._reader = None
         if self.bar.isVisible():
             self.bar.close_timeline()
+
+    def wait_for_reading(self, timeout_ms: int = 30000) -> bool:
+        """Wait until no recording is being read (the window is closing); True when none is."""
+        return all(reader.wait(timeout_ms) for reader in self.findChildren(RecordingReader))
 
     def show_moment(self, seconds: float):
         """Show the run as it was ``seconds`` after it began."""
@@ -97,8 +105,7 @@ class Replay(QObject):
         self.variables.show_values(moment.variables)
         if self.console is not None and moment.printed != self._shown_printed:
             self._shown_printed = moment.printed
-            self.console.show_recorded(self.moments.printed_lines(
-                lambda count: tr("output_not_recorded", self.language, count=count)), moment.printed)
+            self.console.show_recorded(self._printed, moment.printed)
         plot = self._plot()
         if plot is not None:
             plot.show_recorded(self.topics, seconds, self.moments.duration)
