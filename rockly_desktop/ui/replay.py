@@ -11,7 +11,7 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox
 from rockly_desktop.ui.block_badges import badge_texts
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.plan_view import PlanView
-from rockly_desktop.ui.recording_reader import RecordingReader
+from rockly_desktop.ui.recording_reader import RecordingReader, release
 from rockly_desktop.ui.texts import tr
 
 
@@ -44,6 +44,7 @@ class Replay(QObject):
         self.moments = None
         self._printed = None  # the lines printed, as the console shows them
         self._reader = None  # the RecordingReader whose recording is to be shown
+        self._data = None  # the ReplayData shown
         self._shown_block = None
         bar.sig_moment.connect(self.show_moment)
         bar.sig_closed.connect(self._back_to_live)
@@ -67,7 +68,10 @@ class Replay(QObject):
         reader.start()
 
     def _read(self, reader):
+        data, reader.data = reader.data, None  # the reader is deleted in this thread: it must not hold the data
         if reader is not self._reader:  # another recording was asked for, or a run started meanwhile
+            if data is not None:
+                release(data)
             return
         self._reader = None
         if reader.error is not None and not reader.quiet:
@@ -75,10 +79,12 @@ class Replay(QObject):
                                     str(reader.error))
             box.setObjectName("recording_unreadable_box")
             box.open()
-        data = reader.data
         if data is None:
             return
+        shown, self._data = self._data, data
         self.moments, self.topics, self.path, self._printed = data.moments, data.topics, data.path, data.printed
+        if shown is not None:
+            release(shown)
         self.simulator.show_live_view()
         self.plan = None
         self.bar.show_timeline(self.moments.duration, data.markers,
