@@ -11,6 +11,8 @@ from program_builder import block, number, stack, text, workspace
 from test_replay import highlighted
 
 from rockly_desktop.recording import reading
+from rockly_desktop.ui import replay
+from rockly_desktop.ui.recording_reader import release
 
 
 def counting_and_printing_forever():
@@ -67,6 +69,8 @@ def test_the_window_goes_on_while_a_recording_is_read_and_a_run_started_meanwhil
         qtbot, window, monkeypatch):
     hold = threading.Event()
     readings = Readings(monkeypatch, hold)
+    released = []
+    monkeypatch.setattr(replay, "release", lambda data: released.append(data) or release(data))
     call_page(qtbot, window.editor, "load", {"workspace": counting_and_printing_forever()})
     window.runs.run()
     qtbot.waitUntil(lambda: window.runs.state == "running", timeout=20000)
@@ -82,6 +86,7 @@ def test_the_window_goes_on_while_a_recording_is_read_and_a_run_started_meanwhil
     qtbot.waitUntil(lambda: window.replay.wait_for_reading(0), timeout=10000)
     qtbot.wait(50)  # the reading's end is a queued signal: let the window take it
     assert not window.replay_bar.isVisible()  # the finished reading was for the run before this one
+    assert len(released) == 1  # what it read is let go outside the GUI thread
 
     with qtbot.waitSignal(window.runs.sig_finished, timeout=20000):
         window.runs.stop()
