@@ -41,3 +41,18 @@ def test_a_replay_let_go_is_emptied_in_another_thread(printed_fast, monkeypatch)
         thread.join(30)
     assert threads and threading.main_thread() not in threads
     assert data.moments.recording.entries == [] and data.printed == [] and data.markers == []
+
+
+def test_rocklys_events_written_out_of_time_order_are_read_in_time_order(tmp_path):
+    from rockly_desktop.recording import channels
+    from rockly_desktop.recording.mcap_file import McapFile
+    from rockly_desktop.recording.reading import read_recording
+
+    written = McapFile(tmp_path / "shuffled.mcap")
+    written.metadata(channels.METADATA, {"program": "shuffled.rockly"})
+    for stamp in (1_000, 3_000, 2_000, 4_000, 0):
+        written.write_json(channels.OUTPUT, *channels.SCHEMAS[channels.OUTPUT], stamp, {"text": str(stamp)})
+    written.close()
+    entries = read_recording(tmp_path / "shuffled.mcap").entries
+    assert [entry.data["text"] for entry in entries] == ["0", "1000", "2000", "3000", "4000"]
+    assert [entry.time for entry in entries] == [0.0, 1e-6, 2e-6, 3e-6, 4e-6]
