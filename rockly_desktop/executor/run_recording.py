@@ -72,7 +72,7 @@ class RunRecording:
         elif isinstance(event, VariablesChanged):  # exact at a pause and at the end (else sampled)
             self.recorder.note(channels.VARIABLES, {"values": event.values})
         elif isinstance(event, OutputPrinted):
-            self.recorder.note(channels.OUTPUT, {"text": event.text})
+            self.recorder.printed(event.text)
         elif isinstance(event, RunFinished):
             self.recorder.note(channels.RUN, {"event": "end", "outcome": event.outcome, "block": event.block_id,
                                               "message": event.message})

@@ -3,7 +3,7 @@
 RUN = "/rockly/run"            # start, pause, resume, safe stop, end (with the error)
 BLOCKS = "/rockly/blocks"      # a block entered (its time is the message's log time)
 VARIABLES = "/rockly/variables"
-OUTPUT = "/rockly/output"      # what the program printed
+OUTPUT = "/rockly/output"      # what the program printed; {"skipped": n}: n lines printed too fast to record
 COMMANDS = "/rockly/commands"  # what the program sent to the robot, and what came back
 VALUES = "/rockly/values"      # expression blocks' last values, the ones that changed (when values are on)
 SIMULATOR = "/rockly/simulator"  # the simulator's snapshots, for the replay's simulator view
@@ -21,7 +21,7 @@ SCHEMAS = {
         "values": {"type": "object", "additionalProperties": {"type": ["string", "null"]}}}}),
     VALUES: ("rockly.BlockValues", {"type": "object", "properties": {
         "values": {"type": "object", "additionalProperties": {"type": "string"}}}}),
-    OUTPUT: ("rockly.Output", {"type": "object", "properties": {"text": _TEXT}}),
+    OUTPUT: ("rockly.Output", {"type": "object", "properties": {"text": _TEXT, "skipped": {"type": "integer"}}}),
     COMMANDS: ("rockly.Command", {"type": "object", "properties": {
         "kind": {"enum": ["publish", "call", "response", "goal", "feedback", "outcome", "cancel", "failed"]},
         "name": _TEXT, "type": _TEXT, "block": _TEXT, "data": {}, "status": _TEXT, "text": _TEXT,

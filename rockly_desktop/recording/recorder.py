@@ -1,15 +1,18 @@
 """Recording one run: events from any thread into a bounded queue, a writer thread streams them to MCAP.
 
 The program's thread and the robot's threads only put small tuples in a queue (or, for
-blocks, in a deque the block hook fills while it has budget); the writer thread wakes
+blocks and printed lines, in deques filled while they have budget); the writer thread wakes
 every ``TICK_SECONDS``, writes what came in time order, samples the variables, the
 expression blocks' values and the simulator's state, and closes a chunk every ``FLUSH_SECONDS`` so that a crash loses at
-most that much. Memory stays bounded whatever the rates and sizes: topics are capped per topic at
-``topic_rate`` messages a second, blocks at ``BLOCKS_PER_TICK`` per tick (a tight loop is
-then sampled), a full queue drops what comes (counted in the recording's stats as ``overflow``),
-and the robot's messages waiting in it hold at most ``QUEUE_BYTES`` (``message_bytes``'s
-estimate): a camera's message that does not fit while the writer is behind is dropped and
-counted per topic (``dropped``), so a slow disk or encoder never fills memory.
+most that much. Memory and the writer's work stay bounded whatever the rates and sizes: topics are
+capped per topic at ``topic_rate`` messages a second, blocks at ``BLOCKS_PER_TICK`` per tick (a
+tight loop is then sampled), printed lines at ``LINES_PER_TICK`` per tick (the rest is counted on
+the output channel as ``{"skipped": n}``), a full queue drops what comes (counted in the
+recording's stats as ``overflow``), and the robot's messages waiting in it hold at most
+``QUEUE_BYTES`` (``message_bytes``'s estimate): a camera's message that does not fit while the
+writer is behind is dropped and counted per topic (``dropped``), so a slow disk or encoder never
+fills memory. A program printing in an endless loop once queued every line: the writer then wrote
+20,000 a tick, holding the GIL in turns with the window, and the run's end waited for the backlog.
 A write that fails (a full disk) stops the recording, not the run: what was written stays
 readable, what comes later is dropped, and ``on_stopped(error)`` is called once.
 """
@@ -29,6 +32,7 @@ TICK_SECONDS = 0.05
 FLUSH_SECONDS = 1.0
 SNAPSHOT_SECONDS = 0.2
 BLOCKS_PER_TICK = 100
+LINES_PER_TICK = 100
 QUEUE_SIZE = 20_000
 QUEUE_BYTES = 64 * 2 ** 20
 
@@ -75,6 +79,9 @@ class Recorder:
         self._last_snapshot = None
         self._next_snapshot = 0.0
         self.blocks = deque()  # (monotonic_ns, block id), filled by the block hook
+        self._lines = deque()  # (ns since the epoch, text) printed this tick, at most LINES_PER_TICK
+        self._lines_skipped = 0  # grows in the program's thread only
+        self._lines_skipped_written = 0  # grows in the writer's thread only
         self._block_types = {}
 
     # --- set-up --------------------------------------------------------------------------
@@ -111,6 +118,13 @@ class Recorder:
     def note(self, channel: str, payload: dict):
         """Record one of Rockly's events on ``channel`` (see ``channels``)."""
         self._put((self._clock(), channel, payload))
+
+    def printed(self, text: str):
+        """Record a line the program printed, unless this tick's ``LINES_PER_TICK`` are taken (then it is counted)."""
+        if len(self._lines) < LINES_PER_TICK:
+            self._lines.append((self._clock(), text))
+        else:
+            self._lines_skipped += 1
 
     def topic(self, topic: str, msg_type: str, message):
         """Record a robot topic's message, unless it comes sooner than the rate cap allows (or is no
@@ -203,6 +217,7 @@ class Recorder:
         with self._bytes_lock:
             self._queued_bytes -= taken
         items += self._block_items()
+        items += self._printed_items()
         items += self._samples(final)
         items.sort(key=lambda item: item[0])
         for log_ns, channel, payload in items:
@@ -224,6 +239,19 @@ class Recorder:
                 items.append((self._clock(), channels.BLOCKS, {"block": hooks.current_block, "type":
                               self._block_types.get(hooks.current_block, ""), "sampled": True}))
             hooks.block_budget = BLOCKS_PER_TICK
+        return items
+
+    def _printed_items(self) -> list:
+        """This tick's printed lines, then how many were skipped since the last count (ending the tick's budget)."""
+        items = []
+        lines = self._lines
+        for _ in range(len(lines)):
+            stamp, text = lines.popleft()
+            items.append((stamp, channels.OUTPUT, {"text": text}))
+        skipped = self._lines_skipped - self._lines_skipped_written
+        if skipped:
+            self._lines_skipped_written += skipped
+            items.append((self._clock(), channels.OUTPUT, {"skipped": skipped}))
         return items
 
     def _samples(self, final: bool) -> list:

@@ -59,6 +59,8 @@ def timeline_lines(recording: Recording) -> list:
         elif entry.channel == channels.RUN:
             what, block, outcome = _run_event(entry.data)
             lines.append(f"{entry.time:9.3f}  {what:<7} {block}  {outcome}".rstrip())
+        elif entry.channel == channels.OUTPUT and "skipped" in entry.data:
+            lines.append(f"{entry.time:9.3f}  print   ({entry.data['skipped']} more lines printed too fast to record)")
         elif entry.channel == channels.OUTPUT:
             lines.append(f"{entry.time:9.3f}  print   {entry.data.get('text', '')}")
     return lines

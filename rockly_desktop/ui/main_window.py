@@ -524,6 +524,7 @@ class MainWindow(QMainWindow):
             return
         self._close_approved = False
         self.runs.shutdown()
+        self.replay.wait_for_reading()
         self.simulator_dock.stop()
         self.health.stop()
         self.robots.shutdown()

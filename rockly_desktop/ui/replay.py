@@ -7,20 +7,22 @@ nothing at all. A recording shows only on the robot it was recorded with (its pr
 simulator's run, in the same solid world: one robot's run drawn in another robot's world would
 show a robot where no robot was.
 """
-from PySide6.QtCore import QObject
+from PySide6.QtCore import QObject, Signal
 from PySide6.QtWidgets import QFileDialog, QMessageBox
 
-from rockly_desktop.recording import channels
 from rockly_desktop.ui.block_badges import badge_texts
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.plan_view import PlanView
+from rockly_desktop.ui.recording_reader import RecordingReader, release
 from rockly_desktop.ui.texts import tr
 
 
 class Replay(QObject):
     """Drives the ``bar`` (``ReplayBar``) and shows its moments in the ``editor``, the ``variables`` dock,
     the ``simulator`` dock (whose live refresh pauses while a moment is shown), the ``console`` and the
-    plot panel."""
+    plot panel. ``sig_opened(shown)``: a recording asked for with ``open`` was read, and shown or not."""
+
+    sig_opened = Signal(bool)
 
     def __init__(self, bar, editor, variables, simulator, language: str, parent=None, badges=lambda: True,
                  console=None, plot=lambda: None, state_panels=lambda: None, robots=None, registry=None):
@@ -48,6 +50,9 @@ class Replay(QObject):
         self.simulator = simulator
         self.language = language
         self.moments = None
+        self._printed = None  # the lines printed, as the console shows them
+        self._reader = None  # the RecordingReader whose recording is to be shown
+        self._data = None  # the ReplayData shown
         self._shown_block = None
         bar.sig_moment.connect(self.show_moment)
         bar.sig_closed.connect(self._back_to_live)
@@ -59,41 +64,54 @@ class Replay(QObject):
         if path:
             self.open(path)
 
-    def open(self, path, quiet: bool = False) -> bool:
-        """Show the timeline of the recording at ``path``. A file that cannot be read is said in a message
-        box and nothing changes, what reading left out of one in a message box and the bar's note (``quiet``,
-        e.g. after a run: only in the note); returns whether it opened."""
-        # Imported when first used: reading and decoding recordings (mcap, numpy) costs 0.1 s at start.
-        from rockly_desktop.recording.moments import Moments
-        from rockly_desktop.recording.odometry import RecordedPath
-        from rockly_desktop.recording.reading import RecordingUnreadable, read_recording
-        from rockly_desktop.recording.topics import RecordedTopics
+    def open(self, path, quiet: bool = False):
+        """Show the timeline of the recording at ``path`` once a thread of its own has read it (the window goes on
+        meanwhile), then say ``sig_opened(shown)``. A file that cannot be read, or a recording of another robot or
+        world, is said in a message box and nothing changes; what reading left out of one in a message box and
+        the bar's note (``quiet``, e.g. after a run: only in the note). A later ``open`` or ``close`` drops what
+        this one reads."""
+        reader = RecordingReader(path, lambda count: tr("output_not_recorded", self.language, count=count), self)
+        reader.quiet = quiet
+        self._reader = reader
+        reader.sig_read.connect(self._read)  # queued: this object lives in the GUI thread
+        reader.finished.connect(reader.deleteLater)
+        reader.start()
 
-        try:
-            recording = read_recording(path)
-        except RecordingUnreadable as error:
-            if not quiet:
+    def _read(self, reader):
+        data, reader.data = reader.data, None  # the reader is deleted in this thread: it must not hold the data
+        if reader is not self._reader:  # another recording was asked for, or a run started meanwhile
+            if data is not None:
+                release(data)
+            return
+        self._reader = None
+        self.sig_opened.emit(self._show(data, reader.error, reader.quiet))
+
+    def _show(self, data, error, quiet: bool) -> bool:
+        """Show ``data`` (a ``ReplayData``; None: unread, ``error`` says why); whether it is shown."""
+        if data is None:
+            if error is not None and not quiet:
                 self._say("recording_unreadable_box", tr("recording_unreadable", self.language),
                           error.in_language(self.language))
             return False
-        refusal = self._shown_elsewhere(recording.metadata)
+        refusal = self._shown_elsewhere(data.metadata)
         if refusal is not None:
+            release(data)
             if not quiet:
                 box = plain_message_box(self.parent(), QMessageBox.Icon.Information,
                                         tr("recording_other_robot_title", self.language), refusal)
                 box.setObjectName("recording_other_robot_box")
                 box.open()
             return False
-        self.moments = Moments(recording)
-        self.topics = RecordedTopics(recording)
+        shown, self._data = self._data, data
+        self.moments, self.topics, self.path, self._printed = data.moments, data.topics, data.path, data.printed
+        if shown is not None:
+            release(shown)
         self.simulator.show_live_view()
         self.plan = None
-        path = None if recording.on(channels.SIMULATOR) else RecordedPath(self.topics)
-        self.path = path or None
-        notes = "\n".join(note.in_language(self.language) for note in recording.notes())
-        short = [tr(key, self.language) for key, shown in (("replay_cut_short", not recording.complete),
-                                                            ("replay_parts_left_out", notes)) if shown]
-        self.bar.show_timeline(self.moments.duration, self.moments.markers(), " ".join(short), notes)
+        notes = "\n".join(note.in_language(self.language) for note in data.notes)
+        short = [tr(key, self.language) for key, wanted in (("replay_cut_short", not data.complete),
+                                                             ("replay_parts_left_out", notes)) if wanted]
+        self.bar.show_timeline(self.moments.duration, data.markers, " ".join(short), notes)
         if notes and not quiet:
             self._say("recording_partly_read_box", tr("recording_partly_read", self.language), notes)
         return True
@@ -104,7 +122,8 @@ class Replay(QObject):
         box.open()
 
     def close(self):
-        """Hide the timeline (a run is starting, or another program opens)."""
+        """Hide the timeline (a run is starting, or another program opens); a recording being read is not shown."""
+        self._reader = None
         if self.bar.isVisible():
             self.bar.close_timeline()
 
@@ -112,7 +131,10 @@ class Replay(QObject):
         """Hide the timeline and forget the recording: another program or robot is on screen, and the
         old run's moments are not its own."""
         self.close()
-        self.moments = self.topics = self.path = self.plan = None
+        shown, self._data = self._data, None
+        if shown is not None:
+            release(shown)
+        self.moments = self.topics = self.path = self.plan = self._printed = None
 
     def _shown_elsewhere(self, metadata: dict):
         """Why a recording with ``metadata`` cannot show on the window's robot now, or None when it can."""
@@ -129,6 +151,10 @@ class Replay(QObject):
             return tr("recording_other_world", self.language, robot=profile.display_name(self.language))
         return None
 
+    def wait_for_reading(self, timeout_ms: int = 30000) -> bool:
+        """Wait until no recording is being read (the window is closing); True when none is."""
+        return all(reader.wait(timeout_ms) for reader in self.findChildren(RecordingReader))
+
     def show_moment(self, seconds: float):
         """Show the run as it was ``seconds`` after it began."""
         if self.moments is None:
@@ -140,7 +166,7 @@ class Replay(QObject):
         self.variables.show_values(moment.variables)
         if self.console is not None and moment.printed != self._shown_printed:
             self._shown_printed = moment.printed
-            self.console.show_recorded(self.moments.printed_lines(), moment.printed)
+            self.console.show_recorded(self._printed, moment.printed)
         plot = self._plot()
         if plot is not None:
             plot.show_recorded(self.topics, seconds, self.moments.duration)

@@ -8,7 +8,7 @@ import pytest
 from page_tools import call_page
 from program_builder import block, number, rockly_document, stack, workspace
 from PySide6.QtWidgets import QMessageBox
-from window_tools import completed
+from window_tools import completed, opened_recording
 
 from rockly_desktop.recording import channels
 from rockly_desktop.recording.reading import read_recording
@@ -86,7 +86,7 @@ def test_a_recording_of_hobbit_is_not_replayed_onto_the_turtlebot(qtbot, window)
     choose_the_turtlebot(qtbot, window)
     turtlebot = window.robot().snapshot()
 
-    assert not window.replay.open(path)
+    assert not opened_recording(qtbot, window, path)
 
     boxes = [box for box in window.findChildren(QMessageBox)
              if box.objectName() == "recording_other_robot_box" and box.isVisible()]
@@ -108,11 +108,11 @@ def recording_in_world(path, world: str):
 def test_a_recording_from_another_simulated_world_is_not_shown(qtbot, window, tmp_path):
     here = window.robots.world_id()
     assert here is not None
-    assert not window.replay.open(recording_in_world(tmp_path / "elsewhere.mcap", "another-house"))
+    assert not opened_recording(qtbot, window, recording_in_world(tmp_path / "elsewhere.mcap", "another-house"))
     boxes = [box for box in window.findChildren(QMessageBox)
              if box.objectName() == "recording_other_robot_box" and box.isVisible()]
     assert boxes and "another simulated world" in boxes[0].text() and not window.replay_bar.isVisible()
-    assert window.replay.open(recording_in_world(tmp_path / "here.mcap", here))
+    assert opened_recording(qtbot, window, recording_in_world(tmp_path / "here.mcap", here))
     assert window.replay_bar.isVisible()
 
 

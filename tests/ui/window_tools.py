@@ -53,3 +53,10 @@ def completed(qtbot, command, *args, timeout=15000):
     command(*args, then=outcomes.append)
     qtbot.waitUntil(lambda: bool(outcomes), timeout=timeout)
     return outcomes[0]
+
+
+def opened_recording(qtbot, window, path) -> bool:
+    """Open the recording at ``path`` in ``window``'s replay and wait until it is read; whether it is shown."""
+    with qtbot.waitSignal(window.replay.sig_opened, timeout=60000) as reading:
+        window.replay.open(path)
+    return reading.args[0]
