@@ -103,6 +103,7 @@ class MainWindow(QMainWindow):
         self.runs.sig_finished.connect(lambda _result: self.runs.last_recording and self.replay.open(
             self.runs.last_recording, quiet=True))
         self.health = HealthBar(self.language, self)
+        self.health.sig_refreshed.connect(self.robots.show_health)  # one source for the light and the status
         self.statusBar().addPermanentWidget(self.health)
         self.statusBar().addPermanentWidget(self.robots.status)
         self.statusBar().addPermanentWidget(self.profile_label)

@@ -1,0 +1,73 @@
+"""ROS status that agrees with itself: the status bar says what the health light sees, a robot switch
+keeps the connection the person chose, and the Topic monitor counts Rockly's own publishers.
+
+Against a plain rclpy test robot (tests/ros2_fixtures.py) in its own process on this run's own domain,
+and a real ROS master with the ROS-level HOBBIT simulator for ROS 1."""
+import os
+
+import pytest
+from ros2_fixtures import TestRobot
+
+from rockly_desktop.robot.links import link_kind
+from rockly_desktop.ui.connection_dialog import ConnectionDialog
+from rockly_desktop.ui.health_bar import COLOURS
+from rockly_desktop.ui.texts import tr
+
+ROS1, ROS2 = link_kind("ros1"), link_kind("ros2")
+
+
+def screenshot(widget, name: str):
+    """Keep a picture of ``widget`` in $ROCKLY_SCREENSHOTS (when set), to look at."""
+    folder = os.environ.get("ROCKLY_SCREENSHOTS")
+    if folder:
+        widget.grab().save(os.path.join(folder, f"{name}.png"))
+
+
+@pytest.fixture
+def vanishing_robot(ros2_settings):
+    """A test robot of this test's own, which the test may end."""
+    robot = TestRobot(ros2_settings)
+    yield robot
+    if robot.process.poll() is None:
+        robot.stop()
+
+
+def choose_ros2(window, domain_id, discovery="localhost"):
+    """Choose "Real robot (ROS 2)…" in the Run-on box, giving ``domain_id`` and ``discovery`` in its dialog;
+    returns the settings the dialog offered."""
+    offered = []
+
+    def fill_in(dialog):
+        offered.append({name: (field.currentData() if hasattr(field, "currentData") else field.text())
+                        for name, field in dialog.fields.items()})
+        dialog.fields["domain_id"].setText(str(domain_id))
+        dialog.fields["discovery"].setCurrentIndex(dialog.fields["discovery"].findData(discovery))
+        return 1
+
+    original = ConnectionDialog.exec
+    ConnectionDialog.exec = fill_in
+    try:
+        backend = window.run_toolbar.backend
+        backend.setCurrentIndex(backend.findData("ros2"))
+    finally:
+        ConnectionDialog.exec = original
+    assert window.robots.kind == "ros2"
+    return offered
+
+
+def status_colour(window) -> str:
+    return window.robots.status.styleSheet().split("color:")[1].split(";")[0].strip()
+
+
+def test_after_the_robot_vanishes_the_status_bar_and_the_health_light_say_the_same(
+        qtbot, window, vanishing_robot, ros2_settings):
+    choose_ros2(window, ros2_settings.domain_id)
+    status, health = window.robots.status, window.health
+    qtbot.waitUntil(lambda: "/odom" in health.toolTip() and tr("ros_partly", "en") in status.text(), timeout=20000)
+    assert status_colour(window) == COLOURS[health.level]  # HOBBIT's other parts are not on the test robot
+    vanishing_robot.stop()
+    qtbot.waitUntil(lambda: tr("ros_silent", "en") in status.text(), timeout=20000)
+    qtbot.waitUntil(lambda: health.level == "red" and status_colour(window) == COLOURS["red"], timeout=20000)
+    assert health.text().endswith(tr("health_red", "en"))
+    assert f"domain {ros2_settings.domain_id}" in status.text()
+    screenshot(window.statusBar(), "status_after_the_robot_vanished")
