@@ -24,7 +24,9 @@ class RobotChoice(QObject):
     """The active robot for the document's profile; ``kind`` is a kind of robot link ('sim', 'ros1', 'ros2').
 
     Simulators answer tablet questions on ``tablet``; connections are remembered in
-    ``settings``; ``parent`` is the widget the connection dialog belongs to.
+    ``settings``; ``parent`` is the widget the connection dialog belongs to. Another robot
+    (profile) on a real kind of link is reached the way the person chose in the dialog: the
+    connection in use carries over, and is remembered for that robot too.
     """
 
     sig_robot_changed = Signal()  # another kind of robot was chosen
@@ -37,6 +39,7 @@ class RobotChoice(QObject):
         self.settings = settings
         self.kind = DEFAULT_KIND
         self._robots = {}
+        self._chosen = {}  # kind -> the connection the person last gave in its dialog
         self.status = plain_label(parent=parent)
         self.status.hide()
 
@@ -52,7 +55,10 @@ class RobotChoice(QObject):
         key = (kind, profile.id)
         if entry.simulated:
             self.tablet.robot_name = profile.display_name(self.settings.language)
-        if connection is None:
+        if connection is None and kind in self._chosen:  # a robot switch: where the person said
+            connection = self._chosen[kind]
+            self.settings.remember_link_connection(entry, profile.id, connection)
+        elif connection is None:
             connection = self.settings.link_connection(entry, profile.id)
         robot = open_link(kind, profile, connection, tablet=self.tablet, speed=self.simulator_speed, timeout=timeout)
         for other in [k for k in self._robots if link_kind(k[0]).simulated and k != key]:
@@ -123,6 +129,7 @@ class RobotChoice(QObject):
             self._refused(error)
             return False
         self.settings.remember_link_connection(entry, profile.id, dialog.values)
+        self._chosen[entry.kind] = dialog.values
         for warning in robot.warnings():
             box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, tr(f"ros_{warning.title}", language),
                                     robot_problem(warning, language)[0])

@@ -6,7 +6,7 @@ and a real ROS master with the ROS-level HOBBIT simulator for ROS 1."""
 import os
 
 import pytest
-from ros2_fixtures import TestRobot
+import ros2_fixtures
 
 from rockly_desktop.robot.links import link_kind
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
@@ -26,7 +26,7 @@ def screenshot(widget, name: str):
 @pytest.fixture
 def vanishing_robot(ros2_settings):
     """A test robot of this test's own, which the test may end."""
-    robot = TestRobot(ros2_settings)
+    robot = ros2_fixtures.TestRobot(ros2_settings)
     yield robot
     if robot.process.poll() is None:
         robot.stop()
@@ -71,3 +71,21 @@ def test_after_the_robot_vanishes_the_status_bar_and_the_health_light_say_the_sa
     assert health.text().endswith(tr("health_red", "en"))
     assert f"domain {ros2_settings.domain_id}" in status.text()
     screenshot(window.statusBar(), "status_after_the_robot_vanished")
+
+
+def test_a_robot_switch_on_ros2_keeps_the_domain_and_discovery_the_person_chose(
+        qtbot, window, vanishing_robot, ros2_settings):
+    from rockly_desktop.robot.ros2.environment import Ros2Settings
+
+    choose_ros2(window, ros2_settings.domain_id)
+    helper = window.robot().helper
+    window.choose_profile("turtlebot")
+    qtbot.waitUntil(lambda: window.profile.id == "turtlebot", timeout=15000)
+    robot = window.robot()
+    assert robot.profile.id == "turtlebot" and window.robots.kind == "ros2"
+    assert robot.settings == Ros2Settings(domain_id=ros2_settings.domain_id, discovery="localhost")
+    assert robot.helper is helper and not helper.lost  # the same graph, not domain 0 on the subnet
+    assert window.settings.link_connection(ROS2, "turtlebot")["domain_id"] == str(ros2_settings.domain_id)
+    qtbot.waitUntil(lambda: f"domain {ros2_settings.domain_id}, localhost" in window.robots.status.text(),
+                    timeout=10000)
+    qtbot.waitUntil(lambda: "/odom" in window.health.toolTip() and window.robots.status.isVisible(), timeout=20000)
