@@ -219,7 +219,7 @@ class MainWindow(QMainWindow):
         panels.set_store(robot.state)
         self.health.show_robot(robot)
         self._replace_dock_widget(self.state_dock, panels)
-        monitor = TopicMonitor(robot.state, robot.graph_topics, self.language)
+        monitor = TopicMonitor(robot.state, robot.graph_topics, self.language, own=robot.own_publishers)
         monitor.sig_plot_requested.connect(self._plot)
         self._replace_dock_widget(self.monitor_dock, monitor)
         had_plot = self._made_plot() is not None

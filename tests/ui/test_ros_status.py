@@ -7,6 +7,8 @@ import os
 
 import pytest
 import ros2_fixtures
+from page_tools import call_page
+from program_builder import block, number, stack, workspace
 
 from rockly_desktop.robot.links import link_kind
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
@@ -89,3 +91,50 @@ def test_a_robot_switch_on_ros2_keeps_the_domain_and_discovery_the_person_chose(
     qtbot.waitUntil(lambda: f"domain {ros2_settings.domain_id}, localhost" in window.robots.status.text(),
                     timeout=10000)
     qtbot.waitUntil(lambda: "/odom" in window.health.toolTip() and window.robots.status.isVisible(), timeout=20000)
+
+
+def publishers_cell(monitor, topic: str):
+    """The Publishers cell of ``topic``'s row in the Topic monitor (after it looked at the graph), or None."""
+    monitor.refresh()
+    model = monitor.table_model
+    row = model.row_of(topic)
+    return None if row < 0 else model.index(row, 2).data()
+
+
+def drive_and_look_at_the_monitor(qtbot, window, name: str):
+    """Run a program driving HOBBIT far; while it drives, the Topic monitor counts Rockly's /cmd_vel
+    publisher as Rockly's. Then stop it."""
+    window.monitor_dock.raise_()
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(stack(
+        block("hobbit_move", {"direction": "+"}, {"speed": number(500)}),
+        block("ros_wait", inputs={"seconds": number(60)})))})
+    window.runs.run()
+    qtbot.waitUntil(lambda: window.runs.state == "running", timeout=15000)
+    monitor = window.monitor_dock.widget()
+    qtbot.waitUntil(lambda: publishers_cell(monitor, "/cmd_vel") == "1 (Rockly)", timeout=20000)
+    assert window.runs.state == "running"
+    row = monitor.table_model.row_of("/cmd_vel")
+    assert monitor.table_model.index(row, 1).data() == "geometry_msgs/Twist"
+    screenshot(window.monitor_dock, name)
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=15000):
+        window.run_toolbar.stop_action.trigger()
+
+
+def test_the_topic_monitor_counts_rocklys_publisher_on_cmd_vel_while_a_program_drives_over_ros2(
+        qtbot, window, vanishing_robot, ros2_settings):
+    choose_ros2(window, ros2_settings.domain_id)
+    window.robot().follow_graph()
+    drive_and_look_at_the_monitor(qtbot, window, "topic_monitor_cmd_vel_ros2")
+    assert vanishing_robot.received("/cmd_vel")  # the test robot heard Rockly drive it
+    monitor = window.monitor_dock.widget()
+    qtbot.waitUntil(lambda: publishers_cell(monitor, "/odom") == "1", timeout=10000)  # the robot's own: a count
+
+
+def test_the_topic_monitor_counts_rocklys_publisher_on_cmd_vel_while_a_program_drives_over_ros1(
+        qtbot, window, ros_master, hobbit_on_ros, monkeypatch):
+    window.settings.remember_link_connection(ROS1, "hobbit", {"master": ros_master.uri, "host": "127.0.0.1"})
+    monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
+    backend = window.run_toolbar.backend
+    backend.setCurrentIndex(backend.findData("ros1"))
+    assert window.robots.kind == "ros1"
+    drive_and_look_at_the_monitor(qtbot, window, "topic_monitor_cmd_vel_ros1")
