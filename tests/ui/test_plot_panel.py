@@ -7,6 +7,7 @@ import pytest
 from PySide6.QtCore import QMimeData, QPointF, Qt
 from PySide6.QtGui import QDragEnterEvent, QDropEvent, QImage
 from PySide6.QtWidgets import QApplication
+from screenshots import screenshot
 
 from rockly_desktop.core.field_paths import field_mime_text
 from rockly_desktop.core.state_store import StateStore
@@ -367,3 +368,4 @@ def test_a_value_that_stops_changing_keeps_a_readable_range_not_floating_point_n
     low, high = panel.plot_item.getViewBox().viewRange()[1]
     assert low < 0.3 < high and high - low >= MIN_Y_SPAN
     assert panel.plot_item.getAxis("left").autoSIPrefixScale == 1  # no "(x1e-15)" or "(x1000)" beside the axis
+    screenshot(panel, "plot_of_a_constant_value")

@@ -3,12 +3,11 @@ keeps the connection the person chose, and the Topic monitor counts Rockly's own
 
 Against a plain rclpy test robot (tests/ros2_fixtures.py) in its own process on this run's own domain,
 and a real ROS master with the ROS-level HOBBIT simulator for ROS 1."""
-import os
-
 import pytest
 import ros2_fixtures
 from page_tools import call_page
 from program_builder import block, number, stack, workspace
+from screenshots import screenshot
 
 from rockly_desktop.robot.links import link_kind
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
@@ -16,13 +15,6 @@ from rockly_desktop.ui.health_bar import COLOURS
 from rockly_desktop.ui.texts import tr
 
 ROS1, ROS2 = link_kind("ros1"), link_kind("ros2")
-
-
-def screenshot(widget, name: str):
-    """Keep a picture of ``widget`` in $ROCKLY_SCREENSHOTS (when set), to look at."""
-    folder = os.environ.get("ROCKLY_SCREENSHOTS")
-    if folder:
-        widget.grab().save(os.path.join(folder, f"{name}.png"))
 
 
 @pytest.fixture
