@@ -6,24 +6,28 @@ NO_VALUE = "–"
 """A cell without a value (no message yet, no publisher count)."""
 
 
-def topic_entries(infos: dict, graph_topics=None) -> list:
-    """[(topic, type, publishers or None, count, rate, age)] from the store's ``{topic: TopicInfo}``.
+def topic_entries(infos: dict, graph_topics=None, own: dict = None) -> list:
+    """[(topic, type, publishers or None, count, rate, age, Rockly's among the publishers)] from the
+    store's ``{topic: TopicInfo}``.
 
     Without ``graph_topics`` (the simulator), the store's topics with no publisher count; with
-    the graph's [(topic, type, publishers)], its topics (silent ones too) and then those heard
-    before that nobody publishes now (0 publishers).
+    the graph's [(topic, type, the others' publishers)], its topics (silent ones too) and then those
+    heard before that nobody publishes now (0 publishers). Rockly's ``own`` publishers ({topic: count})
+    count in: a topic a program drives has its publisher.
     """
     if graph_topics is None:
-        return [(info.topic, info.msg_type, None, info.count, info.rate, info.age) for info in infos.values()]
+        return [(info.topic, info.msg_type, None, info.count, info.rate, info.age, 0) for info in infos.values()]
+    own = own or {}
     entries, listed = [], set()
     for topic, msg_type, publishers in graph_topics:
-        info = infos.get(topic)
-        entries.append((topic, msg_type or (info.msg_type if info else ""), publishers,
-                        info.count if info else 0, info.rate if info else 0.0, info.age if info else 0.0))
+        info, mine = infos.get(topic), own.get(topic, 0)
+        entries.append((topic, msg_type or (info.msg_type if info else ""), publishers + mine,
+                        info.count if info else 0, info.rate if info else 0.0, info.age if info else 0.0, mine))
         listed.add(topic)
     for topic, info in infos.items():
         if topic not in listed:
-            entries.append((topic, info.msg_type, 0, info.count, info.rate, info.age))
+            mine = own.get(topic, 0)
+            entries.append((topic, info.msg_type, mine, info.count, info.rate, info.age, mine))
     return entries
 
 
@@ -33,8 +37,9 @@ def age_text(age: float) -> str:
 
 
 def row_cells(entry) -> tuple:
-    """(texts, sort keys) of one entry's five cells; a topic without messages has no rate or age."""
-    topic, msg_type, publishers, count, rate, age = entry
+    """(texts, sort keys) of one entry's five cells; a topic without messages has no rate or age. The
+    publishers are a plain count here (the window says which of them are Rockly's)."""
+    topic, msg_type, publishers, count, rate, age = entry[:6]
     seen = count > 0
     texts = (topic, msg_type, NO_VALUE if publishers is None else str(publishers),
              f"{rate:.1f}" if seen else NO_VALUE, age_text(age) if seen else NO_VALUE)

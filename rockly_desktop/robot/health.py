@@ -51,6 +51,21 @@ def server_health(interface: dict, available) -> list:
     return items
 
 
+def link_state(items: list) -> str:
+    """The link as a whole, said beside the health light and derived from the same ``items`` (the link's
+    own item first), so the two always agree: 'connecting' (nothing known yet), 'lost' (the link itself
+    is red), 'connected' (all green), 'silent' (the link works but no part of the robot answers now)
+    or 'partly' (some parts answer)."""
+    if not items:
+        return "connecting"
+    link, parts = items[0], items[1:]
+    if link.level == RED:
+        return "lost"
+    if overall(items) == GREEN:
+        return "connected"
+    return "partly" if any(part.level == GREEN for part in parts) else "silent"
+
+
 def overall(items: list) -> str:
     """The worst level among ``items`` (green when there are none)."""
     levels = {item.level for item in items}

@@ -80,7 +80,11 @@ class RobotLink(Protocol):
         """Start filling ``state`` from the robot's whole graph (for the panels); idempotent."""
 
     def graph_topics(self) -> list:
-        """(topic, type, publisher count) of the robot's graph."""
+        """(topic, type, publisher count) of the robot's graph; the count is the others' (not Rockly's own)."""
+
+    def own_publishers(self) -> dict:
+        """{topic: how many publishers Rockly itself has on it} (not in ``graph_topics``' counts), so the
+        Topic monitor counts them too."""
 
     def health(self) -> list:
         """``robot.health.HealthItem``s: the link itself, then the topics, services and action servers."""

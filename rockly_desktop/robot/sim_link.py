@@ -80,6 +80,10 @@ class SimulatedRobot:
         """(topic, type, publisher count) of the simulated robot's topics."""
         return [(topic, msg_type, 1) for topic, msg_type in self.world.topics()]
 
+    def own_publishers(self) -> dict:
+        """A program drives the simulated robot directly, with no publishers of its own."""
+        return {}
+
     def health(self) -> list:
         """HealthItems of the simulated robot (its interface as the manifest declares it)."""
         interface = self.profile.ros_interface

@@ -3,7 +3,7 @@
 Hovering shows every part (the link, the robot's topics with rate and age, its services
 and action servers). It asks the robot for its health twice a second.
 """
-from PySide6.QtCore import QTimer
+from PySide6.QtCore import QTimer, Signal
 from PySide6.QtWidgets import QLabel
 
 from rockly_desktop.robot.health import overall
@@ -15,7 +15,12 @@ REFRESH_MS = 500
 
 
 class HealthBar(QLabel):
-    """Shows ``robot.health()`` (a list of HealthItems) as one traffic light with details on hover."""
+    """Shows ``robot.health()`` (a list of HealthItems) as one traffic light with details on hover.
+
+    It is the window's one source of the link's health: each look is also given to ``sig_refreshed``
+    (the robot, its items), from which the status bar says the link's state."""
+
+    sig_refreshed = Signal(object, list)
 
     def __init__(self, language: str, parent=None):
         super().__init__(parent)
@@ -47,6 +52,7 @@ class HealthBar(QLabel):
                        f"<td>{_escape(said_in(item.name, self.language))}</td>"
                        f"<td>{_escape(said_in(item.detail, self.language))}</td></tr>" for item in self.items)
         self.setToolTip(f"<b>{tr('health_title', self.language)}</b><table>{rows}</table>")
+        self.sig_refreshed.emit(self.robot, self.items)
 
     def stop(self):
         """Stop asking (the robot is going away)."""

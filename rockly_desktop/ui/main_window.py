@@ -69,7 +69,9 @@ class MainWindow(QMainWindow):
         self.monitor_dock.setObjectName("monitor_dock")
         self.plot_dock = QDockWidget(tr("plot_dock", self.language), self)
         self.plot_dock.setObjectName("plot_dock")
-        self.plot_dock.visibilityChanged.connect(lambda visible: visible and self.plot_panel())
+        # the plot is made when its tab first shows (once a robot's store is there to plot from)
+        self.plot_dock.visibilityChanged.connect(
+            lambda visible: visible and self._plot_store is not None and self.plot_panel())
         self.bottom_tabs = BottomTabSizes(self, (self.console, self.monitor_dock, self.plot_dock),
                                           roomy=(self.monitor_dock, self.plot_dock))
         keep_side_docks_full_height(self)
@@ -101,6 +103,7 @@ class MainWindow(QMainWindow):
         self.runs.sig_finished.connect(lambda _result: self.runs.last_recording and self.replay.open(
             self.runs.last_recording, quiet=True))
         self.health = HealthBar(self.language, self)
+        self.health.sig_refreshed.connect(self.robots.show_health)  # one source for the light and the status
         self.statusBar().addPermanentWidget(self.health)
         self.statusBar().addPermanentWidget(self.robots.status)
         self.statusBar().addPermanentWidget(self.profile_label)
@@ -216,13 +219,13 @@ class MainWindow(QMainWindow):
         panels.set_store(robot.state)
         self.health.show_robot(robot)
         self._replace_dock_widget(self.state_dock, panels)
-        monitor = TopicMonitor(robot.state, robot.graph_topics, self.language)
+        monitor = TopicMonitor(robot.state, robot.graph_topics, self.language, own=robot.own_publishers)
         monitor.sig_plot_requested.connect(self._plot)
         self._replace_dock_widget(self.monitor_dock, monitor)
         had_plot = self._made_plot() is not None
         self._plot_store = robot.state
         self._replace_dock_widget(self.plot_dock, QLabel(self.plot_dock))  # the plot is made when first shown
-        if had_plot:
+        if had_plot or self.plot_dock.isVisible():  # a restart may bring its tab back on top
             self.plot_panel()
         if robot.snapshot() is None:
             self.simulator_dock.show_robot(None, None, tr("real_robot_view", self.language))

@@ -51,6 +51,10 @@ DEFAULT_WINDOW = 30
 MAX_SAMPLES = 300_000
 """Samples kept per curve: 5 minutes of a 1 kHz topic."""
 
+MIN_Y_SPAN = 0.01
+"""The value axis never shows less than this: a value that stops changing is a flat line with readable
+ticks, not its last bits of floating-point noise blown up (×1e-15)."""
+
 REFRESH_INTERVAL_MS = 33
 """At most ~30 redraws a second."""
 MAX_REFRESH_INTERVAL_MS = 250
@@ -224,14 +228,14 @@ class PlotPanel(QWidget):
             axis.setPen(_FOREGROUND)
             axis.setTextPen(_FOREGROUND)
             axis.setStyle(maxTickLevel=1)  # major and minor ticks: a calmer grid, drawn in half the time
-        bottom = self.plot_item.getAxis("bottom")
-        bottom.enableAutoSIPrefix(False)
+            axis.enableAutoSIPrefix(False)  # values as they are: no "(x1000)" or "(x1e-15)" beside the axis
         self.plot_item.setLabel("bottom", self._t("plot_time_axis"), units="s", color=_FOREGROUND)
         self.plot_item.setLabel("left", self._t("plot_value_axis"), color=_FOREGROUND)
         view = self.plot_item.getViewBox()
         view.setMouseEnabled(x=False, y=True)
         view.enableAutoRange(x=False, y=True)
         view.setAutoVisible(y=True)
+        view.setLimits(minYRange=MIN_Y_SPAN)
         self._show_window()
         self.legend = self.plot_item.addLegend(offset=(10, 10), labelTextColor=_FOREGROUND,
                                                brush=pg.mkBrush(255, 255, 255, 210), pen=pg.mkPen("#bbbbbb"))

@@ -2,19 +2,21 @@
 the profile's built-in simulator, or a robot over ROS.
 
 Owns the robots it made (one simulator per profile, one link per kind and profile), the
-connection dialog and the connection indicator in the status bar.
+connection dialog and the connection indicator in the status bar, which says what the health
+light saw (``show_health``), so the two always agree.
 """
-from PySide6.QtCore import QObject, QTimer, Signal
+from PySide6.QtCore import QObject, Signal
 from PySide6.QtWidgets import QMessageBox
 
 from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.robot.health import AMBER, link_state, overall
 from rockly_desktop.robot.links import DEFAULT_KIND, check_available, link_kind, open_link
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
+from rockly_desktop.ui.health_bar import COLOURS
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.plain_text import plain_label, tooltip_text
 from rockly_desktop.ui.texts import robot_problem, said_in, tr
 
-STATUS_COLOURS = {"connected": "#2e7d32", "connecting": "#f9a825", "lost": "#c62828"}
 CONNECT_TIMEOUT = 1.0  # seconds a robot chosen in the window has to answer
 
 
@@ -22,7 +24,9 @@ class RobotChoice(QObject):
     """The active robot for the document's profile; ``kind`` is a kind of robot link ('sim', 'ros1', 'ros2').
 
     Simulators answer tablet questions on ``tablet``; connections are remembered in
-    ``settings``; ``parent`` is the widget the connection dialog belongs to.
+    ``settings``; ``parent`` is the widget the connection dialog belongs to. Another robot
+    (profile) on a real kind of link is reached the way the person chose in the dialog: the
+    connection in use carries over, and is remembered for that robot too.
     """
 
     sig_robot_changed = Signal()  # another kind of robot was chosen
@@ -35,11 +39,9 @@ class RobotChoice(QObject):
         self.settings = settings
         self.kind = DEFAULT_KIND
         self._robots = {}
+        self._chosen = {}  # kind -> the connection the person last gave in its dialog
         self.status = plain_label(parent=parent)
         self.status.hide()
-        self._timer = QTimer(self)
-        self._timer.setInterval(500)
-        self._timer.timeout.connect(self._show_status)
 
     def robot(self):
         """The robot of the active kind for the document's profile (made on first use)."""
@@ -53,7 +55,10 @@ class RobotChoice(QObject):
         key = (kind, profile.id)
         if entry.simulated:
             self.tablet.robot_name = profile.display_name(self.settings.language)
-        if connection is None:
+        if connection is None and kind in self._chosen:  # a robot switch: where the person said
+            connection = self._chosen[kind]
+            self.settings.remember_link_connection(entry, profile.id, connection)
+        elif connection is None:
             connection = self.settings.link_connection(entry, profile.id)
         robot = open_link(kind, profile, connection, tablet=self.tablet, speed=self.simulator_speed, timeout=timeout)
         for other in [k for k in self._robots if link_kind(k[0]).simulated and k != key]:
@@ -70,11 +75,8 @@ class RobotChoice(QObject):
             return False
         self.kind = kind
         self.status.setVisible(not entry.simulated)
-        if entry.simulated:
-            self._timer.stop()
-        else:
-            self._timer.start()
-            self._show_status()
+        if not entry.simulated:  # until the health light first looks
+            self._say_state("connecting", AMBER, self._active().status())
         self.sig_robot_changed.emit()
         return True
 
@@ -127,6 +129,7 @@ class RobotChoice(QObject):
             self._refused(error)
             return False
         self.settings.remember_link_connection(entry, profile.id, dialog.values)
+        self._chosen[entry.kind] = dialog.values
         for warning in robot.warnings():
             box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, tr(f"ros_{warning.title}", language),
                                     robot_problem(warning, language)[0])
@@ -142,21 +145,28 @@ class RobotChoice(QObject):
         box.setObjectName("connect_failed_box")
         box.exec()
 
-    def _show_status(self):
-        robot = self._robots.get((self.kind, self.document.profile.id))
-        status = robot.status() if robot is not None else None
-        state = status.state if status is not None else "connecting"
+    def _active(self):
+        """The active robot, None when it is not made yet."""
+        return self._robots.get((self.kind, self.document.profile.id))
+
+    def show_health(self, robot, items: list):
+        """Say in the status bar how the link to the active real robot is, from the health light's look
+        at ``robot`` (its HealthItems ``items``): the same state, in the light's colour."""
+        if robot is None or robot is not self._active() or self.simulated:
+            return
+        self._say_state(link_state(items), overall(items) if items else AMBER, robot.status())
+
+    def _say_state(self, state: str, level: str, status):
         language = self.settings.language
-        text = tr(f"ros_{state}", language)
         where = said_in(status.where, language) if status is not None else ""
-        self.status.setText(f"{text} — {where}" if status is not None else text)  # e.g. its domain on ROS 2
-        self.status.setStyleSheet(f"color: {STATUS_COLOURS[state]}; font-weight: bold;")
+        text = tr(f"ros_{state}", language)
+        self.status.setText(f"{text} — {where}" if where else text)  # e.g. its domain on ROS 2
+        self.status.setStyleSheet(f"color: {COLOURS[level]}; font-weight: bold;")
         if status is not None and status.round_trip is not None:
             self.status.setToolTip(tooltip_text(f"{where} — {status.round_trip * 1000:.1f} ms"))
 
     def shutdown(self):
         """Stop every robot safely (the window is closing)."""
-        self._timer.stop()
         for robot in self._robots.values():
             robot.shutdown()
         self._robots.clear()

@@ -85,7 +85,8 @@ class TopicTableModel(QAbstractTableModel):
         return [row.topic for row in self._rows]
 
     def update(self, entries: list):
-        """Show ``entries`` [(topic, type, publishers or None, count, rate, age)]; signal changed cells only."""
+        """Show ``entries`` [(topic, type, publishers or None, count, rate, age, Rockly's publishers)]
+        (``core.topic_rows.topic_entries``); signal changed cells only."""
         wanted = {entry[0] for entry in entries}
         removed = False
         for position in reversed(range(len(self._rows))):
@@ -107,6 +108,9 @@ class TopicTableModel(QAbstractTableModel):
             position = self._index[entry[0]]
             row = self._rows[position]
             texts, row.keys = row_cells(entry)
+            if entry[6]:  # Rockly publishes here too: "1 (Rockly)", "2 (with Rockly)"
+                key = "monitor_publishers_rockly" if entry[6] == entry[2] else "monitor_publishers_with_rockly"
+                texts = texts[:PUBLISHERS] + (tr(key, self._language, count=entry[2]),) + texts[PUBLISHERS + 1:]
             changed = [column for column in range(len(texts)) if texts[column] != row.texts[column]]
             was_seen, seen = row.count > 0, entry[3] > 0
             row.count = entry[3]

@@ -51,16 +51,19 @@ _NOTHING_SHOWN = object()  # "nothing shown yet": never the same object as a mes
 
 
 class TopicMonitor(QWidget):
-    """The Topic monitor panel over ``store``; ``graph()`` -> [(topic, type, publishers)] lists silent topics too."""
+    """The Topic monitor panel over ``store``; ``graph()`` -> [(topic, type, publishers)] lists silent topics too,
+    ``own()`` -> {topic: Rockly's own publishers} counts those in."""
 
     sig_plot_requested = Signal(str, str)  # topic, field path of a numeric field
 
-    def __init__(self, store, graph=None, language: str = "en", parent=None):
+    def __init__(self, store, graph=None, language: str = "en", parent=None, own=None):
         super().__init__(parent)
         self.setObjectName("topic_monitor")
         self._store = store
         self._graph = graph
+        self._own = own
         self._graph_topics = []
+        self._own_publishers = {}
         self._graph_time = -math.inf
         self._language = language
         self._topic = None
@@ -276,9 +279,10 @@ class TopicMonitor(QWidget):
             self._graph_time = time.monotonic()
             try:
                 self._graph_topics = list(self._graph())
+                self._own_publishers = dict(self._own()) if self._own is not None else {}
             except Exception:
                 pass
-        entries = topic_entries(infos, None if self._graph is None else self._graph_topics)
+        entries = topic_entries(infos, None if self._graph is None else self._graph_topics, self._own_publishers)
         self.table_model.update(entries)
         self._show_count()
         self._show_history_note(infos.get(self._topic))

@@ -9,16 +9,25 @@ OLD = TopicInfo("/old", "std_msgs/String", 3, 0.0, 12.5)
 
 
 def test_without_a_graph_the_store_topics_have_no_publisher_count():
-    assert topic_entries({"/odom": ODOM}) == [("/odom", "nav_msgs/Odometry", None, 120, 50.0, 0.02)]
+    assert topic_entries({"/odom": ODOM}) == [("/odom", "nav_msgs/Odometry", None, 120, 50.0, 0.02, 0)]
 
 
 def test_the_graph_lists_silent_topics_and_the_store_adds_topics_nobody_publishes_now():
     graph = [("/odom", "", 1), ("/scan", "sensor_msgs/LaserScan", 2)]
     assert topic_entries({"/odom": ODOM, "/old": OLD}, graph) == [
-        ("/odom", "nav_msgs/Odometry", 1, 120, 50.0, 0.02),       # the type the store knows
-        ("/scan", "sensor_msgs/LaserScan", 2, 0, 0.0, 0.0),       # listed, never heard
-        ("/old", "std_msgs/String", 0, 3, 0.0, 12.5)]             # heard before, no publisher now
+        ("/odom", "nav_msgs/Odometry", 1, 120, 50.0, 0.02, 0),       # the type the store knows
+        ("/scan", "sensor_msgs/LaserScan", 2, 0, 0.0, 0.0, 0),       # listed, never heard
+        ("/old", "std_msgs/String", 0, 3, 0.0, 12.5, 0)]             # heard before, no publisher now
     assert topic_entries({}, []) == []
+
+
+def test_rocklys_own_publishers_count_in_and_are_said_apart():
+    graph = [("/cmd_vel", "geometry_msgs/Twist", 0), ("/odom", "nav_msgs/Odometry", 1)]
+    own = {"/cmd_vel": 1, "/odom": 1, "/old": 1}
+    assert topic_entries({"/odom": ODOM, "/old": OLD}, graph, own) == [
+        ("/cmd_vel", "geometry_msgs/Twist", 1, 0, 0.0, 0.0, 1),      # only Rockly publishes it
+        ("/odom", "nav_msgs/Odometry", 2, 120, 50.0, 0.02, 1),       # the robot and Rockly
+        ("/old", "std_msgs/String", 1, 3, 0.0, 12.5, 1)]             # not (yet) in the graph: Rockly's
 
 
 def test_cells_of_a_topic_with_and_without_messages():

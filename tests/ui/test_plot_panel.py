@@ -7,10 +7,11 @@ import pytest
 from PySide6.QtCore import QMimeData, QPointF, Qt
 from PySide6.QtGui import QDragEnterEvent, QDropEvent, QImage
 from PySide6.QtWidgets import QApplication
+from screenshots import screenshot
 
 from rockly_desktop.core.field_paths import field_mime_text
 from rockly_desktop.core.state_store import StateStore
-from rockly_desktop.ui.plot_panel import MAX_SAMPLES, PlotPanel
+from rockly_desktop.ui.plot_panel import MAX_SAMPLES, MIN_Y_SPAN, PlotPanel
 
 X = "pose.pose.position.x"
 TURN = "twist.twist.angular.z"
@@ -355,3 +356,16 @@ def test_a_1khz_minute_is_kept_whole_but_drawn_downsampled(qtbot, clock):
     item = panel.curve_item("/odom", X)
     assert len(item.getOriginalDataset()[0]) == 59400
     assert len(item.curve.getData()[0]) < 8000, "downsampled for the screen"
+
+
+def test_a_value_that_stops_changing_keeps_a_readable_range_not_floating_point_noise(qtbot, panel, store, clock):
+    panel.resize(600, 300)
+    panel.show()
+    panel.add_curve("/odom", X)
+    feed(store, clock, [0.1 + 0.2, 0.3] * 20)  # the same value but for its last bit
+    panel.refresh()
+    assert not panel.plot_widget.grab().isNull()  # drawn: the view took the curve's range
+    low, high = panel.plot_item.getViewBox().viewRange()[1]
+    assert low < 0.3 < high and high - low >= MIN_Y_SPAN
+    assert panel.plot_item.getAxis("left").autoSIPrefixScale == 1  # no "(x1e-15)" or "(x1000)" beside the axis
+    screenshot(panel, "plot_of_a_constant_value")

@@ -108,6 +108,10 @@ class RosRobot:
         """(topic, type, publisher count) of the ROS graph (once ``follow_graph`` runs)."""
         return self._feed.graph_topics() if self._feed is not None else []
 
+    def own_publishers(self) -> dict:
+        """{topic: Rockly's own publishers on it} (not in ``graph_topics``), once ``follow_graph`` runs."""
+        return self._feed.own_publishers() if self._feed is not None else {}
+
     def health(self) -> list:
         """HealthItems: the master (with its round trip), the robot's topics, services and action servers."""
         interface = self.profile.ros_interface

@@ -1,7 +1,7 @@
 """Filling a StateStore from a ROS 1 graph: every topic, decoded to dicts, and the graph itself.
 
 A thread asks the master once a second which topics exist (with their types and
-publisher counts) and subscribes to new ones through the shared RosGraph; rospy's
+publisher counts: the others' and Rockly's own apart) and subscribes to new ones through the shared RosGraph; rospy's
 callback threads then record every message, undecoded (the store decodes what is read).
 Widgets read the store, never rospy.
 """
@@ -23,14 +23,20 @@ class RosStateFeed:
         self._ros_graph = ros_graph
         self._followed = FollowedTopics(store, lambda topic, msg_type: ros_graph.topic(topic, msg_type).raw_callbacks)
         self._topics = []
+        self._own = {}
         self._services = set()
         self._stopped = threading.Event()
         self._thread = threading.Thread(target=self._poll, name="rockly-ros-graph", daemon=True)
         self._thread.start()
 
     def graph_topics(self) -> list:
-        """(topic, type, publisher count) of every topic the master knows, as of the last poll."""
+        """(topic, type, publisher count) of every topic the master knows, as of the last poll; the count
+        is the others' (Rockly's own are ``own_publishers``)."""
         return list(self._topics)
+
+    def own_publishers(self) -> dict:
+        """{topic: 1} for each topic this process's node publishes, as of the last poll."""
+        return dict(self._own)
 
     def services(self) -> set:
         """Names of the services the master knows, as of the last poll."""
@@ -41,6 +47,8 @@ class RosStateFeed:
         self._stopped.set()
 
     def _poll(self):
+        import rospy
+
         uri = self._ros_graph.connection.master_uri
         while not self._stopped.is_set():
             if not self._ros_graph.connection.lost:
@@ -48,8 +56,11 @@ class RosStateFeed:
                     types = dict(ask_master(uri, "getTopicTypes"))
                     publisher_list, _subscribers, services = ask_master(uri, "getSystemState")
                     publishers = dict(publisher_list)
+                    me = rospy.get_name()
                     self._services = {name for name, _nodes in services}
-                    self._topics = sorted((topic, msg_type, len(publishers.get(topic, [])))
+                    self._own = {topic: 1 for topic, nodes in publishers.items() if me in nodes}
+                    self._topics = sorted((topic, msg_type, len([node for node in publishers.get(topic, [])
+                                                                 if node != me]))
                                           for topic, msg_type in types.items())
                     for topic, msg_type in types.items():
                         self._followed.follow(topic, msg_type)

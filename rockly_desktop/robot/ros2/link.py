@@ -222,6 +222,10 @@ class Ros2Robot:
         """(topic, type, publisher count) of the ROS 2 graph (once ``follow_graph`` runs)."""
         return self._feed.graph_topics() if self._feed is not None else []
 
+    def own_publishers(self) -> dict:
+        """{topic: Rockly's own publishers on it} (not in ``graph_topics``), once ``follow_graph`` runs."""
+        return self._feed.own_publishers() if self._feed is not None else {}
+
     def health(self) -> list:
         """HealthItems: the link (domain, discovery range; a helper lost or replaced lately), the
         robot's topics, services and action servers. Asks the helper nothing (the window's thread)."""

@@ -320,7 +320,8 @@ class Helper:
         self.topics.unsubscribe(sid)
 
     def op_graph(self):
-        """Topics (name, types, publisher count), services and action names of the ROS 2 graph.
+        """Topics (name, types, publisher count), this node's own publishers by topic ("own", shown
+        beside the others'), services and action names of the ROS 2 graph.
 
         A topic's publishers are the others' (not this node's own), and their types come first:
         a state feed following the graph then never subscribes to what only Rockly publishes, in the
@@ -328,17 +329,19 @@ class Helper:
         so that subscription would refuse the publisher of the type a robot wants, a TwistStamped).
         """
         me = (self.node.get_name(), self.node.get_namespace())
-        topics = []
+        topics, own = [], {}
         for name, types in self.node.get_topic_names_and_types():
-            others = [info for info in self.node.get_publishers_info_by_topic(name)
-                      if (info.node_name, info.node_namespace) != me]
+            publishers = self.node.get_publishers_info_by_topic(name)
+            others = [info for info in publishers if (info.node_name, info.node_namespace) != me]
+            if len(others) < len(publishers):
+                own[name] = len(publishers) - len(others)
             published = list(dict.fromkeys(info.topic_type for info in others))
             topics.append((name, published + [type_name for type_name in types if type_name not in published],
                            len(others)))
         services = [name for name, _types in self.node.get_service_names_and_types()]
         actions = sorted({name[:-len("/_action/send_goal")] for name in services
                           if name.endswith("/_action/send_goal")})
-        return {"topics": topics, "services": services, "actions": actions}
+        return {"topics": topics, "own": own, "services": services, "actions": actions}
 
     # --- services
     def _ready(self, client, wait, key, **values):

@@ -22,7 +22,7 @@ class Ros2StateFeed:
     def __init__(self, ros_graph, store):
         self._ros_graph = ros_graph
         self._followed = FollowedTopics(store, lambda topic, msg_type: ros_graph.topic(topic, msg_type).raw_callbacks)
-        self._graph = {"topics": [], "services": [], "actions": []}
+        self._graph = {"topics": [], "own": {}, "services": [], "actions": []}
         self._stopped = threading.Event()
         self._thread = threading.Thread(target=self._poll, name="rockly-ros2-graph", daemon=True)
         self._thread.start()
@@ -31,6 +31,10 @@ class Ros2StateFeed:
         """(topic, type as ``pkg/Type``, publisher count) of every topic of the graph, as of the last poll."""
         return sorted((topic, short_type(types[0]), count) for topic, types, count in self._graph["topics"]
                       if types and topic not in IGNORED_TOPICS)
+
+    def own_publishers(self) -> dict:
+        """{topic: publishers of Rockly's own node on it} (not in ``graph_topics``), as of the last poll."""
+        return dict(self._graph.get("own", {}))
 
     def services(self) -> set:
         """Names of the graph's services, as of the last poll."""
