@@ -2,9 +2,11 @@
 dialog and after a restart, and is told in plain words; the settings file is readable by its owner only."""
 import os
 import stat
+from pathlib import Path
 
 import pytest
 from fake_time import FakeTime
+from PySide6.QtCore import QSettings
 
 from rockly_desktop.ui import teacher_settings
 from rockly_desktop.ui.kiosk import LeaveDialog
@@ -146,11 +148,11 @@ def test_the_settings_file_is_private_and_stays_so_after_saves(tmp_path, monkeyp
     assert mode(old) == 0o600 and "pbkdf2" in old.read_text()
 
 
-def test_rockly_s_own_settings_folder_is_made_private(tmp_path, monkeypatch):
-    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
-    monkeypatch.setenv("HOME", str(tmp_path))
-    folder = tmp_path / "config" / "Rockly"
-    folder.mkdir(parents=True)
+def test_rockly_s_own_settings_folder_is_made_private():
+    # Qt reads where user settings live once per process: the folder is asked of Qt, not set here
+    folder = Path(QSettings("Rockly", "Rockly").fileName()).parent
+    assert folder.name == "Rockly"
+    folder.mkdir(parents=True, exist_ok=True)
     os.chmod(folder, 0o755)
     settings = AppSettings()
     file = settings._store.fileName()
