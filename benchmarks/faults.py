@@ -5,7 +5,14 @@
 (b) how long ``9 ** 999999999`` holds the run before it fails, against a loop of 1,000 usual
     powers (aim: the window never freezes: milliseconds);
 (c) the time from killing the robot's ROS node (kill -9) mid-drive to the block's error, against
-    the time from killing the master to the error (the watchdog's own figure).
+    the time from killing the master to the error (the watchdog's own figure);
+(d) a hung (SIGSTOP) or killed ROS 2 helper: STOP -> zero velocity on the wire, against a healthy
+    helper's (``_fault_helper.py``; aim <= 2 s);
+(e) the window's longest stall after STOP for runs of 10 s, 2 min and 10 min, against a 1 s run
+    (``_fault_stall.py``; aim <= 100 ms);
+(f) memory under a 1 MB x 100 Hz camera for 60 s, against a 16-byte stream (``_fault_memory.py``;
+    bound 250 MB).
+Each of (d)-(f) runs in a process of its own.
 
     python benchmarks/faults.py
 """
@@ -41,17 +48,25 @@ def run_in_window(app, window, program, seconds):
     loop = QEventLoop()
     window.editor.call("load", {"workspace": program}, lambda _result, _error: loop.quit())
     loop.exec()
-    window.runs.sig_state_changed.connect(lambda state: state == "running" and loop.quit())
+    def running(state):
+        if state == "running":
+            loop.quit()
+
+    def finished(_result):
+        stopped.append(time.perf_counter())
+        loop.quit()
+
+    window.runs.sig_state_changed.connect(running)
     window.runs.run()
     loop.exec()
     delays = event_loop_delays(app, seconds)
     stopped = []
-    window.runs.sig_finished.connect(lambda _result: (stopped.append(time.perf_counter()), loop.quit()))
+    window.runs.sig_finished.connect(finished)
     asked = time.perf_counter()
     window.runs.stop()
     loop.exec()
-    window.runs.sig_state_changed.disconnect()
-    window.runs.sig_finished.disconnect()
+    window.runs.sig_state_changed.disconnect(running)  # only these: the window's own handlers stay
+    window.runs.sig_finished.disconnect(finished)
     return delays, stopped[0] - asked
 
 
@@ -140,6 +155,10 @@ def main():
         endless_print(str(Path(folder) / "settings.ini"))
         big_power()
         killed_node(folder)
+    failed = 0
+    for part in ("_fault_helper.py", "_fault_stall.py", "_fault_memory.py"):
+        failed |= subprocess.call([sys.executable, str(REPO / "benchmarks" / part)])
+    sys.exit(failed)
 
 
 if __name__ == "__main__":
