@@ -562,6 +562,18 @@
       RocklyBadges.show(workspace, badges || {});
       return true;
     },
+    /** The keyboard enters the page: on the workspace (its last focused block), Blockly's keys on. */
+    focusWorkspace() {
+      Blockly.keyboardNavigationController.setIsActive(true);
+      Blockly.getFocusManager().focusTree(workspace);
+      return true;
+    },
+    /** The keyboard goes to the toolbox (Blockly's T key, from outside the page). */
+    focusToolbox() {
+      Blockly.keyboardNavigationController.setIsActive(true);
+      Blockly.getFocusManager().focusTree(workspace.getToolbox() || workspace.getFlyout().getWorkspace());
+      return true;
+    },
     undo() {
       workspace.undo(false);
       return true;

@@ -15,6 +15,7 @@ from rockly_desktop.ui.document import Document
 from rockly_desktop.ui.examples_menu import ExamplesMenu
 from rockly_desktop.ui.health_bar import HealthBar
 from rockly_desktop.ui.help_dialogs import show_first_steps, show_shortcuts
+from rockly_desktop.ui.keyboard import KeyboardAccess
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.plain_text import mnemonic_free, plain_label
 from rockly_desktop.ui.preferences import PreferencesDialog
@@ -128,6 +129,7 @@ class MainWindow(QMainWindow):
         self.stage = StageLayout(self, settings)
         self._build_menus()
         self.document.sig_profile_changed.connect(self._on_profile_changed)
+        self.keys = KeyboardAccess(self)
         self.resize(1280, 800)
         if settings.window_geometry is not None:
             self.restoreGeometry(settings.window_geometry)
@@ -392,6 +394,7 @@ class MainWindow(QMainWindow):
         self._build_run_toolbar()
         self.menuBar().clear()
         self._build_menus()
+        self.keys.set_language(language)
         self._update_title()
 
     def show_preferences(self):
