@@ -443,6 +443,37 @@
     return replaced.length ? {replacedFields: replaced} : {};
   }
 
+  // --- how the blocks look: high contrast, larger text (Preferences) --------------------
+
+  const themes = new Map();
+
+  /** A Blockly theme for `look`: Zelos' own with larger bold text and/or black-and-white surroundings. */
+  function lookTheme(look) {
+    const name = `rockly${look.highContrast ? '-contrast' : ''}${look.largeText ? '-large' : ''}`;
+    if (!themes.has(name)) {
+      themes.set(name, Blockly.Theme.defineTheme(name, {
+        base: Blockly.Themes.Classic,
+        fontStyle: look.largeText ? {size: 17, weight: 'bold'} : {},
+        componentStyles: look.highContrast ? {
+          workspaceBackgroundColour: '#ffffff', toolboxBackgroundColour: '#000000',
+          toolboxForegroundColour: '#ffffff', flyoutBackgroundColour: '#202020', flyoutForegroundColour: '#ffffff',
+          flyoutOpacity: 1, scrollbarColour: '#000000', scrollbarOpacity: 1, insertionMarkerColour: '#000000',
+          insertionMarkerOpacity: 0.5, cursorColour: '#d50000', selectedGlowColour: '#ffd600',
+        } : {},
+      }));
+    }
+    return themes.get(name);
+  }
+
+  function setLook(look) {
+    look = look || {};
+    // Block colours are the profile's own: high contrast darkens them under white text and black outlines (rockly.css).
+    document.getElementById('workspace').classList.toggle('rocklyHighContrast', Boolean(look.highContrast));
+    document.getElementById('workspace').classList.toggle('rocklyLargeText', Boolean(look.largeText));
+    workspace.setTheme(lookTheme(look));
+    return {theme: workspace.getTheme().name};
+  }
+
   const calls = {
     async setup({language, profile, media, first, texts, hidden}) {
       if (language !== 'en') await loadScript('vendor/msg/' + language + '.js');
@@ -573,6 +604,9 @@
       Blockly.keyboardNavigationController.setIsActive(true);
       Blockly.getFocusManager().focusTree(workspace.getToolbox() || workspace.getFlyout().getWorkspace());
       return true;
+    },
+    setLook(look) {
+      return setLook(look);
     },
     undo() {
       workspace.undo(false);

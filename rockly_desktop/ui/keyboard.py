@@ -7,7 +7,7 @@ Tab is the window's shortcut, not each widget's: tables, the web view and text v
 import shiboken6
 from PySide6.QtCore import QEvent, QObject, Qt
 from PySide6.QtGui import QAction, QKeySequence, QShortcut
-from PySide6.QtWidgets import QApplication, QDockWidget, QFrame, QTabBar, QToolBar, QToolButton, QWidget
+from PySide6.QtWidgets import QApplication, QDockWidget, QFrame, QTabBar, QToolBar, QToolButton
 
 from rockly_desktop.ui.accessible_names import name_controls
 from rockly_desktop.ui.texts import tr
@@ -245,9 +245,3 @@ def _reachable(widget, window, any_policy=False) -> bool:
     if isinstance(widget, FocusRing) or widget.window() is not window:
         return False
     return widget.isVisible() and widget.isEnabled() and not widget.visibleRegion().isEmpty()
-
-
-def focusable_controls(window) -> list:
-    """The window's controls that take the keyboard (shown, enabled, with a focus policy)."""
-    return [widget for widget in window.findChildren(QWidget)
-            if widget.focusPolicy() != Qt.FocusPolicy.NoFocus and _reachable(widget, window, any_policy=True)]

@@ -57,6 +57,7 @@ class MainWindow(QMainWindow):
         self.setObjectName("main_window")
 
         self.editor = editor or EditorView()
+        self.editor.set_look(settings.block_look)
         self.replay_bar = ReplayBar(self.language, self)
         self.setCentralWidget(under(self.editor, self.replay_bar))
         self.simulator_dock = SimulatorDock(tr("simulator_dock", self.language), self)
@@ -402,9 +403,11 @@ class MainWindow(QMainWindow):
         teacher's settings."""
         dialog = PreferencesDialog(self.language, self, self.profile, self.settings.teacher,
                                    reset_before_run=self.settings.reset_before_run, kiosk=self.settings.kiosk,
-                                   kiosk_mode=self.settings.kiosk_mode)
+                                   kiosk_mode=self.settings.kiosk_mode, block_look=self.settings.block_look)
         if dialog.exec():
             self.settings.reset_before_run = dialog.reset_before_run
+            self.settings.block_look = dialog.block_look
+            self.editor.set_look(dialog.block_look)
             if dialog.kiosk_tab is not None:
                 dialog.kiosk_tab.apply()
             if dialog.teacher_tab is not None and dialog.teacher_tab.apply():  # the program stays; only the toolbox

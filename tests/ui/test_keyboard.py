@@ -10,10 +10,10 @@ from page_tools import run_js
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QAccessible
 from PySide6.QtTest import QTest
-from PySide6.QtWidgets import QApplication, QDockWidget, QTabBar
+from PySide6.QtWidgets import QApplication, QDockWidget, QTabBar, QWidget
 
 from rockly_desktop.ui.help_dialogs import shortcuts_html
-from rockly_desktop.ui.keyboard import focusable_controls
+from rockly_desktop.ui.preferences import PreferencesDialog
 from rockly_desktop.ui.texts import tr
 
 K = Qt.Key
@@ -32,6 +32,10 @@ def press(qtbot, window, key, modifier=Qt.KeyboardModifier.NoModifier):
 def focused_block(qtbot, window):
     return run_js(qtbot, window.editor, "(() => { const n = Blockly.getFocusManager().getFocusedNode();"
                                         " return n && n.type ? n.type : null; })()")
+
+
+def workspace_focused(qtbot, window):
+    return run_js(qtbot, window.editor, "Blockly.getFocusManager().getFocusedTree() === Blockly.getMainWorkspace()")
 
 
 def focused_category(qtbot, window):
@@ -67,6 +71,7 @@ def test_a_program_is_built_run_and_stopped_with_keys_only(qtbot, driver):
     qtbot.waitUntil(lambda: active(window), timeout=5000)
     press(qtbot, window, K.Key_2, CTRL)  # to the program's blocks (a fresh window starts there too)
     qtbot.waitUntil(lambda: window.editor.focusProxy() is QApplication.focusWidget(), timeout=5000)
+    qtbot.waitUntil(lambda: workspace_focused(qtbot, window), timeout=5000)
     take_block(qtbot, window, 0, 0, "hobbit_move")  # Drive: drive forward 1 m
     take_block(qtbot, window, 0, 1, "hobbit_turn", after_drop=(K.Key_Down,))  # under the drive: turn left 90°
     take_block(qtbot, window, 1, 1, "hobbit_emo")  # Head: show happy, under the turn
@@ -126,6 +131,13 @@ def test_tab_and_shift_tab_go_round_every_control_of_every_dock_and_never_lose_f
     assert {dock for dock in window.findChildren(QDockWidget) if not dock.isHidden()} <= reached_behind | docks_reached
 
 
+def focusable_controls(window):
+    """The window's controls that can take the keyboard now: shown, in sight, enabled, with a focus policy."""
+    return [widget for widget in window.findChildren(QWidget)
+            if widget.focusPolicy() != Qt.FocusPolicy.NoFocus and widget.isVisible() and widget.isEnabled()
+            and not widget.visibleRegion().isEmpty() and widget.window() is window]
+
+
 def names_of_focusable_controls(window):
     names = {}
     for widget in focusable_controls(window):
@@ -165,3 +177,52 @@ def test_the_help_page_lists_the_jump_keys_and_the_block_editors_keys_in_both_la
     window.set_language("de")
     qtbot.waitUntil(lambda: window.language == "de", timeout=15000)
     assert "Zur Blockauswahl" in shortcuts_html(window, "de")
+
+
+LOOK = ("(() => { const ws = Blockly.getMainWorkspace(); const text = document.querySelector('.blocklyBlockCanvas .blocklyText');"
+        " return {theme: ws.getTheme().name, contrast: document.getElementById('workspace').classList"
+        ".contains('rocklyHighContrast'), size: text ? parseFloat(getComputedStyle(text).fontSize) : null,"
+        " toolbox: getComputedStyle(document.querySelector('.blocklyToolbox')).backgroundColor}; })()")
+
+
+def test_high_contrast_and_larger_text_from_preferences_stay_through_a_language_switch(qtbot, window, monkeypatch):
+    load_program = "robot.drive(1, 'forward')\n"
+    qtbot.waitUntil(lambda: active(window), timeout=5000)
+    press(qtbot, window, K.Key_2, CTRL)
+    qtbot.waitUntil(lambda: workspace_focused(qtbot, window), timeout=5000)
+    take_block(qtbot, window, 0, 0, "hobbit_move")
+    qtbot.waitUntil(lambda: window.editor.python == load_program, timeout=5000)
+    before = run_js(qtbot, window.editor, LOOK)
+    assert not before["contrast"]
+
+    def choose(dialog):
+        dialog.contrast_box.setChecked(True)
+        dialog.large_text_box.setChecked(True)
+        return True
+    monkeypatch.setattr(PreferencesDialog, "exec", choose)
+    window.show_preferences()
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, LOOK)["contrast"], timeout=5000)
+    after = run_js(qtbot, window.editor, LOOK)
+    assert after["size"] > before["size"] * 1.2
+    assert after["toolbox"] == "rgb(0, 0, 0)" != before["toolbox"]
+    assert window.settings.block_look == {"highContrast": True, "largeText": True}
+
+    window.set_language("de")  # a new page: the look goes with it
+    qtbot.waitUntil(lambda: window.language == "de" and window.editor.is_ready, timeout=15000)
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, LOOK)["contrast"], timeout=5000)
+    assert run_js(qtbot, window.editor, LOOK)["size"] == after["size"]
+
+
+def test_the_control_that_has_the_keyboard_wears_a_thick_orange_ring_on_every_dock(qtbot, window):
+    qtbot.waitUntil(lambda: active(window), timeout=5000)
+    ring = "#ff6d00"
+    stops = tab_round(qtbot, window, K.Key_Tab)
+    for _ in stops:
+        press(qtbot, window, K.Key_Tab)
+        focused = QApplication.focusWidget()
+        shown = window.editor if focused is window.editor.focusProxy() else focused
+        image = shown.grab().toImage()
+        middle_x, middle_y = shown.width() // 2, shown.height() // 2
+        edges = [(middle_x, 1), (1, middle_y), (middle_x, shown.height() - 2), (shown.width() - 2, middle_y)]
+        assert [image.pixelColor(x, y).name() for x, y in edges] == [ring] * 4, type(shown).__name__
+    assert set(raised_docks(window)) <= {dock_of(widget) for widget in stops}
