@@ -179,7 +179,8 @@ def test_the_help_page_lists_the_jump_keys_and_the_block_editors_keys_in_both_la
     assert "Zur Blockauswahl" in shortcuts_html(window, "de")
 
 
-LOOK = ("(() => { const ws = Blockly.getMainWorkspace(); const text = document.querySelector('.blocklyBlockCanvas .blocklyText');"
+LOOK = ("(() => { const ws = Blockly.getMainWorkspace();"
+        " const text = document.querySelector('.blocklyBlockCanvas .blocklyText');"
         " return {theme: ws.getTheme().name, contrast: document.getElementById('workspace').classList"
         ".contains('rocklyHighContrast'), size: text ? parseFloat(getComputedStyle(text).fontSize) : null,"
         " toolbox: getComputedStyle(document.querySelector('.blocklyToolbox')).backgroundColor}; })()")
