@@ -477,6 +477,7 @@
   const calls = {
     async setup({language, profile, media, first, texts, hidden}) {
       if (language !== 'en') await loadScript('vendor/msg/' + language + '.js');
+      Object.assign(Blockly.Msg, (texts && texts.blocklyMsg) || {});  // Blockly's keyboard hints, in Rockly's words
       // Prepared ahead of the program: nothing shows until `show`.
       if (hidden) document.getElementById('workspace').style.visibility = 'hidden';
       RocklyTypedFields.setCatalog(profile.types);

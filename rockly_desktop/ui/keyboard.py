@@ -62,8 +62,7 @@ class KeyboardAccess(QObject):
         super().__init__(window)
         self.window = window
         self.ring = None
-        self._previous = QShortcut(QKeySequence(Qt.Modifier.SHIFT | Qt.Key.Key_Backtab), window, lambda: self.move(-1))
-        self._previous_plain = QShortcut(QKeySequence(Qt.Key.Key_Backtab), window, lambda: self.move(-1))
+        self._previous = QShortcut(QKeySequence("Shift+Tab"), window, lambda: self.move(-1))  # (Backtab too)
         self._next = QShortcut(QKeySequence(Qt.Key.Key_Tab), window, lambda: self.move(1))
         self.jump_actions = {}
         for key, keys, place in JUMPS:

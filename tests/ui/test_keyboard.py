@@ -227,3 +227,8 @@ def test_the_control_that_has_the_keyboard_wears_a_thick_orange_ring_on_every_do
         edges = [(middle_x, 1), (1, middle_y), (middle_x, shown.height() - 2), (shown.width() - 2, middle_y)]
         assert [image.pixelColor(x, y).name() for x, y in edges] == [ring] * 4, type(shown).__name__
     assert set(raised_docks(window)) <= {dock_of(widget) for widget in stops}
+
+
+def test_blocklys_keyboard_hints_speak_german_in_a_german_window(qtbot, german_window):
+    hint = run_js(qtbot, german_window.editor, "Blockly.Msg.KEYBOARD_NAV_UNCONSTRAINED_MOVE_HINT")
+    assert hint == tr("nav_hint_unconstrained_move", "de") != tr("nav_hint_unconstrained_move", "en")
