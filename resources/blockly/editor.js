@@ -471,6 +471,14 @@
     document.getElementById('workspace').classList.toggle('rocklyHighContrast', Boolean(look.highContrast));
     document.getElementById('workspace').classList.toggle('rocklyLargeText', Boolean(look.largeText));
     workspace.setTheme(lookTheme(look));
+    // Fields keep the size they measured in the old font: measure every one again, then the toolbox's
+    // new width takes its room from the workspace, whose view keeps its corner.
+    for (const block of workspace.getAllBlocks(false)) {
+      for (const input of block.inputList) for (const field of input.fieldRow) field.forceRerender();
+    }
+    workspace.render();
+    Blockly.svgResize(workspace);
+    keepViewCorner();
     return {theme: workspace.getTheme().name};
   }
 

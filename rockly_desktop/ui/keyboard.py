@@ -77,6 +77,7 @@ class KeyboardAccess(QObject):
         window.editor.sig_ready.connect(self._on_editor_ready)
         window.robots.sig_robot_changed.connect(self.name_controls)
         window.plot_dock.visibilityChanged.connect(self.name_controls)
+        self._toolbar_buttons_take_focus()
         self.name_controls()
 
     # --- Tab order ----------------------------------------------------------------------
@@ -85,11 +86,7 @@ class KeyboardAccess(QObject):
         """Every control Tab reaches, in reading order: the run toolbar, the blocks (and the replay bar
         under them), then the docks on the right and at the bottom, each from top to bottom, left to right."""
         window = self.window
-        toolbar = window.run_toolbar
-        for action in toolbar.actions():
-            button = toolbar.widgetForAction(action)
-            if isinstance(button, QToolButton) and button.focusPolicy() == Qt.FocusPolicy.NoFocus:
-                button.setFocusPolicy(Qt.FocusPolicy.TabFocus)  # Run, STOP and Put back are controls too
+        self._toolbar_buttons_take_focus()
         order = {widget: index for index, widget in enumerate(_focus_chain(window))}
         groups = {}
         for widget in order:
@@ -113,6 +110,14 @@ class KeyboardAccess(QObject):
                     taking.add(_taker(widget))
                     stops.append(widget)
         return stops
+
+    def _toolbar_buttons_take_focus(self):
+        """Run, STOP and Put back are controls too (a toolbar's buttons take no focus of their own)."""
+        toolbar = self.window.run_toolbar
+        for action in toolbar.actions():
+            button = toolbar.widgetForAction(action)
+            if isinstance(button, QToolButton) and button.focusPolicy() == Qt.FocusPolicy.NoFocus:
+                button.setFocusPolicy(Qt.FocusPolicy.TabFocus)
 
     def _container(self, widget):
         """What ``widget`` belongs to for the reading order: a toolbar, a dock, a dock's tab bar, the centre."""
@@ -196,6 +201,7 @@ class KeyboardAccess(QObject):
         """The window now speaks ``language``: the jump keys' names and the controls' names follow."""
         for key, action in self.jump_actions.items():
             action.setText(tr(key, language))
+        self._toolbar_buttons_take_focus()  # (the toolbar was made anew)
         name_controls(self.window, language)
 
     def _on_editor_ready(self):

@@ -183,7 +183,9 @@ LOOK = ("(() => { const ws = Blockly.getMainWorkspace();"
         " const text = document.querySelector('.blocklyBlockCanvas .blocklyText');"
         " return {theme: ws.getTheme().name, contrast: document.getElementById('workspace').classList"
         ".contains('rocklyHighContrast'), size: text ? parseFloat(getComputedStyle(text).fontSize) : null,"
-        " toolbox: getComputedStyle(document.querySelector('.blocklyToolbox')).backgroundColor}; })()")
+        " toolbox: getComputedStyle(document.querySelector('.blocklyToolbox')).backgroundColor,"
+        " width: ws.getTopBlocks(false)[0].getHeightWidth().width,"
+        " number: getComputedStyle(document.querySelector('.blocklyShadow .blocklyText')).fill}; })()")
 
 
 def test_high_contrast_and_larger_text_from_preferences_stay_through_a_language_switch(qtbot, window, monkeypatch):
@@ -206,6 +208,8 @@ def test_high_contrast_and_larger_text_from_preferences_stay_through_a_language_
     after = run_js(qtbot, window.editor, LOOK)
     assert after["size"] > before["size"] * 1.2
     assert after["toolbox"] == "rgb(0, 0, 0)" != before["toolbox"]
+    assert after["width"] > before["width"] * 1.2  # the fields measured again: larger text never overlaps
+    assert after["number"] == "rgb(0, 0, 0)" != before["number"]
     assert window.settings.block_look == {"highContrast": True, "largeText": True}
 
     window.set_language("de")  # a new page: the look goes with it
@@ -232,3 +236,19 @@ def test_the_control_that_has_the_keyboard_wears_a_thick_orange_ring_on_every_do
 def test_blocklys_keyboard_hints_speak_german_in_a_german_window(qtbot, german_window):
     hint = run_js(qtbot, german_window.editor, "Blockly.Msg.KEYBOARD_NAV_UNCONSTRAINED_MOVE_HINT")
     assert hint == tr("nav_hint_unconstrained_move", "de") != tr("nav_hint_unconstrained_move", "en")
+
+
+def test_ctrl_and_a_digit_jump_to_the_toolbox_blocks_code_console_and_simulator(qtbot, window):
+    qtbot.waitUntil(lambda: active(window), timeout=5000)
+    window.console.hide()  # a closed panel opens when its key is pressed
+    press(qtbot, window, K.Key_3, CTRL)
+    assert QApplication.focusWidget() is window.code_dock.view
+    press(qtbot, window, K.Key_4, CTRL)
+    assert window.console.isVisible() and QApplication.focusWidget() is window.console.view
+    press(qtbot, window, K.Key_5, CTRL)
+    assert dock_of(QApplication.focusWidget()) is window.simulator_dock
+    press(qtbot, window, K.Key_1, CTRL)
+    qtbot.waitUntil(lambda: focused_category(qtbot, window) is not None, timeout=5000)
+    assert QApplication.focusWidget() is window.editor.focusProxy()
+    press(qtbot, window, K.Key_2, CTRL)
+    qtbot.waitUntil(lambda: workspace_focused(qtbot, window), timeout=5000)
