@@ -215,8 +215,10 @@ class KeyboardAccess(QObject):
             return  # (another window, a dialog, has the keyboard: the ring stays where it comes back to)
         if self.ring is None or not shiboken6.isValid(self.ring):  # it went with the control it lay over
             self.ring = FocusRing()
-        target = self.window.editor if _inside(new, self.window.editor) else new
-        self.ring.follow(target)
+        if QApplication.mouseButtons() != Qt.MouseButton.NoButton:
+            self.ring.follow(None)  # a click or a touch shows where it went by itself: the ring is for keys
+            return
+        self.ring.follow(self.window.editor if _inside(new, self.window.editor) else new)
 
 
 def _focus_chain(window) -> list:

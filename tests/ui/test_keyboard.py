@@ -231,6 +231,10 @@ def test_the_control_that_has_the_keyboard_wears_a_thick_orange_ring_on_every_do
         edges = [(middle_x, 1), (1, middle_y), (middle_x, shown.height() - 2), (shown.width() - 2, middle_y)]
         assert [image.pixelColor(x, y).name() for x, y in edges] == [ring] * 4, type(shown).__name__
     assert set(raised_docks(window)) <= {dock_of(widget) for widget in stops}
+    # a click shows where it went by itself: no ring (as a browser's :focus-visible)
+    QTest.mouseClick(window.console.view.viewport(), Qt.MouseButton.LeftButton)
+    assert QApplication.focusWidget() is window.console.view
+    assert window.console.view.grab().toImage().pixelColor(window.console.view.width() // 2, 1).name() != ring
 
 
 def test_blocklys_keyboard_hints_speak_german_in_a_german_window(qtbot, german_window):
