@@ -213,6 +213,8 @@ class KeyboardAccess(QObject):
     def _on_focus_changed(self, _old, new):
         if not shiboken6.isValid(self.window) or new is None or new.window() is not self.window:
             return  # (another window, a dialog, has the keyboard: the ring stays where it comes back to)
+        if not new.accessibleName():  # a control made since the window was last named
+            self.name_controls()
         if self.ring is None or not shiboken6.isValid(self.ring):  # it went with the control it lay over
             self.ring = FocusRing()
         if QApplication.mouseButtons() != Qt.MouseButton.NoButton:
