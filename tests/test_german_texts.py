@@ -27,6 +27,7 @@ ALLOWED = {
     "problem", "sofa", "text", "variable", "version", "pins",
     "min", "ms",  # minutes, milliseconds
     "make", "setup",  # the set-up command, „make setup“, typed as it is
+    "tab", "enter",  # keys, as German keyboards and manuals name them
     "distribution", "distributionen", "jazzy", "twiststamped",  # ROS 2's own names
 }
 # Common English words and this app's own English vocabulary (the English texts, below) that are not German.

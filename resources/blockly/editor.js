@@ -443,9 +443,49 @@
     return replaced.length ? {replacedFields: replaced} : {};
   }
 
+  // --- how the blocks look: high contrast, larger text (Preferences) --------------------
+
+  const themes = new Map();
+
+  /** A Blockly theme for `look`: Zelos' own with larger bold text and/or black-and-white surroundings. */
+  function lookTheme(look) {
+    const name = `rockly${look.highContrast ? '-contrast' : ''}${look.largeText ? '-large' : ''}`;
+    if (!themes.has(name)) {
+      themes.set(name, Blockly.Theme.defineTheme(name, {
+        base: Blockly.Themes.Classic,
+        fontStyle: look.largeText ? {size: 17, weight: 'bold'} : {},
+        componentStyles: look.highContrast ? {
+          workspaceBackgroundColour: '#ffffff', toolboxBackgroundColour: '#000000',
+          toolboxForegroundColour: '#ffffff', flyoutBackgroundColour: '#202020', flyoutForegroundColour: '#ffffff',
+          flyoutOpacity: 1, scrollbarColour: '#000000', scrollbarOpacity: 1, insertionMarkerColour: '#000000',
+          insertionMarkerOpacity: 0.5, cursorColour: '#d50000', selectedGlowColour: '#ffd600',
+        } : {},
+      }));
+    }
+    return themes.get(name);
+  }
+
+  function setLook(look) {
+    look = look || {};
+    // Block colours are the profile's own: high contrast darkens them under white text and black outlines (rockly.css).
+    document.getElementById('workspace').classList.toggle('rocklyHighContrast', Boolean(look.highContrast));
+    document.getElementById('workspace').classList.toggle('rocklyLargeText', Boolean(look.largeText));
+    workspace.setTheme(lookTheme(look));
+    // Fields keep the size they measured in the old font: measure every one again, then the toolbox's
+    // new width takes its room from the workspace, whose view keeps its corner.
+    for (const block of workspace.getAllBlocks(false)) {
+      for (const input of block.inputList) for (const field of input.fieldRow) field.forceRerender();
+    }
+    workspace.render();
+    Blockly.svgResize(workspace);
+    keepViewCorner();
+    return {theme: workspace.getTheme().name};
+  }
+
   const calls = {
     async setup({language, profile, media, first, texts, hidden}) {
       if (language !== 'en') await loadScript('vendor/msg/' + language + '.js');
+      Object.assign(Blockly.Msg, (texts && texts.blocklyMsg) || {});  // Blockly's keyboard hints, in Rockly's words
       // Prepared ahead of the program: nothing shows until `show`.
       if (hidden) document.getElementById('workspace').style.visibility = 'hidden';
       RocklyTypedFields.setCatalog(profile.types);
@@ -561,6 +601,21 @@
     setBadges({badges}) {
       RocklyBadges.show(workspace, badges || {});
       return true;
+    },
+    /** The keyboard enters the page: on the workspace (its last focused block), Blockly's keys on. */
+    focusWorkspace() {
+      Blockly.keyboardNavigationController.setIsActive(true);
+      Blockly.getFocusManager().focusTree(workspace);
+      return true;
+    },
+    /** The keyboard goes to the toolbox (Blockly's T key, from outside the page). */
+    focusToolbox() {
+      Blockly.keyboardNavigationController.setIsActive(true);
+      Blockly.getFocusManager().focusTree(workspace.getToolbox() || workspace.getFlyout().getWorkspace());
+      return true;
+    },
+    setLook(look) {
+      return setLook(look);
     },
     undo() {
       workspace.undo(false);

@@ -83,6 +83,7 @@ class EditorView(QWebEngineView):
         self._prepared_answer = None  # its answer, when it came before start()
         self._first_call = None  # start()'s first call, sent once a prepared setup is answered
         self.known_block_types = frozenset()
+        self._look = {}
         self.workspace = {}
         self.python = ""
         # Chromium starts and loads Blockly while Python goes on building the window.
@@ -176,6 +177,12 @@ class EditorView(QWebEngineView):
             self._setup_args["profile"] = {**self._setup_args["profile"], "toolbox": toolbox}
         self.call("setToolbox", {"toolbox": toolbox})
 
+    def set_look(self, look: dict):
+        """Show the blocks with ``look`` ({"highContrast": bool, "largeText": bool}), this page and every
+        page loaded later."""
+        self._look = dict(look)
+        self.call("setLook", self._look)
+
     def clear(self):
         """Empty the workspace."""
         self.call("clear")
@@ -191,6 +198,8 @@ class EditorView(QWebEngineView):
     def _on_hello(self):
         self.channel.reset()
         self._page_state = "hello"
+        if self._look and self._setup_args is not None:  # a reloaded page is told the look anew
+            self.channel.call("setLook", self._look)
         if self._setup_args is not None:
             self._send_setup()
 

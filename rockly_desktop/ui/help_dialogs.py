@@ -49,13 +49,25 @@ def first_steps_html(window, language: str) -> str:
             f"<p>{escape(tr('first_steps_intro', language))}</p><ol>{steps}</ol>")
 
 
+# The keys of the window's Tab order and of Blockly's own keyboard navigation (in the block editor):
+# (the keys' name, a text key for them or None when the name is the same in every language, what they do)
+_EDITOR_KEYS = (("", "keys_tab_name", "keys_tab"), ("T", None, "keys_t"), ("W", None, "keys_w"),
+                ("", "keys_arrows_name", "keys_arrows"), ("", "keys_enter_name", "keys_enter"), ("M", None, "keys_m"),
+                ("", "keys_delete_name", "keys_delete"), ("", "keys_copy_name", "keys_copy"),
+                ("", "keys_menu_name", "keys_menu"), ("", "keys_escape_name", "keys_escape"))
+
+
 def shortcuts_html(window, language: str) -> str:
-    """The Keyboard Shortcuts page: a table made from the window's actions."""
-    rows = "".join(f"<tr><td>{escape(command)}</td><td><b>{escape(keys)}</b></td></tr>"
-                   for command, keys in action_shortcuts(window))
-    return (f"{_STYLE}<h2>{escape(tr('shortcuts_title', language))}</h2>"
-            f"<table cellpadding='6'><tr><th align='left'>{escape(tr('shortcut_command', language))}</th>"
-            f"<th align='left'>{escape(tr('shortcut_keys', language))}</th></tr>{rows}</table>")
+    """The Keyboard Shortcuts page: a table made from the window's actions, then the block editor's keys."""
+    def table(rows):
+        cells = "".join(f"<tr><td>{escape(command)}</td><td><b>{escape(keys)}</b></td></tr>" for command, keys in rows)
+        return (f"<table cellpadding='6'><tr><th align='left'>{escape(tr('shortcut_command', language))}</th>"
+                f"<th align='left'>{escape(tr('shortcut_keys', language))}</th></tr>{cells}</table>")
+
+    editor_rows = [(tr(what, language), tr(name_key, language) if name_key else name)
+                   for name, name_key, what in _EDITOR_KEYS]
+    return (f"{_STYLE}<h2>{escape(tr('shortcuts_title', language))}</h2>{table(action_shortcuts(window))}"
+            f"<h3>{escape(tr('editor_keys_title', language))}</h3>{table(editor_rows)}")
 
 
 class HelpPage(QDialog):

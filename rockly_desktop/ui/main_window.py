@@ -15,6 +15,7 @@ from rockly_desktop.ui.document import Document
 from rockly_desktop.ui.examples_menu import ExamplesMenu
 from rockly_desktop.ui.health_bar import HealthBar
 from rockly_desktop.ui.help_dialogs import show_first_steps, show_shortcuts
+from rockly_desktop.ui.keyboard import KeyboardAccess
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.plain_text import mnemonic_free, plain_label
 from rockly_desktop.ui.preferences import PreferencesDialog
@@ -56,6 +57,7 @@ class MainWindow(QMainWindow):
         self.setObjectName("main_window")
 
         self.editor = editor or EditorView()
+        self.editor.set_look(settings.block_look)
         self.replay_bar = ReplayBar(self.language, self)
         self.setCentralWidget(under(self.editor, self.replay_bar))
         self.simulator_dock = SimulatorDock(tr("simulator_dock", self.language), self)
@@ -131,6 +133,7 @@ class MainWindow(QMainWindow):
         self.stage = StageLayout(self, settings)
         self._build_menus()
         self.document.sig_profile_changed.connect(self._on_profile_changed)
+        self.keys = KeyboardAccess(self)
         self.resize(1280, 800)
         if settings.window_geometry is not None:
             self.restoreGeometry(settings.window_geometry)
@@ -395,6 +398,7 @@ class MainWindow(QMainWindow):
         self._build_run_toolbar()
         self.menuBar().clear()
         self._build_menus()
+        self.keys.set_language(language)
         self._update_title()
 
     def show_preferences(self):
@@ -402,9 +406,11 @@ class MainWindow(QMainWindow):
         teacher's settings."""
         dialog = PreferencesDialog(self.language, self, self.profile, self.settings.teacher,
                                    reset_before_run=self.settings.reset_before_run, kiosk=self.settings.kiosk,
-                                   kiosk_mode=self.settings.kiosk_mode)
+                                   kiosk_mode=self.settings.kiosk_mode, block_look=self.settings.block_look)
         if dialog.exec():
             self.settings.reset_before_run = dialog.reset_before_run
+            self.settings.block_look = dialog.block_look
+            self.editor.set_look(dialog.block_look)
             if dialog.kiosk_tab is not None:
                 dialog.kiosk_tab.apply()
             if dialog.teacher_tab is not None and dialog.teacher_tab.apply():  # the program stays; only the toolbox

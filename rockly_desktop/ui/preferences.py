@@ -1,5 +1,5 @@
 """The Preferences dialog: the language of the window and the blocks, putting the robot back before
-each Run; the teacher's settings."""
+each Run, high-contrast blocks and larger text on them; the teacher's settings."""
 from PySide6.QtWidgets import (
     QCheckBox,
     QComboBox,
@@ -18,8 +18,9 @@ from rockly_desktop.ui.texts import language_names, tr
 
 
 class PreferencesDialog(QDialog):
-    """Lets the user pick English or German (``language``) and whether the simulated robot is put
-    back before each Run (``reset_before_run``).
+    """Lets the user pick English or German (``language``), whether the simulated robot is put
+    back before each Run (``reset_before_run``) and how the blocks look (``block_look``: high contrast,
+    larger text).
 
     With a ``profile`` and the ``teacher`` settings it has a Teacher tab (``teacher_tab``)
     behind a PIN; the caller calls ``teacher_tab.apply()`` when the dialog is accepted. With the
@@ -28,7 +29,7 @@ class PreferencesDialog(QDialog):
     """
 
     def __init__(self, language: str, parent=None, profile=None, teacher=None, reset_before_run: bool = False,
-                 kiosk=None, kiosk_mode: bool = False):
+                 kiosk=None, kiosk_mode: bool = False, block_look=None):
         super().__init__(parent)
         self.setWindowTitle(tr("preferences_title", language))
         self.language_box = QComboBox(self)
@@ -45,6 +46,15 @@ class PreferencesDialog(QDialog):
         self.reset_box.setObjectName("reset_before_run")
         self.reset_box.setChecked(reset_before_run)
         layout.addRow(self.reset_box)
+        look = block_look or {}
+        self.contrast_box = QCheckBox(tr("high_contrast_blocks", language), self)
+        self.contrast_box.setObjectName("high_contrast_blocks")
+        self.contrast_box.setChecked(bool(look.get("highContrast")))
+        layout.addRow(self.contrast_box)
+        self.large_text_box = QCheckBox(tr("large_block_text", language), self)
+        self.large_text_box.setObjectName("large_block_text")
+        self.large_text_box.setChecked(bool(look.get("largeText")))
+        layout.addRow(self.large_text_box)
         self.tabs = QTabWidget(self)
         self.tabs.addTab(general, tr("preferences_general", language))
         self.teacher_tab = None
@@ -70,6 +80,11 @@ class PreferencesDialog(QDialog):
     def language(self) -> str:
         """The language code chosen in the dialog."""
         return self.language_box.currentData()
+
+    @property
+    def block_look(self) -> dict:
+        """How the blocks are to look: {"highContrast": bool, "largeText": bool}."""
+        return {"highContrast": self.contrast_box.isChecked(), "largeText": self.large_text_box.isChecked()}
 
     @property
     def reset_before_run(self) -> bool:

@@ -180,6 +180,17 @@ class AppSettings:
         self._store.setValue(self._reset_key[0], "true" if value else "false")
 
     @property
+    def block_look(self) -> dict:
+        """How the blocks look: {"highContrast": bool, "largeText": bool} (both off by default)."""
+        return {"highContrast": str(self._get("blocks/high_contrast", "false")).lower() == "true",
+                "largeText": str(self._get("blocks/large_text", "false")).lower() == "true"}
+
+    @block_look.setter
+    def block_look(self, look: dict):
+        self._store.setValue("blocks/high_contrast", "true" if look.get("highContrast") else "false")
+        self._store.setValue("blocks/large_text", "true" if look.get("largeText") else "false")
+
+    @property
     def recordings_folder(self) -> str:
         """Where runs are recorded (default: ``recordings`` in Rockly's XDG data folder)."""
         return str(self._get("recordings/folder", "") or recordings_dir())

@@ -21,10 +21,18 @@ def language_names() -> dict:
     return {code: language_name(code) for code in languages()}
 
 
+# Blockly's keyboard hints (its German messages leave them English): Blockly's message name -> text key
+_NAVIGATION_HINTS = {f"KEYBOARD_NAV_{name.upper()}_HINT": f"nav_hint_{name}" for name in (
+    "block_navigation", "constrained_move", "copied", "cut", "flyout_label", "unconstrained_move",
+    "workspace_navigation")}
+
+
 def editor_page_texts(language: str) -> dict:
-    """The editor page's own menu texts in ``language`` (``EditorView.start``'s ``texts``)."""
+    """The editor page's own texts in ``language`` (``EditorView.start``'s ``texts``): its menu, its
+    hint, and ``blocklyMsg``, Blockly's keyboard hints."""
     return {"addBreakpoint": tr("add_breakpoint", language), "removeBreakpoint": tr("remove_breakpoint", language),
-            "emptyHint": tr("empty_hint", language, run=tr("run", language))}
+            "emptyHint": tr("empty_hint", language, run=tr("run", language)),
+            "blocklyMsg": {name: tr(key, language) for name, key in _NAVIGATION_HINTS.items()}}
 
 
 def robot_problem(error, language: str) -> tuple:

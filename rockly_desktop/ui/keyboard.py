@@ -1,0 +1,256 @@
+"""The main window from the keyboard alone: Tab and Shift+Tab through every control in reading order,
+a ring that shows where the keys go, keys to jump to the toolbox, the blocks, the code, the console and
+the simulator, and focus that enters the block editor on the workspace with Blockly's own keys on.
+
+Tab is the window's shortcut, not each widget's: tables, the web view and text views would keep it.
+"""
+import shiboken6
+from PySide6.QtCore import QEvent, QObject, Qt
+from PySide6.QtGui import QAction, QKeySequence, QShortcut
+from PySide6.QtWidgets import QApplication, QDockWidget, QFrame, QTabBar, QToolBar, QToolButton
+
+from rockly_desktop.ui.accessible_names import name_controls
+from rockly_desktop.ui.texts import tr
+
+# (action key in the catalogue, keys, where it goes); Ctrl+digit clashes with none of Rockly's or Blockly's keys
+JUMPS = (("jump_toolbox", "Ctrl+1", "toolbox"), ("jump_blocks", "Ctrl+2", "blocks"), ("jump_code", "Ctrl+3", "code"),
+         ("jump_console", "Ctrl+4", "console"), ("jump_simulator", "Ctrl+5", "simulator"))
+
+# The focus ring: a frame laid over the focused control, drawn by this style sheet rule.
+FOCUS_RING_STYLE = "QFrame#focus_ring { border: 3px solid #ff6d00; border-radius: 4px; background: transparent; }"
+
+
+class FocusRing(QFrame):
+    """A thick orange frame over the control that has the keyboard (it takes no clicks and no focus)."""
+
+    def __init__(self):
+        super().__init__()
+        self.setObjectName("focus_ring")
+        self.setStyleSheet(FOCUS_RING_STYLE)
+        self.setAttribute(Qt.WidgetAttribute.WA_TransparentForMouseEvents)
+        self.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        self.target = None
+
+    def follow(self, widget):
+        """Lie over ``widget`` (None: hide)."""
+        if self.target is not None and shiboken6.isValid(self.target):
+            self.target.removeEventFilter(self)
+        self.target = widget
+        if widget is None:
+            self.hide()
+            return
+        self.setParent(widget)
+        widget.installEventFilter(self)
+        self._fit()
+        self.show()
+        self.raise_()
+
+    def _fit(self):
+        self.setGeometry(self.target.rect())
+
+    def eventFilter(self, watched, event):
+        """Qt override: keep the ring the size of its control."""
+        if watched is self.target and event.type() == QEvent.Type.Resize:
+            self._fit()
+        return False
+
+
+class KeyboardAccess(QObject):
+    """Installs Tab order, the focus ring and the jump keys on ``window`` (a ``MainWindow``)."""
+
+    def __init__(self, window):
+        super().__init__(window)
+        self.window = window
+        self.ring = None
+        self._previous = QShortcut(QKeySequence("Shift+Tab"), window, lambda: self.move(-1))  # (Backtab too)
+        self._next = QShortcut(QKeySequence(Qt.Key.Key_Tab), window, lambda: self.move(1))
+        self.jump_actions = {}
+        for key, keys, place in JUMPS:
+            action = QAction(tr(key, window.language), window)
+            action.setObjectName(f"action_{key}")
+            action.setShortcut(QKeySequence(keys))
+            action.setShortcutContext(Qt.ShortcutContext.WindowShortcut)
+            action.triggered.connect(lambda _checked=False, place=place: self.jump(place))
+            window.addAction(action)
+            self.jump_actions[key] = action
+        QApplication.instance().focusChanged.connect(self._on_focus_changed)
+        window.editor.sig_ready.connect(self._on_editor_ready)
+        window.robots.sig_robot_changed.connect(self.name_controls)
+        window.plot_dock.visibilityChanged.connect(self.name_controls)
+        self._toolbar_buttons_take_focus()
+        self.name_controls()
+
+    # --- Tab order ----------------------------------------------------------------------
+
+    def stops(self) -> list:
+        """Every control Tab reaches, in reading order: the run toolbar, the blocks (and the replay bar
+        under them), then the docks on the right and at the bottom, each from top to bottom, left to right."""
+        window = self.window
+        self._toolbar_buttons_take_focus()
+        order = {widget: index for index, widget in enumerate(_focus_chain(window))}
+        groups = {}
+        for widget in order:
+            if widget is window or not _reachable(widget, window):
+                continue
+            if _inside(widget, window.editor) and widget is not window.editor:
+                continue  # the web view's inner widget: the view itself is the stop
+            groups.setdefault(self._container(widget), []).append(widget)
+        for dock in window.findChildren(QDockWidget):  # a dock with nothing to focus is one stop itself
+            content = dock.widget()
+            if content is not None and dock not in groups and _reachable(content, window, any_policy=True):
+                content.setFocusPolicy(Qt.FocusPolicy.TabFocus)
+                groups[dock] = [content]
+        if window.editor.isVisible():
+            groups.setdefault(window.editor, [window.editor])
+        ordered = sorted(groups, key=self._reading_place)
+        stops, taking = [], set()
+        for container in ordered:
+            for widget in sorted(groups[container], key=lambda w: order.get(w, len(order))):
+                if _taker(widget) not in taking:  # (a widget and the one it hands the keyboard to: one stop)
+                    taking.add(_taker(widget))
+                    stops.append(widget)
+        return stops
+
+    def _toolbar_buttons_take_focus(self):
+        """Run, STOP and Put back are controls too (a toolbar's buttons take no focus of their own)."""
+        toolbar = self.window.run_toolbar
+        for action in toolbar.actions():
+            button = toolbar.widgetForAction(action)
+            if isinstance(button, QToolButton) and button.focusPolicy() == Qt.FocusPolicy.NoFocus:
+                button.setFocusPolicy(Qt.FocusPolicy.TabFocus)
+
+    def _container(self, widget):
+        """What ``widget`` belongs to for the reading order: a toolbar, a dock, a dock's tab bar, the centre."""
+        window = self.window
+        node = widget
+        while node is not None and node is not window:
+            if isinstance(node, (QToolBar, QDockWidget)) or node is window.editor:
+                return node
+            if isinstance(node, QTabBar) and node.parentWidget() is window:
+                return node
+            node = node.parentWidget()
+        return window.centralWidget()
+
+    def _reading_place(self, container):
+        window = self.window
+        if isinstance(container, QToolBar):
+            region = 0
+        elif container is window.editor or container is window.centralWidget():
+            region = 1 if container is window.editor else 2
+        else:
+            area = window.dockWidgetArea(container) if isinstance(container, QDockWidget) else None
+            top_left = container.mapTo(window, container.rect().topLeft())
+            bottom = area == Qt.DockWidgetArea.BottomDockWidgetArea or (
+                area is None and top_left.y() > window.centralWidget().geometry().bottom() - 1)
+            region = 4 if bottom else 3
+        top_left = container.mapTo(window, container.rect().topLeft())
+        return region, top_left.y(), top_left.x()
+
+    def move(self, step: int):
+        """Give the keyboard to the next (``step`` 1) or previous (-1) control; from nowhere, to the first."""
+        stops = self.stops()
+        if not stops:
+            return
+        current = self._current_stop(stops)
+        index = stops.index(current) + step if current in stops else (0 if step > 0 else -1)
+        self.give_focus(stops[index % len(stops)], Qt.FocusReason.TabFocusReason if step > 0
+                        else Qt.FocusReason.BacktabFocusReason)
+
+    def _current_stop(self, stops):
+        by_taker = {_taker(stop): stop for stop in stops}
+        focused = QApplication.focusWidget()
+        while focused is not None and focused not in stops and focused not in by_taker:
+            focused = focused.parentWidget()
+        return by_taker.get(focused, focused)
+
+    def give_focus(self, widget, reason=Qt.FocusReason.OtherFocusReason):
+        """Focus ``widget``; the block editor gets its workspace focused, Blockly's keys on."""
+        widget.setFocus(reason)
+        if widget is self.window.editor:
+            self.window.editor.call("focusWorkspace")
+
+    # --- jumps --------------------------------------------------------------------------
+
+    def jump(self, place: str):
+        """Give the keyboard to the toolbox, the blocks, the code, the console or the simulator."""
+        window = self.window
+        if place in ("toolbox", "blocks"):
+            window.editor.setFocus(Qt.FocusReason.ShortcutFocusReason)
+            window.editor.call("focusToolbox" if place == "toolbox" else "focusWorkspace")
+            return
+        dock = {"code": window.code_dock, "console": window.console, "simulator": window.simulator_dock}[place]
+        if dock.isHidden():
+            if window.settings.kiosk_mode:
+                return  # a kiosk's closed docks stay closed
+            dock.show()
+        dock.raise_()
+        self.stops()  # (makes a dock with nothing else to focus focusable)
+        target = dock.widget()
+        candidates = [widget for widget in _focus_chain(window) if _inside(widget, target)
+                      and widget.focusPolicy() & Qt.FocusPolicy.TabFocus and widget.isVisibleTo(window)]
+        target = candidates[0] if candidates else target
+        target.setFocus(Qt.FocusReason.ShortcutFocusReason)
+
+    # --- names, ring and language -------------------------------------------------------
+
+    def name_controls(self, *_args):
+        """Give every control of the window its accessible name in the window's language."""
+        name_controls(self.window, self.window.language)
+
+    def set_language(self, language: str):
+        """The window now speaks ``language``: the jump keys' names and the controls' names follow."""
+        for key, action in self.jump_actions.items():
+            action.setText(tr(key, language))
+        self._toolbar_buttons_take_focus()  # (the toolbar was made anew)
+        name_controls(self.window, language)
+
+    def _on_editor_ready(self):
+        self.name_controls()
+        focused = QApplication.focusWidget()
+        if focused is None or _inside(focused, self.window.editor):  # a fresh window: keys go to the blocks
+            self.give_focus(self.window.editor)
+
+    def _on_focus_changed(self, _old, new):
+        if not shiboken6.isValid(self.window) or new is None or new.window() is not self.window:
+            return  # (another window, a dialog, has the keyboard: the ring stays where it comes back to)
+        if not new.accessibleName():  # a control made since the window was last named
+            self.name_controls()
+        if self.ring is None or not shiboken6.isValid(self.ring):  # it went with the control it lay over
+            self.ring = FocusRing()
+        if QApplication.mouseButtons() != Qt.MouseButton.NoButton:
+            self.ring.follow(None)  # a click or a touch shows where it went by itself: the ring is for keys
+            return
+        self.ring.follow(self.window.editor if _inside(new, self.window.editor) else new)
+
+
+def _focus_chain(window) -> list:
+    """The window's widgets in Qt's focus chain order (the order they were made in)."""
+    chain, widget = [], window.nextInFocusChain()
+    while widget is not None and widget is not window and len(chain) < 10000:
+        chain.append(widget)
+        widget = widget.nextInFocusChain()
+    return chain
+
+
+def _taker(widget):
+    """The widget that gets the keyboard when ``widget`` is focused (its focus proxy's, if it has one)."""
+    while widget.focusProxy() is not None:
+        widget = widget.focusProxy()
+    return widget
+
+
+def _inside(widget, ancestor) -> bool:
+    while widget is not None:
+        if widget is ancestor:
+            return True
+        widget = widget.parentWidget()
+    return False
+
+
+def _reachable(widget, window, any_policy=False) -> bool:
+    """True when ``widget`` can take the keyboard by Tab now: shown, enabled, in sight, in ``window``."""
+    if not any_policy and not widget.focusPolicy() & Qt.FocusPolicy.TabFocus:
+        return False
+    if isinstance(widget, FocusRing) or widget.window() is not window:
+        return False
+    return widget.isVisible() and widget.isEnabled() and not widget.visibleRegion().isEmpty()
