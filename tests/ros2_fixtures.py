@@ -2,13 +2,11 @@
 rclpy test robot in its own process, on a domain of this test run's own, localhost only, and
 Rockly's ROS 2 link to it."""
 import contextlib
-import json
 import os
-import subprocess
-import threading
 from pathlib import Path
 
 import pytest
+from json_line_node import JsonLineNode
 
 from rockly_desktop.robot.ros2.environment import PROJECT_ROOT, Ros2Settings
 
@@ -40,32 +38,15 @@ def ros2_settings():
     return Ros2Settings(domain_id=DOMAIN_ID, discovery="localhost")
 
 
-class TestRobot:
+class TestRobot(JsonLineNode):
     """The test node process (tests/robot/ros2/ros2_test_node.py) and what it printed."""
 
     def __init__(self, settings):
-        self.process = subprocess.Popen([TEST_ROBOT_PYTHON, str(TEST_NODE)], stdin=subprocess.PIPE,
-                                        stdout=subprocess.PIPE, text=True, env=settings.environment())
-        self.lines = []
-        ready = json.loads(self.process.stdout.readline() or "{}")
-        assert ready.get("ready"), "the ROS 2 test node did not start"
-        threading.Thread(target=self._read, daemon=True).start()
-
-    def _read(self):
-        for line in self.process.stdout:
-            self.lines.append(json.loads(line))
+        super().__init__([TEST_ROBOT_PYTHON, TEST_NODE], settings.environment(), "the ROS 2 test node")
 
     def received(self, topic) -> list:
         """The messages the test node got on ``topic``, as {"type", "message"} dicts."""
         return [line for line in list(self.lines) if line.get("topic") == topic]
-
-    def stop(self):
-        self.process.stdin.close()
-        try:
-            self.process.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            self.process.kill()
-            self.process.wait()
 
 
 @pytest.fixture(scope="module")

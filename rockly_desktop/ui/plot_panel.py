@@ -320,8 +320,8 @@ class PlotPanel(QWidget):
     # --- time window and pausing ---
 
     @property
-    def window(self) -> int:
-        """The seconds shown."""
+    def window_seconds(self) -> int:
+        """The seconds shown (not ``window``: that is QWidget's own, the top-level widget)."""
         return self._window
 
     def set_window(self, seconds: int):

@@ -121,7 +121,7 @@ def test_the_time_window_shows_the_last_seconds(panel, store, clock):
     assert panel.plot_item.viewRange()[0][0] < -10 < -9.5 and -0.5 < 0 < panel.plot_item.viewRange()[0][1]
 
     panel.window_box.setCurrentIndex(panel.window_box.findData(60))  # as a person picks it
-    assert panel.window == 60
+    assert panel.window_seconds == 60
     assert len(drawn(panel, "/odom", X)[1]) == 400
     with pytest.raises(ValueError):
         panel.set_window(42)

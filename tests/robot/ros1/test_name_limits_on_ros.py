@@ -5,15 +5,13 @@ rospy resolves a name in the node's namespace, ``~`` under the node's own name, 
 command line's remappings; the limits compare what it resolves to. Rockly's node here is as if started
 with the remappings REMAPS (rospy's own table, set as ``init_node`` sets it from the command line)."""
 import itertools
-import json
-import subprocess
 import sys
-import threading
 from pathlib import Path
 
 import pytest
 from hypothesis import HealthCheck, event, example, given, settings
 from hypothesis import strategies as st
+from json_line_node import JsonLineNode
 from ros_helpers import ros_environment
 from waiting import eventually
 
@@ -30,30 +28,15 @@ TALK = Capability("talk", "Talking", topics=frozenset({"/chatter"}))
 MARKS = itertools.count(1)
 
 
-class Recorder:
+class Recorder(JsonLineNode):
     """The plain rospy node's process and what it printed."""
 
     def __init__(self, master):
-        self.process = subprocess.Popen([sys.executable, str(RECORDER)], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                        text=True, env=ros_environment(master.uri, master.home / "recorder"))
-        assert json.loads(self.process.stdout.readline() or "{}").get("ready"), "the recorder did not start"
-        self.lines = []
-        threading.Thread(target=self._read, daemon=True).start()
-
-    def _read(self):
-        for line in self.process.stdout:
-            self.lines.append(json.loads(line))
+        super().__init__([sys.executable, RECORDER], ros_environment(master.uri, master.home / "recorder"),
+                         "the recorder")
 
     def received(self, topic):
         return [line["message"] for line in list(self.lines) if line["topic"] == topic]
-
-    def stop(self):
-        self.process.stdin.close()
-        try:
-            self.process.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            self.process.kill()
-            self.process.wait()
 
 
 @pytest.fixture(scope="module")
