@@ -14,7 +14,7 @@ from rockly_desktop.ui.console_dock import ConsoleDock
 from rockly_desktop.ui.document import Document
 from rockly_desktop.ui.examples_menu import ExamplesMenu
 from rockly_desktop.ui.health_bar import HealthBar
-from rockly_desktop.ui.help_dialogs import show_first_steps, show_shortcuts
+from rockly_desktop.ui.help_dialogs import retitle_help_pages, show_first_steps, show_shortcuts
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.plain_text import mnemonic_free, plain_label
 from rockly_desktop.ui.preferences import PreferencesDialog
@@ -389,9 +389,13 @@ class MainWindow(QMainWindow):
         self.plot_dock.setWindowTitle(tr("plot_dock", language))
         self.variables.table.setHorizontalHeaderLabels([tr("variable", language), tr("value", language)])
         self.console.setWindowTitle(tr("console_dock", language))
+        self.replay.set_language(language)
         self._build_run_toolbar()
+        for old_menu in (action.menu() for action in self.menuBar().actions() if action.menu() is not None):
+            old_menu.deleteLater()  # with its actions: the shortcut list names only the new ones
         self.menuBar().clear()
         self._build_menus()
+        retitle_help_pages(self, language)
         self._update_title()
 
     def show_preferences(self):
@@ -427,7 +431,7 @@ class MainWindow(QMainWindow):
     # --- menus --------------------------------------------------------------------------
 
     def _action(self, menu, key, slot, shortcut=None):
-        action = QAction(tr(key, self.language), self)
+        action = QAction(tr(key, self.language), menu)  # the menu's: made anew with it in another language
         action.setObjectName(f"action_{key}")
         if shortcut is not None:
             action.setShortcut(shortcut)

@@ -48,6 +48,7 @@ class Replay(QObject):
         self.simulator = simulator
         self.language = language
         self.moments = None
+        self._left_out = (True, [])  # (whether the recording was read whole, notes on what was left out)
         self._shown_block = None
         bar.sig_moment.connect(self.show_moment)
         bar.sig_closed.connect(self._back_to_live)
@@ -90,13 +91,27 @@ class Replay(QObject):
         self.plan = None
         path = None if recording.on(channels.SIMULATOR) else RecordedPath(self.topics)
         self.path = path or None
-        notes = "\n".join(note.in_language(self.language) for note in recording.notes())
-        short = [tr(key, self.language) for key, shown in (("replay_cut_short", not recording.complete),
-                                                            ("replay_parts_left_out", notes)) if shown]
-        self.bar.show_timeline(self.moments.duration, self.moments.markers(), " ".join(short), notes)
+        self._left_out = (recording.complete, recording.notes())
+        short, notes = self._bar_note()
+        self.bar.show_timeline(self.moments.duration, self.moments.markers(), short, notes)
         if notes and not quiet:
             self._say("recording_partly_read_box", tr("recording_partly_read", self.language), notes)
         return True
+
+    def _bar_note(self) -> tuple:
+        """(the bar's short note, what it stands for) on what reading the recording left out, in the
+        window's language."""
+        complete, notes = self._left_out
+        notes = "\n".join(note.in_language(self.language) for note in notes)
+        short = [tr(key, self.language) for key, shown in (("replay_cut_short", not complete),
+                                                            ("replay_parts_left_out", notes)) if shown]
+        return " ".join(short), notes
+
+    def set_language(self, language: str):
+        """Say the bar and what a moment shows in ``language`` from now on."""
+        self.language = language
+        self.bar.set_language(language)
+        self.bar.set_note(*self._bar_note())
 
     def _say(self, name: str, title: str, text: str):
         box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, title, text)
