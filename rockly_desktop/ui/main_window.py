@@ -31,6 +31,7 @@ from rockly_desktop.ui.state_panels import StatePanels
 from rockly_desktop.ui.tablet import QtTablet
 from rockly_desktop.ui.texts import editor_page_texts, tr
 from rockly_desktop.ui.variables_dock import VariablesDock
+from rockly_desktop.ui.window_fit import fit_first_window
 
 
 class MainWindow(QMainWindow):
@@ -128,7 +129,7 @@ class MainWindow(QMainWindow):
         self.stage = StageLayout(self, settings)
         self._build_menus()
         self.document.sig_profile_changed.connect(self._on_profile_changed)
-        self.resize(1280, 800)
+        fit_first_window(self)
         if settings.window_geometry is not None:
             self.restoreGeometry(settings.window_geometry)
         if settings.window_state is None or not self.restoreState(settings.window_state):
