@@ -8,6 +8,7 @@ from PySide6.QtCore import QObject, QTimer, Signal
 from PySide6.QtWidgets import QMessageBox
 
 from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.core.numbers import number_format
 from rockly_desktop.robot.links import DEFAULT_KIND, check_available, link_kind, open_link
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
 from rockly_desktop.ui.message_boxes import plain_message_box
@@ -152,7 +153,8 @@ class RobotChoice(QObject):
         self.status.setText(f"{text} — {where}" if status is not None else text)  # e.g. its domain on ROS 2
         self.status.setStyleSheet(f"color: {STATUS_COLOURS[state]}; font-weight: bold;")
         if status is not None and status.round_trip is not None:
-            self.status.setToolTip(tooltip_text(f"{where} — {status.round_trip * 1000:.1f} ms"))
+            took = number_format(language).format("{:.1f} ms", status.round_trip * 1000)
+            self.status.setToolTip(tooltip_text(f"{where} — {took}"))
 
     def shutdown(self):
         """Stop every robot safely (the window is closing)."""
