@@ -499,9 +499,11 @@
         trashcan: true,
         move: {scrollbars: true, drag: true, wheel: false},
         sounds: false,
+        plugins: {metricsManager: RocklyStage.MetricsManager},
       });
       workspace.addChangeListener(onWorkspaceEvent);
       workspace.addChangeListener(afterPlacing);
+      RocklyStage.install(workspace);
       window.addEventListener('resize', keepViewCorner);  // added after inject's own: runs after it
       window.addEventListener('resize', keepViewCorner);  // added after inject's: runs after Blockly's
       makeHint(texts && texts.emptyHint);
@@ -596,6 +598,10 @@
     },
     setValues({values, label}) {
       RocklyValues.show(values || {}, label);
+      return true;
+    },
+    setStage({on}) {
+      RocklyStage.set(Boolean(on));
       return true;
     },
     setBadges({badges}) {

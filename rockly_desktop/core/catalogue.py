@@ -22,6 +22,8 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
 
+from rockly_desktop.core.numbers import number_format
+
 ENGLISH = "en"
 TEMPLATE = "messages.pot"
 
@@ -145,11 +147,13 @@ class Catalogue:
         return english
 
     def text(self, key: str, language: str, **values) -> str:
-        """The text ``key`` in ``language`` with ``values`` filled in (``LocalText`` values in the same language)."""
+        """The text ``key`` in ``language`` with ``values`` filled in (``LocalText`` values in the same language,
+        numbers with the language's decimal mark: "0,15 m/s" in German)."""
         template = self.template(key, language)
         if not values:
             return template
-        return template.format(**{name: _in_language(value, language) for name, value in values.items()})
+        return number_format(language).format(template, **{name: _in_language(value, language)
+                                                             for name, value in values.items()})
 
     def __call__(self, key: str, **values) -> "LocalText":
         """The text ``key`` with ``values``, to be put into a language later; KeyError if unknown."""

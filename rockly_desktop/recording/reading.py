@@ -84,13 +84,13 @@ class Recording:
         """What reading left out, as texts to put into a language (empty: nothing)."""
         notes = []
         if self.read_in_part:
-            notes.append(app_local_text("recording_read_in_part", seconds=f"{self.duration:.1f}"))
+            notes.append(app_local_text("recording_read_in_part", seconds=round(self.duration, 1)))
         if self.too_big:
             notes.append(app_local_text("recording_left_out_too_big", count=self.too_big))
         if self.damaged:
             notes.append(app_local_text("recording_left_out_damaged", count=self.damaged))
         if self.robot_until is not None:
-            notes.append(app_local_text("recording_robot_topics_cut", seconds=f"{self.robot_until:.1f}"))
+            notes.append(app_local_text("recording_robot_topics_cut", seconds=round(self.robot_until, 1)))
         return notes
 
 

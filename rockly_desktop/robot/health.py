@@ -35,8 +35,8 @@ def topic_health(interface: dict, topics: list, unreadable: dict = None) -> list
             items.append(HealthItem(topic, RED, app_local_text("health_no_message")))
         else:
             level = GREEN if info.age < FRESH_SECONDS else AMBER if info.age < LATE_SECONDS else RED
-            items.append(HealthItem(topic, level, app_local_text("health_topic_rate", rate=f"{info.rate:.1f}",
-                                                                 age=f"{info.age:.1f}")))
+            items.append(HealthItem(topic, level, app_local_text("health_topic_rate", rate=round(info.rate, 1),
+                                                                 age=round(info.age, 1))))
     return items
 
 

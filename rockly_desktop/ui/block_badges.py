@@ -4,6 +4,7 @@ The states come from ``recording/badges.py``; this module words them in the wind
 and says whether they are shown: not at a profile's Starter level (``starter``), where the
 blocks stay as plain as the toolbox.
 """
+from rockly_desktop.core.numbers import number_format
 from rockly_desktop.ui.texts import tr
 
 STARTER_LEVEL = "starter"
@@ -20,7 +21,7 @@ def badge_texts(states: dict, language: str) -> dict:
     badges = {}
     for block, (state, seconds) in states.items():
         key = f"badge_{state}"
-        took = f"{seconds:.1f} s" if isinstance(seconds, (int, float)) else ""
+        took = number_format(language).format("{:.1f} s", seconds) if isinstance(seconds, (int, float)) else ""
         text = tr(key, language, seconds=took) if key != "badge_running" else tr(key, language)
         badges[block] = {"text": text.strip(), "state": state}
     return badges

@@ -4,7 +4,7 @@ from html import escape
 
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction, QKeySequence
-from PySide6.QtWidgets import QDialog, QDialogButtonBox, QTextBrowser, QVBoxLayout
+from PySide6.QtWidgets import QDialog, QDialogButtonBox, QMenu, QTextBrowser, QVBoxLayout
 
 from rockly_desktop.ui.run_toolbar import RUN_KEYS
 from rockly_desktop.ui.texts import tr
@@ -19,12 +19,23 @@ def action_shortcuts(window) -> list:
     """(command, keys) of every action of ``window`` that has a shortcut now, in the order they were made."""
     rows, seen = [], set()
     for action in window.findChildren(QAction):
+        if not _in_menu_bar_or_window(action, window):
+            continue
         keys = ", ".join(sequence.toString(QKeySequence.SequenceFormat.NativeText) for sequence in action.shortcuts())
         command = _plain(action.text())
         if keys and (command, keys) not in seen:
             seen.add((command, keys))
             rows.append((command, keys))
     return rows
+
+
+def _in_menu_bar_or_window(action, window) -> bool:
+    """Whether ``action`` is the window's own or in a menu the menu bar shows (not one that a language
+    switch replaced and that is still waiting to be deleted)."""
+    top, parent = None, action.parent()
+    while isinstance(parent, QMenu):
+        top, parent = parent, parent.parent()
+    return top is None or top.menuAction() in window.menuBar().actions()
 
 
 def first_steps_html(window, language: str) -> str:
@@ -71,34 +82,49 @@ def shortcuts_html(window, language: str) -> str:
 
 
 class HelpPage(QDialog):
-    """A small window showing one help page (HTML made here, nothing from the web)."""
+    """A small window showing one help page (HTML made here, nothing from the web); ``page(language)``
+    makes its (title, HTML), again when the window's language changes."""
 
-    def __init__(self, title: str, html: str, parent=None):
+    def __init__(self, page, language: str, parent=None):
         super().__init__(parent)
-        self.setWindowTitle(title)
+        self._page = page
         self.browser = QTextBrowser(self)
         self.browser.setOpenLinks(False)
-        self.browser.setHtml(html)
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close, self)
         buttons.rejected.connect(self.reject)
         layout = QVBoxLayout(self)
         layout.addWidget(self.browser)
         layout.addWidget(buttons)
+        self.set_language(language)
         self.resize(560, 480)
+
+    def set_language(self, language: str):
+        """Show the page in ``language``."""
+        title, html = self._page(language)
+        self.setWindowTitle(title)
+        self.browser.setHtml(html)
 
 
 def show_first_steps(window, language: str) -> HelpPage:
     """Open the First Steps page over ``window`` (not modal: the person can try the steps meanwhile)."""
-    return _show(window, "first_steps_dialog", tr("first_steps_title", language), first_steps_html(window, language))
+    return _show(window, "first_steps_dialog", language,
+                 lambda lang: (tr("first_steps_title", lang), first_steps_html(window, lang)))
 
 
 def show_shortcuts(window, language: str) -> HelpPage:
     """Open the Keyboard Shortcuts page over ``window``."""
-    return _show(window, "shortcuts_dialog", tr("shortcuts_title", language), shortcuts_html(window, language))
+    return _show(window, "shortcuts_dialog", language,
+                 lambda lang: (tr("shortcuts_title", lang), shortcuts_html(window, lang)))
 
 
-def _show(window, name: str, title: str, html: str) -> HelpPage:
-    page = HelpPage(title, html, window)
+def retitle_help_pages(window, language: str):
+    """Say the help pages open over ``window`` in ``language`` (after a language switch)."""
+    for page in window.findChildren(HelpPage):
+        page.set_language(language)
+
+
+def _show(window, name: str, language: str, page) -> HelpPage:
+    page = HelpPage(page, language, window)
     page.setObjectName(name)
     page.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose)
     page.show()

@@ -14,7 +14,7 @@ from rockly_desktop.ui.console_dock import ConsoleDock
 from rockly_desktop.ui.document import Document
 from rockly_desktop.ui.examples_menu import ExamplesMenu
 from rockly_desktop.ui.health_bar import HealthBar
-from rockly_desktop.ui.help_dialogs import show_first_steps, show_shortcuts
+from rockly_desktop.ui.help_dialogs import retitle_help_pages, show_first_steps, show_shortcuts
 from rockly_desktop.ui.keyboard import KeyboardAccess
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.plain_text import mnemonic_free, plain_label
@@ -32,6 +32,7 @@ from rockly_desktop.ui.state_panels import StatePanels
 from rockly_desktop.ui.tablet import QtTablet
 from rockly_desktop.ui.texts import editor_page_texts, tr
 from rockly_desktop.ui.variables_dock import VariablesDock
+from rockly_desktop.ui.window_fit import fit_first_window
 
 
 class MainWindow(QMainWindow):
@@ -134,7 +135,7 @@ class MainWindow(QMainWindow):
         self._build_menus()
         self.document.sig_profile_changed.connect(self._on_profile_changed)
         self.keys = KeyboardAccess(self)
-        self.resize(1280, 800)
+        fit_first_window(self)
         if settings.window_geometry is not None:
             self.restoreGeometry(settings.window_geometry)
         if settings.window_state is None or not self.restoreState(settings.window_state):
@@ -395,10 +396,14 @@ class MainWindow(QMainWindow):
         self.plot_dock.setWindowTitle(tr("plot_dock", language))
         self.variables.table.setHorizontalHeaderLabels([tr("variable", language), tr("value", language)])
         self.console.setWindowTitle(tr("console_dock", language))
+        self.replay.set_language(language)
         self._build_run_toolbar()
+        for old_menu in (action.menu() for action in self.menuBar().actions() if action.menu() is not None):
+            old_menu.deleteLater()  # with its actions: the shortcut list names only the new ones
         self.menuBar().clear()
         self._build_menus()
         self.keys.set_language(language)
+        retitle_help_pages(self, language)
         self._update_title()
 
     def show_preferences(self):
@@ -436,7 +441,7 @@ class MainWindow(QMainWindow):
     # --- menus --------------------------------------------------------------------------
 
     def _action(self, menu, key, slot, shortcut=None):
-        action = QAction(tr(key, self.language), self)
+        action = QAction(tr(key, self.language), menu)  # the menu's: made anew with it in another language
         action.setObjectName(f"action_{key}")
         if shortcut is not None:
             action.setShortcut(shortcut)

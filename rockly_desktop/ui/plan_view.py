@@ -10,7 +10,7 @@ from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QColor, QPainter, QPainterPath, QPen
 from PySide6.QtWidgets import QWidget
 
-from rockly_desktop.ui.state_panels import number_format
+from rockly_desktop.core.numbers import number_format
 from rockly_desktop.ui.texts import tr
 
 _MARGIN_M = 0.75     # room around the path, in metres

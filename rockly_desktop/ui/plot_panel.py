@@ -39,6 +39,7 @@ from PySide6.QtWidgets import (
 from rockly_desktop.core.field_paths import numeric_paths, parse_mime_text
 from rockly_desktop.plotting.csv_export import write_tidy_csv
 from rockly_desktop.plotting.samples import SampleBuffer, read_new_samples
+from rockly_desktop.ui.plot_axis import LocalAxis
 from rockly_desktop.ui.texts import tr
 
 os.environ.setdefault("PYQTGRAPH_QT_LIB", "PySide6")
@@ -212,7 +213,8 @@ class PlotPanel(QWidget):
         self._toolbar.addWidget(self.export_button)
 
     def _build_plot(self):
-        self.plot_widget = pg.PlotWidget(background="w")
+        self.plot_widget = pg.PlotWidget(background="w", axisItems={
+            side: LocalAxis(self._language, orientation=side) for side in ("left", "bottom")})
         # Drags go to the panel, not to the graphics view (which would swallow them).
         self.plot_widget.setAcceptDrops(False)
         self.plot_widget.viewport().setAcceptDrops(False)

@@ -108,13 +108,27 @@ class Replay(QObject):
             release(shown)
         self.simulator.show_live_view()
         self.plan = None
-        notes = "\n".join(note.in_language(self.language) for note in data.notes)
-        short = [tr(key, self.language) for key, wanted in (("replay_cut_short", not data.complete),
-                                                             ("replay_parts_left_out", notes)) if wanted]
-        self.bar.show_timeline(self.moments.duration, data.markers, " ".join(short), notes)
+        short, notes = self._bar_note()
+        self.bar.show_timeline(self.moments.duration, data.markers, short, notes)
         if notes and not quiet:
             self._say("recording_partly_read_box", tr("recording_partly_read", self.language), notes)
         return True
+
+    def _bar_note(self) -> tuple:
+        """(the bar's short note, what it stands for) on what reading the recording left out, in the
+        window's language."""
+        if self._data is None:
+            return "", ""
+        notes = "\n".join(note.in_language(self.language) for note in self._data.notes)
+        short = [tr(key, self.language) for key, shown in (("replay_cut_short", not self._data.complete),
+                                                            ("replay_parts_left_out", notes)) if shown]
+        return " ".join(short), notes
+
+    def set_language(self, language: str):
+        """Say the bar and what a moment shows in ``language`` from now on."""
+        self.language = language
+        self.bar.set_language(language)
+        self.bar.set_note(*self._bar_note())
 
     def _say(self, name: str, title: str, text: str):
         box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, title, text)

@@ -84,16 +84,14 @@ class ReplayBar(QWidget):
         self.play_button.clicked.connect(self.toggle_play)
         self.speed = QComboBox(self)
         self.speed.setObjectName("replay_speed")
-        self.speed.setToolTip(tr("replay_speed", language))
         for speed in SPEEDS:
             self.speed.addItem(f"{speed:g}×", speed)
         self.speed.setCurrentIndex(SPEEDS.index(1.0))
         self.time_label = QLabel(self)
-        close = QToolButton(self)
-        close.setObjectName("replay_close")
-        close.setText("×")
-        close.setToolTip(tr("replay_close", language))
-        close.clicked.connect(self.close_timeline)
+        self.close_button = QToolButton(self)
+        self.close_button.setObjectName("replay_close")
+        self.close_button.setText("×")
+        self.close_button.clicked.connect(self.close_timeline)
         track = QVBoxLayout()
         track.setSpacing(0)
         track.addWidget(self.markers)
@@ -104,14 +102,28 @@ class ReplayBar(QWidget):
             row.addWidget(widget)
         row.addLayout(track, 1)
         row.addWidget(self.time_label)
-        row.addWidget(close)
+        row.addWidget(self.close_button)
         self._timer = QTimer(self)
         self._timer.setInterval(PLAY_MS)
         self._timer.timeout.connect(self._advance)
         self._played_at = None
         self._exact = None  # the time last jumped to, finer than the slider's milliseconds
-        self._show_play_state()
+        self.set_language(language)
         self.hide()
+
+    def set_language(self, language: str):
+        """Say everything in ``language`` from now on (the note is the replay's: ``set_note``)."""
+        self.language = self.markers.language = language
+        self.speed.setToolTip(tr("replay_speed", language))
+        self.close_button.setToolTip(tr("replay_close", language))
+        self._show_play_state()
+        self._show_time()
+
+    def set_note(self, note: str, details: str = ""):
+        """``note`` follows the time, ``details`` (what the note stands for) is its tooltip."""
+        self._note = note
+        self.time_label.setToolTip(details)
+        self._show_time()
 
     @property
     def position(self) -> float:
@@ -125,16 +137,14 @@ class ReplayBar(QWidget):
         """Show the bar for a recording ``duration`` s long with its ``markers``; the scrubber at its end;
         ``note`` follows the time, ``details`` (what the note stands for) is its tooltip."""
         self.pause()
-        self.time_label.setToolTip(details)
         self.duration = max(0.0, duration)
-        self._note = note
         self.markers.duration, self.markers.markers = self.duration, list(markers)
         self.markers.update()
         self.slider.blockSignals(True)  # opening shows the end; nothing is replayed until the person moves
         self.slider.setRange(0, math.ceil(self.duration * 1000))
         self.slider.setValue(self.slider.maximum())
         self.slider.blockSignals(False)
-        self._show_time()
+        self.set_note(note, details)
         self.show()
 
     def jump_to(self, seconds: float):

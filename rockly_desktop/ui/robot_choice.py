@@ -9,6 +9,7 @@ from PySide6.QtCore import QObject, Signal
 from PySide6.QtWidgets import QMessageBox
 
 from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.core.numbers import number_format
 from rockly_desktop.robot.health import AMBER, link_state, overall
 from rockly_desktop.robot.links import DEFAULT_KIND, check_available, link_kind, open_link
 from rockly_desktop.ui.connection_dialog import ConnectionDialog
@@ -163,7 +164,8 @@ class RobotChoice(QObject):
         self.status.setText(f"{text} — {where}" if where else text)  # e.g. its domain on ROS 2
         self.status.setStyleSheet(f"color: {COLOURS[level]}; font-weight: bold;")
         if status is not None and status.round_trip is not None:
-            self.status.setToolTip(tooltip_text(f"{where} — {status.round_trip * 1000:.1f} ms"))
+            took = number_format(language).format("{:.1f} ms", status.round_trip * 1000)
+            self.status.setToolTip(tooltip_text(f"{where} — {took}"))
 
     def shutdown(self):
         """Stop every robot safely (the window is closing)."""

@@ -1,5 +1,5 @@
-"""The run toolbar: Run, Pause, Step, Continue, a big red STOP, slow motion and where the program runs
-(every kind of robot link in the registry, ``robot/links.py``)."""
+"""The run toolbar: Run, Pause (Continue in its place while paused), Step, a big red STOP, slow motion
+and where the program runs (every kind of robot link in the registry, ``robot/links.py``)."""
 from PySide6.QtCore import Qt, Signal
 from PySide6.QtGui import QAction, QKeySequence
 from PySide6.QtWidgets import QComboBox, QLabel, QSlider, QStyle, QToolBar
@@ -24,7 +24,8 @@ class RunToolbar(QToolBar):
         self._language = language
         self.setObjectName("run_toolbar")
         self.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextBesideIcon)
-        self.setStyleSheet("QToolButton { font-size: 15px; font-weight: bold; padding: 6px 12px; }")
+        # Narrow enough that every command fits a 1280 px window in German too (nothing behind the » button).
+        self.setStyleSheet("QToolButton { font-size: 15px; font-weight: bold; padding: 6px 7px; }")
         icons = QStyle.StandardPixmap
         self.run_action = self._action("run", "run_tip", RUN_KEYS, icons.SP_MediaPlay)
         self.pause_action = self._action("pause", "pause_tip", "F6", icons.SP_MediaPause)
@@ -38,11 +39,11 @@ class RunToolbar(QToolBar):
         self.addAction(self.stop_action)
         stop_button = self.widgetForAction(self.stop_action)
         stop_button.setObjectName("stop_button")
-        stop_size = "font-size: 28px; padding: 12px 26px;" if big else "font-size: 18px; padding: 6px 22px;"
+        stop_size = "font-size: 28px; padding: 12px 26px;" if big else "font-size: 18px; padding: 6px 16px;"
         if big:
             self.setStyleSheet("QToolButton { font-size: 19px; font-weight: bold; padding: 10px 8px; }")
         stop_button.setStyleSheet(f"QToolButton {{ background: #d32f2f; color: white; {stop_size} font-weight: bold;"
-                                  " border-radius: 6px; margin: 2px 8px; }"
+                                  " border-radius: 6px; margin: 2px 6px; }"
                                   "QToolButton:disabled { background: #e8a0a0; }"
                                   "QToolButton:hover { background: #b71c1c; }")
         self.addSeparator()
@@ -50,7 +51,7 @@ class RunToolbar(QToolBar):
         self.speed = QSlider(Qt.Orientation.Horizontal, self)
         self.speed.setRange(0, SLIDER_STEPS)
         self.speed.setValue(SLIDER_STEPS)
-        self.speed.setFixedWidth(100 if big else 140)
+        self.speed.setFixedWidth(100 if big else 110)
         self.speed.setToolTip(tr("speed_tip", language))
         self.speed.valueChanged.connect(lambda _value: self.sig_delay_changed.emit(self.delay))
         self.addWidget(self.speed)
@@ -60,6 +61,9 @@ class RunToolbar(QToolBar):
         robot_choice = [self.addWidget(QLabel(f" {tr('run_on', language)} ", self))]
         self.backend = QComboBox(self)
         self.backend.setToolTip(tr("run_on_tip", language))
+        # as wide as the usual choices; a longer one is cut off in the box, whole in its list
+        self.backend.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToMinimumContentsLengthWithIcon)
+        self.backend.setMinimumContentsLength(14)
         for entry in link_kinds():
             self.backend.addItem(tr(entry.name, language), entry.kind)
         robot_choice += [self.addWidget(self.backend), self.addSeparator()]
@@ -86,11 +90,14 @@ class RunToolbar(QToolBar):
         return (SLIDER_STEPS - self.speed.value()) * SLOWEST_DELAY / SLIDER_STEPS
 
     def set_state(self, state: str):
-        """'idle', 'starting', 'running' or 'paused': enable the actions that apply."""
+        """'idle', 'starting', 'running' or 'paused': enable (and show) the actions that apply."""
         self._state = state
         self.reset_action.setEnabled(state == "idle" and link_kind(self.backend.currentData()).simulated)
         self.run_action.setEnabled(state == "idle")
         self.pause_action.setEnabled(state == "running")
+        # Pause and Continue take turns in one place (never both needed at once): the bar fits 1280 px in German
+        self.pause_action.setVisible(state != "paused")
+        self.continue_action.setVisible(state == "paused")
         self.step_action.setEnabled(state in ("idle", "paused"))
         self.continue_action.setEnabled(state == "paused")
         self.continue_action.setShortcut(RUN_KEYS if state == "paused" else "")

@@ -8,6 +8,7 @@ from rockly_desktop.ui.texts import tr
 STAGE_SHARE = 0.62  # of the window's width the simulator gets on stage, until the person drags the edge
 MIN_SHARE, MAX_SHARE = 0.3, 0.85
 CONSOLE_STRIP = 96  # px: on stage the console is a strip under the blocks
+BLOCKS_PX = 600  # on stage the blocks keep at least this width (toolbox included) unless the person drags
 
 
 def keep_side_docks_full_height(window):
@@ -77,12 +78,16 @@ class StageLayout(QObject):
         self._settings = settings
         self._normal_state = None
         self._share = settings.stage_share or STAGE_SHARE
+        self._persons_share = settings.stage_share is not None  # a width the person dragged is kept as it is
         self._settled = False  # the docks have the sizes given (only then is a share the person's)
+        self._given = 0  # px the simulator was given last
         self.action = QAction(window, checkable=True)
         self.action.setObjectName("action_stage")
         self.action.setShortcut(QKeySequence(Qt.Key.Key_F11))
         self.action.toggled.connect(self._toggled)
         window.installEventFilter(self)
+        # the page keeps its flyout and zoom controls off the blocks on stage (a page made anew is told again)
+        window.editor.sig_ready.connect(self._tell_page)
         # another robot shows or hides the simulator: arrange again once the window has done so
         window.robots.sig_robot_changed.connect(lambda: self.active and QTimer.singleShot(0, self, self._arrange))
 
@@ -119,6 +124,10 @@ class StageLayout(QObject):
             self._window.restoreState(self._normal_state)
             self._normal_state = None
         self._settings.stage = on
+        self._tell_page()
+
+    def _tell_page(self):
+        self._window.editor.call("setStage", {"on": self.active})
 
     def state_to_keep(self):
         """The dock layout the window keeps when it closes: the one from before the stage while on stage
@@ -158,14 +167,20 @@ class StageLayout(QObject):
         if not self.active:
             return
         window = self._window
-        window.resizeDocks([self._big_dock()], [round(window.width() * self._share)], Qt.Orientation.Horizontal)
+        share = self._share
+        if not self._persons_share:
+            share = min(share, max(MIN_SHARE, 1 - BLOCKS_PX / max(1, window.width())))
+        self._given = round(window.width() * share)
+        window.resizeDocks([self._big_dock()], [self._given], Qt.Orientation.Horizontal)
         window.resizeDocks([window.console], [CONSOLE_STRIP], Qt.Orientation.Vertical)
 
     def _keep_share(self):
         """Remember the share of the width the person left the simulator (it may have been dragged)."""
         width, big = self._window.width(), self._big_dock()
-        if self._settled and big.isVisible() and width > 0:
+        dragged = abs(big.width() - self._given) > 4  # not the width the blocks' minimum gave it
+        if self._settled and big.isVisible() and width > 0 and dragged:
             self._share = min(MAX_SHARE, max(MIN_SHARE, big.width() / width))
+            self._persons_share = True
             self._settings.stage_share = self._share
 
     def eventFilter(self, watched, event):

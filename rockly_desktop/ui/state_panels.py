@@ -10,13 +10,12 @@ ahead"); a value it does not name is shown as it comes, and ``nothing`` is what 
 of nothing (an endless distance) says. The widget redraws from the store on a timer, never
 from a robot thread.
 """
-import functools
 import math
-import string
 
-from PySide6.QtCore import QLocale, Qt, QTimer
+from PySide6.QtCore import Qt, QTimer
 from PySide6.QtWidgets import QFormLayout, QGroupBox, QScrollArea, QVBoxLayout, QWidget
 
+from rockly_desktop.core.numbers import number_format
 from rockly_desktop.core.state_store import field_value
 from rockly_desktop.profiles.i18n import localize
 from rockly_desktop.robot.laser import nearest_in_scan
@@ -32,30 +31,6 @@ GOAL_STATES = {0: "goal_pending", 1: "goal_active", 2: "goal_preempted", 3: "goa
 def _yaw_degrees(orientation):
     x, y, z, w = (orientation.get(axis, 0.0) for axis in "xyzw")
     return math.degrees(math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)))
-
-
-class LocalizedNumbers(string.Formatter):
-    """``str.format`` whose numbers use ``language``'s decimal point and group separator."""
-
-    def __init__(self, language: str):
-        super().__init__()
-        locale = QLocale(language)
-        self._separators = str.maketrans({".": locale.decimalPoint(), ",": locale.groupSeparator()})
-
-    def format_field(self, value, format_spec):
-        """``string.Formatter`` override: a number's text with this language's separators."""
-        text = super().format_field(value, format_spec)
-        if isinstance(value, (int, float)) and not isinstance(value, bool):
-            if text.startswith("-") and not text.strip("-0.,"):
-                text = text[1:]     # -0.2 rounded to "-0" is 0
-            return text.translate(self._separators)
-        return text
-
-
-@functools.cache
-def number_format(language: str) -> LocalizedNumbers:
-    """The formatter for ``language`` (made once)."""
-    return LocalizedNumbers(language)
 
 
 def row_text(store, row: dict, language: str) -> str:

@@ -28,7 +28,7 @@ def toolbar_labels(window) -> list:
 
 
 def test_the_robot_menu_and_the_run_on_box_have_distinct_names_in_both_languages(qtbot, window):
-    for language, menu, box in (("en", "&Robot", "Run on:"), ("de", "&Roboter", "Ausführen auf:")):
+    for language, menu, box in (("en", "&Robot", "Run on:"), ("de", "&Roboter", "Läuft auf:")):
         if language == "de":
             with qtbot.waitSignal(window.editor.sig_ready, timeout=30000):
                 window.set_language("de")

@@ -119,7 +119,7 @@ class RosRobot:
         if connection.lost:
             return [HealthItem("ROS master", RED, app_local_text("health_master_silent", uri=connection.master_uri))]
         link = HealthItem("ROS master", GREEN, app_local_text("health_master", uri=connection.master_uri,
-                                                              ms=f"{(connection.round_trip or 0) * 1000:.1f}"))
+                                                              ms=round((connection.round_trip or 0) * 1000, 1)))
         feed = self.follow_graph()
         publishers = {topic: count for topic, _type, count in feed.graph_topics()}
         return [link] + topic_health(interface, self.state.topics()) + server_health(

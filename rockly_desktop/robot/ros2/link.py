@@ -250,7 +250,7 @@ class Ros2Robot:
         else:
             link = HealthItem("ROS 2", GREEN, app_local_text("health_ros2", where=where,
                                                              distro=self.helper.info.get("distro", "ROS 2"),
-                                                             ms=f"{(self.connection.round_trip or 0) * 1000:.1f}"))
+                                                             ms=round((self.connection.round_trip or 0) * 1000, 1)))
         feed = self.follow_graph()
         return [link] + topic_health(interface, self.state.topics(), self._unreadable) + server_health(
             interface, lambda kind, name: f"/{name.strip('/')}" in (

@@ -70,25 +70,29 @@ def panel_sections(layout, scene):
     face = QRectF(card.left() + card_pad, card.top() + card_pad, card.width() - 2 * card_pad, max(10.0, face_h))
     sections["face"] = face
     sections["label"] = QRectF(card.left(), face.bottom() + card_pad * 0.4, card.width(), label_h)
-    # tablet first (it may be a question someone must answer), notices below it, newest first
+    # tablet first (it may be a question someone must answer), then what the arm, gripper, head and
+    # turntable are doing (kept at the bottom in either layout: it never gives way to notices), then
+    # the notices below the tablet in what is left, newest first
     notices = scene.notices[-3:][::-1]
     heights = [notice_height(scene, text, rest.width(), u, index == 0) for index, text in enumerate(notices)]
     tablet_h = min(rest.height(), tablet_height(scene, rest.width(), u))
-    n = _fitting(heights, rest.height() - tablet_h - (pad if tablet_h > 0 else 0), pad)
+    details_h = details_height(scene, rest.width(), u)
+    room = rest.height() - tablet_h - (pad if tablet_h > 0 else 0)
+    sections["details"] = None
+    if room >= details_h:
+        sections["details"] = QRectF(rest.left(), rest.bottom() - details_h, rest.width(), details_h)
+        room -= details_h + pad
+    n = _fitting(heights, room, pad)
     if notices and n == 0 and tablet_h > 0 and scene.snapshot.get("tablet") is None:
         # a tablet that is off gives way to the notices
-        tablet_h, n = 0.0, _fitting(heights, rest.height(), pad)
+        room += tablet_h + pad
+        tablet_h, n = 0.0, _fitting(heights, room, pad)
     sections["tablet"] = QRectF(rest.left(), rest.top(), rest.width(), tablet_h) if tablet_h > 0 else None
     top = rest.top() + (tablet_h + pad if tablet_h > 0 else 0)
     sections["notices"] = []
     for text, height in zip(notices[:n], heights[:n], strict=True):
         sections["notices"].append((QRectF(rest.left(), top, rest.width(), height), text))
         top += height + pad * 0.5
-    # what the arm, gripper, head and turntable are doing, at the bottom when there is room
-    details_h = details_height(scene, rest.width(), u)
-    sections["details"] = None
-    if layout.vertical and rest.bottom() - top >= details_h + pad:
-        sections["details"] = QRectF(rest.left(), rest.bottom() - details_h, rest.width(), details_h)
     return sections
 
 
