@@ -17,7 +17,7 @@ def lint_imports(cwd: Path):
 def test_layer_contracts_are_kept():
     result = lint_imports(REPO)
     assert result.returncode == 0, result.stdout + result.stderr
-    assert "Contracts: 8 kept, 0 broken." in result.stdout
+    assert "Contracts: 9 kept, 0 broken." in result.stdout
 
 
 def test_a_core_module_importing_qt_breaks_the_contracts(tmp_path):
@@ -42,7 +42,23 @@ def test_ros_outside_its_link_package_breaks_the_contracts(tmp_path):
     output = " ".join(result.stdout.split())
     assert "rockly_desktop.robot.sneaky -> rospy" in output and "rockly_desktop.robot.sneaky -> rclpy" in output
     assert "rockly_desktop.ui.sneaky -> rockly_desktop.robot.ros1.link" in output
-    assert "Contracts: 5 kept, 3 broken." in output
+    assert "Contracts: 6 kept, 3 broken." in output
+
+
+def test_the_simulators_link_naming_a_middleware_breaks_the_contracts(tmp_path):
+    """The built-in simulator's link takes its recording encoder from the registry, not from robot/ros1."""
+    shutil.copytree(REPO / "rockly_desktop", tmp_path / "rockly_desktop", ignore=shutil.ignore_patterns("__pycache__"))
+    shutil.copy(REPO / "pyproject.toml", tmp_path)
+    sim_link = tmp_path / "rockly_desktop" / "robot" / "sim_link.py"
+    sim_link.write_text(sim_link.read_text(encoding="utf-8") + (
+        "\n\ndef encoder():\n    from rockly_desktop.robot.ros1.recording_codec import Ros1Encoder\n\n"
+        "    return Ros1Encoder()\n"), encoding="utf-8")
+    result = lint_imports(tmp_path)
+    assert result.returncode == 1
+    output = " ".join(result.stdout.split())
+    assert "The built-in simulator's link names no middleware" in output
+    assert "rockly_desktop.robot.sim_link -> rockly_desktop.robot.ros1.recording_codec" in output
+    assert "Contracts: 8 kept, 1 broken." in output
 
 
 def test_no_rockly_module_mentions_a_particular_robot():
