@@ -61,6 +61,23 @@ def test_the_simulators_link_naming_a_middleware_breaks_the_contracts(tmp_path):
     assert "Contracts: 8 kept, 1 broken." in output
 
 
+def test_rclpy_on_rocklys_side_of_ros2_or_the_helper_imported_there_breaks_the_contracts(tmp_path):
+    """By package: any module of robot/ros2 outside helper/ (sim_bridge, or one added later) is Rockly's side."""
+    shutil.copytree(REPO / "rockly_desktop", tmp_path / "rockly_desktop", ignore=shutil.ignore_patterns("__pycache__"))
+    shutil.copy(REPO / "pyproject.toml", tmp_path)
+    ros2 = tmp_path / "rockly_desktop" / "robot" / "ros2"
+    sim_bridge = ros2 / "sim_bridge.py"
+    sim_bridge.write_text(sim_bridge.read_text(encoding="utf-8") + "\n\ndef spin():\n    import rclpy\n\n"
+                          "    rclpy.init()\n", encoding="utf-8")
+    (ros2 / "later.py").write_text("from rockly_desktop.robot.ros2.helper import ros_values\n")
+    result = lint_imports(tmp_path)
+    assert result.returncode == 1
+    output = " ".join(result.stdout.split())
+    assert "rockly_desktop.robot.ros2.sim_bridge -> rclpy" in output
+    assert "rockly_desktop.robot.ros2.later -> rockly_desktop.robot.ros2.helper.ros_values" in output
+    assert "Contracts: 7 kept, 2 broken." in output
+
+
 def test_no_rockly_module_mentions_a_particular_robot():
     """Robots are profiles: Rockly's own code must not know any of them by name."""
     robots = [folder.name for folder in (REPO / "profiles").iterdir() if (folder / "profile.yaml").exists()]
