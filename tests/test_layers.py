@@ -14,15 +14,27 @@ def lint_imports(cwd: Path):
                           env={"PYTHONPATH": str(cwd), "PATH": "/usr/bin:/bin"}, timeout=120)
 
 
+def copy_of_rockly(folder: Path):
+    """Rockly's package and its contracts, copied into ``folder`` to break a contract there."""
+    shutil.copytree(REPO / "rockly_desktop", folder / "rockly_desktop", ignore=shutil.ignore_patterns("__pycache__"))
+    shutil.copy(REPO / "pyproject.toml", folder)
+
+
+def broken_contracts(folder: Path) -> str:
+    """What lint-imports says of the copy in ``folder``, whose contracts must break (on one line)."""
+    result = lint_imports(folder)
+    assert result.returncode == 1, result.stdout + result.stderr
+    return " ".join(result.stdout.split())
+
+
 def test_layer_contracts_are_kept():
     result = lint_imports(REPO)
     assert result.returncode == 0, result.stdout + result.stderr
-    assert "Contracts: 8 kept, 0 broken." in result.stdout
+    assert "Contracts: 9 kept, 0 broken." in result.stdout
 
 
 def test_a_core_module_importing_qt_breaks_the_contracts(tmp_path):
-    shutil.copytree(REPO / "rockly_desktop", tmp_path / "rockly_desktop", ignore=shutil.ignore_patterns("__pycache__"))
-    shutil.copy(REPO / "pyproject.toml", tmp_path)
+    copy_of_rockly(tmp_path)
     (tmp_path / "rockly_desktop" / "core" / "sneaky.py").write_text(
         "from PySide6.QtWidgets import QWidget\nfrom rockly_desktop.ui import main_window\n")
     result = lint_imports(tmp_path)
@@ -33,16 +45,40 @@ def test_a_core_module_importing_qt_breaks_the_contracts(tmp_path):
 
 def test_ros_outside_its_link_package_breaks_the_contracts(tmp_path):
     """Only robot/ros1 imports rospy, only robot/ros2 rclpy, and the rest reaches them through the registry."""
-    shutil.copytree(REPO / "rockly_desktop", tmp_path / "rockly_desktop", ignore=shutil.ignore_patterns("__pycache__"))
-    shutil.copy(REPO / "pyproject.toml", tmp_path)
+    copy_of_rockly(tmp_path)
     (tmp_path / "rockly_desktop" / "robot" / "sneaky.py").write_text("import rospy\nimport rclpy\n")
     (tmp_path / "rockly_desktop" / "ui" / "sneaky.py").write_text("from rockly_desktop.robot.ros1 import link\n")
-    result = lint_imports(tmp_path)
-    assert result.returncode == 1
-    output = " ".join(result.stdout.split())
+    output = broken_contracts(tmp_path)
     assert "rockly_desktop.robot.sneaky -> rospy" in output and "rockly_desktop.robot.sneaky -> rclpy" in output
     assert "rockly_desktop.ui.sneaky -> rockly_desktop.robot.ros1.link" in output
-    assert "Contracts: 5 kept, 3 broken." in output
+    assert "Contracts: 6 kept, 3 broken." in output
+
+
+def test_the_simulators_link_naming_a_middleware_breaks_the_contracts(tmp_path):
+    """The built-in simulator's link takes its recording encoder from the registry, not from robot/ros1."""
+    copy_of_rockly(tmp_path)
+    sim_link = tmp_path / "rockly_desktop" / "robot" / "sim_link.py"
+    sim_link.write_text(sim_link.read_text(encoding="utf-8") + (
+        "\n\ndef encoder():\n    from rockly_desktop.robot.ros1.recording_codec import Ros1Encoder\n\n"
+        "    return Ros1Encoder()\n"), encoding="utf-8")
+    output = broken_contracts(tmp_path)
+    assert "The built-in simulator's link names no middleware" in output
+    assert "rockly_desktop.robot.sim_link -> rockly_desktop.robot.ros1.recording_codec" in output
+    assert "Contracts: 8 kept, 1 broken." in output
+
+
+def test_rclpy_on_rocklys_side_of_ros2_or_the_helper_imported_there_breaks_the_contracts(tmp_path):
+    """By package: any module of robot/ros2 outside helper/ (sim_bridge, or one added later) is Rockly's side."""
+    copy_of_rockly(tmp_path)
+    ros2 = tmp_path / "rockly_desktop" / "robot" / "ros2"
+    sim_bridge = ros2 / "sim_bridge.py"
+    sim_bridge.write_text(sim_bridge.read_text(encoding="utf-8") + "\n\ndef spin():\n    import rclpy\n\n"
+                          "    rclpy.init()\n", encoding="utf-8")
+    (ros2 / "later.py").write_text("from rockly_desktop.robot.ros2.helper import ros_values\n")
+    output = broken_contracts(tmp_path)
+    assert "rockly_desktop.robot.ros2.sim_bridge -> rclpy" in output
+    assert "rockly_desktop.robot.ros2.later -> rockly_desktop.robot.ros2.helper.ros_values" in output
+    assert "Contracts: 7 kept, 2 broken." in output
 
 
 def test_no_rockly_module_mentions_a_particular_robot():

@@ -59,6 +59,8 @@ class LinkKind:
     text ``explanation``; they are remembered under ``settings_group/PROFILE/NAME``.
     ``sim_option`` (e.g. ``--ros``) makes ``rockly sim`` serve the simulator on this link's
     middleware through ``sim_server`` (``module:callable``, see ``serve_simulator``).
+    ``recording_encoder`` (``module:callable``, see ``recording_encoder``) encodes the robot's topics
+    in a recording of a run on this link; None: they are recorded as JSON.
     """
 
     kind: str
@@ -71,6 +73,7 @@ class LinkKind:
     explanation: str = None
     sim_option: str = None
     sim_server: str = None
+    recording_encoder: str = None
 
     def link_class(self):
         """The link class (imported now, on first use)."""
@@ -107,16 +110,22 @@ ROS2_SETTINGS = (
                            "(default: $ROS_DISTRO or auto)"),
 )
 
+ROS1_ENCODER = "rockly_desktop.robot.ros1.recording_codec:profile_encoder"
+ROS2_ENCODER = "rockly_desktop.robot.ros2.recording_codec:profile_encoder"
+
 LINKS = {entry.kind: entry for entry in (
+    # the simulator's ROS-shaped messages are recorded as ROS 1 writes them: a run on it reads like one on the robot
     LinkKind("sim", "rockly_desktop.robot.sim_link:SimulatedRobot", "backend_simulator", "the built-in simulator",
-             simulated=True),
+             simulated=True, recording_encoder=ROS1_ENCODER),
     LinkKind("ros1", "rockly_desktop.robot.ros1.link:RosRobot", "backend_ros1", "a robot over ROS 1",
              settings=ROS1_SETTINGS,
              settings_group="ros", explanation="connect_explanation",
-             sim_option="--ros", sim_server="rockly_desktop.robot.ros1.sim_bridge:serve_simulator"),
+             sim_option="--ros", sim_server="rockly_desktop.robot.ros1.sim_bridge:serve_simulator",
+             recording_encoder=ROS1_ENCODER),
     LinkKind("ros2", "rockly_desktop.robot.ros2.link:Ros2Robot", "backend_ros2", "a robot over ROS 2",
              settings=ROS2_SETTINGS, settings_group="ros2", explanation="connect_explanation_ros2",
-             sim_option="--ros2", sim_server="rockly_desktop.robot.ros2.sim_bridge:serve_simulator"),
+             sim_option="--ros2", sim_server="rockly_desktop.robot.ros2.sim_bridge:serve_simulator",
+             recording_encoder=ROS2_ENCODER),
 )}
 DEFAULT_KIND = "sim"
 
@@ -168,6 +177,20 @@ def serve_simulator(kind: str, profile, connection: dict = None, speed: float = 
         raise RobotUnavailable(f"the robot link '{kind}' cannot serve a simulator", "no_sim_server", kind=kind)
     check_available(kind)
     return _load(entry.sim_server)(profile, connection or {}, speed=speed, tablet=tablet)
+
+
+def recording_encoder(kind: str, profile, msg_types=()):
+    """The encoder of ``kind``'s entry for a recording of ``profile``'s robot (``RobotLink.recording_encoder``),
+    the message classes of ``msg_types`` made now; None when the entry names none or its middleware's
+    tools are not installed here (e.g. genpy): the robot's topics are then recorded as JSON."""
+    target = link_kind(kind).recording_encoder
+    if target is None:
+        return None
+    try:
+        make = _load(target)
+    except ImportError:
+        return None
+    return make(profile, msg_types)
 
 
 def _load(target: str):

@@ -1,10 +1,10 @@
 """The built-in simulator as a robot link (``robot/link.py``): the profile's simulator in this process."""
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.state_store import StateStore
+from rockly_desktop.robot import link_parts, links
 from rockly_desktop.robot.health import GREEN, HealthItem, server_health, topic_health
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.ros_versions import link_backend, ros_name, short_type
-from rockly_desktop.robot.safe_stop import run_safe_stop
+from rockly_desktop.robot.ros_versions import ros_name, short_type
 from rockly_desktop.robot.sim_world import SimBackend, SimWorld
 
 
@@ -96,19 +96,16 @@ class SimulatedRobot:
 
     def safe_stop(self) -> list:
         """Do the profile's safe stop now; returns what failed."""
-        return run_safe_stop(self.profile.safe_stop, link_backend(self, Interrupt(), stopping=True))
+        return link_parts.safe_stop(self)
 
     def recording_encoder(self):
-        """The simulator's ROS-shaped messages as ROS 1 writes them, where genpy is installed (else None:
-        JSON). One encoder for the session, whose message classes for the simulator's topics are made
-        on the first call, before a run starts (not by the recording's writer while the program runs)."""
+        """The simulator's ROS-shaped messages as the registry's encoder for the simulator writes them
+        (ROS 1's, where genpy is installed; else None: JSON). One encoder for the session, whose message
+        classes for the simulator's topics are made on the first call, before a run starts (not by the
+        recording's writer while the program runs)."""
         if self._encoder is None:
-            try:
-                from rockly_desktop.robot.ros1.recording_codec import Ros1Encoder
-            except ImportError:
-                return None
-            self._encoder = Ros1Encoder(self.profile.message_folders)
-            self._encoder.prepare(msg_type for _topic, msg_type in self.world.topics())
+            self._encoder = links.recording_encoder(self.kind, self.profile,
+                                                    [msg_type for _topic, msg_type in self.world.topics()])
         return self._encoder
 
     def reset(self):

@@ -21,6 +21,7 @@ from rockly_desktop.robot.links import (
     open_link,
     serve_simulator,
 )
+from rockly_desktop.robot.sim_link import SimulatedRobot
 from rockly_desktop.ui.texts import robot_problem, tr
 
 REPO = Path(__file__).resolve().parents[2]
@@ -186,5 +187,22 @@ def test_the_simulator_link_opens_from_the_registry_and_needs_no_connection(hobb
         assert str(link.detail) == "the built-in simulator is running"
         assert link.detail.in_language("de") == "der eingebaute Simulator läuft"
         assert robot.snapshot() is not None and robot.safe_stop() == []
+    finally:
+        robot.shutdown()
+
+
+def test_each_kind_names_its_recording_encoder_and_the_simulator_records_as_ros1(hobbit):
+    """The registry chooses a link's encoder, so the simulator's link names no middleware itself."""
+    encodings = {entry.kind: links.recording_encoder(entry.kind, hobbit) for entry in link_kinds()}
+    assert {kind: encoder.message_encoding for kind, encoder in encodings.items()} == {
+        "sim": "ros1", "ros1": "ros1", "ros2": "cdr"}
+
+
+def test_an_encoder_whose_middleware_is_not_installed_records_as_json(monkeypatch, hobbit):
+    monkeypatch.setitem(links.LINKS, "sim", replace(link_kind("sim"), recording_encoder="no_such_middleware:encoder"))
+    assert links.recording_encoder("sim", hobbit) is None
+    robot = SimulatedRobot(hobbit, speed=20)
+    try:
+        assert robot.recording_encoder() is None
     finally:
         robot.shutdown()

@@ -3,11 +3,10 @@ import importlib.util
 
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.state_store import StateStore
+from rockly_desktop.robot import link_parts, links
 from rockly_desktop.robot.health import GREEN, RED, HealthItem, server_health, topic_health
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.link import LinkStatus, LinkWarning
-from rockly_desktop.robot.ros_versions import link_backend
-from rockly_desktop.robot.safe_stop import run_safe_stop
 
 SETUP_STEP = "run `make setup` in Rockly's folder (it installs Debian's ROS 1: python3-rospy and its tools)"
 
@@ -42,7 +41,7 @@ class RosRobot:
 
         self.state = StateStore(decode=shown_message)
         self.graph.service_watchers.append(self.state.record)  # this node's calls, e.g. the tablet's questions
-        self._feed = None
+        self._following = link_parts.GraphFollowing(self._new_feed)
 
     @classmethod
     def unavailable(cls):
@@ -61,13 +60,15 @@ class RosRobot:
         connection = connection or {}
         return cls(profile, connection.get("master") or None, connection.get("host") or None, timeout)
 
+    def _new_feed(self):
+        """A state feed filling ``state`` from the graph the link works through now."""
+        from rockly_desktop.robot.ros1.state_feed import RosStateFeed
+
+        return RosStateFeed(self.graph, self.state)
+
     def follow_graph(self):
         """Start filling ``state`` from every topic of the graph (for the panels); idempotent."""
-        if self._feed is None:
-            from rockly_desktop.robot.ros1.state_feed import RosStateFeed
-
-            self._feed = RosStateFeed(self.graph, self.state)
-        return self._feed
+        return self._following.follow()
 
     def backend(self, interrupt: Interrupt):
         """A backend whose waits end when ``interrupt`` is stopped or the master is lost."""
@@ -81,9 +82,7 @@ class RosRobot:
 
     def recording_encoder(self):
         """The robot's messages as they came over the wire (ROS 1's own encoding)."""
-        from rockly_desktop.robot.ros1.recording_codec import Ros1Encoder
-
-        return Ros1Encoder(self.profile.message_folders)
+        return links.recording_encoder(self.kind, self.profile)
 
     def reset(self):
         """A real robot cannot be put back."""
@@ -106,11 +105,11 @@ class RosRobot:
 
     def graph_topics(self) -> list:
         """(topic, type, publisher count) of the ROS graph (once ``follow_graph`` runs)."""
-        return self._feed.graph_topics() if self._feed is not None else []
+        return self._following.graph_topics()
 
     def own_publishers(self) -> dict:
         """{topic: Rockly's own publishers on it} (not in ``graph_topics``), once ``follow_graph`` runs."""
-        return self._feed.own_publishers() if self._feed is not None else {}
+        return self._following.own_publishers()
 
     def health(self) -> list:
         """HealthItems: the master (with its round trip), the robot's topics, services and action servers."""
@@ -128,11 +127,9 @@ class RosRobot:
 
     def safe_stop(self) -> list:
         """Do the profile's safe stop now; returns what failed."""
-        return run_safe_stop(self.profile.safe_stop, link_backend(self, Interrupt(), stopping=True))
+        return link_parts.safe_stop(self)
 
     def shutdown(self):
         """Stop the robot safely and stop following the graph; the node stays up."""
-        if self._feed is not None:
-            self._feed.stop()
-            self._feed = None
+        self._following.stop()
         self.safe_stop()

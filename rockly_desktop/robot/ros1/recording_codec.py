@@ -51,3 +51,11 @@ class Ros1Encoder:
         buffer = BytesIO()
         message.serialize(buffer)
         return message._full_text, buffer.getvalue()
+
+
+def profile_encoder(profile, msg_types=()) -> Ros1Encoder:
+    """The encoder of ``profile``'s robot (its own message definitions beside the installed packages), the
+    classes of ``msg_types`` made now (``Ros1Encoder.prepare``). Named by the robot-link registry."""
+    encoder = Ros1Encoder(profile.message_folders)
+    encoder.prepare(msg_types)
+    return encoder

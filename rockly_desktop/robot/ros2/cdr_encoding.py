@@ -1,10 +1,10 @@
 """Messages encoded in Rockly's process as ROS 2 sends them (CDR), so the helper publishes them as they are.
 
-The helper gives a type's layout (``layouts``); ``MessageEncoder`` turns a message dict into the
+The helper gives a type's layout (``helper.layouts``); ``MessageEncoder`` turns a message dict into the
 bytes rclpy would serialise from it: little-endian CDR after a 4-byte encapsulation header, each
 number aligned to its size from the header's end, strings and sequences led by a 32-bit length.
 
-The encoder takes only what the helper's own way (``ros_values.to_message`` with rclpy's field
+The encoder takes only what the helper's own way (``helper.ros_values.to_message`` with rclpy's field
 checks) would take and encode the same: a value it is not sure of (a string where a number
 belongs, an unknown field, a number out of its type's range, a list too long) raises
 NotEncodable, and that message goes to the helper as fields, which then says what is wrong in its
@@ -28,7 +28,7 @@ class NotEncodable(Exception):
 
 
 class MessageEncoder:
-    """Encodes message dicts of one type (its ``layouts`` layout) as CDR bytes."""
+    """Encodes message dicts of one type (its ``helper.layouts`` layout) as CDR bytes."""
 
     def __init__(self, layout):
         self._write = _message_writer(layout, "")

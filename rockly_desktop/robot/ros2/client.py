@@ -34,7 +34,7 @@ spec = importlib.util.spec_from_file_location("rockly_desktop", sys.argv[1] + "/
                                               submodule_search_locations=[sys.argv[1]])
 package = sys.modules["rockly_desktop"] = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(package)
-from rockly_desktop.robot.ros2.node import main
+from rockly_desktop.robot.ros2.helper.node import main
 main()
 """
 log = logging.getLogger(__name__)

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.message_arrays import as_shown
 from rockly_desktop.core.state_store import StateStore
+from rockly_desktop.robot import link_parts, links
 from rockly_desktop.robot.health import AMBER, GREEN, RED, HealthItem, server_health, topic_health
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.link import LinkStatus
@@ -26,8 +27,7 @@ from rockly_desktop.robot.ros2.environment import (
     ros2_name,
     ros2_python,
 )
-from rockly_desktop.robot.ros_versions import base_types, link_backend
-from rockly_desktop.robot.safe_stop import run_safe_stop
+from rockly_desktop.robot.ros_versions import base_types
 
 log = logging.getLogger(__name__)
 
@@ -87,8 +87,7 @@ class Ros2Robot:
         self.settings = settings or Ros2Settings()
         self.ros_distribution = ros_distribution
         self.state = StateStore(decode=as_shown)  # the helper's compact arrays: small ones as lists
-        self._feed = None
-        self._feed_lock = threading.Lock()
+        self._following = link_parts.GraphFollowing(self._new_feed)
         self._shut = threading.Event()
         self.replaced = None  # the last Replacement of a lost helper
         self._replacing = None  # why the helper being replaced was lost (a catalogue text); None: not replacing
@@ -132,10 +131,7 @@ class Ros2Robot:
         """Take the spare (or start a helper) until one works, send the safe stop through it before any
         run's command, follow the graph again if it was followed."""
         reason = self._replacing
-        with self._feed_lock:
-            feed, self._feed = self._feed, None
-        if feed is not None:
-            feed.stop()
+        followed = self._following.stop()
         while True:
             try:
                 self._attach(Ros2Helper.get(self.settings, spare=True), match=False)
@@ -151,7 +147,7 @@ class Ros2Robot:
         self._replacing = None
         self._attached.set()
         log.warning("the ROS 2 helper was replaced (%s); safe stop failures: %s", reason, failures or "none")
-        if feed is not None and not self._shut.is_set():
+        if followed and not self._shut.is_set():
             self.follow_graph()
 
     def graph_for_run(self, interrupt: Interrupt) -> Ros2Graph:
@@ -180,14 +176,15 @@ class Ros2Robot:
         connection = connection or {}
         return cls(profile, Ros2Settings.from_connection(connection), declared_distribution(connection))
 
+    def _new_feed(self):
+        """A state feed filling ``state`` from the graph the link works through now."""
+        from rockly_desktop.robot.ros2.state_feed import Ros2StateFeed
+
+        return Ros2StateFeed(self.graph, self.state)
+
     def follow_graph(self):
         """Start filling ``state`` from every topic of the graph (for the panels); idempotent."""
-        with self._feed_lock:
-            if self._feed is None:
-                from rockly_desktop.robot.ros2.state_feed import Ros2StateFeed
-
-                self._feed = Ros2StateFeed(self.graph, self.state)
-            return self._feed
+        return self._following.follow()
 
     def backend(self, interrupt: Interrupt):
         """A backend whose waits end when ``interrupt`` is stopped or the helper is gone; made at once,
@@ -200,9 +197,7 @@ class Ros2Robot:
 
     def recording_encoder(self):
         """The robot's messages as ROS 2 writes them (CDR; ``ros2msg`` schemas from ROS 2's ``.msg`` files)."""
-        from rockly_desktop.robot.ros2.recording_codec import Ros2Encoder
-
-        return Ros2Encoder()
+        return links.recording_encoder(self.kind, self.profile)
 
     def reset(self):
         """A real robot cannot be put back."""
@@ -220,11 +215,11 @@ class Ros2Robot:
 
     def graph_topics(self) -> list:
         """(topic, type, publisher count) of the ROS 2 graph (once ``follow_graph`` runs)."""
-        return self._feed.graph_topics() if self._feed is not None else []
+        return self._following.graph_topics()
 
     def own_publishers(self) -> dict:
         """{topic: Rockly's own publishers on it} (not in ``graph_topics``), once ``follow_graph`` runs."""
-        return self._feed.own_publishers() if self._feed is not None else {}
+        return self._following.own_publishers()
 
     def health(self) -> list:
         """HealthItems: the link (domain, discovery range; a helper lost or replaced lately), the
@@ -259,7 +254,7 @@ class Ros2Robot:
     def safe_stop(self) -> list:
         """Do the profile's safe stop now (whatever the program's last commands did); returns what failed."""
         self.helper.drop_failures()
-        return run_safe_stop(self.profile.safe_stop, link_backend(self, Interrupt(), stopping=True))
+        return link_parts.safe_stop(self)
 
     def shutdown(self):
         """Stop the robot safely, stop following the graph and end the helper (its last act is the
@@ -268,10 +263,7 @@ class Ros2Robot:
         replacer = self._replacer
         if replacer is not None:
             replacer.join(timeout=10.0)  # the helper it takes is then ended below
-        with self._feed_lock:
-            feed, self._feed = self._feed, None
-        if feed is not None:
-            feed.stop()
+        self._following.stop()
         if not self.helper.lost:
             self.safe_stop()
             self.graph.close()

@@ -3,7 +3,7 @@
 As on ROS 1 (``robot.ros1.sim_bridge``), the manifest's ``ros_interface`` says what the real
 robot subscribes, publishes, serves and offers as actions. Messages from ROS 2 go into the
 world; what the simulator publishes goes out; services and actions are answered by the
-simulator's handlers (the helper's ``sim_serving`` holds the ROS 2 side). Endpoints whose
+simulator's handlers (``helper.sim_serving`` holds the ROS 2 side, in the helper process). Endpoints whose
 interface package ROS 2's environment lacks (a robot's own messages) are left out, said once.
 
 ``Ros2SimulatorNode`` is the whole of ``rockly sim PROFILE --ros2`` (made by ``serve_simulator``,

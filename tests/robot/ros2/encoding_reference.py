@@ -28,7 +28,7 @@ def main():
     load_helper_side()
     from rclpy.serialization import deserialize_message, serialize_message
 
-    from rockly_desktop.robot.ros2.ros_values import from_message, interface_class, to_message
+    from rockly_desktop.robot.ros2.helper.ros_values import from_message, interface_class, to_message
 
     answers = []
     for type_name, fields, raw in pickle.load(sys.stdin.buffer):

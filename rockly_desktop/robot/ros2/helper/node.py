@@ -1,8 +1,8 @@
 """Rockly's ROS 2 helper process: one rclpy node that does what Rockly asks over stdin/stdout.
 
-Started by ``client.Ros2Helper`` with ``.venv-ros2``'s Python (which imports this package from
-Rockly's folder and calls ``main``); it imports rclpy and this package's helper-side modules
-only. Requests come as ``wire`` frames on stdin; the node
+Started by ``robot.ros2.client.Ros2Helper`` with ``.venv-ros2``'s Python (which imports
+``rockly_desktop`` from Rockly's folder and calls ``main``); it imports rclpy, this package's
+modules and ``robot.ros2.wire`` only. Requests come as ``wire`` frames on stdin; the node
 spins in its own thread (subscription, feedback and result callbacks), waits that may take a
 while (a service or action server to appear) run in a small pool, everything else inline.
 
@@ -22,9 +22,10 @@ from rclpy.action import ActionClient
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.signals import SignalHandlerOptions
 
-from rockly_desktop.robot.ros2 import qos, wire
-from rockly_desktop.robot.ros2.layouts import layout
-from rockly_desktop.robot.ros2.ros_values import (
+from rockly_desktop.robot.ros2 import wire
+from rockly_desktop.robot.ros2.helper import qos
+from rockly_desktop.robot.ros2.helper.layouts import layout
+from rockly_desktop.robot.ros2.helper.ros_values import (
     BadValue,
     MissingInterface,
     from_message,
@@ -33,7 +34,7 @@ from rockly_desktop.robot.ros2.ros_values import (
     to_message,
     to_parameter_value,
 )
-from rockly_desktop.robot.ros2.topic_reader import TopicReader
+from rockly_desktop.robot.ros2.helper.topic_reader import TopicReader
 
 FIRST_PUBLISH_WAIT = 2.0  # a new publisher waits this long for the graph's subscribers to match
 DISCOVERY_SECONDS = 5.0  # a new DDS participant may take 2 s (a busy machine: more) to discover the others
@@ -496,7 +497,7 @@ class Helper:
     # --- serving a simulator (see sim_serving)
     def op_sim_serve(self, services, actions):
         """Serve the world's services and actions (names -> types) from the ``rockly_sim`` node."""
-        from rockly_desktop.robot.ros2.sim_serving import SimServing
+        from rockly_desktop.robot.ros2.helper.sim_serving import SimServing
 
         if self.sim is None:
             self.sim = SimServing(rclpy, self.event)

@@ -24,7 +24,7 @@ from rosidl_parser.definition import (
     UnboundedString,
 )
 
-from rockly_desktop.robot.ros2.ros_values import class_of, is_header, is_time, slots
+from rockly_desktop.robot.ros2.helper.ros_values import class_of, is_header, is_time, slots
 
 _CODES = {"boolean": "?", "int8": "b", "uint8": "B", "int16": "h", "uint16": "H", "int32": "i", "uint32": "I",
           "int64": "q", "uint64": "Q", "float": "f", "double": "d"}

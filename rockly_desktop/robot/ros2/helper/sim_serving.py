@@ -14,7 +14,7 @@ from rclpy.action import ActionServer, CancelResponse
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.executors import MultiThreadedExecutor
 
-from rockly_desktop.robot.ros2.ros_values import from_message, interface_class, to_message
+from rockly_desktop.robot.ros2.helper.ros_values import from_message, interface_class, to_message
 
 ANSWER_WAIT = 600.0  # a person may take a while to answer a tablet question
 POLL_SECONDS = 0.02

@@ -1,0 +1,47 @@
+"""What the robot links (``robot/link.py``) share: the profile's safe stop, and following the robot's graph."""
+import threading
+
+from rockly_desktop.robot.interrupt import Interrupt
+from rockly_desktop.robot.ros_versions import link_backend
+from rockly_desktop.robot.safe_stop import run_safe_stop
+
+
+def safe_stop(link) -> list:
+    """Do ``link``'s profile's safe stop now, through a backend of the link's that nothing interrupts
+    and that sends in the types its robot's graph taught; returns what failed."""
+    return run_safe_stop(link.profile.safe_stop, link_backend(link, Interrupt(), stopping=True))
+
+
+class GraphFollowing:
+    """A link's state feed (``graph_topics``, ``own_publishers``, ``services``, ``stop``), started by
+    ``start()`` on the first ``follow`` and stopped by ``stop``; until then the robot's graph is empty."""
+
+    def __init__(self, start):
+        self._start = start
+        self._feed = None
+        self._lock = threading.Lock()
+
+    def follow(self):
+        """The feed, started now if it is not running; idempotent."""
+        with self._lock:
+            if self._feed is None:
+                self._feed = self._start()
+            return self._feed
+
+    def stop(self) -> bool:
+        """Stop the feed; returns whether it was running (to follow again on a new connection)."""
+        with self._lock:
+            feed, self._feed = self._feed, None
+        if feed is not None:
+            feed.stop()
+        return feed is not None
+
+    def graph_topics(self) -> list:
+        """(topic, type, publisher count) of the robot's graph; empty while not followed."""
+        feed = self._feed
+        return feed.graph_topics() if feed is not None else []
+
+    def own_publishers(self) -> dict:
+        """{topic: Rockly's own publishers on it}; empty while not followed."""
+        feed = self._feed
+        return feed.own_publishers() if feed is not None else {}
