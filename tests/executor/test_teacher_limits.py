@@ -156,7 +156,7 @@ def test_navigation_is_refused_under_a_limit_below_its_speed(hobbit, robot, lang
     (Limits(), "en", None),
     (Limits(max_turn=45), "en", "The teacher's limits apply: turning at most 45°/s."),
     (Limits(max_speed=0.2, switched_off=frozenset({"arm", "navigation", "unknown"})), "de",
-     "Es gelten die Grenzen der Lehrkraft: Fahren höchstens 0.2 m/s; ausgeschaltet: Arm und Greifer, Navigation."),
+     "Es gelten die Grenzen der Lehrkraft: Fahren höchstens 0,2 m/s; ausgeschaltet: Arm und Greifer, Navigation."),
 ])
 def test_the_line_saying_which_limits_apply(hobbit, limits, language, line):
     assert limits_line(hobbit, limits, language) == line

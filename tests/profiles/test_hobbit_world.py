@@ -125,7 +125,7 @@ def test_a_navigation_goal_outside_the_house_is_aborted(sim, backend, hobbit):
     with pytest.raises(RobotCommandError) as caught:
         hobbit.navigate_to(7, 1)
     assert caught.value.in_language("de") == ("HOBBIT konnte das Ziel nicht erreichen: "
-                                              "das Ziel (7.00, 1.00) liegt außerhalb der Karte")
+                                              "das Ziel (7,00, 1,00) liegt außerhalb der Karte")
 
 
 def test_a_navigation_that_bumps_on_the_way_is_aborted_there(world, sim, hobbit):

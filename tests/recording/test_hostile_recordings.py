@@ -181,4 +181,4 @@ def test_reading_stops_at_its_bounds_on_everything_and_says_how_far_it_read(tmp_
     kept = read_recording(path)
     assert len(kept.topic_data["/camera"]) == 2 and kept.on(channels.RUN)[-1].data["event"] == "end"
     assert [note.in_language("de") for note in kept.notes()] == [
-        "Die Topics des Roboters sind zu groß, um sie ganz zu behalten: sie werden bis 0.0 s gezeigt."]
+        "Die Topics des Roboters sind zu groß, um sie ganz zu behalten: sie werden bis 0,0 s gezeigt."]
