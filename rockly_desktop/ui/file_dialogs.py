@@ -122,7 +122,7 @@ class ConfinedFileDialog(QFileDialog):
 
     def _refuse(self, key: str, path: str):
         language = self._language
-        folders = ", ".join(f"“{folder}”" for folder in self._folders)
+        folders = ", ".join(f"“{folder.name}”" for folder in self._folders)  # the sidebar's names
         if self.problem_box is not None:
             self.problem_box.deleteLater()
         self.problem_box = plain_message_box(self, QMessageBox.Icon.Information, tr("kiosk_refused_title", language),

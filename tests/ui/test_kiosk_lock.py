@@ -128,7 +128,7 @@ def test_a_visitors_save_goes_to_the_visitors_folder_and_never_over_the_start_pr
     assert failures == []
     assert seen[0] == ("in", str(visitors))
     for attempt, still_open, message in seen[1:3]:
-        assert still_open and "is outside the folders this stand uses" in message, attempt
+        assert still_open and "is not in this stand's folders" in message, attempt
     assert seen[3][1] and "“taken.rockly” already exists" in seen[3][2]
     assert start.read_bytes() == teachers_bytes
     assert "hobbit_emo" in (visitors / "my robot.rockly").read_text()
@@ -190,7 +190,7 @@ def test_the_open_dialog_lists_and_takes_nothing_outside_the_kiosk_folders(qtbot
     assert seen["sidebar"] == [str(programs.resolve()), str(visitors.resolve())]
     assert seen["completions"] == []
     still_open, folder, message = seen["after /etc/"]
-    assert still_open and folder == str(programs.resolve()) and "“/etc/” is outside the folders" in message
+    assert still_open and folder == str(programs.resolve()) and "“/etc/” is not in this stand" in message
     assert outcomes == [False]
 
 
