@@ -53,6 +53,11 @@ class ConsoleDock(QDockWidget):
         self.view.setTextCursor(cursor)
         self.view.ensureCursorVisible()
 
+    def clear(self):
+        """Empty the log and go back to it (the kiosk's next visitor starts with a blank console)."""
+        self.view.clear()
+        self.show_live()
+
     def lines(self) -> list:
         """The console's lines without their time stamps."""
         return [line[10:] for line in self.view.toPlainText().splitlines()]

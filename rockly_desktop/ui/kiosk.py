@@ -1,9 +1,11 @@
-"""Kiosk mode for a fair stand (``rockly --kiosk [PROGRAM]``): the stage layout, a big STOP, no way
-out without the teacher's PIN or key chord, file dialogs kept in one folder, and a fresh start
-for the next visitor after a few minutes without input."""
+"""Kiosk mode for a fair stand (``rockly --kiosk [PROGRAM]``): the stage layout, a big STOP that
+cannot be hidden, no context menus, no way out without the teacher's PIN or key chord (nor to
+the robot choice and Preferences), a window that comes back full screen, file dialogs kept in
+the kiosk's folders, a start program nobody can write over, and a fresh start for the next
+visitor after a few minutes without input."""
 from datetime import datetime
 
-from PySide6.QtCore import QEvent, QObject, Qt
+from PySide6.QtCore import QEvent, QObject, Qt, QTimer
 from PySide6.QtGui import QKeySequence, QShortcut
 from PySide6.QtWidgets import (
     QApplication,
@@ -12,6 +14,7 @@ from PySide6.QtWidgets import (
     QDockWidget,
     QLabel,
     QLineEdit,
+    QToolBar,
     QVBoxLayout,
 )
 
@@ -41,7 +44,7 @@ class Kiosk(QObject):
         self.start_program = str(start_program) if start_program else None
         self._may_close = False
         self._starting_over = False
-        self.leave_dialog = None
+        self.leave_dialog = self.teacher_dialog = None
         window.stage.set_active(True)
         window.stage.action.setEnabled(False)
         for dock in window.findChildren(QDockWidget):
@@ -49,10 +52,17 @@ class Kiosk(QObject):
         for roomy in (window.monitor_dock, window.plot_dock):  # their exports would open dialogs anywhere
             roomy.hide()
             roomy.toggleViewAction().setEnabled(False)
-        window.files.file_dialogs = ConfinedFileDialogs(self.settings.programs_folder)
+        def language():  # the window's language may change (behind the PIN)
+            return window.language
+
+        window.files.file_dialogs = ConfinedFileDialogs(
+            [self.settings.programs_folder, self.settings.visitors_folder], self.settings.visitors_folder, language)
+        window.replay.file_dialogs = ConfinedFileDialogs([window.settings.recordings_folder], None, language)
         # Chromium's own menu (Back, Reload, Save page…) where the page shows none; Blockly's menus stay
         window.editor.setContextMenuPolicy(Qt.ContextMenuPolicy.NoContextMenu)
-        window.files.sig_program_replaced.connect(self._keep_start_program_safe)
+        self._refuse_context_menus()
+        window.teacher_gate = self.ask_teacher
+        window.files.sig_program_replaced.connect(self._keep_programs_safe)
         window.installEventFilter(self)
         self.chord = None
         if self.settings.quit_chord:
@@ -65,12 +75,35 @@ class Kiosk(QObject):
     # --- leaving ------------------------------------------------------------------------
 
     def eventFilter(self, watched, event):
-        """Closing the window (Quit, Alt+F4) asks for the teacher's PIN first."""
-        if watched is self.window and event.type() == QEvent.Type.Close and not self._may_close:
+        """Closing the window (Quit, Alt+F4) asks for the teacher's PIN first; a minimised window (the
+        window manager's Iconify) or one no longer full screen comes back full screen at once."""
+        if watched is not self.window or self._may_close:
+            return False
+        if event.type() == QEvent.Type.Close:
             event.ignore()
             self.ask_pin()
             return True
+        if event.type() == QEvent.Type.WindowStateChange and (self.window.isMinimized()
+                                                              or not self.window.isFullScreen()):
+            QTimer.singleShot(0, self, self.to_the_front)
         return False
+
+    def to_the_front(self):
+        """Full screen, in front of every other window (after a minimise, or for the next visitor)."""
+        if not self._may_close:
+            self.window.showFullScreen()
+            self.window.raise_()
+            self.window.activateWindow()
+
+    def _refuse_context_menus(self):
+        """No menu on a right-click on the toolbars, docks, tabs, menu bar or status bar: the window's
+        menu there would hide the toolbar with STOP. (``MainWindow.createPopupMenu`` gives none in
+        kiosk mode; a refusal here also stops what its children leave to it.)"""
+        window, prevent = self.window, Qt.ContextMenuPolicy.PreventContextMenu
+        window.setContextMenuPolicy(prevent)
+        for part in window.findChildren(QToolBar) + window.findChildren(QDockWidget) + [window.menuBar(),
+                                                                                         window.statusBar()]:
+            part.setContextMenuPolicy(prevent)
 
     def ask_pin(self):
         """Show the dialog that asks for the teacher's PIN to leave kiosk mode."""
@@ -79,6 +112,16 @@ class Kiosk(QObject):
         self.leave_dialog = LeaveDialog(self.window.settings.teacher, self.window.language, self.window)
         self.leave_dialog.accepted.connect(self.leave)
         self.leave_dialog.open()
+
+    def ask_teacher(self, then):
+        """Run ``then()`` (choosing the robot, Preferences) once the teacher's PIN was given."""
+        if self.teacher_dialog is not None:
+            self.teacher_dialog.deleteLater()
+        self.teacher_dialog = PinDialog(self.window.settings.teacher, self.window.language, "kiosk_teacher_title",
+                                        "kiosk_teacher_text", self.window)
+        self.teacher_dialog.setObjectName("kiosk_teacher_dialog")
+        self.teacher_dialog.accepted.connect(then)
+        self.teacher_dialog.open()
 
     def leave(self):
         """Keep the visitor's program, then close the window (the teacher gave the PIN or the chord)."""
@@ -142,6 +185,7 @@ class Kiosk(QObject):
     def _start_over(self):
         window = self.window
         window.document.modified = False
+        self._forget_visitor()
 
         def opened(_ok=True):
             window.robots.reset()
@@ -155,20 +199,32 @@ class Kiosk(QObject):
             window.files.new(ask=False)
             opened()
 
-    def _keep_start_program_safe(self):
-        """The start program is shown as a new program, so Save asks for a name in the kiosk's folder
-        instead of writing over it."""
-        if self.start_program and self.window.document.path == self.start_program:
-            self.window.document.set_file(None, False)
+    def _forget_visitor(self):
+        """Nothing of the last visitor stays in sight: console, replay, variables, the blocks' badges
+        and values; the toolbar (with STOP), simulator and console shown, the window full screen in front."""
+        window = self.window
+        window.replay.close()
+        window.console.clear()
+        window.variables.clear()
+        window.editor.call("clearMarks")
+        for part in (window.run_toolbar, window.simulator_dock, window.console):  # View menu may have hidden a dock
+            part.show()
+        self.to_the_front()
+
+    def _keep_programs_safe(self):
+        """Every program opened is shown as a new one (the start program too), so Save asks for a new
+        name in the visitors' folder: only a file saved in this visit is ever written again."""
+        if self.window.document.path is not None:
+            self.window.document.set_file(None, self.window.document.modified)
 
 
-class LeaveDialog(QDialog):
-    """Asks for the teacher's PIN (``teacher``: TeacherSettings); accepted only with the right one."""
+class PinDialog(QDialog):
+    """Asks for the teacher's PIN (``teacher``: TeacherSettings), saying the texts ``title_key`` and
+    ``text_key``; accepted only with the right one."""
 
-    def __init__(self, teacher, language: str, parent=None):
+    def __init__(self, teacher, language: str, title_key: str, text_key: str, parent=None):
         super().__init__(parent)
-        self.setObjectName("leave_kiosk_dialog")
-        self.setWindowTitle(tr("kiosk_leave_title", language))
+        self.setWindowTitle(tr(title_key, language))
         self._teacher, self._language = teacher, language
         self.pin = QLineEdit(self, objectName="kiosk_pin", echoMode=QLineEdit.EchoMode.Password)
         self.problem = QLabel(self, objectName="kiosk_problem", wordWrap=True)
@@ -176,7 +232,7 @@ class LeaveDialog(QDialog):
         buttons.accepted.connect(self.accept)
         buttons.rejected.connect(self.reject)
         layout = QVBoxLayout(self)
-        layout.addWidget(QLabel(tr("kiosk_leave_text", language), self, wordWrap=True))
+        layout.addWidget(QLabel(tr(text_key, language), self, wordWrap=True))
         layout.addWidget(self.pin)
         layout.addWidget(self.problem)
         layout.addWidget(buttons)
@@ -200,3 +256,11 @@ class LeaveDialog(QDialog):
         self.pin.clear()
         super().open()
         self.pin.setFocus()
+
+
+class LeaveDialog(PinDialog):
+    """Asks for the teacher's PIN to leave kiosk mode."""
+
+    def __init__(self, teacher, language: str, parent=None):
+        super().__init__(teacher, language, "kiosk_leave_title", "kiosk_leave_text", parent)
+        self.setObjectName("leave_kiosk_dialog")

@@ -55,6 +55,8 @@ class MainWindow(QMainWindow):
         self._close_waiting = False  # closing waits until the program is saved
         self._close_approved = False
         self._in_close_event = False
+        # runs a teacher's command (choosing the robot, Preferences); kiosk mode asks for the PIN first
+        self.teacher_gate = lambda command: command()
         self.setObjectName("main_window")
 
         self.editor = editor or EditorView()
@@ -290,8 +292,15 @@ class MainWindow(QMainWindow):
                 action.setEnabled(idle)
         self.recent_menu.setEnabled(idle)
         self.examples_menu.setEnabled(idle)
+        self._follow_robot_lock()
+
+    def _follow_robot_lock(self):
+        """The Robot menu and the Run-on box can be used while idle, unless the teacher locked the robot."""
+        locked = self.settings.teacher.robot_locked
+        self.run_toolbar.set_robot_locked(locked)
         for action in self.profile_actions.actions():
-            action.setEnabled(idle)
+            action.setEnabled(self.runs.state == "idle" and not locked)
+            action.setToolTip(tr("robot_locked_tip", self.language) if locked else "")
 
     def _reset_robot(self):
         if self.runs.state == "idle":
@@ -329,6 +338,9 @@ class MainWindow(QMainWindow):
     def show_program(self, program, callback):
         """Show a checked program (switching to its robot); ``callback(result, error)`` gets the page's answer."""
         call = program.editor_call()
+        if self.settings.teacher.robot_locked and program.profile.id != self.profile.id and not self._starting:
+            callback(None, tr("robot_locked_program", self.language, name=self.profile.display_name(self.language)))
+            return
         if self._starting:
             self.document.profile = program.profile
             self._restart_editor(call, callback)
@@ -351,10 +363,10 @@ class MainWindow(QMainWindow):
     def choose_profile(self, profile_id: str):
         """The user picked a robot in the Robot menu: a new program for that robot (once the old one is saved)."""
         self._check_active_profile_action()  # the old robot stays checked until the program is put away
-        if profile_id == self.profile.id:
+        if profile_id == self.profile.id or self.settings.teacher.robot_locked:
             return
         profile = self.registry.get(profile_id)
-        self.files.maybe_save(then=lambda ok: ok and self._new_program_for(profile))
+        self.teacher_gate(lambda: self.files.maybe_save(then=lambda ok: ok and self._new_program_for(profile)))
 
     def _new_program_for(self, profile):
         self.activate_profile(profile)
@@ -407,8 +419,11 @@ class MainWindow(QMainWindow):
         self._update_title()
 
     def show_preferences(self):
-        """Open the Preferences dialog and apply the chosen language, the Put-back preference and the
-        teacher's settings."""
+        """Open the Preferences dialog (once ``teacher_gate`` lets it) and apply the chosen language, the
+        Put-back preference and the teacher's settings."""
+        self.teacher_gate(self._show_preferences)
+
+    def _show_preferences(self):
         dialog = PreferencesDialog(self.language, self, self.profile, self.settings.teacher,
                                    reset_before_run=self.settings.reset_before_run, kiosk=self.settings.kiosk,
                                    kiosk_mode=self.settings.kiosk_mode, block_look=self.settings.block_look)
@@ -420,6 +435,7 @@ class MainWindow(QMainWindow):
                 dialog.kiosk_tab.apply()
             if dialog.teacher_tab is not None and dialog.teacher_tab.apply():  # the program stays; only the toolbox
                 self.editor.set_toolbox(self.profile.toolbox(self.language, *self._toolbox_choice()))
+            self._follow_robot_lock()
             self.set_language(dialog.language)
 
     def _toolbox_choice(self):
@@ -482,6 +498,8 @@ class MainWindow(QMainWindow):
             action.triggered.connect(lambda _checked=False, pid=profile.id: self.choose_profile(pid))
             self.profile_actions.addAction(action)
             robot_menu.addAction(action)
+        robot_menu.setToolTipsVisible(True)  # a locked robot says why
+        self._follow_robot_lock()
         robot_menu.addSeparator()
         robot_menu.addAction(self.run_toolbar.reset_action)
 
@@ -501,6 +519,10 @@ class MainWindow(QMainWindow):
         self._action(help_menu, "keyboard_shortcuts", lambda: show_shortcuts(self, language))
         self._action(help_menu, "about", lambda: QMessageBox.about(
             self, tr("app_name", language), tr("about_text", language, version=__version__)))
+
+    def createPopupMenu(self):
+        """Qt override: the menu a right-click on a toolbar or dock offers (to hide them); none in kiosk mode."""
+        return None if self.settings.kiosk_mode else super().createPopupMenu()
 
     def _fill_recent_menu(self):
         self.recent_menu.clear()

@@ -8,9 +8,10 @@ simulator's run, in the same solid world: one robot's run drawn in another robot
 show a robot where no robot was.
 """
 from PySide6.QtCore import QObject, Signal
-from PySide6.QtWidgets import QFileDialog, QMessageBox
+from PySide6.QtWidgets import QMessageBox
 
 from rockly_desktop.ui.block_badges import badge_texts
+from rockly_desktop.ui.file_dialogs import FileDialogs
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.plan_view import PlanView
 from rockly_desktop.ui.recording_reader import RecordingReader, release
@@ -54,12 +55,13 @@ class Replay(QObject):
         self._reader = None  # the RecordingReader whose recording is to be shown
         self._data = None  # the ReplayData shown
         self._shown_block = None
+        self.file_dialogs = FileDialogs()  # kiosk mode puts dialogs kept in one folder in its place
         bar.sig_moment.connect(self.show_moment)
         bar.sig_closed.connect(self._back_to_live)
 
     def choose(self, folder: str = ""):
         """Ask for a recording (File → Open recording…) and open it."""
-        path, _filter = QFileDialog.getOpenFileName(self.parent(), tr("open_recording", self.language).replace(
+        path = self.file_dialogs.open_file(self.parent(), tr("open_recording", self.language).replace(
             "&", "").rstrip("…"), folder, tr("recording_filter", self.language))
         if path:
             self.open(path)

@@ -2,7 +2,7 @@
 and where the program runs (every kind of robot link in the registry, ``robot/links.py``)."""
 from PySide6.QtCore import Qt, Signal
 from PySide6.QtGui import QAction, QKeySequence
-from PySide6.QtWidgets import QComboBox, QLabel, QSlider, QStyle, QToolBar
+from PySide6.QtWidgets import QComboBox, QLabel, QMainWindow, QSlider, QStyle, QToolBar
 
 from rockly_desktop.robot.links import link_kind, link_kinds
 from rockly_desktop.ui.texts import tr
@@ -14,38 +14,36 @@ RUN_KEYS = "F5"  # Run's while idle, Continue's while paused
 
 class RunToolbar(QToolBar):
     """Actions for running programs; ``set_state`` enables what makes sense. ``big``: larger
-    buttons and an even bigger STOP, for a fair stand's touch screen (kiosk mode), and no choice
-    of robot (a kiosk runs on the simulator)."""
+    buttons and an even bigger STOP, for a fair stand's touch screen (kiosk mode), no choice
+    of robot (a kiosk runs on the simulator), and a toolbar that cannot be moved or hidden."""
 
     sig_delay_changed = Signal(float)
 
     def __init__(self, language: str, parent=None, big: bool = False):
         super().__init__(tr("run", language), parent)
         self._language = language
+        self._always_shown = big
+        self._robot_locked = False
+        if big:
+            self.setMovable(False)
+            self.setFloatable(False)
+            self.toggleViewAction().setEnabled(False)
+            self.toggleViewAction().setVisible(False)
         self.setObjectName("run_toolbar")
         self.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextBesideIcon)
         # Narrow enough that every command fits a 1280 px window in German too (nothing behind the » button).
-        self.setStyleSheet("QToolButton { font-size: 15px; font-weight: bold; padding: 6px 7px; }")
+        self.setStyleSheet("QToolButton { font-size: 19px; font-weight: bold; padding: 10px 8px; }" if big else
+                           "QToolButton { font-size: 15px; font-weight: bold; padding: 6px 7px; }")
         icons = QStyle.StandardPixmap
         self.run_action = self._action("run", "run_tip", RUN_KEYS, icons.SP_MediaPlay)
+        if big:  # a visitor's buttons first: on a narrow screen the toolbar folds its last ones into »
+            self._add_stop(big)
+            self.reset_action = self._add_reset()
         self.pause_action = self._action("pause", "pause_tip", "F6", icons.SP_MediaPause)
         self.step_action = self._action("step", "step_tip", "F10", icons.SP_MediaSkipForward)
         self.continue_action = self._action("continue", "continue_tip", None, icons.SP_MediaSeekForward)
-        self.stop_action = QAction(self.style().standardIcon(icons.SP_MediaStop), tr("stop", language), self)
-        self.stop_action.setObjectName("action_stop")
-        self.stop_action.setToolTip(tr("stop_tip", language))
-        self.stop_action.setShortcut(QKeySequence(Qt.Key.Key_Escape))
-        self.stop_action.setShortcutContext(Qt.ShortcutContext.WindowShortcut)
-        self.addAction(self.stop_action)
-        stop_button = self.widgetForAction(self.stop_action)
-        stop_button.setObjectName("stop_button")
-        stop_size = "font-size: 28px; padding: 12px 26px;" if big else "font-size: 18px; padding: 6px 16px;"
-        if big:
-            self.setStyleSheet("QToolButton { font-size: 19px; font-weight: bold; padding: 10px 8px; }")
-        stop_button.setStyleSheet(f"QToolButton {{ background: #d32f2f; color: white; {stop_size} font-weight: bold;"
-                                  " border-radius: 6px; margin: 2px 6px; }"
-                                  "QToolButton:disabled { background: #e8a0a0; }"
-                                  "QToolButton:hover { background: #b71c1c; }")
+        if not big:
+            self._add_stop(big)
         self.addSeparator()
         self.addWidget(QLabel(f" {tr('speed', language)}:  {tr('slow', language)} ", self))
         self.speed = QSlider(Qt.Orientation.Horizontal, self)
@@ -69,10 +67,30 @@ class RunToolbar(QToolBar):
         robot_choice += [self.addWidget(self.backend), self.addSeparator()]
         for action in robot_choice if big else ():  # a kiosk runs on the simulator; the room goes to big buttons
             action.setVisible(False)
-        # put the simulated robot back: also in the Robot menu, so its shortcut is the window's
-        self.reset_action = self._action("reset_robot", "reset_robot_tip", "Ctrl+R", icons.SP_BrowserReload)
+        if not big:
+            self.reset_action = self._add_reset()
         self.backend.currentIndexChanged.connect(lambda _index: self.set_state(self._state))
         self.set_state("idle")
+
+    def _add_stop(self, big: bool):
+        self.stop_action = QAction(self.style().standardIcon(QStyle.StandardPixmap.SP_MediaStop),
+                                   tr("stop", self._language), self)
+        self.stop_action.setObjectName("action_stop")
+        self.stop_action.setToolTip(tr("stop_tip", self._language))
+        self.stop_action.setShortcut(QKeySequence(Qt.Key.Key_Escape))
+        self.stop_action.setShortcutContext(Qt.ShortcutContext.WindowShortcut)
+        self.addAction(self.stop_action)
+        stop_button = self.widgetForAction(self.stop_action)
+        stop_button.setObjectName("stop_button")
+        stop_size = "font-size: 28px; padding: 12px 26px;" if big else "font-size: 18px; padding: 6px 16px;"
+        stop_button.setStyleSheet(f"QToolButton {{ background: #d32f2f; color: white; {stop_size} font-weight: bold;"
+                                  " border-radius: 6px; margin: 2px 6px; }"
+                                  "QToolButton:disabled { background: #e8a0a0; }"
+                                  "QToolButton:hover { background: #b71c1c; }")
+
+    def _add_reset(self) -> QAction:
+        # put the simulated robot back: also in the Robot menu, so its shortcut is the window's
+        return self._action("reset_robot", "reset_robot_tip", "Ctrl+R", QStyle.StandardPixmap.SP_BrowserReload)
 
     def _action(self, key, tip_key, shortcut, icon):
         language = self._language
@@ -83,6 +101,21 @@ class RunToolbar(QToolBar):
             action.setShortcut(shortcut)
         self.addAction(action)
         return action
+
+    def setVisible(self, visible: bool):
+        """Qt override: a kiosk's toolbar stays shown while it is in its window (its toggle action, a
+        menu or ``hide()`` cannot take STOP away); taken out of the window, it hides."""
+        window = self.parentWidget()
+        if (not visible and getattr(self, "_always_shown", False) and isinstance(window, QMainWindow)
+                and window.toolBarArea(self) != Qt.ToolBarArea.NoToolBarArea):
+            visible = True
+        super().setVisible(visible)
+
+    def set_robot_locked(self, locked: bool):
+        """The teacher locked the robot choice: the Run-on box stays as it is, and says why."""
+        self._robot_locked = locked
+        self.backend.setToolTip(tr("robot_locked_tip" if locked else "run_on_tip", self._language))
+        self.set_state(self._state)
 
     @property
     def delay(self) -> float:
@@ -103,5 +136,5 @@ class RunToolbar(QToolBar):
         self.continue_action.setShortcut(RUN_KEYS if state == "paused" else "")
         self.run_action.setShortcut(RUN_KEYS if state == "idle" else "")
         self.stop_action.setEnabled(state != "idle")
-        self.backend.setEnabled(state == "idle")
+        self.backend.setEnabled(state == "idle" and not self._robot_locked)
 

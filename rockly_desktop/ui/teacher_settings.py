@@ -1,5 +1,6 @@
 """A teacher's settings per robot profile: toolbox level, maximum speeds, capabilities switched
-off; and the PIN that guards them, kept only as a salted PBKDF2 hash.
+off; whether the robot choice is locked; and the PIN that guards them, kept only as a salted
+PBKDF2 hash.
 
 Wrong PINs cost time: from the third wrong one in a row the next PIN is taken only after a
 wait that doubles with every further wrong one (5 s, 10 s, 20 s … at most 15 minutes), so
@@ -129,6 +130,18 @@ class TeacherSettings:
             return hmac.compare_digest(_hash(pin, bytes.fromhex(salt)), expected)
         except ValueError:
             return False
+
+    # --- the robot -----------------------------------------------------------------------
+
+    @property
+    def robot_locked(self) -> bool:
+        """True when the teacher locked the robot choice: the Robot menu and the Run-on box stay as they
+        are, and no program for another robot opens."""
+        return str(self._get("robot_locked", "false")).lower() == "true"
+
+    @robot_locked.setter
+    def robot_locked(self, locked: bool):
+        self._set("robot_locked", "true" if locked else "false")
 
     # --- per profile ----------------------------------------------------------------------
 

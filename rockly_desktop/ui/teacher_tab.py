@@ -1,4 +1,5 @@
-"""The Preferences dialog's Teacher tab: toolbox level, maximum speeds and capabilities, behind a PIN."""
+"""The Preferences dialog's Teacher tab: toolbox level, maximum speeds and capabilities of the robot
+on screen, and a lock on the robot choice, behind a PIN."""
 from PySide6.QtCore import QEvent, Qt
 from PySide6.QtWidgets import (
     QCheckBox,
@@ -129,6 +130,11 @@ class TeacherTab(QStackedWidget):
             box.setChecked(capability["id"] not in limits.switched_off)
             self.capability_boxes[capability["id"]] = box
             form.addRow(tr("teacher_allowed", language) if len(self.capability_boxes) == 1 else "", box)
+        self.lock_robot = QCheckBox(tr("teacher_lock_robot", language), page)
+        self.lock_robot.setObjectName("teacher_lock_robot")
+        self.lock_robot.setToolTip(tr("teacher_lock_robot_tip", language))
+        self.lock_robot.setChecked(teacher.robot_locked)
+        outer.addWidget(self.lock_robot)
         outer.addStretch(1)
         return page
 
@@ -141,4 +147,5 @@ class TeacherTab(QStackedWidget):
         switched_off = [name for name, box in self.capability_boxes.items() if not box.isChecked()]
         teacher.set_level(profile_id, self.level_box.currentData())
         teacher.set_limits(profile_id, self.max_speed.value() or None, self.max_turn.value() or None, switched_off)
+        teacher.robot_locked = self.lock_robot.isChecked()
         return before != (teacher.level(profile_id), sorted(switched_off))

@@ -159,7 +159,8 @@ def test_kiosk_file_dialogs_stay_in_the_kiosk_folder(qtbot, open_kiosk, folders,
     qtbot.waitUntil(lambda: bool(outcomes), timeout=10000)
     assert seen == [("starts in", True, str(programs)), ("after going up", str(programs)),
                     ("outside accepted", False), ("dot-dot accepted", False)]
-    assert outcomes == [True] and window.document.path == str(inside)
+    assert outcomes == [True] and python_shown(window) == "robot.call_sos()\n"
+    assert window.document.path is None             # shown as new: Save asks for a new name in the visitors' folder
 
 
 def test_after_idling_the_kiosk_keeps_the_visitors_program_and_starts_over(qtbot, open_kiosk, folders, clock,
