@@ -579,7 +579,7 @@
     },
   };
 
-  async function onCall(text) {
+  async function runCall(text) {
     const {call, id, args} = JSON.parse(text);
     try {
       if (!calls[call]) throw new Error('unknown call ' + call);
@@ -588,6 +588,14 @@
     } catch (error) {
       send({reply: id, error: String(error && error.message || error)});
     }
+  }
+
+  // Calls run one after another, in the order sent, even while one waits (setup loading a
+  // language): Python sends the start-up program right behind the setup, unanswered yet.
+  let calling = Promise.resolve();
+
+  function onCall(text) {
+    calling = calling.then(() => runCall(text));
   }
 
   new QWebChannel(qt.webChannelTransport, (channel) => {
