@@ -66,10 +66,13 @@
     };
   }
 
+  /** Send the workspace and its Python to Rockly; returns what was sent. */
   function reportChange(origin) {
     clearTimeout(changeTimer);
     changeTimer = null;
-    send({event: 'changed', origin, ...state()});
+    const current = state();
+    send({event: 'changed', origin, ...current});
+    return current;
   }
 
   // --- loose value blocks, the empty canvas's hint, where a program opens --------------
@@ -176,7 +179,10 @@
     changeTimer = setTimeout(() => reportChange('user'), CHANGE_DEBOUNCE_MS);
   }
 
-  /** Replace the workspace without the load counting as a user's edit. */
+  /**
+   * Replace the workspace without the load counting as a user's edit. Returns the
+   * workspace as it was reported (the one serialization a load needs).
+   */
   function replaceWorkspace(fill) {
     loading = true;
     Blockly.Events.disable();
@@ -192,7 +198,7 @@
     workspace.clearUndo();
     showProgramStart();
     updateHint();
-    reportChange('load');
+    return reportChange('load').workspace;
   }
 
   /** Like replaceWorkspace, but a program that fails to load leaves the old one (and its breakpoints) in place. */
@@ -200,7 +206,7 @@
     const previous = Blockly.serialization.workspaces.save(workspace);
     const previousBreakpoints = [...breakpoints];
     try {
-      replaceWorkspace(fill);
+      return replaceWorkspace(fill);
     } catch (error) {
       replaceWorkspace(() => Blockly.serialization.workspaces.load(previous, workspace));
       setBreakpoints(previousBreakpoints);
@@ -433,9 +439,12 @@
 
   const NEXT = Symbol('next');
 
-  /** The blocks at the top of the workspace as Blockly saves them (with everything they hold). */
-  function savedTopBlocks() {
-    return workspace.getTopBlocks(false).map((block) => Blockly.serialization.blocks.save(block, {addCoordinates: false}));
+  /**
+   * The blocks at the top of `saved` (the workspace as Blockly saved it), in the order
+   * Blockly created them, each with everything it holds.
+   */
+  function topBlocksOf(saved) {
+    return (saved.blocks || {}).blocks || [];
   }
 
   /** The answer's `replacedFields` part: absent when every value was kept. */
@@ -505,7 +514,6 @@
       workspace.addChangeListener(afterPlacing);
       RocklyStage.install(workspace);
       window.addEventListener('resize', keepViewCorner);  // added after inject's own: runs after it
-      window.addEventListener('resize', keepViewCorner);  // added after inject's: runs after Blockly's
       makeHint(texts && texts.emptyHint);
       registerContextMenu(texts || {addBreakpoint: 'Add breakpoint', removeBreakpoint: 'Remove breakpoint'});
       // The first call's own answer, or its error: a program that cannot be shown must not stop the editor.
@@ -525,11 +533,11 @@
       if (untyped >= 0) return {untypedBlock: untyped + 1};
       const unknown = unknownTypes(blocks.map((block) => block.type));
       if (unknown.length) return {unknownTypes: unknown};
-      replaceOrRestore(() => Blockly.serialization.workspaces.load(json, workspace));
+      const saved = replaceOrRestore(() => Blockly.serialization.workspaces.load(json, workspace));
       setBreakpoints(ids);
       // Blockly creates the top blocks in the file's order; pair each with its state.
       const tops = (json.blocks || {}).blocks || [];
-      const pairs = savedTopBlocks().map((saved, index) => [tops[index], saved]);
+      const pairs = topBlocksOf(saved).map((state, index) => [tops[index], state]);
       const numbers = new Map(blocks.map((block, index) => [block, index + 1]));
       return {loaded: true, ...replacedFields(fieldsNotKept(JSON_PROGRAM, pairs, numbers))};
     },
@@ -541,14 +549,13 @@
       const unknown = unknownTypes(elements.map((element) => element.getAttribute('type')));
       if (unknown.length) return {unknownTypes: unknown};
       let topIds = [];
-      replaceOrRestore(() => { topIds = Blockly.Xml.domToWorkspace(dom, workspace); });
+      const saved = replaceOrRestore(() => { topIds = Blockly.Xml.domToWorkspace(dom, workspace); });
       const blocksAtTop = xmlChildren(dom, 'block');
       const tops = blocksAtTop.length === topIds.length ? blocksAtTop : xmlChildren(dom, 'block', 'shadow');
-      const saved = topIds.map((id) => workspace.getBlockById(id))
-          .map((block) => block && Blockly.serialization.blocks.save(block, {addCoordinates: false}));
-      const pairs = saved.map((state, index) => [tops[index], state]);
+      const savedById = new Map(topBlocksOf(saved).map((state) => [state.id, state]));
+      const pairs = topIds.map((id, index) => [tops[index], savedById.get(id)]);
       const numbers = new Map(elements.map((element, index) => [element, index + 1]));
-      return {loaded: true, ...replacedFields(fieldsNotKept(XML_PROGRAM, pairs, numbers)), ...state()};
+      return {loaded: true, ...replacedFields(fieldsNotKept(XML_PROGRAM, pairs, numbers))};
     },
     setToolbox({toolbox}) {
       workspace.updateToolbox(toolbox);
@@ -633,7 +640,7 @@
     },
   };
 
-  async function onCall(text) {
+  async function runCall(text) {
     const {call, id, args} = JSON.parse(text);
     try {
       if (!calls[call]) throw new Error('unknown call ' + call);
@@ -642,6 +649,14 @@
     } catch (error) {
       send({reply: id, error: String(error && error.message || error)});
     }
+  }
+
+  // Calls run one after another, in the order sent, even while one waits (setup loading a
+  // language): Python sends the start-up program right behind the setup, unanswered yet.
+  let calling = Promise.resolve();
+
+  function onCall(text) {
+    calling = calling.then(() => runCall(text));
   }
 
   new QWebChannel(qt.webChannelTransport, (channel) => {

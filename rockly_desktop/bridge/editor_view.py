@@ -81,7 +81,6 @@ class EditorView(QWebEngineView):
         self._page_state = "loading"  # -> "hello" (page waits for setup) -> "setup sent"
         self._prepared = False  # the setup sent is prepare()'s, not yet claimed by start()
         self._prepared_answer = None  # its answer, when it came before start()
-        self._first_call = None  # start()'s first call, sent once a prepared setup is answered
         self.known_block_types = frozenset()
         self._look = {}
         self.workspace = {}
@@ -119,12 +118,12 @@ class EditorView(QWebEngineView):
         prepared, self._prepared = self._prepared, False
         self._on_first_result = on_first_result
         if prepared and self._page_state == "setup sent" and self._same_page(setup):
-            self._first_call = first_call
+            self._show_prepared(first_call)
             answer, self._prepared_answer = self._prepared_answer, None
             if answer is not None:
                 self._on_setup(*answer)
             return
-        self._setup_args, self._first_call = setup, None
+        self._setup_args = setup
         if self._page_state == "hello":
             self._send_setup()
         elif self._page_state == "setup sent":
@@ -213,37 +212,39 @@ class EditorView(QWebEngineView):
         if self._prepared:  # kept until start() says what to show
             self._prepared_answer = (result, error)
             return
-        callback, self._on_first_result = self._on_first_result, None
         if error:
+            callback, self._on_first_result = self._on_first_result, None
             self.sig_page_error.emit(f"the editor could not start: {error}")
             if callback is not None:
                 callback(None, error)
             return
         self.known_block_types = frozenset(result["blockTypes"])
-        if self._setup_args["hidden"]:
-            self._show_prepared(callback)
-            return
         self.channel.open()
+        if self._setup_args["hidden"]:  # start()'s first call and show went right behind it
+            return
+        callback, self._on_first_result = self._on_first_result, None
         self.sig_ready.emit()
         if callback is not None:
             first_answer = result.get("program") or {}
             callback(first_answer.get("result"), first_answer.get("error"))
 
-    def _show_prepared(self, callback):
-        """Send start()'s first call and ``show`` ahead of every other call; ready once the first is answered."""
-        first_call, self._first_call = self._first_call, None
-
+    def _show_prepared(self, first_call):
+        """Send start()'s first call and ``show`` right behind the prepared setup, ahead of every other
+        call: the page runs its calls in order, so they need not wait for the setup's answer.
+        Ready once the first is answered, after a setup that worked."""
         def on_first(result, error):
+            if error == PAGE_RELOADED or not self.channel.is_open:  # a reload, or a setup that failed (and said so)
+                return
+            callback, self._on_first_result = self._on_first_result, None
             self.sig_ready.emit()
             if callback is not None:
                 callback(result, error)
 
         if first_call:
-            self.channel.call(*first_call, on_first)
-            self.channel.call("show")
+            self.channel.call(*first_call, on_first, immediately=True)
+            self.channel.call("show", immediately=True)
         else:
-            self.channel.call("show", None, on_first)
-        self.channel.open()
+            self.channel.call("show", None, on_first, immediately=True)
 
     def _on_event(self, message: dict):
         event = message.get("event")

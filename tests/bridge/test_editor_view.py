@@ -1,4 +1,7 @@
 """The Blockly page in QtWebEngine: start-up, toolbox, the JSON channel, offline, undo."""
+import json
+
+import pytest
 from page_tools import add_block_as_user, block_types_on_page, run_js, toolbox_names
 from program_builder import block, number, workspace
 from PySide6.QtCore import QUrl
@@ -142,6 +145,48 @@ def test_a_prepared_page_shows_its_workspace_with_the_program_once_started(qtbot
     assert answers == [({"loaded": True}, None)]
     assert view.is_ready and hobbit.block_types <= view.known_block_types
     qtbot.waitUntil(lambda: workspace_shown(qtbot, view) == "visible")
+
+
+@pytest.mark.parametrize("language", ["en", "de"])  # German: the setup waits for its block texts to load
+def test_a_prepared_page_gets_the_program_right_behind_its_setup_not_after_its_answer(qtbot, hobbit, language):
+    view = shown_editor(qtbot)
+    sent, answers, sent_by_start = [], [], []
+    view.channel.toPage.connect(lambda message: sent.append(json.loads(message)["call"]))
+    view.prepare(hobbit.editor_config(language), language)
+
+    def start_while_the_setup_runs():  # the prepared setup has just gone to the page
+        view.start(hobbit.editor_config(language), language, ("load", {"workspace": workspace(block("hobbit_sos"))}),
+                   lambda result, error: answers.append((result, error)))
+        sent_by_start.append(list(sent))
+
+    view.channel.sig_hello.connect(start_while_the_setup_runs)
+    with qtbot.waitSignal(view.sig_changed, timeout=30000) as changed:
+        qtbot.waitUntil(lambda: bool(answers), timeout=30000)
+    assert sent_by_start == [["setup", "load", "show"]]
+    assert changed.args[1:] == ["robot.call_sos()\n", "load"]
+    assert answers == [({"loaded": True}, None)]
+    assert view.is_ready and hobbit.block_types <= view.known_block_types
+    qtbot.waitUntil(lambda: workspace_shown(qtbot, view) == "visible")
+
+
+def test_a_prepared_setup_that_fails_answers_the_start_once_and_a_later_start_works(qtbot, hobbit):
+    view = shown_editor(qtbot)
+    errors, answers, later = [], [], []
+    view.sig_page_error.connect(errors.append)
+    broken = {**hobbit.editor_config("en"), "blocks": None}
+    view.prepare(broken, "en")
+    view.start(broken, "en", ("load", {"workspace": workspace(block("hobbit_sos"))}),
+               lambda result, error: answers.append((result, error)))
+    qtbot.waitUntil(lambda: bool(answers), timeout=30000)
+    assert answers[0][0] is None and answers[0][1]
+    assert any(error.startswith("the editor could not start") for error in errors)
+    assert not view.is_ready
+    with qtbot.waitSignal(view.sig_ready, timeout=30000):
+        view.start(hobbit.editor_config("de"), "de", ("load", {"workspace": workspace(block("hobbit_stop"))}),
+                   lambda result, error: later.append((result, error)))
+    qtbot.waitUntil(lambda: bool(later))
+    assert len(answers) == 1 and later == [({"loaded": True}, None)]
+    assert call(qtbot, view, "getState")[0]["python"] == "robot.stop()\n"
 
 
 def test_a_prepared_page_started_for_another_language_is_loaded_afresh(qtbot, hobbit):
