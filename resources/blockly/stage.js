@@ -3,7 +3,8 @@
  * editor. There the toolbox's flyout and the zoom controls never cover the blocks a child is using:
  * - the zoom buttons and the trashcan are put away (the wheel still zooms, and a block dropped on
  *   the toolbox is deleted), and where they were is no place a dropped block disappears into;
- * - the flyout's blocks are drawn smaller where it would take more than half of the view;
+ * - the flyout's blocks are drawn smaller where it would take more than half of the view (fitted
+ *   again whenever the view's width changes);
  * - while the flyout is out, the program moves right of it, and back when it closes.
  */
 'use strict';
@@ -31,7 +32,16 @@ const RocklyStage = (() => {
     ws.addChangeListener((event) => {
       if (on && event.type === Blockly.Events.TOOLBOX_ITEM_SELECT) requestAnimationFrame(followFlyout);
     });
-    addEventListener('resize', () => on && requestAnimationFrame(followFlyout));  // the stage settling
+    addEventListener('resize', () => on && requestAnimationFrame(refit));  // the stage settling, a window resized
+  }
+
+  /** After the view's size changed: the open flyout's scale fitted to the new width (Blockly only
+   * moves a flyout on a resize; one opened before the page had its stage size stayed too wide),
+   * and the program right of it. */
+  function refit() {
+    const flyout = workspace.getFlyout();
+    if (flyout && flyout.isVisible() && flyout.getWorkspace().scale !== flyout.getFlyoutScale()) flyout.reflow();
+    followFlyout();
   }
 
   /** Blockly lets the program move at most half a view away from the view's edge: on stage it may

@@ -5,9 +5,14 @@ Not a filter on the QApplication: PySide 6.11 makes a Python wrapper for each ob
 is shown an event for, which sets a property on it, whose event comes back to the filter while the
 wrapper is half made (a crash as soon as the editor page runs). Every input event reaches its
 top-level QWindow first, and the filter is only ever shown those few windows.
+
+Nor a Python slot on a watched window's ``destroyed``: a QWindow goes when its widget is deleted,
+and a slot called then needs a wrapper for a half-destroyed object (a crash once ``stop()`` has let
+go of the watch's own wrappers). A window gone is seen by ``shiboken6.isValid`` instead.
 """
 import time
 
+import shiboken6
 from PySide6.QtCore import QEvent, QObject, QTimer, Signal
 from PySide6.QtGui import QGuiApplication
 
@@ -44,14 +49,10 @@ class IdleWatch(QObject):
         self._timer.start()
 
     def _watch(self, window):
+        self._watched = [watched for watched in self._watched if shiboken6.isValid(watched)]
         if window is not None and window not in self._watched:
             self._watched.append(window)
             window.installEventFilter(self)
-            window.destroyed.connect(self._forget)
-
-    def _forget(self, window):
-        if window in self._watched:
-            self._watched.remove(window)
 
     def eventFilter(self, watched, event):
         """Every key, mouse or touch event in a watched window counts as someone being there."""
@@ -80,5 +81,6 @@ class IdleWatch(QObject):
         self._timer.stop()
         QGuiApplication.instance().focusWindowChanged.disconnect(self._watch)
         for window in self._watched:
-            window.removeEventFilter(self)
+            if shiboken6.isValid(window):
+                window.removeEventFilter(self)
         self._watched.clear()

@@ -85,6 +85,17 @@ def on_stage(qtbot, window, size):
     qtbot.waitUntil(lambda: window.simulator_dock.width() > window.editor.width(), timeout=3000)
     qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "document.body.classList.contains('rocklyStage')"),
                     timeout=5000)
+    page_settled(qtbot, window)
+
+
+PAGE_WIDTHS = """(() => { const metrics = Blockly.getMainWorkspace().getMetricsManager();
+  return [innerWidth, metrics.getAbsoluteMetrics().left + metrics.getViewMetrics().width]; })()"""
+
+
+def page_settled(qtbot, window):
+    """Wait until the page has the editor's width and Blockly has seen it: the page's resize comes
+    from Chromium a little after Qt's, and Blockly takes it from the page's resize event later still."""
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, PAGE_WIDTHS) == [window.editor.width()] * 2, timeout=5000)
 
 
 STAGE_BOXES = """(() => {
@@ -133,3 +144,22 @@ def test_on_stage_the_blocks_have_room_and_nothing_covers_them(qtbot, driver, si
     qtbot.waitUntil(lambda: run_js(qtbot, window.editor, STAGE_BOXES)["blocks"] and min(
         block[0] for block in run_js(qtbot, window.editor, STAGE_BOXES)["blocks"]) < boxes["toolbox"] + 60,
         timeout=3000)                                                     # and back where it was once it closes
+
+
+def flyout_fits(qtbot, window) -> bool:
+    shown = run_js(qtbot, window.editor, STAGE_BOXES)
+    return bool(shown["flyout"]) and shown["flyout"][2] - shown["flyout"][0] <= 0.65 * (
+        shown["page"][0] - shown["toolbox"])
+
+
+def test_on_stage_an_open_flyout_fits_again_when_the_window_gets_smaller(qtbot, driver):
+    window = driver.open_window(str(examples_dir() / "hobbit" / "tidy-up.rockly"))
+    on_stage(qtbot, window, (2560, 1440))
+    run_js(qtbot, window.editor, OPEN_FIRST_CATEGORY)
+    qtbot.waitUntil(lambda: flyout_fits(qtbot, window), timeout=3000)
+    wide = run_js(qtbot, window.editor, STAGE_BOXES)["flyout"]
+    laid_out(qtbot, window, 1280, 800)                              # the flyout still open
+    page_settled(qtbot, window)
+    qtbot.waitUntil(lambda: flyout_fits(qtbot, window), timeout=3000)
+    narrow = run_js(qtbot, window.editor, STAGE_BOXES)["flyout"]
+    assert narrow[2] - narrow[0] < wide[2] - wide[0], (wide, narrow)
