@@ -23,8 +23,8 @@ FOCUS_RING_STYLE = "QFrame#focus_ring { border: 3px solid #ff6d00; border-radius
 class FocusRing(QFrame):
     """A thick orange frame over the control that has the keyboard (it takes no clicks and no focus)."""
 
-    def __init__(self):
-        super().__init__()
+    def __init__(self, window):
+        super().__init__(window)
         self.setObjectName("focus_ring")
         self.setStyleSheet(FOCUS_RING_STYLE)
         self.setAttribute(Qt.WidgetAttribute.WA_TransparentForMouseEvents)
@@ -74,11 +74,21 @@ class KeyboardAccess(QObject):
             window.addAction(action)
             self.jump_actions[key] = action
         QApplication.instance().focusChanged.connect(self._on_focus_changed)
+        self._following = True
         window.editor.sig_ready.connect(self._on_editor_ready)
         window.robots.sig_robot_changed.connect(self.name_controls)
         window.plot_dock.visibilityChanged.connect(self.name_controls)
         self._toolbar_buttons_take_focus()
         self.name_controls()
+
+    def stop(self):
+        """The window is closing: follow the application's focus no more and take the ring off its
+        control (a slot still connected would be handed the window's widgets while they are destroyed)."""
+        if self._following:
+            QApplication.instance().focusChanged.disconnect(self._on_focus_changed)
+            self._following = False
+        if self.ring is not None and shiboken6.isValid(self.ring):
+            self.ring.follow(None)
 
     # --- Tab order ----------------------------------------------------------------------
 
@@ -216,7 +226,7 @@ class KeyboardAccess(QObject):
         if not new.accessibleName():  # a control made since the window was last named
             self.name_controls()
         if self.ring is None or not shiboken6.isValid(self.ring):  # it went with the control it lay over
-            self.ring = FocusRing()
+            self.ring = FocusRing(self.window)
         if QApplication.mouseButtons() != Qt.MouseButton.NoButton:
             self.ring.follow(None)  # a click or a touch shows where it went by itself: the ring is for keys
             return

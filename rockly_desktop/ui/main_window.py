@@ -559,6 +559,7 @@ class MainWindow(QMainWindow):
             event.ignore()
             return
         self._close_approved = False
+        self.keys.stop()
         self.runs.shutdown()
         self.replay.wait_for_reading()
         self.simulator_dock.stop()

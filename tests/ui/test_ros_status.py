@@ -118,7 +118,7 @@ def test_the_topic_monitor_counts_rocklys_publisher_on_cmd_vel_while_a_program_d
     window.robot().follow_graph()
     drive_and_look_at_the_monitor(qtbot, window, "topic_monitor_cmd_vel_ros2")
     # the test robot heard Rockly on /cmd_vel (the safe stop's zero comes over the wire after the run ends)
-    qtbot.waitUntil(lambda: vanishing_robot.received("/cmd_vel"), timeout=10000)
+    qtbot.waitUntil(lambda: bool(vanishing_robot.received("/cmd_vel")), timeout=10000)
     monitor = window.monitor_dock.widget()
     qtbot.waitUntil(lambda: publishers_cell(monitor, "/odom") == "1", timeout=10000)  # the robot's own: a count
 
