@@ -205,7 +205,10 @@ def test_high_contrast_and_larger_text_from_preferences_stay_through_a_language_
         return True
     monkeypatch.setattr(PreferencesDialog, "exec", choose)
     window.show_preferences()
-    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, LOOK)["contrast"], timeout=5000)
+    def in_the_new_look():  # the class first, then every field measured again: wait for both
+        now = run_js(qtbot, window.editor, LOOK)
+        return bool(now["contrast"]) and now["size"] > before["size"] * 1.2 and now["width"] > before["width"] * 1.2
+    qtbot.waitUntil(in_the_new_look, timeout=5000)
     after = run_js(qtbot, window.editor, LOOK)
     assert after["size"] > before["size"] * 1.2
     assert after["toolbox"] == "rgb(0, 0, 0)" != before["toolbox"]
@@ -216,7 +219,7 @@ def test_high_contrast_and_larger_text_from_preferences_stay_through_a_language_
     window.set_language("de")  # a new page: the look goes with it
     qtbot.waitUntil(lambda: window.language == "de" and window.editor.is_ready, timeout=15000)
     qtbot.waitUntil(lambda: run_js(qtbot, window.editor, LOOK)["contrast"], timeout=5000)
-    assert run_js(qtbot, window.editor, LOOK)["size"] == after["size"]
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, LOOK)["size"] == after["size"], timeout=5000)
 
 
 def test_the_control_that_has_the_keyboard_wears_a_thick_orange_ring_on_every_dock(qtbot, window):
