@@ -2,6 +2,8 @@
 cells' texts and sort keys (columns topic, type, publishers, rate, age)."""
 import math
 
+from rockly_desktop.core.numbers import number_format
+
 NO_VALUE = "–"
 """A cell without a value (no message yet, no publisher count)."""
 
@@ -31,18 +33,20 @@ def topic_entries(infos: dict, graph_topics=None, own: dict = None) -> list:
     return entries
 
 
-def age_text(age: float) -> str:
-    """Seconds since the last message: one decimal below 100 s."""
-    return f"{age:.1f}" if age < 100 else f"{age:.0f}"
+def age_text(age: float, language: str = "en") -> str:
+    """Seconds since the last message: one decimal below 100 s, in ``language``'s decimal mark."""
+    return number_format(language).format("{:.1f}" if age < 100 else "{:.0f}", age)
 
 
-def row_cells(entry) -> tuple:
-    """(texts, sort keys) of one entry's five cells; a topic without messages has no rate or age. The
-    publishers are a plain count here (the window says which of them are Rockly's)."""
+def row_cells(entry, language: str = "en") -> tuple:
+    """(texts, sort keys) of one entry's five cells, numbers in ``language``'s way; a topic without
+    messages has no rate or age. The publishers are a plain count here (the window says which of
+    them are Rockly's)."""
     topic, msg_type, publishers, count, rate, age = entry[:6]
     seen = count > 0
     texts = (topic, msg_type, NO_VALUE if publishers is None else str(publishers),
-             f"{rate:.1f}" if seen else NO_VALUE, age_text(age) if seen else NO_VALUE)
+             number_format(language).format("{:.1f}", rate) if seen else NO_VALUE,
+             age_text(age, language) if seen else NO_VALUE)
     keys = (topic.lower(), msg_type.lower(), -1.0 if publishers is None else float(publishers),
             rate if seen else -1.0, age if seen else math.inf)
     return texts, keys

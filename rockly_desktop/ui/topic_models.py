@@ -107,7 +107,7 @@ class TopicTableModel(QAbstractTableModel):
         for entry in entries:
             position = self._index[entry[0]]
             row = self._rows[position]
-            texts, row.keys = row_cells(entry)
+            texts, row.keys = row_cells(entry, self._language)
             if entry[6]:  # Rockly publishes here too: "1 (Rockly)", "2 (with Rockly)"
                 key = "monitor_publishers_rockly" if entry[6] == entry[2] else "monitor_publishers_with_rockly"
                 texts = texts[:PUBLISHERS] + (tr(key, self._language, count=entry[2]),) + texts[PUBLISHERS + 1:]

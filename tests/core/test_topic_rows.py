@@ -41,3 +41,9 @@ def test_cells_of_a_topic_with_and_without_messages():
 
 def test_ages_lose_their_decimal_from_100_s():
     assert (age_text(0.04), age_text(99.94), age_text(150.4)) == ("0.0", "99.9", "150")
+
+
+def test_rate_and_age_are_written_with_the_readers_decimal_mark():
+    texts, _keys = row_cells(("/odom", "nav_msgs/Odometry", 1, 120, 50.0, 0.25), "de")
+    assert texts[3:] == ("50,0", "0,2")
+    assert age_text(150.4, "de") == "150" and age_text(2.5, "en") == "2.5"
