@@ -123,8 +123,9 @@ class SimTurtleBot(RobotSimulator):
         x, y, theta, hit = self._arena.move(self._x, self._y, self._theta, linear, angular, dt)
         blocked = hit is not None
         self._bumper = 0
+        if not was_touching and self._arena.touching(x, y) is not None:
+            self._bumps += 1   # a new touch: a step may end just at it, blocked only by the next
         if blocked:
-            self._bumps += 0 if was_touching else 1   # pushing on while touching is the same bump
             self._command = (0.0, 0.0)      # the bumper stops the wheels
             self._contact = hit
             self._bumper = BUMPER_FORWARD if linear >= 0 else BUMPER_BACKWARD
