@@ -1,6 +1,8 @@
 """Replaying a real robot's run (ROS 1: a real master, the ROS-level HOBBIT in its own process): no
 simulator snapshots, so the Simulator dock shows a plan view of the recorded /odom and the Robot
 state panels show the recorded topics at the moment."""
+import math
+
 import pytest
 from page_tools import call_page
 from program_builder import block, number, stack, workspace
@@ -42,7 +44,9 @@ def test_a_real_robots_replay_shows_its_recorded_path_in_plan_and_its_state_then
     assert recording.on(channels.SIMULATOR) == []
     path = RecordedPath(window.replay.topics)
     assert len(path.poses) > 3
-    assert path.poses[-1][1] > path.poses[0][1] + 0.2  # it went left after the turn
+    # it turned left and drove on (from wherever and however the session's robot was left by earlier tests)
+    assert (path.poses[-1][2] - path.poses[0][2]) % (2 * math.pi) == pytest.approx(math.pi / 2, abs=0.2)
+    assert math.dist(path.poses[-1][:2], path.poses[0][:2]) > 0.5
 
     last_leg = next(entry.time for entry in recording.on(channels.BLOCKS) if entry.data["block"] == "on")
     window.replay_bar.jump_to((last_leg + window.replay_bar.duration) / 2)  # on its way after the turn
