@@ -152,15 +152,19 @@ class RosConnection:
 
     def _watch(self):
         while not self._stopped.wait(WATCH_SECONDS):
-            pid, self.round_trip = master_pid(self.master_uri)
-            status = CONNECTED if pid is not None else LOST
-            if status != self.status:
-                log.warning("ROS master %s: %s", self.master_uri, status)
-            # A master restarted between two looks (another pid) knows nothing of this node either.
-            if status == CONNECTED and (self.status != CONNECTED or pid != self._master_pid):
-                _register_again()
-                self._master_pid = pid
-            self.status = status
+            self._look()
+
+    def _look(self):
+        """Ask the master once: note whether it answers, and tell a new master of this node."""
+        pid, self.round_trip = master_pid(self.master_uri)
+        status = CONNECTED if pid is not None else LOST
+        if status != self.status:
+            log.warning("ROS master %s: %s", self.master_uri, status)
+        # A master restarted between two looks (another pid) knows nothing of this node either.
+        if status == CONNECTED and (self.status != CONNECTED or pid != self._master_pid):
+            _register_again()
+            self._master_pid = pid
+        self.status = status
 
     @property
     def lost(self) -> bool:
