@@ -6,8 +6,8 @@ import sys
 
 import pytest
 from profile_copies import HOBBIT_DIR, SHARED_TOOLBOXES
-from PySide6.QtCore import QRect
-from PySide6.QtGui import QImage
+from PySide6.QtCore import QRect, QRectF
+from PySide6.QtGui import QFontMetricsF, QImage
 
 from rockly_desktop import sdk_view
 from rockly_desktop.profiles.profile import load_profile
@@ -85,7 +85,7 @@ def test_default_snapshot_draws_a_colourful_room_robot_and_panel(make_view):
     assert base_pixels > 100
 
 
-def test_size_hints_and_language(make_view):
+def test_size_hints_allow_320x240_and_an_unknown_language_falls_back_to_english(make_view):
     view = make_view()
     assert view.minimumSizeHint().width() <= 320 and view.minimumSizeHint().height() <= 240
     assert view.sizeHint().width() >= 320
@@ -95,7 +95,7 @@ def test_size_hints_and_language(make_view):
 
 
 @pytest.mark.parametrize("size", [(200, 150), (320, 240), (360, 300), (1600, 1200), (300, 700), (1200, 260)])
-def test_scales_to_small_large_and_odd_sizes(make_view, size):
+def test_at_small_large_and_odd_sizes_the_eyes_and_the_map_are_inside_the_view(make_view, size):
     view = make_view(*size, emotion="WONDERING", arm="floor", gripper="open", turntable="out", nav_goal=(3, -1),
                      trail=[(i * 0.05, 0.0) for i in range(60)], notices=["hello", "SOS call started"],
                      tablet={"kind": "D_YES_NO", "text": "Shall I bring you the red cup?"})
@@ -216,13 +216,58 @@ def test_waiting_tablet_shows_an_answer_hint(make_view):
         assert differing(plain, grab(view)) > 200, kind
 
 
-def test_long_tablet_text_fits_at_every_size(make_view):
-    for size in ((320, 240), (640, 480), (300, 700)):
-        view = make_view(*size, tablet={"kind": "D_YES_NO", "text": "word " * 400 + "x" * 300})
-        grab(view)
+class _TextMeasuringPainter:
+    """A real QPainter that notes, for every ``drawText(rect, flags, text)``, where that text's laid-out
+    lines lie (``QFontMetricsF.boundingRect`` in the painter's font at that moment)."""
+
+    def __init__(self, painter, drawn):
+        self._painter, self._drawn = painter, drawn
+
+    def __getattr__(self, name):
+        return getattr(self._painter, name)
+
+    def drawText(self, *args):
+        assert len(args) == 3 and isinstance(args[0], QRectF), f"text drawn without a rect to measure: {args}"
+        rect, flags, text = args
+        bounds = QFontMetricsF(self._painter.font()).boundingRect(rect, int(getattr(flags, "value", flags)), text)
+        self._drawn.append((text, bounds))
+        self._painter.drawText(*args)
 
 
-def test_german_texts(make_view):
+@pytest.fixture
+def tablet_texts(monkeypatch):
+    """``{"rect": the tablet's rect, "drawn": [(text, its bounding rect)]}`` of the view's latest paint."""
+    panel = sys.modules["rockly_hobbit.view.panel"]
+    paint_tablet, seen = panel.paint_tablet, {}
+
+    def measured(painter, scene, rect, layout):
+        seen.update(rect=QRectF(rect), drawn=[])
+        paint_tablet(_TextMeasuringPainter(painter, seen["drawn"]), scene, rect, layout)
+
+    monkeypatch.setattr(panel, "paint_tablet", measured)
+    return seen
+
+
+LONG_TABLET_TEXT = "word " * 400 + "x" * 300
+
+
+@pytest.mark.parametrize("kind", ["D_PLAIN", "D_YES_NO", "D_OK", "D_NAME"])
+def test_every_line_of_a_long_tablet_text_lies_inside_the_tablet_at_every_size(make_view, tablet_texts, kind):
+    """No drawn line is wider or lower than the tablet's screen (its bezel is at least 5 px), at any size."""
+    sizes = itertools.product((200, 320, 460, 640, 1024, 1600), (150, 240, 480, 700, 1200))
+    for size in sizes:
+        tablet_texts.clear()
+        grab(make_view(*size, tablet={"kind": kind, "text": LONG_TABLET_TEXT}))
+        assert tablet_texts, f"no tablet drawn at {size}"
+        screen = tablet_texts["rect"].adjusted(5, 5, -5, -5)
+        drawn = tablet_texts["drawn"]
+        assert any(text.startswith("word word") for text, _bounds in drawn), (size, drawn)
+        for text, bounds in drawn:
+            assert screen.adjusted(-0.5, -0.5, 0.5, 0.5).contains(bounds), \
+                f"at {size}, {text[:30]!r}… lies at {bounds}, outside the tablet's screen {screen}"
+
+
+def test_german_texts_differ_from_english_and_switching_back_draws_english_again(make_view):
     tablet = {"kind": "D_YES_NO", "text": "Soll ich kommen?"}
     english = grab(make_view(tablet=tablet))
     view = make_view(language="de", tablet=tablet)
@@ -258,7 +303,7 @@ def test_battery_levels_and_sos_notice_change_the_panel(make_view):
     assert differing(plain, sos) > 200
 
 
-def test_strange_snapshots_do_not_break_drawing(make_view):
+def test_malformed_snapshot_values_are_drawn_without_raising(make_view):
     view = make_view()
     for weird in (
         {"x": float("nan"), "y": "far", "theta": None, "battery": "full", "volume": -5},
