@@ -108,7 +108,7 @@ def _recording(record, program_path, profile, robot, types, language):
         return None
     from pathlib import Path
 
-    from rockly_desktop.executor.run_recording import RunRecording
+    from rockly_desktop.executor.run_to_mcap import RunRecording
 
     def stopped(error):
         print(app_text("cli_warning", language, command="rockly run", warning=app_text(

@@ -20,7 +20,7 @@ def open_run_recording(settings, document, workspace: dict, robot, say=lambda te
     """A started ``RunRecording`` for a window run of ``document`` on ``robot``; None when the preferences
     keep no recordings, or it cannot be made. ``say(text)`` tells the person, in the window's language,
     that the run is not recorded, or (called from the recording's thread) that its recording stopped."""
-    from rockly_desktop.executor.run_recording import RunRecording
+    from rockly_desktop.executor.run_to_mcap import RunRecording
     from rockly_desktop.recording.mcap_file import problem_text
 
     if settings.recordings_kept == 0:

@@ -3,8 +3,8 @@ from recorded_reading import channels_and_messages
 from waiting import eventually
 
 from rockly_desktop.executor.control import RunControl
-from rockly_desktop.executor.run_recording import RunRecording
 from rockly_desktop.executor.run_setup import make_runner
+from rockly_desktop.executor.run_to_mcap import RunRecording
 from rockly_desktop.robot.ros1.message_values import from_message
 
 PROGRAM = {"code": "\n".join([

@@ -7,7 +7,7 @@ from mcap_ros2.decoder import DecoderFactory
 from waiting import eventually
 
 from rockly_desktop.executor.events import RunFinished
-from rockly_desktop.executor.run_recording import RunRecording
+from rockly_desktop.executor.run_to_mcap import RunRecording
 from rockly_desktop.recording.reading import read_recording
 from rockly_desktop.recording.topics import RecordedTopics, message_dict
 

@@ -8,8 +8,8 @@ import pytest
 from recorded_reading import channels_and_messages, metadata_and_attachments
 
 from rockly_desktop.executor.control import RunControl
-from rockly_desktop.executor.run_recording import RunRecording
 from rockly_desktop.executor.run_setup import make_runner
+from rockly_desktop.executor.run_to_mcap import RunRecording
 from rockly_desktop.recording.reading import read_recording
 from rockly_desktop.robot.sim_link import SimulatedRobot
 

@@ -1,4 +1,4 @@
-"""A run's recording: opened for a robot and a program, fed by the run's events, closed at its end.
+"""One run written to an MCAP recording: opened for a robot and a program, fed by the run, closed at its end.
 
 The recording hooks in above any backend: the state store hands it the robot's topics,
 ``robot/recorded.py`` what the program sends and what comes back, the block hooks the
