@@ -100,8 +100,8 @@ def main():
         from rockly_desktop.app import create_application
         from rockly_desktop.profiles.registry import ProfileRegistry
         from rockly_desktop.robot.ros1.link import RosRobot
-        from rockly_desktop.ui.plot_panel import PlotPanel
-        from rockly_desktop.ui.topic_monitor import TopicMonitor
+        from rockly_desktop.ui.docks.plot_panel import PlotPanel
+        from rockly_desktop.ui.docks.topic_monitor import TopicMonitor
 
         app = create_application()
         robot = RosRobot(ProfileRegistry.discover().get("hobbit"), master.uri)

@@ -139,7 +139,7 @@ def _run_window(argv) -> int:
 
     from rockly_desktop import cli
     from rockly_desktop.app import create_application
-    from rockly_desktop.ui.tablet import TabletDialog
+    from rockly_desktop.ui.docks.tablet import TabletDialog
 
     app = create_application()
 

@@ -3,7 +3,7 @@
 A simulator is given a tablet port: ``ask(question, text, timeout, interrupt) -> str``
 (blocking until the person answers; a ``TabletQuestion`` says which answer it wants) and
 ``notify(text)`` (a message that waits for nothing). The window shows dialogs
-(``ui/tablet.py``), ``rockly run``/``rockly sim`` answer from ``--answer`` (``answer_list.py``).
+(``ui/docks/tablet.py``), ``rockly run``/``rockly sim`` answer from ``--answer`` (``answer_list.py``).
 A profile maps its robot's own dialog codes onto these.
 """
 from enum import Enum

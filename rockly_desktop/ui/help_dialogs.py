@@ -6,7 +6,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction, QKeySequence
 from PySide6.QtWidgets import QDialog, QDialogButtonBox, QMenu, QTextBrowser, QVBoxLayout
 
-from rockly_desktop.ui.run_toolbar import RUN_KEYS
+from rockly_desktop.ui.run.run_toolbar import RUN_KEYS
 from rockly_desktop.ui.texts import tr
 
 _STEPS = ("first_steps_robot", "first_steps_blocks", "first_steps_run", "first_steps_glow", "first_steps_loose",

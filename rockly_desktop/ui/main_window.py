@@ -7,31 +7,31 @@ from rockly_desktop import __version__
 from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS, EditorView
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.recovery import RecoverySession, claim_abandoned
-from rockly_desktop.ui.autosave import Autosave
-from rockly_desktop.ui.block_badges import badges_shown
-from rockly_desktop.ui.code_dock import CodeDock
-from rockly_desktop.ui.console_dock import ConsoleDock
-from rockly_desktop.ui.document import Document
-from rockly_desktop.ui.examples_menu import ExamplesMenu
-from rockly_desktop.ui.health_bar import HealthBar
+from rockly_desktop.ui.docks.code_dock import CodeDock
+from rockly_desktop.ui.docks.console_dock import ConsoleDock
+from rockly_desktop.ui.docks.simulator_dock import SimulatorDock
+from rockly_desktop.ui.docks.stage_layout import BottomTabSizes, StageLayout, keep_side_docks_full_height
+from rockly_desktop.ui.docks.state_panels import StatePanels
+from rockly_desktop.ui.docks.tablet import QtTablet
+from rockly_desktop.ui.docks.variables_dock import VariablesDock
+from rockly_desktop.ui.files.autosave import Autosave
+from rockly_desktop.ui.files.document import Document
+from rockly_desktop.ui.files.examples_menu import ExamplesMenu
+from rockly_desktop.ui.files.program_files import ProgramFiles
+from rockly_desktop.ui.files.recovery_prompt import RecoveryPrompt
 from rockly_desktop.ui.help_dialogs import retitle_help_pages, show_first_steps, show_shortcuts
 from rockly_desktop.ui.keyboard import KeyboardAccess
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.plain_text import mnemonic_free, plain_label
-from rockly_desktop.ui.preferences import PreferencesDialog
-from rockly_desktop.ui.program_files import ProgramFiles
-from rockly_desktop.ui.recovery_prompt import RecoveryPrompt
-from rockly_desktop.ui.replay import Replay
-from rockly_desktop.ui.replay_bar import ReplayBar, under
-from rockly_desktop.ui.robot_choice import RobotChoice
-from rockly_desktop.ui.run_session import RunSession
-from rockly_desktop.ui.run_toolbar import RunToolbar
-from rockly_desktop.ui.simulator_dock import SimulatorDock
-from rockly_desktop.ui.stage_layout import BottomTabSizes, StageLayout, keep_side_docks_full_height
-from rockly_desktop.ui.state_panels import StatePanels
-from rockly_desktop.ui.tablet import QtTablet
+from rockly_desktop.ui.preferences.preferences import PreferencesDialog
+from rockly_desktop.ui.replay.replay import Replay
+from rockly_desktop.ui.replay.replay_bar import ReplayBar, under
+from rockly_desktop.ui.robot.health_bar import HealthBar
+from rockly_desktop.ui.robot.robot_choice import RobotChoice
+from rockly_desktop.ui.run.block_badges import badges_shown
+from rockly_desktop.ui.run.run_session import RunSession
+from rockly_desktop.ui.run.run_toolbar import RunToolbar
 from rockly_desktop.ui.texts import editor_page_texts, tr
-from rockly_desktop.ui.variables_dock import VariablesDock
 from rockly_desktop.ui.window_fit import fit_first_window
 
 
@@ -219,7 +219,7 @@ class MainWindow(QMainWindow):
         if self.simulator_dock.robot is robot:
             return
         robot.follow_graph()
-        from rockly_desktop.ui.topic_monitor import TopicMonitor  # not needed before the editor is up
+        from rockly_desktop.ui.docks.topic_monitor import TopicMonitor  # not needed before the editor is up
 
         panels = StatePanels(self.profile.state_panels, self.language, self.state_dock)
         panels.set_store(robot.state)
@@ -252,7 +252,7 @@ class MainWindow(QMainWindow):
         """The Plot dock's panel, made on first use (pyqtgraph takes a while to load)."""
         widget = self.plot_dock.widget()
         if widget is None or widget.objectName() != "plot_panel":
-            from rockly_desktop.ui.plot_panel import PlotPanel
+            from rockly_desktop.ui.docks.plot_panel import PlotPanel
 
             widget = PlotPanel(self._plot_store, self.language)
             widget.setObjectName("plot_panel")

@@ -189,7 +189,7 @@ def test_size_hints():
 
 def test_ahead_is_one_sector_in_the_commands_the_view_and_the_robot_state_panel(qtbot, make_view):
     from rockly_desktop.core.state_store import StateStore
-    from rockly_desktop.ui.state_panels import StatePanels
+    from rockly_desktop.ui.docks.state_panels import StatePanels
 
     world = SimWorld()
     sim = SimTurtleBot(world, speed=20)

@@ -5,7 +5,7 @@ import threading
 
 from test_printed_lines import printed_fast  # noqa: F401 - the fixture
 
-from rockly_desktop.ui import recording_reader
+from rockly_desktop.ui.replay import recording_reader
 
 
 def test_reading_pauses_the_collector_and_keeps_what_it_read_out_of_its_passes(printed_fast):  # noqa: F811

@@ -57,7 +57,7 @@ def test_each_connection_setting_has_a_window_label_and_ros1_asks_for_master_and
 
 
 def test_the_window_robot_box_lists_every_kind_in_its_language(qtbot):
-    from rockly_desktop.ui.run_toolbar import RunToolbar
+    from rockly_desktop.ui.run.run_toolbar import RunToolbar
 
     toolbar = RunToolbar("de")
     qtbot.addWidget(toolbar)

@@ -3,7 +3,7 @@ from program_builder import block, text
 from test_running import load
 
 from rockly_desktop.executor.events import OutputPrinted
-from rockly_desktop.ui.console_dock import MAX_LINES
+from rockly_desktop.ui.docks.console_dock import MAX_LINES
 
 
 def endless_print():

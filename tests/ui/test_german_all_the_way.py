@@ -6,8 +6,8 @@ import pytest
 from PySide6.QtWidgets import QToolButton
 
 from rockly_desktop.core.app_texts import app_text
-from rockly_desktop.ui.block_badges import badge_texts
 from rockly_desktop.ui.help_dialogs import show_shortcuts
+from rockly_desktop.ui.run.block_badges import badge_texts
 
 DECIMAL_COMMA = re.compile(r"\d,\d")
 DECIMAL_POINT = re.compile(r"\d\.\d")

@@ -3,7 +3,7 @@ kiosk was left (``stop()``), without an error or a crash."""
 from PySide6.QtCore import SIGNAL, QCoreApplication, QEvent
 from PySide6.QtWidgets import QDialog, QWidget
 
-from rockly_desktop.ui.idle_watch import IdleWatch
+from rockly_desktop.ui.kiosk.idle_watch import IdleWatch
 
 
 def delete_now(widget):

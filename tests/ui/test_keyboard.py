@@ -13,7 +13,7 @@ from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication, QDockWidget, QTabBar, QWidget
 
 from rockly_desktop.ui.help_dialogs import shortcuts_html
-from rockly_desktop.ui.preferences import PreferencesDialog
+from rockly_desktop.ui.preferences.preferences import PreferencesDialog
 from rockly_desktop.ui.texts import tr
 
 K = Qt.Key

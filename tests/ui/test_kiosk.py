@@ -12,9 +12,9 @@ from PySide6.QtWidgets import QApplication, QDialog, QFileDialog, QMenu
 from test_running import load
 
 from rockly_desktop.app import build_main_window, start_kiosk
-from rockly_desktop.ui import idle_watch
-from rockly_desktop.ui.kiosk import LeaveDialog
-from rockly_desktop.ui.run_toolbar import RunToolbar
+from rockly_desktop.ui.kiosk import idle_watch
+from rockly_desktop.ui.kiosk.kiosk import LeaveDialog
+from rockly_desktop.ui.run.run_toolbar import RunToolbar
 from rockly_desktop.ui.settings import AppSettings
 
 PIN = "4711"
@@ -203,7 +203,7 @@ def test_after_idling_the_kiosk_keeps_the_visitors_program_and_starts_over(qtbot
 
 
 def test_kiosk_mode_fixes_the_teacher_level(qtbot, open_kiosk):
-    from rockly_desktop.ui.preferences import PreferencesDialog
+    from rockly_desktop.ui.preferences.preferences import PreferencesDialog
 
     window, _kiosk = open_kiosk()
     dialog = PreferencesDialog("en", window, window.profile, window.settings.teacher,
@@ -220,7 +220,7 @@ def test_kiosk_mode_fixes_the_teacher_level(qtbot, open_kiosk):
 
 
 def test_without_a_pin_a_kiosk_offers_no_teacher_settings(qtbot, tmp_path, hobbit):
-    from rockly_desktop.ui.preferences import PreferencesDialog
+    from rockly_desktop.ui.preferences.preferences import PreferencesDialog
 
     settings = AppSettings(tmp_path / "s.ini")
     settings.kiosk.quit_chord = CHORD           # the teacher leaves with the chord; a visitor must not set a PIN
@@ -230,7 +230,7 @@ def test_without_a_pin_a_kiosk_offers_no_teacher_settings(qtbot, tmp_path, hobbi
 
 
 def test_the_kiosk_tab_is_locked_until_the_teacher_tab_is_unlocked(qtbot, tmp_path, hobbit):
-    from rockly_desktop.ui.preferences import PreferencesDialog
+    from rockly_desktop.ui.preferences.preferences import PreferencesDialog
 
     settings = AppSettings(tmp_path / "s.ini")
     settings.teacher.set_pin(PIN)

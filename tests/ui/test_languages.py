@@ -7,10 +7,10 @@ from PySide6.QtWidgets import QApplication, QMessageBox
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.robot.links import link_kind
 from rockly_desktop.robot.ros1.connection import RosUnavailable
-from rockly_desktop.ui.connection_dialog import ConnectionDialog
+from rockly_desktop.ui.docks.state_panels import StatePanels, number_format
 from rockly_desktop.ui.message_boxes import plain_message_box, title_width
 from rockly_desktop.ui.qt_language import translations_folder, use_language
-from rockly_desktop.ui.state_panels import StatePanels, number_format
+from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
 from rockly_desktop.ui.texts import robot_problem
 
 SAVE_BUTTONS = QMessageBox.StandardButton.Save | QMessageBox.StandardButton.Discard | QMessageBox.StandardButton.Cancel

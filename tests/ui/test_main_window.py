@@ -7,7 +7,7 @@ from PySide6.QtCore import QCoreApplication
 from PySide6.QtWidgets import QLabel, QMessageBox
 from window_tools import WindowDriver, error_boxes, state
 
-from rockly_desktop.ui.preferences import PreferencesDialog
+from rockly_desktop.ui.preferences.preferences import PreferencesDialog
 
 REPO_HOBBIT = __import__("pathlib").Path(__file__).resolve().parents[2] / "profiles" / "hobbit"
 

@@ -9,8 +9,8 @@ from PySide6.QtWidgets import QTextBrowser
 from window_tools import completed, state
 
 from rockly_desktop.core.paths import examples_dir
-from rockly_desktop.ui import program_files
-from rockly_desktop.ui.examples_menu import example_programs, readable_name
+from rockly_desktop.ui.files import program_files
+from rockly_desktop.ui.files.examples_menu import example_programs, readable_name
 from rockly_desktop.ui.help_dialogs import HelpPage, action_shortcuts
 from rockly_desktop.ui.texts import tr
 

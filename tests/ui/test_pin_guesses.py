@@ -8,9 +8,9 @@ import pytest
 from fake_time import FakeTime
 from PySide6.QtCore import QSettings
 
-from rockly_desktop.ui import teacher_settings
-from rockly_desktop.ui.kiosk import LeaveDialog
-from rockly_desktop.ui.preferences import PreferencesDialog
+from rockly_desktop.ui.kiosk.kiosk import LeaveDialog
+from rockly_desktop.ui.preferences import teacher_settings
+from rockly_desktop.ui.preferences.preferences import PreferencesDialog
 from rockly_desktop.ui.settings import AppSettings
 
 PIN = "2580"

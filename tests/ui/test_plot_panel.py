@@ -11,7 +11,7 @@ from screenshots import screenshot
 
 from rockly_desktop.core.field_paths import field_mime_text
 from rockly_desktop.core.state_store import StateStore
-from rockly_desktop.ui.plot_panel import MAX_SAMPLES, MIN_Y_SPAN, PlotPanel
+from rockly_desktop.ui.docks.plot_panel import MAX_SAMPLES, MIN_Y_SPAN, PlotPanel
 
 X = "pose.pose.position.x"
 TURN = "twist.twist.angular.z"

@@ -14,7 +14,7 @@ from rockly_desktop.recording import channels
 from rockly_desktop.recording.reading import read_recording
 from rockly_desktop.recording.recorder import Recorder
 from rockly_desktop.robot.links import link_kind
-from rockly_desktop.ui.connection_dialog import ConnectionDialog
+from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "turtlebot" / "avoid-obstacles.rockly"
 

@@ -11,8 +11,8 @@ from program_builder import block, number, stack, text, workspace
 from test_replay import highlighted
 
 from rockly_desktop.recording import reading
-from rockly_desktop.ui import replay
-from rockly_desktop.ui.recording_reader import release
+from rockly_desktop.ui.replay import replay
+from rockly_desktop.ui.replay.recording_reader import release
 
 
 def counting_and_printing_forever():

@@ -11,8 +11,8 @@ from test_replay import shot
 from rockly_desktop.recording import channels
 from rockly_desktop.recording.odometry import RecordedPath
 from rockly_desktop.robot.links import link_kind
-from rockly_desktop.ui.connection_dialog import ConnectionDialog
-from rockly_desktop.ui.plan_view import PlanView
+from rockly_desktop.ui.docks.plan_view import PlanView
+from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
 
 ROS1 = link_kind("ros1")
 

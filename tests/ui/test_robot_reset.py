@@ -2,7 +2,7 @@
 from program_builder import block, number, stack
 from test_running import finished, load
 
-from rockly_desktop.ui.preferences import PreferencesDialog
+from rockly_desktop.ui.preferences.preferences import PreferencesDialog
 from rockly_desktop.ui.settings import AppSettings
 
 

@@ -10,7 +10,7 @@ from program_builder import block, number, stack, text, workspace
 from waiting import eventually
 
 from rockly_desktop.robot.links import link_kind
-from rockly_desktop.ui.connection_dialog import ConnectionDialog
+from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
 from rockly_desktop.ui.texts import tr
 
 ROS2 = link_kind("ros2")

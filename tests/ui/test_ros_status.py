@@ -10,8 +10,8 @@ from program_builder import block, number, stack, workspace
 from screenshots import screenshot
 
 from rockly_desktop.robot.links import link_kind
-from rockly_desktop.ui.connection_dialog import ConnectionDialog
-from rockly_desktop.ui.health_bar import COLOURS
+from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
+from rockly_desktop.ui.robot.health_bar import COLOURS
 from rockly_desktop.ui.texts import tr
 
 ROS1, ROS2 = link_kind("ros1"), link_kind("ros2")

@@ -7,7 +7,7 @@ from program_builder import block, number, stack, workspace
 from ros_helpers import feed_hears
 
 from rockly_desktop.robot.links import link_kind
-from rockly_desktop.ui.connection_dialog import ConnectionDialog
+from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
 
 ROS1 = link_kind("ros1")
 

@@ -8,7 +8,7 @@ from PySide6.QtWidgets import QApplication, QMessageBox
 from window_tools import completed
 
 from rockly_desktop.robot import interrupt
-from rockly_desktop.ui.tablet import TabletDialog
+from rockly_desktop.ui.docks.tablet import TabletDialog
 
 
 def load(qtbot, window, *blocks, variables=None):

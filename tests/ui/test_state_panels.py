@@ -4,7 +4,7 @@ from program_builder import block, number, stack, text, workspace
 from PySide6.QtWidgets import QLabel
 
 from rockly_desktop.core.state_store import StateStore
-from rockly_desktop.ui.state_panels import StatePanels
+from rockly_desktop.ui.docks.state_panels import StatePanels
 
 
 def test_each_row_shows_its_field_transformed_and_formatted(qtbot, hobbit):

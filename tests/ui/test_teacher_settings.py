@@ -5,7 +5,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDialog
 from window_tools import state
 
-from rockly_desktop.ui.preferences import PreferencesDialog
+from rockly_desktop.ui.preferences.preferences import PreferencesDialog
 from rockly_desktop.ui.settings import AppSettings
 
 STARTER = {"hobbit_move", "hobbit_turn", "hobbit_stop", "hobbit_head", "hobbit_emo", "hobbit_show_info",

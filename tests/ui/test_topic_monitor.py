@@ -8,8 +8,8 @@ import pytest
 from PySide6.QtCore import QPoint, Qt, QTimer
 
 from rockly_desktop.core.state_store import StateStore
-from rockly_desktop.ui.topic_models import LIST_LIMIT, RATE, TOPIC
-from rockly_desktop.ui.topic_monitor import TopicMonitor
+from rockly_desktop.ui.docks.topic_models import LIST_LIMIT, RATE, TOPIC
+from rockly_desktop.ui.docks.topic_monitor import TopicMonitor
 
 ODOM = "nav_msgs/Odometry"
 

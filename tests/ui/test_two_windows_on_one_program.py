@@ -12,7 +12,7 @@ from window_tools import completed
 
 from rockly_desktop.core.program import load_program
 from rockly_desktop.core.recovery import RecoverySession, read_recovery
-from rockly_desktop.ui.disk_changes import CANCEL, OVERWRITE, RELOAD, SAVE_AS
+from rockly_desktop.ui.files.disk_changes import CANCEL, OVERWRITE, RELOAD, SAVE_AS
 
 QUESTION = "“square.rockly” was changed by another window or program since you opened or saved it here."
 

@@ -10,9 +10,9 @@ from PySide6.QtWidgets import QMainWindow
 
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.ui.docks.simulator_dock import REFRESH_MS
+from rockly_desktop.ui.docks.tablet import QtTablet
 from rockly_desktop.ui.plain_text import plain_label
-from rockly_desktop.ui.simulator_dock import REFRESH_MS
-from rockly_desktop.ui.tablet import QtTablet
 from rockly_desktop.ui.texts import tr
 
 # Goes back to the program that asked (in another process), like the robot's other errors: English.

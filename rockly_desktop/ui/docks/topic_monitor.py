@@ -31,8 +31,7 @@ from PySide6.QtWidgets import (
 )
 
 from rockly_desktop.core.topic_rows import topic_entries
-from rockly_desktop.ui.texts import tr
-from rockly_desktop.ui.topic_models import (
+from rockly_desktop.ui.docks.topic_models import (
     AGE,
     FILTER_ROLE,
     HEADERS,
@@ -44,6 +43,7 @@ from rockly_desktop.ui.topic_models import (
     MessageModel,
     TopicTableModel,
 )
+from rockly_desktop.ui.texts import tr
 
 REFRESH_MS = 100          # at most 10 updates a second
 GRAPH_INTERVAL = 1.0      # seconds between two questions to the ROS graph on the timer

@@ -2,7 +2,7 @@
 from PySide6.QtGui import QFontDatabase
 from PySide6.QtWidgets import QDockWidget, QPlainTextEdit
 
-from rockly_desktop.ui.python_highlighter import PythonHighlighter
+from rockly_desktop.ui.docks.python_highlighter import PythonHighlighter
 
 
 class CodeView(QPlainTextEdit):

@@ -2,7 +2,7 @@
 
 The bar knows only times: it says ``sig_moment(seconds)`` when the person drags, plays or
 clicks a marker, and ``sig_closed`` when they close it. What a moment shows is the
-replay's business (``ui/replay.py``).
+replay's business (``ui/replay/replay.py``).
 """
 import math
 import time

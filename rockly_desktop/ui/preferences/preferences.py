@@ -12,8 +12,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from rockly_desktop.ui.kiosk_tab import KioskTab
-from rockly_desktop.ui.teacher_tab import TeacherTab
+from rockly_desktop.ui.preferences.kiosk_tab import KioskTab
+from rockly_desktop.ui.preferences.teacher_tab import TeacherTab
 from rockly_desktop.ui.texts import language_names, tr
 
 

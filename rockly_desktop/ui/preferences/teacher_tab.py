@@ -16,7 +16,7 @@ from PySide6.QtWidgets import (
 )
 
 from rockly_desktop.ui.plain_text import mnemonic_free, plain_label
-from rockly_desktop.ui.teacher_settings import MIN_PIN_LENGTH, wait_text
+from rockly_desktop.ui.preferences.teacher_settings import MIN_PIN_LENGTH, wait_text
 from rockly_desktop.ui.texts import tr
 
 

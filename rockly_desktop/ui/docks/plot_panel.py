@@ -39,7 +39,7 @@ from PySide6.QtWidgets import (
 from rockly_desktop.core.field_paths import numeric_paths, parse_mime_text
 from rockly_desktop.plotting.csv_export import write_tidy_csv
 from rockly_desktop.plotting.samples import SampleBuffer, read_new_samples
-from rockly_desktop.ui.plot_axis import LocalAxis
+from rockly_desktop.ui.docks.plot_axis import LocalAxis
 from rockly_desktop.ui.texts import tr
 
 os.environ.setdefault("PYQTGRAPH_QT_LIB", "PySide6")

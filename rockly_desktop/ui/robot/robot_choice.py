@@ -12,10 +12,10 @@ from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.numbers import number_format
 from rockly_desktop.robot.health import AMBER, link_state, overall
 from rockly_desktop.robot.links import DEFAULT_KIND, check_available, link_kind, open_link
-from rockly_desktop.ui.connection_dialog import ConnectionDialog
-from rockly_desktop.ui.health_bar import COLOURS
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.plain_text import plain_label, tooltip_text
+from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
+from rockly_desktop.ui.robot.health_bar import COLOURS
 from rockly_desktop.ui.texts import robot_problem, said_in, tr
 
 CONNECT_TIMEOUT = 1.0  # seconds a robot chosen in the window has to answer

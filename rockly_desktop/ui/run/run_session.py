@@ -13,8 +13,8 @@ from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import RunFinished, RunPaused, RunResumed, VariablesChanged
 from rockly_desktop.executor.qt_adapter import ProgramThread
-from rockly_desktop.ui.block_badges import badge_texts, badges_shown
-from rockly_desktop.ui.run_messages import run_problem_box
+from rockly_desktop.ui.run.block_badges import badge_texts, badges_shown
+from rockly_desktop.ui.run.run_messages import run_problem_box
 from rockly_desktop.ui.texts import robot_problem, tr
 
 FOLLOW_MS = 33
@@ -95,7 +95,7 @@ class RunSession(QObject):
             self._set_state("idle")
             return
         from rockly_desktop.executor.run_setup import make_runner  # loaded at the first run, not at start-up
-        from rockly_desktop.ui.run_recordings import open_run_recording
+        from rockly_desktop.ui.replay.run_recordings import open_run_recording
 
         recording = None
         try:

@@ -10,11 +10,11 @@ show a robot where no robot was.
 from PySide6.QtCore import QObject, Signal
 from PySide6.QtWidgets import QMessageBox
 
-from rockly_desktop.ui.block_badges import badge_texts
-from rockly_desktop.ui.file_dialogs import FileDialogs
+from rockly_desktop.ui.docks.plan_view import PlanView
+from rockly_desktop.ui.files.file_dialogs import FileDialogs
 from rockly_desktop.ui.message_boxes import plain_message_box
-from rockly_desktop.ui.plan_view import PlanView
-from rockly_desktop.ui.recording_reader import RecordingReader, release
+from rockly_desktop.ui.replay.recording_reader import RecordingReader, release
+from rockly_desktop.ui.run.block_badges import badge_texts
 from rockly_desktop.ui.texts import tr
 
 

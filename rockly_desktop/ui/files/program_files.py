@@ -24,8 +24,8 @@ from rockly_desktop.core.export import python_module_text
 from rockly_desktop.core.file_stamp import stamp_file
 from rockly_desktop.core.program import PROGRAM_SUFFIX, Program, save_program, write_text_atomically
 from rockly_desktop.profiles.opening import read_program_to_open, unknown_blocks_error
-from rockly_desktop.ui.disk_changes import OVERWRITE, RELOAD, SAVE_AS, changed_on_disk_box
-from rockly_desktop.ui.file_dialogs import FileDialogs
+from rockly_desktop.ui.files.disk_changes import OVERWRITE, RELOAD, SAVE_AS, changed_on_disk_box
+from rockly_desktop.ui.files.file_dialogs import FileDialogs
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.texts import tr
 

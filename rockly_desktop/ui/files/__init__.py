@@ -1,0 +1,1 @@
+"""Programs on disk: opening, saving, recent files, autosave and recovery, the file dialogs."""

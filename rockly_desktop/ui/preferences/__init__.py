@@ -1,0 +1,1 @@
+"""The Preferences dialog and what a teacher sets behind its PIN."""
