@@ -1,1 +1,1 @@
-"""Replaying a recorded run: reading the recording, the timeline bar, the runs kept."""
+"""Replaying a recorded run: reading the recording in a thread, the timeline bar, the run shown again."""

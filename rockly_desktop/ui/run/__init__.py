@@ -1,1 +1,2 @@
-"""Running the program on screen: the run session, its toolbar, its messages and the blocks' badges."""
+"""Running the program on screen: the run session, its toolbar, its messages, the blocks' badges and the
+recordings every run leaves."""

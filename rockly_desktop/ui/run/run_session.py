@@ -95,7 +95,7 @@ class RunSession(QObject):
             self._set_state("idle")
             return
         from rockly_desktop.executor.run_setup import make_runner  # loaded at the first run, not at start-up
-        from rockly_desktop.ui.replay.run_recordings import open_run_recording
+        from rockly_desktop.ui.run.run_recordings import open_run_recording
 
         recording = None
         try:
