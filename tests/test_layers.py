@@ -57,13 +57,13 @@ def test_ros_outside_its_link_package_breaks_the_contracts(tmp_path):
 def test_the_simulators_link_naming_a_middleware_breaks_the_contracts(tmp_path):
     """The built-in simulator's link takes its recording encoder from the registry, not from robot/ros1."""
     copy_of_rockly(tmp_path)
-    sim_link = tmp_path / "rockly_desktop" / "robot" / "sim_link.py"
+    sim_link = tmp_path / "rockly_desktop" / "robot" / "sim" / "link.py"
     sim_link.write_text(sim_link.read_text(encoding="utf-8") + (
         "\n\ndef encoder():\n    from rockly_desktop.robot.ros1.recording_codec import Ros1Encoder\n\n"
         "    return Ros1Encoder()\n"), encoding="utf-8")
     output = broken_contracts(tmp_path)
     assert "The built-in simulator's link names no middleware" in output
-    assert "rockly_desktop.robot.sim_link -> rockly_desktop.robot.ros1.recording_codec" in output
+    assert "rockly_desktop.robot.sim.link -> rockly_desktop.robot.ros1.recording_codec" in output
     assert "Contracts: 8 kept, 1 broken." in output
 
 
@@ -143,7 +143,7 @@ def test_profile_code_imports_only_the_sdk_from_rockly():
 
 
 def test_the_import_check_sees_every_way_of_importing_rockly():
-    source = ("import rockly_desktop.robot.sim_world\nfrom rockly_desktop import sdk, core\n"
+    source = ("import rockly_desktop.robot.sim.sim_world\nfrom rockly_desktop import sdk, core\n"
               "from rockly_desktop.sdk_view import card\nfrom . import palette\nimport math\n")
-    assert rockly_imports(source) == {"rockly_desktop.robot.sim_world", "rockly_desktop.sdk", "rockly_desktop.core",
+    assert rockly_imports(source) == {"rockly_desktop.robot.sim.sim_world", "rockly_desktop.sdk", "rockly_desktop.core",
                                       "rockly_desktop.sdk_view"}

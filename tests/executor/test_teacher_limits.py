@@ -7,7 +7,7 @@ from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import OutputPrinted
 from rockly_desktop.executor.run_setup import limits_line, make_runner
 from rockly_desktop.robot.limits import Limits
-from rockly_desktop.robot.sim_link import SimulatedRobot
+from rockly_desktop.robot.sim.link import SimulatedRobot
 
 FAST = "ros.publish_message('/cmd_vel', 'geometry_msgs/Twist', {'linear': {'x': %s}, 'angular': {'z': %s}})\n"
 

@@ -21,8 +21,8 @@ from sim_tools import HoldWatcher, eventually_in, later, pose
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.profiles.profile import load_profile
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
-from rockly_desktop.robot.tablet import TabletQuestion
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.sim.tablet import TabletQuestion
 
 PROFILE = load_profile(HOBBIT_DIR, SHARED_TOOLBOXES)
 

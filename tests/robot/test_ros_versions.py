@@ -23,8 +23,8 @@ from rockly_desktop.robot.ros_versions import (
     robot_type,
     stamped_part,
 )
-from rockly_desktop.robot.sim_link import SimulatedRobot
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.sim.link import SimulatedRobot
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
 
 TURTLEBOT = load_profile(REPO / "profiles" / "turtlebot", SHARED_TOOLBOXES)
 TWIST, STAMPED = "geometry_msgs/Twist", "geometry_msgs/TwistStamped"

@@ -5,7 +5,7 @@ from rockly_desktop.robot import link_parts, links
 from rockly_desktop.robot.health import GREEN, HealthItem, server_health, topic_health
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.ros_versions import ros_name, short_type
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
 
 
 def listened_types(profile) -> dict:
