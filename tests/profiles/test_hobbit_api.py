@@ -494,7 +494,7 @@ def test_stop_while_a_drive_holds_ends_the_program_and_the_base_stays_where_it_h
 
 def test_pause_halts_a_drive_under_a_speed_limit_and_continue_drives_the_rest_at_the_limit(world, sim, control, hold,
                                                                                          backend):
-    from rockly_desktop.robot.limits import LimitedBackend, Limits
+    from rockly_desktop.robot.wrappers.limits import LimitedBackend, Limits
 
     limited = Hobbit(LimitedBackend(backend, Limits(max_speed=0.1), ["/cmd_vel"]))
     twists = record(world, "/cmd_vel")

@@ -27,7 +27,7 @@ import numbers
 import threading
 import time
 
-from rockly_desktop.robot.velocity_messages import is_velocity_number
+from rockly_desktop.robot.wrappers.velocity_messages import is_velocity_number
 
 
 def checked_speed(speed) -> float:
