@@ -30,7 +30,7 @@ def broken_contracts(folder: Path) -> str:
 def test_layer_contracts_are_kept():
     result = lint_imports(REPO)
     assert result.returncode == 0, result.stdout + result.stderr
-    assert "Contracts: 9 kept, 0 broken." in result.stdout
+    assert "Contracts: 10 kept, 0 broken." in result.stdout
 
 
 def test_a_core_module_importing_qt_breaks_the_contracts(tmp_path):
@@ -51,20 +51,42 @@ def test_ros_outside_its_link_package_breaks_the_contracts(tmp_path):
     output = broken_contracts(tmp_path)
     assert "rockly_desktop.robot.sneaky -> rospy" in output and "rockly_desktop.robot.sneaky -> rclpy" in output
     assert "rockly_desktop.ui.sneaky -> rockly_desktop.robot.ros1.link" in output
-    assert "Contracts: 6 kept, 3 broken." in output
+    assert "Contracts: 7 kept, 3 broken." in output
 
 
-def test_the_simulators_link_naming_a_middleware_breaks_the_contracts(tmp_path):
-    """The built-in simulator's link takes its recording encoder from the registry, not from robot/ros1."""
+def test_the_simulator_naming_a_middleware_breaks_the_contracts(tmp_path):
+    """By package: the simulator's link (its recording encoder is the registry's) and any module of
+    robot/sim, one added later too, name no ROS link and no ROS package."""
     copy_of_rockly(tmp_path)
-    sim_link = tmp_path / "rockly_desktop" / "robot" / "sim" / "link.py"
+    sim = tmp_path / "rockly_desktop" / "robot" / "sim"
+    sim_link = sim / "link.py"
     sim_link.write_text(sim_link.read_text(encoding="utf-8") + (
         "\n\ndef encoder():\n    from rockly_desktop.robot.ros1.recording_codec import Ros1Encoder\n\n"
         "    return Ros1Encoder()\n"), encoding="utf-8")
+    (sim / "later.py").write_text("from rockly_desktop.robot.ros2 import client\n")
     output = broken_contracts(tmp_path)
-    assert "The built-in simulator's link names no middleware" in output
+    assert "The built-in simulator (robot.sim) names no middleware" in output
     assert "rockly_desktop.robot.sim.link -> rockly_desktop.robot.ros1.recording_codec" in output
-    assert "Contracts: 8 kept, 1 broken." in output
+    assert "rockly_desktop.robot.sim.later -> rockly_desktop.robot.ros2.client" in output
+    assert "Contracts: 9 kept, 1 broken." in output
+
+
+def test_a_wrapper_naming_the_simulator_a_link_or_the_registry_breaks_the_contracts(tmp_path):
+    """By package: a backend wrapper (robot/wrappers, one added later too) works on any RobotBackend."""
+    copy_of_rockly(tmp_path)
+    wrappers = tmp_path / "rockly_desktop" / "robot" / "wrappers"
+    limits = wrappers / "limits.py"
+    limits.write_text(limits.read_text(encoding="utf-8") + (
+        "\n\ndef simulated(backend):\n    from rockly_desktop.robot.sim.sim_world import SimBackend\n\n"
+        "    return isinstance(backend, SimBackend)\n"), encoding="utf-8")
+    (wrappers / "later.py").write_text(
+        "from rockly_desktop.robot import links\nfrom rockly_desktop.robot.ros1 import link\n")
+    output = broken_contracts(tmp_path)
+    assert "The backend wrappers (robot.wrappers) work on any backend" in output
+    assert "rockly_desktop.robot.wrappers.limits -> rockly_desktop.robot.sim.sim_world" in output
+    assert "rockly_desktop.robot.wrappers.later -> rockly_desktop.robot.links" in output
+    assert "rockly_desktop.robot.wrappers.later -> rockly_desktop.robot.ros1.link" in output
+    assert "Contracts: 9 kept, 1 broken." in output
 
 
 def test_rclpy_on_rocklys_side_of_ros2_or_the_helper_imported_there_breaks_the_contracts(tmp_path):
@@ -78,7 +100,7 @@ def test_rclpy_on_rocklys_side_of_ros2_or_the_helper_imported_there_breaks_the_c
     output = broken_contracts(tmp_path)
     assert "rockly_desktop.robot.ros2.sim_bridge -> rclpy" in output
     assert "rockly_desktop.robot.ros2.later -> rockly_desktop.robot.ros2.helper.ros_values" in output
-    assert "Contracts: 7 kept, 2 broken." in output
+    assert "Contracts: 8 kept, 2 broken." in output
 
 
 def test_no_rockly_module_mentions_a_particular_robot():
