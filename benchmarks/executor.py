@@ -58,7 +58,7 @@ def stop_latencies(hobbit, program_code, settle):
     """Seconds from request_stop to the zero Twist arriving on /cmd_vel, per trial."""
     from rockly_desktop.executor.control import RunControl
     from rockly_desktop.executor.run_setup import make_runner
-    from rockly_desktop.robot.sim_link import SimulatedRobot
+    from rockly_desktop.robot.sim.link import SimulatedRobot
 
     robot = SimulatedRobot(hobbit, speed=1.0)
     zero_seen = threading.Event()
@@ -92,7 +92,7 @@ def stop_latencies(hobbit, program_code, settle):
 
 def direct_publish_latencies(hobbit):
     from rockly_desktop.robot.interrupt import Interrupt
-    from rockly_desktop.robot.sim_link import SimulatedRobot
+    from rockly_desktop.robot.sim.link import SimulatedRobot
 
     robot = SimulatedRobot(hobbit, speed=1.0)
     arrivals = []

@@ -18,8 +18,8 @@ from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import BlockEntered, OutputPrinted, RunFinished
 from rockly_desktop.executor.run_setup import limits_line, make_runner
 from rockly_desktop.recording.mcap_file import disk_full, problem_text
-from rockly_desktop.robot.answer_list import AnswerList
 from rockly_desktop.robot.links import DEFAULT_KIND, open_link
+from rockly_desktop.robot.sim.answer_list import AnswerList
 
 EXIT_STOPPED = 130
 

@@ -24,10 +24,10 @@ from rockly_desktop.profiles.manifest import MANIFEST_NAME
 from rockly_desktop.robot.commands import RobotCommands
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
 from rockly_desktop.robot.laser import AHEAD_HALF_WIDTH, nearest_in_scan, nearest_reading
-from rockly_desktop.robot.simulator import RobotSimulator, twist_velocity
-from rockly_desktop.robot.snapshot_values import as_number, as_point, as_points, with_defaults
-from rockly_desktop.robot.tablet import TabletQuestion
-from rockly_desktop.robot.world_map import Obstacle, World, load_world
+from rockly_desktop.robot.sim.simulator import RobotSimulator, twist_velocity
+from rockly_desktop.robot.sim.snapshot_values import as_number, as_point, as_points, with_defaults
+from rockly_desktop.robot.sim.tablet import TabletQuestion
+from rockly_desktop.robot.sim.world_map import Obstacle, World, load_world
 
 __all__ = [
     "AHEAD_HALF_WIDTH", "GoalHandle", "GoalOutcome", "GoalStatus", "LocalText", "Obstacle", "RobotBackend",

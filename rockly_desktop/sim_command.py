@@ -13,7 +13,7 @@ import time
 
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.robot import links
-from rockly_desktop.robot.answer_list import AnswerList
+from rockly_desktop.robot.sim.answer_list import AnswerList
 
 
 def serve_simulator(profile_id: str, kind: str = "ros1", connection: dict = None, speed: float = 1.0, answers=(),

@@ -85,7 +85,7 @@ def test_a_turtlebot_example_runs_unchanged_on_a_robot_declared_jazzy(example, m
     """The same program on a TurtleBot that wants TwistStamped on /cmd_vel (ROS 2 Jazzy on): it runs to
     its end, and everything it (and its safe stop) sends on /cmd_vel is a TwistStamped."""
     from rockly_desktop import run_command
-    from rockly_desktop.robot.limits import Limits
+    from rockly_desktop.robot.wrappers.limits import Limits
 
     sent_types = []
 

@@ -75,16 +75,38 @@ def test_ros_outside_its_link_package_breaks_the_contracts(tmp_path):
     assert ", 3 broken." in output
 
 
-def test_the_simulators_link_naming_a_middleware_breaks_the_contracts(tmp_path):
-    """The built-in simulator's link takes its recording encoder from the registry, not from robot/ros1."""
+def test_the_simulator_naming_a_middleware_breaks_the_contracts(tmp_path):
+    """By package: the simulator's link (its recording encoder is the registry's) and any module of
+    robot/sim, one added later too, name no ROS link and no ROS package."""
     copy_of_rockly(tmp_path)
-    sim_link = tmp_path / "rockly_desktop" / "robot" / "sim_link.py"
+    sim = tmp_path / "rockly_desktop" / "robot" / "sim"
+    sim_link = sim / "link.py"
     sim_link.write_text(sim_link.read_text(encoding="utf-8") + (
         "\n\ndef encoder():\n    from rockly_desktop.robot.ros1.recording_codec import Ros1Encoder\n\n"
         "    return Ros1Encoder()\n"), encoding="utf-8")
+    (sim / "later.py").write_text("from rockly_desktop.robot.ros2 import client\n")
     output = broken_contracts(tmp_path)
-    assert "The built-in simulator's link names no middleware" in output
-    assert "rockly_desktop.robot.sim_link -> rockly_desktop.robot.ros1.recording_codec" in output
+    assert "The built-in simulator (robot.sim) names no middleware" in output
+    assert "rockly_desktop.robot.sim.link -> rockly_desktop.robot.ros1.recording_codec" in output
+    assert "rockly_desktop.robot.sim.later -> rockly_desktop.robot.ros2.client" in output
+    assert ", 1 broken." in output
+
+
+def test_a_wrapper_naming_the_simulator_a_link_or_the_registry_breaks_the_contracts(tmp_path):
+    """By package: a backend wrapper (robot/wrappers, one added later too) works on any RobotBackend."""
+    copy_of_rockly(tmp_path)
+    wrappers = tmp_path / "rockly_desktop" / "robot" / "wrappers"
+    limits = wrappers / "limits.py"
+    limits.write_text(limits.read_text(encoding="utf-8") + (
+        "\n\ndef simulated(backend):\n    from rockly_desktop.robot.sim.sim_world import SimBackend\n\n"
+        "    return isinstance(backend, SimBackend)\n"), encoding="utf-8")
+    (wrappers / "later.py").write_text(
+        "from rockly_desktop.robot import links\nfrom rockly_desktop.robot.ros1 import link\n")
+    output = broken_contracts(tmp_path)
+    assert "The backend wrappers (robot.wrappers) work on any backend" in output
+    assert "rockly_desktop.robot.wrappers.limits -> rockly_desktop.robot.sim.sim_world" in output
+    assert "rockly_desktop.robot.wrappers.later -> rockly_desktop.robot.links" in output
+    assert "rockly_desktop.robot.wrappers.later -> rockly_desktop.robot.ros1.link" in output
     assert ", 1 broken." in output
 
 
@@ -164,7 +186,7 @@ def test_profile_code_imports_only_the_sdk_from_rockly():
 
 
 def test_the_import_check_sees_every_way_of_importing_rockly():
-    source = ("import rockly_desktop.robot.sim_world\nfrom rockly_desktop import sdk, core\n"
+    source = ("import rockly_desktop.robot.sim.sim_world\nfrom rockly_desktop import sdk, core\n"
               "from rockly_desktop.sdk_view import card\nfrom . import palette\nimport math\n")
-    assert rockly_imports(source) == {"rockly_desktop.robot.sim_world", "rockly_desktop.sdk", "rockly_desktop.core",
+    assert rockly_imports(source) == {"rockly_desktop.robot.sim.sim_world", "rockly_desktop.sdk", "rockly_desktop.core",
                                       "rockly_desktop.sdk_view"}

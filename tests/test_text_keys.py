@@ -8,7 +8,7 @@ from rockly_desktop.core.app_texts import app_catalogue
 REPO = Path(__file__).resolve().parents[1]
 # function -> the prefix its keys have in the catalogue
 LOOKUPS = {"tr": "", "app_text": "", "app_local_text": "", "text": "problem_", "_text": "limit_"}
-PREFIXED_IN = {"text": "executor/problems.py", "_text": "robot/limits.py"}
+PREFIXED_IN = {"text": "executor/problems.py", "_text": "robot/wrappers/limits.py"}
 
 
 def named_keys():

@@ -1,10 +1,10 @@
 """Putting a run together: the profile's commands on a robot, the runner, the safe stop."""
 from rockly_desktop.executor.runner import ProgramRunner
-from rockly_desktop.robot.limits import Capability, LimitedBackend, Limits, limits_text
-from rockly_desktop.robot.own_speed import OwnSpeed
-from rockly_desktop.robot.recorded import RecordedBackend
 from rockly_desktop.robot.ros_commands import RosCommands
-from rockly_desktop.robot.ros_versions import link_backend
+from rockly_desktop.robot.wrappers.limits import Capability, LimitedBackend, Limits, limits_text
+from rockly_desktop.robot.wrappers.own_speed import OwnSpeed
+from rockly_desktop.robot.wrappers.recorded import RecordedBackend
+from rockly_desktop.robot.wrappers.ros_versions import link_backend
 
 
 def _switched_off(profile, limits: Limits, language: str) -> list:
@@ -33,8 +33,8 @@ def make_runner(profile, robot, run_code: dict, control, emit, language: str = "
 
     The program sees the profile's command object as ``robot`` and the generic ROS
     commands as ``ros``; when the run ends for any reason, the robot's safe stop runs.
-    Both command objects go through the teacher's ``limits`` (see ``robot/limits.py``), and send
-    what differs per ROS version as the robot wants it (``robot/ros_versions.py``).
+    Both command objects go through the teacher's ``limits`` (see ``robot/wrappers/limits.py``), and send
+    what differs per ROS version as the robot wants it (``robot/wrappers/ros_versions.py``).
     The run reports its errors in ``language``. A ``RunRecording`` (``recording``) records the
     run: what the program sends, its blocks, variables and events, until it ends.
     """

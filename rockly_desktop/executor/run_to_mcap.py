@@ -1,7 +1,7 @@
 """One run written to an MCAP recording: opened for a robot and a program, fed by the run, closed at its end.
 
 The recording hooks in above any backend: the state store hands it the robot's topics,
-``robot/recorded.py`` what the program sends and what comes back, the block hooks the
+``robot/wrappers/recorded.py`` what the program sends and what comes back, the block hooks the
 blocks entered, and the run's events (pauses, output, the safe stop, the end) pass
 through ``RunRecording.emit``.
 """
@@ -53,7 +53,8 @@ class RunRecording:
         self.recorder.note(channels.RUN, {"event": "start"})
 
     def command(self, entry: dict):
-        """What the program sent or what came back (``robot/recorded.py``'s entries), with the current block."""
+        """What the program sent or what came back (``robot/wrappers/recorded.py``'s entries), with the
+        current block."""
         block = self._hooks.current_block if self._hooks is not None else None
         entry = {**entry, "block": block}
         self.badges.take(entry)

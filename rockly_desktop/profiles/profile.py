@@ -101,7 +101,8 @@ class Profile:
 
     @property
     def ros_versions(self) -> dict:
-        """What differs per ROS version: ``{NAME: {ros1|ros2|DISTRIBUTION: TYPE}}`` (see ``robot/ros_versions.py``)."""
+        """What differs per ROS version: ``{NAME: {ros1|ros2|DISTRIBUTION: TYPE}}``
+        (see ``robot/wrappers/ros_versions.py``)."""
         return self.manifest.get("ros_versions", {})
 
     @property

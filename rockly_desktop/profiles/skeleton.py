@@ -266,7 +266,7 @@ from rockly_desktop.profiles.checks import check_commands
 from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.safe_stop import run_safe_stop
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
 from rockly_desktop.sdk import RobotCommandError
 
 PROFILE_DIR = Path(__file__).resolve().parents[1]

@@ -16,7 +16,7 @@ class BadgeStates:
         self.version = 0
 
     def take(self, entry: dict):
-        """Take one command entry (``robot/recorded.py``'s, with its ``block``)."""
+        """Take one command entry (``robot/wrappers/recorded.py``'s, with its ``block``)."""
         block, kind = entry.get("block"), entry.get("kind")
         if block is None:
             return

@@ -2,8 +2,8 @@
 import threading
 
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.ros_versions import link_backend
 from rockly_desktop.robot.safe_stop import run_safe_stop
+from rockly_desktop.robot.wrappers.ros_versions import link_backend
 
 
 def safe_stop(link) -> list:

@@ -115,7 +115,7 @@ ROS2_ENCODER = "rockly_desktop.robot.ros2.recording_codec:profile_encoder"
 
 LINKS = {entry.kind: entry for entry in (
     # the simulator's ROS-shaped messages are recorded as ROS 1 writes them: a run on it reads like one on the robot
-    LinkKind("sim", "rockly_desktop.robot.sim_link:SimulatedRobot", "backend_simulator", "the built-in simulator",
+    LinkKind("sim", "rockly_desktop.robot.sim.link:SimulatedRobot", "backend_simulator", "the built-in simulator",
              simulated=True, recording_encoder=ROS1_ENCODER),
     LinkKind("ros1", "rockly_desktop.robot.ros1.link:RosRobot", "backend_ros1", "a robot over ROS 1",
              settings=ROS1_SETTINGS,

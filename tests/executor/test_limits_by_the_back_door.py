@@ -11,9 +11,9 @@ from rockly_desktop.core.paths import shared_toolboxes_dir
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.run_setup import limits_line, make_runner
 from rockly_desktop.profiles.profile import load_profile
-from rockly_desktop.robot.limits import Limits
-from rockly_desktop.robot.sim_link import SimulatedRobot
-from rockly_desktop.robot.simulator import twist_velocity
+from rockly_desktop.robot.sim.link import SimulatedRobot
+from rockly_desktop.robot.sim.simulator import twist_velocity
+from rockly_desktop.robot.wrappers.limits import Limits
 from rockly_desktop.ui.preferences.teacher_settings import TeacherSettings
 
 ARM_OFF = Limits(switched_off=frozenset({"arm"}))

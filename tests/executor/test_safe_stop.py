@@ -5,7 +5,7 @@ import pytest
 
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.run_setup import make_runner
-from rockly_desktop.robot.sim_link import SimulatedRobot
+from rockly_desktop.robot.sim.link import SimulatedRobot
 
 DRIVE_ON = "robot.backend.publish('/cmd_vel', 'geometry_msgs/Twist', {'linear': {'x': 0.3}, 'angular': {'z': 0.2}})\n"
 ARM_GOAL = ("robot.backend.send_goal('hobbit_arm', 'hobbit_msgs/ArmServerAction', "

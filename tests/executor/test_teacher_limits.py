@@ -6,8 +6,8 @@ import pytest
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import OutputPrinted
 from rockly_desktop.executor.run_setup import limits_line, make_runner
-from rockly_desktop.robot.limits import Limits
-from rockly_desktop.robot.sim_link import SimulatedRobot
+from rockly_desktop.robot.sim.link import SimulatedRobot
+from rockly_desktop.robot.wrappers.limits import Limits
 
 FAST = "ros.publish_message('/cmd_vel', 'geometry_msgs/Twist', {'linear': {'x': %s}, 'angular': {'z': %s}})\n"
 
@@ -165,7 +165,7 @@ def test_the_line_saying_which_limits_apply(hobbit, limits, language, line):
 def test_commands_learn_the_allowed_speed_from_the_backend_they_are_given(hobbit, robot):
     from rockly_desktop.robot.commands import RobotCommands
     from rockly_desktop.robot.interrupt import Interrupt
-    from rockly_desktop.robot.limits import LimitedBackend
+    from rockly_desktop.robot.wrappers.limits import LimitedBackend
 
     plain = robot.backend(Interrupt())
     notes = []

@@ -21,8 +21,8 @@ from sim_tools import HoldWatcher, eventually_in, later, pose
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.profiles.profile import load_profile
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
-from rockly_desktop.robot.tablet import TabletQuestion
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.sim.tablet import TabletQuestion
 
 PROFILE = load_profile(HOBBIT_DIR, SHARED_TOOLBOXES)
 
@@ -494,7 +494,7 @@ def test_stop_while_a_drive_holds_ends_the_program_and_the_base_stays_where_it_h
 
 def test_pause_halts_a_drive_under_a_speed_limit_and_continue_drives_the_rest_at_the_limit(world, sim, control, hold,
                                                                                          backend):
-    from rockly_desktop.robot.limits import LimitedBackend, Limits
+    from rockly_desktop.robot.wrappers.limits import LimitedBackend, Limits
 
     limited = Hobbit(LimitedBackend(backend, Limits(max_speed=0.1), ["/cmd_vel"]))
     twists = record(world, "/cmd_vel")

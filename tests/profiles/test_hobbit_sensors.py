@@ -5,7 +5,7 @@ import pytest
 
 from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
 
 
 @pytest.fixture

@@ -18,8 +18,8 @@ from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.interface import GoalStatus
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.safe_stop import run_safe_stop
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
-from rockly_desktop.robot.tablet import TabletQuestion
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.sim.tablet import TabletQuestion
 
 PROFILE = load_profile(HOBBIT_DIR, SHARED_TOOLBOXES)
 

@@ -15,7 +15,7 @@ from rockly_desktop.executor.problems import explain
 from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.interface import GoalStatus
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
 
 PROFILE = load_profile(HOBBIT_DIR, SHARED_TOOLBOXES)
 SimHobbit = PROFILE.load_object("simulator")

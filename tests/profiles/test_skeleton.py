@@ -14,7 +14,7 @@ from profile_copies import REPO, SHARED_TOOLBOXES
 from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.profiles.skeleton import create_profile
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
 
 SKELETON = {"profile.yaml", "blocks.yaml", "toolbox.yaml", "rockly_demo/__init__.py", "rockly_demo/api.py",
             "rockly_demo/sim.py", "rockly_demo/view/__init__.py", "rockly_demo/view/widget.py",

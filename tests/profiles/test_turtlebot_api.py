@@ -19,7 +19,7 @@ from rockly_desktop.executor.control import RunControl
 from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.safe_stop import run_safe_stop
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
 
 TURTLEBOT_DIR = REPO / "profiles" / "turtlebot"
 PROFILE = load_profile(TURTLEBOT_DIR, SHARED_TOOLBOXES)

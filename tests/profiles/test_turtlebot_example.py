@@ -14,7 +14,7 @@ from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.run_setup import make_runner
 from rockly_desktop.profiles.opening import read_program_to_open
 from rockly_desktop.profiles.registry import ProfileRegistry
-from rockly_desktop.robot.sim_link import SimulatedRobot
+from rockly_desktop.robot.sim.link import SimulatedRobot
 
 EXAMPLE = REPO / "examples" / "turtlebot" / "avoid-obstacles.rockly"
 RADIUS = 0.105

@@ -14,7 +14,7 @@ from profile_copies import REPO, SHARED_TOOLBOXES
 from sim_tools import eventually_in, later
 
 from rockly_desktop.profiles.profile import load_profile
-from rockly_desktop.robot.sim_world import SimWorld
+from rockly_desktop.robot.sim.sim_world import SimWorld
 
 PROFILE = load_profile(REPO / "profiles" / "turtlebot", SHARED_TOOLBOXES)
 SimTurtleBot = PROFILE.load_object("simulator")

@@ -14,7 +14,7 @@ from PySide6.QtGui import QColor, QImage
 
 from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
 
 PROFILE = load_profile(REPO / "profiles" / "turtlebot", SHARED_TOOLBOXES)
 TurtleBotSimView = PROFILE.load_object("simulator_view")

@@ -9,7 +9,7 @@ from sim_tools import eventually_in
 from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
 
 PROFILE = load_profile(REPO / "profiles" / "turtlebot", SHARED_TOOLBOXES)
 SimTurtleBot = PROFILE.load_object("simulator")

@@ -10,7 +10,7 @@ from recorded_reading import channels_and_messages
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.recording.recorder import Recorder
 from rockly_desktop.robot.ros1.recording_codec import Ros1Encoder
-from rockly_desktop.robot.sim_world import SimWorld
+from rockly_desktop.robot.sim.sim_world import SimWorld
 
 MINUTES = 10
 RATE_CAP = 10

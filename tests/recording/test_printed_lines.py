@@ -15,7 +15,7 @@ from rockly_desktop.recording import recorder
 from rockly_desktop.recording.moments import Moments
 from rockly_desktop.recording.reading import read_recording
 from rockly_desktop.recording.timeline import timeline_lines
-from rockly_desktop.robot.sim_link import SimulatedRobot
+from rockly_desktop.robot.sim.link import SimulatedRobot
 
 PRINTED = 50_000
 

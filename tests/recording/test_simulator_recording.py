@@ -11,7 +11,7 @@ from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.run_setup import make_runner
 from rockly_desktop.executor.run_to_mcap import RunRecording
 from rockly_desktop.recording.reading import read_recording
-from rockly_desktop.robot.sim_link import SimulatedRobot
+from rockly_desktop.robot.sim.link import SimulatedRobot
 
 PROGRAM = {"code": "\n".join([
     "__rockly__.block('set')", "n = 1",
@@ -88,7 +88,7 @@ def test_the_program_and_what_ran_are_stored_in_the_file(recorded):
 FRESH_PROCESS = """
 import sys
 from rockly_desktop.profiles.registry import ProfileRegistry
-from rockly_desktop.robot.sim_link import SimulatedRobot
+from rockly_desktop.robot.sim.link import SimulatedRobot
 robot = SimulatedRobot(ProfileRegistry.discover().get("hobbit"))
 encoder = robot.recording_encoder()
 assert robot.recording_encoder() is encoder

@@ -3,8 +3,8 @@ import pytest
 
 from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.limits import Capability, LimitedBackend, Limits
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.wrappers.limits import Capability, LimitedBackend, Limits
 
 ARM = Capability("arm", "Arm", topics=frozenset({"arm/command"}), services=frozenset({"arm/home"}),
                  actions=frozenset({"arm"}))

@@ -21,7 +21,7 @@ from rockly_desktop.robot.links import (
     open_link,
     serve_simulator,
 )
-from rockly_desktop.robot.sim_link import SimulatedRobot
+from rockly_desktop.robot.sim.link import SimulatedRobot
 from rockly_desktop.ui.texts import robot_problem, tr
 
 REPO = Path(__file__).resolve().parents[2]
@@ -141,7 +141,7 @@ def test_a_ros2_setting_it_cannot_take_is_said_in_the_window_language(hobbit, co
 
 
 def test_the_command_line_offers_the_registry_kinds_and_their_options(monkeypatch):
-    fake = LinkKind("fake", "rockly_desktop.robot.sim_link:SimulatedRobot", "backend_simulator", "a fake robot",
+    fake = LinkKind("fake", "rockly_desktop.robot.sim.link:SimulatedRobot", "backend_simulator", "a fake robot",
                     settings=(replace(link_kind("ros1").settings[0], name="where", option="--where"),),
                     settings_group="fake", sim_option="--fake", sim_server="rockly_desktop.robot.ros1.sim_bridge:x")
     monkeypatch.setitem(links.LINKS, "fake", fake)

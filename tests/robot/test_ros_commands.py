@@ -6,7 +6,7 @@ import pytest
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError, RobotTimeout
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.ros_commands import RosCommands
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
 
 ARM = ("hobbit_arm", "hobbit_msgs/ArmServerAction")
 PREEMPTED = 2  # actionlib_msgs/GoalStatus

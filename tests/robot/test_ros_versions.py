@@ -14,8 +14,10 @@ from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.run_setup import make_runner
 from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.limits import LimitedBackend, Limits
-from rockly_desktop.robot.ros_versions import (
+from rockly_desktop.robot.sim.link import SimulatedRobot
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.wrappers.limits import LimitedBackend, Limits
+from rockly_desktop.robot.wrappers.ros_versions import (
     VersionedBackend,
     converted,
     declared_type,
@@ -23,8 +25,6 @@ from rockly_desktop.robot.ros_versions import (
     robot_type,
     stamped_part,
 )
-from rockly_desktop.robot.sim_link import SimulatedRobot
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
 
 TURTLEBOT = load_profile(REPO / "profiles" / "turtlebot", SHARED_TOOLBOXES)
 TWIST, STAMPED = "geometry_msgs/Twist", "geometry_msgs/TwistStamped"

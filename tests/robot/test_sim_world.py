@@ -1,4 +1,4 @@
-"""The in-process ROS stand-in (rockly_desktop/robot/sim_world.py): topics, services, actions, stops."""
+"""The in-process ROS stand-in (rockly_desktop/robot/sim/sim_world.py): topics, services, actions, stops."""
 import threading
 import time
 
@@ -8,7 +8,7 @@ from background import Background
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError, RobotTimeout
 from rockly_desktop.robot.interface import GoalStatus
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
 
 STOP_BOUND = 0.05  # s from a stop request to ProgramStopped in the waiting thread
 SHORT = 0.05       # s, a timeout that should run out

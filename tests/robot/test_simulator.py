@@ -1,4 +1,4 @@
-"""The simulator base class (rockly_desktop/robot/simulator.py): outbox, clock, life cycle, speed.
+"""The simulator base class (rockly_desktop/robot/sim/simulator.py): outbox, clock, life cycle, speed.
 
 Real threads throughout; tests wait on conditions, and the only timing bounds are generous.
 """
@@ -10,8 +10,8 @@ import time
 import pytest
 from waiting import eventually
 
-from rockly_desktop.robot.sim_world import SimWorld
-from rockly_desktop.robot.simulator import RobotSimulator, checked_speed, twist_velocity
+from rockly_desktop.robot.sim.sim_world import SimWorld
+from rockly_desktop.robot.sim.simulator import RobotSimulator, checked_speed, twist_velocity
 from rockly_desktop.sdk import RobotSimulator as SdkRobotSimulator
 
 WAIT = 10.0  # s, generous: how long a condition may take to come true

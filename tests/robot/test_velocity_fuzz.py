@@ -7,9 +7,9 @@ from hypothesis import strategies as st
 
 from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.limits import LimitedBackend, Limits
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
-from rockly_desktop.robot.simulator import twist_velocity
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.sim.simulator import twist_velocity
+from rockly_desktop.robot.wrappers.limits import LimitedBackend, Limits
 
 LIMIT, TURN = 0.1, 30.0
 scalars = st.one_of(st.floats(), st.integers(-10**20, 10**20), st.booleans(), st.none(),

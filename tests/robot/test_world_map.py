@@ -1,9 +1,9 @@
-"""The SDK's solid world (rockly_desktop/robot/world_map.py): data in, clearance, swept motion, laser rays."""
+"""The SDK's solid world (rockly_desktop/robot/sim/world_map.py): data in, clearance, swept motion, laser rays."""
 import math
 
 import pytest
 
-from rockly_desktop.robot.world_map import World, load_world
+from rockly_desktop.robot.sim.world_map import World, load_world
 from rockly_desktop.sdk import Texts
 from rockly_desktop.sdk import World as SdkWorld
 from rockly_desktop.sdk import load_world as sdk_load_world

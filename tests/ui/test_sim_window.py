@@ -9,9 +9,9 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QPushButton
 
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
-from rockly_desktop.robot.answer_list import AnswerList
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.sim_world import SimWorld
+from rockly_desktop.robot.sim.answer_list import AnswerList
+from rockly_desktop.robot.sim.sim_world import SimWorld
 from rockly_desktop.ui.docks.sim_window import UNANSWERED, SimulatorWindow
 from rockly_desktop.ui.docks.tablet import TabletDialog
 

@@ -18,7 +18,7 @@ from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.robot.interface import GoalStatus
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.ros1.message_values import from_message, to_message
-from rockly_desktop.robot.served_simulator import ServedSimulator
+from rockly_desktop.robot.sim.served_simulator import ServedSimulator
 
 log = logging.getLogger(__name__)
 
@@ -119,7 +119,7 @@ class SimulatorNode(ServedSimulator):
 
     def __init__(self, profile, types, master_uri=None, speed=1.0, tablet=None):
         from rockly_desktop.robot.ros1.connection import RosConnection
-        from rockly_desktop.robot.sim_world import SimWorld
+        from rockly_desktop.robot.sim.sim_world import SimWorld
 
         self.connection = RosConnection.get(master_uri)
         self.world = SimWorld()

@@ -30,7 +30,7 @@ class Ros2Unavailable(RobotUnavailable):
 
 def declared_distribution(connection: dict) -> "str | None":
     """The ROS 2 distribution ``connection`` declares for the robot (``ros_distribution``, e.g. 'jazzy'), or
-    None for 'auto' or none (the robot's graph decides, see ``robot/ros_versions.py``). Ros2Unavailable
+    None for 'auto' or none (the robot's graph decides, see ``robot/wrappers/ros_versions.py``). Ros2Unavailable
     ('bad_distribution') for a name Rockly does not know."""
     name = (connection.get("ros_distribution") or "").strip().lower()
     if name in ("", "auto"):

@@ -27,7 +27,7 @@ from rockly_desktop.robot.ros2.environment import (
     ros2_name,
     ros2_python,
 )
-from rockly_desktop.robot.ros_versions import base_types
+from rockly_desktop.robot.wrappers.ros_versions import base_types
 
 log = logging.getLogger(__name__)
 
@@ -76,7 +76,7 @@ class Ros2Robot:
 
     ``settings`` (Ros2Settings) are the domain id, discovery range and static peers;
     ``ros_distribution`` the robot's declared ROS 2 distribution (None: its graph says which types
-    it wants, ``robot/ros_versions.py``). Raises Ros2Unavailable when ROS 2 is not set up (naming
+    it wants, ``robot/wrappers/ros_versions.py``). Raises Ros2Unavailable when ROS 2 is not set up (naming
     ``make ros2``) or its helper does not start.
     """
 

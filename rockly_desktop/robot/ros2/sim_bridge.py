@@ -18,8 +18,8 @@ from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.ros2.client import Ros2Helper, words
 from rockly_desktop.robot.ros2.environment import Ros2Settings, declared_distribution, ros2_name
-from rockly_desktop.robot.ros_versions import base_types, converted, declared_type, ros_name
-from rockly_desktop.robot.served_simulator import ServedSimulator
+from rockly_desktop.robot.sim.served_simulator import ServedSimulator
+from rockly_desktop.robot.wrappers.ros_versions import base_types, converted, declared_type, ros_name
 
 log = logging.getLogger(__name__)
 
@@ -135,7 +135,7 @@ class Ros2SimulatorNode(ServedSimulator):
     """
 
     def __init__(self, profile, settings: Ros2Settings = None, speed=1.0, tablet=None, ros_distribution: str = None):
-        from rockly_desktop.robot.sim_world import SimWorld
+        from rockly_desktop.robot.sim.sim_world import SimWorld
 
         self.settings = settings or Ros2Settings()
         self.ros_distribution = ros_distribution

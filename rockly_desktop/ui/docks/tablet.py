@@ -10,7 +10,7 @@ from PySide6.QtWidgets import QDialog, QDialogButtonBox, QLabel, QLineEdit, QVBo
 
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
-from rockly_desktop.robot.tablet import TabletQuestion
+from rockly_desktop.robot.sim.tablet import TabletQuestion
 from rockly_desktop.ui.texts import tr
 
 

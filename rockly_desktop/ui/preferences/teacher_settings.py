@@ -15,7 +15,7 @@ import os
 import time
 from dataclasses import dataclass
 
-from rockly_desktop.robot.limits import Limits
+from rockly_desktop.robot.wrappers.limits import Limits
 from rockly_desktop.ui.texts import tr
 
 _ITERATIONS = 200_000

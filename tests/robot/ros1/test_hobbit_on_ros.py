@@ -233,7 +233,7 @@ def test_a_stop_while_a_handler_waits_preempts_the_goal_on_the_server(ros_robot)
 
 
 def test_the_teachers_limits_hold_over_ros(ros_robot, hobbit):
-    from rockly_desktop.robot.limits import Limits
+    from rockly_desktop.robot.wrappers.limits import Limits
 
     twists, stop_twists = record(ros_robot, "/cmd_vel", "geometry_msgs/Twist",
                                  lambda message: (message["linear"]["x"], message["angular"]["z"]))
@@ -258,7 +258,7 @@ def test_a_limited_drive_and_turn_send_no_cmd_vel_above_the_limit_and_end_where_
                                                                                              hobbit_robot):
     """HOBBIT's Move/Turn go at the base's own speed (0.3 m/s, 45°/s): under a lower limit the
     commands drive them with /cmd_vel instead, stopped by the odometry the ROS-level base publishes."""
-    from rockly_desktop.robot.limits import Limits
+    from rockly_desktop.robot.wrappers.limits import Limits
 
     hobbit_robot.navigate_to(1.0, 0.5, 0)  # a known free place, whatever earlier tests did
     twists, stop_twists = record(ros_robot, "/cmd_vel", "geometry_msgs/Twist",

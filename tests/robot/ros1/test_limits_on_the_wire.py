@@ -10,7 +10,7 @@ from wire_recorder import WireRecorder
 
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.run_setup import make_runner
-from rockly_desktop.robot.limits import Limits
+from rockly_desktop.robot.wrappers.limits import Limits
 
 ARM_GOAL = "ros.publish_message('/hobbit_arm/goal', 'hobbit_msgs/ArmServerActionGoal', " \
            "{'goal': {'command': {'data': '%s'}}})\n"

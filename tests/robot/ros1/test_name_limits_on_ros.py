@@ -19,8 +19,8 @@ from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.run_setup import limited_backend, make_runner
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.limits import Capability, LimitedBackend, Limits
-from rockly_desktop.robot.ros_versions import link_backend
+from rockly_desktop.robot.wrappers.limits import Capability, LimitedBackend, Limits
+from rockly_desktop.robot.wrappers.ros_versions import link_backend
 
 RECORDER = Path(__file__).parent / "ros1_recorder_node.py"
 REMAPS = ["teleop:=/cmd_vel", "~drive:=/cmd_vel", "talk:=/chatter", "~say:=/chatter", "grab:=hobbit_arm"]

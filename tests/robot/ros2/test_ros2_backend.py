@@ -7,10 +7,10 @@ from ros2_fixtures import requests_to
 from waiting import eventually
 
 from rockly_desktop.core.errors import ProgramStopped, RobotCommandError, RobotTimeout
-from rockly_desktop.robot import ros_versions
 from rockly_desktop.robot.interface import GoalStatus
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.ros_versions import link_backend
+from rockly_desktop.robot.wrappers import ros_versions
+from rockly_desktop.robot.wrappers.ros_versions import link_backend
 
 
 @pytest.fixture

@@ -8,7 +8,7 @@ from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.run_setup import make_runner
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.limits import Limits
+from rockly_desktop.robot.wrappers.limits import Limits
 
 
 def speeds(test_robot):

@@ -14,9 +14,9 @@ from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.run_setup import make_runner
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.limits import Capability, LimitedBackend, Limits
-from rockly_desktop.robot.ros_versions import link_backend
-from rockly_desktop.robot.wrapped_backend import WrappedBackend
+from rockly_desktop.robot.wrappers.limits import Capability, LimitedBackend, Limits
+from rockly_desktop.robot.wrappers.ros_versions import link_backend
+from rockly_desktop.robot.wrappers.wrapped_backend import WrappedBackend
 
 TALK = Capability("talk", "Talking", topics=frozenset({"/chatter"}))
 MARKS = itertools.count(1)

@@ -17,12 +17,12 @@ from waiting import eventually
 
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.run_setup import make_runner
-from rockly_desktop.robot import ros_versions
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.ros2.client import Ros2Helper
 from rockly_desktop.robot.ros2.environment import PROJECT_ROOT, Ros2Settings
 from rockly_desktop.robot.ros2.link import Ros2Robot
-from rockly_desktop.robot.ros_versions import link_backend
+from rockly_desktop.robot.wrappers import ros_versions
+from rockly_desktop.robot.wrappers.ros_versions import link_backend
 
 ROS2_PYTHON = PROJECT_ROOT / ".venv-ros2" / "bin" / "python"
 STAMPED_NODE = Path(__file__).with_name("ros2_stamped_node.py")

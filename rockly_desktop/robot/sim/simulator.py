@@ -1,6 +1,6 @@
 """``RobotSimulator``: the scaffolding every profile's simulator shares.
 
-A simulator lives in a ``SimWorld`` (``robot/sim_world.py``): it subscribes to the robot's
+A simulator lives in a ``SimWorld`` (``robot/sim/sim_world.py``): it subscribes to the robot's
 command topics, serves its services and actions, and publishes what its sensors report
 while simulated time runs ``speed`` times as fast as the clock. This base class owns the
 parts that are the same for every robot:
@@ -20,14 +20,14 @@ parts that are the same for every robot:
 
 A subclass overrides the hooks ``connect()``, ``advance(dt)``, ``queue_sensors()``,
 ``snapshot()`` and ``reset()``, and sets ``NAME`` and ``TICK_SECONDS``. A robot with a solid
-world declares it as data (``robot/world_map.py``) and lets it stop the robot's motions.
+world declares it as data (``robot/sim/world_map.py``) and lets it stop the robot's motions.
 """
 import math
 import numbers
 import threading
 import time
 
-from rockly_desktop.robot.velocity_messages import is_velocity_number
+from rockly_desktop.robot.wrappers.velocity_messages import is_velocity_number
 
 
 def checked_speed(speed) -> float:
@@ -69,7 +69,7 @@ class RobotSimulator:
     """
 
     NAME = "simulated robot"  # names the clock thread and the simulator in messages
-    solid_world = None  # the World (robot/world_map.py) it moves in, if it has a solid one: recordings name it
+    solid_world = None  # the World (robot/sim/world_map.py) it moves in, if it has a solid one: recordings name it
     TICK_SECONDS = 0.1        # real seconds between two ticks of the clock
 
     def __init__(self, world, tablet=None, speed=1.0):

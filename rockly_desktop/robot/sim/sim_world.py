@@ -15,7 +15,7 @@ from collections import defaultdict
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout, RocklyError
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
-from rockly_desktop.robot.ros_versions import ros_name, short_type
+from rockly_desktop.robot.wrappers.ros_versions import ros_name, short_type
 
 log = logging.getLogger(__name__)
 

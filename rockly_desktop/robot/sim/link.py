@@ -4,8 +4,8 @@ from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.robot import link_parts, links
 from rockly_desktop.robot.health import GREEN, HealthItem, server_health, topic_health
 from rockly_desktop.robot.interrupt import Interrupt
-from rockly_desktop.robot.ros_versions import ros_name, short_type
-from rockly_desktop.robot.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.sim.sim_world import SimBackend, SimWorld
+from rockly_desktop.robot.wrappers.ros_versions import ros_name, short_type
 
 
 def listened_types(profile) -> dict:
@@ -25,7 +25,7 @@ class SimulatedRobot:
     """
 
     kind = "sim"
-    ros_distribution = None  # the ROS 2 distribution the robot plays (robot/ros_versions.py); None: none
+    ros_distribution = None  # the ROS 2 distribution the robot plays (robot/wrappers/ros_versions.py); None: none
 
     def __init__(self, profile, tablet=None, speed: float = 1.0):
         self.profile = profile

@@ -18,7 +18,7 @@ import weakref
 
 from rockly_desktop.core.ros_distributions import DISTRIBUTIONS
 from rockly_desktop.robot.interface import RobotBackend
-from rockly_desktop.robot.wrapped_backend import WrappedBackend
+from rockly_desktop.robot.wrappers.wrapped_backend import WrappedBackend
 
 FRAME_ID = "base_link"   # the frame a stamped velocity command is given in: the robot's own
 RECHECK_SECONDS = 0.5    # while the graph lists no type for a name, look again at most this often

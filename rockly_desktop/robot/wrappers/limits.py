@@ -3,9 +3,9 @@
 ``LimitedBackend`` wraps the run's RobotBackend: velocity commands on the topics a
 profile declares as its drive interface (``geometry_msgs/Twist`` or ``TwistStamped``) are clamped to the
 maximum speeds (anything else there under a speed limit, another type or a speed that is no
-number, is refused: ``robot/velocity_messages.py``), and topics, services and actions of a
+number, is refused: ``robot/wrappers/velocity_messages.py``), and topics, services and actions of a
 switched-off capability are refused with a RobotCommandError, an action's own topics and services
-included (``robot/capability_coverage.py``). Profiles need no code for it: the names come from
+included (``robot/wrappers/capability_coverage.py``). Profiles need no code for it: the names come from
 their manifest. Names are compared as the robot's middleware resolves them (the backend's
 ``resolve_name``: ``{ns}cmd_vel``, ``~/...``, a namespace or a remapping may all reach
 ``/cmd_vel``), the program's and the manifest's alike; a name the middleware refuses is
@@ -13,7 +13,7 @@ refused here too. While a speed is limited, a Twist is held to the limit on what
 goes (a drive topic remapped where the manifest cannot know). Reading (subscribe, latest,
 waits) and cancelling always pass. A motion at the robot's own speed (a base driver's "drive
 0.5 m", a navigation goal) is no velocity the wrapper can clamp: the manifest lists those names
-(``own_speed``, ``robot/own_speed.py``) and they are refused under a lower limit; the profile
+(``own_speed``, ``robot/wrappers/own_speed.py``) and they are refused under a lower limit; the profile
 asks ``allowed_speed`` (through ``RobotCommands.allowed_speed``) and drives such motions with
 velocity commands instead.
 """
@@ -22,12 +22,12 @@ from dataclasses import dataclass
 
 from rockly_desktop.core.app_texts import app_local_text, app_text
 from rockly_desktop.core.errors import RobotCommandError
-from rockly_desktop.robot.capability_coverage import Coverage, Covered
 from rockly_desktop.robot.interface import RobotBackend
-from rockly_desktop.robot.own_speed import OwnSpeed
-from rockly_desktop.robot.ros_versions import short_type
-from rockly_desktop.robot.velocity_messages import velocity_problem
-from rockly_desktop.robot.wrapped_backend import WrappedBackend
+from rockly_desktop.robot.wrappers.capability_coverage import Coverage, Covered
+from rockly_desktop.robot.wrappers.own_speed import OwnSpeed
+from rockly_desktop.robot.wrappers.ros_versions import short_type
+from rockly_desktop.robot.wrappers.velocity_messages import velocity_problem
+from rockly_desktop.robot.wrappers.wrapped_backend import WrappedBackend
 
 DRIVE_TYPES = frozenset({"geometry_msgs/Twist", "geometry_msgs/TwistStamped"})
 MAX_NAMES = 4096  # resolved names a run keeps (a program may make names without end)

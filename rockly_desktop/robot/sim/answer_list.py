@@ -3,7 +3,7 @@ import threading
 
 from rockly_desktop.core.app_texts import app_local_text, app_text
 from rockly_desktop.core.errors import RobotCommandError
-from rockly_desktop.robot.tablet import TabletQuestion
+from rockly_desktop.robot.sim.tablet import TabletQuestion
 
 
 class AnswerList:

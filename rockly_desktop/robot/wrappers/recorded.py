@@ -9,7 +9,7 @@ action), and ``type``, ``data``, ``status``, ``text``, ``seconds`` where they ap
 import time
 
 from rockly_desktop.robot.interface import GoalHandle, RobotBackend
-from rockly_desktop.robot.wrapped_backend import WrappedBackend
+from rockly_desktop.robot.wrappers.wrapped_backend import WrappedBackend
 
 
 def _failed(name: str, error: Exception, started: float) -> dict:

@@ -9,7 +9,7 @@ might still read it as a speed: under a limit it is refused, with ``velocity_pro
 import numbers
 from collections.abc import Mapping
 
-from rockly_desktop.robot.ros_versions import short_type
+from rockly_desktop.robot.wrappers.ros_versions import short_type
 
 TWIST, TWIST_STAMPED = "geometry_msgs/Twist", "geometry_msgs/TwistStamped"
 _VECTORS = ("linear", "angular")

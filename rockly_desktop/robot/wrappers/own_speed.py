@@ -8,7 +8,7 @@ commands, ``RobotCommands.allowed_speed``). The profile's safe-stop messages alw
 """
 from dataclasses import dataclass
 
-from rockly_desktop.robot.capability_coverage import Covered
+from rockly_desktop.robot.wrappers.capability_coverage import Covered
 
 
 @dataclass(frozen=True)
