@@ -2,8 +2,8 @@
 
 A pack looks like a small robot profile without code::
 
-    packs/hobbit_extras/
-      pack.yaml      schema: 1, id, name, version, adds_to: hobbit, languages, blocks, toolbox
+    packs/my_robot_extras/
+      pack.yaml      schema: 1, id, name, version, adds_to: my_robot, languages, blocks, toolbox
       blocks.yaml    Blockly JSON definitions with their ``python`` templates (as a profile's)
       toolbox.yaml   its categories (as a profile's; no shared ones)
       made.yaml      what the maker knows of each block it made (``spec.MadeBlock.to_data``)
