@@ -216,6 +216,21 @@ class DefinitionCatalog:
         top = self._top(type_name, kind, section)
         return self._flatten(top[1], top[0]) if top else []
 
+    def message_arrays(self, type_name: str, kind: str = "msg", section: int = 0) -> list:
+        """The top-level fields of ``type_name`` (as ``fields`` names its parts) that are arrays of
+        messages, which blocks cannot build field by field: ``[(name, "package/Type[]")]``."""
+        top = self._top(type_name, kind, section)
+        if top is None:
+            return []
+        package, declarations = top
+        found = []
+        for declaration in declarations:
+            if declaration.is_array and declaration.ros_type not in _CHECKS:
+                resolved = self._resolve(declaration.ros_type, package)
+                full = resolved[0] if resolved else declaration.ros_type
+                found.append((declaration.name, full + "[]"))
+        return found
+
     def check(self, type_name: str, kind: str, data) -> None:
         """Raise RobotCommandError naming the field when ``data`` does not fit the type.
 

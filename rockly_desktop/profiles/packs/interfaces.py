@@ -17,7 +17,8 @@ _KINDS = {"Number": "number", "String": "text", "Boolean": "yes_no", "Array": "l
 @dataclass(frozen=True)
 class InterfaceField:
     """One field of a type: its path, ROS type (``float64``, ``string[]``), the kind of value
-    a block gives it (``number``, ``text``, ``yes_no`` or ``list``) and its default."""
+    a block gives it (``number``, ``text``, ``yes_no``, ``list``, or ``messages`` for an array of
+    messages) and its default."""
 
     path: str
     ros_type: str
@@ -37,9 +38,13 @@ def knows_type(profile, type_name: str, kind: str) -> bool:
 
 def interface_fields(profile, type_name: str, kind: str, part: str = "in") -> list:
     """The fields of ``type_name`` (``kind`` msg, srv or action) in ``part`` (see PARTS), nested
-    fields by path; [] for a type ``profile`` does not know."""
-    return [InterfaceField(entry.path, entry.ros_type, _KINDS[entry.check], entry.start)
-            for entry in profile.ros_types.fields(type_name, kind, PARTS[part])]
+    fields by path; [] for a type ``profile`` does not know. A top-level array of messages is one
+    field of kind ``messages`` (it can only be given a fixed value: a list of mappings)."""
+    catalog = profile.ros_types
+    fields = [InterfaceField(entry.path, entry.ros_type, _KINDS[entry.check], entry.start)
+              for entry in catalog.fields(type_name, kind, PARTS[part])]
+    return fields + [InterfaceField(name, ros_type, "messages", [])
+                     for name, ros_type in catalog.message_arrays(type_name, kind, PARTS[part])]
 
 
 def fields_of_block_kind(profile, block_kind: str, type_name: str) -> list:

@@ -90,7 +90,8 @@ def _type_problems(block, profile) -> list:
         return [app_local_text("pack_type_missing", interface=block.interface or "?")]
     if not knows_type(profile, block.interface_type, kind):
         return [app_local_text("pack_type_unknown", type=block.interface_type)]
-    fields = {entry.path for entry in fields_of_block_kind(profile, block.kind, block.interface_type)}
+    kinds = {entry.path: entry.kind for entry in fields_of_block_kind(profile, block.kind, block.interface_type)}
+    fields = set(kinds)
     problems = []
     named = [entry.field for entry in block.inputs if entry.field] + list(block.fixed)
     if block.kind in ("sensor_value", "wait_until"):
@@ -101,6 +102,12 @@ def _type_problems(block, profile) -> list:
     for path in dict.fromkeys(named):
         if path not in fields:
             problems.append(_unknown_field(block.interface_type, path, fields))
+    for entry in block.inputs:
+        path = entry.field or (block.read_field if block.kind == "wait_until" else "")
+        if path in kinds and entry.kind in VALUE_KINDS and kinds[path] != entry.kind:
+            problems.append(app_local_text("pack_input_field_kind", name=entry.name, field=path,
+                                           kind=app_local_text(f"pack_kind_{entry.kind}"),
+                                           needed=_kind_text(kinds[path])))
     filled = [entry.field for entry in block.inputs if entry.field] + list(block.fixed)
     for path in sorted({path for path in filled if filled.count(path) > 1}):
         problems.append(app_local_text("pack_field_twice", field=path))
@@ -111,6 +118,11 @@ def _type_problems(block, profile) -> list:
     if block.kind == "send_goal" and block.result not in ("", OUTCOME):
         problems.append(app_local_text("pack_result_bad", result=block.result))
     return problems
+
+
+def _kind_text(kind):
+    """A field's kind in words (number, text, yes_no, list or messages)."""
+    return app_local_text(f"pack_kind_{kind}")
 
 
 def _unknown_field(type_name, path, fields):
