@@ -14,6 +14,7 @@ from rockly_desktop.core.program import Program, parse_program
 from rockly_desktop.profiles.opening import ProgramToOpen, opening_warnings, read_program_to_open, unknown_blocks_error
 from rockly_desktop.profiles.packs import making
 from rockly_desktop.profiles.packs.archive import export_pack, import_pack
+from rockly_desktop.profiles.packs.choices import category_choices, preview_block
 from rockly_desktop.profiles.packs.generate import python_preview
 from rockly_desktop.profiles.packs.interfaces import field_tree, interface_fields, known_types
 from rockly_desktop.profiles.packs.making import save_block
@@ -257,3 +258,12 @@ def test_the_preview_is_the_python_a_new_block_becomes():
                         read_field="data", target=True)
     assert python_preview(waiting) == "while not ros.latest('/bumper', 'data') == True:\n  ros.wait(0.1)"
     assert MadeBlock.from_data(drive_block().to_data()) == drive_block()
+
+
+def test_the_maker_offers_the_profiles_categories_and_previews_a_block_as_the_page_takes_it(fresh_registry):
+    hobbit = fresh_registry.get("hobbit")
+    choices = category_choices(hobbit, "de")
+    assert ("Fahren", "Drive", "#3d7fd6") in choices and all(english != "ROS" for _, english, _ in choices)
+    preview = preview_block(drive_block(), hobbit, "de")
+    assert preview["definition"]["message0"] == "fahre mit %1"
+    assert preview["python"]["defaults"] == {"speed": 0.1} and not preview["python"]["expression"]

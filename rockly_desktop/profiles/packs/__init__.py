@@ -14,5 +14,6 @@ made block's spec so the maker can show it again. ``making.save_block`` writes a
 pack all-or-nothing; ``merge.with_packs`` puts installed packs into the profile they add to
 (the registry does this when it discovers profiles, and again on ``reload_packs``);
 ``archive`` exports and imports a pack as one zip file; ``interfaces`` lists the fields of
-the ROS types Rockly knows without a robot.
+the ROS types Rockly knows without a robot; ``choices`` gives the profile's categories and
+colours to choose from and a block's preview entry for the editor page.
 """
