@@ -72,7 +72,7 @@ def _id_problems(block, profile, pack) -> list:
     if not isinstance(block.id, str) or not IDENTIFIER.fullmatch(block.id):
         return [app_local_text("pack_block_id_bad", id=block.id)]
     own_pack = pack.id if pack is not None else None
-    owner = profile.pack_of(block.id) if hasattr(profile, "pack_of") else None
+    owner = profile.pack_of(block.id)
     if pack is not None and block.id in pack.block_types:
         return [app_local_text("pack_block_id_in_pack", pack=pack.id, id=block.id)]
     if owner is not None and owner != own_pack:
