@@ -166,3 +166,29 @@ def test_bad_choices_each_say_what_is_wrong_and_write_nothing(made_pack):
     assert "adds to the robot profile 'nobody', which is not installed" in elsewhere.stderr
     assert {path.name: path.read_bytes() for path in made_pack.iterdir()} == files
     assert sorted(path.name for path in made_pack.parent.iterdir()) == [PACK]
+
+
+def test_a_teachers_limits_hold_for_made_blocks_as_for_every_block(tmp_path, made_pack, isolated_user_folders):
+    from rockly_desktop.ui.settings import AppSettings
+
+    make("--id", "speed", "--kind", "sensor_value", "--interface", "/odom", "--type", "nav_msgs/Odometry",
+         "--read-field", "twist.twist.linear.x", "--sentence-en", "speed")
+    make("--id", "wait_moving", "--kind", "wait_until", "--interface", "/odom", "--type", "nav_msgs/Odometry",
+         "--read-field", "twist.twist.linear.x", "--comparison", "above", "--target", "0.05",
+         "--sentence-en", "wait until moving")
+    settings = AppSettings(isolated_user_folders / "config" / "Rockly" / "Rockly.conf")  # where the window keeps them
+    settings.teacher.set_limits("hobbit", max_speed=0.1, switched_off={"arm"})
+    settings.sync()
+    program = tmp_path / "limited.rockly"
+    program.write_text(rockly_document([stack(
+        block("drive_at", inputs={"speed": number(0.3)}, id="drive"),
+        block("wait_moving", id="moving"),
+        block("hobbit_wait", inputs={"seconds": number(1)}, id="wait"),
+        block("text_print", inputs={"TEXT": block("speed")}, id="speed"),
+        block("text_print", inputs={"TEXT": block("arm_to", inputs={"movement": text("OpenGripper")})}, id="arm"),
+    )]))
+    result = rockly("run", program, "--speed", "5", "--language", "en")
+    assert result.returncode == 1
+    speed = float(next(text for text in printed(result) if "limit" not in text.lower()))
+    assert 0.05 < speed <= 0.1  # the made block asked for 0.3 m/s; the simulated base got the teacher's 0.1
+    assert "error in block arm (text_print)" in result.stderr and "switched off" in result.stderr
