@@ -141,9 +141,15 @@ class Profile:
         return next((level for level in self.levels if level["id"] == level_id), None)
 
     def hidden_blocks(self, switched_off) -> set:
-        """Block types of the capabilities whose ids are in ``switched_off``."""
-        return {block for capability in self.capabilities if capability["id"] in switched_off
-                for block in capability.get("blocks", [])}
+        """Block types of the capabilities whose ids are in ``switched_off``, and the made blocks of
+        packs that use one of their topics, services or actions."""
+        hidden = set()
+        for capability in self.capabilities:
+            if capability["id"] in switched_off:
+                hidden.update(capability.get("blocks", []))
+                names = {*capability.get("topics", ()), *capability.get("services", ()), *capability.get("actions", ())}
+                hidden.update(block for pack in self.packs for block, name in pack.interfaces.items() if name in names)
+        return hidden
 
     def simulator_view_class(self):
         """The simulator view's class (imported now), or None when the profile has no view.

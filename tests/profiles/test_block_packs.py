@@ -267,3 +267,17 @@ def test_the_maker_offers_the_profiles_categories_and_previews_a_block_as_the_pa
     preview = preview_block(drive_block(), hobbit, "de")
     assert preview["definition"]["message0"] == "fahre mit %1"
     assert preview["python"]["defaults"] == {"speed": 0.1} and not preview["python"]["expression"]
+
+
+def test_a_made_block_using_a_part_the_teacher_switched_off_leaves_the_toolbox(fresh_registry):
+    save_block(drive_block(), fresh_registry.get("hobbit"), PACK)
+    save_block(arm_block(), fresh_registry.get("hobbit"), PACK)
+    fresh_registry.reload_packs()
+    hobbit = fresh_registry.get("hobbit")
+
+    def shown(switched_off):
+        return {entry["type"] for category in hobbit.toolbox("en", switched_off=switched_off)["contents"]
+                for entry in category.get("contents", [])}
+
+    assert {"drive_at", "arm_to"} <= shown(())
+    assert "arm_to" not in shown({"arm"}) and "drive_at" in shown({"arm"})

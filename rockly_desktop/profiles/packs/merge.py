@@ -5,7 +5,7 @@ generators with the profile's own (``Profile.editor_config``), and its toolbox g
 pack's categories (blocks of a category named like one of the profile's own join it; other
 categories come after the profile's own, before the shared ones).
 """
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.profiles.packs.validation import BlockMakerError
@@ -13,12 +13,14 @@ from rockly_desktop.profiles.packs.validation import BlockMakerError
 
 @dataclass(frozen=True)
 class PackInfo:
-    """What a merged profile knows of one of its packs: id, version, name and block types."""
+    """What a merged profile knows of one of its packs: id, version, name, block types, and the
+    ROS name each made block uses (a teacher switching that part off hides the block)."""
 
     id: str
     version: str
     name: object
     block_types: frozenset
+    interfaces: dict = field(default_factory=dict)
 
 
 def _english(name) -> str:
@@ -56,7 +58,8 @@ def with_pack(profile, pack):
     problem = merge_problem(profile, pack)
     if problem is not None:
         raise BlockMakerError(problem)
-    info = PackInfo(pack.id, pack.version, pack.name, frozenset(pack.block_types))
+    info = PackInfo(pack.id, pack.version, pack.name, frozenset(pack.block_types),
+                    {made.id: made.interface for made in pack.made if made.id in pack.block_types})
     return replace(profile, blocks=profile.blocks + pack.blocks,
                    toolbox_categories=_merged_categories(profile.toolbox_categories, pack.toolbox_categories),
                    packs=(*profile.packs, info))
