@@ -1,21 +1,26 @@
 """Block packs as files: made blocks written all-or-nothing, merged into their profile (reloaded
 without a restart), shown in the reader's language on the real editor page, zips checked on import,
 and the fields of the types Rockly knows."""
+import ast
 import os
+import tempfile
 import zipfile
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 from page_tools import run_js, toolbox_names
 from program_builder import block, number, workspace
 
 from rockly_desktop.core.errors import ManifestError
 from rockly_desktop.core.program import Program, parse_program
+from rockly_desktop.profiles.blocks import block_spec
 from rockly_desktop.profiles.opening import ProgramToOpen, opening_warnings, read_program_to_open, unknown_blocks_error
 from rockly_desktop.profiles.packs import making
 from rockly_desktop.profiles.packs.archive import export_pack, import_pack
 from rockly_desktop.profiles.packs.choices import category_choices, preview_block
-from rockly_desktop.profiles.packs.generate import python_preview
+from rockly_desktop.profiles.packs.generate import block_definition, python_preview
 from rockly_desktop.profiles.packs.interfaces import field_tree, interface_fields, known_types
 from rockly_desktop.profiles.packs.making import save_block
 from rockly_desktop.profiles.packs.pack import load_pack
@@ -281,3 +286,18 @@ def test_a_made_block_using_a_part_the_teacher_switched_off_leaves_the_toolbox(f
 
     assert {"drive_at", "arm_to"} <= shown(())
     assert "arm_to" not in shown({"arm"}) and "drive_at" in shown({"arm"})
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(value=st.text(), sentence=st.text(alphabet=st.characters(blacklist_characters="%"), max_size=30))
+def test_any_fixed_text_and_sentence_make_a_block_whose_python_sends_exactly_that_text(
+        value, sentence, fresh_registry, tmp_path):
+    made = MadeBlock(id="say_fixed", kind="publish", interface="/say", interface_type="std_msgs/String",
+                     fixed={"data": value}, sentence={"en": sentence + "!"}, category={"en": "Made"},
+                     colour="#4c97ff")
+    spec = block_spec(block_definition(made), Path("fuzz.yaml"))  # the template reads back as a profile's would
+    call = ast.parse(python_preview(made), mode="eval").body
+    assert spec.type == "say_fixed" and ast.literal_eval(call.args[2]) == {"data": value}
+    folder = Path(tempfile.mkdtemp(dir=tmp_path))
+    pack = save_block(made, fresh_registry.get("hobbit"), PACK, folder=folder)  # and YAML keeps it exactly
+    assert pack.made_block("say_fixed") == made and pack.blocks[0].code == spec.code
