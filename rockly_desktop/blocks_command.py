@@ -5,7 +5,7 @@
         --default speed=0.1 --unit speed=m/s --fixed angular.z=0 \\
         --sentence-en "drive at %1 m/s" --sentence-de "fahre mit %1 m/s" --colour "#4c97ff" \\
         --category-en "My blocks" --category-de "Meine Blöcke"
-    rockly blocks list PACK
+    rockly blocks list [PACK]
     rockly blocks export PACK -o FILE.zip
     rockly blocks import FILE.zip [--replace]
 
@@ -58,8 +58,8 @@ def add_blocks_parser(commands, language_option) -> None:
     make.add_argument("--colour", default="", help="the block's colour, #rrggbb (the profile's categories' colours)")
     make.add_argument("--replace", action="store_true", help="replace a block of the same id in the pack")
     language_option(make)
-    listing = actions.add_parser("list", help="list the blocks of a block pack")
-    listing.add_argument("pack")
+    listing = actions.add_parser("list", help="list the blocks of a block pack (without PACK: the installed packs)")
+    listing.add_argument("pack", nargs="?")
     language_option(listing)
     export = actions.add_parser("export", help="write a block pack to one zip file")
     export.add_argument("pack")
@@ -78,7 +78,7 @@ def run_blocks_command(args, language: str) -> int:
         if args.blocks_command == "make":
             return _make(args, registry, language)
         if args.blocks_command == "list":
-            return _list(_pack(registry, args.pack), language)
+            return _list(_pack(registry, args.pack), language) if args.pack else _list_packs(registry, language)
         if args.blocks_command == "export":
             pack = _pack(registry, args.pack)
             path = export_pack(pack, args.output)
@@ -165,6 +165,15 @@ def _make(args, registry, language) -> int:
                       replace_block=args.replace)
     print(app_text("pack_made", language, id=block.id, pack=pack.id, path=pack.root))
     return 0
+
+
+def _list_packs(registry, language) -> int:
+    """Every installed pack (id, version, the profile it adds to, its folder), then the broken ones; 1 if any is."""
+    for pack in registry.packs.values():
+        print(f"{pack.id:<24} {pack.version:<10} {pack.adds_to:<14} {pack.root}")
+    for error in registry.pack_errors:
+        print(f"BROKEN  {error.in_language(language)}", file=sys.stderr)
+    return 1 if registry.pack_errors else 0
 
 
 def _list(pack, language) -> int:

@@ -16,7 +16,7 @@
     rockly replay RECORDING.mcap        print a recorded run's timeline (block, time, outcome)
     rockly recordings list              list the recordings in the recordings folder
     rockly blocks make --profile P --pack K --id ID --kind KIND ...  make a block without code into a block pack
-    rockly blocks list PACK             list a block pack's blocks
+    rockly blocks list [PACK]           list a block pack's blocks (without PACK: the installed packs)
     rockly blocks export PACK -o F.zip  write a block pack to one file; rockly blocks import F.zip installs one
 
 The kinds of robot (``--backend``, ``rockly sim``'s ``--ros``, their connection options) come from the

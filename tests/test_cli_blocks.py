@@ -93,6 +93,8 @@ def test_the_pack_validates_lists_and_survives_export_and_import(tmp_path, made_
     assert listed.returncode == 0, listed.stderr
     assert "louder" in listed.stdout and "call_service /MMUI hobbit_msgs/Request" in listed.stdout
     assert "fahre mit %1" in listed.stdout and "set the level to %1" in listed.stdout  # no German: the English
+    installed = rockly("blocks", "list")
+    assert installed.returncode == 0 and installed.stdout.split()[:3] == [PACK, "1.0.6", "hobbit"]
     archive = tmp_path / "made.zip"
     assert rockly("blocks", "export", PACK, "-o", archive).returncode == 0
     files = {path.name: path.read_bytes() for path in made_pack.iterdir()}
