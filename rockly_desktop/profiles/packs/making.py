@@ -76,6 +76,7 @@ def _added_to_toolbox(categories: list, block) -> list:
 
 
 def _without(raw: dict, key: str, block_id: str) -> list:
+    """The entries of ``raw[key]`` (blocks.yaml's by ``type``, made.yaml's by ``id``) but ``block_id``'s."""
     return [item for item in raw.get(key, []) if not (isinstance(item, dict) and item.get("type", item.get("id"))
                                                       == block_id)]
 
