@@ -15,8 +15,10 @@ def lint_imports(cwd: Path):
 
 
 def copy_of_rockly(folder: Path):
-    """Rockly's package and its contracts, copied into ``folder`` to break a contract there."""
-    shutil.copytree(REPO / "rockly_desktop", folder / "rockly_desktop", ignore=shutil.ignore_patterns("__pycache__"))
+    """Rockly's package and its contracts (with the contract types of its own), copied into ``folder`` to
+    break a contract there."""
+    for package in ("rockly_desktop", "tools"):
+        shutil.copytree(REPO / package, folder / package, ignore=shutil.ignore_patterns("__pycache__"))
     shutil.copy(REPO / "pyproject.toml", folder)
 
 
@@ -30,7 +32,7 @@ def broken_contracts(folder: Path) -> str:
 def test_layer_contracts_are_kept():
     result = lint_imports(REPO)
     assert result.returncode == 0, result.stdout + result.stderr
-    assert "Contracts: 9 kept, 0 broken." in result.stdout
+    assert "Contracts: 10 kept, 0 broken." in result.stdout
 
 
 def test_a_core_module_importing_qt_breaks_the_contracts(tmp_path):
@@ -51,7 +53,7 @@ def test_ros_outside_its_link_package_breaks_the_contracts(tmp_path):
     output = broken_contracts(tmp_path)
     assert "rockly_desktop.robot.sneaky -> rospy" in output and "rockly_desktop.robot.sneaky -> rclpy" in output
     assert "rockly_desktop.ui.sneaky -> rockly_desktop.robot.ros1.link" in output
-    assert "Contracts: 6 kept, 3 broken." in output
+    assert "Contracts: 7 kept, 3 broken." in output
 
 
 def test_the_simulators_link_naming_a_middleware_breaks_the_contracts(tmp_path):
@@ -64,7 +66,7 @@ def test_the_simulators_link_naming_a_middleware_breaks_the_contracts(tmp_path):
     output = broken_contracts(tmp_path)
     assert "The built-in simulator's link names no middleware" in output
     assert "rockly_desktop.robot.sim_link -> rockly_desktop.robot.ros1.recording_codec" in output
-    assert "Contracts: 8 kept, 1 broken." in output
+    assert "Contracts: 9 kept, 1 broken." in output
 
 
 def test_rclpy_on_rocklys_side_of_ros2_or_the_helper_imported_there_breaks_the_contracts(tmp_path):
@@ -78,7 +80,26 @@ def test_rclpy_on_rocklys_side_of_ros2_or_the_helper_imported_there_breaks_the_c
     output = broken_contracts(tmp_path)
     assert "rockly_desktop.robot.ros2.sim_bridge -> rclpy" in output
     assert "rockly_desktop.robot.ros2.later -> rockly_desktop.robot.ros2.helper.ros_values" in output
-    assert "Contracts: 7 kept, 2 broken." in output
+    assert "Contracts: 8 kept, 2 broken." in output
+
+
+def test_settings_reaching_past_qtcore_or_up_into_ui_break_the_contracts(tmp_path):
+    """Settings are QSettings (QtCore) only, below the window: the command line reads them without widgets."""
+    copy_of_rockly(tmp_path)
+    settings = tmp_path / "rockly_desktop" / "settings"
+    kiosk = settings / "kiosk.py"
+    kiosk.write_text(kiosk.read_text(encoding="utf-8") + "\n\ndef chord_text(chord):\n    from PySide6 import QtGui\n\n"
+                     "    return QtGui.QKeySequence(chord).toString()\n", encoding="utf-8")
+    (settings / "sneaky.py").write_text("from PySide6.QtWidgets import QWidget\nimport PySide6.QtWebEngineCore\n"
+                                        "from rockly_desktop.ui import texts\n")
+    output = broken_contracts(tmp_path)
+    assert "settings use only QtCore of Qt" in output
+    assert "rockly_desktop.settings.kiosk -> PySide6.QtGui (l." in output
+    assert "rockly_desktop.settings.sneaky -> PySide6.QtWidgets (l.1)" in output
+    assert "rockly_desktop.settings.sneaky -> PySide6.QtWebEngineCore (l.2)" in output
+    assert "rockly_desktop.settings.sneaky -> rockly_desktop.ui.texts" in output
+    assert "app_settings ->" not in output  # its QSettings is QtCore's
+    assert "Contracts: 8 kept, 2 broken." in output
 
 
 def test_no_rockly_module_mentions_a_particular_robot():

@@ -11,8 +11,8 @@ from PySide6.QtCore import QSettings
 
 from rockly_desktop.core.app_texts import languages
 from rockly_desktop.core.paths import recordings_dir
-from rockly_desktop.ui.kiosk.kiosk_settings import KioskSettings
-from rockly_desktop.ui.preferences.teacher_settings import TeacherSettings
+from rockly_desktop.settings.kiosk import KioskSettings
+from rockly_desktop.settings.teacher import TeacherSettings
 
 MAX_RECENT = 8
 

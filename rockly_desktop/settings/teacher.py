@@ -15,8 +15,8 @@ import os
 import time
 from dataclasses import dataclass
 
+from rockly_desktop.core.app_texts import app_text
 from rockly_desktop.robot.limits import Limits
-from rockly_desktop.ui.texts import tr
 
 _ITERATIONS = 200_000
 MIN_PIN_LENGTH = 4
@@ -51,16 +51,16 @@ class PinAnswer:
             return ""
         if self.refused:
             return wait_text(self.wait, language)
-        wrong = tr("teacher_wrong_pin", language)
+        wrong = app_text("teacher_wrong_pin", language)
         return f"{wrong} {wait_text(self.wait, language)}" if self.wait > 0 else wrong
 
 
 def wait_text(seconds: float, language: str) -> str:
     """'Too many wrong PINs: the next one is taken in … seconds/minutes.' in ``language``."""
     if seconds > 90:
-        return tr("teacher_pin_wait_minutes", language, minutes=math.ceil(seconds / 60))
+        return app_text("teacher_pin_wait_minutes", language, minutes=math.ceil(seconds / 60))
     whole = max(1, math.ceil(seconds))
-    return tr("teacher_pin_wait_second" if whole == 1 else "teacher_pin_wait_seconds", language, seconds=whole)
+    return app_text("teacher_pin_wait_second" if whole == 1 else "teacher_pin_wait_seconds", language, seconds=whole)
 
 
 class TeacherSettings:
