@@ -73,7 +73,7 @@ def build_main_window(settings_path=None, extra_profile_dirs=(), kiosk: bool = F
     settings = AppSettings(settings_path)
     settings.kiosk_mode = kiosk
     use_language(settings.language)  # Qt's own buttons and dialogs, now and whenever the language changes
-    settings.language_watchers.append(use_language)
+    settings.current_language.watch(use_language)
     return main_window_class(registry, settings, editor)
 
 
