@@ -17,6 +17,7 @@ from dataclasses import dataclass
 
 from rockly_desktop.core.app_texts import app_text
 from rockly_desktop.robot.limits import Limits
+from rockly_desktop.settings.group import SettingsGroup
 
 _ITERATIONS = 200_000
 MIN_PIN_LENGTH = 4
@@ -63,18 +64,10 @@ def wait_text(seconds: float, language: str) -> str:
     return app_text("teacher_pin_wait_second" if whole == 1 else "teacher_pin_wait_seconds", language, seconds=whole)
 
 
-class TeacherSettings:
+class TeacherSettings(SettingsGroup):
     """The teacher's part of Rockly's QSettings ``store`` (keys under ``teacher/``)."""
 
-    def __init__(self, store):
-        self._store = store
-
-    def _get(self, key, default=None):
-        value = self._store.value(f"teacher/{key}")
-        return default if value is None or value == "" else value
-
-    def _set(self, key, value):
-        self._store.setValue(f"teacher/{key}", value)
+    prefix = "teacher"
 
     # --- the PIN ------------------------------------------------------------------------
 
