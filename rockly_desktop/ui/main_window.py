@@ -47,7 +47,6 @@ class MainWindow(QMainWindow):
         super().__init__()
         self.registry = registry
         self.settings = settings
-        self.language = settings.language
         self.document = Document(self._initial_profile(), self)
         self._starting = False
         self._editor_started = False
@@ -61,7 +60,7 @@ class MainWindow(QMainWindow):
 
         self.editor = editor or EditorView()
         self.editor.set_look(settings.block_look)
-        self.replay_bar = ReplayBar(self.language, self)
+        self.replay_bar = ReplayBar(settings.current_language, self)
         self.setCentralWidget(under(self.editor, self.replay_bar))
         self.simulator_dock = SimulatorDock(tr("simulator_dock", self.language), self)
         self.code_dock = CodeDock(tr("code_dock", self.language), self)
@@ -100,14 +99,15 @@ class MainWindow(QMainWindow):
         self.runs.sig_state_changed.connect(self._on_run_state)
         self.runs.sig_status.connect(lambda text: self.statusBar().showMessage(text))
         self.tablet.sig_dismissed.connect(self.runs.stop)
-        self.replay = Replay(self.replay_bar, self.editor, self.variables, self.simulator_dock, self.language, self,
+        self.replay = Replay(self.replay_bar, self.editor, self.variables, self.simulator_dock,
+                             settings.current_language, self,
                              lambda: badges_shown(self.settings, self.profile.id), self.console, self._made_plot,
                              lambda: self.state_dock.widget() if isinstance(self.state_dock.widget(), StatePanels)
                              else None, self.robots, registry)
         self.runs.sig_state_changed.connect(lambda state: state == "starting" and self.replay.close())
         self.runs.sig_finished.connect(lambda _result: self.runs.last_recording and self.replay.open(
             self.runs.last_recording, quiet=True))
-        self.health = HealthBar(self.language, self)
+        self.health = HealthBar(settings.current_language, self)
         self.health.sig_refreshed.connect(self.robots.show_health)  # one source for the light and the status
         self.statusBar().addPermanentWidget(self.health)
         self.statusBar().addPermanentWidget(self.robots.status)
@@ -376,6 +376,11 @@ class MainWindow(QMainWindow):
         for action in self.profile_actions.actions():
             action.setChecked(action.data() == self.profile.id)
 
+    @property
+    def language(self) -> str:
+        """The language the window speaks now (its one owner is ``settings.current_language``)."""
+        return self.settings.current_language.code
+
     def set_language(self, language: str):
         """Switch the window and the blocks to ``language``, keeping the program (once the page has given it)."""
         if language == self.language:
@@ -393,8 +398,7 @@ class MainWindow(QMainWindow):
         self.editor.call("getState", None, answered, timeout_ms=ANSWER_TIMEOUT_MS)
 
     def _switch_language(self, language: str, workspace):
-        self.language = language
-        self.settings.language = language
+        self.settings.current_language.code = language
         self.simulator_dock.robot = None  # the simulator view is made anew in the new language
         self._restart_editor()
         if workspace:
@@ -403,12 +407,11 @@ class MainWindow(QMainWindow):
         self.simulator_dock.setWindowTitle(tr("simulator_dock", language))
         self.variables.setWindowTitle(tr("variables_dock", language))
         self.state_dock.setWindowTitle(tr("state_dock", language))
-        self.health.language = language
         self.monitor_dock.setWindowTitle(tr("monitor_dock", language))
         self.plot_dock.setWindowTitle(tr("plot_dock", language))
         self.variables.table.setHorizontalHeaderLabels([tr("variable", language), tr("value", language)])
         self.console.setWindowTitle(tr("console_dock", language))
-        self.replay.set_language(language)
+        self.replay.retitle()
         self._build_run_toolbar()
         for old_menu in (action.menu() for action in self.menuBar().actions() if action.menu() is not None):
             old_menu.deleteLater()  # with its actions: the shortcut list names only the new ones

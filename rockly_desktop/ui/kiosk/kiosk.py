@@ -21,9 +21,9 @@ from PySide6.QtWidgets import (
 from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.program import PROGRAM_SUFFIX, Program, save_program
+from rockly_desktop.settings.teacher import wait_text
 from rockly_desktop.ui.files.file_dialogs import ConfinedFileDialogs
 from rockly_desktop.ui.kiosk.idle_watch import IdleWatch
-from rockly_desktop.ui.preferences.teacher_settings import wait_text
 from rockly_desktop.ui.texts import tr
 
 
