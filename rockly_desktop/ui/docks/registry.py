@@ -92,12 +92,12 @@ DOCKS = (
 
 
 class Docks(Mapping):
-    """The docks ``specs`` describe, made for ``frame`` (the QMainWindow they dock in) in ``language``;
-    ``docks[key]`` is one of them, iteration goes in the table's order."""
+    """The docks ``specs`` (by default ``DOCKS``) describe, made for ``frame`` (the QMainWindow they dock
+    in) in ``language``; ``docks[key]`` is one of them, iteration goes in the table's order."""
 
-    def __init__(self, frame: QMainWindow, language: str, specs=DOCKS):
+    def __init__(self, frame: QMainWindow, language: str, specs=None):
         self._frame = frame
-        self.specs = tuple(specs)
+        self.specs = tuple(DOCKS if specs is None else specs)
         self._docks = {}
         for spec in self.specs:
             dock = spec.make(language, frame)
