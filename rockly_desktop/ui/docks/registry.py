@@ -15,7 +15,7 @@ from rockly_desktop.ui.docks.simulator_dock import SimulatorDock
 from rockly_desktop.ui.docks.variables_dock import VariablesDock
 from rockly_desktop.ui.texts import tr
 
-Right, Bottom = Qt.DockWidgetArea.RightDockWidgetArea, Qt.DockWidgetArea.BottomDockWidgetArea
+RIGHT, BOTTOM = Qt.DockWidgetArea.RightDockWidgetArea, Qt.DockWidgetArea.BottomDockWidgetArea
 
 
 class OnStage(Enum):
@@ -76,18 +76,18 @@ def _variable_headers(language: str) -> list:
 
 # In the View menu's order.
 DOCKS = (
-    DockSpec("simulator_dock", "simulator_dock", Right, "simulator", _titled_only(SimulatorDock),
+    DockSpec("simulator_dock", "simulator_dock", RIGHT, "simulator", _titled_only(SimulatorDock),
              on_stage=OnStage.BIG_SIMULATED, in_kiosk=InKiosk.SHOWN, first_height=420),
-    DockSpec("code_dock", "code_dock", Right, "program", _titled_only(CodeDock),
+    DockSpec("code_dock", "code_dock", RIGHT, "program", _titled_only(CodeDock),
              first_width=460, first_height=300),
-    DockSpec("variables_dock", "variables_dock", Right, "program",
+    DockSpec("variables_dock", "variables_dock", RIGHT, "program",
              lambda language, parent: VariablesDock("", _variable_headers(language), parent),
              retranslate=lambda dock, language: dock.table.setHorizontalHeaderLabels(_variable_headers(language))),
-    DockSpec("state_dock", "state_dock", Right, "program", _plain_dock, on_stage=OnStage.BIG_REAL),
-    DockSpec("console_dock", "console_dock", Bottom, "bottom", _titled_only(ConsoleDock),
+    DockSpec("state_dock", "state_dock", RIGHT, "program", _plain_dock, on_stage=OnStage.BIG_REAL),
+    DockSpec("console_dock", "console_dock", BOTTOM, "bottom", _titled_only(ConsoleDock),
              on_stage=OnStage.STRIP, in_kiosk=InKiosk.SHOWN, first_height=130),
-    DockSpec("monitor_dock", "monitor_dock", Bottom, "bottom", _plain_dock, in_kiosk=InKiosk.CLOSED, roomy=True),
-    DockSpec("plot_dock", "plot_dock", Bottom, "bottom", _plain_dock, in_kiosk=InKiosk.CLOSED, roomy=True),
+    DockSpec("monitor_dock", "monitor_dock", BOTTOM, "bottom", _plain_dock, in_kiosk=InKiosk.CLOSED, roomy=True),
+    DockSpec("plot_dock", "plot_dock", BOTTOM, "bottom", _plain_dock, in_kiosk=InKiosk.CLOSED, roomy=True),
 )
 
 
