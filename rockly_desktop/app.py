@@ -149,7 +149,7 @@ def start_kiosk(window, start_program=None):
     """Make ``window`` (built with ``kiosk=True``) a kiosk with ``start_program`` and show it full
     screen; the caller then starts it with the same program. Returns the Kiosk, or None (after
     saying why) when no teacher PIN or key chord is set: nobody could leave it."""
-    from rockly_desktop.ui.kiosk.kiosk import Kiosk, can_be_left
+    from rockly_desktop.ui.kiosk.kiosk import can_be_left
 
     if not can_be_left(window.settings):
         from PySide6.QtWidgets import QMessageBox
@@ -160,7 +160,7 @@ def start_kiosk(window, start_program=None):
                              tr("kiosk_no_way_out", window.language))
         window.deleteLater()
         return None
-    kiosk = Kiosk(window, start_program)
+    kiosk = window.become_kiosk(start_program)
     window.showFullScreen()
     return kiosk
 

@@ -64,7 +64,7 @@ def open_kiosk(qtbot, driver, folders, clock):
 
     yield open_it
     for kiosk in kiosks:
-        kiosk.window.document.modified = False
+        kiosk.frame.document.modified = False
         kiosk.leave()
 
 

@@ -33,7 +33,7 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 def idle_reset(qtbot, kiosk, clock):
     """Let the kiosk's idle minutes pass and wait until it has started over."""
     clock.now += kiosk.idle.seconds + 1
-    qtbot.waitUntil(lambda: "Welcome" in kiosk.window.statusBar().currentMessage(), timeout=15000)
+    qtbot.waitUntil(lambda: "Welcome" in kiosk.frame.statusBar().currentMessage(), timeout=15000)
 
 
 def with_dialog(qtbot, use) -> list:
