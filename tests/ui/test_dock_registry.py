@@ -5,9 +5,9 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDockWidget, QPlainTextEdit
 
 from rockly_desktop.app import build_main_window, start_kiosk
+from rockly_desktop.settings.app_settings import AppSettings
 from rockly_desktop.ui.docks import registry
 from rockly_desktop.ui.docks.registry import DockSpec, InKiosk, OnStage
-from rockly_desktop.ui.settings import AppSettings
 
 
 def _notes_dock(_language, parent):
