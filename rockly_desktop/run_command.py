@@ -123,7 +123,7 @@ def _teacher(teacher):
     """``teacher``, or the teacher's settings the window keeps (the same QSettings file)."""
     if teacher is not None:
         return teacher
-    from rockly_desktop.ui.settings import AppSettings
+    from rockly_desktop.settings.app_settings import AppSettings
 
     return AppSettings().teacher
 
