@@ -33,20 +33,21 @@ class Run:
 
     ``types``: block id -> block type (what the lines and events name); ``command``: the name the
     lines on standard error start with; ``out``: where the program's lines go (its prints, the tablet's
-    questions, the teacher's limits; how the run ended goes to standard output, an error to standard
-    error); ``on_event``:
+    questions, the teacher's limits); ``end_out``: where the line saying how it ended goes (an error's goes to
+    standard error); ``on_event``:
     every executor event as it happens (an event stream, see ``runtime.event_stream``); ``trace``:
     report every block entered (``rockly run`` prints them; an event stream needs them).
     """
 
     def __init__(self, profile, run_code: dict, types: dict, language: str = "en", command: str = "rockly run",
-                 out=print, on_event=None, trace: bool = True):
+                 out=print, on_event=None, trace: bool = True, end_out=print):
         self.profile = profile
         self.run_code = run_code
         self.types = types
         self.language = language
         self.command = command
         self.out = out
+        self.end_out = end_out
         self.on_event = on_event
         self.control = RunControl(trace=trace)
         self.stopped_by = signal.SIGINT
@@ -150,10 +151,10 @@ class Run:
     def _report_end(self, result: RunFinished) -> int:
         language = self.language
         if result.outcome == "finished":
-            print(app_text("cli_finished", language))
+            self.end_out(app_text("cli_finished", language))
             return EXIT_FINISHED
         if result.outcome == "stopped":
-            print(app_text("cli_stopped", language))
+            self.end_out(app_text("cli_stopped", language))
             return exit_status_stopped(self.stopped_by)
         if result.block_id:
             text = app_text("cli_error_in_block", language, id=result.block_id,

@@ -94,7 +94,7 @@ def main(program: dict, run_code: str, argv=None, on_event=None) -> int:
     for write in writers:
         write(started_record(program.get("source"), profile.id, profile.version, args.backend))
     run = Run(profile, {"code": run_code, "variables": program.get("variables")}, types, language, command,
-              out=out, on_event=_each(writers, types) if writers else None, trace=bool(writers))
+              out=out, on_event=_each(writers, types) if writers else None, trace=bool(writers), end_out=out)
     try:
         status = run.run(args.backend, connection(args.backend, args), args.answer, args.speed,
                          limits_from_data(program.get("limits", {})), args.record, program.get("source"),
