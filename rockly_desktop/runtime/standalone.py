@@ -105,7 +105,10 @@ def main(program: dict, run_code: str, argv=None, on_event=None) -> int:
     finally:
         if events is not None and args.events != "-":
             events.open = False
-            stream.close()
+            try:
+                stream.close()
+            except OSError:  # lines the reader never took (it went away)
+                pass
 
 
 def _installed_profile(wanted: dict, any_version: bool, language: str, command: str):

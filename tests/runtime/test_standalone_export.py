@@ -139,3 +139,14 @@ def test_any_generated_code_survives_the_files_literal(code):
                                             st.lists(st.text()), st.dictionaries(st.text(), st.text()))))
 def test_any_program_data_survives_the_files_literal(data):
     assert ast.literal_eval(data_literal(data)) == data
+
+
+def test_a_caller_in_its_own_process_gets_the_same_records_through_a_hook(exported):
+    """What the robot's agent will do: load the file's program and run it with ``on_event``."""
+    from rockly_desktop.runtime.standalone import main
+
+    loaded = runpy.run_path(str(exported))
+    records = []
+    assert main(loaded["PROGRAM"], loaded["RUN_CODE"], ["--speed", "20"], on_event=records.append) == 0
+    assert records[0]["event"] == "started" and records[-1] == {"event": "exit", "status": 0}
+    assert [record["id"] for record in records if record["event"] == "block"] == ["drive", "where", "arm"]
