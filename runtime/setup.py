@@ -8,6 +8,7 @@ imports Qt" in the checkout's pyproject.toml.
 """
 import os
 import re
+import shutil
 
 from setuptools import setup
 from setuptools.command.build_py import build_py
@@ -24,7 +25,12 @@ DATA_FOLDERS = (os.path.join("resources", "locale"), "toolboxes", "profiles")
 
 
 class RuntimeModules(build_py):
-    """build_py taking only the runtime's modules of the packages it shares with the window."""
+    """build_py taking only the runtime's modules of the packages it shares with the window, into a fresh
+    folder (pip builds in ``runtime/build``, where a module deleted from the checkout would linger)."""
+
+    def run(self):
+        shutil.rmtree(os.path.join(self.build_lib, "rockly_desktop"), ignore_errors=True)
+        super().run()
 
     def find_package_modules(self, package, package_dir):
         modules = super().find_package_modules(package, package_dir)
