@@ -24,6 +24,11 @@ def copy_of_rockly(folder: Path):
     shutil.copy(REPO / "pyproject.toml", folder)
 
 
+def append_to(module: Path, text: str):
+    """Add ``text`` at the end of the copied ``module`` (a function importing what it must not, say)."""
+    module.write_text(module.read_text(encoding="utf-8") + text, encoding="utf-8")
+
+
 def broken_contracts(folder: Path) -> str:
     """What lint-imports says of the copy in ``folder``, whose contracts must break (on one line)."""
     result = lint_imports(folder)
@@ -105,10 +110,8 @@ def test_the_simulator_naming_a_middleware_breaks_the_contracts(tmp_path):
     robot/sim, one added later too, name no ROS link and no ROS package."""
     copy_of_rockly(tmp_path)
     sim = tmp_path / "rockly_desktop" / "robot" / "sim"
-    sim_link = sim / "link.py"
-    sim_link.write_text(sim_link.read_text(encoding="utf-8") + (
-        "\n\ndef encoder():\n    from rockly_desktop.robot.ros1.recording_codec import Ros1Encoder\n\n"
-        "    return Ros1Encoder()\n"), encoding="utf-8")
+    append_to(sim / "link.py", "\n\ndef encoder():\n    from rockly_desktop.robot.ros1.recording_codec import "
+                               "Ros1Encoder\n\n    return Ros1Encoder()\n")
     (sim / "later.py").write_text("from rockly_desktop.robot.ros2 import client\n")
     output = broken_contracts(tmp_path)
     assert "The built-in simulator (robot.sim) names no middleware" in output
@@ -121,10 +124,8 @@ def test_a_wrapper_naming_the_simulator_a_link_or_the_registry_breaks_the_contra
     """By package: a backend wrapper (robot/wrappers, one added later too) works on any RobotBackend."""
     copy_of_rockly(tmp_path)
     wrappers = tmp_path / "rockly_desktop" / "robot" / "wrappers"
-    limits = wrappers / "limits.py"
-    limits.write_text(limits.read_text(encoding="utf-8") + (
-        "\n\ndef simulated(backend):\n    from rockly_desktop.robot.sim.sim_world import SimBackend\n\n"
-        "    return isinstance(backend, SimBackend)\n"), encoding="utf-8")
+    append_to(wrappers / "limits.py", "\n\ndef simulated(backend):\n    from rockly_desktop.robot.sim.sim_world import "
+                                      "SimBackend\n\n    return isinstance(backend, SimBackend)\n")
     (wrappers / "later.py").write_text(
         "from rockly_desktop.robot import links\nfrom rockly_desktop.robot.ros1 import link\n")
     output = broken_contracts(tmp_path)
@@ -139,9 +140,7 @@ def test_rclpy_on_rocklys_side_of_ros2_or_the_helper_imported_there_breaks_the_c
     """By package: any module of robot/ros2 outside helper/ (sim_bridge, or one added later) is Rockly's side."""
     copy_of_rockly(tmp_path)
     ros2 = tmp_path / "rockly_desktop" / "robot" / "ros2"
-    sim_bridge = ros2 / "sim_bridge.py"
-    sim_bridge.write_text(sim_bridge.read_text(encoding="utf-8") + "\n\ndef spin():\n    import rclpy\n\n"
-                          "    rclpy.init()\n", encoding="utf-8")
+    append_to(ros2 / "sim_bridge.py", "\n\ndef spin():\n    import rclpy\n\n    rclpy.init()\n")
     (ros2 / "later.py").write_text("from rockly_desktop.robot.ros2.helper import ros_values\n")
     output = broken_contracts(tmp_path)
     assert "rockly_desktop.robot.ros2.sim_bridge -> rclpy" in output
@@ -154,8 +153,8 @@ def test_settings_reaching_past_qtcore_up_into_ui_or_into_robots_break_the_contr
     copy_of_rockly(tmp_path)
     settings = tmp_path / "rockly_desktop" / "settings"
     kiosk = settings / "kiosk.py"
-    kiosk.write_text(kiosk.read_text(encoding="utf-8") + "\n\ndef chord_text(chord):\n    from PySide6 import QtGui\n\n"
-                     "    return QtGui.QKeySequence(chord).toString()\n", encoding="utf-8")
+    append_to(kiosk, "\n\ndef chord_text(chord):\n    from PySide6 import QtGui\n\n"
+                     "    return QtGui.QKeySequence(chord).toString()\n")
     (settings / "sneaky.py").write_text("from PySide6.QtWidgets import QWidget\nimport PySide6.QtWebEngineCore\n"
                                         "from rockly_desktop.ui import texts\n"
                                         "from rockly_desktop.recording import library\n")
