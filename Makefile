@@ -12,7 +12,7 @@ BLOCKLY   := resources/blockly/vendor/.version
 # (the app itself turns the sandbox off only when it runs as root).
 TEST_ENV  := QTWEBENGINE_DISABLE_SANDBOX=1 QT_QPA_PLATFORM=offscreen
 
-.PHONY: setup ros2 run test bench clean
+.PHONY: setup ros2 run test bench clean runtime
 
 setup: $(STAMP_SYS) $(STAMP_PY) $(BLOCKLY)
 
@@ -35,6 +35,10 @@ ros2: $(STAMP_ROS2)
 
 $(STAMP_ROS2): requirements-ros2.txt scripts/setup-ros2.sh | $(STAMP_SYS)
 	bash scripts/setup-ros2.sh
+
+# The runtime alone (no Qt; runtime/README.md), as a wheel to copy to a robot: dist/rockly_runtime-*.whl
+runtime: $(STAMP_PY)
+	$(PY) -m pip wheel --quiet --no-deps --no-build-isolation ./runtime -w dist
 
 run: setup
 	$(PY) -m rockly_desktop

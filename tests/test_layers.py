@@ -24,6 +24,11 @@ def copy_of_rockly(folder: Path):
     shutil.copy(REPO / "pyproject.toml", folder)
 
 
+def append_to(module: Path, text: str):
+    """Add ``text`` at the end of the copied ``module`` (a function importing what it must not, say)."""
+    module.write_text(module.read_text(encoding="utf-8") + text, encoding="utf-8")
+
+
 def broken_contracts(folder: Path) -> str:
     """What lint-imports says of the copy in ``folder``, whose contracts must break (on one line)."""
     result = lint_imports(folder)
@@ -66,6 +71,29 @@ def test_a_ui_wing_using_what_its_contract_does_not_name_breaks_it(tmp_path, win
     assert ", 1 broken." in output
 
 
+RUNTIME_CONTRACT = ("The runtime (rockly-runtime) never imports Qt, the window or Blockly's bridge, directly or "
+                    "indirectly")
+QT_ADAPTER_CONTRACT = ("Only the window (ui) uses the runner's Qt adapter (executor.qt_adapter), which rockly-runtime "
+                       "leaves out")
+
+
+@pytest.mark.parametrize("where, sneaky, caught, contract", [
+    # indirectly: through a module outside the runtime that imports Qt itself (the other contracts allow that)
+    ("runtime", "from rockly_desktop.settings import app_settings\n",
+     "rockly_desktop.runtime.sneaky -> rockly_desktop.settings.app_settings", RUNTIME_CONTRACT),
+    ("robot", "from rockly_desktop import sim_command\n", "rockly_desktop.robot.sneaky -> rockly_desktop.sim_command",
+     RUNTIME_CONTRACT),
+    ("executor", "from rockly_desktop.executor import qt_adapter\n",
+     "rockly_desktop.executor.sneaky -> rockly_desktop.executor.qt_adapter", QT_ADAPTER_CONTRACT),
+])
+def test_the_runtime_reaching_qt_even_indirectly_breaks_its_contract(tmp_path, where, sneaky, caught, contract):
+    """What rockly-runtime installs never imports Qt, not even through a module that is not its own."""
+    copy_of_rockly(tmp_path)
+    (tmp_path / "rockly_desktop" / where / "sneaky.py").write_text(sneaky)
+    output = broken_contracts(tmp_path)
+    assert f"{contract} BROKEN" in output and caught in output
+
+
 def test_ros_outside_its_link_package_breaks_the_contracts(tmp_path):
     """Only robot/ros1 imports rospy, only robot/ros2 rclpy, and the rest reaches them through the registry."""
     copy_of_rockly(tmp_path)
@@ -82,10 +110,8 @@ def test_the_simulator_naming_a_middleware_breaks_the_contracts(tmp_path):
     robot/sim, one added later too, name no ROS link and no ROS package."""
     copy_of_rockly(tmp_path)
     sim = tmp_path / "rockly_desktop" / "robot" / "sim"
-    sim_link = sim / "link.py"
-    sim_link.write_text(sim_link.read_text(encoding="utf-8") + (
-        "\n\ndef encoder():\n    from rockly_desktop.robot.ros1.recording_codec import Ros1Encoder\n\n"
-        "    return Ros1Encoder()\n"), encoding="utf-8")
+    append_to(sim / "link.py", "\n\ndef encoder():\n    from rockly_desktop.robot.ros1.recording_codec import "
+                               "Ros1Encoder\n\n    return Ros1Encoder()\n")
     (sim / "later.py").write_text("from rockly_desktop.robot.ros2 import client\n")
     output = broken_contracts(tmp_path)
     assert "The built-in simulator (robot.sim) names no middleware" in output
@@ -98,10 +124,8 @@ def test_a_wrapper_naming_the_simulator_a_link_or_the_registry_breaks_the_contra
     """By package: a backend wrapper (robot/wrappers, one added later too) works on any RobotBackend."""
     copy_of_rockly(tmp_path)
     wrappers = tmp_path / "rockly_desktop" / "robot" / "wrappers"
-    limits = wrappers / "limits.py"
-    limits.write_text(limits.read_text(encoding="utf-8") + (
-        "\n\ndef simulated(backend):\n    from rockly_desktop.robot.sim.sim_world import SimBackend\n\n"
-        "    return isinstance(backend, SimBackend)\n"), encoding="utf-8")
+    append_to(wrappers / "limits.py", "\n\ndef simulated(backend):\n    from rockly_desktop.robot.sim.sim_world import "
+                                      "SimBackend\n\n    return isinstance(backend, SimBackend)\n")
     (wrappers / "later.py").write_text(
         "from rockly_desktop.robot import links\nfrom rockly_desktop.robot.ros1 import link\n")
     output = broken_contracts(tmp_path)
@@ -116,9 +140,7 @@ def test_rclpy_on_rocklys_side_of_ros2_or_the_helper_imported_there_breaks_the_c
     """By package: any module of robot/ros2 outside helper/ (sim_bridge, or one added later) is Rockly's side."""
     copy_of_rockly(tmp_path)
     ros2 = tmp_path / "rockly_desktop" / "robot" / "ros2"
-    sim_bridge = ros2 / "sim_bridge.py"
-    sim_bridge.write_text(sim_bridge.read_text(encoding="utf-8") + "\n\ndef spin():\n    import rclpy\n\n"
-                          "    rclpy.init()\n", encoding="utf-8")
+    append_to(ros2 / "sim_bridge.py", "\n\ndef spin():\n    import rclpy\n\n    rclpy.init()\n")
     (ros2 / "later.py").write_text("from rockly_desktop.robot.ros2.helper import ros_values\n")
     output = broken_contracts(tmp_path)
     assert "rockly_desktop.robot.ros2.sim_bridge -> rclpy" in output
@@ -131,8 +153,8 @@ def test_settings_reaching_past_qtcore_up_into_ui_or_into_robots_break_the_contr
     copy_of_rockly(tmp_path)
     settings = tmp_path / "rockly_desktop" / "settings"
     kiosk = settings / "kiosk.py"
-    kiosk.write_text(kiosk.read_text(encoding="utf-8") + "\n\ndef chord_text(chord):\n    from PySide6 import QtGui\n\n"
-                     "    return QtGui.QKeySequence(chord).toString()\n", encoding="utf-8")
+    append_to(kiosk, "\n\ndef chord_text(chord):\n    from PySide6 import QtGui\n\n"
+                     "    return QtGui.QKeySequence(chord).toString()\n")
     (settings / "sneaky.py").write_text("from PySide6.QtWidgets import QWidget\nimport PySide6.QtWebEngineCore\n"
                                         "from rockly_desktop.ui import texts\n"
                                         "from rockly_desktop.recording import library\n")

@@ -78,8 +78,6 @@ MANIFEST_FIELDS = (
               "a category by its English or shared name."),
 )
 
-_FIELDS_BY_NAME = {spec.name: spec for spec in MANIFEST_FIELDS}
-
 
 def _check_text(value):
     if isinstance(value, str) and value.strip():
@@ -341,29 +339,29 @@ def _check(spec: FieldSpec, value, root: Path):
     return None
 
 
-def field_problem(spec: FieldSpec, value, root: Path):
-    """The problem of one field's ``value`` (a FieldSpec of any manifest-like file, files
-    relative to ``root``), or None when it is fine."""
-    return _check(spec, value, root)
-
-
-def read_manifest(profile_dir: Path) -> dict:
-    """Read and validate ``profile.yaml`` in ``profile_dir``; raise ManifestError on the first problem."""
-    path = profile_dir / MANIFEST_NAME
+def read_fields(path: Path, fields, root: Path, check=None) -> dict:
+    """Read the manifest-like YAML file at ``path`` whose fields are ``fields`` (FieldSpecs; files they
+    name are relative to ``root``); raise ManifestError on the first unknown, missing or wrong field.
+    ``check(spec, value, data)`` may say a field's problem itself (None: the usual check)."""
     data = read_yaml_mapping(path)
+    known = [spec.name for spec in fields]
     for name in data:
-        if name not in _FIELDS_BY_NAME:
-            known = ", ".join(_FIELDS_BY_NAME)
-            raise ManifestError(path, name, f"unknown field (known fields: {known})")
-    for spec in MANIFEST_FIELDS:
+        if name not in known:
+            raise ManifestError(path, name, f"unknown field (known fields: {', '.join(known)})")
+    for spec in fields:
         if spec.name not in data:
             if spec.required:
                 raise ManifestError(path, spec.name, f"is missing: {spec.description}")
             continue
-        if spec.kind == "ros_versions":
-            problem = _check_ros_versions(data[spec.name], data.get("ros_interface", {}))
-        else:
-            problem = _check(spec, data[spec.name], profile_dir)
+        problem = (check and check(spec, data[spec.name], data)) or _check(spec, data[spec.name], root)
         if problem:
             raise ManifestError(path, spec.name, problem)
     return data
+
+
+def read_manifest(profile_dir: Path) -> dict:
+    """Read and validate ``profile.yaml`` in ``profile_dir``; raise ManifestError on the first problem."""
+    def ros_versions(spec, value, data):
+        return _check_ros_versions(value, data.get("ros_interface", {})) if spec.kind == "ros_versions" else None
+
+    return read_fields(profile_dir / MANIFEST_NAME, MANIFEST_FIELDS, profile_dir, ros_versions)

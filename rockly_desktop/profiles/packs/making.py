@@ -32,9 +32,23 @@ FIRST_VERSION = "1.0.0"
 _PATCH = re.compile(r"^(\d+)\.(\d+)\.(\d+)$")
 
 
+class _PackDumper(yaml.SafeDumper):
+    """YAML's own dumper, but a text holding one of YAML's extra line breaks (NEL, LS, PS) is written in
+    double quotes, where they are escaped: in single quotes PyYAML writes NEL raw and reads it back as a space."""
+
+
+def _text(dumper, text: str):
+    style = '"' if any(mark in text for mark in "\x85\u2028\u2029") else None
+    return dumper.represent_scalar("tag:yaml.org,2002:str", text, style=style)
+
+
+_PackDumper.add_representer(str, _text)
+
+
 def dump_yaml(data) -> str:
     """``data`` as YAML a person can read and edit (keys in the order given, texts as they are)."""
-    return yaml.safe_dump(data, allow_unicode=True, sort_keys=False, width=120, default_flow_style=False)
+    return yaml.dump(data, Dumper=_PackDumper, allow_unicode=True, sort_keys=False, width=120,
+                     default_flow_style=False)
 
 
 def next_version(version: str) -> str:

@@ -18,7 +18,7 @@ from rockly_desktop.core import paths
 from rockly_desktop.core.errors import ManifestError
 from rockly_desktop.profiles.blocks import read_blocks
 from rockly_desktop.profiles.i18n import localize
-from rockly_desktop.profiles.manifest import MANIFEST_FIELDS, FieldSpec, field_problem
+from rockly_desktop.profiles.manifest import MANIFEST_FIELDS, FieldSpec, read_fields
 from rockly_desktop.profiles.packs.spec import MadeBlock
 from rockly_desktop.profiles.toolbox import read_toolbox
 from rockly_desktop.profiles.yaml_files import read_yaml_mapping
@@ -31,7 +31,6 @@ PACK_FIELDS = (
     FieldSpec("adds_to", "identifier", True, "The id of the robot profile whose toolbox the pack adds to."),
     _SHARED["description"], _SHARED["languages"], _SHARED["blocks"], _SHARED["toolbox"],
 )
-_PACK_FIELDS_BY_NAME = {spec.name: spec for spec in PACK_FIELDS}
 
 
 @dataclass(frozen=True, eq=False)
@@ -74,20 +73,7 @@ def is_pack_folder(folder) -> bool:
 
 def read_pack_manifest(folder: Path) -> dict:
     """Read and check ``pack.yaml``; raise ManifestError on the first problem."""
-    path = folder / PACK_MANIFEST
-    data = read_yaml_mapping(path)
-    for name in data:
-        if name not in _PACK_FIELDS_BY_NAME:
-            raise ManifestError(path, name, f"unknown field (known fields: {', '.join(_PACK_FIELDS_BY_NAME)})")
-    for spec in PACK_FIELDS:
-        if spec.name not in data:
-            if spec.required:
-                raise ManifestError(path, spec.name, f"is missing: {spec.description}")
-            continue
-        problem = field_problem(spec, data[spec.name], folder)
-        if problem:
-            raise ManifestError(path, spec.name, problem)
-    return data
+    return read_fields(folder / PACK_MANIFEST, PACK_FIELDS, folder)
 
 
 def _read_made(folder: Path) -> tuple:
