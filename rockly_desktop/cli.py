@@ -15,6 +15,9 @@
     rockly run PROGRAM --record OUT.mcap  ... and record the run
     rockly replay RECORDING.mcap        print a recorded run's timeline (block, time, outcome)
     rockly recordings list              list the recordings in the recordings folder
+    rockly blocks make --profile P --pack K --id ID --kind KIND ...  make a block without code into a block pack
+    rockly blocks list PACK             list a block pack's blocks
+    rockly blocks export PACK -o F.zip  write a block pack to one file; rockly blocks import F.zip installs one
 
 The kinds of robot (``--backend``, ``rockly sim``'s ``--ros``, their connection options) come from the
 robot-link registry, ``robot/links.py``.
@@ -27,7 +30,7 @@ from pathlib import Path
 
 from rockly_desktop import __version__
 
-SUBCOMMANDS = ("profiles", "plugins", "export", "run", "sim", "replay", "recordings")
+SUBCOMMANDS = ("profiles", "plugins", "export", "run", "sim", "replay", "recordings", "blocks")
 
 
 def _tool_parser() -> argparse.ArgumentParser:
@@ -73,6 +76,10 @@ def _tool_parser() -> argparse.ArgumentParser:
         "list", help="list the recordings in the recordings folder")
     listing.add_argument("--folder", type=Path, help="another folder (default: the one the preferences name)")
     _language_option(listing)
+
+    from rockly_desktop.blocks_command import add_blocks_parser
+
+    add_blocks_parser(commands, _language_option)
 
     sim = commands.add_parser("sim", help="run a profile's simulated robot as a ROS node, in a small window")
     sim.add_argument("profile", help="the robot profile id (see rockly profiles list)")
@@ -157,8 +164,11 @@ def _profiles_validate(path: Path) -> int:
     from rockly_desktop.core import paths
     from rockly_desktop.core.errors import ManifestError
     from rockly_desktop.profiles.checks import code_problems
+    from rockly_desktop.profiles.packs.pack import is_pack_folder
     from rockly_desktop.profiles.profile import load_profile
 
+    if is_pack_folder(path):
+        return _pack_validate(path)
     try:
         profile = load_profile(path, paths.shared_toolboxes_dir())
     except ManifestError as error:
@@ -171,6 +181,32 @@ def _profiles_validate(path: Path) -> int:
         return 1
     print(f"OK  {profile.id} {profile.version}: {len(profile.blocks)} blocks, "
           f"{len(profile.toolbox_categories)} toolbox categories, commands {profile.api_target}")
+    return 0
+
+
+def _pack_validate(path: Path) -> int:
+    """``rockly profiles validate`` of a block pack folder: its files, and that it joins its profile."""
+    from rockly_desktop.core.errors import ManifestError
+    from rockly_desktop.profiles.packs.merge import merge_problem
+    from rockly_desktop.profiles.packs.pack import load_pack
+    from rockly_desktop.profiles.registry import ProfileRegistry
+
+    try:
+        pack = load_pack(path)
+    except ManifestError as error:
+        print(f"INVALID  {error}", file=sys.stderr)
+        return 1
+    profiles = ProfileRegistry.discover().base_profiles
+    if pack.adds_to not in profiles:
+        print(f"INVALID  {path}: adds_to: '{pack.adds_to}' is no installed robot profile "
+              f"(installed: {', '.join(profiles) or '-'})", file=sys.stderr)
+        return 1
+    problem = merge_problem(profiles[pack.adds_to], pack)
+    if problem is not None:
+        print(f"INVALID  {path}: {problem}", file=sys.stderr)
+        return 1
+    print(f"OK  block pack {pack.id} {pack.version}: {len(pack.blocks)} blocks, "
+          f"{len(pack.toolbox_categories)} toolbox categories, adds to {pack.adds_to}")
     return 0
 
 
@@ -257,6 +293,10 @@ def main(argv=None) -> int:
             language = args.language or _app_language()
             return (replay(args.recording, language) if args.command == "replay"
                     else list_recordings(args.folder, language))
+        if args.command == "blocks":
+            from rockly_desktop.blocks_command import run_blocks_command
+
+            return run_blocks_command(args, args.language or _app_language())
         if args.command == "sim":
             from rockly_desktop.sim_command import serve_simulator
 

@@ -40,13 +40,18 @@ class ManifestError(RocklyError):
 
 
 class UnknownBlocksError(RocklyError):
-    """A program uses block types that no installed profile provides."""
+    """A program uses block types that no installed profile provides (``missing_packs``: the
+    (id, version) of block packs the program records that are not installed)."""
 
-    def __init__(self, block_types, profile_id, profile_installed):
+    def __init__(self, block_types, profile_id, profile_installed, missing_packs=()):
         self.block_types = sorted(block_types)
         self.profile_id = profile_id
         self.profile_installed = profile_installed
-        if profile_id is None:
+        self.missing_packs = tuple(missing_packs)
+        if self.missing_packs:
+            hint = app_local_text("unknown_blocks_pack_missing", packs=", ".join(
+                f"'{pack_id}' {version}" for pack_id, version in self.missing_packs))
+        elif profile_id is None:
             hint = app_local_text("unknown_blocks_install")
         elif profile_installed:
             hint = app_local_text("unknown_blocks_newer", profile=profile_id)

@@ -56,6 +56,11 @@ def user_profiles_dir() -> Path:
     return user_data_dir() / "profiles"
 
 
+def user_packs_dir() -> Path:
+    """Block packs: blocks made in Rockly, each pack adding to one robot profile (XDG data home)."""
+    return user_data_dir() / "packs"
+
+
 def recovery_dir() -> Path:
     """Copies of programs with unsaved changes, kept for after a crash (XDG data home)."""
     return user_data_dir() / "recovery"

@@ -5,6 +5,9 @@ A file looks like::
     {"format": "rockly-program", "version": 1, "profile": "my_robot",
      "workspace": { ...Blockly's JSON serialization... }}
 
+A program using blocks of block packs also records them, ``"packs": {"pack_id": "1.0.2"}``
+(id and version), so that opening it without a pack can say which one is missing.
+
 Reading never changes the file; writing is atomic (temp file, fsync, rename), through
 symbolic links to their target.
 """
@@ -35,6 +38,7 @@ class Program:
     profile_id: str
     workspace: dict = field(default_factory=dict)
     breakpoints: list = field(default_factory=list)
+    packs: dict = field(default_factory=dict)  # {block pack id: version} of the packs whose blocks it uses
 
     def to_json(self, extra=None) -> str:
         """The file's text, stable and readable in a diff (compact when very deeply nested).
@@ -48,6 +52,7 @@ class Program:
             "profile": self.profile_id,
             "workspace": self.workspace,
             "breakpoints": list(self.breakpoints),
+            **({"packs": dict(self.packs)} if self.packs else {}),
             **(extra or {}),
         }
         text = deep_json.dumps(document, indent=1, ensure_ascii=False)
@@ -85,7 +90,11 @@ def parse_program(text: str, path="<text>") -> Program:
     breakpoints = document.get("breakpoints", [])
     if not isinstance(breakpoints, list) or not all(isinstance(item, str) for item in breakpoints):
         raise ProgramFileError(path, app_local_text("file_bad_breakpoints"))
-    return Program(profile_id=profile_id, workspace=workspace, breakpoints=breakpoints)
+    packs = document.get("packs", {})
+    if not isinstance(packs, dict) or not all(isinstance(key, str) and isinstance(value, str)
+                                              for key, value in packs.items()):
+        raise ProgramFileError(path, app_local_text("file_bad_packs"))
+    return Program(profile_id=profile_id, workspace=workspace, breakpoints=breakpoints, packs=packs)
 
 
 def read_text_file(path, max_bytes: int = MAX_FILE_BYTES) -> str:

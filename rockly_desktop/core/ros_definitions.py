@@ -162,13 +162,27 @@ class DefinitionCatalog:
         text = self._definition(*full.split("/", 1), "msg")
         return (full, _declarations(text)) if text is not None else None
 
-    def _top(self, type_name: str, kind: str):
-        """``(package, declarations)`` of a message, a service's request or an action's goal, or None."""
+    def _top(self, type_name: str, kind: str, section: int = 0):
+        """``(package, declarations)`` of a message, a service's request or an action's goal (``section``
+        1: a response or result, 2: an action's feedback), or None."""
         package, _, name = type_name.partition("/")
         if kind == "action":
             name = name[:-len("Action")] if name.endswith("Action") else name
         text = self._definition(package, name, kind)
-        return (package, _declarations(_sections(text)[0])) if text is not None else None
+        if text is None:
+            return None
+        sections = _sections(text)
+        return (package, _declarations(sections[section])) if section < len(sections) else (package, [])
+
+    def knows(self, type_name: str, kind: str = "msg") -> bool:
+        """True when the definition of ``type_name`` (a ``kind``: msg, srv or action) is found."""
+        return "/" in str(type_name) and self._top(str(type_name), kind) is not None
+
+    def type_names(self, kind: str = "msg") -> list:
+        """The types of ``kind`` offered: the common installed packages' and the profile's own
+        (actions named ``<package>/<Name>Action``, as programs name them)."""
+        names = self._types(kind)
+        return [name + "Action" for name in names] if kind == "action" else names
 
     def _flatten(self, declarations, package: str, prefix: str = "", depth: int = 0) -> list:
         inputs = []
@@ -191,15 +205,31 @@ class DefinitionCatalog:
             inputs += nested
         return inputs
 
-    def fields(self, type_name: str, kind: str = "msg") -> list:
+    def fields(self, type_name: str, kind: str = "msg", section: int = 0) -> list:
         """The inputs of a message type (``kind='msg'``), a service's request (``'srv'``)
-        or an action's goal (``'action'``).
+        or an action's goal (``'action'``); ``section`` 1 gives a response's or result's
+        fields, 2 an action's feedback's.
 
         Action types are named as programs name them, ``<package>/<Name>Action``.
         Returns [] for a type that is not found.
         """
-        top = self._top(type_name, kind)
+        top = self._top(type_name, kind, section)
         return self._flatten(top[1], top[0]) if top else []
+
+    def message_arrays(self, type_name: str, kind: str = "msg", section: int = 0) -> list:
+        """The top-level fields of ``type_name`` (as ``fields`` names its parts) that are arrays of
+        messages, which blocks cannot build field by field: ``[(name, "package/Type[]")]``."""
+        top = self._top(type_name, kind, section)
+        if top is None:
+            return []
+        package, declarations = top
+        found = []
+        for declaration in declarations:
+            if declaration.is_array and declaration.ros_type not in _CHECKS:
+                resolved = self._resolve(declaration.ros_type, package)
+                full = resolved[0] if resolved else declaration.ros_type
+                found.append((declaration.name, full + "[]"))
+        return found
 
     def check(self, type_name: str, kind: str, data) -> None:
         """Raise RobotCommandError naming the field when ``data`` does not fit the type.

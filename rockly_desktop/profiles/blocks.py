@@ -182,6 +182,12 @@ def _parse_block(raw, index: int, path: Path) -> BlockSpec:
     return BlockSpec(block_type, definition, python["code"], values, defaults, slots, handlers)
 
 
+def block_spec(raw: dict, path: Path, index: int = 0) -> BlockSpec:
+    """One block definition (a ``blocks.yaml`` entry) read and checked as ``read_blocks`` does;
+    ManifestError naming ``path`` when it is wrong."""
+    return _parse_block(raw, index, path)
+
+
 def read_blocks(path: Path) -> tuple:
     """Read and validate a profile's block file; return its BlockSpecs in file order."""
     data = read_yaml_mapping(path)

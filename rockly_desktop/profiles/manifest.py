@@ -341,6 +341,12 @@ def _check(spec: FieldSpec, value, root: Path):
     return None
 
 
+def field_problem(spec: FieldSpec, value, root: Path):
+    """The problem of one field's ``value`` (a FieldSpec of any manifest-like file, files
+    relative to ``root``), or None when it is fine."""
+    return _check(spec, value, root)
+
+
 def read_manifest(profile_dir: Path) -> dict:
     """Read and validate ``profile.yaml`` in ``profile_dir``; raise ManifestError on the first problem."""
     path = profile_dir / MANIFEST_NAME

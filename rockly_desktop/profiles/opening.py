@@ -46,6 +46,7 @@ class ProgramToOpen:
     breakpoints: tuple = ()
     missing_profile: str = None  # the declared profile when it is not installed (``profile`` stands in for it)
     installed_profiles: tuple = ()  # then: the installed profile ids
+    missing_packs: tuple = ()  # (pack id, version) of the block packs the program records that are not installed
     # What the editor page replaced when it showed the program: one dict per field value it
     # could not keep ({number, id, type, field, requested, now}); set from the page's answer.
     replaced_fields: list = field(default_factory=list, compare=False)
@@ -106,9 +107,12 @@ def read_program_to_open(path, registry: ProfileRegistry, fallback: Profile) -> 
     else:
         profile = _best_profile_for(set(block_types_in_workspace(program.workspace)), registry, fallback)
         missing = program.profile_id
+    installed_packs = {pack.id for pack in profile.packs}
     return ProgramToOpen(path, profile, workspace=program.workspace, declared_profile=program.profile_id,
                          breakpoints=tuple(program.breakpoints), missing_profile=missing,
                          installed_profiles=tuple(registry.profiles) if missing else (),
+                         missing_packs=tuple((pack_id, version) for pack_id, version in sorted(program.packs.items())
+                                             if pack_id not in installed_packs),
                          rounded_numbers=tuple(rounded_numbers(program.workspace)))
 
 
@@ -130,7 +134,8 @@ def _refuse_broken(path, problem):
 def unknown_blocks_error(program: ProgramToOpen, unknown_types, registry: ProfileRegistry) -> UnknownBlocksError:
     """The error for a program the editor refused because of ``unknown_types``."""
     declared = program.declared_profile
-    return UnknownBlocksError(unknown_types, declared, declared in registry.profiles if declared else False)
+    return UnknownBlocksError(unknown_types, declared, declared in registry.profiles if declared else False,
+                              missing_packs=program.missing_packs)
 
 
 def describe_replaced_field(entry: dict, language: str = "en") -> str:
@@ -152,5 +157,7 @@ def opening_warnings(program: ProgramToOpen, language: str = "en") -> list:
     if program.missing_profile:
         warnings.append(app_text("opening_missing_profile", language, declared=program.missing_profile,
                                  installed=", ".join(program.installed_profiles), used=program.profile.id))
+    warnings.extend(app_text("opening_missing_pack", language, pack=pack_id, version=version)
+                    for pack_id, version in program.missing_packs)
     warnings.extend(describe_replaced_field(entry, language) for entry in program.replaced_fields)
     return warnings

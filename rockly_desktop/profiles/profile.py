@@ -9,6 +9,7 @@ from rockly_desktop.core.app_texts import app_catalogue
 from rockly_desktop.core.catalogue import Catalogue
 from rockly_desktop.core.errors import ManifestError, RocklyError
 from rockly_desktop.core.ros_definitions import DefinitionCatalog
+from rockly_desktop.core.workspace_blocks import block_types_in_workspace
 from rockly_desktop.profiles.blocks import BlockSpec, read_blocks
 from rockly_desktop.profiles.i18n import localize
 from rockly_desktop.profiles.manifest import MANIFEST_NAME, read_manifest
@@ -35,6 +36,7 @@ class Profile:
     blocks: tuple
     toolbox_categories: list
     shared_blocks: tuple = ()
+    packs: tuple = ()  # the block packs merged in (``packs.merge.PackInfo``), in the order they were added
 
     def display_name(self, language: str = "en") -> str:
         """The profile's name for people, in ``language``."""
@@ -67,6 +69,16 @@ class Profile:
             if spec.type == block_type:
                 return spec
         raise KeyError(block_type)
+
+    def pack_of(self, block_type: str):
+        """The id of the merged block pack defining ``block_type``, or None (the profile's own, or unknown)."""
+        return next((pack.id for pack in self.packs if block_type in pack.block_types), None)
+
+    def packs_used(self, workspace: dict) -> dict:
+        """``{pack id: version}`` of the merged packs whose blocks ``workspace`` (Blockly JSON) uses:
+        what a program file records, so that opening it without a pack can say which is missing."""
+        used = set(block_types_in_workspace(workspace or {}))
+        return {pack.id: pack.version for pack in self.packs if used & pack.block_types}
 
     @property
     def legacy_fields(self) -> dict:
@@ -130,9 +142,15 @@ class Profile:
         return next((level for level in self.levels if level["id"] == level_id), None)
 
     def hidden_blocks(self, switched_off) -> set:
-        """Block types of the capabilities whose ids are in ``switched_off``."""
-        return {block for capability in self.capabilities if capability["id"] in switched_off
-                for block in capability.get("blocks", [])}
+        """Block types of the capabilities whose ids are in ``switched_off``, and the made blocks of
+        packs that use one of their topics, services or actions."""
+        hidden = set()
+        for capability in self.capabilities:
+            if capability["id"] in switched_off:
+                hidden.update(capability.get("blocks", []))
+                names = {*capability.get("topics", ()), *capability.get("services", ()), *capability.get("actions", ())}
+                hidden.update(block for pack in self.packs for block, name in pack.interfaces.items() if name in names)
+        return hidden
 
     def simulator_view_class(self):
         """The simulator view's class (imported now), or None when the profile has no view.

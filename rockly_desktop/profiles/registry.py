@@ -9,8 +9,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from rockly_desktop.core import paths
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import ManifestError, RocklyError
 from rockly_desktop.profiles.manifest import MANIFEST_NAME
+from rockly_desktop.profiles.packs.merge import with_packs
+from rockly_desktop.profiles.packs.pack import discover_packs
+from rockly_desktop.profiles.packs.validation import BlockMakerError
 from rockly_desktop.profiles.profile import Profile, load_profile
 
 ENTRY_POINT_GROUP = "rockly.profiles"
@@ -65,10 +69,14 @@ def discover_locations(extra_dirs=()) -> list:
 
 @dataclass
 class ProfileRegistry:
-    """The installed profiles that loaded, and the errors of those that did not."""
+    """The installed profiles that loaded (with the block packs that add to them merged in), and
+    the errors of those that did not."""
 
     profiles: dict = field(default_factory=dict)
     errors: list = field(default_factory=list)
+    base_profiles: dict = field(default_factory=dict)  # the profiles as their folders have them, without packs
+    packs: dict = field(default_factory=dict)          # the installed block packs by id (packs.pack.Pack)
+    pack_errors: list = field(default_factory=list)    # why a pack is not merged: broken, or its profile missing
 
     @classmethod
     def discover(cls, extra_dirs=()) -> "ProfileRegistry":
@@ -91,7 +99,29 @@ class ProfileRegistry:
                     f"'{profile.id}' is already provided by {first.root} ({first.source}); this copy is ignored"))
                 continue
             registry.profiles[profile.id] = profile
+        registry.base_profiles = dict(registry.profiles)
+        registry.reload_packs()
         return registry
+
+    def reload_packs(self, folder=None) -> None:
+        """Read the block packs again (from ``folder``, default the user's) and merge each into the
+        profile it adds to: what the window calls after a block was saved or a pack imported, then
+        showing ``get(profile_id)`` again. The profiles themselves are not read again."""
+        packs, pack_errors = discover_packs(folder)
+        merged = dict(self.base_profiles)
+        for pack in packs.values():
+            if pack.adds_to not in merged:
+                pack_errors.append(BlockMakerError(app_local_text(
+                    "pack_broken", pack=pack.id, problem=app_local_text(
+                        "pack_profile_missing", profile=pack.adds_to, installed=", ".join(merged) or "-"))))
+        for profile_id, profile in merged.items():
+            merged[profile_id], errors = with_packs(profile, packs.values())
+            pack_errors += errors
+        self.profiles, self.packs, self.pack_errors = merged, packs, pack_errors
+
+    def pack(self, pack_id: str):
+        """The installed block pack ``pack_id``; KeyError if there is none."""
+        return self.packs[pack_id]
 
     def get(self, profile_id: str) -> Profile:
         """The profile with this id; KeyError if it is not installed."""

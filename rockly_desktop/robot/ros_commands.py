@@ -48,6 +48,16 @@ class RosCommands(RobotCommands):
         """Publish any message type, its fields given as a mapping (or JSON text)."""
         self.backend.publish(str(topic), str(message_type), self._checked(fields, message_type, "msg", "message"))
 
+    def number_in(self, value, minimum, maximum, what):
+        """``value`` as a number from ``minimum`` to ``maximum`` (None: unbounded on that side); a value
+        outside stops the program on its block, naming ``what`` (a made block's input)."""
+        number = self.number(value, what)
+        if (minimum is not None and number < minimum) or (maximum is not None and number > maximum):
+            raise RobotCommandError(app_local_text("pack_value_out_of_range", what=what, value=repr(value),
+                                                   minimum="-" if minimum is None else minimum,
+                                                   maximum="-" if maximum is None else maximum))
+        return value
+
     def wait_for_message(self, topic, timeout=10):
         """Wait for the next message on ``topic`` (any type) and return it."""
         return self.backend.wait_for_message(str(topic), None, self.number(timeout, "the timeout"))

@@ -85,7 +85,8 @@ class Autosave(QObject):
     def _write(self):
         if not self.document.modified or self._workspace is None:
             return
-        program = Program(self.document.profile.id, self._workspace, self.document.breakpoints)
+        program = Program(self.document.profile.id, self._workspace, self.document.breakpoints,
+                          self.document.profile.packs_used(self._workspace))
         try:
             self.session.write(program, self.document.path, self.document.disk_stamp)
         except ProgramFileError as error:

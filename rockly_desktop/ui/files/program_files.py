@@ -315,7 +315,8 @@ class ProgramFiles(QObject):
                 if now is not None and now != accepted:
                     raise ProgramFileError(path, app_local_text("file_changed_meanwhile"))
             disk_stamp = save_program(path, Program(self.document.profile.id, state["workspace"],
-                                                    self.document.breakpoints))
+                                                    self.document.breakpoints,
+                                                    self.document.profile.packs_used(state["workspace"])))
             self._set_file(path, False, disk_stamp)
             self.sig_status.emit(tr("saved", self.settings.language, path=path))
 

@@ -163,7 +163,8 @@ class Kiosk(QObject):
             if not error:
                 try:
                     save_program(self._dated_path(), Program(document.profile.id, state["workspace"],
-                                                             document.breakpoints))
+                                                             document.breakpoints,
+                                                             document.profile.packs_used(state["workspace"])))
                 except (RocklyError, OSError) as problem:
                     error = problem
             if error:

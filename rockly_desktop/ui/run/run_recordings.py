@@ -35,7 +35,8 @@ def open_run_recording(settings, document, workspace: dict, robot, say=lambda te
 
     try:
         keep_last(folder, settings.recordings_kept - 1)  # room for this one
-        program = Program(profile.id, workspace or {}, list(document.breakpoints)).to_json().encode("utf-8")
+        program = Program(profile.id, workspace or {}, list(document.breakpoints),
+                          profile.packs_used(workspace)).to_json().encode("utf-8")
         path = new_recording_path(folder, name, robot.kind)
         return RunRecording(path, profile, robot, name, program, block_types_by_id(workspace or {}),
                             settings.recording_topic_rate, on_stopped=stopped)
