@@ -557,6 +557,17 @@
       const numbers = new Map(elements.map((element, index) => [element, index + 1]));
       return {loaded: true, ...replacedFields(fieldsNotKept(XML_PROGRAM, pairs, numbers))};
     },
+    /** Define ``block`` (an editor_config entry) anew and show it alone: the block maker's preview. */
+    preview({block}) {
+      RocklyTemplates.install([block]);
+      replaceWorkspace(() => {
+        const shown = workspace.newBlock(block.definition.type);
+        shown.initSvg();
+        shown.render();
+        shown.moveBy(16, 16);
+      });
+      return true;
+    },
     setToolbox({toolbox}) {
       workspace.updateToolbox(toolbox);
       return true;

@@ -1,0 +1,105 @@
+"""The block maker in the real window (issue 22): Tools → Make a block… on the simulated HOBBIT, a
+service with two fields made into a block whose preview and Python follow each edit, saved into a
+block pack, in the toolbox at once, and run; the German window; bad input; the Topic monitor's menu."""
+from page_tools import call_page, run_js
+from program_builder import block, stack, text, workspace
+from PySide6.QtGui import QAction
+
+from rockly_desktop.profiles.packs.pack import user_packs_dir
+from rockly_desktop.ui.blockmaker.maker_dialog import BlockMakerDialog, pack_id_for
+
+PARAMS = '[{name: type, value: D_PLAIN}, {name: text, value: "made by hand"}]'
+
+
+def open_maker(qtbot, window) -> BlockMakerDialog:
+    """Open the maker with the Tools menu's action."""
+    next(action for action in window.findChildren(QAction) if action.objectName() == "action_make_block").trigger()
+    return the_maker(qtbot, window)
+
+
+def the_maker(qtbot, window) -> BlockMakerDialog:
+    """The window's open maker, once its preview page is ready."""
+    qtbot.waitUntil(lambda: window.findChild(BlockMakerDialog) is not None, timeout=5000)
+    maker = window.findChild(BlockMakerDialog)
+    qtbot.waitUntil(lambda: maker.preview.is_ready, timeout=30000)
+    return maker
+
+
+def drawn_preview(qtbot, maker) -> dict:
+    """The preview block as the maker's page draws it: its text and inputs."""
+    return run_js(qtbot, maker.preview, """(() => {
+        const shown = Blockly.getMainWorkspace().getTopBlocks(false);
+        return shown.length === 1 ? {text: shown[0].toString(), inputs: shown[0].inputList.map(i => i.name)
+                                     .filter(Boolean)} : null; })()""")
+
+
+def make_mmui_block(qtbot, maker, block_id="made_say", english="ask %1 to say %2", german=""):
+    """Pick /MMUI, make sessionID and requestText inputs, fix its params, write the sentence."""
+    assert maker.choose_named("/MMUI")
+    maker.fields.set_use("sessionID", "input", "7")
+    maker.fields.set_use("requestText", "input", "hello")
+    maker.fields.set_use("params", "fixed", PARAMS)
+    maker.sentence["en"].setText(english)
+    maker.sentence["de"].setText(german)
+    maker.block_id.setText(block_id)
+
+
+def test_a_service_with_two_fields_becomes_a_block_in_the_toolbox_that_runs(qtbot, window):
+    maker = open_maker(qtbot, window)
+    make_mmui_block(qtbot, maker)
+    assert maker.problems == []
+    assert "ros.call_service('/MMUI', 'hobbit_msgs/Request'" in maker.python.toPlainText()
+    assert "'sessionID': '7', 'requestText': 'hello'" in maker.python.toPlainText()
+    qtbot.waitUntil(lambda: (drawn_preview(qtbot, maker) or {}).get("text", "").startswith("ask"), timeout=10000)
+    assert drawn_preview(qtbot, maker)["inputs"] == ["sessionid", "requestText".lower()]
+
+    maker.sentence["en"].setText("ask %1 please to say %2")
+    qtbot.waitUntil(lambda: "please" in drawn_preview(qtbot, maker)["text"], timeout=10000)
+
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_say" in window.editor.known_block_types, timeout=30000)
+    assert (user_packs_dir() / pack_id_for(window.profile) / "blocks.yaml").is_file()
+    toolbox = run_js(qtbot, window.editor, "JSON.stringify(Blockly.getMainWorkspace().options.languageTree)")
+    assert '"made_say"' in toolbox
+
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(stack(block(
+        "made_say", inputs={"sessionid": text("9"), "requesttext": text("hi")}, id="say")))})
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=30000) as finished:
+        assert window.runs.run()
+    assert finished.args[0].outcome == "finished", finished.args[0].message
+    assert window.robot().snapshot()["tablet"] == {"kind": "D_PLAIN", "text": "made by hand"}
+
+
+def test_the_german_window_shows_the_german_sentence(qtbot, german_window):
+    maker = open_maker(qtbot, german_window)
+    assert maker.windowTitle() == "Einen Block bauen"
+    make_mmui_block(qtbot, maker, "made_sag", "ask %1 to say %2", "frag %1 und sag %2")
+    qtbot.waitUntil(lambda: (drawn_preview(qtbot, maker) or {}).get("text", "").startswith("frag"), timeout=10000)
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_sag" in german_window.editor.known_block_types, timeout=30000)
+    call_page(qtbot, german_window.editor, "load", {"workspace": workspace(stack(block("made_sag", id="sag")))})
+    shown = run_js(qtbot, german_window.editor, "Blockly.getMainWorkspace().getBlockById('sag').toString()")
+    assert shown.startswith("frag")
+
+
+def test_bad_input_says_what_is_wrong_and_writes_nothing(qtbot, window):
+    maker = open_maker(qtbot, window)
+    make_mmui_block(qtbot, maker, block_id="hobbit_stop", english="ask %1")
+    problems = "\n".join(maker.problems)
+    assert "already has a block 'hobbit_stop'" in problems
+    assert "must have each of %1 to %2 once" in problems
+    assert maker.problem_label.isVisibleTo(maker) and "hobbit_stop" in maker.problem_label.text()
+    assert not maker.save_button.isEnabled()
+    maker.save()  # even asked directly, nothing is written
+    assert not (user_packs_dir() / pack_id_for(window.profile)).exists()
+    assert maker.isVisible()
+
+
+def test_the_topic_monitors_menu_opens_the_maker_with_that_topic_chosen(qtbot, window):
+    monitor = window.monitor_dock.widget()
+    qtbot.waitUntil(lambda: monitor.select_topic("/odom"), timeout=10000)
+    menu = monitor.topic_menu("/odom")
+    menu.actions()[0].trigger()
+    maker = the_maker(qtbot, window)
+    assert maker.interface.text() == "/odom" and maker.interface_type.text() == "nav_msgs/Odometry"
+    assert maker.kind.currentData() == "publish"
