@@ -53,6 +53,11 @@ class FieldTable(QTableWidget):
         header = self.horizontalHeader()
         header.setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
         header.setSectionResizeMode(VALUE, QHeaderView.ResizeMode.Stretch)
+        narrow = self.fontMetrics().horizontalAdvance("-0.000") + 24
+        for column in (UNIT, MINIMUM, MAXIMUM):
+            header.setSectionResizeMode(column, QHeaderView.ResizeMode.Interactive)
+            header.resizeSection(column, max(narrow, self.fontMetrics().horizontalAdvance(tr(HEADERS[column], language))
+                                             + 24))
 
     def set_fields(self, fields):
         """Show ``fields``, each left at its default."""

@@ -73,7 +73,7 @@ class BlockMakerDialog(QDialog):
         self.offers = QListWidget(self)
         self.offers.setObjectName("maker_offers")
         for offer in offers:
-            item = QListWidgetItem(f"{tr(f'maker_offer_{offer.kind}', language)}: {offer.label()}", self.offers)
+            item = QListWidgetItem(f"{tr(offer.text_key, language)}: {offer.label()}", self.offers)
             item.setData(Qt.ItemDataRole.UserRole, offer)
         self.offers.currentItemChanged.connect(lambda item, _old: item is not None and self.choose(
             item.data(Qt.ItemDataRole.UserRole)))
@@ -157,10 +157,11 @@ class BlockMakerDialog(QDialog):
         splitter.addWidget(self.offers)
         splitter.addWidget(right)
         splitter.setStretchFactor(1, 3)
+        splitter.setSizes([330, 870])
         layout = QVBoxLayout(self)
         layout.addWidget(splitter, 1)
         layout.addWidget(self.buttons)
-        self.resize(1100, 780)
+        self.resize(1200, 800)
 
     # -- choosing
 

@@ -26,9 +26,14 @@ class Offer:
     name: str
     type: str = ""
 
+    @property
+    def text_key(self) -> str:
+        """The catalogue key of its kind in the list: a topic, or a topic's type without a robot."""
+        return f"maker_offer_{self.kind}" if self.name or not self.type else f"maker_offer_{self.kind}_type"
+
     def label(self) -> str:
-        """How the list shows it: ``/MMUI  (hobbit_msgs/Request)``."""
-        return f"{self.name}  ({self.type})" if self.type else self.name
+        """How the list shows it: ``/MMUI  (hobbit_msgs/Request)``; a type alone without a robot."""
+        return f"{self.name}  ({self.type})" if self.name and self.type else self.name or self.type
 
 
 def robot_offers(profile, graph_topics=()) -> list:

@@ -9,6 +9,7 @@ from PySide6.QtCore import Signal
 from rockly_desktop.bridge.editor_view import EditorView
 from rockly_desktop.core.errors import ManifestError
 from rockly_desktop.profiles.packs.choices import preview_block
+from rockly_desktop.profiles.packs.generate import toolbox_entry
 
 
 class BlockPreview(EditorView):
@@ -23,15 +24,15 @@ class BlockPreview(EditorView):
         self._language = language
         self._waiting = False   # a drawing was sent and not answered yet
         self._next = None       # the newest block entry not sent yet
-        self.drawn = None       # the block entry the page shows
+        self.drawn = None       # what the page shows: {"block": editor_config entry, "state": its toolbox entry}
         self.start({"profile": profile.id, "blocks": [], "toolbox": None, "types": profile.ros_types.editor_catalog},
                    language)
 
     def show_block(self, block):
-        """Draw ``block`` (its id replaced: a preview never clashes with a real block); a block whose
+        """Draw ``block`` with its inputs' defaults; a block whose
         definition does not read back leaves the last drawing (the maker lists its problems)."""
         try:
-            entry = preview_block(block, self._profile, self._language)
+            entry = {"block": preview_block(block, self._profile, self._language), "state": toolbox_entry(block)}
         except ManifestError:
             return
         self._next = entry
@@ -41,7 +42,7 @@ class BlockPreview(EditorView):
     def _send(self):
         entry, self._next = self._next, None
         self._waiting = True
-        self.call("preview", {"block": entry}, lambda _result, _error: self._answered(entry))
+        self.call("preview", entry, lambda _result, _error: self._answered(entry))
 
     def _answered(self, entry):
         self._waiting = False
