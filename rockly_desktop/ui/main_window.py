@@ -449,6 +449,7 @@ class MainWindow(QMainWindow):
             graph = []
         self.block_maker = open_block_maker(self.profile, self.language, graph, self, chosen)
         self.block_maker.sig_saved.connect(lambda _block_id: self.reload_packs())
+        self.block_maker.sig_try_requested.connect(lambda page: self.runs.run(page=page))
 
     def reload_packs(self):
         """Read the block packs again and show the toolbox with them, keeping the program on screen."""

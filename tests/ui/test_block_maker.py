@@ -103,3 +103,14 @@ def test_the_topic_monitors_menu_opens_the_maker_with_that_topic_chosen(qtbot, w
     maker = the_maker(qtbot, window)
     assert maker.interface.text() == "/odom" and maker.interface_type.text() == "nav_msgs/Odometry"
     assert maker.kind.currentData() == "publish"
+
+
+def test_try_it_runs_the_previewed_block_once_on_the_simulator_before_it_is_saved(qtbot, window):
+    maker = open_maker(qtbot, window)
+    make_mmui_block(qtbot, maker, block_id="made_try")
+    qtbot.waitUntil(lambda: (drawn_preview(qtbot, maker) or {}).get("text", "").startswith("ask"), timeout=10000)
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=30000) as finished:
+        maker.try_button.click()
+    assert finished.args[0].outcome == "finished", finished.args[0].message
+    assert window.robot().snapshot()["tablet"] == {"kind": "D_PLAIN", "text": "made by hand"}
+    assert not (user_packs_dir() / pack_id_for(window.profile)).exists()  # tried, not saved

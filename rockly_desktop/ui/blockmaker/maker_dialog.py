@@ -59,6 +59,7 @@ class BlockMakerDialog(QDialog):
     is where packs are saved (None: the user's). ``sig_saved(block id)`` once a block was written."""
 
     sig_saved = Signal(str)
+    sig_try_requested = Signal(object)  # the preview page, whose one block the window runs once ("Try it")
     sig_changed = Signal()  # the block, its problems and its Python were updated (the drawing follows)
 
     def __init__(self, profile, language: str, offers, parent=None, packs_folder=None):
@@ -93,6 +94,11 @@ class BlockMakerDialog(QDialog):
         self.buttons.addButton(QDialogButtonBox.StandardButton.Close)
         self.buttons.button(QDialogButtonBox.StandardButton.Close).setText(tr("maker_close", language))
         self.save_button.clicked.connect(self.save)
+        self.try_button = QPushButton(tr("maker_try", language), self)
+        self.try_button.setObjectName("maker_try")
+        self.try_button.setToolTip(tr("maker_try_tip", language))
+        self.buttons.addButton(self.try_button, QDialogButtonBox.ButtonRole.ActionRole)
+        self.try_button.clicked.connect(lambda: self.sig_try_requested.emit(self.preview))
         self.buttons.rejected.connect(self.reject)
         self._lay_out()
         self.update_block()
@@ -241,6 +247,7 @@ class BlockMakerDialog(QDialog):
         self.problem_label.setText("\n".join(self.problems))
         self.problem_label.setVisible(bool(self.problems))
         self.save_button.setEnabled(not self.problems)
+        self.try_button.setEnabled(not self.problems)
         self.python.setPlainText(python_preview(block) if block.kind else "")
         if block.kind:
             self.preview.show_block(replace(block, id=PREVIEW_TYPE))
