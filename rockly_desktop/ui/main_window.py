@@ -227,7 +227,7 @@ class MainWindow(QMainWindow):
         self._replace_dock_widget(self.state_dock, panels)
         monitor = TopicMonitor(robot.state, robot.graph_topics, self.language, own=robot.own_publishers)
         monitor.sig_plot_requested.connect(self._plot)
-        monitor.sig_make_block_requested.connect(self.make_block)
+        monitor.sig_make_block_requested.connect(lambda topic: self.teacher_gate(lambda: self.make_block(topic)))
         self._replace_dock_widget(self.monitor_dock, monitor)
         had_plot = self._made_plot() is not None
         self._plot_store = robot.state
@@ -452,7 +452,11 @@ class MainWindow(QMainWindow):
         self.block_maker.sig_try_requested.connect(lambda page: self.runs.run(page=page))
 
     def reload_packs(self):
-        """Read the block packs again and show the toolbox with them, keeping the program on screen."""
+        """Read the block packs again and show the toolbox with them, keeping the program on screen
+        (once a run, such as the maker's "Try it", has ended: the page is not replaced under it)."""
+        if self.runs.state != "idle":
+            self.runs.sig_finished.connect(lambda _result: self.reload_packs(), Qt.ConnectionType.SingleShotConnection)
+            return
         self.registry.reload_packs()
 
         def answered(state, error):
@@ -536,7 +540,7 @@ class MainWindow(QMainWindow):
         view_menu.addAction(self.stage.action_for(language))
 
         tools_menu = bar.addMenu(tr("menu_tools", language))
-        self._action(tools_menu, "make_block", lambda: self.make_block())
+        self._action(tools_menu, "make_block", lambda: self.teacher_gate(self.make_block))
 
         settings_menu = bar.addMenu(tr("menu_settings", language))
         self._action(settings_menu, "preferences", self.show_preferences, QKeySequence.StandardKey.Preferences)

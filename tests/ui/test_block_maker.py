@@ -2,8 +2,9 @@
 service with two fields made into a block whose preview and Python follow each edit, saved into a
 block pack, in the toolbox at once, and run; the German window; bad input; the Topic monitor's menu."""
 from page_tools import call_page, run_js
-from program_builder import block, stack, text, workspace
+from program_builder import block, number, stack, text, workspace
 from PySide6.QtGui import QAction
+from window_tools import state
 
 from rockly_desktop.profiles.packs.pack import user_packs_dir
 from rockly_desktop.ui.blockmaker.maker_dialog import BlockMakerDialog, pack_id_for
@@ -114,3 +115,22 @@ def test_try_it_runs_the_previewed_block_once_on_the_simulator_before_it_is_save
     assert finished.args[0].outcome == "finished", finished.args[0].message
     assert window.robot().snapshot()["tablet"] == {"kind": "D_PLAIN", "text": "made by hand"}
     assert not (user_packs_dir() / pack_id_for(window.profile)).exists()  # tried, not saved
+
+
+def test_a_block_saved_while_a_program_runs_reaches_the_toolbox_once_the_run_ends(qtbot, window):
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(block(
+        "controls_whileUntil", {"MODE": "WHILE"}, {"BOOL": block("logic_boolean", {"BOOL": "TRUE"}),
+                                                   "DO": block("hobbit_wait", inputs={"seconds": number(0.05)})},
+        id="loop"))})
+    assert window.runs.run()
+    qtbot.waitUntil(lambda: window.runs.state == "running", timeout=15000)
+    maker = open_maker(qtbot, window)
+    make_mmui_block(qtbot, maker, block_id="made_later")
+    maker.save_button.click()
+    assert (user_packs_dir() / pack_id_for(window.profile) / "blocks.yaml").is_file()
+    assert window.runs.state == "running" and "made_later" not in window.editor.known_block_types
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=15000) as finished:
+        window.runs.stop()
+    assert finished.args[0].outcome == "stopped"
+    qtbot.waitUntil(lambda: "made_later" in window.editor.known_block_types, timeout=30000)
+    assert state(qtbot, window)["workspace"]["blocks"]["blocks"][0]["id"] == "loop"  # the program stayed
