@@ -128,6 +128,7 @@ def test_a_block_saved_while_a_program_runs_reaches_the_toolbox_once_the_run_end
     make_mmui_block(qtbot, maker, block_id="made_later")
     maker.save_button.click()
     assert (user_packs_dir() / pack_id_for(window.profile) / "blocks.yaml").is_file()
+    state(qtbot, window)  # a round trip to the page: it was not replaced meanwhile
     assert window.runs.state == "running" and "made_later" not in window.editor.known_block_types
     with qtbot.waitSignal(window.runs.sig_finished, timeout=15000) as finished:
         window.runs.stop()
