@@ -1,13 +1,16 @@
 """The block maker in the real window (issue 22): Tools → Make a block… on the simulated HOBBIT, a
 service with two fields made into a block whose preview and Python follow each edit, saved into a
 block pack, in the toolbox at once, and run; the German window; bad input; the Topic monitor's menu."""
+import pytest
 from page_tools import call_page, run_js
 from program_builder import block, number, stack, text, workspace
 from PySide6.QtGui import QAction
 from window_tools import state
 
 from rockly_desktop.profiles.packs.pack import user_packs_dir
+from rockly_desktop.robot.links import link_kind
 from rockly_desktop.ui.blockmaker.maker_dialog import BlockMakerDialog, pack_id_for
+from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
 
 PARAMS = '[{name: type, value: D_PLAIN}, {name: text, value: "made by hand"}]'
 
@@ -135,3 +138,38 @@ def test_a_block_saved_while_a_program_runs_reaches_the_toolbox_once_the_run_end
     assert finished.args[0].outcome == "stopped"
     qtbot.waitUntil(lambda: "made_later" in window.editor.known_block_types, timeout=30000)
     assert state(qtbot, window)["workspace"]["blocks"]["blocks"][0]["id"] == "loop"  # the program stayed
+
+
+@pytest.fixture
+def ros_window(window, ros_master, hobbit_on_ros, monkeypatch):
+    """The window on HOBBIT over ROS 1 (the ROS-level simulator in its own process, a real master)."""
+    window.settings.remember_link_connection(link_kind("ros1"), "hobbit",
+                                             {"master": ros_master.uri, "host": "127.0.0.1"})
+    monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
+    backend = window.run_toolbar.backend
+    backend.setCurrentIndex(backend.findData("ros1"))
+    assert window.robots.kind == "ros1"
+    return window
+
+
+def test_on_ros_1_the_maker_offers_the_live_graph_and_a_made_sensor_block_reads_the_robot(qtbot, ros_window):
+    qtbot.waitUntil(lambda: "/rosout" in [topic for topic, *_ in ros_window.robot().graph_topics()], timeout=15000)
+    maker = open_maker(qtbot, ros_window)
+    assert maker.choose_named("/rosout")  # in the live graph only: no profile declares it
+    assert maker.interface_type.text() == "rosgraph_msgs/Log"
+    assert maker.choose_named("/odom")
+    maker.kind.setCurrentIndex(maker.kind.findData("sensor_value"))
+    maker.read_field.setCurrentIndex(maker.read_field.findText("pose.pose.position.x"))
+    maker.sentence["en"].setText("how far forward")
+    maker.block_id.setText("made_forward")
+    assert maker.problems == []
+    assert "pose.pose.position.x" in maker.python.toPlainText()
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_forward" in ros_window.editor.known_block_types, timeout=30000)
+    call_page(qtbot, ros_window.editor, "load", {"workspace": workspace(stack(
+        block("text_print", inputs={"TEXT": block("made_forward")}, id="say")))})
+    with qtbot.waitSignal(ros_window.runs.sig_finished, timeout=30000) as finished:
+        assert ros_window.runs.run()
+    assert finished.args[0].outcome == "finished", finished.args[0].message
+    printed = ros_window.console.lines()[-2]
+    assert float(printed) == pytest.approx(0.0, abs=0.05)  # HOBBIT stands where it started
