@@ -4,12 +4,16 @@ block pack, in the toolbox at once, and run; the German window; bad input; the T
 import pytest
 from page_tools import call_page, run_js
 from program_builder import block, number, stack, text, workspace
+from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction
+from test_ros2_window import connected
+from waiting import eventually
 from window_tools import state
 
 from rockly_desktop.profiles.packs.pack import user_packs_dir
 from rockly_desktop.robot.links import link_kind
 from rockly_desktop.ui.blockmaker.maker_dialog import BlockMakerDialog, pack_id_for
+from rockly_desktop.ui.blockmaker.offers import Offer
 from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
 
 PARAMS = '[{name: type, value: D_PLAIN}, {name: text, value: "made by hand"}]'
@@ -173,3 +177,30 @@ def test_on_ros_1_the_maker_offers_the_live_graph_and_a_made_sensor_block_reads_
     assert finished.args[0].outcome == "finished", finished.args[0].message
     printed = ros_window.console.lines()[-2]
     assert float(printed) == pytest.approx(0.0, abs=0.05)  # HOBBIT stands where it started
+
+
+def test_on_ros_2_the_maker_offers_the_live_graph_and_a_block_made_from_a_known_type_publishes(
+        qtbot, window, test_robot, ros2_settings, monkeypatch):
+    ros2_window = connected(window, ros2_settings, monkeypatch)
+    qtbot.waitUntil(lambda: "/map_name" in [topic for topic, *_ in ros2_window.robot().graph_topics()], timeout=20000)
+    maker = open_maker(qtbot, ros2_window)
+    assert maker.choose_named("/map_name")  # the test node's: in the live graph only
+    assert maker.interface_type.text() == "std_msgs/String"
+    known_string = Offer("topic", "", "std_msgs/String")
+    string_type = next(row for row in range(maker.offers.count())
+                       if maker.offers.item(row).data(Qt.ItemDataRole.UserRole) == known_string)
+    maker.offers.setCurrentRow(string_type)  # a type Rockly knows without a robot; the topic is typed in
+    maker.interface.setText("/chatter")
+    maker.fields.set_use("data", "input", "hello")
+    maker.sentence["en"].setText("chat %1")
+    maker.block_id.setText("made_chat")
+    assert maker.problems == []
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_chat" in ros2_window.editor.known_block_types, timeout=30000)
+    call_page(qtbot, ros2_window.editor, "load", {"workspace": workspace(stack(
+        block("made_chat", inputs={"data": text("made without code")}, id="chat")))})
+    with qtbot.waitSignal(ros2_window.runs.sig_finished, timeout=30000) as finished:
+        assert ros2_window.runs.run()
+    assert finished.args[0].outcome == "finished", finished.args[0].message
+    eventually(lambda: {"data": "made without code"} in [line["message"] for line in test_robot.received("/chatter")],
+               timeout=10)
