@@ -6,6 +6,7 @@ from page_tools import call_page, run_js
 from program_builder import block, number, stack, text, workspace
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction
+from PySide6.QtWidgets import QComboBox, QLineEdit, QListWidget, QPlainTextEdit, QWidget
 from test_ros2_window import connected
 from waiting import eventually
 from window_tools import state
@@ -204,3 +205,16 @@ def test_on_ros_2_the_maker_offers_the_live_graph_and_a_block_made_from_a_known_
     assert finished.args[0].outcome == "finished", finished.args[0].message
     eventually(lambda: {"data": "made without code"} in [line["message"] for line in test_robot.received("/chatter")],
                timeout=10)
+
+
+def test_every_control_of_the_maker_has_a_name_a_screen_reader_reads_in_the_windows_language(qtbot, german_window):
+    maker = open_maker(qtbot, german_window)
+    assert maker.choose_named("/MMUI")
+    controls = [widget for widget in maker.findChildren(QWidget)
+                if widget.focusPolicy() != Qt.FocusPolicy.NoFocus and widget.isVisibleTo(maker)
+                and isinstance(widget, (QLineEdit, QComboBox, QListWidget, QPlainTextEdit))
+                and not isinstance(widget.parentWidget(), QComboBox)]  # an editable box's own line is the box's
+    assert len(controls) > 15
+    assert [widget.objectName() for widget in controls if not widget.accessibleName()] == []
+    assert maker.sentence["de"].accessibleName() == "Satz (Deutsch)"
+    assert maker.fields.cellWidget(2, 2).accessibleName() == "sessionID: Verwendung"

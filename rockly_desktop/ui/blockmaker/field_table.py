@@ -72,11 +72,13 @@ class FieldTable(QTableWidget):
             for key in USES:
                 if key != "input" or entry.kind in VALUE_KINDS:  # a list is only ever fixed
                     use.addItem(tr(f"maker_use_{key}", self._language), key)
+            use.setAccessibleName(f"{entry.path}: {tr(HEADERS[USE], self._language)}")
             use.currentIndexChanged.connect(lambda _index, row=row: self._use_changed(row))
             self.setCellWidget(row, USE, use)
             for column in (VALUE, UNIT, MINIMUM, MAXIMUM):
                 edit = QLineEdit(self)
                 edit.setObjectName(f"{HEADERS[column]}_{entry.path}")
+                edit.setAccessibleName(f"{entry.path}: {tr(HEADERS[column], self._language)}")
                 edit.textChanged.connect(self.sig_changed)
                 self.setCellWidget(row, column, edit)
             self._enable(row)

@@ -73,6 +73,7 @@ class BlockMakerDialog(QDialog):
         self._updating = False
         self.offers = QListWidget(self)
         self.offers.setObjectName("maker_offers")
+        self.offers.setAccessibleName(tr("maker_offers", language))
         for offer in offers:
             item = QListWidgetItem(f"{tr(offer.text_key, language)}: {offer.label()}", self.offers)
             item.setData(Qt.ItemDataRole.UserRole, offer)
@@ -83,6 +84,7 @@ class BlockMakerDialog(QDialog):
         self.python = QPlainTextEdit(self)
         self.python.setObjectName("maker_python")
         self.python.setReadOnly(True)
+        self.python.setAccessibleName(tr("maker_python", language))
         self.python.setFont(QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont))
         self.problem_label = plain_label(parent=self, objectName="maker_problems")
         self.problem_label.setWordWrap(True)
@@ -139,6 +141,7 @@ class BlockMakerDialog(QDialog):
                             ("maker_tooltip_de", self.tooltip["de"]), ("maker_category", self.category),
                             ("maker_block_id", self.block_id)):
             form.addRow(tr(key, language), widget)
+            widget.setAccessibleName(tr(key, language).rstrip(": "))  # a screen reader names it as the form does
         self.sentence["en"].setPlaceholderText(tr("maker_sentence_hint", language))
         self.form = form
 
