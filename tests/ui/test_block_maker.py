@@ -218,3 +218,22 @@ def test_every_control_of_the_maker_has_a_name_a_screen_reader_reads_in_the_wind
     assert [widget.objectName() for widget in controls if not widget.accessibleName()] == []
     assert maker.sentence["de"].accessibleName() == "Satz (Deutsch)"
     assert maker.fields.cellWidget(2, 2).accessibleName() == "sessionID: Verwendung"
+
+
+def test_the_filter_narrows_the_offers_and_a_parameter_is_named_and_set(qtbot, window):
+    maker = open_maker(qtbot, window)
+    maker.offer_filter.setText("twist geometry")
+    shown = [maker.offers.item(row).text() for row in range(maker.offers.count())
+             if not maker.offers.item(row).isHidden()]
+    assert "Topic: /cmd_vel  (geometry_msgs/Twist)" in shown and all("Twist" in text for text in shown)
+    maker.offer_filter.clear()
+    parameter = next(row for row in range(maker.offers.count())
+                     if maker.offers.item(row).text() == "Parameter (name it above)")
+    maker.offers.setCurrentRow(parameter)
+    maker.interface.setText("/max_speed")
+    maker.kind.setCurrentIndex(maker.kind.findData("set_param"))
+    maker.sentence["en"].setText("set the top speed to %1")
+    maker.block_id.setText("made_top_speed")
+    assert maker.problems == []
+    assert "ros.set_param('/max_speed'" in maker.python.toPlainText()
+    qtbot.waitUntil(lambda: "top speed" in (drawn_preview(qtbot, maker) or {}).get("text", ""), timeout=10000)

@@ -75,8 +75,14 @@ class BlockMakerDialog(QDialog):
         self.offers.setObjectName("maker_offers")
         self.offers.setAccessibleName(tr("maker_offers", language))
         for offer in offers:
-            item = QListWidgetItem(f"{tr(offer.text_key, language)}: {offer.label()}", self.offers)
+            kind = tr(offer.text_key, language)
+            item = QListWidgetItem(f"{kind}: {offer.label()}" if offer.label() else kind, self.offers)
             item.setData(Qt.ItemDataRole.UserRole, offer)
+        self.offer_filter = QLineEdit(self)
+        self.offer_filter.setObjectName("maker_offer_filter")
+        self.offer_filter.setPlaceholderText(tr("maker_offer_filter", language))
+        self.offer_filter.setClearButtonEnabled(True)
+        self.offer_filter.textChanged.connect(self._filter_offers)
         self.offers.currentItemChanged.connect(lambda item, _old: item is not None and self.choose(
             item.data(Qt.ItemDataRole.UserRole)))
         self._build_form()
@@ -162,8 +168,13 @@ class BlockMakerDialog(QDialog):
         shown.addWidget(self.preview, 1)
         shown.addWidget(self.python, 1)
         column.addLayout(shown, 1)
+        left = QWidget(self)
+        offers = QVBoxLayout(left)
+        offers.setContentsMargins(0, 0, 0, 0)
+        offers.addWidget(self.offer_filter)
+        offers.addWidget(self.offers, 1)
         splitter = QSplitter(Qt.Orientation.Horizontal, self)
-        splitter.addWidget(self.offers)
+        splitter.addWidget(left)
         splitter.addWidget(right)
         splitter.setStretchFactor(1, 3)
         splitter.setSizes([330, 870])
@@ -188,6 +199,12 @@ class BlockMakerDialog(QDialog):
         finally:
             self._updating = False
         self._kind_changed()
+
+    def _filter_offers(self, text: str):
+        words = text.lower().split()
+        for row in range(self.offers.count()):
+            item = self.offers.item(row)
+            item.setHidden(not all(word in item.text().lower() for word in words))
 
     def choose_named(self, name: str) -> bool:
         """Choose the offer called ``name`` in the list (the Topic monitor's "Make a block from this…")."""

@@ -29,10 +29,11 @@ class Offer:
     @property
     def text_key(self) -> str:
         """The catalogue key of its kind in the list: a topic, or a topic's type without a robot."""
-        return f"maker_offer_{self.kind}" if self.name or not self.type else f"maker_offer_{self.kind}_type"
+        return f"maker_offer_{self.kind}" if self.name else f"maker_offer_{self.kind}_type"
 
     def label(self) -> str:
-        """How the list shows it: ``/MMUI  (hobbit_msgs/Request)``; a type alone without a robot."""
+        """How the list shows it after its kind: ``/MMUI  (hobbit_msgs/Request)``; a type alone without a
+        robot; nothing for a parameter still to be named."""
         return f"{self.name}  ({self.type})" if self.name and self.type else self.name or self.type
 
 
@@ -52,9 +53,9 @@ def robot_offers(profile, graph_topics=()) -> list:
 
 def known_offers(profile) -> list:
     """Without a robot: every type ``profile`` knows, offered by its type (the person names the topic,
-    service or action after choosing it)."""
+    service or action after choosing it), and a parameter to name."""
     return _sorted([Offer(kind, "", type_name) for kind, definition in DEFINITION.items()
-                    for type_name in known_types(profile, definition)])
+                    for type_name in known_types(profile, definition)] + [Offer("parameter", "")])
 
 
 def _sorted(offers) -> list:
