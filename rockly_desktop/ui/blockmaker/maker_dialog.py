@@ -81,6 +81,7 @@ class BlockMakerDialog(QDialog):
         self.offer_filter = QLineEdit(self)
         self.offer_filter.setObjectName("maker_offer_filter")
         self.offer_filter.setPlaceholderText(tr("maker_offer_filter", language))
+        self.offer_filter.setAccessibleName(tr("maker_offer_filter", language))
         self.offer_filter.setClearButtonEnabled(True)
         self.offer_filter.textChanged.connect(self._filter_offers)
         self.offers.currentItemChanged.connect(lambda item, _old: item is not None and self.choose(
