@@ -237,3 +237,15 @@ def test_the_filter_narrows_the_offers_and_a_parameter_is_named_and_set(qtbot, w
     assert maker.problems == []
     assert "ros.set_param('/max_speed'" in maker.python.toPlainText()
     qtbot.waitUntil(lambda: "top speed" in (drawn_preview(qtbot, maker) or {}).get("text", ""), timeout=10000)
+
+
+def test_the_maker_opens_only_through_the_teachers_gate(qtbot, window):
+    """In kiosk mode the gate asks for the teacher's PIN (tests/ui/test_kiosk_lock.py): a visitor makes no blocks."""
+    held = []
+    window.teacher_gate = held.append
+    next(action for action in window.findChildren(QAction) if action.objectName() == "action_make_block").trigger()
+    monitor = window.monitor_dock.widget()
+    monitor.topic_menu("/odom").actions()[0].trigger()
+    assert len(held) == 2 and window.findChild(BlockMakerDialog) is None
+    held[1]()  # the teacher gave the PIN
+    assert the_maker(qtbot, window).interface.text() == "/odom"
