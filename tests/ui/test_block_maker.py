@@ -249,3 +249,27 @@ def test_the_maker_opens_only_through_the_teachers_gate(qtbot, window):
     assert len(held) == 2 and window.findChild(BlockMakerDialog) is None
     held[1]()  # the teacher gave the PIN
     assert the_maker(qtbot, window).interface.text() == "/odom"
+
+
+def test_an_action_block_gives_its_outcome_and_has_a_while_waiting_part_and_runs_on_the_simulator(qtbot, window):
+    maker = open_maker(qtbot, window)
+    assert maker.choose_named("hobbit_arm")
+    assert not maker.read_field.isVisibleTo(maker) and maker.while_waiting.isVisibleTo(maker)
+    maker.fields.set_use("command.data", "input", "MoveToTray")
+    maker.result.setCurrentIndex(maker.result.findData("outcome"))
+    maker.while_waiting.setChecked(True)
+    maker.sentence["en"].setText("arm to %1")
+    maker.block_id.setText("made_arm")
+    assert maker.problems == []
+    assert "while_waiting=None" in maker.python.toPlainText()
+    qtbot.waitUntil(lambda: "while_waiting" in (drawn_preview(qtbot, maker) or {}).get("inputs", []), timeout=10000)
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_arm" in window.editor.known_block_types, timeout=30000)
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(stack(
+        block("text_print", inputs={"TEXT": block("made_arm", inputs={"command_data": text("MoveToTray")})},
+              id="say")))})
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=30000) as finished:
+        assert window.runs.run()
+    assert finished.args[0].outcome == "finished", finished.args[0].message
+    assert window.console.lines()[-2] == "succeeded"
+    assert window.robot().snapshot()["arm"] == "tray"

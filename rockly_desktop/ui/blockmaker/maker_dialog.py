@@ -10,6 +10,7 @@ from dataclasses import replace
 from PySide6.QtCore import Qt, Signal
 from PySide6.QtGui import QFontDatabase
 from PySide6.QtWidgets import (
+    QCheckBox,
     QComboBox,
     QDialog,
     QDialogButtonBox,
@@ -27,9 +28,9 @@ from PySide6.QtWidgets import (
 
 from rockly_desktop.profiles.packs.choices import category_choices
 from rockly_desktop.profiles.packs.generate import python_preview
-from rockly_desktop.profiles.packs.interfaces import fields_of_block_kind
+from rockly_desktop.profiles.packs.interfaces import fields_of_block_kind, interface_fields
 from rockly_desktop.profiles.packs.making import save_block
-from rockly_desktop.profiles.packs.spec import COMPARISONS, BlockInput, MadeBlock
+from rockly_desktop.profiles.packs.spec import COMPARISONS, OUTCOME, BlockInput, MadeBlock
 from rockly_desktop.profiles.packs.validation import BlockMakerError, block_problems
 from rockly_desktop.ui.blockmaker.field_table import FieldTable
 from rockly_desktop.ui.blockmaker.offers import KINDS_OF, Offer, known_offers, robot_offers
@@ -131,6 +132,12 @@ class BlockMakerDialog(QDialog):
         for key, sign in COMPARISONS.items():
             self.comparison.addItem(sign, key)
         self.comparison.currentIndexChanged.connect(self.update_block)
+        self.result = QComboBox(self)
+        self.result.setObjectName("maker_result")
+        self.result.currentIndexChanged.connect(self.update_block)
+        self.while_waiting = QCheckBox(tr("maker_while_waiting_on", language), self)
+        self.while_waiting.setObjectName("maker_while_waiting")
+        self.while_waiting.toggled.connect(self.update_block)
         self.sentence = {code: self._edit(f"maker_sentence_{code}") for code in ("en", "de")}
         self.tooltip = {code: self._edit(f"maker_tooltip_{code}") for code in ("en", "de")}
         self.category = QComboBox(self)
@@ -143,7 +150,8 @@ class BlockMakerDialog(QDialog):
         form = QFormLayout()
         for key, widget in (("maker_interface", self.interface), ("maker_interface_type", self.interface_type),
                             ("maker_kind", self.kind), ("maker_read_field", self.read_field),
-                            ("maker_comparison", self.comparison), ("maker_sentence_en", self.sentence["en"]),
+                            ("maker_comparison", self.comparison), ("maker_result", self.result),
+                            ("maker_while_waiting", self.while_waiting), ("maker_sentence_en", self.sentence["en"]),
                             ("maker_sentence_de", self.sentence["de"]), ("maker_tooltip_en", self.tooltip["en"]),
                             ("maker_tooltip_de", self.tooltip["de"]), ("maker_category", self.category),
                             ("maker_block_id", self.block_id)):
@@ -225,13 +233,29 @@ class BlockMakerDialog(QDialog):
             for entry in fields if kind in READS_FIELD else []:
                 if entry.kind in ("number", "text", "yes_no"):
                     self.read_field.addItem(entry.path, entry.kind)
+            self.result.clear()
+            self.result.addItem(tr("maker_result_none", self.language), "")
+            for path in self._results(kind):
+                self.result.addItem(tr("maker_result_outcome", self.language) if path == OUTCOME else path, path)
+            self.while_waiting.setChecked(False)
         finally:
             self._updating = False
         self.fields.setVisible(kind in FILLS_FIELDS)
-        for widget, shown in ((self.read_field, kind in READS_FIELD), (self.comparison, kind == "wait_until")):
+        for widget, shown in ((self.read_field, kind in READS_FIELD), (self.comparison, kind == "wait_until"),
+                              (self.result, kind in ("call_service", "send_goal")),
+                              (self.while_waiting, kind == "send_goal")):
             widget.setVisible(shown)
             self.form.labelForField(widget).setVisible(shown)
         self.update_block()
+
+    def _results(self, kind: str) -> list:
+        """What a block of ``kind`` can give: a response field of the service, or the goal's outcome."""
+        if kind == "send_goal":
+            return [OUTCOME]
+        if kind != "call_service":
+            return []
+        response = interface_fields(self.profile, self.interface_type.text().strip(), "srv", "out")
+        return [entry.path for entry in response if entry.kind in ("number", "text", "yes_no")]
 
     # -- the block
 
@@ -257,7 +281,9 @@ class BlockMakerDialog(QDialog):
             tooltip={code: edit.text() for code, edit in self.tooltip.items() if edit.text().strip()},
             read_field=self.read_field.currentText() if kind in READS_FIELD else "",
             value_kind=read_kind if kind == "sensor_value" else "number",
-            comparison=self.comparison.currentData() if kind == "wait_until" else "equal")
+            comparison=self.comparison.currentData() if kind == "wait_until" else "equal",
+            result=self.result.currentData() or "" if kind in ("call_service", "send_goal") else "",
+            while_waiting=kind == "send_goal" and self.while_waiting.isChecked())
 
     def update_block(self, *_):
         """Check the block as it is now, show its problems and Python, and draw it."""
