@@ -29,8 +29,8 @@ class BlockPreview(EditorView):
                    language)
 
     def show_block(self, block):
-        """Draw ``block`` with its inputs' defaults; a block whose
-        definition does not read back leaves the last drawing (the maker lists its problems)."""
+        """Draw ``block`` with its inputs' defaults; a block whose definition does not read back leaves
+        the last drawing (the maker lists its problems)."""
         try:
             entry = {"block": preview_block(block, self._profile, self._language), "state": toolbox_entry(block)}
         except ManifestError:
@@ -42,11 +42,12 @@ class BlockPreview(EditorView):
     def _send(self):
         entry, self._next = self._next, None
         self._waiting = True
-        self.call("preview", entry, lambda _result, _error: self._answered(entry))
+        self.call("preview", entry, lambda _result, error: self._answered(entry, error))
 
-    def _answered(self, entry):
+    def _answered(self, entry, error):
         self._waiting = False
-        self.drawn = entry
+        if not error:  # a drawing the page refused leaves the last one (the maker lists the block's problems)
+            self.drawn = entry
         if self._next is not None:
             self._send()
         else:
