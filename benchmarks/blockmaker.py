@@ -92,7 +92,7 @@ def make_block(window, language):
     maker.sentence["de"].setText("frag %1 und sag %2")
     maker.category.setEditText("My blocks" if language == "en" else "Meine Blöcke")
     maker.block_id.setText("made_say")
-    wait_until(lambda: maker.preview.drawn is not None and maker.preview._next is None)
+    wait_until(lambda: maker.preview.drawn is not None and not maker.preview.is_drawing)
     return maker, start
 
 
@@ -173,7 +173,8 @@ def main():
     again.choose_named("/MMUI")
     again.fields.set_use("sessionID", "input", "7")
     again.fields.set_use("requestText", "input", "hello")
-    wait_until(lambda: again.preview.drawn is not None and again.preview._next is None)
+    again.sentence["en"].setText("ask %1 to say %2")
+    wait_until(lambda: again.preview.drawn is not None and not again.preview.is_drawing)
     edits, own = response_times(again, options.edits)
     baseline = round_trips(again.preview, options.edits)
     restart = editor_restart(window)

@@ -273,3 +273,18 @@ def test_an_action_block_gives_its_outcome_and_has_a_while_waiting_part_and_runs
     assert finished.args[0].outcome == "finished", finished.args[0].message
     assert window.console.lines()[-2] == "succeeded"
     assert window.robot().snapshot()["arm"] == "tray"
+
+
+def test_the_preview_shows_the_inputs_before_the_sentence_is_written_and_keeps_a_drawing_while_it_is_wrong(
+        qtbot, window):
+    maker = open_maker(qtbot, window)
+    assert maker.choose_named("/MMUI")
+    maker.fields.set_use("sessionID", "input", "7")
+    maker.fields.set_use("requestText", "input", "hello")
+    qtbot.waitUntil(lambda: (drawn_preview(qtbot, maker) or {}).get("inputs") == ["sessionid", "requesttext"],
+                    timeout=10000)
+    assert drawn_preview(qtbot, maker)["text"].startswith("/MMUI")
+    maker.sentence["en"].setText("ask %1")  # half written: the places do not match yet
+    assert any("must have each of %1 to %2" in problem for problem in maker.problems)
+    qtbot.waitUntil(lambda: maker.preview.drawn is not None and not maker.preview.is_drawing, timeout=10000)
+    assert drawn_preview(qtbot, maker)["inputs"] == ["sessionid", "requesttext"]

@@ -31,7 +31,7 @@ from rockly_desktop.profiles.packs.generate import python_preview
 from rockly_desktop.profiles.packs.interfaces import fields_of_block_kind, interface_fields
 from rockly_desktop.profiles.packs.making import save_block
 from rockly_desktop.profiles.packs.spec import COMPARISONS, OUTCOME, BlockInput, MadeBlock
-from rockly_desktop.profiles.packs.validation import BlockMakerError, block_problems
+from rockly_desktop.profiles.packs.validation import BlockMakerError, block_problems, sentence_places
 from rockly_desktop.ui.blockmaker.field_table import FieldTable
 from rockly_desktop.ui.blockmaker.offers import KINDS_OF, Offer, known_offers, robot_offers
 from rockly_desktop.ui.blockmaker.preview import BlockPreview
@@ -53,6 +53,14 @@ def suggested_id(name: str) -> str:
     """A block id from a ROS name: ``/head/emo`` → ``made_head_emo``."""
     words = re.sub(r"[^a-z0-9]+", "_", name.lower()).strip("_")
     return f"made_{words}"[:40].rstrip("_")
+
+
+def drawable_sentence(block) -> dict:
+    """The sentences of ``block`` Blockly can draw (each input's place once); until there is one, the
+    interface's name followed by the places, so the inputs show while the sentence is written."""
+    wanted = list(range(1, len(block.inputs) + 1))
+    sentences = {language: text for language, text in block.sentence.items() if sorted(sentence_places(text)) == wanted}
+    return sentences or {"en": " ".join([block.interface or "?"] + [f"%{number}" for number in wanted])}
 
 
 class BlockMakerDialog(QDialog):
@@ -297,7 +305,7 @@ class BlockMakerDialog(QDialog):
         self.try_button.setEnabled(not self.problems)
         self.python.setPlainText(python_preview(block) if block.kind else "")
         if block.kind:
-            self.preview.show_block(replace(block, id=PREVIEW_TYPE))
+            self.preview.show_block(replace(block, id=PREVIEW_TYPE, sentence=drawable_sentence(block)))
         self.sig_changed.emit()
 
     def save(self):

@@ -28,6 +28,11 @@ class BlockPreview(EditorView):
         self.start({"profile": profile.id, "blocks": [], "toolbox": None, "types": profile.ros_types.editor_catalog},
                    language)
 
+    @property
+    def is_drawing(self) -> bool:
+        """True while a drawing is on its way to the page or waiting to be sent."""
+        return self._waiting or self._next is not None
+
     def show_block(self, block):
         """Draw ``block`` with its inputs' defaults; a block whose definition does not read back leaves
         the last drawing (the maker lists its problems)."""
