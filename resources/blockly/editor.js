@@ -557,6 +557,16 @@
       const numbers = new Map(elements.map((element, index) => [element, index + 1]));
       return {loaded: true, ...replacedFields(fieldsNotKept(XML_PROGRAM, pairs, numbers))};
     },
+    /**
+     * The block maker's preview: define ``block`` (an editor_config entry) anew and show it alone, as
+     * ``state`` (its toolbox entry, with its inputs' defaults) says; no zoom buttons, no trash can.
+     */
+    preview({block, state}) {
+      RocklyTemplates.install([block]);
+      document.body.classList.add('rocklyPreview');
+      replaceWorkspace(() => Blockly.serialization.blocks.append({...state, x: 16, y: 16}, workspace));
+      return true;
+    },
     setToolbox({toolbox}) {
       workspace.updateToolbox(toolbox);
       return true;

@@ -223,6 +223,7 @@ class MainWindow(QMainWindow):
         self._replace_dock_widget(self.state_dock, panels)
         monitor = TopicMonitor(robot.state, robot.graph_topics, self.language, own=robot.own_publishers)
         monitor.sig_plot_requested.connect(self._plot)
+        monitor.sig_make_block_requested.connect(lambda topic: self.teacher_gate(lambda: self.make_block(topic)))
         self._replace_dock_widget(self.monitor_dock, monitor)
         had_plot = self._made_plot() is not None
         self._plot_store = robot.state
@@ -430,6 +431,34 @@ class MainWindow(QMainWindow):
             self._follow_robot_lock()
             self.set_language(dialog.language)
 
+    def make_block(self, chosen: str = ""):
+        """Open the block maker (Tools → Make a block…), with the topic, service or action ``chosen`` chosen."""
+        from rockly_desktop.ui.blockmaker.maker_dialog import open_block_maker  # not needed before it is opened
+
+        try:
+            graph = self.robot().graph_topics() if self._robot_shown else []
+        except RocklyError:  # no robot to ask: the maker offers what the profile declares and knows
+            graph = []
+        self.block_maker = open_block_maker(self.profile, self.language, graph, self, chosen)
+        self.block_maker.sig_saved.connect(lambda _block_id: self.reload_packs())
+        self.block_maker.sig_try_requested.connect(lambda page: self.runs.run(page=page))
+
+    def reload_packs(self):
+        """Read the block packs again and show the toolbox with them, keeping the program on screen
+        (once a run, such as the maker's "Try it", has ended: the page is not replaced under it)."""
+        if self.runs.state != "idle":
+            self.runs.sig_finished.connect(lambda _result: self.reload_packs(), Qt.ConnectionType.SingleShotConnection)
+            return
+        self.registry.reload_packs()
+
+        def answered(state, error):
+            self.document.profile = self.registry.get(self.profile.id)
+            self._restart_editor()
+            if not error:
+                self.editor.load_workspace(state["workspace"], breakpoints=self.document.breakpoints)
+
+        self.editor.call("getState", None, answered, timeout_ms=ANSWER_TIMEOUT_MS)
+
     def _toolbox_choice(self):
         """(level id, capability ids switched off) the teacher chose for the profile's toolbox."""
         teacher = self.settings.teacher
@@ -500,6 +529,9 @@ class MainWindow(QMainWindow):
             view_menu.addAction(dock.toggleViewAction())
         view_menu.addSeparator()
         view_menu.addAction(self.stage.action_for(language))
+
+        tools_menu = bar.addMenu(tr("menu_tools", language))
+        self._action(tools_menu, "make_block", lambda: self.teacher_gate(self.make_block))
 
         settings_menu = bar.addMenu(tr("menu_settings", language))
         self._action(settings_menu, "preferences", self.show_preferences, QKeySequence.StandardKey.Preferences)

@@ -20,7 +20,7 @@ def test_window_shows_hobbit_toolbox_code_dock_and_robot(qtbot, window):
     assert toolbox_names(qtbot, window.editor)[:4] == ["Drive", "Head", "Arm", "Tablet"]
     assert window.code_dock.isVisible() and window.code_dock.windowTitle() == "Python code"
     assert window.profile_label.text() == "Robot: HOBBIT"
-    assert menu_titles(window) == ["&File", "&Edit", "&Robot", "&View", "&Settings", "&Help"]
+    assert menu_titles(window) == ["&File", "&Edit", "&Robot", "&View", "&Tools", "&Settings", "&Help"]
 
 
 def toolbar_labels(window) -> list:
@@ -49,7 +49,8 @@ def test_switching_to_german_translates_window_and_blocks_and_keeps_the_program(
         window.set_language("de")
     qtbot.waitUntil(lambda: state(qtbot, window)["workspace"] == before, timeout=10000)
     assert toolbox_names(qtbot, window.editor)[:4] == ["Fahren", "Kopf", "Arm", "Tablet"]
-    assert menu_titles(window) == ["&Datei", "&Bearbeiten", "&Roboter", "&Ansicht", "&Einstellungen", "&Hilfe"]
+    assert menu_titles(window) == ["&Datei", "&Bearbeiten", "&Roboter", "&Ansicht", "&Werkzeuge", "&Einstellungen",
+                                   "&Hilfe"]
     assert window.code_dock.windowTitle() == "Python-Code"
     assert window.profile_label.text() == "Roboter: HOBBIT"
     assert not window.isWindowModified()

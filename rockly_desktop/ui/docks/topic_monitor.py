@@ -20,6 +20,7 @@ from PySide6.QtWidgets import (
     QHeaderView,
     QLabel,
     QLineEdit,
+    QMenu,
     QSplitter,
     QStackedWidget,
     QStyle,
@@ -55,6 +56,7 @@ class TopicMonitor(QWidget):
     ``own()`` -> {topic: Rockly's own publishers} counts those in."""
 
     sig_plot_requested = Signal(str, str)  # topic, field path of a numeric field
+    sig_make_block_requested = Signal(str)  # topic: its context menu's "Make a block from this…"
 
     def __init__(self, store, graph=None, language: str = "en", parent=None, own=None):
         super().__init__(parent)
@@ -144,6 +146,8 @@ class TopicMonitor(QWidget):
         for column in (PUBLISHERS, RATE, AGE):
             header.resizeSection(column, max(width(tr(HEADERS[column], self._language)), width("1000.0")) + 22)
         self.table.selectionModel().selectionChanged.connect(self._selection_changed)
+        self.table.setContextMenuPolicy(Qt.ContextMenuPolicy.CustomContextMenu)
+        self.table.customContextMenuRequested.connect(self._topic_menu)
 
     def _build_message_pane(self) -> QWidget:
         """The selected topic's name and type over its message tree (or a placeholder)."""
@@ -373,6 +377,19 @@ class TopicMonitor(QWidget):
         self._show_count()
         if self._topic is not None and not self.table.selectionModel().hasSelection():
             self._select_row(self._topic)
+
+    def topic_menu(self, topic: str) -> QMenu:
+        """The context menu of ``topic``'s row: make a block from it."""
+        menu = QMenu(self)
+        menu.setObjectName("topic_menu")
+        menu.addAction(tr("make_block_from_this", self._language), lambda: self.sig_make_block_requested.emit(topic))
+        return menu
+
+    def _topic_menu(self, position):
+        index = self.table.indexAt(position)
+        if index.isValid():
+            topic = self.table_model.topic_at(self.proxy.mapToSource(index).row())
+            self.topic_menu(topic).popup(self.table.viewport().mapToGlobal(position))
 
     def _double_clicked(self, index):
         path = self.message_model.plot_path(index)

@@ -63,8 +63,9 @@ class RunSession(QObject):
 
     # --- commands -----------------------------------------------------------------------
 
-    def run(self, step_first: bool = False) -> bool:
-        """Start the program in the editor (pausing at its first block if ``step_first``).
+    def run(self, step_first: bool = False, page=None) -> bool:
+        """Start the program in the editor (pausing at its first block if ``step_first``), or on ``page``,
+        another editor page (the block maker's preview: its one block tried once, under the same limits).
 
         The page is asked for the code; the run starts when it answers ('starting' until
         then). False when a run is already under way.
@@ -76,7 +77,7 @@ class RunSession(QObject):
         self._set_state("starting")
         self._values_on = badges_shown(self.settings, self.document.profile.id)
         self._values_shown = None
-        self.editor.call("getRunCode", {"values": self._values_on},
+        (page or self.editor).call("getRunCode", {"values": self._values_on},
                          lambda run_code, error: self._start(request, run_code, error, step_first),
                          timeout_ms=ANSWER_TIMEOUT_MS)
         return True

@@ -1,0 +1,333 @@
+"""The block maker's dialog: pick what the robot offers, say what the block does and how it reads,
+see it drawn and its Python, and save it into a block pack (``profiles.packs.making.save_block``).
+
+Every change rebuilds the MadeBlock, lists its problems (``validation.block_problems``, in the
+window's language) and redraws the preview; saving writes nothing while there is a problem.
+"""
+import re
+from dataclasses import replace
+
+from PySide6.QtCore import Qt, Signal
+from PySide6.QtGui import QFontDatabase
+from PySide6.QtWidgets import (
+    QCheckBox,
+    QComboBox,
+    QDialog,
+    QDialogButtonBox,
+    QFormLayout,
+    QHBoxLayout,
+    QLineEdit,
+    QListWidget,
+    QListWidgetItem,
+    QPlainTextEdit,
+    QPushButton,
+    QSplitter,
+    QVBoxLayout,
+    QWidget,
+)
+
+from rockly_desktop.profiles.packs.choices import category_choices
+from rockly_desktop.profiles.packs.generate import python_preview
+from rockly_desktop.profiles.packs.interfaces import fields_of_block_kind, interface_fields
+from rockly_desktop.profiles.packs.making import save_block
+from rockly_desktop.profiles.packs.spec import COMPARISONS, OUTCOME, BlockInput, MadeBlock
+from rockly_desktop.profiles.packs.validation import BlockMakerError, block_problems, sentence_places
+from rockly_desktop.ui.blockmaker.field_table import FieldTable
+from rockly_desktop.ui.blockmaker.offers import KINDS_OF, Offer, known_offers, robot_offers
+from rockly_desktop.ui.blockmaker.preview import BlockPreview
+from rockly_desktop.ui.plain_text import plain_label
+from rockly_desktop.ui.texts import said_in, tr
+
+PREVIEW_TYPE = "rockly_maker_preview"  # the preview's block type: never one of the toolbox's
+FILLS_FIELDS = ("publish", "call_service", "send_goal")
+READS_FIELD = ("sensor_value", "wait_until")
+FALLBACK_COLOUR = "#4c97ff"
+
+
+def pack_id_for(profile) -> str:
+    """The block pack the maker saves into for ``profile``: one per robot profile."""
+    return f"made_for_{profile.id}"
+
+
+def suggested_id(name: str) -> str:
+    """A block id from a ROS name: ``/head/emo`` → ``made_head_emo``."""
+    words = re.sub(r"[^a-z0-9]+", "_", name.lower()).strip("_")
+    return f"made_{words}"[:40].rstrip("_")
+
+
+def drawable_sentence(block) -> dict:
+    """The sentences of ``block`` Blockly can draw (each input's place once); until there is one, the
+    interface's name followed by the places, so the inputs show while the sentence is written."""
+    wanted = list(range(1, len(block.inputs) + 1))
+    sentences = {language: text for language, text in block.sentence.items() if sorted(sentence_places(text)) == wanted}
+    return sentences or {"en": " ".join([block.interface or "?"] + [f"%{number}" for number in wanted])}
+
+
+class BlockMakerDialog(QDialog):
+    """The maker for ``profile`` in ``language``, offering ``offers`` (``offers.Offer``s); ``packs_folder``
+    is where packs are saved (None: the user's). ``sig_saved(block id)`` once a block was written."""
+
+    sig_saved = Signal(str)
+    sig_try_requested = Signal(object)  # the preview page, whose one block the window runs once ("Try it")
+    sig_changed = Signal()  # the block, its problems and its Python were updated (the drawing follows)
+
+    def __init__(self, profile, language: str, offers, parent=None, packs_folder=None):
+        super().__init__(parent)
+        self.setObjectName("block_maker")
+        self.setWindowTitle(tr("maker_title", language))
+        self.profile = profile
+        self.language = language
+        self.packs_folder = packs_folder
+        self.problems = []
+        self._updating = False
+        self.offers = QListWidget(self)
+        self.offers.setObjectName("maker_offers")
+        self.offers.setAccessibleName(tr("maker_offers", language))
+        for offer in offers:
+            kind = tr(offer.text_key, language)
+            item = QListWidgetItem(f"{kind}: {offer.label()}" if offer.label() else kind, self.offers)
+            item.setData(Qt.ItemDataRole.UserRole, offer)
+        self.offer_filter = QLineEdit(self)
+        self.offer_filter.setObjectName("maker_offer_filter")
+        self.offer_filter.setPlaceholderText(tr("maker_offer_filter", language))
+        self.offer_filter.setAccessibleName(tr("maker_offer_filter", language))
+        self.offer_filter.setClearButtonEnabled(True)
+        self.offer_filter.textChanged.connect(self._filter_offers)
+        self.offers.currentItemChanged.connect(lambda item, _old: item is not None and self.choose(
+            item.data(Qt.ItemDataRole.UserRole)))
+        self._build_form()
+        self.preview = BlockPreview(profile, language, self)
+        self.python = QPlainTextEdit(self)
+        self.python.setObjectName("maker_python")
+        self.python.setReadOnly(True)
+        self.python.setAccessibleName(tr("maker_python", language))
+        self.python.setFont(QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont))
+        self.problem_label = plain_label(parent=self, objectName="maker_problems")
+        self.problem_label.setWordWrap(True)
+        self.problem_label.setStyleSheet("color: #b00020;")
+        self.buttons = QDialogButtonBox(self)
+        self.save_button = QPushButton(tr("maker_save", language), self)
+        self.save_button.setObjectName("maker_save")
+        self.buttons.addButton(self.save_button, QDialogButtonBox.ButtonRole.AcceptRole)
+        self.buttons.addButton(QDialogButtonBox.StandardButton.Close)
+        self.buttons.button(QDialogButtonBox.StandardButton.Close).setText(tr("maker_close", language))
+        self.save_button.clicked.connect(self.save)
+        self.try_button = QPushButton(tr("maker_try", language), self)
+        self.try_button.setObjectName("maker_try")
+        self.try_button.setToolTip(tr("maker_try_tip", language))
+        self.buttons.addButton(self.try_button, QDialogButtonBox.ButtonRole.ActionRole)
+        self.try_button.clicked.connect(lambda: self.sig_try_requested.emit(self.preview))
+        self.buttons.rejected.connect(self.reject)
+        self._lay_out()
+        self.update_block()
+
+    # -- building
+
+    def _build_form(self):
+        language = self.language
+        self.interface = self._edit("maker_interface")
+        self.interface_type = self._edit("maker_interface_type")
+        self.kind = QComboBox(self)
+        self.kind.setObjectName("maker_kind")
+        self.kind.currentIndexChanged.connect(self._kind_changed)
+        self.fields = FieldTable(language, self)
+        self.fields.sig_changed.connect(self.update_block)
+        self.read_field = QComboBox(self)
+        self.read_field.setObjectName("maker_read_field")
+        self.read_field.currentIndexChanged.connect(self.update_block)
+        self.comparison = QComboBox(self)
+        self.comparison.setObjectName("maker_comparison")
+        for key, sign in COMPARISONS.items():
+            self.comparison.addItem(sign, key)
+        self.comparison.currentIndexChanged.connect(self.update_block)
+        self.result = QComboBox(self)
+        self.result.setObjectName("maker_result")
+        self.result.currentIndexChanged.connect(self.update_block)
+        self.while_waiting = QCheckBox(tr("maker_while_waiting_on", language), self)
+        self.while_waiting.setObjectName("maker_while_waiting")
+        self.while_waiting.toggled.connect(self.update_block)
+        self.sentence = {code: self._edit(f"maker_sentence_{code}") for code in ("en", "de")}
+        self.tooltip = {code: self._edit(f"maker_tooltip_{code}") for code in ("en", "de")}
+        self.category = QComboBox(self)
+        self.category.setObjectName("maker_category")
+        self.category.setEditable(True)
+        for name, english, colour in category_choices(self.profile, language):
+            self.category.addItem(name, (english, colour or FALLBACK_COLOUR))
+        self.category.currentTextChanged.connect(self.update_block)
+        self.block_id = self._edit("maker_block_id")
+        form = QFormLayout()
+        for key, widget in (("maker_interface", self.interface), ("maker_interface_type", self.interface_type),
+                            ("maker_kind", self.kind), ("maker_read_field", self.read_field),
+                            ("maker_comparison", self.comparison), ("maker_result", self.result),
+                            ("maker_while_waiting", self.while_waiting), ("maker_sentence_en", self.sentence["en"]),
+                            ("maker_sentence_de", self.sentence["de"]), ("maker_tooltip_en", self.tooltip["en"]),
+                            ("maker_tooltip_de", self.tooltip["de"]), ("maker_category", self.category),
+                            ("maker_block_id", self.block_id)):
+            form.addRow(tr(key, language), widget)
+            widget.setAccessibleName(tr(key, language).rstrip(": "))  # a screen reader names it as the form does
+        self.sentence["en"].setPlaceholderText(tr("maker_sentence_hint", language))
+        self.form = form
+
+    def _edit(self, name: str) -> QLineEdit:
+        edit = QLineEdit(self)
+        edit.setObjectName(name)
+        edit.textChanged.connect(self.update_block)
+        return edit
+
+    def _lay_out(self):
+        right = QWidget(self)
+        column = QVBoxLayout(right)
+        column.setContentsMargins(0, 0, 0, 0)
+        column.addLayout(self.form)
+        column.addWidget(self.fields, 1)
+        column.addWidget(self.problem_label)
+        shown = QHBoxLayout()
+        shown.addWidget(self.preview, 1)
+        shown.addWidget(self.python, 1)
+        column.addLayout(shown, 1)
+        left = QWidget(self)
+        offers = QVBoxLayout(left)
+        offers.setContentsMargins(0, 0, 0, 0)
+        offers.addWidget(self.offer_filter)
+        offers.addWidget(self.offers, 1)
+        splitter = QSplitter(Qt.Orientation.Horizontal, self)
+        splitter.addWidget(left)
+        splitter.addWidget(right)
+        splitter.setStretchFactor(1, 3)
+        splitter.setSizes([330, 870])
+        layout = QVBoxLayout(self)
+        layout.addWidget(splitter, 1)
+        layout.addWidget(self.buttons)
+        self.resize(1200, 800)
+
+    # -- choosing
+
+    def choose(self, offer: Offer):
+        """Make the block from ``offer``: its name, type and the kinds of block it can make."""
+        self._updating = True
+        try:
+            self.interface.setText(offer.name)
+            self.interface_type.setText(offer.type)
+            self.kind.clear()
+            for kind in KINDS_OF[offer.kind]:
+                self.kind.addItem(tr(f"maker_kind_{kind}", self.language), kind)
+            if offer.name and not self.block_id.text():
+                self.block_id.setText(suggested_id(offer.name))
+        finally:
+            self._updating = False
+        self._kind_changed()
+
+    def _filter_offers(self, text: str):
+        words = text.lower().split()
+        for row in range(self.offers.count()):
+            item = self.offers.item(row)
+            item.setHidden(not all(word in item.text().lower() for word in words))
+
+    def choose_named(self, name: str) -> bool:
+        """Choose the offer called ``name`` in the list (the Topic monitor's "Make a block from this…")."""
+        for row in range(self.offers.count()):
+            if self.offers.item(row).data(Qt.ItemDataRole.UserRole).name == name:
+                self.offers.setCurrentRow(row)
+                return True
+        return False
+
+    def _kind_changed(self, *_):
+        kind = self.kind.currentData() or ""
+        fields = fields_of_block_kind(self.profile, kind, self.interface_type.text().strip()) if kind else []
+        self._updating = True
+        try:
+            self.fields.set_fields(fields if kind in FILLS_FIELDS else [])
+            self.read_field.clear()
+            for entry in fields if kind in READS_FIELD else []:
+                if entry.kind in ("number", "text", "yes_no"):
+                    self.read_field.addItem(entry.path, entry.kind)
+            self.result.clear()
+            self.result.addItem(tr("maker_result_none", self.language), "")
+            for path in self._results(kind):
+                self.result.addItem(tr("maker_result_outcome", self.language) if path == OUTCOME else path, path)
+            self.while_waiting.setChecked(False)
+        finally:
+            self._updating = False
+        self.fields.setVisible(kind in FILLS_FIELDS)
+        for widget, shown in ((self.read_field, kind in READS_FIELD), (self.comparison, kind == "wait_until"),
+                              (self.result, kind in ("call_service", "send_goal")),
+                              (self.while_waiting, kind == "send_goal")):
+            widget.setVisible(shown)
+            self.form.labelForField(widget).setVisible(shown)
+        self.update_block()
+
+    def _results(self, kind: str) -> list:
+        """What a block of ``kind`` can give: a response field of the service, or the goal's outcome."""
+        if kind == "send_goal":
+            return [OUTCOME]
+        if kind != "call_service":
+            return []
+        response = interface_fields(self.profile, self.interface_type.text().strip(), "srv", "out")
+        return [entry.path for entry in response if entry.kind in ("number", "text", "yes_no")]
+
+    # -- the block
+
+    def block(self) -> MadeBlock:
+        """The MadeBlock as the dialog shows it now."""
+        kind = self.kind.currentData() or ""
+        read_kind = self.read_field.currentData() or "number"
+        inputs = self.fields.inputs() if kind in FILLS_FIELDS else ()
+        if kind == "wait_until":
+            inputs = (BlockInput("value", read_kind),)
+        elif kind == "set_param":
+            inputs = (BlockInput("value", "number"),)
+        shown = self.category.currentText().strip()
+        index = self.category.findText(shown)
+        english, colour = self.category.itemData(index) if index >= 0 else (shown, FALLBACK_COLOUR)
+        category = {"en": english, self.language: shown} if shown else {}
+        return MadeBlock(
+            id=self.block_id.text().strip(), kind=kind, interface=self.interface.text().strip(),
+            interface_type=self.interface_type.text().strip() if kind not in ("get_param", "set_param") else "",
+            inputs=inputs, fixed=self.fields.fixed() if kind in FILLS_FIELDS else {},
+            sentence={code: edit.text() for code, edit in self.sentence.items() if edit.text().strip()},
+            category=category, colour=colour,
+            tooltip={code: edit.text() for code, edit in self.tooltip.items() if edit.text().strip()},
+            read_field=self.read_field.currentText() if kind in READS_FIELD else "",
+            value_kind=read_kind if kind == "sensor_value" else "number",
+            comparison=self.comparison.currentData() if kind == "wait_until" else "equal",
+            result=self.result.currentData() or "" if kind in ("call_service", "send_goal") else "",
+            while_waiting=kind == "send_goal" and self.while_waiting.isChecked())
+
+    def update_block(self, *_):
+        """Check the block as it is now, show its problems and Python, and draw it."""
+        if self._updating:
+            return
+        block = self.block()
+        self.problems = [said_in(problem, self.language) for problem in block_problems(block, self.profile)]
+        self.problem_label.setText("\n".join(self.problems))
+        self.problem_label.setVisible(bool(self.problems))
+        self.save_button.setEnabled(not self.problems)
+        self.try_button.setEnabled(not self.problems)
+        self.python.setPlainText(python_preview(block) if block.kind else "")
+        if block.kind:
+            self.preview.show_block(replace(block, id=PREVIEW_TYPE, sentence=drawable_sentence(block)))
+        self.sig_changed.emit()
+
+    def save(self):
+        """Write the block into the profile's block pack; on a problem say it and write nothing."""
+        try:
+            save_block(self.block(), self.profile, pack_id_for(self.profile), folder=self.packs_folder)
+        except BlockMakerError as error:
+            self.problems = [error.in_language(self.language)]
+            self.problem_label.setText(self.problems[0])
+            self.problem_label.setVisible(True)
+            return
+        self.sig_saved.emit(self.block().id)
+        self.accept()
+
+
+
+def open_block_maker(profile, language: str, graph_topics, parent, chosen: str = "") -> BlockMakerDialog:
+    """Open the maker (not blocking) over ``parent`` for ``profile``, offering the robot's ``graph_topics``
+    and what the profile declares, then the types Rockly knows; with the offer named ``chosen`` chosen."""
+    dialog = BlockMakerDialog(profile, language, robot_offers(profile, graph_topics) + known_offers(profile), parent)
+    dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose)
+    if chosen:
+        dialog.choose_named(chosen)
+    dialog.open()
+    return dialog

@@ -1,0 +1,290 @@
+"""The block maker in the real window (issue 22): Tools → Make a block… on the simulated HOBBIT, a
+service with two fields made into a block whose preview and Python follow each edit, saved into a
+block pack, in the toolbox at once, and run; the German window; bad input; the Topic monitor's menu."""
+import pytest
+from page_tools import call_page, run_js
+from program_builder import block, number, stack, text, workspace
+from PySide6.QtCore import Qt
+from PySide6.QtGui import QAction
+from PySide6.QtWidgets import QComboBox, QLineEdit, QListWidget, QPlainTextEdit, QWidget
+from test_ros2_window import connected
+from waiting import eventually
+from window_tools import state
+
+from rockly_desktop.profiles.packs.pack import user_packs_dir
+from rockly_desktop.robot.links import link_kind
+from rockly_desktop.ui.blockmaker.maker_dialog import BlockMakerDialog, pack_id_for
+from rockly_desktop.ui.blockmaker.offers import Offer
+from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
+
+PARAMS = '[{name: type, value: D_PLAIN}, {name: text, value: "made by hand"}]'
+
+
+def open_maker(qtbot, window) -> BlockMakerDialog:
+    """Open the maker with the Tools menu's action."""
+    next(action for action in window.findChildren(QAction) if action.objectName() == "action_make_block").trigger()
+    return the_maker(qtbot, window)
+
+
+def the_maker(qtbot, window) -> BlockMakerDialog:
+    """The window's open maker, once its preview page is ready."""
+    qtbot.waitUntil(lambda: window.findChild(BlockMakerDialog) is not None, timeout=5000)
+    maker = window.findChild(BlockMakerDialog)
+    qtbot.waitUntil(lambda: maker.preview.is_ready, timeout=30000)
+    return maker
+
+
+def drawn_preview(qtbot, maker) -> dict:
+    """The preview block as the maker's page draws it: its text and inputs."""
+    return run_js(qtbot, maker.preview, """(() => {
+        const shown = Blockly.getMainWorkspace().getTopBlocks(false);
+        return shown.length === 1 ? {text: shown[0].toString(), inputs: shown[0].inputList.map(i => i.name)
+                                     .filter(Boolean)} : null; })()""")
+
+
+def make_mmui_block(qtbot, maker, block_id="made_say", english="ask %1 to say %2", german=""):
+    """Pick /MMUI, make sessionID and requestText inputs, fix its params, write the sentence."""
+    assert maker.choose_named("/MMUI")
+    maker.fields.set_use("sessionID", "input", "7")
+    maker.fields.set_use("requestText", "input", "hello")
+    maker.fields.set_use("params", "fixed", PARAMS)
+    maker.sentence["en"].setText(english)
+    maker.sentence["de"].setText(german)
+    maker.block_id.setText(block_id)
+
+
+def test_a_service_with_two_fields_becomes_a_block_in_the_toolbox_that_runs(qtbot, window):
+    maker = open_maker(qtbot, window)
+    make_mmui_block(qtbot, maker)
+    assert maker.problems == []
+    assert "ros.call_service('/MMUI', 'hobbit_msgs/Request'" in maker.python.toPlainText()
+    assert "'sessionID': '7', 'requestText': 'hello'" in maker.python.toPlainText()
+    qtbot.waitUntil(lambda: (drawn_preview(qtbot, maker) or {}).get("text", "").startswith("ask"), timeout=10000)
+    assert drawn_preview(qtbot, maker)["inputs"] == ["sessionid", "requestText".lower()]
+
+    maker.sentence["en"].setText("ask %1 please to say %2")
+    qtbot.waitUntil(lambda: "please" in drawn_preview(qtbot, maker)["text"], timeout=10000)
+
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_say" in window.editor.known_block_types, timeout=30000)
+    assert (user_packs_dir() / pack_id_for(window.profile) / "blocks.yaml").is_file()
+    toolbox = run_js(qtbot, window.editor, "JSON.stringify(Blockly.getMainWorkspace().options.languageTree)")
+    assert '"made_say"' in toolbox
+
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(stack(block(
+        "made_say", inputs={"sessionid": text("9"), "requesttext": text("hi")}, id="say")))})
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=30000) as finished:
+        assert window.runs.run()
+    assert finished.args[0].outcome == "finished", finished.args[0].message
+    assert window.robot().snapshot()["tablet"] == {"kind": "D_PLAIN", "text": "made by hand"}
+
+
+def test_the_german_window_shows_the_german_sentence(qtbot, german_window):
+    maker = open_maker(qtbot, german_window)
+    assert maker.windowTitle() == "Einen Block bauen"
+    make_mmui_block(qtbot, maker, "made_sag", "ask %1 to say %2", "frag %1 und sag %2")
+    qtbot.waitUntil(lambda: (drawn_preview(qtbot, maker) or {}).get("text", "").startswith("frag"), timeout=10000)
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_sag" in german_window.editor.known_block_types, timeout=30000)
+    call_page(qtbot, german_window.editor, "load", {"workspace": workspace(stack(block("made_sag", id="sag")))})
+    shown = run_js(qtbot, german_window.editor, "Blockly.getMainWorkspace().getBlockById('sag').toString()")
+    assert shown.startswith("frag")
+
+
+def test_bad_input_says_what_is_wrong_and_writes_nothing(qtbot, window):
+    maker = open_maker(qtbot, window)
+    make_mmui_block(qtbot, maker, block_id="hobbit_stop", english="ask %1")
+    problems = "\n".join(maker.problems)
+    assert "already has a block 'hobbit_stop'" in problems
+    assert "must have each of %1 to %2 once" in problems
+    assert maker.problem_label.isVisibleTo(maker) and "hobbit_stop" in maker.problem_label.text()
+    assert not maker.save_button.isEnabled()
+    maker.save()  # even asked directly, nothing is written
+    assert not (user_packs_dir() / pack_id_for(window.profile)).exists()
+    assert maker.isVisible()
+
+
+def test_the_topic_monitors_menu_opens_the_maker_with_that_topic_chosen(qtbot, window):
+    monitor = window.monitor_dock.widget()
+    qtbot.waitUntil(lambda: monitor.select_topic("/odom"), timeout=10000)
+    menu = monitor.topic_menu("/odom")
+    menu.actions()[0].trigger()
+    maker = the_maker(qtbot, window)
+    assert maker.interface.text() == "/odom" and maker.interface_type.text() == "nav_msgs/Odometry"
+    assert maker.kind.currentData() == "publish"
+
+
+def test_try_it_runs_the_previewed_block_once_on_the_simulator_before_it_is_saved(qtbot, window):
+    maker = open_maker(qtbot, window)
+    make_mmui_block(qtbot, maker, block_id="made_try")
+    qtbot.waitUntil(lambda: (drawn_preview(qtbot, maker) or {}).get("text", "").startswith("ask"), timeout=10000)
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=30000) as finished:
+        maker.try_button.click()
+    assert finished.args[0].outcome == "finished", finished.args[0].message
+    assert window.robot().snapshot()["tablet"] == {"kind": "D_PLAIN", "text": "made by hand"}
+    assert not (user_packs_dir() / pack_id_for(window.profile)).exists()  # tried, not saved
+
+
+def test_a_block_saved_while_a_program_runs_reaches_the_toolbox_once_the_run_ends(qtbot, window):
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(block(
+        "controls_whileUntil", {"MODE": "WHILE"}, {"BOOL": block("logic_boolean", {"BOOL": "TRUE"}),
+                                                   "DO": block("hobbit_wait", inputs={"seconds": number(0.05)})},
+        id="loop"))})
+    assert window.runs.run()
+    qtbot.waitUntil(lambda: window.runs.state == "running", timeout=15000)
+    maker = open_maker(qtbot, window)
+    make_mmui_block(qtbot, maker, block_id="made_later")
+    maker.save_button.click()
+    assert (user_packs_dir() / pack_id_for(window.profile) / "blocks.yaml").is_file()
+    state(qtbot, window)  # a round trip to the page: it was not replaced meanwhile
+    assert window.runs.state == "running" and "made_later" not in window.editor.known_block_types
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=15000) as finished:
+        window.runs.stop()
+    assert finished.args[0].outcome == "stopped"
+    qtbot.waitUntil(lambda: "made_later" in window.editor.known_block_types, timeout=30000)
+    assert state(qtbot, window)["workspace"]["blocks"]["blocks"][0]["id"] == "loop"  # the program stayed
+
+
+@pytest.fixture
+def ros_window(window, ros_master, hobbit_on_ros, monkeypatch):
+    """The window on HOBBIT over ROS 1 (the ROS-level simulator in its own process, a real master)."""
+    window.settings.remember_link_connection(link_kind("ros1"), "hobbit",
+                                             {"master": ros_master.uri, "host": "127.0.0.1"})
+    monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
+    backend = window.run_toolbar.backend
+    backend.setCurrentIndex(backend.findData("ros1"))
+    assert window.robots.kind == "ros1"
+    return window
+
+
+def test_on_ros_1_the_maker_offers_the_live_graph_and_a_made_sensor_block_reads_the_robot(qtbot, ros_window):
+    qtbot.waitUntil(lambda: "/rosout" in [topic for topic, *_ in ros_window.robot().graph_topics()], timeout=15000)
+    maker = open_maker(qtbot, ros_window)
+    assert maker.choose_named("/rosout")  # in the live graph only: no profile declares it
+    assert maker.interface_type.text() == "rosgraph_msgs/Log"
+    assert maker.choose_named("/odom")
+    maker.kind.setCurrentIndex(maker.kind.findData("sensor_value"))
+    maker.read_field.setCurrentIndex(maker.read_field.findText("pose.pose.position.x"))
+    maker.sentence["en"].setText("how far forward")
+    maker.block_id.setText("made_forward")
+    assert maker.problems == []
+    assert "pose.pose.position.x" in maker.python.toPlainText()
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_forward" in ros_window.editor.known_block_types, timeout=30000)
+    call_page(qtbot, ros_window.editor, "load", {"workspace": workspace(stack(
+        block("text_print", inputs={"TEXT": block("made_forward")}, id="say")))})
+    with qtbot.waitSignal(ros_window.runs.sig_finished, timeout=30000) as finished:
+        assert ros_window.runs.run()
+    assert finished.args[0].outcome == "finished", finished.args[0].message
+    printed = ros_window.console.lines()[-2]
+    assert float(printed) == pytest.approx(0.0, abs=0.05)  # HOBBIT stands where it started
+
+
+def test_on_ros_2_the_maker_offers_the_live_graph_and_a_block_made_from_a_known_type_publishes(
+        qtbot, window, test_robot, ros2_settings, monkeypatch):
+    ros2_window = connected(window, ros2_settings, monkeypatch)
+    qtbot.waitUntil(lambda: "/map_name" in [topic for topic, *_ in ros2_window.robot().graph_topics()], timeout=20000)
+    maker = open_maker(qtbot, ros2_window)
+    assert maker.choose_named("/map_name")  # the test node's: in the live graph only
+    assert maker.interface_type.text() == "std_msgs/String"
+    known_string = Offer("topic", "", "std_msgs/String")
+    string_type = next(row for row in range(maker.offers.count())
+                       if maker.offers.item(row).data(Qt.ItemDataRole.UserRole) == known_string)
+    maker.offers.setCurrentRow(string_type)  # a type Rockly knows without a robot; the topic is typed in
+    maker.interface.setText("/chatter")
+    maker.fields.set_use("data", "input", "hello")
+    maker.sentence["en"].setText("chat %1")
+    maker.block_id.setText("made_chat")
+    assert maker.problems == []
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_chat" in ros2_window.editor.known_block_types, timeout=30000)
+    call_page(qtbot, ros2_window.editor, "load", {"workspace": workspace(stack(
+        block("made_chat", inputs={"data": text("made without code")}, id="chat")))})
+    with qtbot.waitSignal(ros2_window.runs.sig_finished, timeout=30000) as finished:
+        assert ros2_window.runs.run()
+    assert finished.args[0].outcome == "finished", finished.args[0].message
+    eventually(lambda: {"data": "made without code"} in [line["message"] for line in test_robot.received("/chatter")],
+               timeout=10)
+
+
+def test_every_control_of_the_maker_has_a_name_a_screen_reader_reads_in_the_windows_language(qtbot, german_window):
+    maker = open_maker(qtbot, german_window)
+    assert maker.choose_named("/MMUI")
+    controls = [widget for widget in maker.findChildren(QWidget)
+                if widget.focusPolicy() != Qt.FocusPolicy.NoFocus and widget.isVisibleTo(maker)
+                and isinstance(widget, (QLineEdit, QComboBox, QListWidget, QPlainTextEdit))
+                and not isinstance(widget.parentWidget(), QComboBox)]  # an editable box's own line is the box's
+    assert len(controls) > 15
+    assert [widget.objectName() for widget in controls if not widget.accessibleName()] == []
+    assert maker.sentence["de"].accessibleName() == "Satz (Deutsch)"
+    assert maker.fields.cellWidget(2, 2).accessibleName() == "sessionID: Verwendung"
+
+
+def test_the_filter_narrows_the_offers_and_a_parameter_is_named_and_set(qtbot, window):
+    maker = open_maker(qtbot, window)
+    maker.offer_filter.setText("twist geometry")
+    shown = [maker.offers.item(row).text() for row in range(maker.offers.count())
+             if not maker.offers.item(row).isHidden()]
+    assert "Topic: /cmd_vel  (geometry_msgs/Twist)" in shown and all("Twist" in text for text in shown)
+    maker.offer_filter.clear()
+    parameter = next(row for row in range(maker.offers.count())
+                     if maker.offers.item(row).text() == "Parameter (name it above)")
+    maker.offers.setCurrentRow(parameter)
+    maker.interface.setText("/max_speed")
+    maker.kind.setCurrentIndex(maker.kind.findData("set_param"))
+    maker.sentence["en"].setText("set the top speed to %1")
+    maker.block_id.setText("made_top_speed")
+    assert maker.problems == []
+    assert "ros.set_param('/max_speed'" in maker.python.toPlainText()
+    qtbot.waitUntil(lambda: "top speed" in (drawn_preview(qtbot, maker) or {}).get("text", ""), timeout=10000)
+
+
+def test_the_maker_opens_only_through_the_teachers_gate(qtbot, window):
+    """In kiosk mode the gate asks for the teacher's PIN (tests/ui/test_kiosk_lock.py): a visitor makes no blocks."""
+    held = []
+    window.teacher_gate = held.append
+    next(action for action in window.findChildren(QAction) if action.objectName() == "action_make_block").trigger()
+    monitor = window.monitor_dock.widget()
+    monitor.topic_menu("/odom").actions()[0].trigger()
+    assert len(held) == 2 and window.findChild(BlockMakerDialog) is None
+    held[1]()  # the teacher gave the PIN
+    assert the_maker(qtbot, window).interface.text() == "/odom"
+
+
+def test_an_action_block_gives_its_outcome_and_has_a_while_waiting_part_and_runs_on_the_simulator(qtbot, window):
+    maker = open_maker(qtbot, window)
+    assert maker.choose_named("hobbit_arm")
+    assert not maker.read_field.isVisibleTo(maker) and maker.while_waiting.isVisibleTo(maker)
+    maker.fields.set_use("command.data", "input", "MoveToTray")
+    maker.result.setCurrentIndex(maker.result.findData("outcome"))
+    maker.while_waiting.setChecked(True)
+    maker.sentence["en"].setText("arm to %1")
+    maker.block_id.setText("made_arm")
+    assert maker.problems == []
+    assert "while_waiting=None" in maker.python.toPlainText()
+    qtbot.waitUntil(lambda: "while_waiting" in (drawn_preview(qtbot, maker) or {}).get("inputs", []), timeout=10000)
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_arm" in window.editor.known_block_types, timeout=30000)
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(stack(
+        block("text_print", inputs={"TEXT": block("made_arm", inputs={"command_data": text("MoveToTray")})},
+              id="say")))})
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=30000) as finished:
+        assert window.runs.run()
+    assert finished.args[0].outcome == "finished", finished.args[0].message
+    assert window.console.lines()[-2] == "succeeded"
+    assert window.robot().snapshot()["arm"] == "tray"
+
+
+def test_the_preview_shows_the_inputs_before_the_sentence_is_written_and_keeps_a_drawing_while_it_is_wrong(
+        qtbot, window):
+    maker = open_maker(qtbot, window)
+    assert maker.choose_named("/MMUI")
+    maker.fields.set_use("sessionID", "input", "7")
+    maker.fields.set_use("requestText", "input", "hello")
+    qtbot.waitUntil(lambda: (drawn_preview(qtbot, maker) or {}).get("inputs") == ["sessionid", "requesttext"],
+                    timeout=10000)
+    assert drawn_preview(qtbot, maker)["text"].startswith("/MMUI")
+    maker.sentence["en"].setText("ask %1")  # half written: the places do not match yet
+    assert any("must have each of %1 to %2" in problem for problem in maker.problems)
+    qtbot.waitUntil(lambda: maker.preview.drawn is not None and not maker.preview.is_drawing, timeout=10000)
+    assert drawn_preview(qtbot, maker)["inputs"] == ["sessionid", "requesttext"]
