@@ -1,12 +1,17 @@
 """The block maker in the real window (issue 22): Tools → Make a block… on the simulated HOBBIT, a
 service with two fields made into a block whose preview and Python follow each edit, saved into a
 block pack, in the toolbox at once, and run; the German window; bad input; the Topic monitor's menu."""
+import sys
+from pathlib import Path
+
 import pytest
+from json_line_node import JsonLineNode
 from page_tools import call_page, run_js
 from program_builder import block, number, stack, text, workspace
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction
 from PySide6.QtWidgets import QComboBox, QLineEdit, QListWidget, QPlainTextEdit, QWidget
+from ros_helpers import ros_environment
 from test_ros2_window import connected
 from waiting import eventually
 from window_tools import state
@@ -178,6 +183,56 @@ def test_on_ros_1_the_maker_offers_the_live_graph_and_a_made_sensor_block_reads_
     assert finished.args[0].outcome == "finished", finished.args[0].message
     printed = ros_window.console.lines()[-2]
     assert float(printed) == pytest.approx(0.0, abs=0.05)  # HOBBIT stands where it started
+
+
+@pytest.fixture
+def lamp_on_ros(ros_master):
+    """A plain rospy node serving /lamp/switch (std_srvs/SetBool) with the parameter /lamp/brightness."""
+    lamp = JsonLineNode([sys.executable, Path(__file__).parents[1] / "robot" / "ros1" / "ros1_lamp_node.py"],
+                        ros_environment(ros_master.uri, ros_master.home / "lamp"), "the lamp node")
+    yield lamp
+    lamp.stop()
+
+
+def made_and_run(qtbot, window, program) -> None:
+    """Save the open maker's block, wait for it in the toolbox, run ``program`` once: it must finish."""
+    maker = window.findChild(BlockMakerDialog)
+    block_id = maker.block_id.text()
+    assert maker.problems == []
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: block_id in window.editor.known_block_types, timeout=30000)
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(stack(program))})
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=30000) as finished:
+        assert window.runs.run()
+    assert finished.args[0].outcome == "finished", finished.args[0].message
+
+
+def test_on_ros_1_the_maker_offers_a_plain_nodes_service_and_parameter_and_their_blocks_reach_it(
+        qtbot, ros_window, lamp_on_ros):
+    robot = ros_window.robot()
+    eventually(lambda: ("/lamp/switch", "std_srvs/SetBool") in robot.graph_services()
+               and "/lamp/brightness" in robot.graph_parameters(), timeout=20)
+    assert ("/move_base", "move_base_msgs/MoveBaseAction") in robot.graph_actions()  # the simulated HOBBIT's
+    maker = open_maker(qtbot, ros_window)
+    assert maker.choose_named("/lamp/switch")  # in the live graph only: no profile declares it
+    assert maker.interface_type.text() == "std_srvs/SetBool"
+    assert maker.offers.currentItem().text() == "Service: /lamp/switch  (std_srvs/SetBool)  · on the robot now"
+    assert maker.choose_named("move_base") and maker.offers.currentItem().text().endswith("on the robot now")
+    assert maker.choose_named("/lamp/switch")
+    maker.fields.set_use("data", "input", "true")
+    maker.sentence["en"].setText("switch the lamp on: %1")
+    maker.block_id.setText("made_lamp")
+    made_and_run(qtbot, ros_window, block("made_lamp", inputs={"data": block("logic_boolean", {"BOOL": "TRUE"})}))
+    eventually(lambda: {"service": "/lamp/switch", "request": {"data": True}} in lamp_on_ros.lines, timeout=10)
+
+    maker = open_maker(qtbot, ros_window)
+    assert maker.choose_named("/lamp/brightness")
+    assert maker.offers.currentItem().text() == "Parameter: /lamp/brightness  · on the robot now"
+    maker.kind.setCurrentIndex(maker.kind.findData("get_param"))
+    maker.sentence["en"].setText("the lamp's brightness")
+    maker.block_id.setText("made_brightness")
+    made_and_run(qtbot, ros_window, block("text_print", inputs={"TEXT": block("made_brightness")}, id="say"))
+    assert ros_window.console.lines()[-2] == "7"
 
 
 def test_on_ros_2_the_maker_offers_the_live_graph_and_a_block_made_from_a_known_type_publishes(

@@ -33,7 +33,7 @@ from rockly_desktop.profiles.packs.making import save_block
 from rockly_desktop.profiles.packs.spec import COMPARISONS, OUTCOME, BlockInput, MadeBlock
 from rockly_desktop.profiles.packs.validation import BlockMakerError, block_problems, sentence_places
 from rockly_desktop.ui.blockmaker.field_table import FieldTable
-from rockly_desktop.ui.blockmaker.offers import KINDS_OF, Offer, known_offers, robot_offers
+from rockly_desktop.ui.blockmaker.offers import KINDS_OF, LiveGraph, Offer, known_offers, robot_offers
 from rockly_desktop.ui.blockmaker.preview import BlockPreview
 from rockly_desktop.ui.plain_text import plain_label
 from rockly_desktop.ui.texts import said_in, tr
@@ -85,8 +85,12 @@ class BlockMakerDialog(QDialog):
         self.offers.setAccessibleName(tr("maker_offers", language))
         for offer in offers:
             kind = tr(offer.text_key, language)
-            item = QListWidgetItem(f"{kind}: {offer.label()}" if offer.label() else kind, self.offers)
+            shown = f"{kind}: {offer.label()}" if offer.label() else kind
+            item = QListWidgetItem(f"{shown}  · {tr('maker_offer_live', language)}" if offer.live else shown,
+                                   self.offers)
             item.setData(Qt.ItemDataRole.UserRole, offer)
+            if offer.live:
+                item.setToolTip(tr("maker_offer_live_tip", language))
         self.offer_filter = QLineEdit(self)
         self.offer_filter.setObjectName("maker_offer_filter")
         self.offer_filter.setPlaceholderText(tr("maker_offer_filter", language))
@@ -322,10 +326,10 @@ class BlockMakerDialog(QDialog):
 
 
 
-def open_block_maker(profile, language: str, graph_topics, parent, chosen: str = "") -> BlockMakerDialog:
-    """Open the maker (not blocking) over ``parent`` for ``profile``, offering the robot's ``graph_topics``
-    and what the profile declares, then the types Rockly knows; with the offer named ``chosen`` chosen."""
-    dialog = BlockMakerDialog(profile, language, robot_offers(profile, graph_topics) + known_offers(profile), parent)
+def open_block_maker(profile, language: str, graph: LiveGraph, parent, chosen: str = "") -> BlockMakerDialog:
+    """Open the maker (not blocking) over ``parent`` for ``profile``, offering what the robot's live ``graph``
+    has and the profile declares, then the types Rockly knows; with the offer named ``chosen`` chosen."""
+    dialog = BlockMakerDialog(profile, language, robot_offers(profile, graph) + known_offers(profile), parent)
     dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose)
     if chosen:
         dialog.choose_named(chosen)
