@@ -262,6 +262,34 @@ def test_on_ros_2_the_maker_offers_the_live_graph_and_a_block_made_from_a_known_
                timeout=10)
 
 
+def test_on_ros_2_the_maker_offers_a_plain_nodes_service_action_and_parameter_and_their_blocks_reach_it(
+        qtbot, window, test_robot, ros2_settings, monkeypatch):
+    ros2_window = connected(window, ros2_settings, monkeypatch)
+    robot = ros2_window.robot()
+    eventually(lambda: ("/set_light", "std_srvs/SetBool") in robot.graph_services()
+               and "/test_robot:max_speed" in robot.graph_parameters(), timeout=30)
+    assert ("/fibonacci", "test_msgs/FibonacciAction") in robot.graph_actions()
+    assert not [name for name, _type in robot.graph_services() if name.endswith("_parameters")]
+    maker = open_maker(qtbot, ros2_window)
+    assert maker.choose_named("/set_light")  # the test node's: no profile declares it
+    assert maker.offers.currentItem().text() == "Service: /set_light  (std_srvs/SetBool)  · on the robot now"
+    assert maker.choose_named("/fibonacci") and maker.interface_type.text() == "test_msgs/FibonacciAction"
+    assert maker.choose_named("/set_light")
+    maker.fields.set_use("data", "input", "true")
+    maker.sentence["en"].setText("switch the light on: %1")
+    maker.block_id.setText("made_light")
+    made_and_run(qtbot, ros2_window, block("made_light", inputs={"data": block("logic_boolean", {"BOOL": "TRUE"})}))
+    eventually(lambda: {"data": True} in [line["message"] for line in test_robot.received("/set_light")], timeout=10)
+
+    maker = open_maker(qtbot, ros2_window)
+    assert maker.choose_named("/test_robot:max_speed")
+    maker.kind.setCurrentIndex(maker.kind.findData("get_param"))
+    maker.sentence["en"].setText("the top speed")
+    maker.block_id.setText("made_max_speed")
+    made_and_run(qtbot, ros2_window, block("text_print", inputs={"TEXT": block("made_max_speed")}, id="say"))
+    assert float(ros2_window.console.lines()[-2]) == pytest.approx(0.22)
+
+
 def test_every_control_of_the_maker_has_a_name_a_screen_reader_reads_in_the_windows_language(qtbot, german_window):
     maker = open_maker(qtbot, german_window)
     assert maker.choose_named("/MMUI")
