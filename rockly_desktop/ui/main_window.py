@@ -436,10 +436,11 @@ class MainWindow(QMainWindow):
         from rockly_desktop.ui.blockmaker.maker_dialog import open_block_maker  # not needed before it is opened
         from rockly_desktop.ui.blockmaker.offers import LiveGraph
 
-        try:
-            graph = LiveGraph.of(self.robot()) if self._robot_shown else LiveGraph()
-        except RocklyError:  # no robot to ask: the maker offers what the profile declares and knows
-            graph = LiveGraph()
+        def graph() -> LiveGraph:
+            try:
+                return LiveGraph.of(self.robot()) if self._robot_shown else LiveGraph()
+            except RocklyError:  # no robot to ask: the maker offers what the profile declares and knows
+                return LiveGraph()
         self.block_maker = open_block_maker(self.profile, self.language, graph, self, chosen)
         self.block_maker.sig_saved.connect(lambda _block_id: self.reload_packs())
         self.block_maker.sig_try_requested.connect(lambda page: self.runs.run(page=page))

@@ -290,6 +290,19 @@ def test_on_ros_2_the_maker_offers_a_plain_nodes_service_action_and_parameter_an
     assert float(ros2_window.console.lines()[-2]) == pytest.approx(0.22)
 
 
+def test_what_the_live_graph_gains_while_the_maker_is_open_is_offered_and_the_block_being_made_stays(
+        qtbot, window):
+    maker = open_maker(qtbot, window)
+    assert maker.choose_named("/MMUI")
+    maker.sentence["en"].setText("ask %1 to say %2")
+    offered = lambda: [maker.offers.item(row).text() for row in range(maker.offers.count())]  # noqa: E731
+    assert "Parameter: /lamp_level  · on the robot now" not in offered()
+    window.robot().world.params["/lamp_level"] = 3  # the simulated robot gains a parameter
+    qtbot.waitUntil(lambda: "Parameter: /lamp_level  · on the robot now" in offered(), timeout=10000)
+    assert maker.offers.currentItem().data(Qt.ItemDataRole.UserRole).name == "/MMUI"
+    assert maker.sentence["en"].text() == "ask %1 to say %2" and maker.interface.text() == "/MMUI"
+
+
 def test_every_control_of_the_maker_has_a_name_a_screen_reader_reads_in_the_windows_language(qtbot, german_window):
     maker = open_maker(qtbot, german_window)
     assert maker.choose_named("/MMUI")
