@@ -7,6 +7,7 @@ import time
 
 import pytest
 
+from rockly_desktop.robot.ros1 import graph_offers
 from rockly_desktop.robot.ros1.graph_offers import ServiceTypes, graph_actions, probe_service_type
 from rockly_desktop.robot.ros2.helper.graph_offers import typed_actions, typed_services
 from rockly_desktop.robot.sim.link import SimulatedRobot
@@ -51,6 +52,19 @@ def test_a_ros_1_service_whose_server_does_not_answer_the_probe_gives_up_within_
     with pytest.raises(OSError):
         probe_service_type(silent_server, "/mute", timeout=0.5)
     assert time.monotonic() - started < 5  # the promise: bounded (the machine is loaded: generous)
+
+
+def test_a_ros_1_graph_of_many_mute_servers_is_typed_a_few_at_a_time_and_listed_at_once(monkeypatch):
+    asked = []
+    monkeypatch.setattr(graph_offers, "ask_master", lambda _uri, _method, name: f"rosrpc://127.0.0.1:9/{name}")
+    monkeypatch.setattr(graph_offers, "probe_service_type", lambda _uri, name: asked.append(name) or "std_srvs/Empty")
+    types = ServiceTypes("http://127.0.0.1:11311")
+    names = [f"/mute_{number:02}" for number in range(12)]
+    first = types.typed(names)
+    assert [name for name, _type in first] == names and len(asked) == graph_offers.PROBES_AT_ONCE
+    assert dict(first)["/mute_11"] == ""  # listed now, typed by a later call
+    types.typed(names), types.typed(names)
+    assert dict(types.typed(names))["/mute_11"] == "std_srvs/Empty" and sorted(asked) == names  # each asked once
 
 
 def test_a_ros_1_service_the_master_cannot_find_is_listed_without_a_type():

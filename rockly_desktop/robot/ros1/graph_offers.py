@@ -16,6 +16,7 @@ from rosgraph.network import ROSHandshakeException, read_ros_handshake_header, w
 from rockly_desktop.robot.ros1.connection import ask_master
 
 PROBE_SECONDS = 1.0
+PROBES_AT_ONCE = 5  # new servers asked per call, so a graph of many mute servers holds the feed's poll up little
 # the parameter server's own entries, which no robot offers
 ROS_OWN_PARAMETERS = ("/rosdistro", "/rosversion", "/run_id", "/roslaunch/")
 
@@ -42,15 +43,16 @@ class ServiceTypes:
         self._known = {}  # name -> type; "" when its server did not say
 
     def typed(self, names) -> list:
-        """(name, type) of the services ``names``, sorted; a type its server did not say is ""."""
+        """(name, type) of the services ``names``, sorted; a type its server did not say (or not yet:
+        PROBES_AT_ONCE are asked each call) is ""."""
         names = set(names)
         self._known = {name: type_name for name, type_name in self._known.items() if name in names}
-        for name in names - set(self._known):
+        for name in sorted(names - set(self._known))[:PROBES_AT_ONCE]:
             try:
                 self._known[name] = probe_service_type(ask_master(self._master_uri, "lookupService", name), name)
             except (OSError, ValueError, struct.error, ROSHandshakeException, xmlrpc.client.Error):  # gone, or mute
                 self._known[name] = ""
-        return sorted(self._known.items())
+        return sorted({**dict.fromkeys(names, ""), **self._known}.items())
 
 
 def graph_actions(topic_types: dict) -> list:
