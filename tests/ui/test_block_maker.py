@@ -87,6 +87,9 @@ def test_a_service_with_two_fields_becomes_a_block_in_the_toolbox_that_runs(qtbo
 def test_the_german_window_shows_the_german_sentence(qtbot, german_window):
     maker = open_maker(qtbot, german_window)
     assert maker.windowTitle() == "Einen Block bauen"
+    assert maker.choose_named("/MMUI")  # the simulated robot serves it now
+    assert maker.offers.currentItem().text() == "Dienst: /MMUI  (hobbit_msgs/Request)  · jetzt am Roboter"
+    assert maker.offers.currentItem().toolTip().startswith("Der Roboter bietet das gerade an")
     make_mmui_block(qtbot, maker, "made_sag", "ask %1 to say %2", "frag %1 und sag %2")
     qtbot.waitUntil(lambda: (drawn_preview(qtbot, maker) or {}).get("text", "").startswith("frag"), timeout=10000)
     maker.save_button.click()
