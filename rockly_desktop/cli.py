@@ -8,6 +8,8 @@
     rockly profiles reference           print the profile.yaml reference (Markdown)
     (``rockly plugins ...`` is the older name of ``rockly profiles ...`` and still works)
     rockly export PROGRAM -o OUT.py     write the Python generated from a program (-o -: to standard output)
+    rockly export PROGRAM --standalone -o OUT.py  ... as a file that runs without the window where Rockly's
+                                        runtime is installed (runtime/: rockly-runtime; see runtime/standalone.py)
     rockly run PROGRAM [--answer A]...  run a program on the simulator (or --backend KIND), without a window
     (export, run, replay and recordings list take --language en|de: the blocks' texts and every message;
      default: the app's language)
@@ -35,6 +37,7 @@ SUBCOMMANDS = ("profiles", "plugins", "export", "run", "sim", "replay", "recordi
 
 def _tool_parser() -> argparse.ArgumentParser:
     from rockly_desktop.robot import links  # not on the window's start-up path
+    from rockly_desktop.runtime.options import add_connection_options
 
     parser = argparse.ArgumentParser(prog="rockly", description="Program ROS robots with blocks.")
     parser.add_argument("--version", action="version", version=f"rockly {__version__}")
@@ -54,6 +57,7 @@ def _tool_parser() -> argparse.ArgumentParser:
     export.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
     export.add_argument("-o", "--output", type=Path, required=True,
                         help="the .py file to write (- for standard output)")
+    export.add_argument("--standalone", action="store_true", help=_text("cli_standalone_help"))
     _language_option(export)
 
     run = commands.add_parser("run", help="run a program without a window")
@@ -61,7 +65,7 @@ def _tool_parser() -> argparse.ArgumentParser:
     run.add_argument("--backend", default=links.DEFAULT_KIND, choices=[entry.kind for entry in links.link_kinds()],
                      help="the robot to run on: " + ", ".join(f"{entry.kind} ({entry.title})" for entry in
                                                               links.link_kinds()) + f"; default: {links.DEFAULT_KIND}")
-    _add_connection_options(run, links.link_kinds())
+    add_connection_options(run, links.link_kinds())
     run.add_argument("--answer", action="append", default=[],
                      help="an answer for the next tablet question (repeatable)")
     run.add_argument("--speed", type=float, default=1.0, help="simulated time runs this many times faster")
@@ -88,7 +92,7 @@ def _tool_parser() -> argparse.ArgumentParser:
     for entry in servers:
         serve_on.add_argument(entry.sim_option, dest="serve_on", action="store_const", const=entry.kind,
                               help=f"serve the robot's ROS interface: the simulator as {entry.title}")
-    _add_connection_options(sim, servers)
+    add_connection_options(sim, servers)
     sim.add_argument("--answer", action="append", default=[],
                      help="an answer for the next tablet question (repeatable); when they run out, the window asks")
     sim.add_argument("--speed", type=float, default=1.0, help="simulated time runs this many times faster")
@@ -98,33 +102,17 @@ def _tool_parser() -> argparse.ArgumentParser:
     return parser
 
 
-def _add_connection_options(parser, kinds):
-    """The command-line options of ``kinds``' connection settings (each option once)."""
-    added = set()
-    for entry in kinds:
-        for setting in entry.settings:
-            if setting.option and setting.option not in added:
-                added.add(setting.option)
-                parser.add_argument(setting.option, dest=_option_dest(setting), help=setting.help)
-
-
-def _option_dest(setting) -> str:
-    return setting.option.lstrip("-").replace("-", "_")
-
-
-def _connection(kind: str, args) -> dict:
-    """The connection settings of ``kind`` given on the command line."""
-    from rockly_desktop.robot import links
-
-    return {setting.name: getattr(args, _option_dest(setting)) for setting in links.link_kind(kind).settings
-            if setting.option}
-
-
 def _language_option(parser):
-    from rockly_desktop.core.app_texts import app_text, languages
+    from rockly_desktop.core.app_texts import languages
 
-    parser.add_argument("--language", choices=languages(),
-                        help=app_text("cli_language_help", "en"))
+    parser.add_argument("--language", choices=languages(), help=_text("cli_language_help"))
+
+
+def _text(key: str) -> str:
+    """A command's help text (in English, as argparse's own words are)."""
+    from rockly_desktop.core.app_texts import app_text
+
+    return app_text(key, "en")
 
 
 def _app_language() -> str:
@@ -230,7 +218,7 @@ def _profiles_reference() -> int:
     return 0
 
 
-def _export(program_path: Path, output: Path, language: str) -> int:
+def _export(program_path: Path, output: Path, language: str, standalone: bool = False) -> int:
     from rockly_desktop.app import generate_headless
     from rockly_desktop.core.app_texts import app_text
     from rockly_desktop.core.errors import RocklyError
@@ -240,10 +228,13 @@ def _export(program_path: Path, output: Path, language: str) -> int:
 
     to_stdout = str(output) == "-" or _is_standard_output(output)
     try:
-        program, python, _run_code, _workspace = generate_headless(program_path, language)
+        program, python, run_code, workspace = generate_headless(program_path, language)
         for warning in opening_warnings(program, language):
             print(app_text("cli_warning", language, command="rockly export", warning=warning), file=sys.stderr)
-        text = python_module_text(python, program.profile.id, program_path.name)
+        if standalone:
+            text = _standalone_text(program_path, program.profile, run_code, workspace, language)
+        else:
+            text = python_module_text(python, program.profile.id, program_path.name)
         if to_stdout:
             sys.stdout.write(text)
             sys.stdout.flush()
@@ -255,6 +246,16 @@ def _export(program_path: Path, output: Path, language: str) -> int:
     if not to_stdout:
         print(app_text("cli_wrote", language, path=output))
     return 0
+
+
+def _standalone_text(program_path: Path, profile, run_code: dict, workspace: dict, language: str) -> str:
+    """The standalone file (``runtime.standalone_file``), with the teacher's limits the window keeps now."""
+    from rockly_desktop.core.workspace_blocks import block_types_by_id
+    from rockly_desktop.run_command import teacher_limits
+    from rockly_desktop.runtime.standalone_file import standalone_text
+
+    return standalone_text(program_path.name, profile, run_code, block_types_by_id(workspace),
+                           teacher_limits(profile.id), language)
 
 
 def _is_standard_output(path: Path) -> bool:
@@ -274,6 +275,8 @@ def main(argv=None) -> int:
     logging.basicConfig(level=os.environ.get("ROCKLY_LOG", "warning").upper(),
                         format="%(levelname)s %(name)s: %(message)s")
     if argv and argv[0] in SUBCOMMANDS:
+        from rockly_desktop.runtime.options import connection
+
         args = _tool_parser().parse_args(argv)
         if args.command in ("profiles", "plugins"):
             if args.profile_command == "new":
@@ -286,7 +289,7 @@ def main(argv=None) -> int:
 
             return run_program(args.program, args.answer, args.speed, args.language or _app_language(),
                                backend=args.backend,
-                               connection=_connection(args.backend, args), record=args.record)
+                               connection=connection(args.backend, args), record=args.record)
         if args.command in ("replay", "recordings"):
             from rockly_desktop.recording_command import list_recordings, replay
 
@@ -300,9 +303,9 @@ def main(argv=None) -> int:
         if args.command == "sim":
             from rockly_desktop.sim_command import serve_simulator
 
-            return serve_simulator(args.profile, args.serve_on, _connection(args.serve_on, args), args.speed,
+            return serve_simulator(args.profile, args.serve_on, connection(args.serve_on, args), args.speed,
                                    args.answer, window=args.window)
-        return _export(args.program, args.output, args.language or _app_language())
+        return _export(args.program, args.output, args.language or _app_language(), args.standalone)
     args = _gui_parser().parse_args(argv)
     from rockly_desktop.app import run_gui
 

@@ -107,7 +107,9 @@ def test_a_broken_program_file_is_explained(tmp_path):
     assert result.returncode == 1 and result.stderr.startswith("rockly run: ")
 
 
-def test_ctrl_c_stops_the_program_with_the_safe_stop(tmp_path):
+@pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM], ids=["Ctrl+C", "SIGTERM"])
+def test_ctrl_c_or_sigterm_stops_the_program_with_the_safe_stop(tmp_path, signum):
+    """Ctrl+C, or SIGTERM as a launch file or a service manager ends a process; exit status 128 + its number."""
     program = write(tmp_path, stack(block("hobbit_wait", inputs={"seconds": number(600)}, id="wait"),
                                     block("hobbit_sos", id="never")))
     process = subprocess.Popen([sys.executable, "-m", "rockly_desktop", "run", str(program)],
@@ -117,9 +119,9 @@ def test_ctrl_c_stops_the_program_with_the_safe_stop(tmp_path):
             break
     # The wait block has begun: Ctrl+C from now on ends its wait (a stop requested just
     # before the wait starts ends it at once as well).
-    process.send_signal(signal.SIGINT)
+    process.send_signal(signum)
     remaining, errors = process.communicate(timeout=20)
-    assert process.returncode == 130, errors
+    assert process.returncode == 128 + signum, errors
     assert "stopped (the robot was stopped safely)" in remaining
     assert "never" not in remaining
 

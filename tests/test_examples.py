@@ -86,6 +86,7 @@ def test_a_turtlebot_example_runs_unchanged_on_a_robot_declared_jazzy(example, m
     its end, and everything it (and its safe stop) sends on /cmd_vel is a TwistStamped."""
     from rockly_desktop import run_command
     from rockly_desktop.robot.wrappers.limits import Limits
+    from rockly_desktop.runtime import run as runtime_run
 
     sent_types = []
 
@@ -94,8 +95,8 @@ def test_a_turtlebot_example_runs_unchanged_on_a_robot_declared_jazzy(example, m
         robot.world.tap(lambda topic, msg_type, _message: sent_types.append(msg_type) if topic == "/cmd_vel" else None)
         return robot
 
-    real_open_link = run_command.open_link
-    monkeypatch.setattr(run_command, "open_link", open_link)
+    real_open_link = runtime_run.open_link
+    monkeypatch.setattr(runtime_run, "open_link", open_link)
     language = "de" if example.startswith("de/") else "en"
     lines = []
     # 10, not the CLI tests' 25: in this process, under load, the example's laser loop saw the box too late

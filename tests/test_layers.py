@@ -64,6 +64,29 @@ def test_a_ui_wing_using_what_its_contract_does_not_name_breaks_it(tmp_path, win
     assert ", 1 broken." in output
 
 
+RUNTIME_CONTRACT = ("The runtime (rockly-runtime) never imports Qt, the window or Blockly's bridge, directly or "
+                    "indirectly")
+QT_ADAPTER_CONTRACT = ("Only the window (ui) uses the runner's Qt adapter (executor.qt_adapter), which rockly-runtime "
+                       "leaves out")
+
+
+@pytest.mark.parametrize("where, sneaky, caught, contract", [
+    # indirectly: through a module outside the runtime that imports Qt itself (the other contracts allow that)
+    ("runtime", "from rockly_desktop.ui import settings\n",
+     "rockly_desktop.runtime.sneaky -> rockly_desktop.ui.settings", RUNTIME_CONTRACT),
+    ("robot", "from rockly_desktop import sim_command\n", "rockly_desktop.robot.sneaky -> rockly_desktop.sim_command",
+     RUNTIME_CONTRACT),
+    ("executor", "from rockly_desktop.executor import qt_adapter\n",
+     "rockly_desktop.executor.sneaky -> rockly_desktop.executor.qt_adapter", QT_ADAPTER_CONTRACT),
+])
+def test_the_runtime_reaching_qt_even_indirectly_breaks_its_contract(tmp_path, where, sneaky, caught, contract):
+    """What rockly-runtime installs never imports Qt, not even through a module that is not its own."""
+    copy_of_rockly(tmp_path)
+    (tmp_path / "rockly_desktop" / where / "sneaky.py").write_text(sneaky)
+    output = broken_contracts(tmp_path)
+    assert f"{contract} BROKEN" in output and caught in output
+
+
 def test_ros_outside_its_link_package_breaks_the_contracts(tmp_path):
     """Only robot/ros1 imports rospy, only robot/ros2 rclpy, and the rest reaches them through the registry."""
     copy_of_rockly(tmp_path)

@@ -3,13 +3,13 @@
 The window's texts, why a run stopped, a teacher's limits and the commands' shared errors
 are all here; a profile's own texts are in its own catalogue (``locale/`` beside its manifest).
 """
-from functools import cache
+from functools import lru_cache
 
 from rockly_desktop.core import paths
 from rockly_desktop.core.catalogue import Catalogue, LocalText
 
 
-@cache
+@lru_cache(maxsize=None)
 def app_catalogue() -> Catalogue:
     """The catalogue of Rockly's own texts."""
     return Catalogue(paths.data_root() / "resources" / "locale")

@@ -29,5 +29,5 @@ def _converted(value, keep_over):
         return value if all(items[key] is item for key, item in value.items()) else items
     if isinstance(value, list) and value and isinstance(value[0], (dict, list, array.array)):
         items = [_converted(item, keep_over) for item in value]
-        return value if all(new is old for new, old in zip(items, value, strict=True)) else items
+        return value if all(new is old for new, old in zip(items, value)) else items
     return value

@@ -37,7 +37,7 @@ class LocalNumbers(string.Formatter):
         return text.translate(self._marks) if self._marks else text
 
 
-@functools.cache
+@functools.lru_cache(maxsize=None)
 def number_format(language: str) -> LocalNumbers:
     """The formatter for ``language`` (made once): ``number_format("de").format("{:.2f}", 0.15)`` is "0,15"."""
     return LocalNumbers(language)

@@ -36,10 +36,18 @@ def _folders_in(parent: Path, source: str) -> list:
             if child.is_dir() and (child / MANIFEST_NAME).exists()]
 
 
+def _entry_points(group: str):
+    """The installed entry points of ``group`` (Python 3.8 and 3.9 have them only as a dict of groups)."""
+    installed = importlib.metadata.entry_points()
+    if hasattr(installed, "select"):
+        return installed.select(group=group)
+    return installed.get(group, ())
+
+
 def _entry_point_locations() -> list:
     """Profiles installed as Python packages: the entry point names a package holding profile.yaml."""
     locations = []
-    for entry_point in importlib.metadata.entry_points(group=ENTRY_POINT_GROUP):
+    for entry_point in _entry_points(ENTRY_POINT_GROUP):
         package = entry_point.value.split(":")[0].strip()
         source = f"entry point {entry_point.name}"
         try:

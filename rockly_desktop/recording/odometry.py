@@ -31,7 +31,7 @@ class RecordedPath:
 
     def __init__(self, topics: RecordedTopics, topic: str = ODOMETRY):
         self.times, self.poses = [], []
-        for stamp, message in zip(topics.times(topic), topics.messages(topic), strict=True):
+        for stamp, message in zip(topics.times(topic), topics.messages(topic)):
             pose = pose_of(message) if message is not None else None
             if pose is not None:
                 self.times.append(stamp)

@@ -10,7 +10,7 @@ says what was left out. A file that is no MCAP, or no recording of Rockly's, rai
 """
 import json
 from dataclasses import dataclass, field
-from itertools import pairwise
+from itertools import islice
 
 from mcap.records import Attachment, Channel, DataEnd, Footer, Message, Metadata, Schema
 
@@ -113,8 +113,9 @@ def read_recording(path, bounds: Bounds = BOUNDS) -> Recording:
         raise RecordingUnreadable("recording_not_rockly", path=path)
     recording.too_big, recording.read_in_part = report.too_big, report.stopped == "too_big"
     recording.damaged += report.damaged
-    if any(later[0] < earlier[0] for earlier, later in pairwise(rockly)):  # the writer writes in time order, so
-        rockly.sort(key=lambda item: item[0])  # this is rare: sorting 2 million in C held the GIL 0.07 s
+    # the writer writes in time order, so this is rare: sorting 2 million in C held the GIL 0.07 s
+    if any(later[0] < earlier[0] for earlier, later in zip(rockly, islice(rockly, 1, None))):
+        rockly.sort(key=lambda item: item[0])
     recording.start_ns = rockly[0][0] if rockly else 0
     rockly.reverse()  # taken from the end, each record is freed as its entry is made (all at once, a million
     while rockly:     # of them held the GIL for a tenth of a second)

@@ -46,7 +46,7 @@ def timeline_lines(recording: Recording) -> list:
     endings = [entry for entry in recording.entries if entry.channel == channels.COMMANDS
                and entry.data.get("kind") in _ENDINGS]
     last = ends[0] if ends else recording.duration
-    left_at = {id(block): later.time for block, later in zip(blocks, blocks[1:], strict=False)}
+    left_at = {id(block): later.time for block, later in zip(blocks, blocks[1:])}
     for entry in recording.entries:
         if entry.channel == channels.BLOCKS:
             left = left_at.get(id(entry), last)

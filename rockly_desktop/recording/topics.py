@@ -78,7 +78,7 @@ class RecordedTopics:
     def series(self, topic: str, path: str) -> tuple:
         """(times, numbers) of a numeric field over the whole recording."""
         times, numbers = [], []
-        for stamp, message in zip(self.times(topic), self.messages(topic), strict=True):
+        for stamp, message in zip(self.times(topic), self.messages(topic)):
             try:
                 number = field_value(message, path) if message is not None else None
             except KeyError:

@@ -143,8 +143,8 @@ class Hobbit(RobotCommands):
                 or self.allowed_speed(TURN_SPEED, turning=True) < TURN_SPEED):
             raise RobotCommandError(TEXTS("navigation_too_fast", speed=MOVE_SPEED, turn=math.degrees(TURN_SPEED)))
         pose = {"header": {"frame_id": "map"},
-                "pose": {"position": dict(zip("xyz", values[:3], strict=True)),
-                         "orientation": dict(zip("xyzw", values[3:], strict=True))}}
+                "pose": {"position": dict(zip("xyz", values[:3])),
+                         "orientation": dict(zip("xyzw", values[3:]))}}
         outcome = self.backend.send_goal(NAV_ACTION, NAV_ACTION_TYPE, {"target_pose": pose}).wait(MOTION_TIMEOUT)
         if outcome.status is not GoalStatus.SUCCEEDED:
             reason = self._navigation_reason(values[0], values[1], outcome)
@@ -246,7 +246,7 @@ class Hobbit(RobotCommands):
         second = self.backend.wait_for_message("/joint_states", "sensor_msgs/JointState", SENSOR_TIMEOUT)
         # messages from different publishers may list different joints; compare what both have
         return any(abs(a - b) > 1e-4
-                   for a, b in zip(first.get("position", [])[:6], second.get("position", [])[:6], strict=False))
+                   for a, b in zip(first.get("position", [])[:6], second.get("position", [])[:6]))
 
     def latest_value(self, topic, field):
         """The newest value of ``field`` (e.g. ``pose.pose.position.x``) on any ``topic``."""

@@ -397,7 +397,7 @@ class SimHobbit(RobotSimulator):
         task = self._arm_task
         there = ARM_JOINTS.get(task.command.pose, here) if task is not None and task.command.pose else here
         fraction = task.progress if task is not None else 0.0
-        self._last_joints = [a + (b - a) * fraction for a, b in zip(here, there, strict=True)]
+        self._last_joints = [a + (b - a) * fraction for a, b in zip(here, there)]
         return self._last_joints + [GRIPPER_OPENING[self._gripper]]
 
     # --- base -------------------------------------------------------------------------

@@ -94,7 +94,7 @@ def _fields(cls) -> dict:
     """``{field: type}`` of a message class, worked out once per class."""
     fields = _FIELDS.get(cls)
     if fields is None:
-        fields = _FIELDS[cls] = dict(zip(cls.__slots__, cls._slot_types, strict=True))
+        fields = _FIELDS[cls] = dict(zip(cls.__slots__, cls._slot_types))
     return fields
 
 

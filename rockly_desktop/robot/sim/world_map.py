@@ -61,7 +61,7 @@ class Obstacle:
 
 
 def _edges(points):
-    return zip(points, points[1:] + points[:1], strict=True)
+    return zip(points, points[1:] + points[:1])
 
 
 def _segment_distance(x, y, a, b):

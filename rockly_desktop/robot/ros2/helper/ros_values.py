@@ -26,7 +26,8 @@ class BadValue(TextError, ValueError):
 _FLOATS = {"float", "double", "long double"}
 
 
-@functools.cache  # every publish asks (a name found once stays found; a missing one is looked for again)
+# every publish asks (a name found once stays found; a missing one is looked for again)
+@functools.lru_cache(maxsize=None)
 def interface_class(name: str, kind: str):
     """The class of ``name`` (``pkg/Type`` or ``pkg/KIND/Type``); kind is msg, srv or action.
 
@@ -127,10 +128,10 @@ def _fill(message, data, path):
     return message
 
 
-@functools.cache
+@functools.lru_cache(maxsize=None)
 def slots(message_class) -> dict:
     """Field name -> its rosidl type, per class (asked for every message, so kept)."""
-    return dict(zip(message_class.get_fields_and_field_types(), message_class.SLOT_TYPES, strict=True))
+    return dict(zip(message_class.get_fields_and_field_types(), message_class.SLOT_TYPES))
 
 
 def from_message(message, compact: bool = False) -> dict:
@@ -146,13 +147,13 @@ def from_message(message, compact: bool = False) -> dict:
 _ROS1_TIME = {"secs": "sec", "nsecs": "nanosec"}
 
 
-@functools.cache
+@functools.lru_cache(maxsize=None)
 def is_header(message_class) -> bool:
     """Whether ``message_class`` is std_msgs/Header (ROS 1's ``seq`` is dropped from it)."""
     return message_class.__module__.startswith("std_msgs.") and message_class.__name__ == "Header"
 
 
-@functools.cache
+@functools.lru_cache(maxsize=None)
 def is_time(message_class) -> bool:
     """Whether ``message_class`` is a stamp or a duration (ROS 1's ``secs``/``nsecs`` are taken too)."""
     return message_class.__module__.startswith("builtin_interfaces.") and message_class.__name__ in ("Time", "Duration")

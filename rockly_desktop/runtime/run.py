@@ -1,0 +1,165 @@
+"""Running generated code on a robot to its end, without the window: what ``rockly run`` and a
+standalone export (``rockly export --standalone``) share.
+
+The caller hands in what a program is once generated (the profile, the page's run code, the
+block types by id) and the teacher's ``Limits`` in force; nothing here reads the window's settings,
+so it runs where Qt is not installed. The robot's safe stop runs however the run ends: finished,
+an error, Ctrl+C (SIGINT) or SIGTERM (a launch file or systemd ending it).
+"""
+import signal
+import sys
+
+from rockly_desktop.core.app_texts import app_text
+from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.executor.control import RunControl
+from rockly_desktop.executor.events import BlockEntered, OutputPrinted, RunFinished
+from rockly_desktop.executor.run_setup import limits_line, make_runner
+from rockly_desktop.recording.mcap_file import disk_full, problem_text
+from rockly_desktop.robot.links import open_link
+from rockly_desktop.robot.sim.answer_list import AnswerList
+from rockly_desktop.robot.wrappers.limits import Limits
+
+EXIT_FINISHED, EXIT_ERROR = 0, 1
+STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM)
+
+
+def exit_status_stopped(signum) -> int:
+    """The exit status of a run a signal stopped: 128 + its number (130 Ctrl+C, 143 SIGTERM), as a shell says."""
+    return 128 + int(signum)
+
+
+class Run:
+    """One run of ``run_code`` (the page's ``getRunCode`` answer) on ``profile``'s robot.
+
+    ``types``: block id -> block type (what the lines and events name); ``command``: the name the
+    lines on standard error start with; ``out``: where the program's lines go (its prints, the tablet's
+    questions, the teacher's limits); ``end_out``: where the line saying how it ended goes (an error's goes to
+    standard error); ``on_event``:
+    every executor event as it happens (an event stream, see ``runtime.event_stream``); ``trace``:
+    report every block entered (``rockly run`` prints them; an event stream needs them).
+    """
+
+    def __init__(self, profile, run_code: dict, types: dict, language: str = "en", command: str = "rockly run",
+                 out=print, on_event=None, trace: bool = True, end_out=print):
+        self.profile = profile
+        self.run_code = run_code
+        self.types = types
+        self.language = language
+        self.command = command
+        self.out = out
+        self.end_out = end_out
+        self.on_event = on_event
+        self.control = RunControl(trace=trace)
+        self.stopped_by = signal.SIGINT
+
+    def fail(self, error) -> int:
+        """Say ``error`` (a RocklyError) on standard error; the exit status of a failed run."""
+        text = error.in_language(self.language) if isinstance(error, RocklyError) else str(error)
+        print(f"{self.command}: {text}", file=sys.stderr)
+        return EXIT_ERROR
+
+    def warn(self, warning: str):
+        """Say ``warning`` on standard error."""
+        print(app_text("cli_warning", self.language, command=self.command, warning=warning), file=sys.stderr)
+
+    def run(self, backend: str, connection: dict = None, answers=(), speed: float = 1.0, limits: Limits = None,
+            record=None, program_name: str = None, program_bytes: bytes = None, print_blocks: bool = True) -> int:
+        """Open the ``backend`` link, run the program under ``limits`` and return the exit status
+        (0 finished, 1 error, 128 + the signal's number when SIGINT or SIGTERM stopped it).
+
+        ``record``: an MCAP file to record the run to (``program_name``, ``program_bytes``: what it keeps
+        of the program); ``print_blocks``: a line on ``out`` for every block entered."""
+        language = self.language
+        try:
+            robot = open_link(backend, self.profile, connection,
+                              tablet=AnswerList(answers, self.out, language=language), speed=speed)
+        except RocklyError as error:
+            return self.fail(error)
+        for warning in robot.warnings():
+            self.warn(app_text(f"ros_{warning.reason}", language, **warning.values))
+        limits = limits or Limits()
+        line = limits_line(self.profile, limits, language)
+        if line:
+            self.out(line)
+        try:
+            recording = self._recording(record, robot, program_name, program_bytes)
+        except OSError as error:  # a path the person can mend: nothing has moved yet
+            print(app_text("cli_cannot_record", language, command=self.command, path=record,
+                           reason=problem_text(error, language)), file=sys.stderr)
+            robot.shutdown()
+            return EXIT_ERROR
+        previous = {signum: signal.signal(signum, self._stop_once()) for signum in STOP_SIGNALS}
+        try:
+            result = make_runner(self.profile, robot, self.run_code, self.control, self._reporter(print_blocks),
+                                 language, limits, recording=recording).run()
+        except RocklyError as error:  # the profile's commands could not be made
+            return self.fail(error)
+        finally:
+            for signum, handler in previous.items():
+                signal.signal(signum, handler)
+            if recording is not None:
+                recording.close()
+            robot.shutdown()
+        return self._report_end(result)
+
+    def _stop_once(self):
+        """A handler for SIGINT and SIGTERM asking the run to stop, for the first signal only: a second
+        one interrupting the first inside ``request_stop()`` would wait forever for the lock it holds."""
+        stopping = []
+
+        def handler(signum, _frame):
+            if not stopping:
+                stopping.append(signum)
+                self.stopped_by = signum
+                self.control.request_stop()
+        return handler
+
+    def _reporter(self, print_blocks: bool):
+        language, types, out, on_event = self.language, self.types, self.out, self.on_event
+
+        def report(event):
+            if isinstance(event, BlockEntered):
+                if print_blocks:
+                    out(app_text("cli_block", language, id=event.block_id, type=types.get(event.block_id, "?")))
+            elif isinstance(event, OutputPrinted):
+                out(app_text("cli_print", language, text=event.text))
+            if on_event is not None:
+                on_event(event)
+        return report
+
+    def _recording(self, record, robot, program_name, program_bytes):
+        """The run's recording to ``record`` (None without one, or when the disk is full: said, and the
+        program runs all the same); a write failing later is said once."""
+        if record is None:
+            return None
+        from rockly_desktop.executor.run_recording import RunRecording
+
+        def stopped(error):
+            self.warn(app_text("recording_stopped", self.language, path=record,
+                               reason=problem_text(error, self.language)))
+
+        try:
+            return RunRecording(record, self.profile, robot, program_name, program_bytes, self.types,
+                                on_stopped=stopped)
+        except OSError as error:
+            if not disk_full(error):
+                raise
+            self.warn(app_text("recording_not_started", self.language, path=record,
+                               reason=problem_text(error, self.language)))
+            return None
+
+    def _report_end(self, result: RunFinished) -> int:
+        language = self.language
+        if result.outcome == "finished":
+            self.end_out(app_text("cli_finished", language))
+            return EXIT_FINISHED
+        if result.outcome == "stopped":
+            self.end_out(app_text("cli_stopped", language))
+            return exit_status_stopped(self.stopped_by)
+        if result.block_id:
+            text = app_text("cli_error_in_block", language, id=result.block_id,
+                            type=self.types.get(result.block_id, "?"), message=result.message)
+        else:
+            text = app_text("cli_error_in_program", language, message=result.message)
+        print(text, file=sys.stderr)
+        return EXIT_ERROR
