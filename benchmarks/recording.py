@@ -130,7 +130,7 @@ def gui_while_recording(folder: Path):
     from PySide6.QtCore import QCoreApplication, QEvent, QEventLoop, QTimer
 
     from rockly_desktop.app import build_main_window, create_application
-    from rockly_desktop.ui.settings import AppSettings
+    from rockly_desktop.settings.app_settings import AppSettings
 
     app = create_application()
     settings_path = str(folder / "settings.ini")

@@ -67,13 +67,13 @@ def build_main_window(settings_path=None, extra_profile_dirs=(), kiosk: bool = F
     if first_setup is not None:  # the page builds that profile's workspace while the window is made
         editor.prepare(*first_setup)
     main_window_class = while_events_run(_main_window_class)
+    from rockly_desktop.settings.app_settings import AppSettings
     from rockly_desktop.ui.qt_language import use_language
-    from rockly_desktop.ui.settings import AppSettings
 
     settings = AppSettings(settings_path)
     settings.kiosk_mode = kiosk
     use_language(settings.language)  # Qt's own buttons and dialogs, now and whenever the language changes
-    settings.language_watchers.append(use_language)
+    settings.current_language.watch(use_language)
     return main_window_class(registry, settings, editor)
 
 
@@ -81,7 +81,7 @@ def _read_profiles(settings_path, extra_profile_dirs):
     """The installed profiles, and ``EditorView.prepare``'s arguments for the one the window
     starts with, as the settings name it (None if no profile is installed)."""
     from rockly_desktop.profiles.registry import ProfileRegistry
-    from rockly_desktop.ui.settings import AppSettings
+    from rockly_desktop.settings.app_settings import AppSettings
     from rockly_desktop.ui.texts import editor_page_texts
 
     remembered = AppSettings(settings_path)  # this thread's own reader; the window makes its own
@@ -149,7 +149,7 @@ def start_kiosk(window, start_program=None):
     """Make ``window`` (built with ``kiosk=True``) a kiosk with ``start_program`` and show it full
     screen; the caller then starts it with the same program. Returns the Kiosk, or None (after
     saying why) when no teacher PIN or key chord is set: nobody could leave it."""
-    from rockly_desktop.ui.kiosk.kiosk import Kiosk, can_be_left
+    from rockly_desktop.ui.kiosk.kiosk import can_be_left
 
     if not can_be_left(window.settings):
         from PySide6.QtWidgets import QMessageBox
@@ -160,7 +160,7 @@ def start_kiosk(window, start_program=None):
                              tr("kiosk_no_way_out", window.language))
         window.deleteLater()
         return None
-    kiosk = Kiosk(window, start_program)
+    kiosk = window.become_kiosk(start_program)
     window.showFullScreen()
     return kiosk
 

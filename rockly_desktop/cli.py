@@ -117,7 +117,7 @@ def _text(key: str) -> str:
 
 def _app_language() -> str:
     """The language chosen in the app's settings (Preferences)."""
-    from rockly_desktop.ui.settings import AppSettings
+    from rockly_desktop.settings.app_settings import AppSettings
 
     return AppSettings().language
 

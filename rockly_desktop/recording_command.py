@@ -30,7 +30,7 @@ def list_recordings(folder=None, language: str = "en") -> int:
     """Print the recordings in ``folder`` (default: the preferences' recordings folder), newest first;
     1 when the folder cannot be read."""
     if folder is None:
-        from rockly_desktop.ui.settings import AppSettings
+        from rockly_desktop.settings.app_settings import AppSettings
 
         folder = AppSettings().recordings_folder
     try:

@@ -49,7 +49,7 @@ def teacher_limits(profile_id: str, teacher=None):
     """The teacher's limits for ``profile_id``: from ``teacher`` (TeacherSettings), by default the window's
     (the same settings file)."""
     if teacher is None:
-        from rockly_desktop.ui.settings import AppSettings
+        from rockly_desktop.settings.app_settings import AppSettings
 
         teacher = AppSettings().teacher
     return teacher.limits(profile_id)

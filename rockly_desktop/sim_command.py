@@ -73,8 +73,8 @@ def _serve_with_window(profile, kind, connection, speed, answers, out) -> int:
     from PySide6.QtCore import QTimer
 
     from rockly_desktop.app import create_application
+    from rockly_desktop.settings.app_settings import AppSettings
     from rockly_desktop.ui.docks.sim_window import SimulatorWindow
-    from rockly_desktop.ui.settings import AppSettings
 
     app = create_application()
     window = SimulatorWindow(profile, AppSettings().language)

@@ -171,7 +171,7 @@ def test_bad_choices_each_say_what_is_wrong_and_write_nothing(made_pack):
 
 
 def test_a_teachers_limits_hold_for_made_blocks_as_for_every_block(tmp_path, made_pack, isolated_user_folders):
-    from rockly_desktop.ui.settings import AppSettings
+    from rockly_desktop.settings.app_settings import AppSettings
 
     make("--id", "speed", "--kind", "sensor_value", "--interface", "/odom", "--type", "nav_msgs/Odometry",
          "--read-field", "twist.twist.linear.x", "--sentence-en", "speed")

@@ -18,7 +18,7 @@ def rockly_run(*args, timeout=120):
 
 
 def teacher(folders):
-    from rockly_desktop.ui.settings import AppSettings
+    from rockly_desktop.settings.app_settings import AppSettings
 
     return AppSettings(folders / "config" / "Rockly" / "Rockly.conf")  # where the window keeps them
 

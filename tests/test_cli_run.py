@@ -201,7 +201,7 @@ def test_a_missing_file_is_explained_in_german(tmp_path):
     assert result.returncode == 1
     assert result.stderr == f"rockly run: {tmp_path / 'nowhere.rockly'}: Die Datei gibt es nicht\n"
 def test_run_keeps_the_teachers_limits_from_the_windows_settings(tmp_path, isolated_user_folders):
-    from rockly_desktop.ui.settings import AppSettings
+    from rockly_desktop.settings.app_settings import AppSettings
 
     settings = AppSettings(isolated_user_folders / "config" / "Rockly" / "Rockly.conf")  # where the window keeps them
     settings.teacher.set_limits("hobbit", max_speed=0.1, max_turn=30, switched_off={"arm"})

@@ -17,8 +17,10 @@ def lint_imports(cwd: Path):
 
 
 def copy_of_rockly(folder: Path):
-    """Rockly's package and its contracts, copied into ``folder`` to break a contract there."""
-    shutil.copytree(REPO / "rockly_desktop", folder / "rockly_desktop", ignore=shutil.ignore_patterns("__pycache__"))
+    """Rockly's package and its contracts (with the contract types of its own), copied into ``folder`` to
+    break a contract there."""
+    for package in ("rockly_desktop", "tools"):
+        shutil.copytree(REPO / package, folder / package, ignore=shutil.ignore_patterns("__pycache__"))
     shutil.copy(REPO / "pyproject.toml", folder)
 
 
@@ -72,8 +74,8 @@ QT_ADAPTER_CONTRACT = ("Only the window (ui) uses the runner's Qt adapter (execu
 
 @pytest.mark.parametrize("where, sneaky, caught, contract", [
     # indirectly: through a module outside the runtime that imports Qt itself (the other contracts allow that)
-    ("runtime", "from rockly_desktop.ui import settings\n",
-     "rockly_desktop.runtime.sneaky -> rockly_desktop.ui.settings", RUNTIME_CONTRACT),
+    ("runtime", "from rockly_desktop.settings import app_settings\n",
+     "rockly_desktop.runtime.sneaky -> rockly_desktop.settings.app_settings", RUNTIME_CONTRACT),
     ("robot", "from rockly_desktop import sim_command\n", "rockly_desktop.robot.sneaky -> rockly_desktop.sim_command",
      RUNTIME_CONTRACT),
     ("executor", "from rockly_desktop.executor import qt_adapter\n",
@@ -145,6 +147,27 @@ def test_rclpy_on_rocklys_side_of_ros2_or_the_helper_imported_there_breaks_the_c
     assert "rockly_desktop.robot.ros2.sim_bridge -> rclpy" in output
     assert "rockly_desktop.robot.ros2.later -> rockly_desktop.robot.ros2.helper.ros_values" in output
     assert ", 2 broken." in output
+
+
+def test_settings_reaching_past_qtcore_up_into_ui_or_into_robots_break_the_contracts(tmp_path):
+    """Settings are data on QSettings (QtCore) only, below the window: the command line reads them without widgets."""
+    copy_of_rockly(tmp_path)
+    settings = tmp_path / "rockly_desktop" / "settings"
+    kiosk = settings / "kiosk.py"
+    kiosk.write_text(kiosk.read_text(encoding="utf-8") + "\n\ndef chord_text(chord):\n    from PySide6 import QtGui\n\n"
+                     "    return QtGui.QKeySequence(chord).toString()\n", encoding="utf-8")
+    (settings / "sneaky.py").write_text("from PySide6.QtWidgets import QWidget\nimport PySide6.QtWebEngineCore\n"
+                                        "from rockly_desktop.ui import texts\n"
+                                        "from rockly_desktop.recording import library\n")
+    output = broken_contracts(tmp_path)
+    assert "settings use only QtCore of Qt" in output
+    assert "rockly_desktop.settings.kiosk -> PySide6.QtGui (l." in output
+    assert "rockly_desktop.settings.sneaky -> PySide6.QtWidgets (l.1)" in output
+    assert "rockly_desktop.settings.sneaky -> PySide6.QtWebEngineCore (l.2)" in output
+    assert "rockly_desktop.settings.sneaky -> rockly_desktop.ui.texts" in output
+    assert "rockly_desktop.settings.sneaky -> rockly_desktop.recording.library" in output
+    assert "app_settings ->" not in output and "teacher ->" not in output  # QtCore's QSettings; the teacher's Limits
+    assert ", 3 broken." in output
 
 
 def test_no_rockly_module_mentions_a_particular_robot():

@@ -28,12 +28,13 @@ _KINDS = ((QTabBar, "a11y_tabs"), (QAbstractItemView, "a11y_table"), (QLineEdit,
           (QAbstractSlider, "a11y_slider"), (QAbstractSpinBox, "a11y_number"))
 
 
-def name_controls(window, language: str):
-    """Name every control of ``window`` that takes the keyboard and has no name of its own."""
+def name_controls(window, language: str, editor, run_toolbar):
+    """Name every control of ``window`` (a QMainWindow) that takes the keyboard and has no name of its
+    own; the block ``editor`` and ``run_toolbar``'s speed and Run-on say what they are for."""
     editor_name = tr("a11y_block_editor", language)
-    special = {window.editor: editor_name, window.editor.focusProxy(): editor_name,
-               window.run_toolbar.speed: tr("speed", language),
-               window.run_toolbar.backend: tr("run_on", language).rstrip(": ")}
+    special = {editor: editor_name, editor.focusProxy(): editor_name,
+               run_toolbar.speed: tr("speed", language),
+               run_toolbar.backend: tr("run_on", language).rstrip(": ")}
     for widget in window.findChildren(QWidget):
         if not (widget.focusPolicy() or widget in special or isinstance(widget, QAbstractButton)
                 or isinstance(widget.parentWidget(), QDockWidget)):

@@ -12,9 +12,11 @@ from PySide6.QtWidgets import QApplication, QDockWidget, QFrame, QTabBar, QToolB
 from rockly_desktop.ui.accessible_names import name_controls
 from rockly_desktop.ui.texts import tr
 
-# (action key in the catalogue, keys, where it goes); Ctrl+digit clashes with none of Rockly's or Blockly's keys
-JUMPS = (("jump_toolbox", "Ctrl+1", "toolbox"), ("jump_blocks", "Ctrl+2", "blocks"), ("jump_code", "Ctrl+3", "code"),
-         ("jump_console", "Ctrl+4", "console"), ("jump_simulator", "Ctrl+5", "simulator"))
+# (action key in the catalogue, keys, where it goes: the editor's toolbox or blocks, or a dock's key in
+# ui/docks/registry.py); Ctrl+digit clashes with none of Rockly's or Blockly's keys
+JUMPS = (("jump_toolbox", "Ctrl+1", "toolbox"), ("jump_blocks", "Ctrl+2", "blocks"),
+         ("jump_code", "Ctrl+3", "code_dock"), ("jump_console", "Ctrl+4", "console_dock"),
+         ("jump_simulator", "Ctrl+5", "simulator_dock"))
 
 # The focus ring: a frame laid over the focused control, drawn by this style sheet rule.
 FOCUS_RING_STYLE = "QFrame#focus_ring { border: 3px solid #ff6d00; border-radius: 4px; background: transparent; }"
@@ -56,28 +58,38 @@ class FocusRing(QFrame):
 
 
 class KeyboardAccess(QObject):
-    """Installs Tab order, the focus ring and the jump keys on ``window`` (a ``MainWindow``)."""
+    """Installs Tab order, the focus ring and the jump keys on ``frame`` (the QMainWindow).
 
-    def __init__(self, window):
-        super().__init__(window)
-        self.window = window
+    ``editor`` is the block editor, ``run_toolbar()`` the run toolbar of the moment, ``docks`` the
+    window's ``registry.Docks``, ``language()`` the window's language; with ``settings.kiosk_mode`` a
+    closed dock stays closed. Each signal in ``renamed_on`` says that controls may have come or gone.
+    """
+
+    def __init__(self, frame, editor, run_toolbar, docks, language, settings, renamed_on=()):
+        super().__init__(frame)
+        self.frame = frame
+        self._editor = editor
+        self._run_toolbar = run_toolbar
+        self._docks = docks
+        self._language = language
+        self._settings = settings
         self.ring = None
-        self._previous = QShortcut(QKeySequence("Shift+Tab"), window, lambda: self.move(-1))  # (Backtab too)
-        self._next = QShortcut(QKeySequence(Qt.Key.Key_Tab), window, lambda: self.move(1))
+        self._previous = QShortcut(QKeySequence("Shift+Tab"), frame, lambda: self.move(-1))  # (Backtab too)
+        self._next = QShortcut(QKeySequence(Qt.Key.Key_Tab), frame, lambda: self.move(1))
         self.jump_actions = {}
         for key, keys, place in JUMPS:
-            action = QAction(tr(key, window.language), window)
+            action = QAction(tr(key, language()), frame)
             action.setObjectName(f"action_{key}")
             action.setShortcut(QKeySequence(keys))
             action.setShortcutContext(Qt.ShortcutContext.WindowShortcut)
             action.triggered.connect(lambda _checked=False, place=place: self.jump(place))
-            window.addAction(action)
+            frame.addAction(action)
             self.jump_actions[key] = action
         QApplication.instance().focusChanged.connect(self._on_focus_changed)
         self._following = True
-        window.editor.sig_ready.connect(self._on_editor_ready)
-        window.robots.sig_robot_changed.connect(self.name_controls)
-        window.plot_dock.visibilityChanged.connect(self.name_controls)
+        editor.sig_ready.connect(self._on_editor_ready)
+        for signal in renamed_on:
+            signal.connect(self.name_controls)
         self._toolbar_buttons_take_focus()
         self.name_controls()
 
@@ -95,23 +107,23 @@ class KeyboardAccess(QObject):
     def stops(self) -> list:
         """Every control Tab reaches, in reading order: the run toolbar, the blocks (and the replay bar
         under them), then the docks on the right and at the bottom, each from top to bottom, left to right."""
-        window = self.window
+        frame, editor = self.frame, self._editor
         self._toolbar_buttons_take_focus()
-        order = {widget: index for index, widget in enumerate(_focus_chain(window))}
+        order = {widget: index for index, widget in enumerate(_focus_chain(frame))}
         groups = {}
         for widget in order:
-            if widget is window or not _reachable(widget, window):
+            if widget is frame or not _reachable(widget, frame):
                 continue
-            if _inside(widget, window.editor) and widget is not window.editor:
+            if _inside(widget, editor) and widget is not editor:
                 continue  # the web view's inner widget: the view itself is the stop
             groups.setdefault(self._container(widget), []).append(widget)
-        for dock in window.findChildren(QDockWidget):  # a dock with nothing to focus is one stop itself
+        for dock in frame.findChildren(QDockWidget):  # a dock with nothing to focus is one stop itself
             content = dock.widget()
-            if content is not None and dock not in groups and _reachable(content, window, any_policy=True):
+            if content is not None and dock not in groups and _reachable(content, frame, any_policy=True):
                 content.setFocusPolicy(Qt.FocusPolicy.TabFocus)
                 groups[dock] = [content]
-        if window.editor.isVisible():
-            groups.setdefault(window.editor, [window.editor])
+        if editor.isVisible():
+            groups.setdefault(editor, [editor])
         ordered = sorted(groups, key=self._reading_place)
         stops, taking = [], set()
         for container in ordered:
@@ -123,7 +135,7 @@ class KeyboardAccess(QObject):
 
     def _toolbar_buttons_take_focus(self):
         """Run, STOP and Put back are controls too (a toolbar's buttons take no focus of their own)."""
-        toolbar = self.window.run_toolbar
+        toolbar = self._run_toolbar()
         for action in toolbar.actions():
             button = toolbar.widgetForAction(action)
             if isinstance(button, QToolButton) and button.focusPolicy() == Qt.FocusPolicy.NoFocus:
@@ -131,29 +143,29 @@ class KeyboardAccess(QObject):
 
     def _container(self, widget):
         """What ``widget`` belongs to for the reading order: a toolbar, a dock, a dock's tab bar, the centre."""
-        window = self.window
+        frame = self.frame
         node = widget
-        while node is not None and node is not window:
-            if isinstance(node, (QToolBar, QDockWidget)) or node is window.editor:
+        while node is not None and node is not frame:
+            if isinstance(node, (QToolBar, QDockWidget)) or node is self._editor:
                 return node
-            if isinstance(node, QTabBar) and node.parentWidget() is window:
+            if isinstance(node, QTabBar) and node.parentWidget() is frame:
                 return node
             node = node.parentWidget()
-        return window.centralWidget()
+        return frame.centralWidget()
 
     def _reading_place(self, container):
-        window = self.window
+        frame = self.frame
         if isinstance(container, QToolBar):
             region = 0
-        elif container is window.editor or container is window.centralWidget():
-            region = 1 if container is window.editor else 2
+        elif container is self._editor or container is frame.centralWidget():
+            region = 1 if container is self._editor else 2
         else:
-            area = window.dockWidgetArea(container) if isinstance(container, QDockWidget) else None
-            top_left = container.mapTo(window, container.rect().topLeft())
+            area = frame.dockWidgetArea(container) if isinstance(container, QDockWidget) else None
+            top_left = container.mapTo(frame, container.rect().topLeft())
             bottom = area == Qt.DockWidgetArea.BottomDockWidgetArea or (
-                area is None and top_left.y() > window.centralWidget().geometry().bottom() - 1)
+                area is None and top_left.y() > frame.centralWidget().geometry().bottom() - 1)
             region = 4 if bottom else 3
-        top_left = container.mapTo(window, container.rect().topLeft())
+        top_left = container.mapTo(frame, container.rect().topLeft())
         return region, top_left.y(), top_left.x()
 
     def move(self, step: int):
@@ -176,28 +188,28 @@ class KeyboardAccess(QObject):
     def give_focus(self, widget, reason=Qt.FocusReason.OtherFocusReason):
         """Focus ``widget``; the block editor gets its workspace focused, Blockly's keys on."""
         widget.setFocus(reason)
-        if widget is self.window.editor:
-            self.window.editor.call("focusWorkspace")
+        if widget is self._editor:
+            self._editor.call("focusWorkspace")
 
     # --- jumps --------------------------------------------------------------------------
 
     def jump(self, place: str):
-        """Give the keyboard to the toolbox, the blocks, the code, the console or the simulator."""
-        window = self.window
+        """Give the keyboard to the toolbox, the blocks, or a dock by its key (code, console, simulator)."""
+        frame = self.frame
         if place in ("toolbox", "blocks"):
-            window.editor.setFocus(Qt.FocusReason.ShortcutFocusReason)
-            window.editor.call("focusToolbox" if place == "toolbox" else "focusWorkspace")
+            self._editor.setFocus(Qt.FocusReason.ShortcutFocusReason)
+            self._editor.call("focusToolbox" if place == "toolbox" else "focusWorkspace")
             return
-        dock = {"code": window.code_dock, "console": window.console, "simulator": window.simulator_dock}[place]
+        dock = self._docks[place]
         if dock.isHidden():
-            if window.settings.kiosk_mode:
+            if self._settings.kiosk_mode:
                 return  # a kiosk's closed docks stay closed
             dock.show()
         dock.raise_()
         self.stops()  # (makes a dock with nothing else to focus focusable)
         target = dock.widget()
-        candidates = [widget for widget in _focus_chain(window) if _inside(widget, target)
-                      and widget.focusPolicy() & Qt.FocusPolicy.TabFocus and widget.isVisibleTo(window)]
+        candidates = [widget for widget in _focus_chain(frame) if _inside(widget, target)
+                      and widget.focusPolicy() & Qt.FocusPolicy.TabFocus and widget.isVisibleTo(frame)]
         target = candidates[0] if candidates else target
         target.setFocus(Qt.FocusReason.ShortcutFocusReason)
 
@@ -205,32 +217,32 @@ class KeyboardAccess(QObject):
 
     def name_controls(self, *_args):
         """Give every control of the window its accessible name in the window's language."""
-        name_controls(self.window, self.window.language)
+        name_controls(self.frame, self._language(), self._editor, self._run_toolbar())
 
     def set_language(self, language: str):
         """The window now speaks ``language``: the jump keys' names and the controls' names follow."""
         for key, action in self.jump_actions.items():
             action.setText(tr(key, language))
         self._toolbar_buttons_take_focus()  # (the toolbar was made anew)
-        name_controls(self.window, language)
+        name_controls(self.frame, language, self._editor, self._run_toolbar())
 
     def _on_editor_ready(self):
         self.name_controls()
         focused = QApplication.focusWidget()
-        if focused is None or _inside(focused, self.window.editor):  # a fresh window: keys go to the blocks
-            self.give_focus(self.window.editor)
+        if focused is None or _inside(focused, self._editor):  # a fresh window: keys go to the blocks
+            self.give_focus(self._editor)
 
     def _on_focus_changed(self, _old, new):
-        if not shiboken6.isValid(self.window) or new is None or new.window() is not self.window:
+        if not shiboken6.isValid(self.frame) or new is None or new.window() is not self.frame:
             return  # (another window, a dialog, has the keyboard: the ring stays where it comes back to)
         if not new.accessibleName():  # a control made since the window was last named
             self.name_controls()
         if self.ring is None or not shiboken6.isValid(self.ring):  # it went with the control it lay over
-            self.ring = FocusRing(self.window)
+            self.ring = FocusRing(self.frame)
         if QApplication.mouseButtons() != Qt.MouseButton.NoButton:
             self.ring.follow(None)  # a click or a touch shows where it went by itself: the ring is for keys
             return
-        self.ring.follow(self.window.editor if _inside(new, self.window.editor) else new)
+        self.ring.follow(self._editor if _inside(new, self._editor) else new)
 
 
 def _focus_chain(window) -> list:

@@ -1,19 +1,16 @@
 """Rockly's main window: the block editor, the run toolbar, the docks, menus and the status bar."""
 from PySide6.QtCore import QEvent, Qt, QTimer
 from PySide6.QtGui import QAction, QActionGroup, QKeySequence
-from PySide6.QtWidgets import QApplication, QDockWidget, QLabel, QMainWindow, QMessageBox
+from PySide6.QtWidgets import QApplication, QLabel, QMainWindow, QMessageBox
 
 from rockly_desktop import __version__
 from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS, EditorView
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.recovery import RecoverySession, claim_abandoned
-from rockly_desktop.ui.docks.code_dock import CodeDock
-from rockly_desktop.ui.docks.console_dock import ConsoleDock
-from rockly_desktop.ui.docks.simulator_dock import SimulatorDock
+from rockly_desktop.ui.docks.registry import Docks
 from rockly_desktop.ui.docks.stage_layout import BottomTabSizes, StageLayout, keep_side_docks_full_height
 from rockly_desktop.ui.docks.state_panels import StatePanels
 from rockly_desktop.ui.docks.tablet import QtTablet
-from rockly_desktop.ui.docks.variables_dock import VariablesDock
 from rockly_desktop.ui.files.autosave import Autosave
 from rockly_desktop.ui.files.document import Document
 from rockly_desktop.ui.files.examples_menu import ExamplesMenu
@@ -47,7 +44,6 @@ class MainWindow(QMainWindow):
         super().__init__()
         self.registry = registry
         self.settings = settings
-        self.language = settings.language
         self.document = Document(self._initial_profile(), self)
         self._starting = False
         self._editor_started = False
@@ -61,37 +57,25 @@ class MainWindow(QMainWindow):
 
         self.editor = editor or EditorView()
         self.editor.set_look(settings.block_look)
-        self.replay_bar = ReplayBar(self.language, self)
+        self.replay_bar = ReplayBar(settings.current_language, self)
         self.setCentralWidget(under(self.editor, self.replay_bar))
-        self.simulator_dock = SimulatorDock(tr("simulator_dock", self.language), self)
-        self.code_dock = CodeDock(tr("code_dock", self.language), self)
-        self.variables = VariablesDock(tr("variables_dock", self.language),
-                                       (tr("variable", self.language), tr("value", self.language)), self)
-        self.console = ConsoleDock(tr("console_dock", self.language), self)
-        self.state_dock = QDockWidget(tr("state_dock", self.language), self)
-        self.state_dock.setObjectName("state_dock")
-        self.monitor_dock = QDockWidget(tr("monitor_dock", self.language), self)
-        self.monitor_dock.setObjectName("monitor_dock")
-        self.plot_dock = QDockWidget(tr("plot_dock", self.language), self)
-        self.plot_dock.setObjectName("plot_dock")
+        self.docks = Docks(self, self.language)  # every dock, as ui/docks/registry.py lists them
+        # the docks the window itself fills or talks to
+        self.simulator_dock, self.code_dock = self.docks["simulator_dock"], self.docks["code_dock"]
+        self.variables, self.state_dock = self.docks["variables_dock"], self.docks["state_dock"]
+        self.console, self.monitor_dock = self.docks["console_dock"], self.docks["monitor_dock"]
+        self.plot_dock = self.docks["plot_dock"]
         # the plot is made when its tab first shows (once a robot's store is there to plot from)
         self.plot_dock.visibilityChanged.connect(
             lambda visible: visible and self._plot_store is not None and self.plot_panel())
-        self.bottom_tabs = BottomTabSizes(self, (self.console, self.monitor_dock, self.plot_dock),
-                                          roomy=(self.monitor_dock, self.plot_dock))
+        bottom = Qt.DockWidgetArea.BottomDockWidgetArea
+        self.bottom_tabs = BottomTabSizes(self, self.docks.where(lambda spec: spec.area == bottom),
+                                          roomy=self.docks.where(lambda spec: spec.roomy))
         keep_side_docks_full_height(self)
         self._plot_store = None
-        self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.simulator_dock)
-        self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.code_dock)
-        self.tabifyDockWidget(self.code_dock, self.variables)
-        self.tabifyDockWidget(self.code_dock, self.state_dock)
-        self.code_dock.raise_()
-        self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.console)
-        self.tabifyDockWidget(self.console, self.monitor_dock)
-        self.tabifyDockWidget(self.console, self.plot_dock)
-        self.console.raise_()
+        self.docks.place()
         self.profile_label = plain_label(parent=self, objectName="profile_label")
-        self.tablet = QtTablet(self, self.profile.display_name())
+        self.tablet = QtTablet(self, self.profile.display_name(), lambda: self.language)
         self.tablet.sig_notice.connect(lambda _robot, text: self.console.append(
             tr("robot_says", self.language, text=text), "robot"))
         self.robots = RobotChoice(self.document, self.tablet, settings, self)
@@ -100,14 +84,15 @@ class MainWindow(QMainWindow):
         self.runs.sig_state_changed.connect(self._on_run_state)
         self.runs.sig_status.connect(lambda text: self.statusBar().showMessage(text))
         self.tablet.sig_dismissed.connect(self.runs.stop)
-        self.replay = Replay(self.replay_bar, self.editor, self.variables, self.simulator_dock, self.language, self,
+        self.replay = Replay(self.replay_bar, self.editor, self.variables, self.simulator_dock,
+                             settings.current_language, self,
                              lambda: badges_shown(self.settings, self.profile.id), self.console, self._made_plot,
                              lambda: self.state_dock.widget() if isinstance(self.state_dock.widget(), StatePanels)
                              else None, self.robots, registry)
         self.runs.sig_state_changed.connect(lambda state: state == "starting" and self.replay.close())
         self.runs.sig_finished.connect(lambda _result: self.runs.last_recording and self.replay.open(
             self.runs.last_recording, quiet=True))
-        self.health = HealthBar(self.language, self)
+        self.health = HealthBar(settings.current_language, self)
         self.health.sig_refreshed.connect(self.robots.show_health)  # one source for the light and the status
         self.statusBar().addPermanentWidget(self.health)
         self.statusBar().addPermanentWidget(self.robots.status)
@@ -133,17 +118,17 @@ class MainWindow(QMainWindow):
         self.editor.sig_page_error.connect(
             lambda message: self.statusBar().showMessage(tr("editor_error", self.language, message=message), 15000))
 
-        self.stage = StageLayout(self, settings)
+        self.stage = StageLayout(self, settings, self.editor, self.robots, self.docks)
         self._build_menus()
         self.document.sig_profile_changed.connect(self._on_profile_changed)
-        self.keys = KeyboardAccess(self)
+        self.keys = KeyboardAccess(self, self.editor, lambda: self.run_toolbar, self.docks, lambda: self.language,
+                                   settings, renamed_on=(self.robots.sig_robot_changed,
+                                                         self.plot_dock.visibilityChanged))
         fit_first_window(self)
         if settings.window_geometry is not None:
             self.restoreGeometry(settings.window_geometry)
         if settings.window_state is None or not self.restoreState(settings.window_state):
-            self.resizeDocks([self.code_dock], [460], Qt.Orientation.Horizontal)
-            self.resizeDocks([self.simulator_dock, self.code_dock], [420, 300], Qt.Orientation.Vertical)
-            self.resizeDocks([self.console], [130], Qt.Orientation.Vertical)
+            self.docks.give_first_sizes()
         self.stage.restore_remembered()
         self._update_title()
 
@@ -196,6 +181,17 @@ class MainWindow(QMainWindow):
         self.profile_label.setText(tr("robot_status", self.language, name=self.profile.display_name(self.language)))
         if self._robot_shown:
             self.show_robot()
+
+    def become_kiosk(self, start_program=None):
+        """Make this window (built with ``settings.kiosk_mode`` on) a kiosk whose start program is
+        ``start_program`` (see ``kiosk.Kiosk``); the teacher's commands then ask for the PIN first."""
+        from rockly_desktop.ui.kiosk.kiosk import Kiosk  # not needed outside kiosk mode
+
+        kiosk = Kiosk(self, start_program, settings=self.settings, language=lambda: self.language, stage=self.stage,
+                      docks=self.docks, editor=self.editor, document=self.document, files=self.files,
+                      replay=self.replay, runs=self.runs, robots=self.robots, run_toolbar=lambda: self.run_toolbar)
+        self.teacher_gate = kiosk.ask_teacher
+        return kiosk
 
     # --- the robot ----------------------------------------------------------------------
 
@@ -376,6 +372,11 @@ class MainWindow(QMainWindow):
         for action in self.profile_actions.actions():
             action.setChecked(action.data() == self.profile.id)
 
+    @property
+    def language(self) -> str:
+        """The language the window speaks now (its one owner is ``settings.current_language``)."""
+        return self.settings.current_language.code
+
     def set_language(self, language: str):
         """Switch the window and the blocks to ``language``, keeping the program (once the page has given it)."""
         if language == self.language:
@@ -393,22 +394,13 @@ class MainWindow(QMainWindow):
         self.editor.call("getState", None, answered, timeout_ms=ANSWER_TIMEOUT_MS)
 
     def _switch_language(self, language: str, workspace):
-        self.language = language
-        self.settings.language = language
+        self.settings.current_language.code = language
         self.simulator_dock.robot = None  # the simulator view is made anew in the new language
         self._restart_editor()
         if workspace:
             self.editor.load_workspace(workspace, breakpoints=self.document.breakpoints)
-        self.code_dock.setWindowTitle(tr("code_dock", language))
-        self.simulator_dock.setWindowTitle(tr("simulator_dock", language))
-        self.variables.setWindowTitle(tr("variables_dock", language))
-        self.state_dock.setWindowTitle(tr("state_dock", language))
-        self.health.language = language
-        self.monitor_dock.setWindowTitle(tr("monitor_dock", language))
-        self.plot_dock.setWindowTitle(tr("plot_dock", language))
-        self.variables.table.setHorizontalHeaderLabels([tr("variable", language), tr("value", language)])
-        self.console.setWindowTitle(tr("console_dock", language))
-        self.replay.set_language(language)
+        self.docks.retitle(language)
+        self.replay.retitle()
         self._build_run_toolbar()
         for old_menu in (action.menu() for action in self.menuBar().actions() if action.menu() is not None):
             old_menu.deleteLater()  # with its actions: the shortcut list names only the new ones
@@ -504,8 +496,7 @@ class MainWindow(QMainWindow):
         robot_menu.addAction(self.run_toolbar.reset_action)
 
         view_menu = bar.addMenu(tr("menu_view", language))
-        for dock in (self.simulator_dock, self.code_dock, self.variables, self.state_dock, self.console,
-                     self.monitor_dock, self.plot_dock):
+        for dock in self.docks.values():
             view_menu.addAction(dock.toggleViewAction())
         view_menu.addSeparator()
         view_menu.addAction(self.stage.action_for(language))

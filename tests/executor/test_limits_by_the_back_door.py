@@ -14,7 +14,7 @@ from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.sim.link import SimulatedRobot
 from rockly_desktop.robot.sim.simulator import twist_velocity
 from rockly_desktop.robot.wrappers.limits import Limits
-from rockly_desktop.ui.preferences.teacher_settings import TeacherSettings
+from rockly_desktop.settings.teacher import TeacherSettings
 
 ARM_OFF = Limits(switched_off=frozenset({"arm"}))
 

@@ -76,7 +76,7 @@ def test_a_signal_mid_drive_stops_the_program_with_the_safe_stop(exported, signu
 
 def test_the_teachers_limits_of_the_export_are_in_the_file_and_kept(tmp_path, isolated_user_folders):
     """Limits set in the window when exporting travel in the file; changing them later changes nothing."""
-    from rockly_desktop.ui.settings import AppSettings
+    from rockly_desktop.settings.app_settings import AppSettings
 
     settings = AppSettings(isolated_user_folders / "config" / "Rockly" / "Rockly.conf")  # where the window keeps them
     settings.teacher.set_limits("hobbit", max_speed=0.1, switched_off={"arm"})

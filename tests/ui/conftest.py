@@ -3,8 +3,8 @@ import pytest
 from PySide6.QtWidgets import QMessageBox
 from window_tools import WindowDriver
 
+from rockly_desktop.settings.app_settings import AppSettings
 from rockly_desktop.ui.qt_language import use_language
-from rockly_desktop.ui.settings import AppSettings
 
 
 @pytest.fixture

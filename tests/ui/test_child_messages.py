@@ -10,7 +10,7 @@ from PySide6.QtWidgets import QLabel, QMessageBox
 from test_running import finished, load
 
 from rockly_desktop.app import build_main_window, start_kiosk
-from rockly_desktop.ui.settings import AppSettings
+from rockly_desktop.settings.app_settings import AppSettings
 
 SOFA = (block("hobbit_move", {"direction": "+"}, {"speed": number(1)}, id="ahead"),
         block("hobbit_turn", {"direction": "+"}, {"angle": number(90)}, id="left"),

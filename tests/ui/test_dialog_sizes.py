@@ -6,9 +6,9 @@ from PySide6.QtGui import QFontMetrics
 from PySide6.QtWidgets import QDialogButtonBox, QMessageBox, QWidget
 
 from rockly_desktop.robot.links import link_kind
+from rockly_desktop.settings.teacher import TeacherSettings
 from rockly_desktop.ui.message_boxes import plain_message_box, title_width
 from rockly_desktop.ui.preferences.preferences import PreferencesDialog
-from rockly_desktop.ui.preferences.teacher_settings import TeacherSettings
 from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
 
 

@@ -12,10 +12,10 @@ from PySide6.QtWidgets import QApplication, QDialog, QFileDialog, QMenu
 from test_running import load
 
 from rockly_desktop.app import build_main_window, start_kiosk
+from rockly_desktop.settings.app_settings import AppSettings
 from rockly_desktop.ui.kiosk import idle_watch
 from rockly_desktop.ui.kiosk.kiosk import LeaveDialog
 from rockly_desktop.ui.run.run_toolbar import RunToolbar
-from rockly_desktop.ui.settings import AppSettings
 
 PIN = "4711"
 CHORD = "Ctrl+Alt+Shift+K"
@@ -64,7 +64,7 @@ def open_kiosk(qtbot, driver, folders, clock):
 
     yield open_it
     for kiosk in kiosks:
-        kiosk.window.document.modified = False
+        kiosk.frame.document.modified = False
         kiosk.leave()
 
 

@@ -23,9 +23,9 @@ from test_kiosk import PIN, clock, folders, open_kiosk, python_shown  # noqa: F4
 from test_running import load
 from window_tools import error_boxes
 
+from rockly_desktop.settings.app_settings import AppSettings
 from rockly_desktop.ui.files.file_dialogs import ConfinedFileDialog
 from rockly_desktop.ui.preferences.preferences import PreferencesDialog
-from rockly_desktop.ui.settings import AppSettings
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -33,7 +33,7 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 def idle_reset(qtbot, kiosk, clock):
     """Let the kiosk's idle minutes pass and wait until it has started over."""
     clock.now += kiosk.idle.seconds + 1
-    qtbot.waitUntil(lambda: "Welcome" in kiosk.window.statusBar().currentMessage(), timeout=15000)
+    qtbot.waitUntil(lambda: "Welcome" in kiosk.frame.statusBar().currentMessage(), timeout=15000)
 
 
 def with_dialog(qtbot, use) -> list:

@@ -7,11 +7,12 @@ from PySide6.QtWidgets import QApplication, QMessageBox
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.robot.links import link_kind
 from rockly_desktop.robot.ros1.connection import RosUnavailable
+from rockly_desktop.settings.app_settings import AppSettings
 from rockly_desktop.ui.docks.state_panels import StatePanels, number_format
 from rockly_desktop.ui.message_boxes import plain_message_box, title_width
 from rockly_desktop.ui.qt_language import translations_folder, use_language
 from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
-from rockly_desktop.ui.texts import robot_problem
+from rockly_desktop.ui.texts import robot_problem, tr
 
 SAVE_BUTTONS = QMessageBox.StandardButton.Save | QMessageBox.StandardButton.Discard | QMessageBox.StandardButton.Cancel
 
@@ -72,6 +73,28 @@ def test_qts_buttons_follow_a_language_switch(qtbot, window):
 def test_english_needs_no_translation_file(qtbot):
     assert use_language("de") and use_language("en")
     assert new_box_buttons(qtbot) == ["Cancel", "Discard", "Save", "Show Details..."]
+
+
+# --- one owner ---------------------------------------------------------------------------------
+
+
+def spoken(window) -> set:
+    """The languages the window and its helpers would speak in now."""
+    return {window.language, window.settings.language, window.replay.language, window.replay_bar.language}
+
+
+def test_the_window_and_its_helpers_speak_the_one_language_its_settings_own(qtbot, driver, window):
+    """No copy to fall behind: another Rockly on the same settings file switching to German leaves this
+    window and its helpers English; this window's own switch moves them all, the health light included."""
+    other = AppSettings(driver.settings_path)
+    other.language = "de"
+    other.sync()
+    window.settings.sync()
+    assert spoken(window) == {"en"}
+    with qtbot.waitSignal(window.editor.sig_ready, timeout=30000):
+        window.set_language("de")
+    assert spoken(window) == {"de"}
+    qtbot.waitUntil(lambda: tr("health_title", "de") in window.health.toolTip(), timeout=5000)
 
 
 # --- a run's error ----------------------------------------------------------------------------

@@ -15,7 +15,7 @@ from window_tools import completed
 from rockly_desktop.core import paths
 from rockly_desktop.core.program import Program
 from rockly_desktop.core.recovery import read_recovery
-from rockly_desktop.ui.settings import AppSettings
+from rockly_desktop.settings.app_settings import AppSettings
 
 SOS_AND_EMO = Program("hobbit", workspace(stack(block("hobbit_sos", id="s"), block("hobbit_emo", {"emotion": "SAD"}))),
                       ["s"])

@@ -8,10 +8,10 @@ import pytest
 from fake_time import FakeTime
 from PySide6.QtCore import QSettings
 
+from rockly_desktop.settings import teacher as teacher_settings
+from rockly_desktop.settings.app_settings import AppSettings
 from rockly_desktop.ui.kiosk.kiosk import LeaveDialog
-from rockly_desktop.ui.preferences import teacher_settings
 from rockly_desktop.ui.preferences.preferences import PreferencesDialog
-from rockly_desktop.ui.settings import AppSettings
 
 PIN = "2580"
 _dialogs = []  # kept until the test ends (a dialog's tab dies with it)

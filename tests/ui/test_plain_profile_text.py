@@ -5,10 +5,10 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QLabel
 from window_tools import WindowDriver
 
+from rockly_desktop.settings.app_settings import AppSettings
 from rockly_desktop.ui.docks.state_panels import StatePanels
 from rockly_desktop.ui.plain_text import tooltip_text
 from rockly_desktop.ui.preferences.preferences import PreferencesDialog
-from rockly_desktop.ui.settings import AppSettings
 
 HOSTILE = "<b>X</b><img src=file:///etc/hostname>"
 PIN = "2580"

@@ -11,7 +11,7 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox
 from window_tools import completed, error_boxes, state
 
 from rockly_desktop.core.program import load_program
-from rockly_desktop.ui.settings import AppSettings
+from rockly_desktop.settings.app_settings import AppSettings
 
 PICK_UP = stack(block("hobbit_arm_gripper", {"movement": "OpenGripper"}),
                 block("hobbit_arm_move", {"movement": "MoveToPreGraspFloor"}),

@@ -2,8 +2,8 @@
 from program_builder import block, number, stack
 from test_running import finished, load
 
+from rockly_desktop.settings.app_settings import AppSettings
 from rockly_desktop.ui.preferences.preferences import PreferencesDialog
-from rockly_desktop.ui.settings import AppSettings
 
 
 def drive_away(qtbot, window, metres=0.5):

@@ -135,7 +135,7 @@ def test_the_connection_dialog_asks_for_each_setting_of_a_link_and_they_are_reme
     from dataclasses import replace
 
     from rockly_desktop.robot.links import ConnectionSetting
-    from rockly_desktop.ui.settings import AppSettings
+    from rockly_desktop.settings.app_settings import AppSettings
 
     monkeypatch.setenv("ROCKLY_TEST_DOMAIN", "7")
     other = replace(ROS1, kind="other", settings_group="other", settings=(

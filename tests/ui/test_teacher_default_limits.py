@@ -7,8 +7,8 @@ from PySide6.QtWidgets import QLabel
 from rockly_desktop.core.paths import shared_toolboxes_dir
 from rockly_desktop.profiles.profile import load_profile
 from rockly_desktop.robot.wrappers.limits import Limits
+from rockly_desktop.settings.teacher import TeacherSettings
 from rockly_desktop.ui.preferences.preferences import PreferencesDialog
-from rockly_desktop.ui.preferences.teacher_settings import TeacherSettings
 
 
 @pytest.mark.parametrize(("language", "start"), [("en", "No limits of its own were set for this robot"),

@@ -5,8 +5,8 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDialog
 from window_tools import state
 
+from rockly_desktop.settings.app_settings import AppSettings
 from rockly_desktop.ui.preferences.preferences import PreferencesDialog
-from rockly_desktop.ui.settings import AppSettings
 
 STARTER = {"hobbit_move", "hobbit_turn", "hobbit_stop", "hobbit_head", "hobbit_emo", "hobbit_show_info",
            "hobbit_wait", "controls_repeat_ext"}

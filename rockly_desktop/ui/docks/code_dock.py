@@ -31,6 +31,5 @@ class CodeDock(QDockWidget):
 
     def __init__(self, title: str, parent=None):
         super().__init__(title, parent)
-        self.setObjectName("code_dock")
         self.view = CodeView(self)
         self.setWidget(self.view)

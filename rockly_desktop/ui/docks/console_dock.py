@@ -17,7 +17,6 @@ class ConsoleDock(QDockWidget):
 
     def __init__(self, title: str, parent=None):
         super().__init__(title, parent)
-        self.setObjectName("console_dock")
         self.view = QPlainTextEdit(self)
         self.view.setReadOnly(True)
         self.view.setMaximumBlockCount(MAX_LINES)

@@ -35,7 +35,7 @@ class SimulatorWindow(QMainWindow):
         self.profile = profile
         name = profile.display_name(language)
         self.setWindowTitle(tr("sim_window_title", language, robot=name, master="…"))
-        self.tablet = QtTablet(self, name, unanswered=UNANSWERED)
+        self.tablet = QtTablet(self, name, lambda: self.language, unanswered=UNANSWERED)
         self.tablet.sig_notice.connect(self._show_notice)
         self.simulator = None
         self.view = self._make_view()

@@ -16,7 +16,6 @@ class SimulatorDock(QDockWidget):
 
     def __init__(self, title: str, parent=None):
         super().__init__(title, parent)
-        self.setObjectName("simulator_dock")
         self.view = None
         self.robot = None
         self._timer = QTimer(self)

@@ -3,6 +3,7 @@ and the console out of the way) and bottom tabs that each keep their own height.
 from PySide6.QtCore import QEvent, QObject, Qt, QTimer
 from PySide6.QtGui import QAction, QKeySequence
 
+from rockly_desktop.ui.docks.registry import OnStage
 from rockly_desktop.ui.texts import tr
 
 STAGE_SHARE = 0.62  # of the window's width the simulator gets on stage, until the person drags the edge
@@ -11,31 +12,31 @@ CONSOLE_STRIP = 96  # px: on stage the console is a strip under the blocks
 BLOCKS_PX = 600  # on stage the blocks keep at least this width (toolbox included) unless the person drags
 
 
-def keep_side_docks_full_height(window):
-    """Let the right dock area (simulator, code) own the bottom-right corner, so that a taller
-    bottom panel (console, topic monitor, plot) takes room from the blocks, never from the simulator."""
-    window.setCorner(Qt.Corner.BottomRightCorner, Qt.DockWidgetArea.RightDockWidgetArea)
+def keep_side_docks_full_height(frame):
+    """Let ``frame``'s (a QMainWindow's) right dock area (simulator, code) own the bottom-right corner, so
+    that a taller bottom panel (console, topic monitor, plot) takes room from the blocks, never from the simulator."""
+    frame.setCorner(Qt.Corner.BottomRightCorner, Qt.DockWidgetArea.RightDockWidgetArea)
 
 
 class BottomTabSizes(QObject):
-    """Each tab of the bottom dock area keeps its own height: switching tabs gives the shown tab the
-    height it had when last shown. A ``roomy`` tab (a message tree, a plot) shown for the first time
-    gets a third of the window; the console keeps the strip it had."""
+    """Each tab of the bottom dock area of ``frame`` (a QMainWindow) keeps its own height: switching tabs
+    gives the shown tab the height it had when last shown. A ``roomy`` tab (a message tree, a plot)
+    shown for the first time gets a third of the window; the console keeps the strip it had."""
 
-    def __init__(self, window, docks, roomy=()):
-        super().__init__(window)
-        self._window = window
+    def __init__(self, frame, docks, roomy=()):
+        super().__init__(frame)
+        self._frame = frame
         self._docks = tuple(docks)
         self._roomy = set(roomy)
         self._heights = {}
         self._current = None  # the bottom tab on screen, as last seen
-        window.tabifiedDockWidgetActivated.connect(self._switched)
-        window.installEventFilter(self)
+        frame.tabifiedDockWidgetActivated.connect(self._switched)
+        frame.installEventFilter(self)
 
     def eventFilter(self, watched, event):
         """Once the window has laid its docks out anew (a layout restored, say), see which
         bottom tab is on screen: Qt changes tabs that way without telling."""
-        if watched is self._window and event.type() == QEvent.Type.LayoutRequest:
+        if watched is self._frame and event.type() == QEvent.Type.LayoutRequest:
             QTimer.singleShot(0, self, self._see_current)
         return False
 
@@ -48,48 +49,53 @@ class BottomTabSizes(QObject):
         left = self._current
         if dock not in self._docks or dock is left:
             return
-        if left is not None and left.height() > 0 and not self._window.isMinimized():
+        if left is not None and left.height() > 0 and not self._frame.isMinimized():
             self._heights[left] = left.height()
         self._current = dock
         wanted = self._heights.get(dock)
         if wanted is None and dock in self._roomy:
-            wanted = max(dock.height(), self._window.height() // 3)
+            wanted = max(dock.height(), self._frame.height() // 3)
         if wanted is not None and wanted != dock.height():
-            self._window.resizeDocks([dock], [wanted], Qt.Orientation.Vertical)
+            self._frame.resizeDocks([dock], [wanted], Qt.Orientation.Vertical)
             QTimer.singleShot(0, self, lambda: self._correct(dock, wanted))
 
     def _correct(self, dock, wanted: int):
         """The size resizeDocks gives tabbed docks includes their tab bar: add what is missing."""
         missing = wanted - dock.height()
         if dock is self._current and missing:
-            self._window.resizeDocks([dock], [wanted + missing], Qt.Orientation.Vertical)
+            self._frame.resizeDocks([dock], [wanted + missing], Qt.Orientation.Vertical)
 
 
 class StageLayout(QObject):
-    """View → Stage (F11): the simulator (a real robot's state panels) takes most of ``window``,
-    the blocks stay beside it, the console is a strip under them; code, variables, topic monitor
-    and plot are closed. Leaving puts back the layout from before. ``settings`` (AppSettings)
-    remember whether the stage was on, the simulator's share of the width and the layout to go back to.
+    """View → Stage (F11): the simulator (a real robot's state panels) takes most of ``frame`` (the
+    QMainWindow), the blocks stay beside it, the console is a strip under them; code, variables, topic
+    monitor and plot are closed (each as its entry in ``docks``, a ``registry.Docks``, says). Leaving
+    puts back the layout from before. ``settings`` (AppSettings) remember whether the stage was on, the
+    simulator's share of the width and the layout to go back to; the page in ``editor`` is told when
+    the stage is on; ``robots`` (RobotChoice) says whether the robot is simulated.
     """
 
-    def __init__(self, window, settings):
-        super().__init__(window)
-        self._window = window
+    def __init__(self, frame, settings, editor, robots, docks):
+        super().__init__(frame)
+        self._frame = frame
         self._settings = settings
+        self._editor = editor
+        self._robots = robots
+        self._docks = docks
         self._normal_state = None
         self._share = settings.stage_share or STAGE_SHARE
         self._persons_share = settings.stage_share is not None  # a width the person dragged is kept as it is
         self._settled = False  # the docks have the sizes given (only then is a share the person's)
         self._given = 0  # px the simulator was given last
-        self.action = QAction(window, checkable=True)
+        self.action = QAction(frame, checkable=True)
         self.action.setObjectName("action_stage")
         self.action.setShortcut(QKeySequence(Qt.Key.Key_F11))
         self.action.toggled.connect(self._toggled)
-        window.installEventFilter(self)
+        frame.installEventFilter(self)
         # the page keeps its flyout and zoom controls off the blocks on stage (a page made anew is told again)
-        window.editor.sig_ready.connect(self._tell_page)
+        editor.sig_ready.connect(self._tell_page)
         # another robot shows or hides the simulator: arrange again once the window has done so
-        window.robots.sig_robot_changed.connect(lambda: self.active and QTimer.singleShot(0, self, self._arrange))
+        robots.sig_robot_changed.connect(lambda: self.active and QTimer.singleShot(0, self, self._arrange))
 
     @property
     def active(self) -> bool:
@@ -105,7 +111,7 @@ class StageLayout(QObject):
     def restore_remembered(self):
         """Go on stage when the window was on stage when it last closed."""
         if self._settings.stage:
-            self._normal_state = self._settings.normal_window_state or self._window.saveState()
+            self._normal_state = self._settings.normal_window_state or self._frame.saveState()
             self._arrange()
             self.action.setChecked(True)
 
@@ -117,40 +123,43 @@ class StageLayout(QObject):
         if on == self.active:
             return
         if on:
-            self._normal_state = self._window.saveState()
+            self._normal_state = self._frame.saveState()
             self._arrange()
         else:
             self._keep_share()
-            self._window.restoreState(self._normal_state)
+            self._frame.restoreState(self._normal_state)
             self._normal_state = None
         self._settings.stage = on
         self._tell_page()
 
     def _tell_page(self):
-        self._window.editor.call("setStage", {"on": self.active})
+        self._editor.call("setStage", {"on": self.active})
 
     def state_to_keep(self):
         """The dock layout the window keeps when it closes: the one from before the stage while on stage
         (the stage is remembered apart, with the simulator's share)."""
         if not self.active:
-            return self._window.saveState()
+            return self._frame.saveState()
         self._keep_share()
         self._settings.normal_window_state = self._normal_state
         return self._normal_state
 
     def _big_dock(self):
-        window = self._window
-        return window.simulator_dock if window.robots.simulated else window.state_dock
+        big = OnStage.BIG_SIMULATED if self._robots.simulated else OnStage.BIG_REAL
+        return self._docks.where(lambda spec: spec.on_stage == big)[0]
+
+    def _strips(self):
+        return self._docks.where(lambda spec: spec.on_stage == OnStage.STRIP)
 
     def _arrange(self):
-        window, big = self._window, self._big_dock()
-        for dock in (window.code_dock, window.variables, window.state_dock, window.monitor_dock, window.plot_dock,
-                     window.simulator_dock):
-            if dock is not big:
+        big, strips = self._big_dock(), self._strips()
+        for dock in self._docks.values():
+            if dock is not big and dock not in strips:
                 dock.hide()
         big.show()
-        window.console.show()
-        window.console.raise_()
+        for strip in strips:
+            strip.show()
+            strip.raise_()
         self._apply_sizes()
         self._apply_later()
 
@@ -166,17 +175,18 @@ class StageLayout(QObject):
     def _apply_sizes(self):
         if not self.active:
             return
-        window = self._window
+        frame = self._frame
         share = self._share
         if not self._persons_share:
-            share = min(share, max(MIN_SHARE, 1 - BLOCKS_PX / max(1, window.width())))
-        self._given = round(window.width() * share)
-        window.resizeDocks([self._big_dock()], [self._given], Qt.Orientation.Horizontal)
-        window.resizeDocks([window.console], [CONSOLE_STRIP], Qt.Orientation.Vertical)
+            share = min(share, max(MIN_SHARE, 1 - BLOCKS_PX / max(1, frame.width())))
+        self._given = round(frame.width() * share)
+        frame.resizeDocks([self._big_dock()], [self._given], Qt.Orientation.Horizontal)
+        strips = self._strips()
+        frame.resizeDocks(strips, [CONSOLE_STRIP] * len(strips), Qt.Orientation.Vertical)
 
     def _keep_share(self):
         """Remember the share of the width the person left the simulator (it may have been dragged)."""
-        width, big = self._window.width(), self._big_dock()
+        width, big = self._frame.width(), self._big_dock()
         dragged = abs(big.width() - self._given) > 4  # not the width the blocks' minimum gave it
         if self._settled and big.isVisible() and width > 0 and dragged:
             self._share = min(MAX_SHARE, max(MIN_SHARE, big.width() / width))
@@ -185,6 +195,6 @@ class StageLayout(QObject):
 
     def eventFilter(self, watched, event):
         """On stage, a window shown, grown or shrunk gives the simulator its share of its width."""
-        if watched is self._window and event.type() in (QEvent.Type.Resize, QEvent.Type.Show) and self.active:
+        if watched is self._frame and event.type() in (QEvent.Type.Resize, QEvent.Type.Show) and self.active:
             self._apply_later()
         return False

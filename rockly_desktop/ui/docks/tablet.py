@@ -76,12 +76,13 @@ class QtTablet(QObject):
     sig_notice = Signal(str, str)  # the robot's name, the text it shows
     sig_dismissed = Signal()  # the person closed a question without answering (Esc or the window's ×)
 
-    def __init__(self, window, robot_name: str, unanswered: str = None):
-        """``window`` is the dialogs' parent and has a ``language``. With ``unanswered``, a
-        question closed without an answer raises RobotCommandError(``unanswered``); without,
+    def __init__(self, parent, robot_name: str, language, unanswered: str = None):
+        """``parent`` is the dialogs' parent; ``language()`` the language they speak. With ``unanswered``,
+        a question closed without an answer raises RobotCommandError(``unanswered``); without,
         it answers '' (the app stops the run on ``sig_dismissed`` instead)."""
-        super().__init__(window)
-        self.window = window
+        super().__init__(parent)
+        self._parent = parent
+        self._language = language
         self.robot_name = robot_name
         self.unanswered = unanswered
         self.open_dialogs = {}
@@ -108,8 +109,8 @@ class QtTablet(QObject):
         self.sig_notice.emit(self.robot_name, text)
 
     def _show(self, request: TabletRequest):
-        language = self.window.language
-        dialog = TabletDialog(request, tr("tablet_title", language, robot=self.robot_name), language, self.window)
+        language = self._language()
+        dialog = TabletDialog(request, tr("tablet_title", language, robot=self.robot_name), language, self._parent)
         dialog.finished.connect(lambda _result: self.open_dialogs.pop(id(request), None))
         dialog.rejected.connect(lambda: id(request) in self._closing or self.sig_dismissed.emit())
         self.open_dialogs[id(request)] = dialog

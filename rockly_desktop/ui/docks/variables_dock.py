@@ -7,7 +7,6 @@ class VariablesDock(QDockWidget):
 
     def __init__(self, title: str, headers, parent=None):
         super().__init__(title, parent)
-        self.setObjectName("variables_dock")
         self.table = QTableWidget(0, 2, self)
         self.table.setHorizontalHeaderLabels(list(headers))
         self.table.horizontalHeader().setSectionResizeMode(1, QHeaderView.ResizeMode.Stretch)

@@ -1,1 +1,1 @@
-"""Kiosk mode for a fair stand: the locked window, its settings, noticing when nobody is there."""
+"""Kiosk mode for a fair stand: the locked window, noticing when nobody is there (its settings: ``settings.kiosk``)."""

@@ -21,9 +21,10 @@ from PySide6.QtWidgets import (
 from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.program import PROGRAM_SUFFIX, Program, save_program
+from rockly_desktop.settings.teacher import wait_text
+from rockly_desktop.ui.docks.registry import InKiosk
 from rockly_desktop.ui.files.file_dialogs import ConfinedFileDialogs
 from rockly_desktop.ui.kiosk.idle_watch import IdleWatch
-from rockly_desktop.ui.preferences.teacher_settings import wait_text
 from rockly_desktop.ui.texts import tr
 
 
@@ -33,43 +34,52 @@ def can_be_left(settings) -> bool:
 
 
 class Kiosk(QObject):
-    """Turns ``window`` (a MainWindow built with ``settings.kiosk_mode`` on) into a kiosk whose start
-    program is ``start_program`` (a path, or None for an empty program). The caller shows the
-    window full screen and starts it with the same program."""
+    """Turns ``frame`` (the QMainWindow of a window built with ``settings.kiosk_mode`` on) into a kiosk
+    whose start program is ``start_program`` (a path, or None for an empty program). The caller
+    shows the window full screen, runs the window's teacher commands through ``ask_teacher`` and
+    starts it with the same program.
 
-    def __init__(self, window, start_program=None):
-        super().__init__(window)
-        self.window = window
-        self.settings = window.settings.kiosk
+    What it works with: ``settings`` (AppSettings: the kiosk's, the teacher's, the recordings' folder),
+    ``language()`` (the window's, which may change behind the PIN), the window's ``stage``
+    (StageLayout), ``docks`` (registry.Docks), the block ``editor``, the ``document`` on screen, the
+    program ``files`` (ProgramFiles), the ``replay``, the run session ``runs``, the robot choice
+    ``robots`` and ``run_toolbar()`` (the run toolbar of the moment, with STOP).
+    """
+
+    def __init__(self, frame, start_program=None, *, settings, language, stage, docks, editor, document, files,
+                 replay, runs, robots, run_toolbar):
+        super().__init__(frame)
+        self.frame = frame
+        self._app_settings = settings
+        self.settings = settings.kiosk
+        self._language = language
+        self._docks, self._editor, self._document, self._files = docks, editor, document, files
+        self._replay, self._runs, self._robots, self._run_toolbar = replay, runs, robots, run_toolbar
         self.start_program = str(start_program) if start_program else None
         self._may_close = False
         self._starting_over = False
         self.leave_dialog = self.teacher_dialog = None
-        window.stage.set_active(True)
-        window.stage.action.setEnabled(False)
-        for dock in window.findChildren(QDockWidget):
+        stage.set_active(True)
+        stage.action.setEnabled(False)
+        for dock in frame.findChildren(QDockWidget):
             dock.setFeatures(QDockWidget.DockWidgetFeature.NoDockWidgetFeatures)  # no closing, no floating away
-        for roomy in (window.monitor_dock, window.plot_dock):  # their exports would open dialogs anywhere
-            roomy.hide()
-            roomy.toggleViewAction().setEnabled(False)
-        def language():  # the window's language may change (behind the PIN)
-            return window.language
-
-        window.files.file_dialogs = ConfinedFileDialogs(
+        for closed in docks.where(lambda spec: spec.in_kiosk == InKiosk.CLOSED):
+            closed.hide()
+            closed.toggleViewAction().setEnabled(False)
+        files.file_dialogs = ConfinedFileDialogs(
             [self.settings.programs_folder, self.settings.visitors_folder], self.settings.visitors_folder, language)
-        window.replay.file_dialogs = ConfinedFileDialogs([window.settings.recordings_folder], None, language)
+        replay.file_dialogs = ConfinedFileDialogs([settings.recordings_folder], None, language)
         # Chromium's own menu (Back, Reload, Save page…) where the page shows none; Blockly's menus stay
-        window.editor.setContextMenuPolicy(Qt.ContextMenuPolicy.NoContextMenu)
+        editor.setContextMenuPolicy(Qt.ContextMenuPolicy.NoContextMenu)
         self._refuse_context_menus()
-        window.teacher_gate = self.ask_teacher
-        window.files.sig_program_replaced.connect(self._keep_programs_safe)
-        window.installEventFilter(self)
+        files.sig_program_replaced.connect(self._keep_programs_safe)
+        frame.installEventFilter(self)
         self.chord = None
         if self.settings.quit_chord:
-            self.chord = QShortcut(QKeySequence(self.settings.quit_chord), window)
+            self.chord = QShortcut(QKeySequence(self.settings.quit_chord), frame)
             self.chord.setContext(Qt.ShortcutContext.ApplicationShortcut)
             self.chord.activated.connect(self.leave)
-        self.idle = IdleWatch(self.settings.idle_minutes * 60, window, self)
+        self.idle = IdleWatch(self.settings.idle_minutes * 60, frame, self)
         self.idle.sig_idle.connect(self._on_idle)
 
     # --- leaving ------------------------------------------------------------------------
@@ -77,39 +87,39 @@ class Kiosk(QObject):
     def eventFilter(self, watched, event):
         """Closing the window (Quit, Alt+F4) asks for the teacher's PIN first; a minimised window (the
         window manager's Iconify) or one no longer full screen comes back full screen at once."""
-        if watched is not self.window or self._may_close:
+        if watched is not self.frame or self._may_close:
             return False
         if event.type() == QEvent.Type.Close:
             event.ignore()
             self.ask_pin()
             return True
-        if event.type() == QEvent.Type.WindowStateChange and (self.window.isMinimized()
-                                                              or not self.window.isFullScreen()):
+        if event.type() == QEvent.Type.WindowStateChange and (self.frame.isMinimized()
+                                                              or not self.frame.isFullScreen()):
             QTimer.singleShot(0, self, self.to_the_front)
         return False
 
     def to_the_front(self):
         """Full screen, in front of every other window (after a minimise, or for the next visitor)."""
         if not self._may_close:
-            self.window.showFullScreen()
-            self.window.raise_()
-            self.window.activateWindow()
+            self.frame.showFullScreen()
+            self.frame.raise_()
+            self.frame.activateWindow()
 
     def _refuse_context_menus(self):
         """No menu on a right-click on the toolbars, docks, tabs, menu bar or status bar: the window's
         menu there would hide the toolbar with STOP. (``MainWindow.createPopupMenu`` gives none in
         kiosk mode; a refusal here also stops what its children leave to it.)"""
-        window, prevent = self.window, Qt.ContextMenuPolicy.PreventContextMenu
-        window.setContextMenuPolicy(prevent)
-        for part in window.findChildren(QToolBar) + window.findChildren(QDockWidget) + [window.menuBar(),
-                                                                                         window.statusBar()]:
+        frame, prevent = self.frame, Qt.ContextMenuPolicy.PreventContextMenu
+        frame.setContextMenuPolicy(prevent)
+        for part in frame.findChildren(QToolBar) + frame.findChildren(QDockWidget) + [frame.menuBar(),
+                                                                                       frame.statusBar()]:
             part.setContextMenuPolicy(prevent)
 
     def ask_pin(self):
         """Show the dialog that asks for the teacher's PIN to leave kiosk mode."""
         if self.leave_dialog is not None:
             self.leave_dialog.deleteLater()  # made anew: the language may have changed
-        self.leave_dialog = LeaveDialog(self.window.settings.teacher, self.window.language, self.window)
+        self.leave_dialog = LeaveDialog(self._app_settings.teacher, self._language(), self.frame)
         self.leave_dialog.accepted.connect(self.leave)
         self.leave_dialog.open()
 
@@ -117,8 +127,8 @@ class Kiosk(QObject):
         """Run ``then()`` (choosing the robot, Preferences) once the teacher's PIN was given."""
         if self.teacher_dialog is not None:
             self.teacher_dialog.deleteLater()
-        self.teacher_dialog = PinDialog(self.window.settings.teacher, self.window.language, "kiosk_teacher_title",
-                                        "kiosk_teacher_text", self.window)
+        self.teacher_dialog = PinDialog(self._app_settings.teacher, self._language(), "kiosk_teacher_title",
+                                        "kiosk_teacher_text", self.frame)
         self.teacher_dialog.setObjectName("kiosk_teacher_dialog")
         self.teacher_dialog.accepted.connect(then)
         self.teacher_dialog.open()
@@ -128,21 +138,20 @@ class Kiosk(QObject):
         self.idle.stop()
 
         def close():
-            self.window.document.modified = False  # the visitor's program is kept in the visitors' folder
+            self._document.modified = False  # the visitor's program is kept in the visitors' folder
             self._may_close = True
-            self.window.showNormal()
-            self.window.close()
+            self.frame.showNormal()
+            self.frame.close()
 
         self._keep_visitor_program(close)
 
     # --- the next visitor ---------------------------------------------------------------
 
     def _on_idle(self):
-        window = self.window
         if self._starting_over:
             return
-        if window.runs.state != "idle":
-            window.runs.stop()  # the next check starts over once the run has ended
+        if self._runs.state != "idle":
+            self._runs.stop()  # the next check starts over once the run has ended
             return
         modal = QApplication.activeModalWidget()
         if modal is not None:  # a question nobody answers; starting over waits until it is gone
@@ -153,11 +162,10 @@ class Kiosk(QObject):
 
     def _keep_visitor_program(self, then):
         """Save a changed program into a dated file in the visitors' folder, then ``then()``."""
-        window = self.window
-        if not window.document.modified:
+        document = self._document
+        if not document.modified:
             then()
             return
-        document = window.document
 
         def answered(state, error):
             if not error:
@@ -168,10 +176,10 @@ class Kiosk(QObject):
                 except (RocklyError, OSError) as problem:
                     error = problem
             if error:
-                window.console.append(tr("kiosk_not_kept", window.language, error=error), "error")
+                self._docks["console_dock"].append(tr("kiosk_not_kept", self._language(), error=error), "error")
             then()
 
-        window.editor.call("getState", None, answered, timeout_ms=ANSWER_TIMEOUT_MS)
+        self._editor.call("getState", None, answered, timeout_ms=ANSWER_TIMEOUT_MS)
 
     def _dated_path(self):
         folder = self.settings.visitors_folder
@@ -184,39 +192,38 @@ class Kiosk(QObject):
         return path
 
     def _start_over(self):
-        window = self.window
-        window.document.modified = False
+        self._document.modified = False
         self._forget_visitor()
 
         def opened(_ok=True):
-            window.robots.reset()
+            self._robots.reset()
             self._starting_over = False
             self.idle.rest()
-            window.statusBar().showMessage(tr("kiosk_started_over", window.language), 10000)
+            self.frame.statusBar().showMessage(tr("kiosk_started_over", self._language()), 10000)
 
         if self.start_program:
-            window.files.open(self.start_program, then=opened)
+            self._files.open(self.start_program, then=opened)
         else:
-            window.files.new(ask=False)
+            self._files.new(ask=False)
             opened()
 
     def _forget_visitor(self):
         """Nothing of the last visitor stays in sight: console, replay, variables, the blocks' badges
         and values; the toolbar (with STOP), simulator and console shown, the window full screen in front."""
-        window = self.window
-        window.replay.close()
-        window.console.clear()
-        window.variables.clear()
-        window.editor.call("clearMarks")
-        for part in (window.run_toolbar, window.simulator_dock, window.console):  # View menu may have hidden a dock
+        self._replay.close()
+        self._docks["console_dock"].clear()
+        self._docks["variables_dock"].clear()
+        self._editor.call("clearMarks")
+        # the View menu may have hidden a dock
+        for part in [self._run_toolbar()] + self._docks.where(lambda spec: spec.in_kiosk == InKiosk.SHOWN):
             part.show()
         self.to_the_front()
 
     def _keep_programs_safe(self):
         """Every program opened is shown as a new one (the start program too), so Save asks for a new
         name in the visitors' folder: only a file saved in this visit is ever written again."""
-        if self.window.document.path is not None:
-            self.window.document.set_file(None, self.window.document.modified)
+        if self._document.path is not None:
+            self._document.set_file(None, self._document.modified)
 
 
 class PinDialog(QDialog):

@@ -1,1 +1,1 @@
-"""The Preferences dialog and what a teacher sets behind its PIN."""
+"""The Preferences dialog and the teacher's PIN-guarded tab (what they set: ``settings``)."""

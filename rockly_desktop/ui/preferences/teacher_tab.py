@@ -15,8 +15,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from rockly_desktop.settings.teacher import MIN_PIN_LENGTH, wait_text
 from rockly_desktop.ui.plain_text import mnemonic_free, plain_label
-from rockly_desktop.ui.preferences.teacher_settings import MIN_PIN_LENGTH, wait_text
 from rockly_desktop.ui.texts import tr
 
 

@@ -25,9 +25,10 @@ class Replay(QObject):
 
     sig_opened = Signal(bool)
 
-    def __init__(self, bar, editor, variables, simulator, language: str, parent=None, badges=lambda: True,
+    def __init__(self, bar, editor, variables, simulator, language, parent=None, badges=lambda: True,
                  console=None, plot=lambda: None, state_panels=lambda: None, robots=None, registry=None):
-        """``badges()`` says whether the blocks' badges and values are shown (not at the Starter level); ``plot()`` is
+        """``language`` is the window's ``CurrentLanguage``, read whenever the replay speaks. ``badges()`` says
+        whether the blocks' badges and values are shown (not at the Starter level); ``plot()`` is
         the Plot panel and ``state_panels()`` the Robot state panels, each None while there is none;
         ``robots`` (a ``RobotChoice``) is the window's robot, whose profile and world a recording must have
         (None: any recording shows); the ``registry``'s profiles name the robot of a recording made on another."""
@@ -49,7 +50,7 @@ class Replay(QObject):
         self.editor = editor
         self.variables = variables
         self.simulator = simulator
-        self.language = language
+        self._language = language
         self.moments = None
         self._printed = None  # the lines printed, as the console shows them
         self._reader = None  # the RecordingReader whose recording is to be shown
@@ -126,10 +127,14 @@ class Replay(QObject):
                                                             ("replay_parts_left_out", notes)) if shown]
         return " ".join(short), notes
 
-    def set_language(self, language: str):
-        """Say the bar and what a moment shows in ``language`` from now on."""
-        self.language = language
-        self.bar.set_language(language)
+    @property
+    def language(self) -> str:
+        """The language the replay speaks: the window's, now."""
+        return self._language.code
+
+    def retitle(self):
+        """Say the bar in the current language (after it changed; what a moment shows follows by itself)."""
+        self.bar.retitle()
         self.bar.set_note(*self._bar_note())
 
     def _say(self, name: str, title: str, text: str):

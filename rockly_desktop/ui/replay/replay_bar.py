@@ -25,13 +25,13 @@ class MarkerStrip(QWidget):
 
     sig_jump = Signal(float)
 
-    def __init__(self, parent=None):
+    def __init__(self, language, parent=None):
         super().__init__(parent)
         self.setFixedHeight(10)
         self.setMouseTracking(True)
         self.markers = []
         self.duration = 0.0
-        self.language = "en"
+        self._language = language
 
     def _x(self, seconds: float) -> float:
         margin = 8  # about where the slider's groove begins and ends
@@ -52,7 +52,8 @@ class MarkerStrip(QWidget):
     def mouseMoveEvent(self, event):
         """Qt override: the marker under the pointer as a tooltip."""
         marker = self.nearest(event.position().x())
-        self.setToolTip(tooltip_text(tr(f"marker_{marker.kind}", self.language, text=marker.text)) if marker else "")
+        language = self._language.code
+        self.setToolTip(tooltip_text(tr(f"marker_{marker.kind}", language, text=marker.text)) if marker else "")
 
     def mousePressEvent(self, event):
         """Qt override: jump to the marker clicked."""
@@ -67,14 +68,14 @@ class ReplayBar(QWidget):
     sig_moment = Signal(float)
     sig_closed = Signal()
 
-    def __init__(self, language: str, parent=None):
+    def __init__(self, language, parent=None):
+        """``language``: the window's ``CurrentLanguage``, read whenever the bar speaks."""
         super().__init__(parent)
         self.setObjectName("replay_bar")
-        self.language = language
+        self._language = language
         self.duration = 0.0
         self._note = ""
-        self.markers = MarkerStrip(self)
-        self.markers.language = language
+        self.markers = MarkerStrip(language, self)
         self.markers.sig_jump.connect(self.jump_to)
         self.slider = QSlider(Qt.Orientation.Horizontal, self)
         self.slider.setObjectName("replay_slider")
@@ -108,12 +109,17 @@ class ReplayBar(QWidget):
         self._timer.timeout.connect(self._advance)
         self._played_at = None
         self._exact = None  # the time last jumped to, finer than the slider's milliseconds
-        self.set_language(language)
+        self.retitle()
         self.hide()
 
-    def set_language(self, language: str):
-        """Say everything in ``language`` from now on (the note is the replay's: ``set_note``)."""
-        self.language = self.markers.language = language
+    @property
+    def language(self) -> str:
+        """The language the bar speaks: the window's, now."""
+        return self._language.code
+
+    def retitle(self):
+        """Say everything in the current language (after it changed; the note is the replay's: ``set_note``)."""
+        language = self.language
         self.speed.setToolTip(tr("replay_speed", language))
         self.close_button.setToolTip(tr("replay_close", language))
         self._show_play_state()

@@ -22,10 +22,11 @@ class HealthBar(QLabel):
 
     sig_refreshed = Signal(object, list)
 
-    def __init__(self, language: str, parent=None):
+    def __init__(self, language, parent=None):
+        """``language``: the window's ``CurrentLanguage``, read at each look."""
         super().__init__(parent)
         self.setObjectName("health_bar")
-        self.language = language
+        self._language = language
         self.robot = None
         self.level = None
         self.items = []
@@ -45,13 +46,13 @@ class HealthBar(QLabel):
             return
         self.items = self.robot.health()
         self.level = overall(self.items)
-        colour = COLOURS[self.level]
-        summary = tr("health_" + self.level, self.language)
+        colour, language = COLOURS[self.level], self._language.code
+        summary = tr("health_" + self.level, language)
         self.setText(f"<span style='color:{colour}; font-size:16px'>●</span> {summary}")
         rows = "".join(f"<tr><td style='color:{COLOURS[item.level]}'>{SYMBOLS[item.level]}</td>"
-                       f"<td>{_escape(said_in(item.name, self.language))}</td>"
-                       f"<td>{_escape(said_in(item.detail, self.language))}</td></tr>" for item in self.items)
-        self.setToolTip(f"<b>{tr('health_title', self.language)}</b><table>{rows}</table>")
+                       f"<td>{_escape(said_in(item.name, language))}</td>"
+                       f"<td>{_escape(said_in(item.detail, language))}</td></tr>" for item in self.items)
+        self.setToolTip(f"<b>{tr('health_title', language)}</b><table>{rows}</table>")
         self.sig_refreshed.emit(self.robot, self.items)
 
     def stop(self):

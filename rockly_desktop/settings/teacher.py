@@ -15,8 +15,9 @@ import os
 import time
 from dataclasses import dataclass
 
+from rockly_desktop.core.app_texts import app_text
 from rockly_desktop.robot.wrappers.limits import Limits
-from rockly_desktop.ui.texts import tr
+from rockly_desktop.settings.group import SettingsGroup
 
 _ITERATIONS = 200_000
 MIN_PIN_LENGTH = 4
@@ -51,30 +52,22 @@ class PinAnswer:
             return ""
         if self.refused:
             return wait_text(self.wait, language)
-        wrong = tr("teacher_wrong_pin", language)
+        wrong = app_text("teacher_wrong_pin", language)
         return f"{wrong} {wait_text(self.wait, language)}" if self.wait > 0 else wrong
 
 
 def wait_text(seconds: float, language: str) -> str:
     """'Too many wrong PINs: the next one is taken in … seconds/minutes.' in ``language``."""
     if seconds > 90:
-        return tr("teacher_pin_wait_minutes", language, minutes=math.ceil(seconds / 60))
+        return app_text("teacher_pin_wait_minutes", language, minutes=math.ceil(seconds / 60))
     whole = max(1, math.ceil(seconds))
-    return tr("teacher_pin_wait_second" if whole == 1 else "teacher_pin_wait_seconds", language, seconds=whole)
+    return app_text("teacher_pin_wait_second" if whole == 1 else "teacher_pin_wait_seconds", language, seconds=whole)
 
 
-class TeacherSettings:
+class TeacherSettings(SettingsGroup):
     """The teacher's part of Rockly's QSettings ``store`` (keys under ``teacher/``)."""
 
-    def __init__(self, store):
-        self._store = store
-
-    def _get(self, key, default=None):
-        value = self._store.value(f"teacher/{key}")
-        return default if value is None or value == "" else value
-
-    def _set(self, key, value):
-        self._store.setValue(f"teacher/{key}", value)
+    prefix = "teacher"
 
     # --- the PIN ------------------------------------------------------------------------
 

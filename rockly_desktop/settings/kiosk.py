@@ -3,6 +3,7 @@ are kept in after an idle reset, the idle minutes, and the key chord that leaves
 from pathlib import Path
 
 from rockly_desktop.core import paths
+from rockly_desktop.settings.group import SettingsGroup
 
 DEFAULT_IDLE_MINUTES = 3
 
@@ -17,18 +18,10 @@ def default_visitors_folder() -> Path:
     return paths.user_data_dir() / "visitors"
 
 
-class KioskSettings:
+class KioskSettings(SettingsGroup):
     """The kiosk part of Rockly's QSettings ``store`` (keys under ``kiosk/``)."""
 
-    def __init__(self, store):
-        self._store = store
-
-    def _get(self, key, default=None):
-        value = self._store.value(f"kiosk/{key}")
-        return default if value is None or value == "" else value
-
-    def _set(self, key, value):
-        self._store.setValue(f"kiosk/{key}", value)
+    prefix = "kiosk"
 
     @property
     def programs_folder(self) -> Path:

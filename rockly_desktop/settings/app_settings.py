@@ -9,10 +9,10 @@ from pathlib import Path
 
 from PySide6.QtCore import QSettings
 
-from rockly_desktop.core.app_texts import languages
 from rockly_desktop.core.paths import recordings_dir
-from rockly_desktop.ui.kiosk.kiosk_settings import KioskSettings
-from rockly_desktop.ui.preferences.teacher_settings import TeacherSettings
+from rockly_desktop.settings.kiosk import KioskSettings
+from rockly_desktop.settings.language import CurrentLanguage
+from rockly_desktop.settings.teacher import TeacherSettings
 
 MAX_RECENT = 8
 
@@ -31,7 +31,7 @@ class AppSettings:
         else:
             self._store = QSettings(str(path), QSettings.Format.IniFormat)
         keep_private(Path(self._store.fileName()), own_folder=path is None)
-        self.language_watchers = []  # called with the new language when it changes
+        self.current_language = CurrentLanguage(self._store)  # the language's one owner
         self.kiosk_mode = False
 
     def _get(self, key, default=None):
@@ -40,17 +40,12 @@ class AppSettings:
 
     @property
     def language(self) -> str:
-        """The window and block language: one Rockly speaks (anything else stored reads as 'en')."""
-        language = str(self._get("language", "en"))
-        return language if language in languages() else "en"
+        """The window and block language (``current_language.code``, which owns it)."""
+        return self.current_language.code
 
     @language.setter
     def language(self, value: str):
-        changed = value != self.language
-        self._store.setValue("language", value)
-        if changed:
-            for watcher in list(self.language_watchers):
-                watcher(self.language)
+        self.current_language.code = value
 
     @property
     def profile_id(self):
