@@ -17,7 +17,7 @@ from pathlib import Path
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.workspace_blocks import block_types_by_id
 from rockly_desktop.robot.links import DEFAULT_KIND
-from rockly_desktop.runtime.run import Run
+from rockly_desktop.runtime.run import Run, failed
 
 COMMAND = "rockly run"
 
@@ -35,7 +35,7 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
     try:
         program, _python, run_code, workspace = generate_headless(program_path, language)
     except RocklyError as error:
-        return Run(None, None, {}, language, COMMAND).fail(error)
+        return failed(COMMAND, error, language)
     run = Run(program.profile, run_code, block_types_by_id(workspace), language, COMMAND, out=out)
     for warning in opening_warnings(program, language):
         run.warn(warning)

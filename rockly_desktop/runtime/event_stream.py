@@ -3,9 +3,9 @@ test) follows it block by block.
 
 One JSON object per line (UTF-8, ``\\n`` at its end), each naming its ``event``:
 
-    {"event": "started", "format": 1, "rockly": "0.1.0", "program": "square.rockly", "profile": "hobbit",
+    {"event": "started", "format": 1, "rockly": "0.1.0", "program": "square.rockly", "profile": "my_robot",
      "profile_version": "1.0.0", "backend": "sim", "pid": 4242}
-    {"event": "block", "id": "b7", "type": "hobbit_move"}          the program is about to run block b7
+    {"event": "block", "id": "b7", "type": "my_robot_move"}        the program is about to run block b7
     {"event": "print", "text": "hello"}                               one line the program printed
     {"event": "paused", "block": "b7", "reason": "breakpoint"}        (or "step", "pause")
     {"event": "resumed"}

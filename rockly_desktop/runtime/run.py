@@ -23,6 +23,12 @@ EXIT_FINISHED, EXIT_ERROR = 0, 1
 STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM)
 
 
+def failed(command: str, error: RocklyError, language: str) -> int:
+    """Say ``error`` on standard error, after ``command``'s name; the exit status of a failed run."""
+    print(f"{command}: {error.in_language(language)}", file=sys.stderr)
+    return EXIT_ERROR
+
+
 def exit_status_stopped(signum) -> int:
     """The exit status of a run a signal stopped: 128 + its number (130 Ctrl+C, 143 SIGTERM), as a shell says."""
     return 128 + int(signum)
@@ -52,11 +58,9 @@ class Run:
         self.control = RunControl(trace=trace)
         self.stopped_by = signal.SIGINT
 
-    def fail(self, error) -> int:
-        """Say ``error`` (a RocklyError) on standard error; the exit status of a failed run."""
-        text = error.in_language(self.language) if isinstance(error, RocklyError) else str(error)
-        print(f"{self.command}: {text}", file=sys.stderr)
-        return EXIT_ERROR
+    def fail(self, error: RocklyError) -> int:
+        """Say ``error`` on standard error; the exit status of a failed run."""
+        return failed(self.command, error, self.language)
 
     def warn(self, warning: str):
         """Say ``warning`` on standard error."""

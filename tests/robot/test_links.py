@@ -22,6 +22,7 @@ from rockly_desktop.robot.links import (
     serve_simulator,
 )
 from rockly_desktop.robot.sim.link import SimulatedRobot
+from rockly_desktop.runtime import options
 from rockly_desktop.ui.texts import robot_problem, tr
 
 REPO = Path(__file__).resolve().parents[2]
@@ -106,7 +107,7 @@ def test_ros2_asks_for_domain_discovery_range_and_peers_with_its_own_options(mon
     monkeypatch.setenv("ROS_DOMAIN_ID", "42")
     assert (settings[0].default_value(), settings[1].default_value()) == ("42", "localhost")
     args = cli._tool_parser().parse_args(["run", "p.rockly", "--backend", "ros2", "--domain", "7"])
-    assert cli._connection("ros2", args) == {"domain_id": "7", "discovery": None, "peers": None,
+    assert options.connection("ros2", args) == {"domain_id": "7", "discovery": None, "peers": None,
                                              "ros_distribution": None}
     assert [value for value, _text in settings[3].choices] == ["auto", "humble", "iron", "jazzy", "kilted", "rolling"]
     monkeypatch.delenv("ROS_DISTRO", raising=False)
@@ -149,8 +150,8 @@ def test_the_command_line_offers_the_registry_kinds_and_their_options(monkeypatc
     for entry in link_kinds():
         assert parser.parse_args(["run", "p.rockly", "--backend", entry.kind]).backend == entry.kind
     args = parser.parse_args(["run", "p.rockly", "--backend", "fake", "--where", "there"])
-    assert cli._connection("fake", args) == {"where": "there"}
-    assert cli._connection("ros1", parser.parse_args(["run", "p.rockly", "--master", "http://m:1"])) == {
+    assert options.connection("fake", args) == {"where": "there"}
+    assert options.connection("ros1", parser.parse_args(["run", "p.rockly", "--master", "http://m:1"])) == {
         "master": "http://m:1"}
     assert parser.parse_args(["sim", "hobbit", "--fake"]).serve_on == "fake"
     assert parser.parse_args(["sim", "hobbit", "--ros"]).serve_on == "ros1"
