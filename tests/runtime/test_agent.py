@@ -218,11 +218,11 @@ def test_a_lost_editor_keeps_the_run_going_or_stops_the_robot_as_the_program_say
     try:
         watcher.client.send("drive", program[0].read_text(), on_lost_editor=choice, decide_seconds=0.5)
         watcher.client.attach(control=False)
-        editor = subprocess.Popen(agent.robot_command("attach"), cwd=REPO, text=True, stdout=subprocess.PIPE,
-                                  stderr=subprocess.DEVNULL)
-        assert json.loads(editor.stdout.readline())["controller"] is True
         watcher.client.start("drive")
         watcher.wait_for(lambda event: event.get("id") == "drive")
+        editor = subprocess.Popen(agent.robot_command("attach"), cwd=REPO, text=True, stdout=subprocess.PIPE,
+                                  stderr=subprocess.DEVNULL)
+        assert json.loads(editor.stdout.readline())["controller"] is True  # the watcher here is not the editor
         editor.kill()  # the laptop's side is gone: no more heartbeats
         editor.communicate()
         end = watcher.wait_for(ended)

@@ -10,7 +10,7 @@ import json
 
 FORMAT = 1  # of this protocol; an agent and a client of other formats say so and stop
 DEFAULT_PORT = 11411
-HEARTBEAT_SECONDS = 0.5  # how often an attached client says it is there
+HEARTBEAT_SECONDS = 0.2  # how often an attached client says it is there (well inside any time to decide)
 LOST_EDITOR_CHOICES = ("keep_going", "stop")
 DEFAULT_DECIDE_SECONDS = 2.0
 MAX_LINE_BYTES = 64 * 1024 * 1024  # a program's text travels in one line

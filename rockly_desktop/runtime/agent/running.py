@@ -26,7 +26,7 @@ class ProgramRun:
         self.finished = None
         self.status = None
         self.started = time.time()
-        self.last_heartbeat = None  # of an attached editor; the watch starts with the first
+        self.last_heartbeat = None  # of the controlling client (the editor); the watch starts with the first
         self.stopped_for_lost_editor = False
         self._lock = threading.Lock()
         self._on_end = on_end
@@ -57,7 +57,7 @@ class ProgramRun:
             pass
 
     def heartbeat(self):
-        """An attached editor is there now."""
+        """The editor (the controlling client) is there now."""
         self.last_heartbeat = time.monotonic()
 
     def end(self, timeout: float = 30.0):
@@ -112,8 +112,9 @@ class ProgramRun:
                 self.state, self.finished = "finishing", record
 
     def _watch_editor(self):
-        """With "stop the robot" for a lost editor: stop the run once no attached editor has been heard from for
-        the program's time to decide (the watch starts with the first heartbeat)."""
+        """With "stop the robot" for a lost editor: stop the run once the editor (the controlling client) has not
+        been heard from for the program's time to decide (the watch starts with its first heartbeat; a window
+        attaching again in time and taking control keeps the run going)."""
         if self.about.get("on_lost_editor") != "stop":
             return
         decide = float(self.about.get("decide_seconds", 2.0))

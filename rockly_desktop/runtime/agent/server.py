@@ -13,7 +13,8 @@ Requests (each answered; refusals say why in the client's language):
     attach   {"control": bool}                                    -> {"run", "controller", "controlled_elsewhere"}
     detach                                                        -> {}
     control  {"what": "pause"|"step"|"continue"}                  -> {}  (the controlling client only)
-    heartbeat                                                     (no answer without an "id")
+    heartbeat                                                     (no answer without an "id"); the controlling
+                                                                     client's say the editor is there
 
 An attached client gets every event of the run as it happens (see ``agent.protocol``).
 """
@@ -134,7 +135,7 @@ class Agent:
             client.attached = True
             if request.get("control", True) and self.controller is None:
                 self.controller = client
-            if self.run is not None:
+            if self.run is not None and self.controller is client:
                 self.run.heartbeat()
             return {"run": self._snapshot(), "controller": self.controller is client,
                     "controlled_elsewhere": self.controller is not None and self.controller is not client}
@@ -156,7 +157,7 @@ class Agent:
 
     def _op_heartbeat(self, client, request):
         run = self.run
-        if client.attached and run is not None:
+        if client is self.controller and run is not None:  # the editor is the controlling client; watchers are not
             run.heartbeat()
         return {}
 
