@@ -239,7 +239,7 @@ def test_a_lost_editor_keeps_the_run_going_or_stops_the_robot_as_the_program_say
 def test_the_agent_killed_mid_run_leaves_the_robot_stopped(agent_at, program):
     """SIGKILL gives the agent no chance to stop anything: the program's own process sees its requests end
     and stops the robot itself."""
-    agent = agent_at(speed=0.05)
+    agent = agent_at(speed=0.01)  # the drive would take 100 s
     watcher = Watcher(agent)
     try:
         watcher.client.send("drive", program[0].read_text())
