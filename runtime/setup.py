@@ -15,8 +15,9 @@ from setuptools.command.build_py import build_py
 SOURCE = os.path.join("..", "rockly_desktop")
 RUNTIME_PACKAGES = [
     "rockly_desktop", "rockly_desktop.core", "rockly_desktop.executor", "rockly_desktop.profiles",
-    "rockly_desktop.recording", "rockly_desktop.robot", "rockly_desktop.robot.ros1", "rockly_desktop.robot.ros2",
-    "rockly_desktop.robot.ros2.helper", "rockly_desktop.runtime",
+    "rockly_desktop.profiles.packs", "rockly_desktop.recording", "rockly_desktop.robot", "rockly_desktop.robot.ros1",
+    "rockly_desktop.robot.ros2", "rockly_desktop.robot.ros2.helper", "rockly_desktop.robot.sim",
+    "rockly_desktop.robot.wrappers", "rockly_desktop.runtime", "rockly_desktop.runtime.agent",
 ]
 TOP_MODULES = {"__init__", "sdk"}  # of rockly_desktop itself; the rest of it is the window's
 LEFT_OUT = {("rockly_desktop.executor", "qt_adapter")}  # the runner's Qt adapter

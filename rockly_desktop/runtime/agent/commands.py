@@ -1,4 +1,6 @@
-"""``rockly agent`` (the agent on the robot) and ``rockly robot ...`` (a client on the command line)."""
+"""``rockly agent`` (the agent on the robot) and ``rockly robot ...`` (a client on the command line); on a robot
+with only ``rockly-runtime``: ``rockly-agent`` and ``rockly-robot``."""
+import argparse
 import json
 import os
 import signal
@@ -17,12 +19,53 @@ def default_library() -> Path:
     return Path(data) / "rockly" / "agent-programs"
 
 
+def agent_main(argv=None) -> int:
+    """``rockly-agent`` (what ``rockly-runtime`` installs on a robot): ``rockly agent`` without the window's
+    ``rockly``."""
+    parser = argparse.ArgumentParser(prog="rockly-agent", description=app_text("agent_help", "en"))
+    _agent_options(parser)
+    _language_option(parser)
+    args = parser.parse_args(argv)
+    return serve(args, args.language or "en")
+
+
+def robot_main(argv=None) -> int:
+    """``rockly-robot`` (in ``rockly-runtime``): ``rockly robot`` for standalone ``.py`` programs only (exporting a
+    ``.rockly`` file needs the window's Rockly)."""
+    parser = argparse.ArgumentParser(prog="rockly-robot", description=app_text("robot_help", "en"))
+    _robot_options(parser)
+    _language_option(parser)
+    args = parser.parse_args(argv)
+    return robot_command(args, args.language or "en", _standalone_file)
+
+
+def _language_option(parser):
+    from rockly_desktop.core.app_texts import languages
+
+    parser.add_argument("--language", choices=languages(), help=app_text("cli_language_help", "en"))
+
+
+def _standalone_file(path: Path) -> tuple:
+    from rockly_desktop.core.errors import RocklyError
+    from rockly_desktop.core.program import read_text_file
+
+    try:
+        return read_text_file(path), None
+    except RocklyError as error:
+        raise AgentError("program", str(error)) from None
+
+
 def add_agent_parser(commands, language_option):
     """``rockly agent``'s command line."""
+    agent = commands.add_parser("agent", help=app_text("agent_help", "en"))
+    _agent_options(agent)
+    language_option(agent)
+
+
+def _agent_options(agent):
     from rockly_desktop.robot import links
     from rockly_desktop.runtime.options import add_connection_options
 
-    agent = commands.add_parser("agent", help=app_text("agent_help", "en"))
     agent.add_argument("--backend", default=links.DEFAULT_KIND, choices=[entry.kind for entry in links.link_kinds()],
                        help=app_text("agent_backend_help", "en"))
     add_connection_options(agent, links.link_kinds())
@@ -30,15 +73,18 @@ def add_agent_parser(commands, language_option):
     agent.add_argument("--host", default="0.0.0.0", help=app_text("agent_host_help", "en"))
     agent.add_argument("--port", type=int, default=DEFAULT_PORT, help=app_text("agent_port_help", "en"))
     agent.add_argument("--speed", type=float, default=1.0, help=app_text("standalone_speed_help", "en"))
-    language_option(agent)
 
 
 def add_robot_parser(commands, language_option):
     """``rockly robot list|send|start|stop|delete|attach``'s command line."""
     robot = commands.add_parser("robot", help=app_text("robot_help", "en"))
+    _robot_options(robot)
+    language_option(robot)
+
+
+def _robot_options(robot):
     robot.add_argument("--host", default="localhost", help=app_text("robot_host_help", "en"))
     robot.add_argument("--port", type=int, default=DEFAULT_PORT, help=app_text("agent_port_help", "en"))
-    language_option(robot)
     actions = robot.add_subparsers(dest="robot_command", required=True)
     actions.add_parser("list", help=app_text("robot_list_help", "en"))
     send = actions.add_parser("send", help=app_text("robot_send_help", "en"))
