@@ -4,12 +4,14 @@ checks of what is sent, and what a lost editor means."""
 import json
 import os
 import signal
+import socket
 import subprocess
 
 import pytest
 from agent_tools import REPO, AgentProcess
 from program_builder import block, number, rockly_document, stack
 from standalone_tools import environment, export_standalone
+from tiny_disk import fill, tiny_disk
 from waiting import eventually
 
 from rockly_desktop.runtime.agent.client import AgentClient, AgentError
@@ -275,3 +277,79 @@ def test_events_reach_every_watcher_while_many_attach(agent_at, program):
     finally:
         for watcher in watchers:
             watcher.close()
+
+
+@pytest.mark.parametrize("language, expected", [
+    ("en", "the robot's disk is full: 'second' was not kept (the programs already there are unchanged)"),
+    ("de", "die Festplatte des Roboters ist voll: 'second' wurde nicht aufbewahrt (die Programme dort sind "
+           "unverändert)"),
+])
+def test_a_full_disk_on_the_robot_is_said_and_loses_nothing(program, tmp_path, language, expected):
+    with tiny_disk(tmp_path / "disk") as disk:
+        agent = AgentProcess(disk / "library", "--speed", "20")
+        client = AgentClient("127.0.0.1", agent.port, language=language)
+        try:
+            client.send("first", program[0].read_text(), program[1].read_text())
+            kept = (disk / "library" / "first" / "program.py").read_text()
+            fill(disk)
+            with pytest.raises(AgentError) as refused:
+                client.send("second", program[0].read_text(), program[1].read_text())
+            assert refused.value.message.startswith(expected)
+            with pytest.raises(AgentError):  # replacing a kept one on a full disk keeps the one there
+                client.send("first", program[0].read_text().replace("drive.rockly", "other.rockly"))
+            assert [about["name"] for about in client.programs()["programs"]] == ["first"]
+            assert (disk / "library" / "first" / "program.py").read_text() == kept
+            assert client.source("first") == program[1].read_text()
+        finally:
+            client.close()
+            agent.stop()
+
+
+@pytest.mark.parametrize("language, expected", [
+    ("en", "the robot's agent (Rockly 0.1.0) and this Rockly (9.0.0) do not speak the same language"),
+    ("de", "der Agent des Roboters (Rockly 0.1.0) und dieses Rockly (9.0.0) sprechen nicht dieselbe Sprache"),
+])
+def test_a_client_of_another_rockly_version_is_told(agent_at, language, expected):
+    agent = agent_at()
+    with socket.create_connection(("127.0.0.1", agent.port), 30) as raw:
+        raw.sendall(json.dumps({"op": "hello", "id": 1, "rockly": "9.0.0", "format": 2,
+                                "language": language}).encode() + b"\n")
+        answer = json.loads(raw.makefile("rb").readline())
+    assert answer["reply"] == 1 and answer["ok"] is False and answer["error"] == "agent_other_format"
+    assert answer["message"].startswith(expected)
+
+
+def test_sigterm_to_the_agent_mid_run_stops_the_program_with_the_safe_stop_first(agent_at, program):
+    """As systemd or a launch file ends the agent: the run ends stopped, then the agent exits 0."""
+    agent = agent_at(speed=0.01)
+    watcher = Watcher(agent)
+    try:
+        watcher.client.send("drive", program[0].read_text())
+        watcher.client.attach()
+        watcher.client.start("drive")
+        watcher.wait_for(lambda event: event.get("id") == "drive")
+        agent.process.terminate()
+        assert agent.process.wait(60) == 0
+        finished = next(event for event in watcher.events if event.get("event") == "finished")
+    finally:
+        watcher.close()
+    assert (finished["outcome"], finished["block"]) == ("stopped", "drive")
+
+
+def test_rockly_robot_sends_a_rockly_file_exported_and_checked(agent_at, program, tmp_path):
+    """The laptop's ``rockly robot send PROGRAM.rockly`` exports it as ``--standalone`` does and sends both texts."""
+    agent = agent_at()
+    env = environment(XDG_CONFIG_HOME=str(tmp_path / "config"), XDG_DATA_HOME=str(tmp_path / "data"))
+    sent = agent.robot("send", program[1], "--decide-seconds", "3", env=env)
+    assert sent.returncode == 0 and sent.stdout == "'drive' is on the robot now\n", sent.stderr
+    listed = agent.robot("list", language="de")
+    assert "Editor verloren: Roboter nach 3,0 s anhalten" in listed.stdout
+    client = AgentClient("127.0.0.1", agent.port)
+    try:
+        assert client.source("drive") == program[1].read_text()
+    finally:
+        client.close()
+    broken = tmp_path / "broken.rockly"
+    broken.write_text("{")
+    refused = agent.robot("send", broken, env=env)
+    assert refused.returncode == 1 and refused.stderr.startswith("rockly robot: ")

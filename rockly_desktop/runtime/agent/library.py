@@ -10,13 +10,15 @@ newer than the installed one, and of a format this runtime reads.
 """
 import ast
 import json
+import os
 import re
 import shutil
+import tempfile
 from datetime import datetime, timezone
 from pathlib import Path
 
 from rockly_desktop.core.errors import RocklyError
-from rockly_desktop.core.program import parse_program, write_text_atomically
+from rockly_desktop.core.program import parse_program
 from rockly_desktop.core.workspace_checks import workspace_problem
 from rockly_desktop.recording.mcap_file import disk_full
 from rockly_desktop.runtime import standalone
@@ -61,6 +63,8 @@ class Library:
         """What is known of each kept program (its ``about.json``), by name."""
         found = []
         for about in sorted(self.folder.glob(f"*/{ABOUT}")):
+            if about.parent.name.startswith("."):  # one being written or replaced
+                continue
             try:
                 found.append(json.loads(about.read_text(encoding="utf-8")))
             except (OSError, ValueError):
@@ -97,21 +101,8 @@ class Library:
                  "rockly": program.get("rockly"), "source": program.get("source"),
                  "on_lost_editor": on_lost_editor, "decide_seconds": float(decide_seconds),
                  "has_source": source_text is not None}
-        try:
-            folder.mkdir(parents=True, exist_ok=True)
-            write_text_atomically(folder / STANDALONE, standalone_text)
-            if source_text is not None:
-                write_text_atomically(folder / SOURCE, source_text)
-            elif (folder / SOURCE).exists():
-                (folder / SOURCE).unlink()
-            write_text_atomically(folder / ABOUT, json.dumps(about, indent=1, ensure_ascii=False) + "\n")
-        except OSError as error:
-            if disk_full(error):
-                raise AgentRefusal("agent_disk_full", name=name) from None
-            raise AgentRefusal("agent_cannot_keep", name=name, reason=error.strerror or str(error)) from None
-        except RocklyError as error:
-            raise AgentRefusal("agent_cannot_keep", name=name,
-                               reason={"en": error.in_language("en"), "de": error.in_language("de")}) from None
+        self._replace(folder, {STANDALONE: standalone_text, SOURCE: source_text,
+                               ABOUT: json.dumps(about, indent=1, ensure_ascii=False) + "\n"})
         return about
 
     def source(self, name: str):
@@ -124,6 +115,36 @@ class Library:
         """Remove program ``name`` from the library."""
         self.about(name)
         shutil.rmtree(self._folder_of(name))
+
+    def _replace(self, folder: Path, texts: dict):
+        """Make ``folder`` hold ``texts`` (file name -> text, None: no such file) whole or not at all: they are
+        written into a new folder beside it first, which then takes its place."""
+        incoming = None
+        try:
+            self.folder.mkdir(parents=True, exist_ok=True)
+            incoming = Path(tempfile.mkdtemp(prefix=".incoming-", dir=self.folder))
+            for file_name, text in texts.items():
+                if text is not None:
+                    with open(incoming / file_name, "w", encoding="utf-8") as stream:
+                        stream.write(text)
+                        stream.flush()
+                        os.fsync(stream.fileno())
+            previous = folder.with_name(".previous-" + incoming.name) if folder.exists() else None
+            if previous is not None:
+                os.rename(folder, previous)
+            os.rename(incoming, folder)
+            incoming = None
+            if previous is not None:
+                shutil.rmtree(previous, ignore_errors=True)
+        except OSError as error:
+            if disk_full(error):
+                raise AgentRefusal("agent_disk_full", name=folder.name) from None
+            raise AgentRefusal("agent_cannot_keep", name=folder.name, reason=error.strerror or str(error)) from None
+        except UnicodeEncodeError as error:  # half an emoji: not UTF-8
+            raise AgentRefusal("agent_cannot_keep", name=folder.name, reason=error.reason) from None
+        finally:
+            if incoming is not None:
+                shutil.rmtree(incoming, ignore_errors=True)
 
     def _folder_of(self, name) -> Path:
         if not isinstance(name, str) or not NAME.match(name) or name.strip(". ") != name.strip() or ".." in name:
