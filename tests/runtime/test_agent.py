@@ -353,3 +353,27 @@ def test_rockly_robot_sends_a_rockly_file_exported_and_checked(agent_at, program
     broken.write_text("{")
     refused = agent.robot("send", broken, env=env)
     assert refused.returncode == 1 and refused.stderr.startswith("rockly robot: ")
+
+
+def test_a_paused_run_steps_block_by_block(agent_at, program):
+    """Paused during the drive, a step ends that block and holds before the next; another step runs it."""
+    agent = agent_at(speed=0.5)
+    watcher = Watcher(agent)
+    try:
+        watcher.client.send("drive", program[0].read_text())
+        watcher.client.attach()
+        watcher.client.start("drive")
+        watcher.wait_for(lambda event: event.get("id") == "drive")
+        watcher.client.control("pause")
+        paused = watcher.wait_for(lambda event: event.get("event") == "paused")
+        assert (paused["block"], paused["reason"]) == ("drive", "pause")
+        assert watcher.client.programs()["run"]["state"] == "paused"
+        watcher.client.control("step")
+        held = watcher.wait_for(lambda event: event.get("event") == "paused" and event["block"] == "tell")
+        assert held["reason"] == "step"
+        assert not any(event.get("event") == "print" for event in watcher.events)  # held before "tell"
+        watcher.client.control("step")
+        assert watcher.wait_for(lambda event: event.get("event") == "print")["text"] == "done"
+        assert watcher.wait_for(ended)["status"] == 0
+    finally:
+        watcher.close()
