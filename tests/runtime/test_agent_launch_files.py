@@ -26,7 +26,7 @@ def test_the_ros1_node_script_starts_the_agent_without_roslaunchs_arguments(tmp_
         ready = node.stdout.readline()
         assert "listening on 127.0.0.1:" in ready, node.stderr.read()
         client = AgentClient("127.0.0.1", int(ready.split("127.0.0.1:")[1].split(",")[0]))
-        assert (client.programs()["programs"], client.programs()["run"]) == ([], None)
+        assert client.programs() == {"programs": [], "run": None}
         client.close()
     finally:
         node.terminate()

@@ -62,7 +62,8 @@ class AgentClient:
         self.hello = self.request("hello", rockly=__version__, format=FORMAT, language=language, client=name)
 
     def request(self, op: str, **fields) -> dict:
-        """Send request ``op`` and return the agent's answer; raises AgentError on a refusal."""
+        """Send request ``op`` and return the agent's answer (its fields, without ``reply`` and ``ok``); raises
+        AgentError on a refusal or a lost connection."""
         number = next(self._ids)
         answer, done = {}, threading.Event()
         with self._lock:
@@ -76,7 +77,7 @@ class AgentClient:
             raise self._lost()
         if not answer.get("ok"):
             raise AgentError(answer.get("error", "?"), answer.get("message", "?"))
-        return answer
+        return {key: value for key, value in answer.items() if key not in ("reply", "ok")}
 
     def programs(self) -> dict:
         """``{"programs": [...], "run": snapshot or None}``: the robot's library and what runs."""
