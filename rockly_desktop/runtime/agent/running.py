@@ -84,10 +84,10 @@ class ProgramRun:
         with self._lock:
             self.state = "ended"
             self.status = status
+        self._on_end(self)  # first: a client told the run ended may start the next one at once
         self.publish({"event": "run", "state": "ended", "program": self.about["name"], "status": status,
                       "stopped_for_lost_editor": self.stopped_for_lost_editor,
                       "errors": self.errors[-5:]})
-        self._on_end(self)
 
     def _read_errors(self):
         for line in self.process.stderr:
