@@ -20,6 +20,8 @@
     rockly blocks make --profile P --pack K --id ID --kind KIND ...  make a block without code into a block pack
     rockly blocks list [PACK]           list a block pack's blocks (without PACK: the installed packs)
     rockly blocks export PACK -o F.zip  write a block pack to one file; rockly blocks import F.zip installs one
+    rockly agent --backend ros1|ros2|sim  the agent on the robot: keeps programs, runs them (runtime/agent/)
+    rockly robot list|send|start|stop|delete|attach  talk to a robot's agent (--host ROBOT)
 
 The kinds of robot (``--backend``, ``rockly sim``'s ``--ros``, their connection options) come from the
 robot-link registry, ``robot/links.py``.
@@ -32,7 +34,7 @@ from pathlib import Path
 
 from rockly_desktop import __version__
 
-SUBCOMMANDS = ("profiles", "plugins", "export", "run", "sim", "replay", "recordings", "blocks")
+SUBCOMMANDS = ("profiles", "plugins", "export", "run", "sim", "replay", "recordings", "blocks", "agent", "robot")
 
 
 def _tool_parser() -> argparse.ArgumentParser:
@@ -84,6 +86,11 @@ def _tool_parser() -> argparse.ArgumentParser:
     from rockly_desktop.blocks_command import add_blocks_parser
 
     add_blocks_parser(commands, _language_option)
+
+    from rockly_desktop.runtime.agent.commands import add_agent_parser, add_robot_parser
+
+    add_agent_parser(commands, _language_option)
+    add_robot_parser(commands, _language_option)
 
     sim = commands.add_parser("sim", help="run a profile's simulated robot as a ROS node, in a small window")
     sim.add_argument("profile", help="the robot profile id (see rockly profiles list)")
@@ -258,6 +265,26 @@ def _standalone_text(program_path: Path, profile, run_code: dict, workspace: dic
                            teacher_limits(profile.id), language)
 
 
+def _robot_program(program_path: Path) -> tuple:
+    """``(standalone text, .rockly text or None)`` to send to a robot's agent: a ``.rockly`` (or first-Rockly
+    ``.xml``) program is exported as ``rockly export --standalone`` would; a ``.py`` is taken as one already."""
+    from rockly_desktop.core.errors import RocklyError
+    from rockly_desktop.core.program import read_text_file
+    from rockly_desktop.runtime.agent.client import AgentError
+
+    language = _app_language()
+    try:
+        if program_path.suffix.lower() == ".py":
+            return read_text_file(program_path), None
+        from rockly_desktop.app import generate_headless
+
+        program, _, run_code, workspace = generate_headless(program_path, language)
+        source = read_text_file(program_path) if program_path.suffix.lower() == ".rockly" else None
+        return _standalone_text(program_path, program.profile, run_code, workspace, language), source
+    except RocklyError as error:
+        raise AgentError("program", error.in_language(language)) from None
+
+
 def _is_standard_output(path: Path) -> bool:
     """True when ``path`` is this process's standard output (``/dev/stdout``, ``/dev/fd/1``, or
     the file stdout is redirected to): the Python then goes there as a stream, with no
@@ -300,6 +327,14 @@ def main(argv=None) -> int:
             from rockly_desktop.blocks_command import run_blocks_command
 
             return run_blocks_command(args, args.language or _app_language())
+        if args.command == "agent":
+            from rockly_desktop.runtime.agent.commands import serve
+
+            return serve(args, args.language or "en")
+        if args.command == "robot":
+            from rockly_desktop.runtime.agent.commands import robot_command
+
+            return robot_command(args, args.language or _app_language(), _robot_program)
         if args.command == "sim":
             from rockly_desktop.sim_command import serve_simulator
 

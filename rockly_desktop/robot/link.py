@@ -82,6 +82,17 @@ class RobotLink(Protocol):
     def graph_topics(self) -> list:
         """(topic, type, publisher count) of the robot's graph; the count is the others' (not Rockly's own)."""
 
+    def graph_services(self) -> list:
+        """(service, type as ``pkg/Type``) of the robot's graph, not Rockly's own; a type not known is "".
+        Read from what ``follow_graph`` last learnt: never waits (the window's thread calls it)."""
+
+    def graph_actions(self) -> list:
+        """(action, type as ``pkg/NameAction``) of the robot's action servers; never waits, as ``graph_services``."""
+
+    def graph_parameters(self) -> list:
+        """The names of the robot's parameters as ``ros.get_param`` takes them (ROS 1: the parameter
+        server's; ROS 2: ``node:param``); never waits, as ``graph_services``."""
+
     def own_publishers(self) -> dict:
         """{topic: how many publishers Rockly itself has on it} (not in ``graph_topics``' counts), so the
         Topic monitor counts them too."""

@@ -13,7 +13,8 @@ def safe_stop(link) -> list:
 
 
 class GraphFollowing:
-    """A link's state feed (``graph_topics``, ``own_publishers``, ``services``, ``stop``), started by
+    """A link's state feed (``graph_topics``, ``own_publishers``, ``services``, ``graph_services``,
+    ``graph_actions``, ``graph_parameters``, ``stop``), started by
     ``start()`` on the first ``follow`` and stopped by ``stop``; until then the robot's graph is empty."""
 
     def __init__(self, start):
@@ -45,3 +46,18 @@ class GraphFollowing:
         """{topic: Rockly's own publishers on it}; empty while not followed."""
         feed = self._feed
         return feed.own_publishers() if feed is not None else {}
+
+    def graph_services(self) -> list:
+        """(service, type) of the robot's graph; empty while not followed."""
+        feed = self._feed
+        return feed.graph_services() if feed is not None else []
+
+    def graph_actions(self) -> list:
+        """(action, type) of the robot's graph; empty while not followed."""
+        feed = self._feed
+        return feed.graph_actions() if feed is not None else []
+
+    def graph_parameters(self) -> list:
+        """The names of the robot's parameters; empty while not followed."""
+        feed = self._feed
+        return feed.graph_parameters() if feed is not None else []

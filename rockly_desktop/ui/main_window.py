@@ -434,11 +434,13 @@ class MainWindow(QMainWindow):
     def make_block(self, chosen: str = ""):
         """Open the block maker (Tools → Make a block…), with the topic, service or action ``chosen`` chosen."""
         from rockly_desktop.ui.blockmaker.maker_dialog import open_block_maker  # not needed before it is opened
+        from rockly_desktop.ui.blockmaker.offers import LiveGraph
 
-        try:
-            graph = self.robot().graph_topics() if self._robot_shown else []
-        except RocklyError:  # no robot to ask: the maker offers what the profile declares and knows
-            graph = []
+        def graph() -> LiveGraph:
+            try:
+                return LiveGraph.of(self.robot()) if self._robot_shown else LiveGraph()
+            except RocklyError:  # no robot to ask: the maker offers what the profile declares and knows
+                return LiveGraph()
         self.block_maker = open_block_maker(self.profile, self.language, graph, self, chosen)
         self.block_maker.sig_saved.connect(lambda _block_id: self.reload_packs())
         self.block_maker.sig_try_requested.connect(lambda page: self.runs.run(page=page))

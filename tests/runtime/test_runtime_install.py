@@ -16,6 +16,7 @@ from pathlib import Path
 import pytest
 from program_builder import block, number, rockly_document, stack
 from standalone_tools import REPO, environment, events, export_standalone, run_file
+from waiting import eventually
 
 RUNTIME_PARTS = ("rockly_desktop", "runtime", "resources/locale", "toolboxes", "profiles")
 SKIPPED = shutil.ignore_patterns("__pycache__", "build", "*.egg-info")
@@ -113,3 +114,37 @@ def test_a_standalone_export_runs_in_the_fresh_venv_on_the_simulator(fresh_venv,
     printed = [record["text"] for record in stream if record["event"] == "print"]
     assert len(printed) == 1 and float(printed[0]) == pytest.approx(0.5, abs=0.1)  # the robot moved
     assert stream[-1] == {"event": "exit", "status": 0} and result.stderr.splitlines()[-1] == "fertig"
+
+
+def test_the_agent_and_its_client_run_from_the_fresh_venv(fresh_venv, tmp_path):
+    """``rockly-agent`` and ``rockly-robot`` as a robot without Qt has them: a program sent, listed, run to its end."""
+    python, _wheel = fresh_venv
+    bin_folder = python.parent
+    source = tmp_path / "ahead.rockly"
+    source.write_text(rockly_document([block("hobbit_move", {"direction": "+"}, {"speed": number(0.5)}, id="ahead")]))
+    exported = export_standalone(source, tmp_path / "ahead.py", "--language", "en")
+    env = environment(PYTHONPATH="", ROCKLY_DATA_DIR="", PATH=f"{bin_folder}:/usr/bin:/bin")
+    agent = subprocess.Popen([str(bin_folder / "rockly-agent"), "--backend", "sim", "--host", "127.0.0.1", "--port",
+                              "0", "--library", str(tmp_path / "library"), "--speed", "20"], cwd="/", env=env,
+                             text=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    try:
+        ready = agent.stdout.readline()
+        assert "listening on 127.0.0.1:" in ready, agent.stderr.read()
+        port = ready.split("127.0.0.1:")[1].split(",")[0]
+
+        def robot(*args):
+            result = subprocess.run([str(bin_folder / "rockly-robot"), "--port", port, *map(str, args)], cwd="/",
+                                    env=env, capture_output=True, text=True, timeout=120)
+            assert result.returncode == 0, result.stderr
+            return result.stdout
+        assert robot("send", exported) == "'ahead' is on the robot now\n"
+        assert robot("list").startswith("ahead  hobbit 1.0.0  came ")
+        robot("start", "ahead")
+        attached = robot("attach")  # until the run ends (or at once if it has already)
+        if '"state": "ended"' not in attached:
+            assert '"run": null' in attached
+        eventually(lambda: "running:" not in robot("list"), 60)
+    finally:
+        agent.terminate()
+        agent.communicate(timeout=60)
+    assert agent.returncode == 0

@@ -1,12 +1,17 @@
 """The block maker in the real window (issue 22): Tools → Make a block… on the simulated HOBBIT, a
 service with two fields made into a block whose preview and Python follow each edit, saved into a
 block pack, in the toolbox at once, and run; the German window; bad input; the Topic monitor's menu."""
+import sys
+from pathlib import Path
+
 import pytest
+from json_line_node import JsonLineNode
 from page_tools import call_page, run_js
 from program_builder import block, number, stack, text, workspace
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction
 from PySide6.QtWidgets import QComboBox, QLineEdit, QListWidget, QPlainTextEdit, QWidget
+from ros_helpers import ros_environment
 from test_ros2_window import connected
 from waiting import eventually
 from window_tools import state
@@ -82,6 +87,9 @@ def test_a_service_with_two_fields_becomes_a_block_in_the_toolbox_that_runs(qtbo
 def test_the_german_window_shows_the_german_sentence(qtbot, german_window):
     maker = open_maker(qtbot, german_window)
     assert maker.windowTitle() == "Einen Block bauen"
+    assert maker.choose_named("/MMUI")  # the simulated robot serves it now
+    assert maker.offers.currentItem().text() == "Dienst: /MMUI  (hobbit_msgs/Request)  · jetzt am Roboter"
+    assert maker.offers.currentItem().toolTip().startswith("Der Roboter bietet das gerade an")
     make_mmui_block(qtbot, maker, "made_sag", "ask %1 to say %2", "frag %1 und sag %2")
     qtbot.waitUntil(lambda: (drawn_preview(qtbot, maker) or {}).get("text", "").startswith("frag"), timeout=10000)
     maker.save_button.click()
@@ -180,6 +188,56 @@ def test_on_ros_1_the_maker_offers_the_live_graph_and_a_made_sensor_block_reads_
     assert float(printed) == pytest.approx(0.0, abs=0.05)  # HOBBIT stands where it started
 
 
+@pytest.fixture
+def lamp_on_ros(ros_master):
+    """A plain rospy node serving /lamp/switch (std_srvs/SetBool) with the parameter /lamp/brightness."""
+    lamp = JsonLineNode([sys.executable, Path(__file__).parents[1] / "robot" / "ros1" / "ros1_lamp_node.py"],
+                        ros_environment(ros_master.uri, ros_master.home / "lamp"), "the lamp node")
+    yield lamp
+    lamp.stop()
+
+
+def made_and_run(qtbot, window, program) -> None:
+    """Save the open maker's block, wait for it in the toolbox, run ``program`` once: it must finish."""
+    maker = window.findChild(BlockMakerDialog)
+    block_id = maker.block_id.text()
+    assert maker.problems == []
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: block_id in window.editor.known_block_types, timeout=30000)
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(stack(program))})
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=30000) as finished:
+        assert window.runs.run()
+    assert finished.args[0].outcome == "finished", finished.args[0].message
+
+
+def test_on_ros_1_the_maker_offers_a_plain_nodes_service_and_parameter_and_their_blocks_reach_it(
+        qtbot, ros_window, lamp_on_ros):
+    robot = ros_window.robot()
+    eventually(lambda: ("/lamp/switch", "std_srvs/SetBool") in robot.graph_services()
+               and "/lamp/brightness" in robot.graph_parameters(), timeout=20)
+    assert ("/move_base", "move_base_msgs/MoveBaseAction") in robot.graph_actions()  # the simulated HOBBIT's
+    maker = open_maker(qtbot, ros_window)
+    assert maker.choose_named("/lamp/switch")  # in the live graph only: no profile declares it
+    assert maker.interface_type.text() == "std_srvs/SetBool"
+    assert maker.offers.currentItem().text() == "Service: /lamp/switch  (std_srvs/SetBool)  · on the robot now"
+    assert maker.choose_named("move_base") and maker.offers.currentItem().text().endswith("on the robot now")
+    assert maker.choose_named("/lamp/switch")
+    maker.fields.set_use("data", "input", "true")
+    maker.sentence["en"].setText("switch the lamp on: %1")
+    maker.block_id.setText("made_lamp")
+    made_and_run(qtbot, ros_window, block("made_lamp", inputs={"data": block("logic_boolean", {"BOOL": "TRUE"})}))
+    eventually(lambda: {"service": "/lamp/switch", "request": {"data": True}} in lamp_on_ros.lines, timeout=10)
+
+    maker = open_maker(qtbot, ros_window)
+    assert maker.choose_named("/lamp/brightness")
+    assert maker.offers.currentItem().text() == "Parameter: /lamp/brightness  · on the robot now"
+    maker.kind.setCurrentIndex(maker.kind.findData("get_param"))
+    maker.sentence["en"].setText("the lamp's brightness")
+    maker.block_id.setText("made_brightness")
+    made_and_run(qtbot, ros_window, block("text_print", inputs={"TEXT": block("made_brightness")}, id="say"))
+    assert ros_window.console.lines()[-2] == "7"
+
+
 def test_on_ros_2_the_maker_offers_the_live_graph_and_a_block_made_from_a_known_type_publishes(
         qtbot, window, test_robot, ros2_settings, monkeypatch):
     ros2_window = connected(window, ros2_settings, monkeypatch)
@@ -205,6 +263,47 @@ def test_on_ros_2_the_maker_offers_the_live_graph_and_a_block_made_from_a_known_
     assert finished.args[0].outcome == "finished", finished.args[0].message
     eventually(lambda: {"data": "made without code"} in [line["message"] for line in test_robot.received("/chatter")],
                timeout=10)
+
+
+def test_on_ros_2_the_maker_offers_a_plain_nodes_service_action_and_parameter_and_their_blocks_reach_it(
+        qtbot, window, test_robot, ros2_settings, monkeypatch):
+    ros2_window = connected(window, ros2_settings, monkeypatch)
+    robot = ros2_window.robot()
+    eventually(lambda: ("/set_light", "std_srvs/SetBool") in robot.graph_services()
+               and "/test_robot:max_speed" in robot.graph_parameters(), timeout=30)
+    assert ("/fibonacci", "test_msgs/FibonacciAction") in robot.graph_actions()
+    assert not [name for name, _type in robot.graph_services() if name.endswith("_parameters")]
+    maker = open_maker(qtbot, ros2_window)
+    assert maker.choose_named("/set_light")  # the test node's: no profile declares it
+    assert maker.offers.currentItem().text() == "Service: /set_light  (std_srvs/SetBool)  · on the robot now"
+    assert maker.choose_named("/fibonacci") and maker.interface_type.text() == "test_msgs/FibonacciAction"
+    assert maker.choose_named("/set_light")
+    maker.fields.set_use("data", "input", "true")
+    maker.sentence["en"].setText("switch the light on: %1")
+    maker.block_id.setText("made_light")
+    made_and_run(qtbot, ros2_window, block("made_light", inputs={"data": block("logic_boolean", {"BOOL": "TRUE"})}))
+    eventually(lambda: {"data": True} in [line["message"] for line in test_robot.received("/set_light")], timeout=10)
+
+    maker = open_maker(qtbot, ros2_window)
+    assert maker.choose_named("/test_robot:max_speed")
+    maker.kind.setCurrentIndex(maker.kind.findData("get_param"))
+    maker.sentence["en"].setText("the top speed")
+    maker.block_id.setText("made_max_speed")
+    made_and_run(qtbot, ros2_window, block("text_print", inputs={"TEXT": block("made_max_speed")}, id="say"))
+    assert float(ros2_window.console.lines()[-2]) == pytest.approx(0.22)
+
+
+def test_what_the_live_graph_gains_while_the_maker_is_open_is_offered_and_the_block_being_made_stays(
+        qtbot, window):
+    maker = open_maker(qtbot, window)
+    assert maker.choose_named("/MMUI")
+    maker.sentence["en"].setText("ask %1 to say %2")
+    offered = lambda: [maker.offers.item(row).text() for row in range(maker.offers.count())]  # noqa: E731
+    assert "Parameter: /lamp_level  · on the robot now" not in offered()
+    window.robot().world.params["/lamp_level"] = 3  # the simulated robot gains a parameter
+    qtbot.waitUntil(lambda: "Parameter: /lamp_level  · on the robot now" in offered(), timeout=10000)
+    assert maker.offers.currentItem().data(Qt.ItemDataRole.UserRole).name == "/MMUI"
+    assert maker.sentence["en"].text() == "ask %1 to say %2" and maker.interface.text() == "/MMUI"
 
 
 def test_every_control_of_the_maker_has_a_name_a_screen_reader_reads_in_the_windows_language(qtbot, german_window):

@@ -107,6 +107,18 @@ class RosRobot:
         """(topic, type, publisher count) of the ROS graph (once ``follow_graph`` runs)."""
         return self._following.graph_topics()
 
+    def graph_services(self) -> list:
+        """(service, type) of the ROS graph (once ``follow_graph`` runs), not Rockly's own."""
+        return self._following.graph_services()
+
+    def graph_actions(self) -> list:
+        """(action, type) of the ROS graph's action servers (once ``follow_graph`` runs)."""
+        return self._following.graph_actions()
+
+    def graph_parameters(self) -> list:
+        """The ROS graph's parameter names (once ``follow_graph`` runs)."""
+        return self._following.graph_parameters()
+
     def own_publishers(self) -> dict:
         """{topic: Rockly's own publishers on it} (not in ``graph_topics``), once ``follow_graph`` runs."""
         return self._following.own_publishers()

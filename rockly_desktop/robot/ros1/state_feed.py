@@ -1,7 +1,8 @@
 """Filling a StateStore from a ROS 1 graph: every topic, decoded to dicts, and the graph itself.
 
 A thread asks the master once a second which topics exist (with their types and
-publisher counts: the others' and Rockly's own apart) and subscribes to new ones through the shared RosGraph; rospy's
+publisher counts: the others' and Rockly's own apart), which services (with their types, asked of
+each server once), actions and parameters, and subscribes to new topics through the shared RosGraph; rospy's
 callback threads then record every message, undecoded (the store decodes what is read).
 Widgets read the store, never rospy.
 """
@@ -10,10 +11,12 @@ import threading
 
 from rockly_desktop.robot.followed_topics import FollowedTopics
 from rockly_desktop.robot.ros1.connection import ask_master
+from rockly_desktop.robot.ros1.graph_offers import ServiceTypes, graph_actions, parameter_names
 
 log = logging.getLogger(__name__)
 
 POLL_SECONDS = 1.0
+ROS_OWN_SERVICES = ("/get_loggers", "/set_logger_level")  # every rospy node's, no robot's
 
 
 class RosStateFeed:
@@ -25,6 +28,9 @@ class RosStateFeed:
         self._topics = []
         self._own = {}
         self._services = set()
+        self._typed_services = []
+        self._actions = []
+        self._parameters = []
         self._stopped = threading.Event()
         self._thread = threading.Thread(target=self._poll, name="rockly-ros-graph", daemon=True)
         self._thread.start()
@@ -42,6 +48,18 @@ class RosStateFeed:
         """Names of the services the master knows, as of the last poll."""
         return set(self._services)
 
+    def graph_services(self) -> list:
+        """(service, type) of the master's services, as of the last poll (a type its server did not say: "")."""
+        return list(self._typed_services)
+
+    def graph_actions(self) -> list:
+        """(action, type) of the actionlib servers in the graph, as of the last poll."""
+        return list(self._actions)
+
+    def graph_parameters(self) -> list:
+        """Names on the parameter server (not ROS's own), as of the last poll."""
+        return list(self._parameters)
+
     def stop(self):
         """Stop watching the graph (subscriptions stay with the shared RosGraph)."""
         self._stopped.set()
@@ -50,6 +68,7 @@ class RosStateFeed:
         import rospy
 
         uri = self._ros_graph.connection.master_uri
+        service_types = ServiceTypes(uri)
         while not self._stopped.is_set():
             if not self._ros_graph.connection.lost:
                 try:
@@ -64,6 +83,10 @@ class RosStateFeed:
                                           for topic, msg_type in types.items())
                     for topic, msg_type in types.items():
                         self._followed.follow(topic, msg_type)
+                    self._actions = graph_actions(types)
+                    self._parameters = parameter_names(uri)
+                    self._typed_services = service_types.typed(
+                        name for name, nodes in services if me not in nodes and not name.endswith(ROS_OWN_SERVICES))
                 except Exception as error:
                     log.debug("reading the ROS graph failed: %s", error)
             self._stopped.wait(POLL_SECONDS)

@@ -1,17 +1,21 @@
 """Filling a StateStore from the ROS 2 graph: every topic's messages, and the graph itself.
 
 A thread asks the helper once a second for the graph (topics with their types and publisher
-counts, services, action servers) and subscribes to new topics through the shared Ros2Graph;
+counts, services, action servers), every PARAMETER_POLL_SECONDS for the nodes' parameters (each
+node's answer bounded by PARAMETER_ANSWER_SECONDS), and subscribes to new topics through the shared Ros2Graph;
 the helper's messages are recorded as they come. Widgets read the store, never the helper.
 """
 import logging
 import threading
+import time
 
 from rockly_desktop.robot.followed_topics import FollowedTopics
 
 log = logging.getLogger(__name__)
 
 POLL_SECONDS = 1.0
+PARAMETER_POLL_SECONDS = 3.0
+PARAMETER_ANSWER_SECONDS = 1.0
 # ROS 2's own chatter, not the robot's
 IGNORED_TOPICS = {"/parameter_events", "/rosout"}
 
@@ -23,6 +27,7 @@ class Ros2StateFeed:
         self._ros_graph = ros_graph
         self._followed = FollowedTopics(store, lambda topic, msg_type: ros_graph.topic(topic, msg_type).raw_callbacks)
         self._graph = {"topics": [], "own": {}, "services": [], "actions": []}
+        self._parameters = []
         self._stopped = threading.Event()
         self._thread = threading.Thread(target=self._poll, name="rockly-ros2-graph", daemon=True)
         self._thread.start()
@@ -44,18 +49,35 @@ class Ros2StateFeed:
         """Names of the graph's action servers, as of the last poll."""
         return set(self._graph["actions"])
 
+    def graph_services(self) -> list:
+        """(service, ``pkg/Type``) of the graph's services (not actions' parts, nor nodes' parameter services)."""
+        return [tuple(entry) for entry in self._graph.get("typed_services", [])]
+
+    def graph_actions(self) -> list:
+        """(action, ``pkg/NameAction``) of the graph's action servers, as of the last poll."""
+        return [tuple(entry) for entry in self._graph.get("typed_actions", [])]
+
+    def graph_parameters(self) -> list:
+        """``node:param`` of the graph's nodes' parameters, as of the last parameter poll."""
+        return list(self._parameters)
+
     def stop(self):
         """Stop watching the graph (subscriptions stay with the shared Ros2Graph)."""
         self._stopped.set()
 
     def _poll(self):
         helper = self._ros_graph.helper
+        parameters_asked = 0.0
         while not self._stopped.is_set() and not helper.lost:
             try:
                 self._graph = helper.call("graph", timeout=5.0)
                 for topic, msg_type, count in self.graph_topics():
                     if count:
                         self._followed.follow(topic, msg_type)
+                if time.monotonic() - parameters_asked >= PARAMETER_POLL_SECONDS:
+                    parameters_asked = time.monotonic()
+                    self._parameters = helper.call("parameters", PARAMETER_ANSWER_SECONDS,
+                                                   timeout=PARAMETER_ANSWER_SECONDS + 5.0)
             except Exception as error:
                 log.debug("reading the ROS 2 graph failed: %s", error)
             self._stopped.wait(POLL_SECONDS)

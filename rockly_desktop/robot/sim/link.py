@@ -80,6 +80,20 @@ class SimulatedRobot:
         """(topic, type, publisher count) of the simulated robot's topics."""
         return [(topic, msg_type, 1) for topic, msg_type in self.world.topics()]
 
+    def graph_services(self) -> list:
+        """(service, type) of the simulated robot's services, typed as its profile declares them ("" if not)."""
+        declared = self.profile.ros_interface.get("services") or {}
+        return [(name, declared.get(name, "")) for name in self.world.services()]
+
+    def graph_actions(self) -> list:
+        """(action, type) of the simulated robot's action servers, typed as its profile declares them."""
+        declared = self.profile.ros_interface.get("actions") or {}
+        return [(name, declared.get(name, "")) for name in self.world.actions()]
+
+    def graph_parameters(self) -> list:
+        """The names of the simulated robot's parameters."""
+        return sorted(self.world.params.copy())  # a run may set one meanwhile
+
     def own_publishers(self) -> dict:
         """A program drives the simulated robot directly, with no publishers of its own."""
         return {}

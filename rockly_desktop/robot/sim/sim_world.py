@@ -113,6 +113,11 @@ class SimWorld:
         with self._changed:
             return name in self._services
 
+    def services(self) -> list:
+        """The names of the advertised services, sorted."""
+        with self._changed:
+            return sorted(self._services)
+
     def call_service(self, name: str, request: dict, interrupt) -> dict:
         """Run the service's handler in this thread and return its response.
 
@@ -138,6 +143,11 @@ class SimWorld:
         """True when an action server ``name`` is up."""
         with self._changed:
             return name in self._actions
+
+    def actions(self) -> list:
+        """The names of the action servers that are up, sorted."""
+        with self._changed:
+            return sorted(self._actions)
 
     def advertise_action(self, name: str, handler) -> None:
         """Serve the action ``name``: ``handler(goal, feedback, cancelled) -> (GoalStatus, result[, text])``.

@@ -7,7 +7,7 @@ window's language) and redraws the preview; saving writes nothing while there is
 import re
 from dataclasses import replace
 
-from PySide6.QtCore import Qt, Signal
+from PySide6.QtCore import Qt, QTimer, Signal
 from PySide6.QtGui import QFontDatabase
 from PySide6.QtWidgets import (
     QCheckBox,
@@ -42,6 +42,7 @@ PREVIEW_TYPE = "rockly_maker_preview"  # the preview's block type: never one of 
 FILLS_FIELDS = ("publish", "call_service", "send_goal")
 READS_FIELD = ("sensor_value", "wait_until")
 FALLBACK_COLOUR = "#4c97ff"
+GRAPH_REFRESH_MS = 1000  # the live graph is read again this often while the maker is open (as the feeds poll)
 
 
 def pack_id_for(profile) -> str:
@@ -61,6 +62,11 @@ def drawable_sentence(block) -> dict:
     wanted = list(range(1, len(block.inputs) + 1))
     sentences = {language: text for language, text in block.sentence.items() if sorted(sentence_places(text)) == wanted}
     return sentences or {"en": " ".join([block.interface or "?"] + [f"%{number}" for number in wanted])}
+
+
+def _same_offer(offer: Offer, other: Offer) -> bool:
+    """The same thing to make a block from, whether or not the live graph has it now."""
+    return (offer.kind, offer.name, offer.type) == (other.kind, other.name, other.type)
 
 
 class BlockMakerDialog(QDialog):
@@ -83,16 +89,13 @@ class BlockMakerDialog(QDialog):
         self.offers = QListWidget(self)
         self.offers.setObjectName("maker_offers")
         self.offers.setAccessibleName(tr("maker_offers", language))
-        for offer in offers:
-            kind = tr(offer.text_key, language)
-            item = QListWidgetItem(f"{kind}: {offer.label()}" if offer.label() else kind, self.offers)
-            item.setData(Qt.ItemDataRole.UserRole, offer)
         self.offer_filter = QLineEdit(self)
         self.offer_filter.setObjectName("maker_offer_filter")
         self.offer_filter.setPlaceholderText(tr("maker_offer_filter", language))
         self.offer_filter.setAccessibleName(tr("maker_offer_filter", language))
         self.offer_filter.setClearButtonEnabled(True)
         self.offer_filter.textChanged.connect(self._filter_offers)
+        self._list_offers(offers)
         self.offers.currentItemChanged.connect(lambda item, _old: item is not None and self.choose(
             item.data(Qt.ItemDataRole.UserRole)))
         self._build_form()
@@ -199,6 +202,38 @@ class BlockMakerDialog(QDialog):
         layout.addWidget(splitter, 1)
         layout.addWidget(self.buttons)
         self.resize(1200, 800)
+
+    def _list_offers(self, offers):
+        """Show ``offers`` in the list (the live ones marked), keeping the one chosen and the filter."""
+        chosen = self.offers.currentItem().data(Qt.ItemDataRole.UserRole) if self.offers.currentItem() else None
+        self.offers.blockSignals(True)  # the same offer chosen again must not reset the form
+        try:
+            self.offers.clear()
+            for offer in offers:
+                kind = tr(offer.text_key, self.language)
+                shown = f"{kind}: {offer.label()}" if offer.label() else kind
+                item = QListWidgetItem(f"{shown}  · {tr('maker_offer_live', self.language)}" if offer.live else shown,
+                                       self.offers)
+                item.setData(Qt.ItemDataRole.UserRole, offer)
+                if offer.live:
+                    item.setToolTip(tr("maker_offer_live_tip", self.language))
+                if chosen is not None and _same_offer(offer, chosen):
+                    self.offers.setCurrentItem(item)
+        finally:
+            self.offers.blockSignals(False)
+        self._listed = list(offers)
+        self._filter_offers(self.offer_filter.text())
+
+    def follow_graph(self, graph, known):
+        """Keep the list up to date with the robot's live graph while the maker is open: ``graph()`` gives
+        its ``LiveGraph`` (read without waiting), ``known`` the offers without a robot listed after it."""
+        def refresh():
+            offers = robot_offers(self.profile, graph()) + known
+            if offers != self._listed:
+                self._list_offers(offers)
+        self._graph_timer = QTimer(self)
+        self._graph_timer.timeout.connect(refresh)
+        self._graph_timer.start(GRAPH_REFRESH_MS)
 
     # -- choosing
 
@@ -322,10 +357,13 @@ class BlockMakerDialog(QDialog):
 
 
 
-def open_block_maker(profile, language: str, graph_topics, parent, chosen: str = "") -> BlockMakerDialog:
-    """Open the maker (not blocking) over ``parent`` for ``profile``, offering the robot's ``graph_topics``
-    and what the profile declares, then the types Rockly knows; with the offer named ``chosen`` chosen."""
-    dialog = BlockMakerDialog(profile, language, robot_offers(profile, graph_topics) + known_offers(profile), parent)
+def open_block_maker(profile, language: str, graph, parent, chosen: str = "") -> BlockMakerDialog:
+    """Open the maker (not blocking) over ``parent`` for ``profile``, offering what the robot's live graph
+    has (``graph()``: a ``LiveGraph``, read without waiting, again each second) and the profile declares,
+    then the types Rockly knows; with the offer named ``chosen`` chosen."""
+    known = known_offers(profile)
+    dialog = BlockMakerDialog(profile, language, robot_offers(profile, graph()) + known, parent)
+    dialog.follow_graph(graph, known)
     dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose)
     if chosen:
         dialog.choose_named(chosen)

@@ -1,7 +1,8 @@
 """What the maker offers to make a block from: the robot's topics, services, actions and parameters.
 
-With a robot, topics come from its live graph (``RobotLink.graph_topics``, on the simulator, ROS 1
-and ROS 2 alike) and services and actions from the interface its profile declares; without one,
+With a robot, topics, services, actions and parameters come from its live graph (``LiveGraph``, read
+from ``RobotLink.graph_topics``, ``graph_services``, ``graph_actions`` and ``graph_parameters`` on the
+simulator, ROS 1 and ROS 2 alike; each marked ``live``), with what its profile declares; without one,
 from the ROS types Rockly knows (``profiles.packs.interfaces.known_types``), named by their type.
 """
 from dataclasses import dataclass
@@ -25,6 +26,7 @@ class Offer:
     kind: str
     name: str
     type: str = ""
+    live: bool = False  # the robot's live graph has it now
 
     @property
     def text_key(self) -> str:
@@ -37,18 +39,46 @@ class Offer:
         return f"{self.name}  ({self.type})" if self.name and self.type else self.name or self.type
 
 
-def robot_offers(profile, graph_topics=()) -> list:
-    """The Offers of ``profile``'s robot: ``graph_topics`` ((topic, type, publishers) of the live graph)
-    with the topics, services and actions the profile declares, each once, sorted by kind and name."""
+@dataclass(frozen=True)
+class LiveGraph:
+    """What a robot's live graph has: (topic, type, publishers), (service, type), (action, type), parameter names."""
+
+    topics: tuple = ()
+    services: tuple = ()
+    actions: tuple = ()
+    parameters: tuple = ()
+
+    @classmethod
+    def of(cls, link) -> "LiveGraph":
+        """What ``link`` (a ``RobotLink``) last learnt of its graph (its reads never wait)."""
+        return cls(tuple(link.graph_topics()), tuple(link.graph_services()), tuple(link.graph_actions()),
+                   tuple(link.graph_parameters()))
+
+
+def robot_offers(profile, graph: LiveGraph = LiveGraph()) -> list:
+    """The Offers of ``profile``'s robot: what its live ``graph`` has (marked ``live``), with the topics,
+    services and actions the profile declares, each once (typed as the graph says, else as declared),
+    sorted by kind and name."""
     interface = profile.ros_interface or {}
-    topics = {topic: msg_type for topic, msg_type, *_ in graph_topics}
-    for part in ("subscribes", "publishes"):
-        for topic, msg_type in (interface.get(part) or {}).items():
-            topics.setdefault(topic, msg_type)
-    offers = [Offer("topic", name, msg_type) for name, msg_type in topics.items()]
-    offers += [Offer("service", name, srv_type) for name, srv_type in (interface.get("services") or {}).items()]
-    offers += [Offer("action", name, action_type) for name, action_type in (interface.get("actions") or {}).items()]
+    declared = {"topic": {**(interface.get("subscribes") or {}), **(interface.get("publishes") or {})},
+                "service": interface.get("services") or {}, "action": interface.get("actions") or {}}
+    live = {"topic": {topic: msg_type for topic, msg_type, *_ in graph.topics},
+            "service": dict(graph.services), "action": dict(graph.actions)}
+    offers = []
+    for kind, names in declared.items():
+        live_types = {_global(name): type_name for name, type_name in live[kind].items()}
+        offers += [Offer(kind, name, live_types.get(_global(name)) or type_name, _global(name) in live_types)
+                   for name, type_name in names.items()]
+        known = {_global(name) for name in names}  # "move_base" declared is "/move_base" live
+        offers += [Offer(kind, name, type_name, True) for name, type_name in live[kind].items()
+                   if _global(name) not in known]
+    offers += [Offer("parameter", name, "", True) for name in graph.parameters]
     return _sorted(offers)
+
+
+def _global(name: str) -> str:
+    """A ROS name as the graph lists it: ``move_base`` → ``/move_base``."""
+    return "/" + name.strip("/")
 
 
 def known_offers(profile) -> list:

@@ -4,7 +4,8 @@ Publishes /odom (reliable) and /scan (sensor-data QoS, best effort, as laser dri
 20 Hz, /map_name once (transient local, as a map server keeps its map for late joiners),
 serves /set_light (std_srvs/SetBool) and /fibonacci (test_msgs/Fibonacci, a feedback
 per step every 50 ms, cancellable), has parameters max_speed and robot_name, and prints
-one JSON line per message it gets on /cmd_vel and /chatter: {"topic", "type", "message"}.
+one JSON line per message it gets on /cmd_vel and /chatter and per /set_light request:
+{"topic", "type", "message"}.
 It prints {"ready": true} once everything is up, and leaves when stdin ends.
 """
 import json
@@ -64,6 +65,7 @@ def main():
     node.create_timer(0.05, publish)
 
     def set_light(request, response):
+        say({"topic": "/set_light", "type": "SetBool", "message": {"data": request.data}})
         response.success = request.data
         response.message = f"light {'on' if request.data else 'off'}"
         return response

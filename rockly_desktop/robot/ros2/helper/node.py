@@ -23,7 +23,7 @@ from rclpy.executors import SingleThreadedExecutor
 from rclpy.signals import SignalHandlerOptions
 
 from rockly_desktop.robot.ros2 import wire
-from rockly_desktop.robot.ros2.helper import qos
+from rockly_desktop.robot.ros2.helper import graph_offers, qos
 from rockly_desktop.robot.ros2.helper.layouts import layout
 from rockly_desktop.robot.ros2.helper.ros_values import (
     BadValue,
@@ -137,7 +137,8 @@ class Helper:
 
     # --- requests
     # requests that may wait (for a server, a match, an answer) run on the pool, not the reading loop
-    WAITING_OPS = {"publish_first", "subscribe", "service", "goal", "cancel_all", "get_param", "set_param"}
+    WAITING_OPS = {"publish_first", "subscribe", "service", "goal", "cancel_all", "get_param", "set_param",
+                   "parameters"}
 
     def handle(self, frame):
         """Do one request (``op_<name>``): inline, or on the pool when it may wait (a goal to a
@@ -339,10 +340,19 @@ class Helper:
             published = list(dict.fromkeys(info.topic_type for info in others))
             topics.append((name, published + [type_name for type_name in types if type_name not in published],
                            len(others)))
-        services = [name for name, _types in self.node.get_service_names_and_types()]
+        typed = self.node.get_service_names_and_types()
+        services = [name for name, _types in typed]
         actions = sorted({name[:-len("/_action/send_goal")] for name in services
                           if name.endswith("/_action/send_goal")})
-        return {"topics": topics, "own": own, "services": services, "actions": actions}
+        return {"topics": topics, "own": own, "services": services, "actions": actions,
+                "typed_services": graph_offers.typed_services(typed),
+                "typed_actions": graph_offers.typed_actions(typed)}
+
+    def op_parameters(self, seconds):
+        """``node:param`` of the graph's nodes that list their parameters within ``seconds``."""
+        services = [name for name, _types in self.node.get_service_names_and_types()]
+        return graph_offers.parameter_names(
+            services, lambda name: self._service_client(name, "rcl_interfaces/srv/ListParameters"), seconds)
 
     # --- services
     def _ready(self, client, wait, key, **values):

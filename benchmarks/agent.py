@@ -1,0 +1,189 @@
+"""The agent on the robot (``rockly agent --backend ros1``), against what runs on the laptop today, in one run:
+
+  - stop on the wire: a STOP request (``AgentClient.stop()``) -> the zero Twist of the robot's safe stop
+    received by a separate plain rospy node, while the program drives under the agent (aim <= 50 ms);
+    baseline: the same stop of the same program run in this process (the laptop's run, as benchmarks/ros1.py);
+  - attach: a new client connecting, saying hello and attaching to a running program until the run's state is
+    in hand (aim <= 1 s); baseline: one bare TCP request/answer with the same agent (connect, a line, a line).
+
+A real rosmaster on a free port; the agent and the echo node are processes of their own.
+
+    python benchmarks/agent.py
+"""
+import json
+import os
+import socket
+import statistics
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))
+sys.path.insert(0, str(REPO / "tests"))
+
+from _stop_on_the_wire import DRIVE_AND_WAIT, stop_latencies  # noqa: E402
+from ros_helpers import RosMaster, ros_environment  # noqa: E402
+
+STOP_TRIALS = 10
+ATTACH_TRIALS = 20
+
+ECHO_NODE = r'''
+import time, rospy
+from geometry_msgs.msg import Twist
+rospy.init_node("rockly_bench_agent_echo", disable_signals=True)
+def on_twist(m):
+    kind = "zero" if m.linear.x == 0 and m.angular.z == 0 else "move"
+    print(kind, repr(time.time()), flush=True)
+rospy.Subscriber("/cmd_vel", Twist, on_twist, queue_size=1000)
+print("ready", flush=True)
+rospy.spin()
+'''
+
+
+class Echo:
+    """The separate node: ``seen`` gets ``(kind, receive time)`` of every Twist on /cmd_vel."""
+
+    def __init__(self, master, home):
+        self.seen = []
+        self.process = subprocess.Popen(["/usr/bin/python3", "-c", ECHO_NODE], env=ros_environment(master.uri, home),
+                                        stdout=subprocess.PIPE, text=True)
+        assert self.process.stdout.readline().startswith("ready")
+        threading.Thread(target=self._read, daemon=True).start()
+
+    def _read(self):
+        for line in self.process.stdout:
+            kind, when = line.split()
+            self.seen.append((kind, float(when)))
+
+    def wait_for(self, kind, after, timeout=10.0):
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            for seen_kind, when in list(self.seen):
+                if seen_kind == kind and when > after:
+                    return when
+            time.sleep(0.0005)
+        raise RuntimeError(f"no {kind} Twist on the wire")
+
+
+def median_ms(values):
+    return statistics.median(values) * 1000
+
+
+def report(name, measured, baseline, baseline_name, aim):
+    ratio = statistics.median(measured) / statistics.median(baseline)
+    print(f"{name}: median {median_ms(measured):.1f} ms (max {max(measured) * 1000:.1f} ms, aim <= {aim}), "
+          f"{baseline_name} median {median_ms(baseline):.1f} ms, ratio {ratio:.2f}")
+
+
+def standalone_program(profile) -> str:
+    from rockly_desktop.robot.wrappers.limits import Limits
+    from rockly_desktop.runtime.standalone_file import standalone_text
+
+    return standalone_text("bench-drive.rockly", profile, {"code": DRIVE_AND_WAIT, "variables": {}}, {}, Limits(), "en")
+
+
+def agent_process(master, home, library):
+    process = subprocess.Popen([sys.executable, "-m", "rockly_desktop", "agent", "--backend", "ros1", "--master",
+                                master.uri, "--host", "127.0.0.1", "--port", "0", "--library", str(library)],
+                               cwd=REPO, env=ros_environment(master.uri, home), stdout=subprocess.PIPE, text=True)
+    ready = process.stdout.readline()
+    return process, int(ready.split("127.0.0.1:")[1].split(",")[0])
+
+
+def main():
+    from rockly_desktop.profiles.registry import ProfileRegistry
+    from rockly_desktop.runtime.agent.client import AgentClient
+
+    home = Path(tempfile.mkdtemp(prefix="rockly-bench-agent-"))
+    master = RosMaster(home).start()
+    os.environ.update(ros_environment(master.uri, home))
+    echo = Echo(master, home)
+    agent, port = agent_process(master, home, home / "library")
+    hobbit = ProfileRegistry.discover().get("hobbit")
+    events = []
+    client = AgentClient("127.0.0.1", port, on_event=events.append)
+    try:
+        client.send("drive", standalone_program(hobbit))
+        client.attach()
+        agent_stops = []
+        for _ in range(STOP_TRIALS):
+            events.clear()
+            begun = time.time()
+            client.start("drive")
+            echo.wait_for("move", begun, 60)
+            time.sleep(0.1)  # the run is in its wait
+            requested = time.time()
+            client.stop()
+            agent_stops.append(echo.wait_for("zero", requested) - requested)
+            while not any(event.get("state") == "ended" for event in list(events)):
+                time.sleep(0.01)
+        attaches, bare = attach_times(port, client)
+        local = local_stops(hobbit, master, echo)
+    finally:
+        client.close()
+        agent.terminate()
+        agent.wait(30)
+        echo.process.kill()
+        master.stop()
+    report("STOP -> zero Twist on the wire, program under the agent", agent_stops, local,
+           "the same run on the laptop", "50 ms")
+    report("attach to a running program (connect, hello, attach)", attaches, bare,
+           "a bare TCP request to the agent", "1000 ms")
+    print("(one loaded machine shared with other work: figures vary between runs)")
+
+
+def attach_times(port, client):
+    """Attach times with the program running, and the bare TCP request baseline."""
+    from rockly_desktop.runtime.agent.client import AgentClient
+
+    client.start("drive")
+    attaches, bare = [], []
+    try:
+        for _ in range(ATTACH_TRIALS):
+            started = time.perf_counter()
+            watcher = AgentClient("127.0.0.1", port)
+            state = watcher.attach(control=False)
+            attaches.append(time.perf_counter() - started)
+            assert state["run"] is not None
+            watcher.close()
+            started = time.perf_counter()
+            with socket.create_connection(("127.0.0.1", port)) as raw:
+                raw.sendall(json.dumps({"op": "list", "id": 1}).encode() + b"\n")
+                raw.makefile("rb").readline()
+            bare.append(time.perf_counter() - started)
+    finally:
+        client.stop()
+    return attaches, bare
+
+
+def local_stops(hobbit, master, echo):
+    """The baseline: the same program run in this process on a RosRobot, stopped the same way."""
+    from rockly_desktop.robot.ros1.link import RosRobot
+
+    robot = RosRobot(hobbit, master.uri)
+    arrivals = []
+    watching = threading.Event()
+
+    def follow():
+        index = len(echo.seen)  # the agent's trials' zeros are not this baseline's
+        while not watching.is_set():
+            for kind, when in echo.seen[index:]:
+                if kind == "zero":
+                    arrivals.append(when)
+            index = len(echo.seen)
+            time.sleep(0.0005)
+    follower = threading.Thread(target=follow, daemon=True)
+    follower.start()
+    try:
+        return stop_latencies(hobbit, robot, arrivals, STOP_TRIALS)
+    finally:
+        watching.set()
+        robot.shutdown()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,73 @@
+"""One program's run under the agent, in a process of its own (so the agent lives on if the program crashes):
+
+    python3 -m rockly_desktop.runtime.agent.child STANDALONE.py --backend KIND [connection options] ...
+
+It runs the standalone file's program (read as data) with the runtime's ``Run``: its events go to standard
+output as JSON lines (``runtime.event_stream``), and it takes the agent's requests on standard input, one a
+line: ``pause``, ``step``, ``continue``, ``stop``. The end of standard input means the agent is gone (killed,
+crashed): the run stops and the robot's safe stop runs here, so the robot stops whatever became of the
+agent. SIGTERM and Ctrl+C stop it with the safe stop too (``Run``'s handlers).
+"""
+import sys
+import threading
+from pathlib import Path
+
+from rockly_desktop.core.app_texts import app_text
+from rockly_desktop.profiles.registry import ProfileRegistry
+from rockly_desktop.runtime.agent.library import standalone_program
+from rockly_desktop.runtime.event_stream import EventStream, started_record
+from rockly_desktop.runtime.options import connection
+from rockly_desktop.runtime.run import EXIT_ERROR, Run
+from rockly_desktop.runtime.standalone import limits_from_data, parser
+
+REQUESTS = ("pause", "step", "continue", "stop")
+
+
+def follow_requests(control, requests=None):
+    """Apply the agent's requests from ``requests`` (standard input) to ``control`` until it ends; then stop."""
+    for line in requests or sys.stdin:
+        request = line.strip()
+        if request == "pause":
+            control.request_pause()
+        elif request == "step":
+            control.step()
+        elif request == "continue":
+            control.resume()
+        elif request == "stop":
+            control.request_stop()
+    control.request_stop()  # the agent went away: the robot must not drive on unwatched by it
+
+
+def main(argv=None) -> int:
+    """Run the standalone file named first in ``argv``; its other arguments are the file's own."""
+    argv = list(sys.argv[1:] if argv is None else argv)
+    program, run_code = standalone_program(Path(argv[0]).read_text(encoding="utf-8"))
+    language = program.get("language", "en")
+    args = parser(program, language).parse_args(argv[1:])
+    language = args.language or language
+    profile = ProfileRegistry.discover().profiles.get(program["profile"]["id"])
+    types = program.get("blocks", {})
+    stream = EventStream(sys.stdout, types)
+    stream.write(started_record(program.get("source"), program["profile"]["id"], profile.version if profile else "?",
+                                args.backend))
+    if profile is None:
+        print(app_text("standalone_no_profile", language, profile=program["profile"]["id"],
+                       version=program["profile"]["version"], installed="-"), file=sys.stderr)
+        stream.write({"event": "exit", "status": EXIT_ERROR})
+        return EXIT_ERROR
+    run = Run(profile, {"code": run_code, "variables": program.get("variables")}, types, language,
+              program.get("source") or "rockly-program", out=_to_standard_error, on_event=stream.event, trace=True,
+              end_out=_to_standard_error)
+    threading.Thread(target=follow_requests, args=(run.control,), daemon=True, name="agent-requests").start()
+    status = run.run(args.backend, connection(args.backend, args), args.answer, args.speed,
+                     limits_from_data(program.get("limits", {})), None, program.get("source"), print_blocks=False)
+    stream.write({"event": "exit", "status": status})
+    return status
+
+
+def _to_standard_error(line: str):
+    print(line, file=sys.stderr, flush=True)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

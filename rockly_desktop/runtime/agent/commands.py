@@ -1,0 +1,212 @@
+"""``rockly agent`` (the agent on the robot) and ``rockly robot ...`` (a client on the command line); on a robot
+with only ``rockly-runtime``: ``rockly-agent`` and ``rockly-robot``."""
+import argparse
+import json
+import os
+import signal
+import sys
+import threading
+from pathlib import Path
+
+from rockly_desktop.core.app_texts import app_text
+from rockly_desktop.runtime.agent.client import AgentClient, AgentError
+from rockly_desktop.runtime.agent.protocol import DEFAULT_PORT
+
+
+def default_library() -> Path:
+    """Where the agent keeps its programs without ``--library``."""
+    data = os.environ.get("XDG_DATA_HOME") or os.path.join(os.path.expanduser("~"), ".local", "share")
+    return Path(data) / "rockly" / "agent-programs"
+
+
+def agent_main(argv=None) -> int:
+    """``rockly-agent`` (what ``rockly-runtime`` installs on a robot): ``rockly agent`` without the window's
+    ``rockly``."""
+    parser = argparse.ArgumentParser(prog="rockly-agent", description=app_text("agent_help", "en"))
+    _agent_options(parser)
+    _language_option(parser)
+    args = parser.parse_args(argv)
+    return serve(args, args.language or "en")
+
+
+def robot_main(argv=None) -> int:
+    """``rockly-robot`` (in ``rockly-runtime``): ``rockly robot`` for standalone ``.py`` programs only (exporting a
+    ``.rockly`` file needs the window's Rockly)."""
+    parser = argparse.ArgumentParser(prog="rockly-robot", description=app_text("robot_help", "en"))
+    _robot_options(parser)
+    _language_option(parser)
+    args = parser.parse_args(argv)
+    return robot_command(args, args.language or "en", _standalone_file)
+
+
+def _language_option(parser):
+    from rockly_desktop.core.app_texts import languages
+
+    parser.add_argument("--language", choices=languages(), help=app_text("cli_language_help", "en"))
+
+
+def _standalone_file(path: Path) -> tuple:
+    from rockly_desktop.core.errors import RocklyError
+    from rockly_desktop.core.program import read_text_file
+
+    try:
+        return read_text_file(path), None
+    except RocklyError as error:
+        raise AgentError("program", str(error)) from None
+
+
+def add_agent_parser(commands, language_option):
+    """``rockly agent``'s command line."""
+    agent = commands.add_parser("agent", help=app_text("agent_help", "en"))
+    _agent_options(agent)
+    language_option(agent)
+
+
+def _agent_options(agent):
+    from rockly_desktop.robot import links
+    from rockly_desktop.runtime.options import add_connection_options
+
+    agent.add_argument("--backend", default=links.DEFAULT_KIND, choices=[entry.kind for entry in links.link_kinds()],
+                       help=app_text("agent_backend_help", "en"))
+    add_connection_options(agent, links.link_kinds())
+    agent.add_argument("--library", type=Path, help=app_text("agent_library_help", "en", folder=default_library()))
+    agent.add_argument("--host", default="0.0.0.0", help=app_text("agent_host_help", "en"))
+    agent.add_argument("--port", type=int, default=DEFAULT_PORT, help=app_text("agent_port_help", "en"))
+    agent.add_argument("--speed", type=float, default=1.0, help=app_text("standalone_speed_help", "en"))
+
+
+def add_robot_parser(commands, language_option):
+    """``rockly robot list|send|start|stop|delete|attach``'s command line."""
+    robot = commands.add_parser("robot", help=app_text("robot_help", "en"))
+    _robot_options(robot)
+    language_option(robot)
+
+
+def _robot_options(robot):
+    robot.add_argument("--host", default="localhost", help=app_text("robot_host_help", "en"))
+    robot.add_argument("--port", type=int, default=DEFAULT_PORT, help=app_text("agent_port_help", "en"))
+    actions = robot.add_subparsers(dest="robot_command", required=True)
+    actions.add_parser("list", help=app_text("robot_list_help", "en"))
+    send = actions.add_parser("send", help=app_text("robot_send_help", "en"))
+    send.add_argument("program", type=Path)
+    send.add_argument("--name", help=app_text("robot_name_help", "en"))
+    send.add_argument("--keep-going", action="store_true", help=app_text("robot_keep_going_help", "en"))
+    send.add_argument("--decide-seconds", type=float, default=2.0, help=app_text("robot_decide_help", "en"))
+    start = actions.add_parser("start", help=app_text("robot_start_help", "en"))
+    start.add_argument("name")
+    start.add_argument("--answer", action="append", default=[], help=app_text("standalone_answer_help", "en"))
+    actions.add_parser("stop", help=app_text("robot_stop_help", "en"))
+    delete = actions.add_parser("delete", help=app_text("robot_delete_help", "en"))
+    delete.add_argument("name")
+    attach = actions.add_parser("attach", help=app_text("robot_attach_help", "en"))
+    attach.add_argument("--watch-only", action="store_true", help=app_text("robot_watch_only_help", "en"))
+
+
+def serve(args, language: str) -> int:
+    """Run the agent until SIGTERM or Ctrl+C; a running program is stopped first (its safe stop runs)."""
+    from rockly_desktop.profiles.registry import ProfileRegistry
+    from rockly_desktop.robot import links
+    from rockly_desktop.runtime.agent.library import Library
+    from rockly_desktop.runtime.agent.server import Agent, AgentServer
+    from rockly_desktop.runtime.options import connection
+
+    folder = args.library or default_library()
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        print(app_text("agent_no_library", language, folder=folder, reason=error.strerror), file=sys.stderr)
+        return 1
+    options = ["--speed", str(args.speed), "--language", language]
+    for setting in links.link_kind(args.backend).settings:
+        value = connection(args.backend, args).get(setting.name)
+        if setting.option and value is not None:
+            options += [setting.option, str(value)]
+    agent = Agent(Library(folder, ProfileRegistry.discover().profiles), args.backend, options)
+    try:
+        server = AgentServer(agent, args.host, args.port)
+    except OSError as error:
+        print(app_text("agent_cannot_listen", language, host=args.host, port=args.port, reason=error.strerror),
+              file=sys.stderr)
+        return 1
+    ending = threading.Event()
+    for signum in (signal.SIGTERM, signal.SIGINT):
+        signal.signal(signum, lambda *_: ending.set())
+    threading.Thread(target=server.serve_forever, daemon=True, name="agent-server").start()
+    print(app_text("agent_ready", language, host=args.host, port=server.server_address[1], folder=folder,
+                   backend=args.backend), flush=True)
+    while not ending.wait(0.5):
+        pass
+    server.shutdown()
+    agent.shut_down()
+    server.server_close()
+    return 0
+
+
+def robot_command(args, language: str, standalone_of=None) -> int:
+    """Run one ``rockly robot`` action; ``standalone_of(path)``: ``(standalone text, .rockly text or None)`` of
+    a program file (exporting it when it is a ``.rockly`` file: the caller's, which has the blocks)."""
+    done = threading.Event()
+
+    def show(event):
+        print(json.dumps(event, ensure_ascii=False), flush=True)
+        if event.get("event") == "run" and event.get("state") == "ended":
+            done.set()
+
+    try:
+        client = AgentClient(args.host, args.port, language,
+                             on_event=show if args.robot_command == "attach" else None,
+                             on_closed=done.set, name="rockly robot")
+    except AgentError as error:
+        print(f"rockly robot: {error.message}", file=sys.stderr)
+        return 1
+    try:
+        return _act(client, args, language, standalone_of, done)
+    except AgentError as error:
+        print(f"rockly robot: {error.message}", file=sys.stderr)
+        return 1
+    finally:
+        client.close()
+
+
+def _act(client, args, language, standalone_of, done) -> int:
+    action = args.robot_command
+    if action == "list":
+        answer = client.programs()
+        for about in answer["programs"]:
+            print(app_text("robot_program_line", language, name=about["name"], profile=about["profile"],
+                           version=about["profile_version"], received=about["received"],
+                           lost=app_text("robot_lost_" + about["on_lost_editor"], language,
+                                         seconds=about["decide_seconds"])))
+        if not answer["programs"]:
+            print(app_text("robot_no_programs", language))
+        if answer["run"]:
+            print(app_text("robot_running", language, name=answer["run"]["program"], state=answer["run"]["state"]))
+        return 0
+    if action == "send":
+        standalone, source = standalone_of(args.program)
+        name = args.name or args.program.stem
+        client.send(name, standalone, source, "keep_going" if args.keep_going else "stop", args.decide_seconds)
+        print(app_text("robot_sent", language, name=name))
+        return 0
+    if action == "start":
+        client.start(args.name, args.answer)
+        print(app_text("robot_started", language, name=args.name))
+        return 0
+    if action == "stop":
+        print(app_text("robot_stopped" if client.stop() else "robot_nothing_running", language))
+        return 0
+    if action == "delete":
+        client.delete(args.name)
+        print(app_text("robot_deleted", language, name=args.name))
+        return 0
+    answer = client.attach(control=not args.watch_only)
+    print(json.dumps({"event": "attached", **answer}, ensure_ascii=False), flush=True)
+    if answer["controlled_elsewhere"]:
+        print(app_text("robot_watch_only", language), file=sys.stderr)
+    if answer["run"] is None or answer["run"]["state"] == "ended":
+        return 0
+    try:
+        done.wait()
+    except KeyboardInterrupt:
+        return 130
+    return 0

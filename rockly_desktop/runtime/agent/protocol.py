@@ -1,0 +1,48 @@
+"""The agent's wire format: one JSON object per line over TCP (UTF-8, ``\\n`` at its end).
+
+A client sends requests ``{"op": OP, "id": N, ...}``; the agent answers each with
+``{"reply": N, "ok": true, ...}`` or ``{"reply": N, "ok": false, "error": KEY, "message": TEXT}`` (TEXT in the
+language the client named in its ``hello``). An attached client also gets the run's events as they happen:
+the lines of ``runtime.event_stream`` (``{"event": "block", ...}``) and the agent's own
+``{"event": "run", "state": ...}``, ``{"event": "control", "controller": BOOL}``.
+"""
+import json
+
+FORMAT = 1  # of this protocol; an agent and a client of other formats say so and stop
+DEFAULT_PORT = 11411
+HEARTBEAT_SECONDS = 0.2  # how often an attached client says it is there (well inside any time to decide)
+LOST_EDITOR_CHOICES = ("keep_going", "stop")
+DEFAULT_DECIDE_SECONDS = 2.0
+MAX_LINE_BYTES = 64 * 1024 * 1024  # a program's text travels in one line
+
+
+def encode(message: dict) -> bytes:
+    """``message`` as one line."""
+    return (json.dumps(message, ensure_ascii=False) + "\n").encode("utf-8")
+
+
+def decode(line: bytes):
+    """The object of one line; None for a line that is not a JSON object."""
+    try:
+        message = json.loads(line.decode("utf-8"))
+    except (UnicodeDecodeError, ValueError):
+        return None
+    return message if isinstance(message, dict) else None
+
+
+class AgentRefusal(Exception):
+    """A request the agent refuses: ``key`` names the catalogue text, ``values`` fill it."""
+
+    def __init__(self, key: str, **values):
+        super().__init__(key)
+        self.key = key
+        self.values = values
+
+
+def refusal_text(refusal: AgentRefusal, language: str) -> str:
+    """What ``refusal`` says, in ``language`` (a value given per language is taken in it)."""
+    from rockly_desktop.core.app_texts import app_text
+
+    values = {key: value.get(language, value.get("en")) if isinstance(value, dict) else value
+              for key, value in refusal.values.items()}
+    return app_text(refusal.key, language, **values)

@@ -1,0 +1,249 @@
+"""The agent (``rockly agent``): its library and its one run, offered to clients over TCP (``agent.protocol``).
+
+Requests (each answered; refusals say why in the client's language):
+
+    hello    {"rockly", "format", "language", "client"}        -> {"agent", "format", "backend", "profiles"}
+    list                                                          -> {"programs": [about...], "run": snapshot|null}
+    send     {"name", "standalone", "source"?, "on_lost_editor"?, "decide_seconds"?} -> {"program": about}
+    source   {"name"}                                             -> {"source": .rockly text|null}
+    start    {"name", "answers"?}                                 -> {"run": snapshot}
+    stop                                                          -> {"stopped": bool}   (any client: a STOP is
+                                                                     never refused)
+    delete   {"name"}                                             -> {}
+    attach   {"control": bool}                                    -> {"run", "controller", "controlled_elsewhere"}
+    detach                                                        -> {}
+    control  {"what": "pause"|"step"|"continue"}                  -> {}  (the controlling client only)
+    heartbeat                                                     (no answer without an "id"); the controlling
+                                                                     client's say the editor is there
+
+An attached client gets every event of the run as it happens (see ``agent.protocol``).
+"""
+import socket
+import socketserver
+import threading
+
+from rockly_desktop import __version__
+from rockly_desktop.runtime.agent.library import Library
+from rockly_desktop.runtime.agent.protocol import (
+    FORMAT,
+    MAX_LINE_BYTES,
+    AgentRefusal,
+    decode,
+    encode,
+    refusal_text,
+)
+from rockly_desktop.runtime.agent.running import ProgramRun
+
+
+class _Client:
+    """One connected client: its socket, language, and whether it watches the run."""
+
+    def __init__(self, connection):
+        self.connection = connection
+        self.language = "en"
+        self.name = "?"
+        self.attached = False
+        self._lock = threading.Lock()
+
+    def send(self, message: dict) -> bool:
+        try:
+            with self._lock:
+                self.connection.sendall(encode(message))
+            return True
+        except OSError:
+            return False
+
+
+class Agent:
+    """The agent: ``library`` (a Library), programs run with ``backend`` and the child's ``options``
+    (connection options, ``--speed``)."""
+
+    def __init__(self, library: Library, backend: str, options: list):
+        self.library = library
+        self.backend = backend
+        self.options = options
+        self.run = None
+        self.controller = None
+        self.clients = []
+        self._lock = threading.RLock()
+
+    # -- requests
+
+    def handle(self, client: _Client, request: dict) -> dict:
+        """The answer to one ``request`` from ``client`` (without its ``reply`` id); refusals raise AgentRefusal."""
+        op = request.get("op")
+        handler = getattr(self, "_op_" + op, None) if isinstance(op, str) and op.isidentifier() else None
+        if handler is None:
+            raise AgentRefusal("agent_unknown_request", op=str(op)[:40])
+        return handler(client, request)
+
+    def _op_hello(self, client, request):
+        client.language = request.get("language") if request.get("language") in ("en", "de") else "en"
+        client.name = str(request.get("client", "?"))[:80]
+        if request.get("format") != FORMAT:
+            raise AgentRefusal("agent_other_format", agent=__version__, client=request.get("rockly", "?"))
+        return {"agent": __version__, "format": FORMAT, "backend": self.backend,
+                "profiles": {p.id: p.version for p in self.library.profiles.values()}}
+
+    def _op_list(self, client, request):
+        return {"programs": self.library.entries(), "run": self._snapshot()}
+
+    def _op_send(self, client, request):
+        name = request.get("name")
+        with self._lock:
+            if self.run is not None and self.run.about["name"] == name:
+                raise AgentRefusal("agent_program_running", name=name)
+            about = self.library.keep(name, _text(request.get("standalone")), request.get("source"),
+                                      request.get("on_lost_editor", "stop"), request.get("decide_seconds", 2.0))
+        return {"program": about}
+
+    def _op_source(self, client, request):
+        return {"source": self.library.source(request.get("name"))}
+
+    def _op_start(self, client, request):
+        name = request.get("name")
+        answers = [str(answer) for answer in request.get("answers") or []]
+        with self._lock:
+            if self.run is not None:
+                raise AgentRefusal("agent_busy", name=self.run.about["name"])
+            about = self.library.about(name)
+            path = self.library.standalone_path(name)
+            options = ["--backend", self.backend, *self.options, "--any-profile-version"]
+            for answer in answers:
+                options += ["--answer", answer]
+            self.run = ProgramRun(about, path, options, self.publish, self._ended)
+            self.publish({"event": "run", "state": "started", "program": name})
+            return {"run": self.run.snapshot()}
+
+    def _op_stop(self, client, request):
+        run = self.run
+        if run is None:
+            return {"stopped": False}
+        run.request("stop")
+        return {"stopped": True}
+
+    def _op_delete(self, client, request):
+        name = request.get("name")
+        with self._lock:
+            if self.run is not None and self.run.about["name"] == name:
+                raise AgentRefusal("agent_program_running", name=name)
+            self.library.delete(name)
+        return {}
+
+    def _op_attach(self, client, request):
+        with self._lock:
+            client.attached = True
+            if request.get("control", True) and self.controller is None:
+                self.controller = client
+            if self.run is not None and self.controller is client:
+                self.run.heartbeat()
+            return {"run": self._snapshot(), "controller": self.controller is client,
+                    "controlled_elsewhere": self.controller is not None and self.controller is not client}
+
+    def _op_detach(self, client, request):
+        self._forget(client)
+        return {}
+
+    def _op_control(self, client, request):
+        what = request.get("what")
+        if what not in ("pause", "step", "continue"):
+            raise AgentRefusal("agent_unknown_request", op=str(what)[:40])
+        if self.controller is not client:
+            raise AgentRefusal("agent_not_controller")
+        if self.run is None:
+            raise AgentRefusal("agent_nothing_running")
+        self.run.request(what)
+        return {}
+
+    def _op_heartbeat(self, client, request):
+        run = self.run
+        if client is self.controller and run is not None:  # the editor is the controlling client; watchers are not
+            run.heartbeat()
+        return {}
+
+    # -- events and clients
+
+    def publish(self, record: dict):
+        """Send ``record`` to every attached client (a client that cannot take it is dropped)."""
+        for client in [client for client in list(self.clients) if client.attached]:
+            if not client.send(record):
+                self._forget(client)
+
+    def _snapshot(self):
+        run = self.run
+        return run.snapshot() if run is not None else None
+
+    def _ended(self, run):
+        with self._lock:
+            if self.run is run:
+                self.run = None
+
+    def _forget(self, client):
+        with self._lock:
+            client.attached = False
+            if self.controller is client:
+                self.controller = None
+
+    def serve_client(self, connection):
+        """Read and answer ``connection``'s requests until it closes."""
+        client = _Client(connection)
+        with self._lock:
+            self.clients.append(client)
+        reader = connection.makefile("rb")
+        try:
+            while True:
+                line = reader.readline(MAX_LINE_BYTES + 1)
+                if not line:
+                    break
+                request = decode(line)
+                if request is None:
+                    client.send({"reply": None, "ok": False, "error": "agent_bad_request",
+                                 "message": refusal_text(AgentRefusal("agent_bad_request"), client.language)})
+                    continue
+                answer = self._answer(client, request)
+                if answer is not None:
+                    client.send(answer)
+        except OSError:
+            pass
+        finally:
+            self._forget(client)
+            with self._lock:
+                self.clients.remove(client)
+
+    def _answer(self, client, request):
+        try:
+            answer = {"ok": True, **self.handle(client, request)}
+        except AgentRefusal as refusal:
+            answer = {"ok": False, "error": refusal.key, "message": refusal_text(refusal, client.language)}
+        if "id" not in request:
+            return None if answer["ok"] else {"reply": None, **answer}
+        return {"reply": request["id"], **answer}
+
+    def shut_down(self):
+        """Stop a running program (its safe stop runs) and wait for it."""
+        run = self.run
+        if run is not None:
+            run.end()
+
+
+def _text(value) -> str:
+    if not isinstance(value, str):
+        raise AgentRefusal("agent_not_standalone")
+    return value
+
+
+class AgentServer(socketserver.ThreadingTCPServer):
+    """The agent's TCP server on ``(host, port)``."""
+
+    daemon_threads = True
+    allow_reuse_address = True
+
+    def __init__(self, agent: Agent, host: str, port: int):
+        self.agent = agent
+        super().__init__((host, port), _Handler)
+
+
+class _Handler(socketserver.BaseRequestHandler):
+    def handle(self):
+        self.request.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+        self.server.agent.serve_client(self.request)

@@ -1,0 +1,107 @@
+"""The agent on the robot driving HOBBIT over ROS 1 (``rockly agent --backend ros1`` against ``rockly sim hobbit
+--ros``): a STOP, a lost editor with "stop the robot", and the agent killed mid-run each put a zero velocity on
+the wire, seen by an independent rospy node."""
+import json
+import signal
+import struct
+import subprocess
+import time
+
+import pytest
+from agent_tools import REPO, AgentProcess
+from program_builder import block, number, rockly_document
+from ros_helpers import RocklyProcess, RosMaster, ros_environment
+from standalone_tools import export_standalone
+from waiting import eventually
+from wire_recorder import WireRecorder
+
+from rockly_desktop.runtime.agent.client import AgentClient
+
+ZERO = (0.0,) * 6
+
+
+@pytest.fixture(scope="module")
+def robot(tmp_path_factory):
+    """``(master, the far-drive program exported, wire recorder)``: HOBBIT simulated on ROS, driving 50 m takes
+    long enough for every case here."""
+    folder = tmp_path_factory.mktemp("agent-ros")
+    source = folder / "far.rockly"
+    source.write_text(rockly_document([block("hobbit_move", {"direction": "+"}, {"speed": number(50)}, id="far")]))
+    exported = export_standalone(source, folder / "far.py", "--language", "en")
+    master = RosMaster(folder / "ros").start()
+    simulator = RocklyProcess(["sim", "hobbit", "--ros", "--no-window", "--master", master.uri], master,
+                              ready_line="on ROS")
+    wire = WireRecorder(master, ["/cmd_vel"])
+    yield master, exported, wire
+    wire.stop()
+    simulator.stop()
+    master.stop()
+
+
+@pytest.fixture
+def agent(robot, tmp_path):
+    master, _, _ = robot
+    agent = AgentProcess(tmp_path / "library", "--master", master.uri, backend="ros1",
+                         env=ros_environment(master.uri, master.home))
+    yield agent
+    agent.stop()
+
+
+def zero_velocities(wire) -> int:
+    return sum(1 for _type, raw in wire.on("/cmd_vel") if struct.unpack("<6d", raw) == ZERO)
+
+
+def start_driving(agent, exported, events, **send):
+    client = AgentClient("127.0.0.1", agent.port, on_event=events.append)
+    client.send("far", exported.read_text(), **send)
+    client.attach(control=False)
+    client.start("far")
+    eventually(lambda: any(event.get("id") == "far" for event in events), 60)
+    return client
+
+
+def test_a_stop_puts_a_zero_velocity_on_the_wire(robot, agent):
+    _, exported, wire = robot
+    events, before = [], zero_velocities(wire)
+    client = start_driving(agent, exported, events)
+    try:
+        assert agent.robot("stop").returncode == 0
+        eventually(lambda: zero_velocities(wire) > before, 30)
+        eventually(lambda: any(event.get("state") == "ended" for event in events), 60)
+    finally:
+        client.close()
+    assert next(event for event in events if event.get("event") == "finished")["outcome"] == "stopped"
+
+
+def test_a_lost_editor_stops_the_robot_within_the_time_to_decide(robot, agent):
+    _, exported, wire = robot
+    events, before = [], zero_velocities(wire)
+    client = start_driving(agent, exported, events, on_lost_editor="stop", decide_seconds=1.0)
+    editor = subprocess.Popen(agent.robot_command("attach"), cwd=REPO, text=True, stdout=subprocess.PIPE,
+                              stderr=subprocess.DEVNULL)
+    try:
+        assert json.loads(editor.stdout.readline())["controller"] is True
+        editor.kill()  # the window's side is gone: its heartbeats end
+        killed = time.monotonic()
+        editor.communicate()
+        eventually(lambda: zero_velocities(wire) > before, 30)
+        # the product's promise: the robot stops within the chosen time (1 s), with room for a loaded machine
+        assert time.monotonic() - killed < 1.0 + 4.0
+        assert zero_velocities(wire) > before
+        eventually(lambda: any(event.get("state") == "ended" for event in events), 60)
+    finally:
+        client.close()
+        if editor.poll() is None:
+            editor.kill()
+            editor.communicate()
+    assert next(event for event in events if event.get("state") == "ended")["stopped_for_lost_editor"] is True
+
+
+def test_the_agent_killed_mid_run_still_leaves_a_zero_velocity_on_the_wire(robot, agent):
+    _, exported, wire = robot
+    events, before = [], zero_velocities(wire)
+    client = start_driving(agent, exported, events)
+    client.close()
+    agent.process.send_signal(signal.SIGKILL)
+    agent.process.wait(10)
+    eventually(lambda: zero_velocities(wire) > before, 30)
