@@ -122,16 +122,22 @@ def main():
         vendor = paths.blockly_vendor_dir().as_uri()
         page.write_text(BARE_PAGE.format(vendor=vendor, program=json.dumps(plain_program())))
         time_child(["bare", str(page)])  # warm the file cache for both
+        load_before = os.getloadavg()[0]
         bare, rockly = [], []
         for run in range(options.runs):
             bare.append(time_child(["bare", str(page)]))
             rockly.append(time_child(["rockly", str(program), str(folder / f"settings{run}.ini")]))
+        load_after = os.getloadavg()[0]
     bare_median, rockly_median = statistics.median(bare), statistics.median(rockly)
     print(f"startup  plain Blockly in QWebEngineView: median {bare_median:.3f} s  "
           f"(min {min(bare):.3f}, max {max(bare):.3f}, {options.runs} runs)")
     print(f"startup  Rockly, HOBBIT, 300-block program: median {rockly_median:.3f} s  "
           f"(min {min(rockly):.3f}, max {max(rockly):.3f}, {options.runs} runs)")
     print(f"startup  ratio Rockly / plain Blockly: {rockly_median / bare_median:.2f}  (aim <= 1.20)")
+    # Each pair ran back to back, so a pair's ratio is less moved by other work coming and going.
+    pair_ratio = statistics.median(r / b for b, r in zip(bare, rockly, strict=True))
+    print(f"startup  median of the {options.runs} pairs' ratios: {pair_ratio:.2f}; machine load "
+          f"(1-minute average) {load_before:.2f} before, {load_after:.2f} after, on {os.cpu_count()} cores")
 
 
 if __name__ == "__main__":
