@@ -1,0 +1,123 @@
+"""Robot → "Programs on the robot…": the agent's address, the programs it keeps and what it runs now, with
+Start, Stop and Attach (``AttachedRun``)."""
+from PySide6.QtWidgets import (
+    QDialog,
+    QDialogButtonBox,
+    QFormLayout,
+    QHBoxLayout,
+    QLabel,
+    QLineEdit,
+    QListWidget,
+    QListWidgetItem,
+    QPushButton,
+    QSpinBox,
+    QVBoxLayout,
+)
+
+from rockly_desktop.runtime.agent.client import AgentClient, AgentError
+from rockly_desktop.runtime.agent.protocol import DEFAULT_PORT
+from rockly_desktop.ui.texts import tr
+
+
+class RobotProgramsDialog(QDialog):
+    """The programs on a robot's agent; ``attached``: the window's ``AttachedRun``. Every answer from the agent
+    (or why it cannot be reached) is said in ``status``."""
+
+    def __init__(self, attached, language: str, parent=None, host: str = "localhost", port: int = DEFAULT_PORT):
+        super().__init__(parent)
+        self.attached, self.language = attached, language
+        self.setWindowTitle(tr("robot_programs_title", language))
+        self.host = QLineEdit(host)
+        self.port = QSpinBox()
+        self.port.setRange(1, 65535)
+        self.port.setValue(port)
+        self.refresh_button = QPushButton(tr("robot_programs_refresh", language))
+        address = QHBoxLayout()
+        address.addWidget(self.host, 1)
+        address.addWidget(QLabel(tr("robot_programs_port", language)))
+        address.addWidget(self.port)
+        address.addWidget(self.refresh_button)
+        form = QFormLayout()
+        form.addRow(tr("robot_programs_host", language), address)
+        self.programs = QListWidget()
+        self.running = QLabel()
+        self.status = QLabel()
+        self.status.setWordWrap(True)
+        self.start_button = QPushButton(tr("robot_programs_start", language))
+        self.stop_button = QPushButton(tr("robot_programs_stop", language))
+        self.attach_button = QPushButton(tr("robot_programs_attach", language))
+        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
+        for button in (self.start_button, self.stop_button, self.attach_button):
+            buttons.addButton(button, QDialogButtonBox.ButtonRole.ActionRole)
+        buttons.rejected.connect(self.reject)
+        layout = QVBoxLayout(self)
+        layout.addLayout(form)
+        layout.addWidget(self.programs, 1)
+        layout.addWidget(self.running)
+        layout.addWidget(self.status)
+        layout.addWidget(buttons)
+        self.refresh_button.clicked.connect(self.refresh)
+        self.start_button.clicked.connect(self.start_chosen)
+        self.stop_button.clicked.connect(lambda: self._with_client(lambda client: client.stop()))
+        self.attach_button.clicked.connect(self.attach)
+        self.resize(520, 360)
+
+    def refresh(self):
+        """Ask the agent for its programs and what runs."""
+        answer = self._with_client(lambda client: client.programs(), refresh=False)
+        if answer is None:
+            return
+        chosen = self.chosen()
+        self.programs.clear()
+        for about in answer["programs"]:
+            item = QListWidgetItem(tr("robot_programs_line", self.language, name=about["name"],
+                                      profile=about["profile"], version=about["profile_version"]))
+            item.setData(256, about["name"])
+            self.programs.addItem(item)
+            item.setSelected(about["name"] == chosen)
+        if not answer["programs"]:
+            self.status.setText(tr("robot_no_programs", self.language))
+        run = answer["run"]
+        if run and run["state"] != "ended":
+            self.running.setText(tr("robot_programs_running", self.language, name=run["program"],
+                                    state=tr("robot_programs_state_" + run["state"], self.language)))
+        else:
+            self.running.setText(tr("robot_programs_nothing", self.language))
+
+    def chosen(self):
+        """The name of the program chosen in the list (None when none is)."""
+        items = self.programs.selectedItems()
+        return items[0].data(256) if items else None
+
+    def start_chosen(self):
+        name = self.chosen()
+        if name is not None:
+            self._with_client(lambda client: client.start(name))
+
+    def attach(self):
+        """Attach the window to what runs on the robot."""
+        try:
+            self.attached.attach(self.host.text().strip(), self.port.value())
+        except AgentError as error:
+            self.status.setText(error.message)
+            return
+        self.status.setText(tr("attached_to", self.language, name=self.attached.program, host=self.host.text()))
+
+    def _with_client(self, call, refresh=True):
+        """``call(client)`` on a short connection to the agent; its refusal is said in ``status``."""
+        try:
+            client = AgentClient(self.host.text().strip(), self.port.value(), self.language, name="rockly window")
+        except AgentError as error:
+            self.status.setText(error.message)
+            return None
+        try:
+            answer = call(client)
+            self.status.setText("")
+        except AgentError as error:
+            self.status.setText(error.message)
+            answer = None
+        finally:
+            client.close()
+        if refresh:
+            self.refresh()
+        return answer
