@@ -533,7 +533,8 @@ class MainWindow(QMainWindow):
         self._follow_robot_lock()
         robot_menu.addSeparator()
         robot_menu.addAction(self.run_toolbar.reset_action)
-        self._action(robot_menu, "robot_programs", lambda: RobotProgramsDialog(self.attached, language, self).show())
+        self._action(robot_menu, "robot_programs", lambda: RobotProgramsDialog(
+            self.attached, language, self, open_copy=lambda path, name: self.files.open_copy(path, name)).show())
 
         view_menu = bar.addMenu(tr("menu_view", language))
         for dock in self.docks.values():

@@ -13,21 +13,21 @@ from rockly_desktop.runtime.agent.client import AgentClient
 from rockly_desktop.ui.agent.robot_programs_dialog import RobotProgramsDialog
 
 
-def greet_and_drive():
-    """Print "hello", drive 1 m (20 s at the agent's slow simulated time), print "done"."""
+def greet_and_drive(last="done"):
+    """Print "hello", drive 1 m (20 s at the agent's slow simulated time), print ``last``."""
     return stack(block("text_print", inputs={"TEXT": block("text", {"TEXT": "hello"})}, id="greet"),
                  block("hobbit_move", {"direction": "+"}, {"speed": number(1)}, id="drive"),
-                 block("text_print", inputs={"TEXT": block("text", {"TEXT": "done"})}, id="tell"))
+                 block("text_print", inputs={"TEXT": block("text", {"TEXT": last})}, id="tell"))
 
 
 @pytest.fixture(scope="module")
 def exported(tmp_path_factory):
-    """The program's standalone export (as ``rockly export --standalone`` writes it)."""
+    """The program's standalone export (as ``rockly export --standalone`` writes it) and its ``.rockly`` text."""
     folder = tmp_path_factory.mktemp("attach-program")
     source = folder / "drive.rockly"
     source.write_text(rockly_document([greet_and_drive()]))
     env = environment(XDG_CONFIG_HOME=str(folder / "config"), XDG_DATA_HOME=str(folder / "data"))
-    return export_standalone(source, folder / "drive.py", "--language", "en", env=env).read_text()
+    return export_standalone(source, folder / "drive.py", "--language", "en", env=env).read_text(), source.read_text()
 
 
 @pytest.fixture
@@ -36,7 +36,7 @@ def robot(tmp_path, exported):
     agent = AgentProcess(tmp_path / "library", "--speed", 0.05)
     events = []
     watcher = AgentClient("127.0.0.1", agent.port, on_event=events.append)
-    watcher.send("drive", exported, on_lost_editor="keep_going")
+    watcher.send("drive", *exported, on_lost_editor="keep_going")
     watcher.attach(control=False)
     watcher.start("drive")
     eventually(lambda: (watcher.programs()["run"] or {}).get("block") == "drive", 60)
@@ -45,9 +45,10 @@ def robot(tmp_path, exported):
     agent.stop()
 
 
-def open_dialog(qtbot, window, agent):
-    call_page(qtbot, window.editor, "load", {"workspace": workspace(greet_and_drive())})
-    dialog = RobotProgramsDialog(window.attached, "en", window, host="127.0.0.1", port=agent.port)
+def open_dialog(qtbot, window, agent, program=None):
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(program or greet_and_drive())})
+    dialog = RobotProgramsDialog(window.attached, "en", window, host="127.0.0.1", port=agent.port,
+                                 open_copy=lambda path, name: window.files.open_copy(path, name))
     qtbot.addWidget(dialog)
     dialog.show()
     dialog.refresh()
@@ -106,5 +107,26 @@ def test_attaching_again_shows_the_current_state(qtbot, window, robot):
     dialog.attach_button.click()
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
     assert window.attached.state == "running"
+    watcher.stop()
+    qtbot.waitUntil(lambda: not window.attached.active, timeout=60000)
+
+
+def test_the_same_program_is_not_flagged_and_another_one_is_and_the_robots_copy_opens(qtbot, window, robot):
+    agent, watcher, events = robot
+    dialog = open_dialog(qtbot, window, agent)
+    with qtbot.waitSignal(window.attached.sig_state_changed, timeout=10000):
+        dialog.attach_button.click()
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
+    assert call_page(qtbot, window.editor, "getState", None)  # the comparison's page call has been answered
+    assert dialog.difference.isHidden() and dialog.open_copy_button.isHidden()
+    window.attached.detach()
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(greet_and_drive(last="bye"))})
+    dialog.attach_button.click()
+    qtbot.waitUntil(lambda: dialog.difference.isVisible() and dialog.open_copy_button.isVisible(), timeout=10000)
+    assert dialog.difference.text() == "The program running on the robot is not the one open here."
+    window.document.modified = False
+    dialog.open_copy_button.click()
+    qtbot.waitUntil(lambda: "'TEXT': 'done'" in str(call_page(qtbot, window.editor, "getState", None)), timeout=10000)
+    assert window.attached.active  # opening the copy keeps the window attached
     watcher.stop()
     qtbot.waitUntil(lambda: not window.attached.active, timeout=60000)

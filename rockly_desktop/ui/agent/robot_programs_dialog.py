@@ -1,5 +1,8 @@
 """Robot → "Programs on the robot…": the agent's address, the programs it keeps and what it runs now, with
-Start, Stop and Attach (``AttachedRun``)."""
+Start, Stop and Attach (``AttachedRun``); once attached, whether the robot's program is the one open here."""
+import tempfile
+from pathlib import Path
+
 from PySide6.QtWidgets import (
     QDialog,
     QDialogButtonBox,
@@ -14,18 +17,25 @@ from PySide6.QtWidgets import (
     QVBoxLayout,
 )
 
+from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.core.program import write_text_atomically
 from rockly_desktop.runtime.agent.client import AgentClient, AgentError
 from rockly_desktop.runtime.agent.protocol import DEFAULT_PORT
+from rockly_desktop.ui.agent.program_difference import same_program
 from rockly_desktop.ui.texts import tr
 
 
 class RobotProgramsDialog(QDialog):
     """The programs on a robot's agent; ``attached``: the window's ``AttachedRun``. Every answer from the agent
-    (or why it cannot be reached) is said in ``status``."""
+    (or why it cannot be reached) is said in ``status``; ``open_copy(path, name)`` opens the robot's copy of
+    its program (as an untitled copy) when it differs from the window's."""
 
-    def __init__(self, attached, language: str, parent=None, host: str = "localhost", port: int = DEFAULT_PORT):
+    def __init__(self, attached, language: str, parent=None, host: str = "localhost", port: int = DEFAULT_PORT,
+                 open_copy=None):
         super().__init__(parent)
-        self.attached, self.language = attached, language
+        self.attached, self.language, self._open_copy = attached, language, open_copy
+        self._robot_source = None
+        self._copies = tempfile.TemporaryDirectory(prefix="rockly-robot-copy-")
         self.setWindowTitle(tr("robot_programs_title", language))
         self.host = QLineEdit(host)
         self.port = QSpinBox()
@@ -43,6 +53,15 @@ class RobotProgramsDialog(QDialog):
         self.running = QLabel()
         self.status = QLabel()
         self.status.setWordWrap(True)
+        self.difference = QLabel(tr("robot_program_differs", language))
+        self.difference.setWordWrap(True)
+        self.open_copy_button = QPushButton(tr("robot_programs_open_copy", language))
+        self.open_copy_button.clicked.connect(self.open_robot_copy)
+        differs = QHBoxLayout()
+        differs.addWidget(self.difference, 1)
+        differs.addWidget(self.open_copy_button)
+        self.difference.hide()
+        self.open_copy_button.hide()
         self.start_button = QPushButton(tr("robot_programs_start", language))
         self.stop_button = QPushButton(tr("robot_programs_stop", language))
         self.attach_button = QPushButton(tr("robot_programs_attach", language))
@@ -55,6 +74,7 @@ class RobotProgramsDialog(QDialog):
         layout.addWidget(self.programs, 1)
         layout.addWidget(self.running)
         layout.addWidget(self.status)
+        layout.addLayout(differs)
         layout.addWidget(buttons)
         self.refresh_button.clicked.connect(self.refresh)
         self.start_button.clicked.connect(self.start_chosen)
@@ -101,7 +121,28 @@ class RobotProgramsDialog(QDialog):
         except AgentError as error:
             self.status.setText(error.message)
             return
-        self.status.setText(tr("attached_to", self.language, name=self.attached.program, host=self.host.text()))
+        name = self.attached.program
+        self._robot_source = self._with_client(lambda client: client.source(name), refresh=False)
+        self.status.setText(tr("attached_to", self.language, name=name, host=self.host.text()))
+        if self._robot_source is not None:
+            self.attached.editor.call("getState", None, self._compare)
+
+    def _compare(self, state, error):
+        if error or not isinstance(state, dict):
+            return
+        try:
+            differs = not same_program(self._robot_source, state.get("workspace") or {})
+        except RocklyError:  # the robot keeps a copy that does not parse: not this program
+            differs = True
+        self.difference.setVisible(differs)
+        self.open_copy_button.setVisible(differs and self._open_copy is not None)
+
+    def open_robot_copy(self):
+        """Open the robot's copy of the running program in the window (untitled: Save asks where to keep it)."""
+        name = self.attached.program or "robot"
+        path = Path(self._copies.name) / f"{name}.rockly"
+        write_text_atomically(path, self._robot_source)
+        self._open_copy(str(path), name)
 
     def _with_client(self, call, refresh=True):
         """``call(client)`` on a short connection to the agent; its refusal is said in ``status``."""
