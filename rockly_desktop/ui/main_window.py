@@ -534,7 +534,8 @@ class MainWindow(QMainWindow):
         robot_menu.addSeparator()
         robot_menu.addAction(self.run_toolbar.reset_action)
         self._action(robot_menu, "robot_programs", lambda: RobotProgramsDialog(
-            self.attached, language, self, open_copy=lambda path, name: self.files.open_copy(path, name)).show())
+            self.attached, language, self, open_copy=lambda path, name: self.files.open_copy(path, name),
+            document=self.document, limits=lambda: self.settings.teacher.limits(self.profile.id)).show())
 
         view_menu = bar.addMenu(tr("menu_view", language))
         for dock in self.docks.values():

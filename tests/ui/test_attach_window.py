@@ -5,11 +5,13 @@ import pytest
 from agent_tools import AgentProcess
 from page_tools import call_page
 from program_builder import block, number, rockly_document, stack, workspace
+from screenshots import screenshot
 from standalone_tools import environment, export_standalone
 from test_running import highlighted
 from waiting import eventually
 
 from rockly_desktop.runtime.agent.client import AgentClient
+from rockly_desktop.ui.agent.program_difference import same_program
 from rockly_desktop.ui.agent.robot_programs_dialog import RobotProgramsDialog
 
 
@@ -63,6 +65,8 @@ def test_attached_the_block_glows_the_console_fills_and_pause_and_stop_reach_the
     dialog.attach_button.click()
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
     assert "hello" in window.console.lines()
+    screenshot(dialog, "attach_dialog")
+    screenshot(window, "attach_window")
     assert window.run_toolbar.pause_action.isEnabled() and window.run_toolbar.stop_action.isEnabled()
     window.run_toolbar.pause_action.trigger()
     eventually(lambda: any(event.get("event") == "paused" for event in list(events)), 60)
@@ -130,3 +134,29 @@ def test_the_same_program_is_not_flagged_and_another_one_is_and_the_robots_copy_
     assert window.attached.active  # opening the copy keeps the window attached
     watcher.stop()
     qtbot.waitUntil(lambda: not window.attached.active, timeout=60000)
+
+
+def test_the_open_program_is_sent_exported_and_starts_on_the_robot(qtbot, window, tmp_path):
+    agent = AgentProcess(tmp_path / "library", "--speed", 20)
+    events = []
+    watcher = AgentClient("127.0.0.1", agent.port, on_event=events.append)
+    try:
+        watcher.attach(control=False)
+        call_page(qtbot, window.editor, "load", {"workspace": workspace(greet_and_drive())})
+        dialog = RobotProgramsDialog(window.attached, "en", window, host="127.0.0.1", port=agent.port,
+                                     document=window.document, limits=lambda: window.settings.teacher.limits("hobbit"))
+        qtbot.addWidget(dialog)
+        dialog.keep_going.setChecked(True)
+        dialog.send_button.click()
+        qtbot.waitUntil(lambda: dialog.status.text() == "'program' is on the robot now", timeout=20000)
+        [about] = watcher.programs()["programs"]
+        assert (about["name"], about["on_lost_editor"]) == ("program", "keep_going")
+        assert same_program(watcher.source("program"), workspace(greet_and_drive()))
+        dialog.programs.item(0).setSelected(True)
+        dialog.start_button.click()
+        eventually(lambda: any(event.get("event") == "run" and event.get("state") == "ended" for event in list(events)),
+                   120)
+        assert [event["text"] for event in events if event.get("event") == "print"] == ["hello", "done"]
+    finally:
+        watcher.close()
+        agent.stop()

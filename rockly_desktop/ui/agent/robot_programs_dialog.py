@@ -1,9 +1,11 @@
 """Robot → "Programs on the robot…": the agent's address, the programs it keeps and what it runs now, with
-Start, Stop and Attach (``AttachedRun``); once attached, whether the robot's program is the one open here."""
+Send (the open program, exported standalone as ``rockly export --standalone`` does), Start, Stop and Attach
+(``AttachedRun``); once attached, whether the robot's program is the one open here."""
 import tempfile
 from pathlib import Path
 
 from PySide6.QtWidgets import (
+    QCheckBox,
     QDialog,
     QDialogButtonBox,
     QFormLayout,
@@ -18,9 +20,11 @@ from PySide6.QtWidgets import (
 )
 
 from rockly_desktop.core.errors import RocklyError
-from rockly_desktop.core.program import write_text_atomically
+from rockly_desktop.core.program import Program, write_text_atomically
+from rockly_desktop.core.workspace_blocks import block_types_by_id
 from rockly_desktop.runtime.agent.client import AgentClient, AgentError
 from rockly_desktop.runtime.agent.protocol import DEFAULT_PORT
+from rockly_desktop.runtime.standalone_file import standalone_text
 from rockly_desktop.ui.agent.program_difference import same_program
 from rockly_desktop.ui.texts import tr
 
@@ -28,12 +32,14 @@ from rockly_desktop.ui.texts import tr
 class RobotProgramsDialog(QDialog):
     """The programs on a robot's agent; ``attached``: the window's ``AttachedRun``. Every answer from the agent
     (or why it cannot be reached) is said in ``status``; ``open_copy(path, name)`` opens the robot's copy of
-    its program (as an untitled copy) when it differs from the window's."""
+    its program (as an untitled copy) when it differs from the window's; Send sends the window's program
+    (``document``: its file and profile) under ``limits()``, the teacher's limits in force."""
 
     def __init__(self, attached, language: str, parent=None, host: str = "localhost", port: int = DEFAULT_PORT,
-                 open_copy=None):
+                 open_copy=None, document=None, limits=None):
         super().__init__(parent)
         self.attached, self.language, self._open_copy = attached, language, open_copy
+        self.document, self._limits = document, limits
         self._robot_source = None
         self._copies = tempfile.TemporaryDirectory(prefix="rockly-robot-copy-")
         self.setWindowTitle(tr("robot_programs_title", language))
@@ -62,22 +68,27 @@ class RobotProgramsDialog(QDialog):
         differs.addWidget(self.open_copy_button)
         self.difference.hide()
         self.open_copy_button.hide()
+        self.send_button = QPushButton(tr("robot_programs_send", language))
+        self.send_button.setEnabled(document is not None)
+        self.keep_going = QCheckBox(tr("robot_programs_keep_going", language))
         self.start_button = QPushButton(tr("robot_programs_start", language))
         self.stop_button = QPushButton(tr("robot_programs_stop", language))
         self.attach_button = QPushButton(tr("robot_programs_attach", language))
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
-        for button in (self.start_button, self.stop_button, self.attach_button):
+        for button in (self.send_button, self.start_button, self.stop_button, self.attach_button):
             buttons.addButton(button, QDialogButtonBox.ButtonRole.ActionRole)
         buttons.rejected.connect(self.reject)
         layout = QVBoxLayout(self)
         layout.addLayout(form)
         layout.addWidget(self.programs, 1)
+        layout.addWidget(self.keep_going)
         layout.addWidget(self.running)
         layout.addWidget(self.status)
         layout.addLayout(differs)
         layout.addWidget(buttons)
         self.refresh_button.clicked.connect(self.refresh)
         self.start_button.clicked.connect(self.start_chosen)
+        self.send_button.clicked.connect(self.send_open_program)
         self.stop_button.clicked.connect(lambda: self._with_client(lambda client: client.stop()))
         self.attach_button.clicked.connect(self.attach)
         self.resize(520, 360)
@@ -108,6 +119,25 @@ class RobotProgramsDialog(QDialog):
         """The name of the program chosen in the list (None when none is)."""
         items = self.programs.selectedItems()
         return items[0].data(256) if items else None
+
+    def send_open_program(self):
+        """Send the window's program to the robot: the page's code and blocks, exported standalone."""
+        self.attached.editor.call("getRunCode", {"values": False}, lambda run_code, error: self.attached.editor.call(
+            "getState", None, lambda state, state_error: self._send(run_code, state, error or state_error)))
+
+    def _send(self, run_code, state, error):
+        if error:
+            self.status.setText(str(error))
+            return
+        profile, workspace = self.document.profile, state["workspace"]
+        name = Path(self.document.path).stem if self.document.path else "program"
+        standalone = standalone_text(f"{name}.rockly", profile, run_code, block_types_by_id(workspace),
+                                     self._limits(), self.language)
+        source = Program(profile.id, workspace, list(self.document.breakpoints),
+                         profile.packs_used(workspace)).to_json()
+        lost = "keep_going" if self.keep_going.isChecked() else "stop"
+        if self._with_client(lambda client: client.send(name, standalone, source, lost)) is not None:
+            self.status.setText(tr("robot_sent", self.language, name=name))
 
     def start_chosen(self):
         name = self.chosen()
