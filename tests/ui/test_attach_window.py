@@ -66,13 +66,13 @@ def test_attached_the_block_glows_the_console_fills_and_pause_and_stop_reach_the
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
     assert "hello" in window.console.lines()
     screenshot(dialog, "attach_dialog")
-    screenshot(window, "attach_window")
     assert window.run_toolbar.pause_action.isEnabled() and window.run_toolbar.stop_action.isEnabled()
     window.run_toolbar.pause_action.trigger()
     eventually(lambda: any(event.get("event") == "paused" for event in list(events)), 60)
     qtbot.waitUntil(lambda: window.attached.state == "paused" and window.run_toolbar.continue_action.isEnabled(),
                     timeout=10000)
     assert window.runs.state == "idle"  # the window's own run never started
+    screenshot(window, "attach_window_paused")
     window.run_toolbar.stop_action.trigger()
     eventually(lambda: any(event.get("event") == "finished" for event in list(events)), 60)
     finished = next(event for event in events if event.get("event") == "finished")
@@ -160,3 +160,16 @@ def test_the_open_program_is_sent_exported_and_starts_on_the_robot(qtbot, window
     finally:
         watcher.close()
         agent.stop()
+
+
+def test_a_lost_connection_detaches_and_says_so(qtbot, window, robot):
+    agent, watcher, events = robot
+    dialog = open_dialog(qtbot, window, agent)
+    dialog.attach_button.click()
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
+    agent.process.kill()  # the agent gone at once, as a network cut looks to the window
+    qtbot.waitUntil(lambda: not window.attached.active, timeout=20000)
+    assert ("The connection to the robot's agent was lost: the window is no longer attached."
+            in window.console.lines())
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == [], timeout=10000)
+    assert window.run_toolbar.run_action.isEnabled()

@@ -91,6 +91,7 @@ class RobotProgramsDialog(QDialog):
         self.send_button.clicked.connect(self.send_open_program)
         self.stop_button.clicked.connect(lambda: self._with_client(lambda client: client.stop()))
         self.attach_button.clicked.connect(self.attach)
+        attached.sig_state_changed.connect(self._follow_attachment)
         self.resize(520, 360)
 
     def refresh(self):
@@ -109,11 +110,17 @@ class RobotProgramsDialog(QDialog):
         if not answer["programs"]:
             self.status.setText(tr("robot_no_programs", self.language))
         run = answer["run"]
-        if run and run["state"] != "ended":
+        runs = bool(run) and run["state"] != "ended"
+        self.start_button.setEnabled(not runs)
+        self.attach_button.setEnabled(runs and not self.attached.active)
+        if runs:
             self.running.setText(tr("robot_programs_running", self.language, name=run["program"],
                                     state=tr("robot_programs_state_" + run["state"], self.language)))
         else:
             self.running.setText(tr("robot_programs_nothing", self.language))
+
+    def _follow_attachment(self, state: str):
+        self.attach_button.setEnabled(state == "idle")
 
     def chosen(self):
         """The name of the program chosen in the list (None when none is)."""
@@ -151,6 +158,7 @@ class RobotProgramsDialog(QDialog):
         except AgentError as error:
             self.status.setText(error.message)
             return
+        self.attach_button.setEnabled(False)
         name = self.attached.program
         self._robot_source = self._with_client(lambda client: client.source(name), refresh=False)
         self.status.setText(tr("attached_to", self.language, name=name, host=self.host.text()))
