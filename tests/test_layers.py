@@ -54,6 +54,7 @@ def test_a_core_module_importing_qt_breaks_the_contracts(tmp_path):
 
 
 @pytest.mark.parametrize("wing, reach", [
+    ("agent", "rockly_desktop.ui.run.run_session"),
     ("blockmaker", "rockly_desktop.robot.links"),
     ("docks", "rockly_desktop.ui.run.run_session"),
     ("files", "rockly_desktop.executor.runner"),

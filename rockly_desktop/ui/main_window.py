@@ -7,6 +7,8 @@ from rockly_desktop import __version__
 from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS, EditorView
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.recovery import RecoverySession, claim_abandoned
+from rockly_desktop.ui.agent.attached_run import AttachedRun
+from rockly_desktop.ui.agent.robot_programs_dialog import RobotProgramsDialog
 from rockly_desktop.ui.docks.registry import Docks
 from rockly_desktop.ui.docks.stage_layout import BottomTabSizes, StageLayout, keep_side_docks_full_height
 from rockly_desktop.ui.docks.state_panels import StatePanels
@@ -81,7 +83,9 @@ class MainWindow(QMainWindow):
         self.robots = RobotChoice(self.document, self.tablet, settings, self)
         self.robots.sig_robot_changed.connect(self.show_robot)
         self.runs = RunSession(self.document, self.editor, self.robots, self.console, self.variables, settings, self)
+        self.attached = AttachedRun(self.editor, self.console, self.variables, lambda: self.language, self)
         self.runs.sig_state_changed.connect(self._on_run_state)
+        self.attached.sig_state_changed.connect(self._on_run_state)
         self.runs.sig_status.connect(lambda text: self.statusBar().showMessage(text))
         self.tablet.sig_dismissed.connect(self.runs.stop)
         self.replay = Replay(self.replay_bar, self.editor, self.variables, self.simulator_dock,
@@ -309,13 +313,17 @@ class MainWindow(QMainWindow):
         self.runs.set_breakpoints(block_ids)
         self.document.mark_modified()
 
+    def _run_in_charge(self):
+        """The run the toolbar acts on: the robot's while attached to it, else the window's own."""
+        return self.attached if self.attached.active else self.runs
+
     def _build_run_toolbar(self):
         toolbar = RunToolbar(self.language, self, big=self.settings.kiosk_mode)
         toolbar.run_action.triggered.connect(lambda: self.runs.run())
-        toolbar.pause_action.triggered.connect(self.runs.pause)
-        toolbar.step_action.triggered.connect(self.runs.step)
-        toolbar.continue_action.triggered.connect(self.runs.resume)
-        toolbar.stop_action.triggered.connect(self.runs.stop)
+        toolbar.pause_action.triggered.connect(lambda: self._run_in_charge().pause())
+        toolbar.step_action.triggered.connect(lambda: self._run_in_charge().step())
+        toolbar.continue_action.triggered.connect(lambda: self._run_in_charge().resume())
+        toolbar.stop_action.triggered.connect(lambda: self._run_in_charge().stop())
         toolbar.sig_delay_changed.connect(self.runs.set_delay)
         toolbar.set_state(self.runs.state)
         toolbar.backend.setCurrentIndex(toolbar.backend.findData(self.robots.kind))
@@ -525,6 +533,9 @@ class MainWindow(QMainWindow):
         self._follow_robot_lock()
         robot_menu.addSeparator()
         robot_menu.addAction(self.run_toolbar.reset_action)
+        self._action(robot_menu, "robot_programs", lambda: RobotProgramsDialog(
+            self.attached, language, self, open_copy=lambda path, name: self.files.open_copy(path, name),
+            document=self.document, limits=lambda: self.settings.teacher.limits(self.profile.id)).show())
 
         view_menu = bar.addMenu(tr("menu_view", language))
         for dock in self.docks.values():
@@ -585,6 +596,7 @@ class MainWindow(QMainWindow):
             return
         self._close_approved = False
         self.keys.stop()
+        self.attached.detach()
         self.runs.shutdown()
         self.replay.wait_for_reading()
         self.simulator_dock.stop()

@@ -1,0 +1,202 @@
+"""Robot → "Programs on the robot…": the agent's address, the programs it keeps and what it runs now, with
+Send (the open program, exported standalone as ``rockly export --standalone`` does), Start, Stop and Attach
+(``AttachedRun``); once attached, whether the robot's program is the one open here."""
+import tempfile
+from pathlib import Path
+
+from PySide6.QtWidgets import (
+    QCheckBox,
+    QDialog,
+    QDialogButtonBox,
+    QFormLayout,
+    QHBoxLayout,
+    QLabel,
+    QLineEdit,
+    QListWidget,
+    QListWidgetItem,
+    QPushButton,
+    QSpinBox,
+    QVBoxLayout,
+)
+
+from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.core.program import Program, write_text_atomically
+from rockly_desktop.core.workspace_blocks import block_types_by_id
+from rockly_desktop.runtime.agent.client import AgentClient, AgentError
+from rockly_desktop.runtime.agent.protocol import DEFAULT_PORT
+from rockly_desktop.runtime.standalone_file import standalone_text
+from rockly_desktop.ui.agent.program_difference import same_program
+from rockly_desktop.ui.texts import tr
+
+
+class RobotProgramsDialog(QDialog):
+    """The programs on a robot's agent; ``attached``: the window's ``AttachedRun``. Every answer from the agent
+    (or why it cannot be reached) is said in ``status``; ``open_copy(path, name)`` opens the robot's copy of
+    its program (as an untitled copy) when it differs from the window's; Send sends the window's program
+    (``document``: its file and profile) under ``limits()``, the teacher's limits in force."""
+
+    def __init__(self, attached, language: str, parent=None, host: str = "localhost", port: int = DEFAULT_PORT,
+                 open_copy=None, document=None, limits=None):
+        super().__init__(parent)
+        self.attached, self.language, self._open_copy = attached, language, open_copy
+        self.document, self._limits = document, limits
+        self._robot_source = None
+        self._copies = tempfile.TemporaryDirectory(prefix="rockly-robot-copy-")
+        self.setWindowTitle(tr("robot_programs_title", language))
+        self.host = QLineEdit(host)
+        self.port = QSpinBox()
+        self.port.setRange(1, 65535)
+        self.port.setValue(port)
+        self.refresh_button = QPushButton(tr("robot_programs_refresh", language))
+        address = QHBoxLayout()
+        address.addWidget(self.host, 1)
+        address.addWidget(QLabel(tr("robot_programs_port", language)))
+        address.addWidget(self.port)
+        address.addWidget(self.refresh_button)
+        form = QFormLayout()
+        form.addRow(tr("robot_programs_host", language), address)
+        self.programs = QListWidget()
+        self.running = QLabel()
+        self.status = QLabel()
+        self.status.setWordWrap(True)
+        self.difference = QLabel(tr("robot_program_differs", language))
+        self.difference.setWordWrap(True)
+        self.open_copy_button = QPushButton(tr("robot_programs_open_copy", language))
+        self.open_copy_button.clicked.connect(self.open_robot_copy)
+        differs = QHBoxLayout()
+        differs.addWidget(self.difference, 1)
+        differs.addWidget(self.open_copy_button)
+        self.difference.hide()
+        self.open_copy_button.hide()
+        self.send_button = QPushButton(tr("robot_programs_send", language))
+        self.send_button.setEnabled(document is not None)
+        self.keep_going = QCheckBox(tr("robot_programs_keep_going", language))
+        self.start_button = QPushButton(tr("robot_programs_start", language))
+        self.stop_button = QPushButton(tr("robot_programs_stop", language))
+        self.attach_button = QPushButton(tr("robot_programs_attach", language))
+        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
+        for button in (self.send_button, self.start_button, self.stop_button, self.attach_button):
+            buttons.addButton(button, QDialogButtonBox.ButtonRole.ActionRole)
+        buttons.rejected.connect(self.reject)
+        layout = QVBoxLayout(self)
+        layout.addLayout(form)
+        layout.addWidget(self.programs, 1)
+        layout.addWidget(self.keep_going)
+        layout.addWidget(self.running)
+        layout.addWidget(self.status)
+        layout.addLayout(differs)
+        layout.addWidget(buttons)
+        self.refresh_button.clicked.connect(self.refresh)
+        self.start_button.clicked.connect(self.start_chosen)
+        self.send_button.clicked.connect(self.send_open_program)
+        self.stop_button.clicked.connect(lambda: self._with_client(lambda client: client.stop()))
+        self.attach_button.clicked.connect(self.attach)
+        attached.sig_state_changed.connect(self._follow_attachment)
+        self.resize(520, 360)
+
+    def refresh(self):
+        """Ask the agent for its programs and what runs."""
+        answer = self._with_client(lambda client: client.programs(), refresh=False)
+        if answer is None:
+            return
+        chosen = self.chosen()
+        self.programs.clear()
+        for about in answer["programs"]:
+            item = QListWidgetItem(tr("robot_programs_line", self.language, name=about["name"],
+                                      profile=about["profile"], version=about["profile_version"]))
+            item.setData(256, about["name"])
+            self.programs.addItem(item)
+            item.setSelected(about["name"] == chosen)
+        if not answer["programs"]:
+            self.status.setText(tr("robot_no_programs", self.language))
+        run = answer["run"]
+        runs = bool(run) and run["state"] != "ended"
+        self.start_button.setEnabled(not runs)
+        self.attach_button.setEnabled(runs and not self.attached.active)
+        if runs:
+            self.running.setText(tr("robot_programs_running", self.language, name=run["program"],
+                                    state=tr("robot_programs_state_" + run["state"], self.language)))
+        else:
+            self.running.setText(tr("robot_programs_nothing", self.language))
+
+    def _follow_attachment(self, state: str):
+        self.attach_button.setEnabled(state == "idle")
+
+    def chosen(self):
+        """The name of the program chosen in the list (None when none is)."""
+        items = self.programs.selectedItems()
+        return items[0].data(256) if items else None
+
+    def send_open_program(self):
+        """Send the window's program to the robot: the page's code and blocks, exported standalone."""
+        self.attached.editor.call("getRunCode", {"values": False}, lambda run_code, error: self.attached.editor.call(
+            "getState", None, lambda state, state_error: self._send(run_code, state, error or state_error)))
+
+    def _send(self, run_code, state, error):
+        if error:
+            self.status.setText(str(error))
+            return
+        profile, workspace = self.document.profile, state["workspace"]
+        name = Path(self.document.path).stem if self.document.path else "program"
+        standalone = standalone_text(f"{name}.rockly", profile, run_code, block_types_by_id(workspace),
+                                     self._limits(), self.language)
+        source = Program(profile.id, workspace, list(self.document.breakpoints),
+                         profile.packs_used(workspace)).to_json()
+        lost = "keep_going" if self.keep_going.isChecked() else "stop"
+        if self._with_client(lambda client: client.send(name, standalone, source, lost)) is not None:
+            self.status.setText(tr("robot_sent", self.language, name=name))
+
+    def start_chosen(self):
+        name = self.chosen()
+        if name is not None:
+            self._with_client(lambda client: client.start(name))
+
+    def attach(self):
+        """Attach the window to what runs on the robot."""
+        try:
+            self.attached.attach(self.host.text().strip(), self.port.value())
+        except AgentError as error:
+            self.status.setText(error.message)
+            return
+        self.attach_button.setEnabled(False)
+        name = self.attached.program
+        self._robot_source = self._with_client(lambda client: client.source(name), refresh=False)
+        self.status.setText(tr("attached_to", self.language, name=name, host=self.host.text()))
+        if self._robot_source is not None:
+            self.attached.editor.call("getState", None, self._compare)
+
+    def _compare(self, state, error):
+        if error or not isinstance(state, dict):
+            return
+        try:
+            differs = not same_program(self._robot_source, state.get("workspace") or {})
+        except RocklyError:  # the robot keeps a copy that does not parse: not this program
+            differs = True
+        self.difference.setVisible(differs)
+        self.open_copy_button.setVisible(differs and self._open_copy is not None)
+
+    def open_robot_copy(self):
+        """Open the robot's copy of the running program in the window (untitled: Save asks where to keep it)."""
+        name = self.attached.program or "robot"
+        path = Path(self._copies.name) / f"{name}.rockly"
+        write_text_atomically(path, self._robot_source)
+        self._open_copy(str(path), name)
+
+    def _with_client(self, call, refresh=True):
+        """``call(client)`` on a short connection to the agent; its refusal is said in ``status``."""
+        try:
+            client = AgentClient(self.host.text().strip(), self.port.value(), self.language, name="rockly window")
+        except AgentError as error:
+            self.status.setText(error.message)
+            return None
+        try:
+            answer = call(client)
+            self.status.setText("")
+        except AgentError as error:
+            self.status.setText(error.message)
+            answer = None
+        finally:
+            client.close()
+        if refresh:
+            self.refresh()
+        return answer

@@ -1,0 +1,175 @@
+"""Attaching the window to a program that runs on the robot under its agent (``rockly agent --backend sim`` in a
+process of its own): the running block glows, the Console fills, Pause and STOP act on the robot's run, and
+closing the dialog or the window detaches without stopping a keep-going program."""
+import pytest
+from agent_tools import AgentProcess
+from page_tools import call_page
+from program_builder import block, number, rockly_document, stack, workspace
+from screenshots import screenshot
+from standalone_tools import environment, export_standalone
+from test_running import highlighted
+from waiting import eventually
+
+from rockly_desktop.runtime.agent.client import AgentClient
+from rockly_desktop.ui.agent.program_difference import same_program
+from rockly_desktop.ui.agent.robot_programs_dialog import RobotProgramsDialog
+
+
+def greet_and_drive(last="done"):
+    """Print "hello", drive 1 m (20 s at the agent's slow simulated time), print ``last``."""
+    return stack(block("text_print", inputs={"TEXT": block("text", {"TEXT": "hello"})}, id="greet"),
+                 block("hobbit_move", {"direction": "+"}, {"speed": number(1)}, id="drive"),
+                 block("text_print", inputs={"TEXT": block("text", {"TEXT": last})}, id="tell"))
+
+
+@pytest.fixture(scope="module")
+def exported(tmp_path_factory):
+    """The program's standalone export (as ``rockly export --standalone`` writes it) and its ``.rockly`` text."""
+    folder = tmp_path_factory.mktemp("attach-program")
+    source = folder / "drive.rockly"
+    source.write_text(rockly_document([greet_and_drive()]))
+    env = environment(XDG_CONFIG_HOME=str(folder / "config"), XDG_DATA_HOME=str(folder / "data"))
+    return export_standalone(source, folder / "drive.py", "--language", "en", env=env).read_text(), source.read_text()
+
+
+@pytest.fixture
+def robot(tmp_path, exported):
+    """An agent with slow simulated time, running the program (kept going when the editor goes) at its drive."""
+    agent = AgentProcess(tmp_path / "library", "--speed", 0.05)
+    events = []
+    watcher = AgentClient("127.0.0.1", agent.port, on_event=events.append)
+    watcher.send("drive", *exported, on_lost_editor="keep_going")
+    watcher.attach(control=False)
+    watcher.start("drive")
+    eventually(lambda: (watcher.programs()["run"] or {}).get("block") == "drive", 60)
+    yield agent, watcher, events
+    watcher.close()
+    agent.stop()
+
+
+def open_dialog(qtbot, window, agent, program=None):
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(program or greet_and_drive())})
+    dialog = RobotProgramsDialog(window.attached, "en", window, host="127.0.0.1", port=agent.port,
+                                 open_copy=lambda path, name: window.files.open_copy(path, name))
+    qtbot.addWidget(dialog)
+    dialog.show()
+    dialog.refresh()
+    assert [dialog.programs.item(row).text() for row in range(dialog.programs.count())] == ["drive  (hobbit 1.0.0)"]
+    assert dialog.running.text() == "Running on the robot now: drive (running)"
+    return dialog
+
+
+def test_attached_the_block_glows_the_console_fills_and_pause_and_stop_reach_the_robot(qtbot, window, robot):
+    agent, watcher, events = robot
+    dialog = open_dialog(qtbot, window, agent)
+    dialog.attach_button.click()
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
+    assert "hello" in window.console.lines()
+    screenshot(dialog, "attach_dialog")
+    assert window.run_toolbar.pause_action.isEnabled() and window.run_toolbar.stop_action.isEnabled()
+    window.run_toolbar.pause_action.trigger()
+    eventually(lambda: any(event.get("event") == "paused" for event in list(events)), 60)
+    qtbot.waitUntil(lambda: window.attached.state == "paused" and window.run_toolbar.continue_action.isEnabled(),
+                    timeout=10000)
+    assert window.runs.state == "idle"  # the window's own run never started
+    screenshot(window, "attach_window_paused")
+    window.run_toolbar.stop_action.trigger()
+    eventually(lambda: any(event.get("event") == "finished" for event in list(events)), 60)
+    finished = next(event for event in events if event.get("event") == "finished")
+    assert finished["outcome"] == "stopped"
+    qtbot.waitUntil(lambda: window.attached.state == "idle" and window.run_toolbar.run_action.isEnabled(),
+                    timeout=20000)
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == [], timeout=10000)
+
+
+def test_closing_the_dialog_and_the_window_detaches_and_a_keep_going_program_finishes(qtbot, window, robot):
+    agent, watcher, events = robot
+    dialog = open_dialog(qtbot, window, agent)
+    dialog.attach_button.click()
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
+    dialog.close()
+    assert window.attached.active  # the dialog is only the way in
+    window.document.modified = False
+    window.close()
+    assert not window.attached.active
+    assert (watcher.programs()["run"] or {}).get("state") == "running"  # no STOP was sent
+    eventually(lambda: any(event.get("event") == "run" and event.get("state") == "ended" for event in list(events)),
+               120)
+    assert next(event for event in events if event.get("event") == "print" and event.get("text") == "done")
+    finished = next(event for event in events if event.get("event") == "finished")
+    assert finished["outcome"] == "finished"
+
+
+def test_attaching_again_shows_the_current_state(qtbot, window, robot):
+    agent, watcher, events = robot
+    dialog = open_dialog(qtbot, window, agent)
+    dialog.attach_button.click()
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
+    window.attached.detach()
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == [], timeout=10000)
+    assert window.run_toolbar.run_action.isEnabled()
+    dialog.attach_button.click()
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
+    assert window.attached.state == "running"
+    watcher.stop()
+    qtbot.waitUntil(lambda: not window.attached.active, timeout=60000)
+
+
+def test_the_same_program_is_not_flagged_and_another_one_is_and_the_robots_copy_opens(qtbot, window, robot):
+    agent, watcher, events = robot
+    dialog = open_dialog(qtbot, window, agent)
+    with qtbot.waitSignal(window.attached.sig_state_changed, timeout=10000):
+        dialog.attach_button.click()
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
+    assert call_page(qtbot, window.editor, "getState", None)  # the comparison's page call has been answered
+    assert dialog.difference.isHidden() and dialog.open_copy_button.isHidden()
+    window.attached.detach()
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(greet_and_drive(last="bye"))})
+    dialog.attach_button.click()
+    qtbot.waitUntil(lambda: dialog.difference.isVisible() and dialog.open_copy_button.isVisible(), timeout=10000)
+    assert dialog.difference.text() == "The program running on the robot is not the one open here."
+    window.document.modified = False
+    dialog.open_copy_button.click()
+    qtbot.waitUntil(lambda: "'TEXT': 'done'" in str(call_page(qtbot, window.editor, "getState", None)), timeout=10000)
+    assert window.attached.active  # opening the copy keeps the window attached
+    watcher.stop()
+    qtbot.waitUntil(lambda: not window.attached.active, timeout=60000)
+
+
+def test_the_open_program_is_sent_exported_and_starts_on_the_robot(qtbot, window, tmp_path):
+    agent = AgentProcess(tmp_path / "library", "--speed", 20)
+    events = []
+    watcher = AgentClient("127.0.0.1", agent.port, on_event=events.append)
+    try:
+        watcher.attach(control=False)
+        call_page(qtbot, window.editor, "load", {"workspace": workspace(greet_and_drive())})
+        dialog = RobotProgramsDialog(window.attached, "en", window, host="127.0.0.1", port=agent.port,
+                                     document=window.document, limits=lambda: window.settings.teacher.limits("hobbit"))
+        qtbot.addWidget(dialog)
+        dialog.keep_going.setChecked(True)
+        dialog.send_button.click()
+        qtbot.waitUntil(lambda: dialog.status.text() == "'program' is on the robot now", timeout=20000)
+        [about] = watcher.programs()["programs"]
+        assert (about["name"], about["on_lost_editor"]) == ("program", "keep_going")
+        assert same_program(watcher.source("program"), workspace(greet_and_drive()))
+        dialog.programs.item(0).setSelected(True)
+        dialog.start_button.click()
+        eventually(lambda: any(event.get("event") == "run" and event.get("state") == "ended" for event in list(events)),
+                   120)
+        assert [event["text"] for event in events if event.get("event") == "print"] == ["hello", "done"]
+    finally:
+        watcher.close()
+        agent.stop()
+
+
+def test_a_lost_connection_detaches_and_says_so(qtbot, window, robot):
+    agent, watcher, events = robot
+    dialog = open_dialog(qtbot, window, agent)
+    dialog.attach_button.click()
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
+    agent.process.kill()  # the agent gone at once, as a network cut looks to the window
+    qtbot.waitUntil(lambda: not window.attached.active, timeout=20000)
+    assert ("The connection to the robot's agent was lost: the window is no longer attached."
+            in window.console.lines())
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == [], timeout=10000)
+    assert window.run_toolbar.run_action.isEnabled()
