@@ -71,6 +71,8 @@ def test_the_helpers_last_act_is_the_safe_stop(own_helper, test_robot, turtlebot
         robot.helper.process.stdin.close()
     eventually(lambda: robot.helper.lost)
     eventually(lambda: test_robot.received("/cmd_vel")[-1]["message"]["linear"]["x"] == 0.0)
+    # the link replaces its lost helper (and starts a new spare): wait, so the teardown ends those too
+    eventually(lambda: robot.replaced is not None)
 
 
 def test_without_ros2_the_message_names_the_set_up_step(own_helper, turtlebot, ros2_settings, monkeypatch, tmp_path):
