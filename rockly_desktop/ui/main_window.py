@@ -8,7 +8,6 @@ from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS, EditorView
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.recovery import RecoverySession, claim_abandoned
 from rockly_desktop.ui.agent.attached_run import AttachedRun
-from rockly_desktop.ui.agent.robot_programs_dialog import RobotProgramsDialog
 from rockly_desktop.ui.docks.registry import Docks
 from rockly_desktop.ui.docks.stage_layout import BottomTabSizes, StageLayout, keep_side_docks_full_height
 from rockly_desktop.ui.docks.state_panels import StatePanels
@@ -439,6 +438,15 @@ class MainWindow(QMainWindow):
             self._follow_robot_lock()
             self.set_language(dialog.language)
 
+    def show_robot_programs(self):
+        """Robot → Programs on the robot…: the agent's programs, sending, starting and attaching."""
+        # imported when first asked for: it brings the runtime's export (60 ms), which start-up does not need
+        from rockly_desktop.ui.agent.robot_programs_dialog import RobotProgramsDialog
+
+        RobotProgramsDialog(self.attached, self.language, self,
+                            open_copy=lambda path, name: self.files.open_copy(path, name), document=self.document,
+                            limits=lambda: self.settings.teacher.limits(self.profile.id)).show()
+
     def make_block(self, chosen: str = ""):
         """Open the block maker (Tools → Make a block…), with the topic, service or action ``chosen`` chosen."""
         from rockly_desktop.ui.blockmaker.maker_dialog import open_block_maker  # not needed before it is opened
@@ -533,9 +541,7 @@ class MainWindow(QMainWindow):
         self._follow_robot_lock()
         robot_menu.addSeparator()
         robot_menu.addAction(self.run_toolbar.reset_action)
-        self._action(robot_menu, "robot_programs", lambda: RobotProgramsDialog(
-            self.attached, language, self, open_copy=lambda path, name: self.files.open_copy(path, name),
-            document=self.document, limits=lambda: self.settings.teacher.limits(self.profile.id)).show())
+        self._action(robot_menu, "robot_programs", self.show_robot_programs)
 
         view_menu = bar.addMenu(tr("menu_view", language))
         for dock in self.docks.values():
