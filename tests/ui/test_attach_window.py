@@ -1,10 +1,14 @@
 """Attaching the window to a program that runs on the robot under its agent (``rockly agent --backend sim`` in a
 process of its own): the running block glows, the Console fills, Pause and STOP act on the robot's run, and
-closing the dialog or the window detaches without stopping a keep-going program."""
+closing the dialog or the window detaches without stopping a keep-going program; an agent that never answers
+leaves the window responsive."""
+import socket
+
 import pytest
 from agent_tools import AgentProcess
 from page_tools import call_page
 from program_builder import block, number, rockly_document, stack, workspace
+from PySide6.QtCore import QTimer
 from screenshots import screenshot
 from standalone_tools import environment, export_standalone
 from test_running import highlighted
@@ -47,21 +51,39 @@ def robot(tmp_path, exported):
     agent.stop()
 
 
-def open_dialog(qtbot, window, agent, program=None):
+ASKING = "Asking the robot…"
+
+
+@pytest.fixture
+def dialogs(qtbot):
+    """Makes dialogs; at the end, waits for the threads of their calls to the agent to end."""
+    made = []
+
+    def make(window, port, **options):
+        dialog = RobotProgramsDialog(window.attached, "en", window, host="127.0.0.1", port=port, **options)
+        qtbot.addWidget(dialog)
+        made.append(dialog)
+        return dialog
+
+    yield make
+    for dialog in made:
+        dialog.calls.wait(30)
+
+
+def open_dialog(qtbot, window, agent, dialogs, program=None):
     call_page(qtbot, window.editor, "load", {"workspace": workspace(program or greet_and_drive())})
-    dialog = RobotProgramsDialog(window.attached, "en", window, host="127.0.0.1", port=agent.port,
-                                 open_copy=lambda path, name: window.files.open_copy(path, name))
-    qtbot.addWidget(dialog)
+    dialog = dialogs(window, agent.port, open_copy=lambda path, name: window.files.open_copy(path, name))
     dialog.show()
     dialog.refresh()
+    qtbot.waitUntil(lambda: dialog.programs.count() == 1 and dialog.status.text() != ASKING, timeout=20000)
     assert [dialog.programs.item(row).text() for row in range(dialog.programs.count())] == ["drive  (hobbit 1.0.0)"]
     assert dialog.running.text() == "Running on the robot now: drive (running)"
     return dialog
 
 
-def test_attached_the_block_glows_the_console_fills_and_pause_and_stop_reach_the_robot(qtbot, window, robot):
+def test_attached_the_block_glows_the_console_fills_and_pause_and_stop_reach_the_robot(qtbot, window, robot, dialogs):
     agent, watcher, events = robot
-    dialog = open_dialog(qtbot, window, agent)
+    dialog = open_dialog(qtbot, window, agent, dialogs)
     dialog.attach_button.click()
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
     assert "hello" in window.console.lines()
@@ -82,9 +104,9 @@ def test_attached_the_block_glows_the_console_fills_and_pause_and_stop_reach_the
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == [], timeout=10000)
 
 
-def test_closing_the_dialog_and_the_window_detaches_and_a_keep_going_program_finishes(qtbot, window, robot):
+def test_closing_the_dialog_and_the_window_detaches_and_a_keep_going_program_finishes(qtbot, window, robot, dialogs):
     agent, watcher, events = robot
-    dialog = open_dialog(qtbot, window, agent)
+    dialog = open_dialog(qtbot, window, agent, dialogs)
     dialog.attach_button.click()
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
     dialog.close()
@@ -100,14 +122,15 @@ def test_closing_the_dialog_and_the_window_detaches_and_a_keep_going_program_fin
     assert finished["outcome"] == "finished"
 
 
-def test_attaching_again_shows_the_current_state(qtbot, window, robot):
+def test_attaching_again_shows_the_current_state(qtbot, window, robot, dialogs):
     agent, watcher, events = robot
-    dialog = open_dialog(qtbot, window, agent)
+    dialog = open_dialog(qtbot, window, agent, dialogs)
     dialog.attach_button.click()
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
     window.attached.detach()
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == [], timeout=10000)
     assert window.run_toolbar.run_action.isEnabled()
+    qtbot.waitUntil(dialog.attach_button.isEnabled, timeout=20000)
     dialog.attach_button.click()
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
     assert window.attached.state == "running"
@@ -115,9 +138,9 @@ def test_attaching_again_shows_the_current_state(qtbot, window, robot):
     qtbot.waitUntil(lambda: not window.attached.active, timeout=60000)
 
 
-def test_the_same_program_is_not_flagged_and_another_one_is_and_the_robots_copy_opens(qtbot, window, robot):
+def test_the_same_program_is_not_flagged_and_another_one_is_and_the_robots_copy_opens(qtbot, window, robot, dialogs):
     agent, watcher, events = robot
-    dialog = open_dialog(qtbot, window, agent)
+    dialog = open_dialog(qtbot, window, agent, dialogs)
     with qtbot.waitSignal(window.attached.sig_state_changed, timeout=10000):
         dialog.attach_button.click()
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
@@ -125,6 +148,7 @@ def test_the_same_program_is_not_flagged_and_another_one_is_and_the_robots_copy_
     assert dialog.difference.isHidden() and dialog.open_copy_button.isHidden()
     window.attached.detach()
     call_page(qtbot, window.editor, "load", {"workspace": workspace(greet_and_drive(last="bye"))})
+    qtbot.waitUntil(dialog.attach_button.isEnabled, timeout=20000)
     dialog.attach_button.click()
     qtbot.waitUntil(lambda: dialog.difference.isVisible() and dialog.open_copy_button.isVisible(), timeout=10000)
     assert dialog.difference.text() == "The program running on the robot is not the one open here."
@@ -136,22 +160,22 @@ def test_the_same_program_is_not_flagged_and_another_one_is_and_the_robots_copy_
     qtbot.waitUntil(lambda: not window.attached.active, timeout=60000)
 
 
-def test_the_open_program_is_sent_exported_and_starts_on_the_robot(qtbot, window, tmp_path):
+def test_the_open_program_is_sent_exported_and_starts_on_the_robot(qtbot, window, tmp_path, dialogs):
     agent = AgentProcess(tmp_path / "library", "--speed", 20)
     events = []
     watcher = AgentClient("127.0.0.1", agent.port, on_event=events.append)
     try:
         watcher.attach(control=False)
         call_page(qtbot, window.editor, "load", {"workspace": workspace(greet_and_drive())})
-        dialog = RobotProgramsDialog(window.attached, "en", window, host="127.0.0.1", port=agent.port,
-                                     document=window.document, limits=lambda: window.settings.teacher.limits("hobbit"))
-        qtbot.addWidget(dialog)
+        dialog = dialogs(window, agent.port, document=window.document,
+                         limits=lambda: window.settings.teacher.limits("hobbit"))
         dialog.keep_going.setChecked(True)
         dialog.send_button.click()
         qtbot.waitUntil(lambda: dialog.status.text() == "'program' is on the robot now", timeout=20000)
         [about] = watcher.programs()["programs"]
         assert (about["name"], about["on_lost_editor"]) == ("program", "keep_going")
         assert same_program(watcher.source("program"), workspace(greet_and_drive()))
+        qtbot.waitUntil(lambda: dialog.programs.count() == 1 and dialog.start_button.isEnabled(), timeout=20000)
         dialog.programs.item(0).setSelected(True)
         dialog.start_button.click()
         eventually(lambda: any(event.get("event") == "run" and event.get("state") == "ended" for event in list(events)),
@@ -162,9 +186,9 @@ def test_the_open_program_is_sent_exported_and_starts_on_the_robot(qtbot, window
         agent.stop()
 
 
-def test_a_lost_connection_detaches_and_says_so(qtbot, window, robot):
+def test_a_lost_connection_detaches_and_says_so(qtbot, window, robot, dialogs):
     agent, watcher, events = robot
-    dialog = open_dialog(qtbot, window, agent)
+    dialog = open_dialog(qtbot, window, agent, dialogs)
     dialog.attach_button.click()
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
     agent.process.kill()  # the agent gone at once, as a network cut looks to the window
@@ -173,3 +197,33 @@ def test_a_lost_connection_detaches_and_says_so(qtbot, window, robot):
             in window.console.lines())
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == [], timeout=10000)
     assert window.run_toolbar.run_action.isEnabled()
+
+
+def test_an_agent_that_never_answers_leaves_the_window_responsive(qtbot, window, dialogs):
+    silent = socket.socket()  # takes the connection and never reads: the client's hello waits for an answer
+    silent.bind(("127.0.0.1", 0))
+    silent.listen(0)
+    dialog = dialogs(window, silent.getsockname()[1])
+    dialog.show()
+    ticks = []
+    timer = QTimer()
+    timer.timeout.connect(lambda: ticks.append(1))
+    timer.start(10)
+    try:
+        dialog.refresh_button.click()
+        assert dialog.status.text() == ASKING
+        assert not any(button.isEnabled() for button in (dialog.refresh_button, dialog.start_button,
+                                                         dialog.stop_button, dialog.attach_button))
+        qtbot.waitUntil(lambda: len(ticks) >= 20, timeout=3000)  # the window's event loop goes on meanwhile
+        assert dialog.status.text() == ASKING
+        dialog.close()  # closed while asking: its answer is never shown
+        dialog.show()
+        assert dialog.refresh_button.isEnabled()
+    finally:
+        timer.stop()
+        silent.close()  # the waiting connection is reset: the call ends
+    qtbot.waitUntil(lambda: not dialog.calls.busy, timeout=30000)
+    assert dialog.status.text() == ASKING
+    dialog.refresh_button.click()
+    qtbot.waitUntil(lambda: dialog.status.text() != ASKING, timeout=30000)
+    assert "127.0.0.1" in dialog.status.text()  # the agent cannot be reached now: said, as before

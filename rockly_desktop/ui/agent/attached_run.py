@@ -36,8 +36,14 @@ class AttachedRun(QObject):
 
     def attach(self, host: str, port: int) -> dict:
         """Attach to what runs on the agent at ``host``:``port`` and show its state so far; returns the agent's
-        answer. Raises ``AgentError`` (its message for people) when it cannot."""
+        answer. Raises ``AgentError`` (its message for people) when it cannot. Waits for the agent: a window
+        calls ``reach`` off its thread and ``adopt`` on it instead."""
         self.detach()
+        return self.adopt(self.reach(host, port), host)
+
+    def reach(self, host: str, port: int) -> tuple:
+        """Connect to the agent at ``host``:``port`` and attach to its run: ``(client, answer)`` for ``adopt``.
+        Touches nothing of the window, so it may run on any thread. Raises ``AgentError`` when it cannot."""
         client = AgentClient(host, port, self.language(), on_event=self._sig_event.emit,
                              on_closed=self._sig_closed.emit, name="rockly window")
         try:
@@ -49,6 +55,14 @@ class AttachedRun(QObject):
         if run is None or run["state"] == "ended":
             client.close()
             raise AgentError("nothing_runs", tr("attach_nothing_runs", self.language()))
+        return client, answer
+
+    def adopt(self, reached: tuple, host: str) -> dict:
+        """Become attached through ``reached`` (``reach``'s answer) and show the run so far; returns the agent's
+        answer."""
+        self.detach()
+        client, answer = reached
+        run = answer["run"]
         self.client, self.program = client, run["program"]
         self.console.append(tr("attached_to", self.language(), name=self.program, host=host), "info")
         if answer["controlled_elsewhere"]:

@@ -22,9 +22,10 @@ from PySide6.QtWidgets import (
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.program import Program, write_text_atomically
 from rockly_desktop.core.workspace_blocks import block_types_by_id
-from rockly_desktop.runtime.agent.client import AgentClient, AgentError
+from rockly_desktop.runtime.agent.client import AgentClient
 from rockly_desktop.runtime.agent.protocol import DEFAULT_PORT
 from rockly_desktop.runtime.standalone_file import standalone_text
+from rockly_desktop.ui.agent.agent_calls import AgentCalls
 from rockly_desktop.ui.agent.program_difference import same_program
 from rockly_desktop.ui.texts import tr
 
@@ -33,7 +34,9 @@ class RobotProgramsDialog(QDialog):
     """The programs on a robot's agent; ``attached``: the window's ``AttachedRun``. Every answer from the agent
     (or why it cannot be reached) is said in ``status``; ``open_copy(path, name)`` opens the robot's copy of
     its program (as an untitled copy) when it differs from the window's; Send sends the window's program
-    (``document``: its file and profile) under ``limits()``, the teacher's limits in force."""
+    (``document``: its file and profile) under ``limits()``, the teacher's limits in force. The agent is asked
+    off the window's thread (``calls``): while an answer is on its way, ``status`` says so and the buttons that
+    would ask again wait; answers that come after the dialog was closed are dropped."""
 
     def __init__(self, attached, language: str, parent=None, host: str = "localhost", port: int = DEFAULT_PORT,
                  open_copy=None, document=None, limits=None):
@@ -41,6 +44,8 @@ class RobotProgramsDialog(QDialog):
         self.attached, self.language, self._open_copy = attached, language, open_copy
         self.document, self._limits = document, limits
         self._robot_source = None
+        self.calls = AgentCalls(self)
+        self._enabled_before = None  # the asking buttons' states while an answer is on its way
         self._copies = tempfile.TemporaryDirectory(prefix="rockly-robot-copy-")
         self.setWindowTitle(tr("robot_programs_title", language))
         self.host = QLineEdit(host)
@@ -92,11 +97,15 @@ class RobotProgramsDialog(QDialog):
         self.stop_button.clicked.connect(lambda: self._with_client(lambda client: client.stop()))
         self.attach_button.clicked.connect(self.attach)
         attached.sig_state_changed.connect(self._follow_attachment)
+        self.finished.connect(self._forget_calls)
         self.resize(520, 360)
 
-    def refresh(self):
-        """Ask the agent for its programs and what runs."""
-        answer = self._with_client(lambda client: client.programs(), refresh=False)
+    def refresh(self, said: str = ""):
+        """Ask the agent for its programs and what runs; ``said``: what ``status`` says once they are shown."""
+        self._with_client(lambda client: client.programs(), lambda answer: self._show_programs(answer, said),
+                          refresh=False)
+
+    def _show_programs(self, answer, said: str):
         if answer is None:
             return
         chosen = self.chosen()
@@ -118,9 +127,14 @@ class RobotProgramsDialog(QDialog):
                                     state=tr("robot_programs_state_" + run["state"], self.language)))
         else:
             self.running.setText(tr("robot_programs_nothing", self.language))
+        if said:
+            self.status.setText(said)
 
     def _follow_attachment(self, state: str):
-        self.attach_button.setEnabled(state == "idle")
+        if self._enabled_before is not None:  # asking: the button follows once the answer is in
+            self._enabled_before[self.attach_button] = state == "idle"
+        else:
+            self.attach_button.setEnabled(state == "idle")
 
     def chosen(self):
         """The name of the program chosen in the list (None when none is)."""
@@ -143,8 +157,12 @@ class RobotProgramsDialog(QDialog):
         source = Program(profile.id, workspace, list(self.document.breakpoints),
                          profile.packs_used(workspace)).to_json()
         lost = "keep_going" if self.keep_going.isChecked() else "stop"
-        if self._with_client(lambda client: client.send(name, standalone, source, lost)) is not None:
-            self.status.setText(tr("robot_sent", self.language, name=name))
+        self._with_client(lambda client: client.send(name, standalone, source, lost),
+                          lambda answer: self._sent(name, answer), refresh=False)
+
+    def _sent(self, name: str, answer):
+        if answer is not None:
+            self.refresh(tr("robot_sent", self.language, name=name))
 
     def start_chosen(self):
         name = self.chosen()
@@ -153,16 +171,25 @@ class RobotProgramsDialog(QDialog):
 
     def attach(self):
         """Attach the window to what runs on the robot."""
-        try:
-            self.attached.attach(self.host.text().strip(), self.port.value())
-        except AgentError as error:
+        host, port = self.host.text().strip(), self.port.value()
+        self.attached.detach()
+        self._ask(lambda: self.attached.reach(host, port), self._reached,
+                  unused=lambda reached: reached[0].close())
+
+    def _reached(self, reached, error):
+        if error is not None:
             self.status.setText(error.message)
             return
+        self.attached.adopt(reached, self.host.text().strip())
         self.attach_button.setEnabled(False)
         name = self.attached.program
-        self._robot_source = self._with_client(lambda client: client.source(name), refresh=False)
+        self._with_client(lambda client: client.source(name), lambda source: self._got_source(name, source),
+                          refresh=False)
+
+    def _got_source(self, name: str, source):
+        self._robot_source = source
         self.status.setText(tr("attached_to", self.language, name=name, host=self.host.text()))
-        if self._robot_source is not None:
+        if source is not None:
             self.attached.editor.call("getState", None, self._compare)
 
     def _compare(self, state, error):
@@ -182,21 +209,47 @@ class RobotProgramsDialog(QDialog):
         write_text_atomically(path, self._robot_source)
         self._open_copy(str(path), name)
 
-    def _with_client(self, call, refresh=True):
-        """``call(client)`` on a short connection to the agent; its refusal is said in ``status``."""
-        try:
-            client = AgentClient(self.host.text().strip(), self.port.value(), self.language, name="rockly window")
-        except AgentError as error:
-            self.status.setText(error.message)
-            return None
-        try:
-            answer = call(client)
-            self.status.setText("")
-        except AgentError as error:
-            self.status.setText(error.message)
-            answer = None
-        finally:
-            client.close()
-        if refresh:
-            self.refresh()
-        return answer
+    def _with_client(self, call, then=None, refresh=True):
+        """``call(client)`` on a short connection to the agent, off the window's thread; on the window's thread
+        ``then(answer)`` follows (None when refused: the refusal is said in ``status``), then a refresh."""
+        host, port, language = self.host.text().strip(), self.port.value(), self.language
+
+        def work():
+            client = AgentClient(host, port, language, name="rockly window")
+            try:
+                return call(client)
+            finally:
+                client.close()
+
+        def answered(answer, error):
+            self.status.setText(error.message if error is not None else "")
+            if then is not None:
+                then(answer)
+            if refresh:
+                self.refresh()
+
+        self._ask(work, answered)
+
+    def _forget_calls(self):
+        """The dialog closed: answers on their way are dropped, and the buttons wait no more."""
+        self.calls.forget()
+        enabled, self._enabled_before = self._enabled_before or {}, None
+        for button, was in enabled.items():
+            button.setEnabled(was)
+
+    def _ask(self, work, answered, unused=None):
+        """``work()`` off the window's thread, ``answered(answer, error)`` on it; meanwhile ``status`` says the
+        robot is being asked and the buttons that would ask again wait."""
+        self.status.setText(tr("robot_programs_asking", self.language))
+        asking = (self.refresh_button, self.send_button, self.start_button, self.stop_button, self.attach_button)
+        self._enabled_before = {button: button.isEnabled() for button in asking}
+        for button in asking:
+            button.setEnabled(False)
+
+        def done(answer, error):
+            enabled, self._enabled_before = self._enabled_before, None
+            for button, was in enabled.items():
+                button.setEnabled(was)
+            answered(answer, error)
+
+        self.calls.run(work, done, unused)
