@@ -212,6 +212,26 @@ def test_an_unreachable_agent_is_said(tmp_path):
     assert result.stderr.startswith("rockly robot: the robot's agent at localhost:9 cannot be reached")
 
 
+def test_a_host_that_never_answers_hello_is_said_and_the_client_keeps_no_thread(tmp_path):
+    """A port that takes the connection but never answers: the client gives up after its timeout, closes,
+    and tells nobody of a connection that never was."""
+    import threading
+
+    silent = socket.socket()
+    silent.bind(("127.0.0.1", 0))
+    silent.listen(1)
+    closed = []
+    try:
+        with pytest.raises(AgentError) as raised:
+            AgentClient("127.0.0.1", silent.getsockname()[1], "de", on_closed=lambda: closed.append(1), timeout=0.5)
+        assert raised.value.key == "agent_connection_lost"
+        eventually(lambda: not [thread for thread in threading.enumerate()
+                                if thread.name in ("agent-client", "agent-heartbeat")])
+        assert closed == []
+    finally:
+        silent.close()
+
+
 @pytest.mark.parametrize("choice", ["keep_going", "stop"])
 def test_a_lost_editor_keeps_the_run_going_or_stops_the_robot_as_the_program_says(agent_at, program, choice):
     """The editor (an attached ``rockly robot attach``) is killed while the program drives."""

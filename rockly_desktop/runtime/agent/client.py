@@ -59,7 +59,12 @@ class AgentClient:
         self._reader.start()
         self._heart = threading.Thread(target=self._beat, daemon=True, name="agent-heartbeat")
         self._heart.start()
-        self.hello = self.request("hello", rockly=__version__, format=FORMAT, language=language, client=name)
+        try:
+            self.hello = self.request("hello", rockly=__version__, format=FORMAT, language=language, client=name)
+        except AgentError:
+            self.on_event = self.on_closed = None  # nobody was told of a client that never was
+            self.close()  # an agent that never answers (or refuses) keeps no socket or thread of this client
+            raise
 
     def request(self, op: str, **fields) -> dict:
         """Send request ``op`` and return the agent's answer (its fields, without ``reply`` and ``ok``); raises
