@@ -61,3 +61,28 @@ class GraphFollowing:
         """The names of the robot's parameters; empty while not followed."""
         feed = self._feed
         return feed.graph_parameters() if feed is not None else []
+
+
+class ReadsFollowedGraph:
+    """The graph-reading half of a robot link whose ``_following`` is a GraphFollowing: what the last look
+    at the robot's graph learnt (all empty until ``follow_graph`` runs); none of these waits."""
+
+    def graph_topics(self) -> list:
+        """(topic, type, publisher count) of the robot's graph."""
+        return self._following.graph_topics()
+
+    def graph_services(self) -> list:
+        """(service, type) of the robot's graph, not Rockly's own."""
+        return self._following.graph_services()
+
+    def graph_actions(self) -> list:
+        """(action, type) of the robot's graph's action servers."""
+        return self._following.graph_actions()
+
+    def graph_parameters(self) -> list:
+        """The robot's graph's parameter names."""
+        return self._following.graph_parameters()
+
+    def own_publishers(self) -> dict:
+        """{topic: Rockly's own publishers on it} (not in ``graph_topics``)."""
+        return self._following.own_publishers()

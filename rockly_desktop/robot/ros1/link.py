@@ -11,7 +11,7 @@ from rockly_desktop.robot.link import LinkStatus, LinkWarning
 SETUP_STEP = "run `make setup` in Rockly's folder (it installs Debian's ROS 1: python3-rospy and its tools)"
 
 
-class RosRobot:
+class RosRobot(link_parts.ReadsFollowedGraph):
     """A real robot (or a ROS-level simulator) on ROS 1, through this process's one node.
 
     ``master_uri`` and ``host`` (this computer's ROS_IP or ROS_HOSTNAME) are used when the node
@@ -102,26 +102,6 @@ class RosRobot:
         kind, address = self.connection.address_problem
         return [LinkWarning(f"address_{kind}", "address_title", address_problem_text(self.connection.address_problem),
                             {"address": address})]
-
-    def graph_topics(self) -> list:
-        """(topic, type, publisher count) of the ROS graph (once ``follow_graph`` runs)."""
-        return self._following.graph_topics()
-
-    def graph_services(self) -> list:
-        """(service, type) of the ROS graph (once ``follow_graph`` runs), not Rockly's own."""
-        return self._following.graph_services()
-
-    def graph_actions(self) -> list:
-        """(action, type) of the ROS graph's action servers (once ``follow_graph`` runs)."""
-        return self._following.graph_actions()
-
-    def graph_parameters(self) -> list:
-        """The ROS graph's parameter names (once ``follow_graph`` runs)."""
-        return self._following.graph_parameters()
-
-    def own_publishers(self) -> dict:
-        """{topic: Rockly's own publishers on it} (not in ``graph_topics``), once ``follow_graph`` runs."""
-        return self._following.own_publishers()
 
     def health(self) -> list:
         """HealthItems: the master (with its round trip), the robot's topics, services and action servers."""

@@ -70,7 +70,7 @@ class Replacement:
     failures: tuple
 
 
-class Ros2Robot:
+class Ros2Robot(link_parts.ReadsFollowedGraph):
     """A robot on ROS 2, through this process's one helper (started on first use, replaced when lost,
     ended by ``shutdown``).
 
@@ -212,26 +212,6 @@ class Ros2Robot:
     def warnings(self) -> list:
         """Nothing to warn about: ROS 2 needs no address of this computer."""
         return []
-
-    def graph_topics(self) -> list:
-        """(topic, type, publisher count) of the ROS 2 graph (once ``follow_graph`` runs)."""
-        return self._following.graph_topics()
-
-    def graph_services(self) -> list:
-        """(service, type) of the ROS 2 graph (once ``follow_graph`` runs), not Rockly's own."""
-        return self._following.graph_services()
-
-    def graph_actions(self) -> list:
-        """(action, type) of the ROS 2 graph's action servers (once ``follow_graph`` runs)."""
-        return self._following.graph_actions()
-
-    def graph_parameters(self) -> list:
-        """The ROS 2 graph's parameter names (once ``follow_graph`` runs)."""
-        return self._following.graph_parameters()
-
-    def own_publishers(self) -> dict:
-        """{topic: Rockly's own publishers on it} (not in ``graph_topics``), once ``follow_graph`` runs."""
-        return self._following.own_publishers()
 
     def health(self) -> list:
         """HealthItems: the link (domain, discovery range; a helper lost or replaced lately), the
