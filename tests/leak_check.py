@@ -1,4 +1,5 @@
-"""Fails a test that leaves a QThread running or a child process alive (a plugin conftest.py loads).
+"""Fails a test that leaves a QThread running, a child process alive or a mouse button held down in
+Qt's state (a plugin conftest.py loads).
 
 A test that starts a thread or a process must end it: the next test would otherwise share
 the CPU, the ROS master or the QApplication with it. Processes of session and module
@@ -12,7 +13,10 @@ from pathlib import Path
 
 import pytest
 import shiboken6
-from PySide6.QtCore import QThread
+from PySide6.QtCore import Qt, QThread
+from PySide6.QtGui import QGuiApplication
+from PySide6.QtTest import QTest
+from PySide6.QtWidgets import QWidget
 from waiting import eventually
 
 GRACE_SECONDS = 5.0  # a thread or process that ends within this after the test was only finishing
@@ -89,3 +93,17 @@ def nothing_left_running():
     left += [f"the process {pid} ({name})" for pid, _started, name in sorted(processes)]
     if left:
         pytest.fail("the test left " + ", ".join(left) + " behind", pytrace=False)
+
+
+@pytest.fixture(autouse=True)
+def no_mouse_button_held():
+    """After the test: no mouse button is down in Qt's application-wide state. (QTest's mouseDClick presses
+    a second time without a release; the windows of every later test would then take each focus change
+    for a click, and the keyboard's focus ring would never show.) A button left down is released here."""
+    yield
+    held = QGuiApplication.mouseButtons() if QGuiApplication.instance() is not None else Qt.MouseButton.NoButton
+    if held == Qt.MouseButton.NoButton:
+        return
+    QTest.mouseRelease(QWidget(), held)  # (any widget: Qt's state is the application's)
+    pytest.fail(f"the test left a mouse button held down ({held.name}): a press without its release",
+                pytrace=False)

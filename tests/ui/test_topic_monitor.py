@@ -403,6 +403,7 @@ def test_double_clicking_a_numeric_field_asks_for_a_plot(store, make_monitor, qt
         centre = tree.visualRect(index).center()
         qtbot.mouseClick(tree.viewport(), Qt.MouseButton.LeftButton, pos=centre)  # a double-click starts with a click
         qtbot.mouseDClick(tree.viewport(), Qt.MouseButton.LeftButton, pos=centre)
+        qtbot.mouseRelease(tree.viewport(), Qt.MouseButton.LeftButton, pos=centre)  # (mouseDClick leaves it down)
 
     with qtbot.waitSignal(monitor.sig_plot_requested, timeout=2000) as blocker:
         double_click("pose.pose.position.x")
