@@ -54,6 +54,7 @@ class MainWindow(QMainWindow):
         self._in_close_event = False
         # runs a teacher's command (choosing the robot, Preferences); kiosk mode asks for the PIN first
         self.teacher_gate = lambda command: command()
+        self.gate_asks_pin = False  # True when teacher_gate has checked the PIN (Preferences then asks no more)
         self.setObjectName("main_window")
 
         self.editor = editor or EditorView()
@@ -194,6 +195,7 @@ class MainWindow(QMainWindow):
                       docks=self.docks, editor=self.editor, document=self.document, files=self.files,
                       replay=self.replay, runs=self.runs, robots=self.robots, run_toolbar=lambda: self.run_toolbar)
         self.teacher_gate = kiosk.ask_teacher
+        self.gate_asks_pin = True
         return kiosk
 
     # --- the robot ----------------------------------------------------------------------
@@ -426,7 +428,8 @@ class MainWindow(QMainWindow):
     def _show_preferences(self):
         dialog = PreferencesDialog(self.language, self, self.profile, self.settings.teacher,
                                    reset_before_run=self.settings.reset_before_run, kiosk=self.settings.kiosk,
-                                   kiosk_mode=self.settings.kiosk_mode, block_look=self.settings.block_look)
+                                   kiosk_mode=self.settings.kiosk_mode, block_look=self.settings.block_look,
+                                   pin_given=self.gate_asks_pin)
         if dialog.exec():
             self.settings.reset_before_run = dialog.reset_before_run
             self.settings.block_look = dialog.block_look

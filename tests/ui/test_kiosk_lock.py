@@ -245,6 +245,28 @@ def test_the_robot_menu_run_on_and_preferences_ask_for_the_pin_in_a_kiosk(qtbot,
     qtbot.waitUntil(lambda: window.profile.id == "turtlebot", timeout=10000)
 
 
+def test_preferences_in_a_kiosk_ask_the_pin_once_and_a_wrong_pin_opens_nothing(qtbot, open_kiosk):
+    window, kiosk = open_kiosk()
+    shown = []
+
+    def look(dialog):
+        shown.append({"dialog": type(dialog).__name__, "teacher_unlocked": dialog.teacher_tab.unlocked,
+                      "kiosk_tab_usable": dialog.kiosk_tab.idle_minutes.isEnabled()})
+        dialog.reject()
+
+    failures = with_dialog(qtbot, look)
+    window.findChild(QAction, "action_preferences").trigger()
+    gate = kiosk.teacher_dialog
+    gate.pin.setText("0000")
+    gate.accept()                                                  # a wrong PIN: refused, nothing opens
+    assert gate.isVisible() and gate.problem.text().startswith("Wrong PIN.") and shown == []
+    gate.pin.setText(PIN)
+    gate.accept()                                                  # the right one: Preferences, asking no more
+    qtbot.waitUntil(lambda: bool(shown), timeout=5000)
+    assert failures == []
+    assert shown == [{"dialog": "PreferencesDialog", "teacher_unlocked": True, "kiosk_tab_usable": True}]
+
+
 def test_an_idle_reset_clears_console_replay_variables_and_badges(qtbot, open_kiosk, folders, clock):
     programs, _visitors = folders
     start = programs / "start.rockly"

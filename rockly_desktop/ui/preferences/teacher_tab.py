@@ -22,14 +22,17 @@ from rockly_desktop.ui.texts import tr
 
 class TeacherTab(QStackedWidget):
     """Locked (asks for the PIN, or for a new one the first time) until the right PIN is given;
-    then the settings for ``profile`` from ``teacher`` (TeacherSettings). ``apply()`` keeps them."""
+    then the settings for ``profile`` from ``teacher`` (TeacherSettings). ``apply()`` keeps them.
+    ``unlocked``: the PIN was given just before (a kiosk asks it to open Preferences), not asked again."""
 
-    def __init__(self, profile, teacher, language: str, parent=None):
+    def __init__(self, profile, teacher, language: str, parent=None, unlocked: bool = False):
         super().__init__(parent)
         self.setObjectName("teacher_tab")
         self._profile, self._teacher, self._language = profile, teacher, language
         self.addWidget(self._lock_page())
         self.addWidget(self._settings_page())
+        if unlocked:
+            self.setCurrentIndex(1)
 
     @property
     def unlocked(self) -> bool:
