@@ -1,7 +1,7 @@
 """Fixtures: a real ROS master for this test run, and the ROS-level simulated HOBBIT on it."""
 import pytest
 from leak_check import shared_process
-from ros_helpers import RocklyProcess, RosMaster
+from ros_helpers import RocklyProcess, RosMaster, put_back_simulator
 
 
 @pytest.fixture(scope="session")
@@ -12,8 +12,8 @@ def ros_master(tmp_path_factory):
 
 
 @pytest.fixture(scope="session")
-def hobbit_on_ros(ros_master):
-    """`rockly sim hobbit --ros` running against the session's master (fast simulated time).
+def session_hobbit_on_ros(ros_master):
+    """`rockly sim hobbit --ros` running against the session's master (fast simulated time), started once.
 
     Without its window: every question here is answered from --answer (one beyond them fails
     at once instead of waiting for a person), and no Qt redraws compete with timed tests for the
@@ -24,9 +24,23 @@ def hobbit_on_ros(ros_master):
     process.stop()
 
 
+@pytest.fixture
+def hobbit_on_ros(ros_master, session_hobbit_on_ros):
+    """The session's ROS-level HOBBIT, put back as it started (its /rockly_sim/reset) before each test
+    that uses it: a test before may have driven it away or left its arm out."""
+    put_back_simulator(ros_master.uri)
+    return session_hobbit_on_ros
+
+
 @pytest.fixture(scope="session")
-def ros_robot(ros_master, hobbit_on_ros, hobbit):
-    """This test process as a Rockly node on the session's master, driving the ROS-level HOBBIT."""
+def session_ros_robot(ros_master, session_hobbit_on_ros, hobbit):
     from rockly_desktop.robot.ros1.link import RosRobot
 
     return RosRobot(hobbit, ros_master.uri)
+
+
+@pytest.fixture
+def ros_robot(session_ros_robot, hobbit_on_ros):
+    """This test process as a Rockly node on the session's master, driving the ROS-level HOBBIT (put back
+    at its start)."""
+    return session_ros_robot

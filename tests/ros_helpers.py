@@ -9,7 +9,8 @@ from pathlib import Path
 
 from waiting import eventually
 
-from rockly_desktop.robot.ros1.connection import ask_master, master_answers
+from rockly_desktop.robot.ros1.connection import RosConnection, ask_master, master_answers
+from rockly_desktop.robot.sim.served_simulator import PUT_BACK_SERVICE
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -36,6 +37,18 @@ def connected_subscription(ros_robot, topic: str, msg_type: str):
     publishers = dict(ask_master(ros_robot.connection.master_uri, "getSystemState")[0]).get(topic, [])
     eventually(lambda: entry._subscriber.get_num_connections() >= len(publishers))
     return entry
+
+
+def put_back_simulator(master_uri: str, timeout: float = 30.0):
+    """Put the ROS-level simulator on ``master_uri`` back as it started: a call to its /rockly_sim/reset
+    (std_srvs/Trigger) from this process's node."""
+    RosConnection.get(master_uri)  # this process as a node on that master
+    import rospy
+    from std_srvs.srv import Trigger
+
+    rospy.wait_for_service(PUT_BACK_SERVICE, timeout)
+    answer = rospy.ServiceProxy(PUT_BACK_SERVICE, Trigger)()
+    assert answer.success, answer.message
 
 
 def feed_hears(robot, topics: dict):

@@ -6,8 +6,9 @@ what the simulator publishes goes out on ROS; services and actions are served by
 simulator's own handlers, with feedback and preemption passed through.
 
 ``SimulatorNode`` is the whole of ``rockly sim PROFILE --ros``: the node, the world, the
-simulator and the bridge, and their orderly end (``shutdown``). It has no window of its
-own; whoever runs it may show ``node.simulator.snapshot()`` and answer its tablet.
+simulator and the bridge, its put-back service (``/rockly_sim/reset``), and their orderly end
+(``shutdown``). It has no window of its own; whoever runs it may show ``node.simulator.snapshot()``
+and answer its tablet.
 """
 import logging
 import threading
@@ -18,7 +19,7 @@ from rockly_desktop.core.errors import ProgramStopped, RobotCommandError
 from rockly_desktop.robot.interface import GoalStatus
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.ros1.message_values import from_message, to_message
-from rockly_desktop.robot.sim.served_simulator import ServedSimulator
+from rockly_desktop.robot.sim.served_simulator import PUT_BACK_SERVICE, ServedSimulator
 
 log = logging.getLogger(__name__)
 
@@ -118,6 +119,8 @@ class SimulatorNode(ServedSimulator):
     """
 
     def __init__(self, profile, types, master_uri=None, speed=1.0, tablet=None):
+        import rospy
+
         from rockly_desktop.robot.ros1.connection import RosConnection
         from rockly_desktop.robot.sim.sim_world import SimWorld
 
@@ -126,6 +129,8 @@ class SimulatorNode(ServedSimulator):
         self.simulator = profile.create("simulator", self.world, tablet=tablet, speed=speed)
         self._bridge = SimRosBridge(self.world, profile.ros_interface, types)
         self.simulator.start()
+        trigger = types.service_class("std_srvs/Trigger")
+        rospy.Service(PUT_BACK_SERVICE, trigger, lambda _request: to_message(trigger._response_class, self.put_back()))
 
     @property
     def where(self) -> str:

@@ -3,12 +3,25 @@ import logging
 
 log = logging.getLogger(__name__)
 
+# The service (std_srvs/Trigger) that puts the served simulator back as it started, in the simulator's
+# own namespace: no real robot serves it (HOBBIT's interface has nothing under /rockly_sim).
+PUT_BACK_SERVICE = "/rockly_sim/reset"
+
 
 class ServedSimulator:
     """The part the ROS 1 and ROS 2 simulator nodes share: their ``simulator`` reaches the graph
     through their ``_bridge``, and ``shutdown()`` ends both, once."""
 
     _ended = False
+
+    def put_back(self) -> dict:
+        """The answer to PUT_BACK_SERVICE (a std_srvs/Trigger response): the robot back at its start pose,
+        standing still, every part as at the start (the simulator's ``reset()``, as the window's Put back)."""
+        try:
+            self.simulator.reset()
+        except NotImplementedError as error:
+            return {"success": False, "message": str(error)}
+        return {"success": True, "message": ""}
 
     def shutdown(self):
         """End waiting questions and goals, stop the simulator (its safe stop first), then leave the
