@@ -21,12 +21,9 @@ import threading
 import time
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))
-sys.path.insert(0, str(REPO / "tests"))
-
-from _stop_on_the_wire import DRIVE_AND_WAIT, stop_latencies  # noqa: E402
-from ros_helpers import RosMaster, ros_environment  # noqa: E402
+from _paths import REPO  # its set-up: Rockly and the tests' helpers importable
+from _stop_on_the_wire import DRIVE_AND_WAIT, stop_latencies
+from ros_helpers import RosMaster, ros_environment
 
 STOP_TRIALS = 10
 ATTACH_TRIALS = 20

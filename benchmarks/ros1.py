@@ -13,17 +13,13 @@ A real rosmaster on a free port and an echo node in its own process (plain rospy
 import os
 import statistics
 import subprocess
-import sys
 import threading
 import time
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))
-sys.path.insert(0, str(REPO / "tests"))
-
-from _stop_on_the_wire import stop_latencies  # noqa: E402
-from ros_helpers import RosMaster, ros_environment  # noqa: E402
+from _paths import REPO  # its set-up: Rockly and the tests' helpers importable
+from _stop_on_the_wire import stop_latencies
+from ros_helpers import RosMaster, ros_environment
 
 TRIALS = 300
 RATE_SECONDS = 2.0

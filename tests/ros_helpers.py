@@ -103,6 +103,14 @@ class RosMaster:
             self.process.wait(10)
 
 
+def hobbit_on_own_master(folder: Path) -> tuple:
+    """``(master, simulator)``: a rosmaster of its own (its home in ``folder``) and ``rockly sim hobbit --ros``
+    on it, up; the caller stops both."""
+    master = RosMaster(folder / "ros").start()
+    return master, RocklyProcess(["sim", "hobbit", "--ros", "--no-window", "--master", master.uri], master,
+                                 ready_line="on ROS")
+
+
 class RocklyProcess:
     """A ``rockly`` command running as its own process (a ROS node)."""
 

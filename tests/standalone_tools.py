@@ -6,6 +6,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+from program_builder import rockly_document
+
 REPO = Path(__file__).resolve().parents[1]
 
 
@@ -16,6 +18,15 @@ def export_standalone(source: Path, output: Path, *extra, env=None) -> Path:
                             env=env)
     assert result.returncode == 0, result.stderr
     return output
+
+
+def exported_program(folder: Path, top_block, name: str = "drive", profile: str = "hobbit") -> tuple:
+    """``(standalone .py, .rockly)``: a program of ``top_block`` (program_builder's) written into ``folder`` as
+    ``NAME.rockly`` and exported in English, with settings folders of its own there (no teacher's limits)."""
+    source = folder / f"{name}.rockly"
+    source.write_text(rockly_document([top_block], profile=profile))
+    env = environment(XDG_CONFIG_HOME=str(folder / "config"), XDG_DATA_HOME=str(folder / "data"))
+    return export_standalone(source, folder / f"{name}.py", "--language", "en", env=env), source
 
 
 def run_file(path: Path, *args, python=sys.executable, env=None, timeout=120) -> subprocess.CompletedProcess:

@@ -10,7 +10,7 @@ import subprocess
 import pytest
 from agent_tools import REPO, AgentProcess
 from program_builder import block, number, rockly_document, stack
-from standalone_tools import environment, export_standalone
+from standalone_tools import environment, exported_program
 from tiny_disk import fill, tiny_disk
 from waiting import eventually
 
@@ -26,11 +26,7 @@ def drive_and_tell():
 @pytest.fixture(scope="module")
 def program(tmp_path_factory):
     """``(standalone .py, .rockly)`` of the drive-and-tell program (exported once, as ``rockly export`` does)."""
-    folder = tmp_path_factory.mktemp("agent-program")
-    source = folder / "drive.rockly"
-    source.write_text(rockly_document([drive_and_tell()]))
-    env = environment(XDG_CONFIG_HOME=str(folder / "config"), XDG_DATA_HOME=str(folder / "data"))
-    return export_standalone(source, folder / "drive.py", "--language", "en", env=env), source
+    return exported_program(tmp_path_factory.mktemp("agent-program"), drive_and_tell())
 
 
 @pytest.fixture
@@ -56,6 +52,13 @@ class Watcher:
     def wait_for(self, wanted, timeout=60):
         eventually(lambda: any(wanted(event) for event in list(self.events)), timeout)
         return next(event for event in self.events if wanted(event))
+
+    def start_driving(self, standalone):
+        """Send ``standalone`` (a file) as "drive", attach, start it; return once its drive block runs."""
+        self.client.send("drive", standalone.read_text())
+        self.client.attach()
+        self.client.start("drive")
+        return self.wait_for(lambda event: event.get("id") == "drive")
 
     def close(self):
         self.client.close()
@@ -264,11 +267,8 @@ def test_the_agent_killed_mid_run_leaves_the_robot_stopped(agent_at, program):
     agent = agent_at(speed=0.01)  # the drive would take 100 s
     watcher = Watcher(agent)
     try:
-        watcher.client.send("drive", program[0].read_text())
-        watcher.client.attach()
-        watcher.client.start("drive")
+        watcher.start_driving(program[0])
         started = watcher.wait_for(lambda event: event.get("event") == "started")
-        watcher.wait_for(lambda event: event.get("id") == "drive")
     finally:
         watcher.close()
     agent.process.send_signal(signal.SIGKILL)
@@ -344,10 +344,7 @@ def test_sigterm_to_the_agent_mid_run_stops_the_program_with_the_safe_stop_first
     agent = agent_at(speed=0.01)
     watcher = Watcher(agent)
     try:
-        watcher.client.send("drive", program[0].read_text())
-        watcher.client.attach()
-        watcher.client.start("drive")
-        watcher.wait_for(lambda event: event.get("id") == "drive")
+        watcher.start_driving(program[0])
         agent.process.terminate()
         assert agent.process.wait(60) == 0
         finished = next(event for event in watcher.events if event.get("event") == "finished")
@@ -380,10 +377,7 @@ def test_a_paused_run_steps_block_by_block(agent_at, program):
     agent = agent_at(speed=0.5)
     watcher = Watcher(agent)
     try:
-        watcher.client.send("drive", program[0].read_text())
-        watcher.client.attach()
-        watcher.client.start("drive")
-        watcher.wait_for(lambda event: event.get("id") == "drive")
+        watcher.start_driving(program[0])
         watcher.client.control("pause")
         paused = watcher.wait_for(lambda event: event.get("event") == "paused")
         assert (paused["block"], paused["reason"]) == ("drive", "pause")

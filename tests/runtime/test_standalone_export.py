@@ -9,7 +9,15 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 from program_builder import block, number, rockly_document, stack
-from standalone_tools import end, environment, events, export_standalone, run_file, start_file, wait_for_event
+from standalone_tools import (
+    end,
+    events,
+    export_standalone,
+    exported_program,
+    run_file,
+    start_file,
+    wait_for_event,
+)
 
 from rockly_desktop.runtime.standalone_file import data_literal, text_literal
 
@@ -24,11 +32,7 @@ def drive_and_tell():
 @pytest.fixture(scope="module")
 def exported(tmp_path_factory):
     """The drive-and-tell program exported with no teacher's limits (a folder of its own for the settings)."""
-    folder = tmp_path_factory.mktemp("standalone")
-    source = folder / "drive.rockly"
-    source.write_text(rockly_document([drive_and_tell()]))
-    env = environment(XDG_CONFIG_HOME=str(folder / "config"), XDG_DATA_HOME=str(folder / "data"))
-    return export_standalone(source, folder / "drive.py", "--language", "en", env=env)
+    return exported_program(tmp_path_factory.mktemp("standalone"), drive_and_tell())[0]
 
 
 def test_the_export_runs_on_the_simulator_and_moves_the_robot(exported):

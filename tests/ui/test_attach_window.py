@@ -7,10 +7,10 @@ import socket
 import pytest
 from agent_tools import AgentProcess
 from page_tools import call_page
-from program_builder import block, number, rockly_document, stack, workspace
+from program_builder import block, number, stack, workspace
 from PySide6.QtCore import QTimer
 from screenshots import screenshot
-from standalone_tools import environment, export_standalone
+from standalone_tools import exported_program
 from test_running import highlighted
 from waiting import eventually
 
@@ -29,11 +29,8 @@ def greet_and_drive(last="done"):
 @pytest.fixture(scope="module")
 def exported(tmp_path_factory):
     """The program's standalone export (as ``rockly export --standalone`` writes it) and its ``.rockly`` text."""
-    folder = tmp_path_factory.mktemp("attach-program")
-    source = folder / "drive.rockly"
-    source.write_text(rockly_document([greet_and_drive()]))
-    env = environment(XDG_CONFIG_HOME=str(folder / "config"), XDG_DATA_HOME=str(folder / "data"))
-    return export_standalone(source, folder / "drive.py", "--language", "en", env=env).read_text(), source.read_text()
+    standalone, source = exported_program(tmp_path_factory.mktemp("attach-program"), greet_and_drive())
+    return standalone.read_text(), source.read_text()
 
 
 @pytest.fixture

@@ -9,9 +9,9 @@ import time
 
 import pytest
 from agent_tools import REPO, AgentProcess
-from program_builder import block, number, rockly_document
-from ros_helpers import RocklyProcess, RosMaster, ros_environment
-from standalone_tools import export_standalone
+from ros_helpers import hobbit_on_own_master, ros_environment
+from standalone_tools import exported_program
+from test_standalone_on_ros import far_drive
 from waiting import eventually
 from wire_recorder import WireRecorder
 
@@ -25,12 +25,8 @@ def robot(tmp_path_factory):
     """``(master, the far-drive program exported, wire recorder)``: HOBBIT simulated on ROS, driving 50 m takes
     long enough for every case here."""
     folder = tmp_path_factory.mktemp("agent-ros")
-    source = folder / "far.rockly"
-    source.write_text(rockly_document([block("hobbit_move", {"direction": "+"}, {"speed": number(50)}, id="far")]))
-    exported = export_standalone(source, folder / "far.py", "--language", "en")
-    master = RosMaster(folder / "ros").start()
-    simulator = RocklyProcess(["sim", "hobbit", "--ros", "--no-window", "--master", master.uri], master,
-                              ready_line="on ROS")
+    exported, _source = exported_program(folder, far_drive(), "far")
+    master, simulator = hobbit_on_own_master(folder)
     wire = WireRecorder(master, ["/cmd_vel"])
     yield master, exported, wire
     wire.stop()

@@ -3,9 +3,9 @@ ending it) sends the robot's safe stop, seen on the wire by an independent rospy
 import signal
 import struct
 
-from program_builder import block, number, rockly_document
-from ros_helpers import RocklyProcess, RosMaster, messages_received, ros_environment
-from standalone_tools import end, events, export_standalone, start_file, wait_for_event
+from program_builder import block, number
+from ros_helpers import hobbit_on_own_master, messages_received, ros_environment
+from standalone_tools import end, events, exported_program, start_file, wait_for_event
 from waiting import eventually
 from wire_recorder import WireRecorder
 
@@ -16,13 +16,14 @@ def string_data(raw: bytes) -> str:
     return raw[4:4 + length].decode()
 
 
+def far_drive():
+    """Drive 50 m: long enough for a stop to come mid-drive."""
+    return block("hobbit_move", {"direction": "+"}, {"speed": number(50)}, id="far")
+
+
 def test_sigterm_mid_drive_sends_the_safe_stop_on_the_wire(tmp_path):
-    source = tmp_path / "far.rockly"
-    source.write_text(rockly_document([block("hobbit_move", {"direction": "+"}, {"speed": number(50)}, id="far")]))
-    exported = export_standalone(source, tmp_path / "far.py", "--language", "en")
-    master = RosMaster(tmp_path / "ros").start()
-    simulator = RocklyProcess(["sim", "hobbit", "--ros", "--no-window", "--master", master.uri], master,
-                              ready_line="on ROS")
+    exported, _source = exported_program(tmp_path, far_drive(), "far")
+    master, simulator = hobbit_on_own_master(tmp_path)
     wire = WireRecorder(master, ["/DiscreteMotionCmd", "/cmd_vel"])
     run = start_file(exported, "--backend", "ros1", "--master", master.uri, "--events", "-",
                      env=ros_environment(master.uri, master.home))

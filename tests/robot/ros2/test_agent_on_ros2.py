@@ -1,14 +1,10 @@
 """The agent on a ROS 2 robot (``rockly agent --backend ros2`` against ``rockly sim turtlebot --ros2``): a STOP
 while the program drives puts the safe stop's zero velocity on the wire, seen by a plain rclpy node."""
-import subprocess
-import sys
 
 from agent_tools import AgentProcess
 from json_line_node import JsonLineNode
-from program_builder import block, number, rockly_document
 from ros2_fixtures import ROS2_PYTHON
-from standalone_tools import REPO, export_standalone
-from test_standalone_on_ros2 import RECORDER
+from test_standalone_on_ros2 import RECORDER, long_drive_exported, turtlebot_sim_on_ros2
 from waiting import eventually
 
 from rockly_desktop.runtime.agent.client import AgentClient
@@ -17,18 +13,12 @@ ZERO = {"linear": [0.0, 0.0, 0.0], "angular": [0.0, 0.0, 0.0]}
 
 
 def test_a_stop_from_a_client_puts_the_zero_velocity_on_the_wire(tmp_path, ros2_settings):
-    source = tmp_path / "long.rockly"
-    source.write_text(rockly_document([block("turtlebot_drive_for", inputs={"speed": number(0.1),
-                                                                            "seconds": number(120)}, id="long")],
-                                      profile="turtlebot"))
-    exported = export_standalone(source, tmp_path / "long.py", "--language", "en")
+    exported, source = long_drive_exported(tmp_path)
     on_the_domain = ["--domain", str(ros2_settings.domain_id), "--discovery", "localhost"]
-    simulator = subprocess.Popen([sys.executable, "-m", "rockly_desktop", "sim", "turtlebot", "--ros2", "--no-window",
-                                  *on_the_domain], cwd=REPO, text=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    simulator = turtlebot_sim_on_ros2(on_the_domain)
     wire = agent = client = None
     events = []
     try:
-        assert any("is up on ROS" in line for line in simulator.stdout), simulator.stderr.read()
         wire = JsonLineNode([ROS2_PYTHON, "-c", RECORDER], ros2_settings.environment(), "the wire recorder")
         agent = AgentProcess(tmp_path / "library", *on_the_domain, backend="ros2")
         client = AgentClient("127.0.0.1", agent.port, on_event=events.append)

@@ -5,9 +5,9 @@ import subprocess
 import sys
 
 from json_line_node import JsonLineNode
-from program_builder import block, number, rockly_document
+from program_builder import block, number
 from ros2_fixtures import ROS2_PYTHON
-from standalone_tools import REPO, end, events, export_standalone, start_file, wait_for_event
+from standalone_tools import REPO, end, events, exported_program, start_file, wait_for_event
 from waiting import eventually
 
 RECORDER = r'''
@@ -25,18 +25,29 @@ sys.stdin.read()
 '''
 
 
-def test_sigterm_mid_drive_sends_the_safe_stop_on_the_wire(tmp_path, ros2_settings):
-    source = tmp_path / "long.rockly"
-    source.write_text(rockly_document([block("turtlebot_drive_for", inputs={"speed": number(0.1),
-                                                                            "seconds": number(120)}, id="long")],
-                                      profile="turtlebot"))
-    exported = export_standalone(source, tmp_path / "long.py", "--language", "en")
-    on_the_domain = ["--domain", str(ros2_settings.domain_id), "--discovery", "localhost"]
+def long_drive_exported(folder):
+    """``(standalone .py, .rockly)`` of a TurtleBot program that drives at 0.1 m/s for 120 s."""
+    return exported_program(folder, block("turtlebot_drive_for", inputs={"speed": number(0.1), "seconds": number(120)},
+                                          id="long"), "long", profile="turtlebot")
+
+
+def turtlebot_sim_on_ros2(on_the_domain) -> subprocess.Popen:
+    """``rockly sim turtlebot --ros2`` with the options ``on_the_domain``, once up; the caller ends it."""
     simulator = subprocess.Popen([sys.executable, "-m", "rockly_desktop", "sim", "turtlebot", "--ros2", "--no-window",
                                   *on_the_domain], cwd=REPO, text=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    if not any("is up on ROS" in line for line in simulator.stdout):
+        simulator.kill()
+        simulator.wait(30)
+        raise AssertionError(f"the simulator did not start: {simulator.stderr.read()}")
+    return simulator
+
+
+def test_sigterm_mid_drive_sends_the_safe_stop_on_the_wire(tmp_path, ros2_settings):
+    exported, _source = long_drive_exported(tmp_path)
+    on_the_domain = ["--domain", str(ros2_settings.domain_id), "--discovery", "localhost"]
+    simulator = turtlebot_sim_on_ros2(on_the_domain)
     wire = run = None
     try:
-        assert any("is up on ROS" in line for line in simulator.stdout), simulator.stderr.read()
         wire = JsonLineNode([ROS2_PYTHON, "-c", RECORDER], ros2_settings.environment(), "the wire recorder")
         run = start_file(exported, "--backend", "ros2", *on_the_domain, "--events", "-")
         seen = []
