@@ -1,10 +1,11 @@
-"""A profile's simulator served on a ROS middleware (``rockly sim PROFILE --ros`` or ``--ros2``): how it ends."""
+"""A profile's simulator served on a ROS middleware (``rockly sim PROFILE --ros`` or ``--ros2``): how it is
+put back and how it ends."""
 import logging
 
 log = logging.getLogger(__name__)
 
 # The service (std_srvs/Trigger) that puts the served simulator back as it started, in the simulator's
-# own namespace: no real robot serves it (HOBBIT's interface has nothing under /rockly_sim).
+# own namespace, where no real robot's interface has a name.
 PUT_BACK_SERVICE = "/rockly_sim/reset"
 
 
