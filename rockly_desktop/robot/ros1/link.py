@@ -70,6 +70,26 @@ class RosRobot(link_parts.ReadsFollowedGraph):
         """Start filling ``state`` from every topic of the graph (for the panels); idempotent."""
         return self._following.follow()
 
+    def interface_definition(self, kind: str, name: str, type_name: str):
+        """The definition of ``type_name`` of the topic, service or action ``name`` (``kind``) as the robot
+        says it (a ``live_definitions.LearntDefinition``), for a type no package here defines; runs of this
+        link then publish and hear its messages. Waits (≤ 2 s per topic asked): never on the window's thread.
+        Raises DefinitionNotLearnt saying why and what to do."""
+        from rockly_desktop.core.errors import RobotCommandError
+        from rockly_desktop.robot.ros1 import live_definitions
+
+        master = self.connection.master_uri
+        if kind == "service":
+            return live_definitions.service_definition(type_name)
+        if kind == "action":
+            return live_definitions.action_definition(master, name, type_name)
+        learnt = live_definitions.topic_definition(master, "/" + name.strip("/"))
+        try:
+            self.graph.types.message_class(learnt.type_name)
+        except RobotCommandError:
+            self.graph.types.learn(learnt.type_name, learnt.full_text)
+        return learnt
+
     def backend(self, interrupt: Interrupt):
         """A backend whose waits end when ``interrupt`` is stopped or the master is lost."""
         from rockly_desktop.robot.ros1.backend import Ros1Backend
