@@ -1,24 +1,30 @@
-"""The block maker on a live ROS 1 graph whose types Rockly has no definition for (issue 22's first open
-point): a plain rospy node's topic shows its fields, learnt from the wire off the window's thread (nested
+"""The block maker on a live graph whose types Rockly has no definition for (issue 22's first open point).
+ROS 1: a plain rospy node's topic shows its fields, learnt from the wire off the window's thread (nested
 ones by path), a sensor block made from it reads the node and a command block publishes what an
-independent subscriber receives; a service whose definition cannot be learnt says why and what to do."""
+independent subscriber receives; a service whose definition cannot be learnt says why and what to do.
+ROS 2: a plain rclpy node's topic, its type described by the node, becomes a block the node hears."""
 import importlib.util
 import sys
 from pathlib import Path
 
 import pytest
 from json_line_node import JsonLineNode
-from program_builder import block, stack, text
+from program_builder import block, number, stack, text
 from ros_helpers import ros_environment
+from ros2_fixtures import TEST_ROBOT_PYTHON
 from test_block_maker import made_and_run, open_maker
+from test_ros2_window import connected
 from waiting import eventually
 from wire_recorder import WireRecorder
 
+from rockly_desktop.core import ros_definitions
 from rockly_desktop.robot.links import link_kind
+from rockly_desktop.robot.ros2 import live_definitions
 from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
 
 GADGET_NODE = Path(__file__).parents[1] / "robot" / "ros1" / "ros1_gadget_node.py"
 GADGET = "rockly_test_custom/Gadget"
+NESTED_NODE = Path(__file__).parents[1] / "robot" / "ros2" / "ros2_nested_node.py"
 
 
 @pytest.fixture
@@ -103,3 +109,26 @@ def test_on_ros_1_a_service_whose_definition_cannot_be_learnt_says_why_and_what_
     assert not maker.fields_note.isHidden() and maker.fields.rowCount() == 0
     assert "rockly_test_custom/Blink" in maker.fields_note.text() and "messages folder" in maker.fields_note.text()
     assert not maker.save_button.isEnabled()
+
+
+def test_on_ros_2_a_topic_of_a_type_rockly_has_no_file_for_shows_its_fields_and_its_block_publishes(
+        qtbot, window, ros2_settings, monkeypatch):
+    monkeypatch.setattr(live_definitions, "ros2_definition_dirs", lambda: [])  # only the robot can say
+    monkeypatch.setattr(ros_definitions, "_LEARNT", {})
+    node = JsonLineNode([TEST_ROBOT_PYTHON, NESTED_NODE], ros2_settings.environment(), "the nested node")
+    try:
+        ros2_window = connected(window, ros2_settings, monkeypatch)
+        qtbot.waitUntil(lambda: "/nested" in [topic for topic, *_ in ros2_window.robot().graph_topics()],
+                        timeout=20000)
+        maker = open_maker(qtbot, ros2_window)
+        assert maker.choose_named("/nested") and maker.interface_type.text() == "test_msgs/Nested"
+        qtbot.waitUntil(lambda: bool(field_paths(maker)), timeout=15000)  # described by the node
+        assert {"basic_types_value.int32_value", "basic_types_value.bool_value"} <= set(field_paths(maker))
+        maker.fields.set_use("basic_types_value.int32_value", "input", "1")
+        maker.sentence["en"].setText("count %1")
+        maker.block_id.setText("made_nested")
+        made_and_run(qtbot, ros2_window, block("made_nested", inputs={"basic_types_value_int32_value": number(42)}))
+        eventually(lambda: {"int32_value": 42, "float64_value": 0.0} in [line["message"] for line in node.lines],
+                   timeout=10)
+    finally:
+        node.stop()

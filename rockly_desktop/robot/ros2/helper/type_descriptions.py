@@ -10,6 +10,7 @@ import threading
 import time
 
 DESCRIPTION_SERVICE = "get_type_description"
+ASK_AGAIN_SECONDS = 0.5
 
 
 def _short(type_name: str) -> str:
@@ -19,29 +20,38 @@ def _short(type_name: str) -> str:
 
 
 def described_type(node, topic: str, client_for, seconds: float):
-    """``{"type": pkg/Type, "texts": {pkg/Type: .msg text}}`` of ``topic``'s type as the first of its
-    publishers' nodes describes it within ``seconds`` (all of them), or None when none does.
-    ``client_for(service name)`` gives a GetTypeDescription client."""
-    from type_description_interfaces.srv import GetTypeDescription
-
+    """``{"type": pkg/Type, "texts": {pkg/Type: .msg text}}`` of ``topic``'s type as one of its publishers'
+    nodes describes it within ``seconds`` (in all), or None when none does. ``client_for(service name)`` gives
+    a GetTypeDescription client. A publisher not yet discovered, or an answer lost to a server that has not
+    matched a new client yet, is asked again (each ask waits ASK_AGAIN_SECONDS) until the time is up."""
     deadline = time.monotonic() + seconds
     me = (node.get_name(), node.get_namespace())
-    for info in node.get_publishers_info_by_topic(topic):
-        if (info.node_name, info.node_namespace) == me:
-            continue
-        client = client_for(f"{info.node_namespace.rstrip('/')}/{info.node_name}/{DESCRIPTION_SERVICE}")
-        if not client.wait_for_service(timeout_sec=max(0.0, deadline - time.monotonic())):
-            continue
-        done = threading.Event()
-        future = client.call_async(GetTypeDescription.Request(
-            type_name=info.topic_type, type_hash=str(info.topic_type_hash), include_type_sources=True))
-        future.add_done_callback(lambda _future, done=done: done.set())
-        if not done.wait(max(0.0, deadline - time.monotonic())) or future.exception() is not None:
-            client.remove_pending_request(future)
-            continue
-        answer = future.result()
-        texts = {_short(source.type_name): source.raw_file_contents for source in answer.type_sources
-                 if source.encoding == "msg"}
-        if answer.successful and _short(info.topic_type) in texts:
-            return {"type": _short(info.topic_type), "texts": texts}
+    while time.monotonic() < deadline:
+        for info in node.get_publishers_info_by_topic(topic):
+            if (info.node_name, info.node_namespace) != me:
+                service = f"{info.node_namespace.rstrip('/')}/{info.node_name}/{DESCRIPTION_SERVICE}"
+                described = _ask(client_for(service), info, min(ASK_AGAIN_SECONDS, deadline - time.monotonic()))
+                if described is not None:
+                    return described
+        time.sleep(min(0.1, max(0.0, deadline - time.monotonic())))
     return None
+
+
+def _ask(client, info, seconds: float):
+    """What ``client``'s server says of ``info``'s type (as ``described_type``) within ``seconds``, or None."""
+    from type_description_interfaces.srv import GetTypeDescription
+
+    if seconds <= 0 or not client.wait_for_service(timeout_sec=seconds):
+        return None
+    done = threading.Event()
+    future = client.call_async(GetTypeDescription.Request(
+        type_name=info.topic_type, type_hash=str(info.topic_type_hash), include_type_sources=True))
+    future.add_done_callback(lambda _future: done.set())
+    if not done.wait(seconds) or future.exception() is not None:
+        client.remove_pending_request(future)
+        return None
+    answer = future.result()
+    texts = {_short(source.type_name): source.raw_file_contents for source in answer.type_sources
+             if source.encoding == "msg"}
+    return {"type": _short(info.topic_type), "texts": texts} if answer.successful and _short(info.topic_type) in texts \
+        else None
