@@ -10,8 +10,8 @@ from pathlib import Path
 import pytest
 from json_line_node import JsonLineNode
 from program_builder import block, number, stack, text
-from ros_helpers import ros_environment
 from ros2_fixtures import TEST_ROBOT_PYTHON
+from ros_helpers import ros_environment
 from test_block_maker import made_and_run, open_maker
 from test_ros2_window import connected
 from waiting import eventually
