@@ -71,23 +71,19 @@ class RosRobot(link_parts.ReadsFollowedGraph):
         return self._following.follow()
 
     def interface_definition(self, kind: str, name: str, type_name: str):
-        """The definition of ``type_name`` of the topic, service or action ``name`` (``kind``) as the robot
-        says it (a ``live_definitions.LearntDefinition``), for a type no package here defines; runs of this
-        link then publish and hear its messages. Waits (≤ 2 s per topic asked): never on the window's thread.
-        Raises DefinitionNotLearnt saying why and what to do."""
+        """The definition of the type of the topic, service or action ``name`` (``robot.link``): a topic's as its
+        publisher says it (``live_definitions``), else from its installed package; a topic's type no package
+        here defines is learnt by this link's runs too, so they publish and hear it."""
         from rockly_desktop.core.errors import RobotCommandError
         from rockly_desktop.robot.ros1 import live_definitions
 
-        master = self.connection.master_uri
-        if kind == "service":
-            return live_definitions.service_definition(type_name)
-        if kind == "action":
-            return live_definitions.action_definition(master, name, type_name)
-        learnt = live_definitions.topic_definition(master, "/" + name.strip("/"))
-        try:
-            self.graph.types.message_class(learnt.type_name)
-        except RobotCommandError:
-            self.graph.types.learn(learnt.type_name, learnt.full_text)
+        learnt = live_definitions.interface_definition(self.connection.master_uri, kind, "/" + name.strip("/"),
+                                                       type_name)
+        if kind == "topic":
+            try:
+                self.graph.types.message_class(learnt.type_name)
+            except RobotCommandError:
+                self.graph.types.learn(learnt.type_name, learnt.full_text)
         return learnt
 
     def backend(self, interrupt: Interrupt):

@@ -3,12 +3,12 @@
 A topic's publisher says its type's whole definition when a subscriber connects: the TCPROS
 connection header carries ``message_definition`` (the type's text and every nested type's) beside
 ``type`` and ``md5sum``. ``topic_definition`` connects as rostopic would, reads that header and
-hangs up, each step bounded in time. An action is topics: its goal's definition comes from a
-publisher of its ``goal`` topic (a client), its result's from the server's ``result`` topic.
+hangs up, each step bounded in time.
 
 A service's server says only its type and md5sum (rospy's and roscpp's probe answer has no
-definition), so a service's definition comes from this computer: the type's installed Python
-package, as ``roslib`` finds it.
+definition), and an action server only subscribes to its goals (its result and feedback topics do not
+carry the goal's definition), so their definitions come from this computer: the type's installed
+Python package, as ``roslib`` finds it; so does a topic's that nothing publishes now.
 """
 import io
 import socket
@@ -63,29 +63,46 @@ def topic_definition(master_uri: str, topic: str, timeout: float = ASK_SECONDS) 
     return LearntDefinition(header["type"], "msg", texts.pop(header["type"]), texts, header["message_definition"])
 
 
-def action_definition(master_uri: str, action: str, action_type: str, timeout: float = ASK_SECONDS):
-    """The definition of ``action_type`` (``pkg/NameAction``) from its ``goal`` topic's publisher and its
-    server's ``result`` topic: goal, result and (as far as said) feedback, as an ``.action`` text."""
-    goal = topic_definition(master_uri, action.rstrip("/") + "/goal", timeout)
-    result = topic_definition(master_uri, action.rstrip("/") + "/result", timeout)
-    base = action_type[:-len("Action")] if action_type.endswith("Action") else action_type
-    nested = {**goal.nested, **result.nested}
-    text = "\n---\n".join(nested.pop(f"{base}{part}", "") for part in ("Goal", "Result", "Feedback"))
-    return LearntDefinition(action_type, "action", text, nested)
-
-
-def service_definition(type_name: str) -> LearntDefinition:
-    """The definition of the service ``type_name`` from its installed Python package; DefinitionNotLearnt
-    naming why when the package is not installed here (a service's server does not say its definition)."""
+def installed_definition(type_name: str, kind: str):
+    """The LearntDefinition of ``type_name`` (a ``kind``: msg, srv, or action as ``pkg/NameAction``) from its
+    Python package installed on this computer (as ``roslib`` finds it), or None when it is not installed."""
     import roslib.message
 
+    base = type_name[:-len("Action")] if kind == "action" and type_name.endswith("Action") else type_name
     try:
-        service_class = roslib.message.get_service_class(type_name, reload_on_error=True)
-    except (ImportError, ValueError, AttributeError, TypeError):
-        service_class = None
-    if service_class is None:
-        raise DefinitionNotLearnt(app_local_text("maker_learn_service_unknown", type=type_name))
-    request = split_full_text(type_name + "Request", service_class._request_class._full_text)
-    response = split_full_text(type_name + "Response", service_class._response_class._full_text)
-    text = request.pop(type_name + "Request") + "\n---\n" + response.pop(type_name + "Response")
-    return LearntDefinition(type_name, "srv", text, {**request, **response})
+        if kind == "srv":
+            service = roslib.message.get_service_class(type_name, reload_on_error=True)
+            parts = service and [(type_name + "Request", service._request_class),
+                                 (type_name + "Response", service._response_class)]
+        else:
+            parts = [(base + part, roslib.message.get_message_class(base + part, reload_on_error=True))
+                     for part in (("Goal", "Result", "Feedback") if kind == "action" else ("",))]
+    except (ImportError, ValueError, AttributeError, TypeError):  # roslib's ways of not finding it
+        return None
+    if not parts or any(found is None for _name, found in parts):
+        return None
+    texts, nested = [], {}
+    for name, found in parts:
+        said = split_full_text(name, found._full_text)
+        texts.append(said.pop(name))
+        nested.update(said)
+    return LearntDefinition(type_name, kind, "\n---\n".join(texts), nested, parts[0][1]._full_text)
+
+
+def interface_definition(master_uri: str, kind: str, name: str, type_name: str, timeout: float = ASK_SECONDS):
+    """The LearntDefinition of ``type_name``, the type of the topic, service or action ``name`` (``kind``):
+    a topic's from its publisher (``topic_definition``), else, and a service's or an action's always (their
+    servers do not say it), from its installed package; DefinitionNotLearnt saying why and what to do."""
+    if kind == "topic":
+        try:
+            return topic_definition(master_uri, name, timeout)
+        except DefinitionNotLearnt:
+            installed = installed_definition(type_name, "msg")
+            if installed is None:
+                raise
+            return installed
+    definition = {"service": "srv", "action": "action"}[kind]
+    installed = installed_definition(type_name, definition)
+    if installed is None:
+        raise DefinitionNotLearnt(app_local_text(f"maker_learn_{kind}_unknown", type=type_name))
+    return installed

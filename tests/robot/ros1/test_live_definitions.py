@@ -74,14 +74,17 @@ def test_a_block_of_that_type_publishes_it_and_an_independent_subscriber_receive
         recorder.stop()
 
 
-def test_a_topic_nobody_publishes_says_so(robot):
+def test_a_topic_nobody_publishes_says_so_unless_its_package_is_installed_here(robot):
     with pytest.raises(DefinitionNotLearnt) as said:
         robot.interface_definition("topic", "/nobody/publishes", "rockly_test_custom/Nothing")
     assert "Nothing publishes /nobody/publishes" in str(said.value)
     assert "Gerade sendet niemand auf /nobody/publishes" in said.value.in_language("de")
+    installed = robot.interface_definition("topic", "/nobody/publishes", "geometry_msgs/PoseStamped")
+    assert "Pose pose" in installed.text and "geometry_msgs/Quaternion" in installed.nested
 
 
-def test_a_services_definition_is_not_on_the_wire_and_one_not_installed_here_says_what_to_do(robot, gadget):
+def test_a_services_or_actions_definition_is_not_on_the_wire_and_one_not_installed_here_says_what_to_do(
+        robot, gadget):
     eventually(lambda: ("/gadget/blink", "rockly_test_custom/Blink") in live_types(robot), timeout=20)
     with pytest.raises(DefinitionNotLearnt) as said:
         robot.interface_definition("service", "/gadget/blink", "rockly_test_custom/Blink")
@@ -89,6 +92,12 @@ def test_a_services_definition_is_not_on_the_wire_and_one_not_installed_here_say
     installed = robot.interface_definition("service", "/any/switch", "std_srvs/SetBool")
     request, response = installed.text.split("\n---\n")  # from its installed Python package
     assert "bool data" in request and "string message" in response and "bool success" in response
+    with pytest.raises(DefinitionNotLearnt) as said:  # an action server only subscribes to its goals
+        robot.interface_definition("action", "/gadget/wave", "rockly_test_custom/WaveAction")
+    assert "An action's server does not say its goal's fields" in str(said.value)
+    installed = robot.interface_definition("action", "/move_base", "move_base_msgs/MoveBaseAction")
+    goal, result, feedback = installed.text.split("\n---\n")
+    assert "geometry_msgs/PoseStamped target_pose" in goal and "base_position" in feedback
 
 
 def live_types(robot):
