@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 from json_line_node import JsonLineNode
 from program_builder import block, number, stack, text
+from PySide6.QtCore import Qt
 from ros2_fixtures import TEST_ROBOT_PYTHON
 from ros_helpers import ros_environment
 from test_block_maker import made_and_run, open_maker
@@ -67,7 +68,9 @@ def test_on_ros_1_a_topic_of_a_type_rockly_has_no_definition_for_shows_its_field
     maker = open_maker(qtbot, ros_window)
     assert maker.choose_named("/gadget/state")
     assert maker.interface_type.text() == GADGET and maker.kind.currentData() == "publish"
-    qtbot.waitUntil(lambda: bool(field_paths(maker)), timeout=10000)  # asked of the node's publisher
+    # asked off the window's thread: the answer can only come through the event loop, after choosing returned
+    assert maker.fields_note.text() == f"Asking the robot for the fields of {GADGET}…" and not field_paths(maker)
+    qtbot.waitUntil(lambda: bool(field_paths(maker)), timeout=10000)  # the node's publisher said them
     assert field_paths(maker) == ["header.stamp", "header.frame_id", "name", "left_eye.brightness", "left_eye.open",
                                   "levels"]
     assert maker.fields_note.isHidden()
@@ -132,3 +135,17 @@ def test_on_ros_2_a_topic_of_a_type_rockly_has_no_file_for_shows_its_fields_and_
                    timeout=10)
     finally:
         node.stop()
+
+
+def test_on_ros_1_a_maker_closed_while_it_asks_drops_the_answer(qtbot, ros_window, gadget, monkeypatch):
+    monkeypatch.setattr(ros_definitions, "_LEARNT", {})
+    qtbot.waitUntil(lambda: "/gadget/state" in [topic for topic, *_ in ros_window.robot().graph_topics()],
+                    timeout=15000)
+    maker = open_maker(qtbot, ros_window)
+    learning = maker.learning
+    assert maker.choose_named("/gadget/state")
+    assert learning.asking(maker.offers.currentItem().data(Qt.ItemDataRole.UserRole))
+    maker.close()
+    learning.wait(10)
+    qtbot.waitUntil(lambda: not learning.busy, timeout=10000)  # delivered on the window's thread: dropped
+    assert not ros_definitions._LEARNT

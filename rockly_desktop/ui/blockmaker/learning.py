@@ -49,6 +49,11 @@ class FieldLearning(QObject):
         """True when there is a robot to ask."""
         return self._asker is not None and self._asker() is not None
 
+    @property
+    def busy(self) -> bool:
+        """True while an answer is still to be delivered (or dropped) on the window's thread."""
+        return bool(self._messengers)
+
     def asking(self, offer) -> bool:
         """True while ``offer``'s definition is on its way."""
         return offer in self._asking
