@@ -96,3 +96,8 @@ class ProgramStopped(RocklyError):
 
 class RobotConnectionLost(RobotCommandError):
     """The robot (its ROS master or a node it needs) stopped answering."""
+
+
+class DefinitionNotLearnt(RobotCommandError):
+    """The definition of a type the robot offers could not be learnt from it: the message says why and
+    what to do (the block maker shows it in place of the type's fields)."""

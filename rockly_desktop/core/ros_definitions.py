@@ -18,12 +18,17 @@ which a new block shows. Constants (``X=1``) are no fields, on either ROS.
 
 ``check`` holds a program's message dict against its type before it is sent, so a wrong
 value gets the same clear message on the simulator as on a real robot.
+
+A type the robot offers but no file defines can be taught (``learn_definition``) with the text the
+robot said: ROS 1's ``message_definition`` (the type's text and each nested one's, see
+``split_full_text``). What is learnt holds for every catalogue of this process (a type's name means
+one type on a robot's graph), after the files: a file's definition wins.
 """
 import ast
 import os
 import re
 from collections.abc import Mapping
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 from pathlib import Path
 
@@ -114,6 +119,47 @@ def _literal(text):
         return text
 
 
+@dataclass(frozen=True)
+class LearntDefinition:
+    """A type's definition as the robot said it: ``type_name`` (``pkg/Type``; an action ``pkg/NameAction``),
+    its ``kind`` (msg, srv, action), its own ``text`` and the types nested in it (``{pkg/Type: text}``);
+    a message's ``full_text`` as its publisher sent it."""
+
+    type_name: str
+    kind: str
+    text: str
+    nested: dict = field(default_factory=dict)
+    full_text: str = ""
+
+
+_LEARNT = {}  # (package, name, kind) -> a definition a robot said, for types no file defines
+
+
+def learn_definition(type_name: str, kind: str, text: str, nested=None) -> None:
+    """Know ``type_name`` (a ``kind``: msg, srv or action; an action named ``pkg/NameAction`` or
+    ``pkg/Name``) by its definition ``text`` and the messages nested in it (``nested``: ``{pkg/Type: text}``),
+    as a robot said them, in every catalogue of this process."""
+    for full, definition, its_kind in [*((name, body, "msg") for name, body in (nested or {}).items()),
+                                       (type_name, text, kind)]:
+        package, _, name = full.partition("/")
+        if its_kind == "action" and name.endswith("Action"):
+            name = name[:-len("Action")]
+        _LEARNT[(package, name, its_kind)] = definition
+
+
+_NESTED_MARK = re.compile(r"^={10,}\s*\nMSG:\s*(\S+)\s*$", re.MULTILINE)
+
+
+def split_full_text(type_name: str, text: str) -> dict:
+    """``{type: its definition}`` of ``type_name`` and each type nested in it, from a definition's full
+    text as ROS 1 sends it (``message_definition``: the type's own, then each nested type's after a line
+    of ``=`` and ``MSG: package/Type``)."""
+    parts = _NESTED_MARK.split(text)
+    found = {type_name: parts[0]}
+    found.update(zip(parts[1::2], parts[2::2]))
+    return found
+
+
 def _sections(text: str) -> list:
     return re.split(r"^---\s*$", text, flags=re.MULTILINE)
 
@@ -146,7 +192,7 @@ class DefinitionCatalog:
             directory = self._package_dir(package)
             path = directory / kind / f"{name}.{kind}" if directory else None
             self._files[key] = path.read_text(encoding="utf-8", errors="replace") if path and path.is_file() else None
-        return self._files[key]
+        return self._files[key] if self._files[key] is not None else _LEARNT.get(key)
 
     def _types(self, kind: str) -> list:
         names = []
@@ -173,6 +219,26 @@ class DefinitionCatalog:
             return None
         sections = _sections(text)
         return (package, _declarations(sections[section])) if section < len(sections) else (package, [])
+
+    def said(self, type_name: str, kind: str = "msg"):
+        """``type_name``'s definition as ``learn_definition`` takes it, ``(text, {nested pkg/Type: text})``
+        (every message type it uses, however deep), or None when it is not found."""
+        package, _, name = str(type_name).partition("/")
+        if kind == "action" and name.endswith("Action"):
+            name = name[:-len("Action")]
+        text = self._definition(package, name, kind)
+        if text is None:
+            return None
+        nested = {}
+        pending = [(declaration, package) for section in _sections(text) for declaration in _declarations(section)]
+        while pending:
+            declaration, owner = pending.pop()
+            resolved = None if declaration.ros_type in _CHECKS else self._resolve(declaration.ros_type, owner)
+            if resolved is not None and resolved[0] not in nested:
+                full, declarations = resolved
+                nested[full] = self._definition(*full.split("/", 1), "msg")
+                pending += [(inner, full.split("/")[0]) for inner in declarations]
+        return text, nested
 
     def knows(self, type_name: str, kind: str = "msg") -> bool:
         """True when the definition of ``type_name`` (a ``kind``: msg, srv or action) is found."""

@@ -93,6 +93,12 @@ class RobotLink(Protocol):
         """The names of the robot's parameters as ``ros.get_param`` takes them (ROS 1: the parameter
         server's; ROS 2: ``node:param``); never waits, as ``graph_services``."""
 
+    def interface_definition(self, kind: str, name: str, type_name: str):
+        """The definition (a ``core.ros_definitions.LearntDefinition``) of ``type_name``, the type of the
+        topic, service or action ``name`` (``kind``), as the robot says it, for a type Rockly has no file
+        for. Waits on the robot, bounded in time: never on the window's thread. Raises DefinitionNotLearnt
+        saying why (and what to do) when the robot does not say it."""
+
     def own_publishers(self) -> dict:
         """{topic: how many publishers Rockly itself has on it} (not in ``graph_topics``' counts), so the
         Topic monitor counts them too."""

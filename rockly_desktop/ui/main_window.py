@@ -460,7 +460,13 @@ class MainWindow(QMainWindow):
                 return LiveGraph.of(self.robot()) if self._robot_shown else LiveGraph()
             except RocklyError:  # no robot to ask: the maker offers what the profile declares and knows
                 return LiveGraph()
-        self.block_maker = open_block_maker(self.profile, self.language, graph, self, chosen)
+
+        def asker():  # the robot's now, asked of the live offers whose types Rockly has no definition for
+            try:
+                return self.robot().interface_definition if self._robot_shown else None
+            except RocklyError:
+                return None
+        self.block_maker = open_block_maker(self.profile, self.language, graph, self, chosen, asker)
         self.block_maker.sig_saved.connect(lambda _block_id: self.reload_packs())
         self.block_maker.sig_try_requested.connect(lambda page: self.runs.run(page=page))
 

@@ -10,10 +10,11 @@ import time
 import xmlrpc.client
 
 from rockly_desktop.core.app_texts import app_local_text
-from rockly_desktop.core.errors import RobotCommandError, RobotConnectionLost, RobotTimeout
+from rockly_desktop.core.errors import DefinitionNotLearnt, RobotCommandError, RobotConnectionLost, RobotTimeout
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
 from rockly_desktop.robot.next_message import next_message
 from rockly_desktop.robot.ros1.connection import ask_master
+from rockly_desktop.robot.ros1.live_definitions import topic_definition
 from rockly_desktop.robot.ros1.liveness import LOOK_SECONDS, Dependencies, NodeLiveness
 from rockly_desktop.robot.ros1.message_values import from_message, to_message
 from rockly_desktop.robot.ros1.service_calls import ServiceCaller
@@ -50,13 +51,29 @@ class RosGraph:
         self.service_calls = ServiceCaller()
         self.liveness = NodeLiveness(connection.master_uri, rospy.get_name())
 
+    def message_class(self, topic, msg_type):
+        """The class of ``msg_type``; a type no package here defines is learnt from a publisher of
+        ``topic`` (its connection header says the definition), else RobotCommandError as before."""
+        try:
+            return self.types.message_class(msg_type)
+        except RobotCommandError as unknown:
+            try:
+                learnt = topic_definition(self.connection.master_uri, self._rospy.resolve_name(topic))
+            except DefinitionNotLearnt:
+                raise unknown from None
+            if learnt.type_name != msg_type:
+                raise unknown from None
+            self.types.learn(msg_type, learnt.full_text)
+            return self.types.message_class(msg_type)
+
     def publisher(self, topic, msg_type):
         """The shared publisher of ``topic``, and whether this is its first publish."""
+        message_class = self.message_class(topic, msg_type) if topic not in self._publishers else None
         with self._lock:
             publisher = self._publishers.get(topic)
             if publisher is None:
                 publisher = self._publishers[topic] = self._rospy.Publisher(
-                    topic, self.types.message_class(msg_type), queue_size=10)
+                    topic, message_class or self.types.message_class(msg_type), queue_size=10)
             first = topic not in self._published
             self._published.add(topic)
             return publisher, first
@@ -69,10 +86,12 @@ class RosGraph:
 
     def topic(self, topic, msg_type):
         """The shared subscription to ``topic``: latest message and callbacks."""
+        message_class = self.message_class(topic, msg_type) if topic not in self._topics else None
         with self._lock:
             entry = self._topics.get(topic)
             if entry is None:
-                entry = self._topics[topic] = _Topic(self._rospy, topic, self.types.message_class(msg_type))
+                entry = self._topics[topic] = _Topic(self._rospy, topic, message_class or self.types.message_class(
+                    msg_type))
             return entry
 
     def service(self, name, srv_type):

@@ -70,6 +70,22 @@ class RosRobot(link_parts.ReadsFollowedGraph):
         """Start filling ``state`` from every topic of the graph (for the panels); idempotent."""
         return self._following.follow()
 
+    def interface_definition(self, kind: str, name: str, type_name: str):
+        """The definition of the type of the topic, service or action ``name`` (``robot.link``): a topic's as its
+        publisher says it (``live_definitions``), else from its installed package; a topic's type no package
+        here defines is learnt by this link's runs too, so they publish and hear it."""
+        from rockly_desktop.core.errors import RobotCommandError
+        from rockly_desktop.robot.ros1 import live_definitions
+
+        learnt = live_definitions.interface_definition(self.connection.master_uri, kind, "/" + name.strip("/"),
+                                                       type_name)
+        if kind == "topic":
+            try:
+                self.graph.types.message_class(learnt.type_name)
+            except RobotCommandError:
+                self.graph.types.learn(learnt.type_name, learnt.full_text)
+        return learnt
+
     def backend(self, interrupt: Interrupt):
         """A backend whose waits end when ``interrupt`` is stopped or the master is lost."""
         from rockly_desktop.robot.ros1.backend import Ros1Backend

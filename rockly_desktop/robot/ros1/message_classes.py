@@ -9,7 +9,9 @@ package is taken whole from the first of these places that has it:
    for each folder on ``ROS_PACKAGE_PATH`` and ``/usr/share`` (Debian's ros-nav-msgs puts
    ``nav_msgs`` there);
 3. the definitions robot profiles ship as data, ``<folder>/<pkg>/msg/*.msg``,
-   ``srv/*.srv``, ``action/*.action``, folders in the order given.
+   ``srv/*.srv``, ``action/*.action``, folders in the order given;
+4. a message type none of these defines but the robot said (``learn``: the full text its
+   publisher sends), made into a class at run time (genpy's dynamic generation, as rosbag does).
 
 Packages found in 2 or 3 are generated into a cache (``message_generation``). The generated
 package is put on ``sys.path`` and imported under its real name: genpy's code imports its
@@ -28,6 +30,7 @@ from collections import namedtuple
 from pathlib import Path
 
 import genpy
+import genpy.dynamic
 
 from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.core.ros_definitions import installed_definition_dirs
@@ -170,6 +173,7 @@ class MessageTypes:
         self._lock = threading.RLock()
         self._packages = {}      # name -> _Package, or None when nowhere
         self._sources = {}       # name -> DefinitionSource or None
+        self._learnt = {}        # type name -> class made from a definition the robot said
         self._generator = PackageGenerator(self.cache_dir, self._find_definitions, self._package)
 
     # -- public API -------------------------------------------------------------------------
@@ -181,6 +185,8 @@ class MessageTypes:
         """
         package, name = self._split(type_name, "message")
         with self._lock:
+            if type_name in self._learnt:
+                return self._learnt[type_name]
             entry = self._resolve(package, type_name, "message")
             cls = getattr(entry.msg, name, None) if entry.msg is not None else None
             if not self._is_message_class(cls) and entry.srv is not None:
@@ -191,6 +197,18 @@ class MessageTypes:
                 raise RobotCommandError(
                     f"Unknown ROS message type '{type_name}': no message {name} in {entry.describe()}.")
             return cls
+
+    def learn(self, type_name: str, full_text: str) -> None:
+        """Know the message ``type_name``, which no package here defines, by the ``full_text`` its
+        publisher said (ROS 1's ``message_definition``); a definition that cannot be read raises
+        MessageDefinitionError."""
+        with self._lock:
+            if type_name not in self._learnt:
+                try:
+                    self._learnt[type_name] = genpy.dynamic.generate_dynamic(type_name, full_text)[type_name]
+                except Exception as error:  # genpy raises several kinds for a bad definition
+                    raise MessageDefinitionError(type_name, f"the robot's definition cannot be read: {error}") \
+                        from error
 
     def service_class(self, type_name: str):
         """The genpy class of a service type, e.g. ``my_robot_msgs/Ask`` (with

@@ -182,7 +182,7 @@ def field_class(owner, type_name):
     package, name = type_name.split("/")
     namespace = getattr(owner.__init__, "__globals__", {})
     msg_module = getattr(namespace.get(package), "msg", None)
-    cls = getattr(msg_module, name, None)
+    cls = getattr(msg_module, name, None) or namespace.get(f"_{package}__{name}")  # genpy.dynamic's name for it
     if not (isinstance(cls, type) and issubclass(cls, genpy.Message)):
         try:
             cls = getattr(importlib.import_module(f"{package}.msg"), name, None)

@@ -186,6 +186,13 @@ class Ros2Robot(link_parts.ReadsFollowedGraph):
         """Start filling ``state`` from every topic of the graph (for the panels); idempotent."""
         return self._following.follow()
 
+    def interface_definition(self, kind: str, name: str, type_name: str):
+        """The definition of the type of the topic, service or action ``name`` (``robot.link``): from Rockly's
+        ROS 2 environment, else (a topic) as its publisher's node describes it (``live_definitions``)."""
+        from rockly_desktop.robot.ros2.live_definitions import interface_definition
+
+        return interface_definition(self.helper, kind, name, type_name)
+
     def backend(self, interrupt: Interrupt):
         """A backend whose waits end when ``interrupt`` is stopped or the helper is gone; made at once,
         it works through the helper of its first command (one being replaced is waited for)."""

@@ -1,5 +1,6 @@
 """The built-in simulator as a robot link (``robot/link.py``): the profile's simulator in this process."""
 from rockly_desktop.core.app_texts import app_local_text
+from rockly_desktop.core.errors import DefinitionNotLearnt
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.robot import link_parts, links
 from rockly_desktop.robot.health import GREEN, HealthItem, server_health, topic_health
@@ -93,6 +94,10 @@ class SimulatedRobot:
     def graph_parameters(self) -> list:
         """The names of the simulated robot's parameters."""
         return sorted(self.world.params.copy())  # a run may set one meanwhile
+
+    def interface_definition(self, kind: str, name: str, type_name: str):
+        """The simulated robot offers only what its profile defines: nothing more to learn."""
+        raise DefinitionNotLearnt(app_local_text("maker_fields_unknown", type=type_name))
 
     def own_publishers(self) -> dict:
         """A program drives the simulated robot directly, with no publishers of its own."""

@@ -1,6 +1,9 @@
 """The block maker's dialog: pick what the robot offers, say what the block does and how it reads,
 see it drawn and its Python, and save it into a block pack (``profiles.packs.making.save_block``).
 
+A live offer of a type Rockly has no definition for gets its fields from the robot
+(``learning.FieldLearning``, off the window's thread), or a plain note why there are none.
+
 Every change rebuilds the MadeBlock, lists its problems (``validation.block_problems``, in the
 window's language) and redraws the preview; saving writes nothing while there is a problem.
 """
@@ -28,11 +31,12 @@ from PySide6.QtWidgets import (
 
 from rockly_desktop.profiles.packs.choices import category_choices
 from rockly_desktop.profiles.packs.generate import python_preview
-from rockly_desktop.profiles.packs.interfaces import fields_of_block_kind, interface_fields
+from rockly_desktop.profiles.packs.interfaces import fields_of_block_kind, interface_fields, knows_type
 from rockly_desktop.profiles.packs.making import save_block
-from rockly_desktop.profiles.packs.spec import COMPARISONS, OUTCOME, BlockInput, MadeBlock
+from rockly_desktop.profiles.packs.spec import COMPARISONS, INTERFACE_KINDS, OUTCOME, BlockInput, MadeBlock
 from rockly_desktop.profiles.packs.validation import BlockMakerError, block_problems, sentence_places
 from rockly_desktop.ui.blockmaker.field_table import FieldTable
+from rockly_desktop.ui.blockmaker.learning import FieldLearning
 from rockly_desktop.ui.blockmaker.offers import KINDS_OF, Offer, known_offers, robot_offers
 from rockly_desktop.ui.blockmaker.preview import BlockPreview
 from rockly_desktop.ui.plain_text import plain_label
@@ -71,13 +75,15 @@ def _same_offer(offer: Offer, other: Offer) -> bool:
 
 class BlockMakerDialog(QDialog):
     """The maker for ``profile`` in ``language``, offering ``offers`` (``offers.Offer``s); ``packs_folder``
-    is where packs are saved (None: the user's). ``sig_saved(block id)`` once a block was written."""
+    is where packs are saved (None: the user's); ``asker()`` gives the robot link's ``interface_definition``
+    that asks the robot for a live offer's definition (None: no robot; see ``learning``).
+    ``sig_saved(block id)`` once a block was written."""
 
     sig_saved = Signal(str)
     sig_try_requested = Signal(object)  # the preview page, whose one block the window runs once ("Try it")
     sig_changed = Signal()  # the block, its problems and its Python were updated (the drawing follows)
 
-    def __init__(self, profile, language: str, offers, parent=None, packs_folder=None):
+    def __init__(self, profile, language: str, offers, parent=None, packs_folder=None, asker=None):
         super().__init__(parent)
         self.setObjectName("block_maker")
         self.setWindowTitle(tr("maker_title", language))
@@ -86,6 +92,12 @@ class BlockMakerDialog(QDialog):
         self.packs_folder = packs_folder
         self.problems = []
         self._updating = False
+        self._offer = None
+        self._not_learnt = {}  # offer -> why the robot did not say its fields (until it is chosen again)
+        self.learning = FieldLearning(profile, asker, self)
+        self.learning.sig_learnt.connect(lambda offer: offer == self._offer and self._kind_changed())
+        self.learning.sig_failed.connect(self._not_learnt_from)
+        self.finished.connect(lambda _result: self.learning.forget())
         self.offers = QListWidget(self)
         self.offers.setObjectName("maker_offers")
         self.offers.setAccessibleName(tr("maker_offers", language))
@@ -135,6 +147,9 @@ class BlockMakerDialog(QDialog):
         self.kind.currentIndexChanged.connect(self._kind_changed)
         self.fields = FieldTable(language, self)
         self.fields.sig_changed.connect(self.update_block)
+        self.fields_note = plain_label(parent=self, objectName="maker_fields_note")
+        self.fields_note.setWordWrap(True)
+        self.fields_note.hide()
         self.read_field = QComboBox(self)
         self.read_field.setObjectName("maker_read_field")
         self.read_field.currentIndexChanged.connect(self.update_block)
@@ -182,6 +197,7 @@ class BlockMakerDialog(QDialog):
         column = QVBoxLayout(right)
         column.setContentsMargins(0, 0, 0, 0)
         column.addLayout(self.form)
+        column.addWidget(self.fields_note)
         column.addWidget(self.fields, 1)
         column.addWidget(self.problem_label)
         shown = QHBoxLayout()
@@ -239,6 +255,8 @@ class BlockMakerDialog(QDialog):
 
     def choose(self, offer: Offer):
         """Make the block from ``offer``: its name, type and the kinds of block it can make."""
+        self._offer = offer
+        self._not_learnt.pop(offer, None)  # chosen again: the robot is asked again
         self._updating = True
         try:
             self.interface.setText(offer.name)
@@ -284,12 +302,36 @@ class BlockMakerDialog(QDialog):
         finally:
             self._updating = False
         self.fields.setVisible(kind in FILLS_FIELDS)
+        self._say_why_no_fields(kind)
         for widget, shown in ((self.read_field, kind in READS_FIELD), (self.comparison, kind == "wait_until"),
                               (self.result, kind in ("call_service", "send_goal")),
                               (self.while_waiting, kind == "send_goal")):
             widget.setVisible(shown)
             self.form.labelForField(widget).setVisible(shown)
         self.update_block()
+
+    def _say_why_no_fields(self, kind: str):
+        """Show why a block of ``kind`` has no fields yet, when Rockly does not know its type: the robot is
+        being asked (asked now if it is not), what it answered, or that the type is unknown; else nothing."""
+        definition, type_name, offer = INTERFACE_KINDS.get(kind), self.interface_type.text().strip(), self._offer
+        note = ""
+        if definition and type_name and not knows_type(self.profile, type_name, definition):
+            live = offer is not None and offer.type == type_name and self.learning.needed(offer)
+            if live and offer in self._not_learnt:
+                note = self._not_learnt[offer].in_language(self.language)
+            elif live and self.learning.can_ask():
+                self.learning.ask(offer)
+                note = tr("maker_fields_asking", self.language, type=type_name)
+            else:
+                note = tr("maker_fields_unknown", self.language, type=type_name)
+        self.fields_note.setText(note)
+        self.fields_note.setVisible(bool(note))
+
+    def _not_learnt_from(self, offer, why):
+        """The robot did not say ``offer``'s fields: say ``why`` (and what to do) while it is chosen."""
+        self._not_learnt[offer] = why
+        if offer == self._offer:
+            self._say_why_no_fields(self.kind.currentData() or "")
 
     def _results(self, kind: str) -> list:
         """What a block of ``kind`` can give: a response field of the service, or the goal's outcome."""
@@ -357,12 +399,12 @@ class BlockMakerDialog(QDialog):
 
 
 
-def open_block_maker(profile, language: str, graph, parent, chosen: str = "") -> BlockMakerDialog:
+def open_block_maker(profile, language: str, graph, parent, chosen: str = "", asker=None) -> BlockMakerDialog:
     """Open the maker (not blocking) over ``parent`` for ``profile``, offering what the robot's live graph
     has (``graph()``: a ``LiveGraph``, read without waiting, again each second) and the profile declares,
-    then the types Rockly knows; with the offer named ``chosen`` chosen."""
+    then the types Rockly knows; with the offer named ``chosen`` chosen. ``asker``: see BlockMakerDialog."""
     known = known_offers(profile)
-    dialog = BlockMakerDialog(profile, language, robot_offers(profile, graph()) + known, parent)
+    dialog = BlockMakerDialog(profile, language, robot_offers(profile, graph()) + known, parent, asker=asker)
     dialog.follow_graph(graph, known)
     dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose)
     if chosen:

@@ -23,7 +23,7 @@ from rclpy.executors import SingleThreadedExecutor
 from rclpy.signals import SignalHandlerOptions
 
 from rockly_desktop.robot.ros2 import wire
-from rockly_desktop.robot.ros2.helper import graph_offers, qos
+from rockly_desktop.robot.ros2.helper import graph_offers, qos, type_descriptions
 from rockly_desktop.robot.ros2.helper.layouts import layout
 from rockly_desktop.robot.ros2.helper.ros_values import (
     BadValue,
@@ -138,7 +138,7 @@ class Helper:
     # --- requests
     # requests that may wait (for a server, a match, an answer) run on the pool, not the reading loop
     WAITING_OPS = {"publish_first", "subscribe", "service", "goal", "cancel_all", "get_param", "set_param",
-                   "parameters"}
+                   "parameters", "type_description"}
 
     def handle(self, frame):
         """Do one request (``op_<name>``): inline, or on the pool when it may wait (a goal to a
@@ -353,6 +353,11 @@ class Helper:
         services = [name for name, _types in self.node.get_service_names_and_types()]
         return graph_offers.parameter_names(
             services, lambda name: self._service_client(name, "rcl_interfaces/srv/ListParameters"), seconds)
+
+    def op_type_description(self, topic, seconds):
+        """``topic``'s type as its publisher's node describes it within ``seconds`` (``type_descriptions``), or None."""
+        return type_descriptions.described_type(self.node, topic, lambda name: self._service_client(
+            name, "type_description_interfaces/srv/GetTypeDescription"), seconds)
 
     # --- services
     def _ready(self, client, wait, key, **values):
