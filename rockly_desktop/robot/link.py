@@ -93,6 +93,10 @@ class RobotLink(Protocol):
         """The names of the robot's parameters as ``ros.get_param`` takes them (ROS 1: the parameter
         server's; ROS 2: ``node:param``); never waits, as ``graph_services``."""
 
+    def want_parameters(self, wanted: bool):
+        """Whether ``graph_parameters`` is wanted (the block maker is open): asking every node for its
+        parameters costs the robot, so a followed graph lists them only while someone wishes them."""
+
     def own_publishers(self) -> dict:
         """{topic: how many publishers Rockly itself has on it} (not in ``graph_topics``' counts), so the
         Topic monitor counts them too."""

@@ -452,12 +452,25 @@ class MainWindow(QMainWindow):
         from rockly_desktop.ui.blockmaker.maker_dialog import open_block_maker  # not needed before it is opened
         from rockly_desktop.ui.blockmaker.offers import LiveGraph
 
+        wishing = []  # the links told the maker wants their parameters (the robot may change while it is open)
+
         def graph() -> LiveGraph:
             try:
-                return LiveGraph.of(self.robot()) if self._robot_shown else LiveGraph()
+                if not self._robot_shown:
+                    return LiveGraph()
+                link = self.robot()
             except RocklyError:  # no robot to ask: the maker offers what the profile declares and knows
                 return LiveGraph()
+            if link not in wishing:
+                wishing.append(link)
+                link.want_parameters(True)
+            return LiveGraph.of(link)
+
+        def unwish():
+            for link in wishing:
+                link.want_parameters(False)
         self.block_maker = open_block_maker(self.profile, self.language, graph, self, chosen)
+        self.block_maker.finished.connect(unwish)
         self.block_maker.sig_saved.connect(lambda _block_id: self.reload_packs())
         self.block_maker.sig_try_requested.connect(lambda page: self.runs.run(page=page))
 

@@ -218,10 +218,11 @@ def made_and_run(qtbot, window, program) -> None:
 def test_on_ros_1_the_maker_offers_a_plain_nodes_service_and_parameter_and_their_blocks_reach_it(
         qtbot, ros_window, lamp_on_ros):
     robot = ros_window.robot()
+    maker = open_maker(qtbot, ros_window)  # the open maker wishes the parameters listed
     eventually(lambda: ("/lamp/switch", "std_srvs/SetBool") in robot.graph_services()
                and "/lamp/brightness" in robot.graph_parameters(), timeout=20)
     assert ("/move_base", "move_base_msgs/MoveBaseAction") in robot.graph_actions()  # the simulated HOBBIT's
-    maker = open_maker(qtbot, ros_window)
+    qtbot.waitUntil(lambda: maker.choose_named("/lamp/brightness"), timeout=10000)
     assert maker.choose_named("/lamp/switch")  # in the live graph only: no profile declares it
     assert maker.interface_type.text() == "std_srvs/SetBool"
     assert maker.offers.currentItem().text() == "Service: /lamp/switch  (std_srvs/SetBool)  · on the robot now"
@@ -234,7 +235,7 @@ def test_on_ros_1_the_maker_offers_a_plain_nodes_service_and_parameter_and_their
     eventually(lambda: {"service": "/lamp/switch", "request": {"data": True}} in lamp_on_ros.lines, timeout=10)
 
     maker = open_maker(qtbot, ros_window)
-    assert maker.choose_named("/lamp/brightness")
+    qtbot.waitUntil(lambda: maker.choose_named("/lamp/brightness"), timeout=15000)  # listed again once wished again
     assert maker.offers.currentItem().text() == "Parameter: /lamp/brightness  · on the robot now"
     maker.kind.setCurrentIndex(maker.kind.findData("get_param"))
     maker.sentence["en"].setText("the lamp's brightness")
@@ -274,11 +275,12 @@ def test_on_ros_2_the_maker_offers_a_plain_nodes_service_action_and_parameter_an
         qtbot, window, test_robot, ros2_settings, monkeypatch):
     ros2_window = connected(window, ros2_settings, monkeypatch)
     robot = ros2_window.robot()
+    maker = open_maker(qtbot, ros2_window)  # the open maker wishes the parameters listed
     eventually(lambda: ("/set_light", "std_srvs/SetBool") in robot.graph_services()
                and "/test_robot:max_speed" in robot.graph_parameters(), timeout=30)
     assert ("/fibonacci", "test_msgs/FibonacciAction") in robot.graph_actions()
     assert not [name for name, _type in robot.graph_services() if name.endswith("_parameters")]
-    maker = open_maker(qtbot, ros2_window)
+    qtbot.waitUntil(lambda: maker.choose_named("/test_robot:max_speed"), timeout=10000)
     assert maker.choose_named("/set_light")  # the test node's: no profile declares it
     assert maker.offers.currentItem().text() == "Service: /set_light  (std_srvs/SetBool)  · on the robot now"
     assert maker.choose_named("/fibonacci") and maker.interface_type.text() == "test_msgs/FibonacciAction"
@@ -290,7 +292,7 @@ def test_on_ros_2_the_maker_offers_a_plain_nodes_service_action_and_parameter_an
     eventually(lambda: {"data": True} in [line["message"] for line in test_robot.received("/set_light")], timeout=10)
 
     maker = open_maker(qtbot, ros2_window)
-    assert maker.choose_named("/test_robot:max_speed")
+    qtbot.waitUntil(lambda: maker.choose_named("/test_robot:max_speed"), timeout=15000)  # listed once wished again
     maker.kind.setCurrentIndex(maker.kind.findData("get_param"))
     maker.sentence["en"].setText("the top speed")
     maker.block_id.setText("made_max_speed")
@@ -341,6 +343,16 @@ def test_the_filter_narrows_the_offers_and_a_parameter_is_named_and_set(qtbot, w
     assert maker.problems == []
     assert "ros.set_param('/max_speed'" in maker.python.toPlainText()
     qtbot.waitUntil(lambda: "top speed" in (drawn_preview(qtbot, maker) or {}).get("text", ""), timeout=10000)
+
+
+def test_the_robots_parameters_are_wished_while_the_maker_is_open_and_no_longer(qtbot, window, monkeypatch):
+    robot = window.robot()
+    wishes = []
+    monkeypatch.setattr(robot, "want_parameters", wishes.append)
+    maker = open_maker(qtbot, window)
+    qtbot.waitUntil(lambda: wishes == [True], timeout=5000)
+    maker.reject()
+    qtbot.waitUntil(lambda: wishes == [True, False], timeout=5000)
 
 
 def test_the_maker_opens_only_through_the_teachers_gate(qtbot, window):
