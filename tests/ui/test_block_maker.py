@@ -404,3 +404,27 @@ def test_the_preview_shows_the_inputs_before_the_sentence_is_written_and_keeps_a
     assert any("must have each of %1 to %2" in problem for problem in maker.problems)
     qtbot.waitUntil(lambda: maker.preview.drawn is not None and not maker.preview.is_drawing, timeout=10000)
     assert drawn_preview(qtbot, maker)["inputs"] == ["sessionid", "requesttext"]
+
+
+def test_a_new_categorys_colour_is_chosen_with_a_swatch_and_written_to_the_pack(qtbot, german_window):
+    maker = open_maker(qtbot, german_window)
+    make_mmui_block(qtbot, maker, block_id="made_lamp_say")
+    first = maker.category.itemText(0)
+    maker.category.setCurrentIndex(0)  # a category of the profile's brings its colour
+    assert maker.colour.colour() == maker.category.itemData(0)[1] == maker.block().colour
+    colours = [maker.colour.box.itemText(row) for row in range(maker.colour.box.count())]
+    assert colours[0] == f"{first}  {maker.category.itemData(0)[1]}" and "Grün  #43a047" in colours
+    maker.category.setEditText("Lampen")  # a new category keeps the colour chosen
+    maker.colour.set_colour("#43a047")
+    assert maker.colour.swatch.styleSheet().startswith("background: #43a047")
+    assert maker.block().colour == "#43a047" and maker.problems == []
+    qtbot.waitUntil(lambda: run_js(qtbot, maker.preview, "(() => { const shown = Blockly.getMainWorkspace()"
+                                   ".getTopBlocks(false); return shown.length ? shown[0].getColour() : ''; })()")
+                    == "#43a047", timeout=10000)
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_lamp_say" in german_window.editor.known_block_types, timeout=30000)
+    import yaml
+
+    toolbox = yaml.safe_load((user_packs_dir() / pack_id_for(german_window.profile) / "toolbox.yaml").read_text())
+    assert [(category["name"], category["colour"]) for category in toolbox["categories"]] == [
+        ({"en": "Lampen", "de": "Lampen"}, "#43a047")]

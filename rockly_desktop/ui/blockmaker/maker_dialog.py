@@ -32,6 +32,7 @@ from rockly_desktop.profiles.packs.interfaces import fields_of_block_kind, inter
 from rockly_desktop.profiles.packs.making import save_block
 from rockly_desktop.profiles.packs.spec import COMPARISONS, OUTCOME, BlockInput, MadeBlock
 from rockly_desktop.profiles.packs.validation import BlockMakerError, block_problems, sentence_places
+from rockly_desktop.ui.blockmaker.colour_choice import ColourChoice
 from rockly_desktop.ui.blockmaker.field_table import FieldTable
 from rockly_desktop.ui.blockmaker.offers import KINDS_OF, Offer, known_offers, robot_offers
 from rockly_desktop.ui.blockmaker.preview import BlockPreview
@@ -154,9 +155,13 @@ class BlockMakerDialog(QDialog):
         self.category = QComboBox(self)
         self.category.setObjectName("maker_category")
         self.category.setEditable(True)
-        for name, english, colour in category_choices(self.profile, language):
+        categories = category_choices(self.profile, language)
+        for name, english, colour in categories:
             self.category.addItem(name, (english, colour or FALLBACK_COLOUR))
-        self.category.currentTextChanged.connect(self.update_block)
+        self.category.currentTextChanged.connect(self._category_changed)
+        self.colour = ColourChoice([(name, colour) for name, _english, colour in categories], language, self)
+        self.colour.set_colour(self.category.currentData()[1] if categories else FALLBACK_COLOUR)
+        self.colour.sig_changed.connect(self.update_block)
         self.block_id = self._edit("maker_block_id")
         form = QFormLayout()
         for key, widget in (("maker_interface", self.interface), ("maker_interface_type", self.interface_type),
@@ -165,9 +170,10 @@ class BlockMakerDialog(QDialog):
                             ("maker_while_waiting", self.while_waiting), ("maker_sentence_en", self.sentence["en"]),
                             ("maker_sentence_de", self.sentence["de"]), ("maker_tooltip_en", self.tooltip["en"]),
                             ("maker_tooltip_de", self.tooltip["de"]), ("maker_category", self.category),
-                            ("maker_block_id", self.block_id)):
+                            ("maker_colour", self.colour), ("maker_block_id", self.block_id)):
             form.addRow(tr(key, language), widget)
-            widget.setAccessibleName(tr(key, language).rstrip(": "))  # a screen reader names it as the form does
+            named = self.colour.box if widget is self.colour else widget
+            named.setAccessibleName(tr(key, language).rstrip(": "))  # a screen reader names it as the form does
         self.sentence["en"].setPlaceholderText(tr("maker_sentence_hint", language))
         self.form = form
 
@@ -176,6 +182,13 @@ class BlockMakerDialog(QDialog):
         edit.setObjectName(name)
         edit.textChanged.connect(self.update_block)
         return edit
+
+    def _category_changed(self, shown: str):
+        """A category of the profile's brings its colour (the person may choose another); a new one keeps it."""
+        index = self.category.findText(shown.strip())
+        if index >= 0:
+            self.colour.set_colour(self.category.itemData(index)[1])  # updates the block through sig_changed
+        self.update_block()
 
     def _lay_out(self):
         right = QWidget(self)
@@ -313,14 +326,14 @@ class BlockMakerDialog(QDialog):
             inputs = (BlockInput("value", "number"),)
         shown = self.category.currentText().strip()
         index = self.category.findText(shown)
-        english, colour = self.category.itemData(index) if index >= 0 else (shown, FALLBACK_COLOUR)
+        english = self.category.itemData(index)[0] if index >= 0 else shown
         category = {"en": english, self.language: shown} if shown else {}
         return MadeBlock(
             id=self.block_id.text().strip(), kind=kind, interface=self.interface.text().strip(),
             interface_type=self.interface_type.text().strip() if kind not in ("get_param", "set_param") else "",
             inputs=inputs, fixed=self.fields.fixed() if kind in FILLS_FIELDS else {},
             sentence={code: edit.text() for code, edit in self.sentence.items() if edit.text().strip()},
-            category=category, colour=colour,
+            category=category, colour=self.colour.colour(),
             tooltip={code: edit.text() for code, edit in self.tooltip.items() if edit.text().strip()},
             read_field=self.read_field.currentText() if kind in READS_FIELD else "",
             value_kind=read_kind if kind == "sensor_value" else "number",
