@@ -224,9 +224,12 @@ class MainWindow(QMainWindow):
         panels.set_store(robot.state)
         self.health.show_robot(robot)
         self._replace_dock_widget(self.state_dock, panels)
-        monitor = TopicMonitor(robot.state, robot.graph_topics, self.language, own=robot.own_publishers)
+        monitor = TopicMonitor(robot.state, robot.graph_topics, self.language, own=robot.own_publishers,
+                               offers=lambda: [("service", *entry) for entry in robot.graph_services()]
+                               + [("action", *entry) for entry in robot.graph_actions()])
         monitor.sig_plot_requested.connect(self._plot)
-        monitor.sig_make_block_requested.connect(lambda topic: self.teacher_gate(lambda: self.make_block(topic)))
+        monitor.sig_make_block_requested.connect(
+            lambda name, kind: self.teacher_gate(lambda: self.make_block(name, kind)))
         self._replace_dock_widget(self.monitor_dock, monitor)
         had_plot = self._made_plot() is not None
         self._plot_store = robot.state
@@ -447,8 +450,9 @@ class MainWindow(QMainWindow):
                             open_copy=lambda path, name: self.files.open_copy(path, name), document=self.document,
                             limits=lambda: self.settings.teacher.limits(self.profile.id)).show()
 
-    def make_block(self, chosen: str = ""):
-        """Open the block maker (Tools → Make a block…), with the topic, service or action ``chosen`` chosen."""
+    def make_block(self, chosen: str = "", kind: str = ""):
+        """Open the block maker (Tools → Make a block…), with the topic, service or action ``chosen`` (of
+        ``kind``, "" for any) chosen."""
         from rockly_desktop.ui.blockmaker.maker_dialog import open_block_maker  # not needed before it is opened
         from rockly_desktop.ui.blockmaker.offers import LiveGraph
 
@@ -469,7 +473,7 @@ class MainWindow(QMainWindow):
         def unwish():
             for link in wishing:
                 link.want_parameters(False)
-        self.block_maker = open_block_maker(self.profile, self.language, graph, self, chosen)
+        self.block_maker = open_block_maker(self.profile, self.language, graph, self, chosen, kind)
         self.block_maker.finished.connect(unwish)
         self.block_maker.sig_saved.connect(lambda _block_id: self.reload_packs())
         self.block_maker.sig_try_requested.connect(lambda page: self.runs.run(page=page))

@@ -122,6 +122,21 @@ def test_the_topic_monitors_menu_opens_the_maker_with_that_topic_chosen(qtbot, w
     assert maker.kind.currentData() == "publish"
 
 
+@pytest.mark.parametrize(("name", "kind", "made"), [("/MMUI", "service", "call_service"),
+                                                   ("move_base", "action", "send_goal")])
+def test_the_topic_monitor_lists_services_and_actions_whose_menu_opens_the_maker_with_one_chosen(
+        qtbot, german_window, name, kind, made):
+    monitor = german_window.monitor_dock.widget()
+    qtbot.waitUntil(lambda: (name, kind) in monitor.interfaces.names(), timeout=10000)
+    assert monitor.interfaces.title.text().startswith("Dienste und Aktionen: ")
+    menu = monitor.interfaces.menu(name, kind)
+    assert [action.text() for action in menu.actions()] == ["Einen Block daraus bauen…"]
+    menu.actions()[0].trigger()
+    maker = the_maker(qtbot, german_window)
+    assert maker.interface.text() == name and maker.kind.currentData() == made
+    assert maker.offers.currentItem().data(Qt.ItemDataRole.UserRole).kind == kind
+
+
 def test_try_it_runs_the_previewed_block_once_on_the_simulator_before_it_is_saved(qtbot, window):
     maker = open_maker(qtbot, window)
     make_mmui_block(qtbot, maker, block_id="made_try")

@@ -34,7 +34,7 @@ from rockly_desktop.profiles.packs.spec import COMPARISONS, OUTCOME, BlockInput,
 from rockly_desktop.profiles.packs.validation import BlockMakerError, block_problems, sentence_places
 from rockly_desktop.ui.blockmaker.colour_choice import ColourChoice
 from rockly_desktop.ui.blockmaker.field_table import FieldTable
-from rockly_desktop.ui.blockmaker.offers import KINDS_OF, Offer, known_offers, robot_offers
+from rockly_desktop.ui.blockmaker.offers import KINDS_OF, Offer, global_name, known_offers, robot_offers
 from rockly_desktop.ui.blockmaker.preview import BlockPreview
 from rockly_desktop.ui.plain_text import plain_label
 from rockly_desktop.ui.texts import said_in, tr
@@ -271,12 +271,17 @@ class BlockMakerDialog(QDialog):
             item = self.offers.item(row)
             item.setHidden(not all(word in item.text().lower() for word in words))
 
-    def choose_named(self, name: str) -> bool:
-        """Choose the offer called ``name`` in the list (the Topic monitor's "Make a block from this…")."""
-        for row in range(self.offers.count()):
-            if self.offers.item(row).data(Qt.ItemDataRole.UserRole).name == name:
-                self.offers.setCurrentRow(row)
-                return True
+    def choose_named(self, name: str, kind: str = "") -> bool:
+        """Choose the offer called ``name`` (of ``kind``, "" for any) in the list (the Topic monitor's "Make a
+        block from this…"); ``/move_base`` as the graph names it is the ``move_base`` a profile declares."""
+        for exact in (True, False):
+            for row in range(self.offers.count()):
+                offer = self.offers.item(row).data(Qt.ItemDataRole.UserRole)
+                same = offer.name == name if exact else (bool(offer.name)
+                                                         and global_name(offer.name) == global_name(name))
+                if same and kind in ("", offer.kind):
+                    self.offers.setCurrentRow(row)
+                    return True
         return False
 
     def _kind_changed(self, *_):
@@ -370,15 +375,15 @@ class BlockMakerDialog(QDialog):
 
 
 
-def open_block_maker(profile, language: str, graph, parent, chosen: str = "") -> BlockMakerDialog:
+def open_block_maker(profile, language: str, graph, parent, chosen: str = "", kind: str = "") -> BlockMakerDialog:
     """Open the maker (not blocking) over ``parent`` for ``profile``, offering what the robot's live graph
     has (``graph()``: a ``LiveGraph``, read without waiting, again each second) and the profile declares,
-    then the types Rockly knows; with the offer named ``chosen`` chosen."""
+    then the types Rockly knows; with the offer named ``chosen`` (of ``kind``, "" for any) chosen."""
     known = known_offers(profile)
     dialog = BlockMakerDialog(profile, language, robot_offers(profile, graph()) + known, parent)
     dialog.follow_graph(graph, known)
     dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose)
     if chosen:
-        dialog.choose_named(chosen)
+        dialog.choose_named(chosen, kind)
     dialog.open()
     return dialog
