@@ -118,6 +118,8 @@ class MainWindow(QMainWindow):
         self.editor.sig_ready.connect(self.statusBar().clearMessage)
         self.editor.sig_ready.connect(self._first_show_robot)
         self.editor.sig_breakpoints.connect(self._on_breakpoints)
+        self.editor.sig_edit_made_block.connect(
+            lambda block_id: self.teacher_gate(lambda: self.edit_made_block(block_id)))
         self.editor.sig_page_error.connect(
             lambda message: self.statusBar().showMessage(tr("editor_error", self.language, message=message), 15000))
 
@@ -453,6 +455,7 @@ class MainWindow(QMainWindow):
     def make_block(self, chosen: str = "", kind: str = ""):
         """Open the block maker (Tools → Make a block…), with the topic, service or action ``chosen`` (of
         ``kind``, "" for any) chosen."""
+        from rockly_desktop.ui.blockmaker.editing import keeping_only
         from rockly_desktop.ui.blockmaker.maker_dialog import open_block_maker  # not needed before it is opened
         from rockly_desktop.ui.blockmaker.offers import LiveGraph
 
@@ -473,16 +476,29 @@ class MainWindow(QMainWindow):
         def unwish():
             for link in wishing:
                 link.want_parameters(False)
-        self.block_maker = open_block_maker(self.profile, self.language, graph, self, chosen, kind)
-        self.block_maker.finished.connect(unwish)
-        self.block_maker.sig_saved.connect(lambda _block_id: self.reload_packs())
+        maker = self.block_maker = open_block_maker(self.profile, self.language, graph, self, chosen, kind)
+        maker.finished.connect(unwish)
+        maker.sig_saved.connect(lambda _block_id: self.reload_packs(keeping_only(maker.block())))
         self.block_maker.sig_try_requested.connect(lambda page: self.runs.run(page=page))
+        return self.block_maker
 
-    def reload_packs(self):
-        """Read the block packs again and show the toolbox with them, keeping the program on screen
-        (once a run, such as the maker's "Try it", has ended: the page is not replaced under it)."""
+    def edit_made_block(self, block_id: str = ""):
+        """Open a block made with the maker in it again to change it (its "Edit this block…", or Tools → Edit a
+        made block…, which asks which); what the open program puts into the block's inputs is checked."""
+        from rockly_desktop.ui.blockmaker.editing import choose_made_block, inputs_in_use, saved_block
+
+        block_id = block_id or choose_made_block(self.profile, self.language, self)
+        found = saved_block(self.profile, block_id) if block_id else None
+        if found is not None:
+            self.make_block().edit(found[1], found[0], inputs_in_use(self.editor.workspace, block_id))
+
+    def reload_packs(self, adapt=None):
+        """Read the block packs again and show the toolbox with them, keeping the program on screen as
+        ``adapt(workspace)`` gives it, if given (once a run, such as the maker's "Try it", has ended: the page
+        is not replaced under it)."""
         if self.runs.state != "idle":
-            self.runs.sig_finished.connect(lambda _result: self.reload_packs(), Qt.ConnectionType.SingleShotConnection)
+            self.runs.sig_finished.connect(lambda _result: self.reload_packs(adapt),
+                                           Qt.ConnectionType.SingleShotConnection)
             return
         self.registry.reload_packs()
 
@@ -490,7 +506,8 @@ class MainWindow(QMainWindow):
             self.document.profile = self.registry.get(self.profile.id)
             self._restart_editor()
             if not error:
-                self.editor.load_workspace(state["workspace"], breakpoints=self.document.breakpoints)
+                workspace = adapt(state["workspace"]) if adapt is not None else state["workspace"]
+                self.editor.load_workspace(workspace, breakpoints=self.document.breakpoints)
 
         self.editor.call("getState", None, answered, timeout_ms=ANSWER_TIMEOUT_MS)
 
@@ -568,6 +585,7 @@ class MainWindow(QMainWindow):
 
         tools_menu = bar.addMenu(tr("menu_tools", language))
         self._action(tools_menu, "make_block", lambda: self.teacher_gate(self.make_block))
+        self._action(tools_menu, "edit_made_block", lambda: self.teacher_gate(self.edit_made_block))
 
         settings_menu = bar.addMenu(tr("menu_settings", language))
         self._action(settings_menu, "preferences", self.show_preferences, QKeySequence.StandardKey.Preferences)

@@ -443,3 +443,80 @@ def test_a_new_categorys_colour_is_chosen_with_a_swatch_and_written_to_the_pack(
     toolbox = yaml.safe_load((user_packs_dir() / pack_id_for(german_window.profile) / "toolbox.yaml").read_text())
     assert [(category["name"], category["colour"]) for category in toolbox["categories"]] == [
         ({"en": "Lampen", "de": "Lampen"}, "#43a047")]
+
+
+EDIT_ITEM = "Blockly.ContextMenuRegistry.registry.getItem('rocklyEditMadeBlock')"
+
+
+def test_a_made_block_opens_again_from_its_menu_is_changed_and_the_program_using_it_keeps_working(qtbot, window):
+    maker = open_maker(qtbot, window)
+    make_mmui_block(qtbot, maker)
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_say" in window.editor.known_block_types, timeout=30000)
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(stack(
+        block("made_say", inputs={"sessionid": text("9"), "requesttext": text("hi")}, id="say"),
+        block("hobbit_wait", inputs={"seconds": number(0.05)}, id="wait")))})
+    qtbot.waitUntil(lambda: "made_say" in str(window.editor.workspace), timeout=10000)
+    shown = run_js(qtbot, window.editor, f"""(() => {{ const ws = Blockly.getMainWorkspace();
+        return [{EDIT_ITEM}.preconditionFn({{block: ws.getBlockById('say')}}),
+                {EDIT_ITEM}.preconditionFn({{block: ws.getBlockById('wait')}}),
+                {EDIT_ITEM}.displayText()]; }})()""")
+    assert shown == ["enabled", "hidden", "Edit this block…"]
+    run_js(qtbot, window.editor, f"{EDIT_ITEM}.callback({{block: Blockly.getMainWorkspace().getBlockById('say')}})")
+    maker = the_maker(qtbot, window)
+    assert maker.editing == pack_id_for(window.profile) and maker.windowTitle() == "Change the block made_say"
+    assert maker.block_id.text() == "made_say" and maker.block_id.isReadOnly()
+    assert maker.interface.text() == "/MMUI" and maker.sentence["en"].text() == "ask %1 to say %2"
+    assert [(entry.name, entry.default) for entry in maker.block().inputs] == [("sessionid", "7"),
+                                                                               ("requesttext", "hello")]
+    assert maker.block().fixed == {"params": [{"name": "type", "value": "D_PLAIN"},
+                                              {"name": "text", "value": "made by hand"}]}
+    assert maker.problems == [] and not maker.warning_label.isVisibleTo(maker)
+
+    maker.fields.set_use("requestText", "fixed", "bye")  # an input the open program fills goes away
+    assert maker.warning_label.isVisibleTo(maker) and "requesttext" in maker.warning_label.text()
+    maker.sentence["en"].setText("let %1 speak")
+    maker.colour.set_colour("#d64541")
+    assert maker.problems == []
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: window.findChild(BlockMakerDialog) is None or not window.findChild(
+        BlockMakerDialog).isVisible(), timeout=10000)
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "(() => { const b = Blockly.getMainWorkspace()"
+                                   ".getBlockById('say'); return b ? b.toString() : ''; })()").startswith("let"),
+                    timeout=30000)
+    kept = run_js(qtbot, window.editor, "Blockly.getMainWorkspace().getBlockById('say')"
+                                        ".getInputTargetBlock('sessionid').getFieldValue('TEXT')")
+    assert kept == "9" and run_js(qtbot, window.editor, "Blockly.getMainWorkspace().getBlockById('wait') !== null")
+    import yaml
+
+    pack = user_packs_dir() / pack_id_for(window.profile)
+    made = yaml.safe_load((pack / "made.yaml").read_text())["blocks"]
+    assert [(entry["id"], entry["sentence"], entry["colour"]) for entry in made] == [
+        ("made_say", {"en": "let %1 speak"}, "#d64541")]
+    assert yaml.safe_load((pack / "pack.yaml").read_text())["version"] == "1.0.1"
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=30000) as finished:
+        assert window.runs.run()
+    assert finished.args[0].outcome == "finished", finished.args[0].message
+
+
+def test_tools_edit_a_made_block_asks_which_and_says_when_there_is_none(qtbot, german_window, monkeypatch):
+    from PySide6.QtWidgets import QInputDialog, QMessageBox
+
+    told = []
+    monkeypatch.setattr(QMessageBox, "exec", lambda box: told.append(box.text()) or 0)
+    edit = next(action for action in german_window.findChildren(QAction)
+                if action.objectName() == "action_edit_made_block")
+    assert edit.text() == "Gebauten Block &ändern…"
+    edit.trigger()
+    assert told == ["Für diesen Roboter wurde noch kein Block gebaut (Werkzeuge → Block bauen…)."]
+    maker = open_maker(qtbot, german_window)
+    make_mmui_block(qtbot, maker, "made_sag", "ask %1 to say %2", "frag %1 und sag %2")
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_sag" in german_window.editor.known_block_types, timeout=30000)
+    asked = []
+    monkeypatch.setattr(QInputDialog, "getItem", lambda *args: asked.append(args[3]) or ("made_sag", True))
+    edit.trigger()
+    assert asked == [["made_sag"]]
+    maker = the_maker(qtbot, german_window)
+    assert maker.windowTitle() == "Den Block made_sag ändern" and maker.save_button.text() == "Änderungen speichern"
+    assert maker.sentence["de"].text() == "frag %1 und sag %2"

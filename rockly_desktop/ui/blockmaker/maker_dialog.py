@@ -33,6 +33,7 @@ from rockly_desktop.profiles.packs.making import save_block
 from rockly_desktop.profiles.packs.spec import COMPARISONS, OUTCOME, BlockInput, MadeBlock
 from rockly_desktop.profiles.packs.validation import BlockMakerError, block_problems, sentence_places
 from rockly_desktop.ui.blockmaker.colour_choice import ColourChoice
+from rockly_desktop.ui.blockmaker.editing import OFFER_KIND, PackBeingEdited, value_text
 from rockly_desktop.ui.blockmaker.field_table import FieldTable
 from rockly_desktop.ui.blockmaker.offers import KINDS_OF, Offer, global_name, known_offers, robot_offers
 from rockly_desktop.ui.blockmaker.preview import BlockPreview
@@ -86,6 +87,9 @@ class BlockMakerDialog(QDialog):
         self.language = language
         self.packs_folder = packs_folder
         self.problems = []
+        self.editing = ""  # the pack of the made block shown again to change ("": a new block)
+        self._edited_pack = None
+        self._used_inputs = set()
         self._updating = False
         self.offers = QListWidget(self)
         self.offers.setObjectName("maker_offers")
@@ -109,6 +113,10 @@ class BlockMakerDialog(QDialog):
         self.problem_label = plain_label(parent=self, objectName="maker_problems")
         self.problem_label.setWordWrap(True)
         self.problem_label.setStyleSheet("color: #b00020;")
+        self.warning_label = plain_label(parent=self, objectName="maker_warning")
+        self.warning_label.setWordWrap(True)
+        self.warning_label.setStyleSheet("color: #8a4b00;")
+        self.warning_label.hide()
         self.buttons = QDialogButtonBox(self)
         self.save_button = QPushButton(tr("maker_save", language), self)
         self.save_button.setObjectName("maker_save")
@@ -197,6 +205,7 @@ class BlockMakerDialog(QDialog):
         column.addLayout(self.form)
         column.addWidget(self.fields, 1)
         column.addWidget(self.problem_label)
+        column.addWidget(self.warning_label)
         shown = QHBoxLayout()
         shown.addWidget(self.preview, 1)
         shown.addWidget(self.python, 1)
@@ -318,6 +327,49 @@ class BlockMakerDialog(QDialog):
         response = interface_fields(self.profile, self.interface_type.text().strip(), "srv", "out")
         return [entry.path for entry in response if entry.kind in ("number", "text", "yes_no")]
 
+    def edit(self, made, pack_id: str, used_inputs=()):
+        """Show the saved block ``made`` of the pack ``pack_id`` to change it: saving replaces it in that pack
+        under the same id (programs name it by its id); ``used_inputs`` are the inputs the open program
+        fills, and taking one of them away is said before it is saved."""
+        self.editing = pack_id
+        self._edited_pack = PackBeingEdited.of(self.profile, pack_id, made.id)
+        self._used_inputs = set(used_inputs)
+        self.setWindowTitle(tr("maker_edit_title", self.language, block=made.id))
+        self.save_button.setText(tr("maker_save_changes", self.language))
+        self.block_id.setText(made.id)
+        self.block_id.setReadOnly(True)
+        self.block_id.setToolTip(tr("maker_block_id_kept", self.language))
+        offer = Offer(OFFER_KIND.get(made.kind, "topic"), made.interface, made.interface_type)
+        self.offers.blockSignals(True)  # the list shows it chosen (else the list's focus would choose its first)
+        try:
+            if not self.choose_named(made.interface, offer.kind):
+                self._list_offers([offer, *self._listed])
+                self.offers.setCurrentRow(0)
+        finally:
+            self.offers.blockSignals(False)
+        self.choose(offer)
+        self.kind.setCurrentIndex(max(0, self.kind.findData(made.kind)))
+        self._updating = True
+        try:
+            for entry in made.inputs:
+                if entry.field:
+                    self.fields.set_use(entry.field, "input", value_text(entry.default, entry.kind), entry.unit,
+                                        value_text(entry.minimum, "number"), value_text(entry.maximum, "number"))
+            for path, value in made.fixed.items():
+                self.fields.set_use(path, "fixed", value_text(value, self.fields.kind_of(path)))
+            for box, data in ((self.comparison, made.comparison), (self.result, made.result)):
+                box.setCurrentIndex(max(0, box.findData(data)))
+            self.read_field.setCurrentIndex(max(0, self.read_field.findText(made.read_field)))
+            self.while_waiting.setChecked(made.while_waiting)
+            for code in ("en", "de"):
+                self.sentence[code].setText(made.sentence.get(code, ""))
+                self.tooltip[code].setText(made.tooltip.get(code, ""))
+            self.category.setCurrentText(made.category.get(self.language) or made.category.get("en", ""))
+            self.colour.set_colour(made.colour)
+        finally:
+            self._updating = False
+        self.update_block()
+
     # -- the block
 
     def block(self) -> MadeBlock:
@@ -351,9 +403,14 @@ class BlockMakerDialog(QDialog):
         if self._updating:
             return
         block = self.block()
-        self.problems = [said_in(problem, self.language) for problem in block_problems(block, self.profile)]
+        self.problems = [said_in(problem, self.language)
+                         for problem in block_problems(block, self.profile, self._edited_pack)]
         self.problem_label.setText("\n".join(self.problems))
         self.problem_label.setVisible(bool(self.problems))
+        dropped = sorted(self._used_inputs - {entry.name for entry in block.inputs})
+        self.warning_label.setText(tr("maker_inputs_in_use", self.language, inputs=", ".join(dropped))
+                                   if dropped else "")
+        self.warning_label.setVisible(bool(dropped))
         self.save_button.setEnabled(not self.problems)
         self.try_button.setEnabled(not self.problems)
         self.python.setPlainText(python_preview(block) if block.kind else "")
@@ -364,7 +421,8 @@ class BlockMakerDialog(QDialog):
     def save(self):
         """Write the block into the profile's block pack; on a problem say it and write nothing."""
         try:
-            save_block(self.block(), self.profile, pack_id_for(self.profile), folder=self.packs_folder)
+            save_block(self.block(), self.profile, self.editing or pack_id_for(self.profile), folder=self.packs_folder,
+                       replace_block=bool(self.editing))
         except BlockMakerError as error:
             self.problems = [error.in_language(self.language)]
             self.problem_label.setText(self.problems[0])
