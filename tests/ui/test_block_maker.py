@@ -520,3 +520,12 @@ def test_tools_edit_a_made_block_asks_which_and_says_when_there_is_none(qtbot, g
     maker = the_maker(qtbot, german_window)
     assert maker.windowTitle() == "Den Block made_sag ändern" and maker.save_button.text() == "Änderungen speichern"
     assert maker.sentence["de"].text() == "frag %1 und sag %2"
+
+
+def test_the_suggested_block_id_follows_the_offer_chosen_until_the_person_types_one(qtbot, window):
+    maker = open_maker(qtbot, window)
+    assert maker.focusWidget() is maker.offer_filter and maker.interface.text() == ""  # nothing chosen by itself
+    assert maker.choose_named("/odom") and maker.block_id.text() == "made_odom"
+    assert maker.choose_named("/MMUI") and maker.block_id.text() == "made_mmui"
+    maker.block_id.setText("made_say")
+    assert maker.choose_named("/odom") and maker.block_id.text() == "made_say"

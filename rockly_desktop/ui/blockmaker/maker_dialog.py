@@ -90,6 +90,7 @@ class BlockMakerDialog(QDialog):
         self.editing = ""  # the pack of the made block shown again to change ("": a new block)
         self._edited_pack = None
         self._used_inputs = set()
+        self._suggested_id = ""  # the block id the last offer chosen suggested
         self._updating = False
         self.offers = QListWidget(self)
         self.offers.setObjectName("maker_offers")
@@ -131,7 +132,8 @@ class BlockMakerDialog(QDialog):
         self.try_button.clicked.connect(lambda: self.sig_try_requested.emit(self.preview))
         self.buttons.rejected.connect(self.reject)
         self._lay_out()
-        self.update_block()
+        self.offer_filter.setFocus()  # typing finds an offer; a focused list would choose its first by itself
+        self._kind_changed()  # nothing chosen yet: only what every block has is shown
 
     # -- building
 
@@ -268,8 +270,9 @@ class BlockMakerDialog(QDialog):
             self.kind.clear()
             for kind in KINDS_OF[offer.kind]:
                 self.kind.addItem(tr(f"maker_kind_{kind}", self.language), kind)
-            if offer.name and not self.block_id.text():
-                self.block_id.setText(suggested_id(offer.name))
+            if offer.name and self.block_id.text() in ("", self._suggested_id):  # an id the person typed stays
+                self._suggested_id = suggested_id(offer.name)
+                self.block_id.setText(self._suggested_id)
         finally:
             self._updating = False
         self._kind_changed()
@@ -294,6 +297,8 @@ class BlockMakerDialog(QDialog):
         return False
 
     def _kind_changed(self, *_):
+        if self._updating:  # the kinds are being listed anew (``choose`` shows the new first kind once after)
+            return
         kind = self.kind.currentData() or ""
         fields = fields_of_block_kind(self.profile, kind, self.interface_type.text().strip()) if kind else []
         self._updating = True
@@ -404,7 +409,8 @@ class BlockMakerDialog(QDialog):
             return
         block = self.block()
         self.problems = [said_in(problem, self.language)
-                         for problem in block_problems(block, self.profile, self._edited_pack)]
+                         for problem in block_problems(block, self.profile, self._edited_pack)] if block.kind else [
+            tr("maker_choose_first", self.language)]  # nothing chosen yet: no block to find fault with
         self.problem_label.setText("\n".join(self.problems))
         self.problem_label.setVisible(bool(self.problems))
         dropped = sorted(self._used_inputs - {entry.name for entry in block.inputs})
