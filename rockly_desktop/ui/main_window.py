@@ -478,7 +478,8 @@ class MainWindow(QMainWindow):
                 link.want_parameters(False)
         maker = self.block_maker = open_block_maker(self.profile, self.language, graph, self, chosen, kind)
         maker.finished.connect(unwish)
-        maker.sig_saved.connect(lambda _block_id: self.reload_packs(keeping_only(maker.block())))
+        maker.sig_saved.connect(lambda block_id: self.reload_packs(keeping_only(maker.block()), tr(
+            "maker_saved", self.language, block=block_id, category=maker.category.currentText().strip())))
         self.block_maker.sig_try_requested.connect(lambda page: self.runs.run(page=page))
         return self.block_maker
 
@@ -492,18 +493,21 @@ class MainWindow(QMainWindow):
         if found is not None:
             self.make_block().edit(found[1], found[0], inputs_in_use(self.editor.workspace, block_id))
 
-    def reload_packs(self, adapt=None):
+    def reload_packs(self, adapt=None, said: str = ""):
         """Read the block packs again and show the toolbox with them, keeping the program on screen as
-        ``adapt(workspace)`` gives it, if given (once a run, such as the maker's "Try it", has ended: the page
-        is not replaced under it)."""
+        ``adapt(workspace)`` gives it, if given, and then saying ``said`` in the status bar (once a run, such
+        as the maker's "Try it", has ended: the page is not replaced under it)."""
         if self.runs.state != "idle":
-            self.runs.sig_finished.connect(lambda _result: self.reload_packs(adapt),
+            self.runs.sig_finished.connect(lambda _result: self.reload_packs(adapt, said),
                                            Qt.ConnectionType.SingleShotConnection)
             return
         self.registry.reload_packs()
 
         def answered(state, error):
             self.document.profile = self.registry.get(self.profile.id)
+            if said:  # once the page is ready (which clears the status bar)
+                self.editor.sig_ready.connect(lambda: self.statusBar().showMessage(said, 30000),
+                                              Qt.ConnectionType.SingleShotConnection)
             self._restart_editor()
             if not error:
                 workspace = adapt(state["workspace"]) if adapt is not None else state["workspace"]

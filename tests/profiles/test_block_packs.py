@@ -303,3 +303,16 @@ def test_any_fixed_text_and_sentence_make_a_block_whose_python_sends_exactly_tha
     folder = Path(tempfile.mkdtemp(dir=tmp_path))
     pack = save_block(made, fresh_registry.get("hobbit"), PACK, folder=folder)  # and YAML keeps it exactly
     assert pack.made_block("say_fixed") == made and pack.blocks[0].code == spec.code
+
+
+def test_the_python_preview_sends_what_a_new_block_from_the_toolbox_sends_for_an_input_without_a_default():
+    from rockly_desktop.profiles.packs.generate import python_preview, toolbox_entry
+    from rockly_desktop.profiles.packs.spec import BlockInput, MadeBlock
+
+    block = MadeBlock("made_say", "call_service", "/MMUI", "hobbit_msgs/Request",
+                      inputs=(BlockInput("sessionid", "text", "sessionID"), BlockInput("count", "number", "count"),
+                              BlockInput("on", "yes_no", "on")), sentence={"en": "say %1 %2 %3"})
+    assert "{'sessionID': '', 'count': 0, 'on': False}" in python_preview(block)
+    shadows = toolbox_entry(block)["inputs"]
+    assert [shadows[name]["shadow"]["fields"] for name in ("sessionid", "count", "on")] == [
+        {"TEXT": ""}, {"NUM": 0}, {"BOOL": "FALSE"}]

@@ -72,6 +72,7 @@ def test_a_service_with_two_fields_becomes_a_block_in_the_toolbox_that_runs(qtbo
 
     maker.save_button.click()
     qtbot.waitUntil(lambda: "made_say" in window.editor.known_block_types, timeout=30000)
+    assert window.statusBar().currentMessage() == "The block made_say is in the toolbox under Drive."
     assert (user_packs_dir() / pack_id_for(window.profile) / "blocks.yaml").is_file()
     toolbox = run_js(qtbot, window.editor, "JSON.stringify(Blockly.getMainWorkspace().options.languageTree)")
     assert '"made_say"' in toolbox
