@@ -475,7 +475,7 @@ def test_a_made_block_opens_again_from_its_menu_is_changed_and_the_program_using
     assert maker.problems == [] and not maker.warning_label.isVisibleTo(maker)
 
     maker.fields.set_use("requestText", "fixed", "bye")  # an input the open program fills goes away
-    assert maker.warning_label.isVisibleTo(maker) and "requesttext" in maker.warning_label.text()
+    assert maker.warning_label.isVisibleTo(maker) and "requestText" in maker.warning_label.text()
     maker.sentence["en"].setText("let %1 speak")
     maker.colour.set_colour("#d64541")
     assert maker.problems == []
@@ -519,7 +519,7 @@ def test_tools_edit_a_made_block_asks_which_and_says_when_there_is_none(qtbot, g
     edit.trigger()
     assert asked == [["made_sag"]]
     maker = the_maker(qtbot, german_window)
-    assert maker.windowTitle() == "Den Block made_sag ändern" and maker.save_button.text() == "Änderungen speichern"
+    assert maker.windowTitle() == "Den Block made_sag ändern" and maker.save_button.text() == "Änderungen &speichern"
     assert maker.sentence["de"].text() == "frag %1 und sag %2"
 
 

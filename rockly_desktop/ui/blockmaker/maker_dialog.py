@@ -89,7 +89,7 @@ class BlockMakerDialog(QDialog):
         self.problems = []
         self.editing = ""  # the pack of the made block shown again to change ("": a new block)
         self._edited_pack = None
-        self._used_inputs = set()
+        self._used_inputs = set()  # the fields (or values) whose inputs the open program fills, as the table names them
         self._suggested_id = ""  # the block id the last offer chosen suggested
         self._updating = False
         self.offers = QListWidget(self)
@@ -338,7 +338,7 @@ class BlockMakerDialog(QDialog):
         fills, and taking one of them away is said before it is saved."""
         self.editing = pack_id
         self._edited_pack = PackBeingEdited.of(self.profile, pack_id, made.id)
-        self._used_inputs = set(used_inputs)
+        self._used_inputs = {entry.field or entry.name for entry in made.inputs if entry.name in set(used_inputs)}
         self.setWindowTitle(tr("maker_edit_title", self.language, block=made.id))
         self.save_button.setText(tr("maker_save_changes", self.language))
         self.block_id.setText(made.id)
@@ -413,7 +413,7 @@ class BlockMakerDialog(QDialog):
             tr("maker_choose_first", self.language)]  # nothing chosen yet: no block to find fault with
         self.problem_label.setText("\n".join(self.problems))
         self.problem_label.setVisible(bool(self.problems))
-        dropped = sorted(self._used_inputs - {entry.name for entry in block.inputs})
+        dropped = sorted(self._used_inputs - {entry.field or entry.name for entry in block.inputs})
         self.warning_label.setText(tr("maker_inputs_in_use", self.language, inputs=", ".join(dropped))
                                    if dropped else "")
         self.warning_label.setVisible(bool(dropped))

@@ -89,6 +89,7 @@ class TopicMonitor(QWidget):
         lists.addWidget(self.interfaces)
         lists.setStretchFactor(0, 3)
         lists.setStretchFactor(1, 1)
+        lists.setSizes([240, 100])  # the topics keep most of a small dock
         self.splitter = QSplitter(Qt.Orientation.Horizontal, self)
         self.splitter.setChildrenCollapsible(False)
         self.splitter.addWidget(lists)
