@@ -1,9 +1,10 @@
 """The block maker (issue 22): how fast it answers an edit, and the scripted time from opening it to a
 working block in the toolbox, for HOBBIT's /MMUI service with two fields made inputs.
 
-- response: one edit of the sentence until the preview page has drawn the block anew (median and
-  max over 50 edits), against a baseline measured in the same window: one round trip of a page
-  call to the editor (``getState``), the least any drawing can take;
+- response: one change until the preview page has drawn the block anew (median and max over 50 of
+  each kind: the sentence typed, a field's use switched between input and default, the colour,
+  and another offer chosen), against a baseline measured in the same window: one round trip of a
+  page call to the editor (``getState``), the least any drawing can take;
 - open to toolbox: Tools → Make a block… until the saved block is a block type of the editor page,
   against the editor page's own restart with the same profile (what showing the new toolbox costs).
 
@@ -56,7 +57,7 @@ def page_answer(view, name, args=None):
 
 def open_window(settings_path, language):
     from rockly_desktop.app import build_main_window, create_application, prepare_qt_environment
-    from rockly_desktop.ui.settings import AppSettings
+    from rockly_desktop.settings.app_settings import AppSettings
 
     prepare_qt_environment()
     create_application([])
@@ -96,8 +97,17 @@ def make_block(window, language):
     return maker, start
 
 
-def response_times(maker, edits):
-    """Seconds from each sentence edit until the preview page drew it, and until the maker had checked
+CHANGES = {
+    "sentence typed": lambda maker, index: maker.sentence["en"].setText(f"ask %1 to say %2 ({index})"),
+    "a field's use": lambda maker, index: maker.fields.set_use("sessionID", ("default", "input")[index % 2], "7"),
+    "colour": lambda maker, index: maker.colour.box.setCurrentIndex((index + 1) % maker.colour.box.count()),
+    "offer chosen": lambda maker, index: maker.choose_named(("/head/emo", "/MMUI")[index % 2]),
+}
+"""Each kind of change a person makes in the maker, as ``change(maker, index)``."""
+
+
+def response_times(maker, edits, change=CHANGES["sentence typed"]):
+    """Seconds from each ``change`` until the preview page drew it, and until the maker had checked
     the block and shown its problems and Python (its own part, before the page draws)."""
     drawn, checked, times, own = [], [], [], []
     maker.preview.sig_drawn.connect(lambda: drawn.append(time.perf_counter()))
@@ -106,7 +116,7 @@ def response_times(maker, edits):
         drawn.clear()
         checked.clear()
         start = time.perf_counter()
-        maker.sentence["en"].setText(f"ask %1 to say %2 ({index})")
+        change(maker, index)
         wait_until(lambda: drawn)
         times.append(drawn[0] - start)
         own.append(checked[0] - start)
@@ -167,8 +177,9 @@ def main():
         window.grab().save(str(options.shots / f"toolbox-{options.language}.png"))
 
     from rockly_desktop.ui.blockmaker.maker_dialog import open_block_maker
+    from rockly_desktop.ui.blockmaker.offers import LiveGraph
 
-    again = open_block_maker(window.profile, options.language, [], window)
+    again = open_block_maker(window.profile, options.language, LiveGraph, window)
     wait_until(lambda: again.preview.is_ready)
     again.choose_named("/MMUI")
     again.fields.set_use("sessionID", "input", "7")
@@ -176,12 +187,18 @@ def main():
     again.sentence["en"].setText("ask %1 to say %2")
     wait_until(lambda: again.preview.drawn is not None and not again.preview.is_drawing)
     edits, own = response_times(again, options.edits)
+    others = {name: response_times(again, options.edits, change) for name, change in CHANGES.items()
+              if name != "sentence typed"}
     baseline = round_trips(again.preview, options.edits)
     restart = editor_restart(window)
     median, base = statistics.median(edits), statistics.median(baseline)
     print(f"maker response to an edit (preview drawn), {options.edits} edits: median {median * 1000:.1f} ms, "
           f"max {max(edits) * 1000:.1f} ms; of which the maker's own check, Python and drawing request: median "
           f"{statistics.median(own) * 1000:.1f} ms, max {max(own) * 1000:.1f} ms")
+    for name, (times, checks) in others.items():
+        print(f"maker response to {name} (preview drawn), {options.edits} changes: median "
+              f"{statistics.median(times) * 1000:.1f} ms, max {max(times) * 1000:.1f} ms; the maker's own part: "
+              f"median {statistics.median(checks) * 1000:.1f} ms, max {max(checks) * 1000:.1f} ms")
     print(f"baseline: one page-call round trip: median {base * 1000:.1f} ms, max {max(baseline) * 1000:.1f} ms"
           f" -> ratio {median / base:.2f}")
     print(f"scripted: opening the maker to the block in the toolbox (/MMUI, two inputs): {to_toolbox:.2f} s "

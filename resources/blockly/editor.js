@@ -242,8 +242,18 @@
     send({event: 'breakpoints', ids: [...breakpoints]});
   }
 
-  function registerContextMenu(texts) {
+  function registerContextMenu(texts, madeBlocks) {
     const registry = Blockly.ContextMenuRegistry.registry;
+    if (registry.getItem('rocklyEditMadeBlock')) registry.unregister('rocklyEditMadeBlock');
+    const made = new Set(madeBlocks || []);
+    registry.register({  // a block made with the block maker opens in it again
+      id: 'rocklyEditMadeBlock',
+      scopeType: Blockly.ContextMenuRegistry.ScopeType.BLOCK,
+      weight: 1,
+      displayText: () => texts.editMadeBlock || 'Edit this block…',
+      preconditionFn: (scope) => made.has(scope.block.type) ? 'enabled' : 'hidden',
+      callback: (scope) => send({event: 'editMadeBlock', type: scope.block.type}),
+    });
     if (registry.getItem('rocklyBreakpoint')) registry.unregister('rocklyBreakpoint');
     registry.register({
       id: 'rocklyBreakpoint',
@@ -515,7 +525,8 @@
       RocklyStage.install(workspace);
       window.addEventListener('resize', keepViewCorner);  // added after inject's own: runs after it
       makeHint(texts && texts.emptyHint);
-      registerContextMenu(texts || {addBreakpoint: 'Add breakpoint', removeBreakpoint: 'Remove breakpoint'});
+      registerContextMenu(texts || {addBreakpoint: 'Add breakpoint', removeBreakpoint: 'Remove breakpoint'},
+                          profile.madeBlocks);
       // The first call's own answer, or its error: a program that cannot be shown must not stop the editor.
       let program = null;
       if (first) {

@@ -62,6 +62,7 @@ class EditorView(QWebEngineView):
     sig_changed = Signal(object, str, str)
     sig_page_error = Signal(str)
     sig_breakpoints = Signal(list)  # block ids, after the user toggled one
+    sig_edit_made_block = Signal(str)  # a made block's type: its context menu's "Edit this block…"
 
     def __init__(self, parent=None):
         super().__init__(parent)
@@ -254,5 +255,7 @@ class EditorView(QWebEngineView):
             self.sig_changed.emit(self.workspace, self.python, message.get("origin", "user"))
         elif event == "breakpoints":
             self.sig_breakpoints.emit(message["ids"])
+        elif event == "editMadeBlock":
+            self.sig_edit_made_block.emit(str(message.get("type", "")))
         elif event == "error":
             self.sig_page_error.emit(f"{message.get('message')} ({message.get('source')}:{message.get('line')})")

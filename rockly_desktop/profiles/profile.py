@@ -179,6 +179,7 @@ class Profile:
                        for spec in self.blocks + self.shared_blocks],
             "toolbox": self.toolbox(language, level_id, switched_off),
             "types": self.ros_types.editor_catalog,
+            "madeBlocks": sorted(block for pack in self.packs for block in pack.interfaces),  # "Edit this block…"
         }
 
     def load_object(self, field_name: str):

@@ -99,6 +99,10 @@ class RobotLink(Protocol):
         for. Waits on the robot, bounded in time: never on the window's thread. Raises DefinitionNotLearnt
         saying why (and what to do) when the robot does not say it."""
 
+    def want_parameters(self, wanted: bool):
+        """Whether ``graph_parameters`` is wanted (the block maker is open): asking every node for its
+        parameters costs the robot, so a followed graph lists them only while someone wishes them."""
+
     def own_publishers(self) -> dict:
         """{topic: how many publishers Rockly itself has on it} (not in ``graph_topics``' counts), so the
         Topic monitor counts them too."""

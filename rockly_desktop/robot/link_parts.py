@@ -14,12 +14,14 @@ def safe_stop(link) -> list:
 
 class GraphFollowing:
     """A link's state feed (``graph_topics``, ``own_publishers``, ``services``, ``graph_services``,
-    ``graph_actions``, ``graph_parameters``, ``stop``), started by
-    ``start()`` on the first ``follow`` and stopped by ``stop``; until then the robot's graph is empty."""
+    ``graph_actions``, ``graph_parameters``, ``want_parameters``, ``stop``), started by
+    ``start()`` on the first ``follow`` and stopped by ``stop``; until then the robot's graph is empty.
+    The wish for parameters outlives the feed: a feed started again (a new connection) is told it."""
 
     def __init__(self, start):
         self._start = start
         self._feed = None
+        self._parameters_wanted = False
         self._lock = threading.Lock()
 
     def follow(self):
@@ -27,7 +29,16 @@ class GraphFollowing:
         with self._lock:
             if self._feed is None:
                 self._feed = self._start()
+                self._feed.want_parameters(self._parameters_wanted)
             return self._feed
+
+    def want_parameters(self, wanted: bool):
+        """Ask the feed to list the robot's parameters (``wanted``) or to stop asking for them."""
+        with self._lock:
+            self._parameters_wanted = bool(wanted)
+            feed = self._feed
+        if feed is not None:
+            feed.want_parameters(wanted)
 
     def stop(self) -> bool:
         """Stop the feed; returns whether it was running (to follow again on a new connection)."""
@@ -80,8 +91,12 @@ class ReadsFollowedGraph:
         return self._following.graph_actions()
 
     def graph_parameters(self) -> list:
-        """The robot's graph's parameter names."""
+        """The robot's graph's parameter names (listed only while ``want_parameters`` wishes them)."""
         return self._following.graph_parameters()
+
+    def want_parameters(self, wanted: bool):
+        """List the robot's parameters from now on (``wanted``), or stop asking every node for them."""
+        self._following.want_parameters(wanted)
 
     def own_publishers(self) -> dict:
         """{topic: Rockly's own publishers on it} (not in ``graph_topics``)."""

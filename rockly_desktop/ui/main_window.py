@@ -119,6 +119,8 @@ class MainWindow(QMainWindow):
         self.editor.sig_ready.connect(self.statusBar().clearMessage)
         self.editor.sig_ready.connect(self._first_show_robot)
         self.editor.sig_breakpoints.connect(self._on_breakpoints)
+        self.editor.sig_edit_made_block.connect(
+            lambda block_id: self.teacher_gate(lambda: self.edit_made_block(block_id)))
         self.editor.sig_page_error.connect(
             lambda message: self.statusBar().showMessage(tr("editor_error", self.language, message=message), 15000))
 
@@ -226,9 +228,12 @@ class MainWindow(QMainWindow):
         panels.set_store(robot.state)
         self.health.show_robot(robot)
         self._replace_dock_widget(self.state_dock, panels)
-        monitor = TopicMonitor(robot.state, robot.graph_topics, self.language, own=robot.own_publishers)
+        monitor = TopicMonitor(robot.state, robot.graph_topics, self.language, own=robot.own_publishers,
+                               offers=lambda: [("service", *entry) for entry in robot.graph_services()]
+                               + [("action", *entry) for entry in robot.graph_actions()])
         monitor.sig_plot_requested.connect(self._plot)
-        monitor.sig_make_block_requested.connect(lambda topic: self.teacher_gate(lambda: self.make_block(topic)))
+        monitor.sig_make_block_requested.connect(
+            lambda name, kind: self.teacher_gate(lambda: self.make_block(name, kind)))
         self._replace_dock_widget(self.monitor_dock, monitor)
         had_plot = self._made_plot() is not None
         self._plot_store = robot.state
@@ -450,39 +455,72 @@ class MainWindow(QMainWindow):
                             open_copy=lambda path, name: self.files.open_copy(path, name), document=self.document,
                             limits=lambda: self.settings.teacher.limits(self.profile.id)).show()
 
-    def make_block(self, chosen: str = ""):
-        """Open the block maker (Tools → Make a block…), with the topic, service or action ``chosen`` chosen."""
+    def make_block(self, chosen: str = "", kind: str = ""):
+        """Open the block maker (Tools → Make a block…), with the topic, service or action ``chosen`` (of
+        ``kind``, "" for any) chosen."""
+        from rockly_desktop.ui.blockmaker.editing import keeping_only
         from rockly_desktop.ui.blockmaker.maker_dialog import open_block_maker  # not needed before it is opened
         from rockly_desktop.ui.blockmaker.offers import LiveGraph
 
+        wishing = []  # the links told the maker wants their parameters (the robot may change while it is open)
+
         def graph() -> LiveGraph:
             try:
-                return LiveGraph.of(self.robot()) if self._robot_shown else LiveGraph()
+                if not self._robot_shown:
+                    return LiveGraph()
+                link = self.robot()
             except RocklyError:  # no robot to ask: the maker offers what the profile declares and knows
                 return LiveGraph()
+            if link not in wishing:
+                wishing.append(link)
+                link.want_parameters(True)
+            return LiveGraph.of(link)
 
         def asker():  # the robot's now, asked of the live offers whose types Rockly has no definition for
             try:
                 return self.robot().interface_definition if self._robot_shown else None
             except RocklyError:
                 return None
-        self.block_maker = open_block_maker(self.profile, self.language, graph, self, chosen, asker)
-        self.block_maker.sig_saved.connect(lambda _block_id: self.reload_packs())
-        self.block_maker.sig_try_requested.connect(lambda page: self.runs.run(page=page))
 
-    def reload_packs(self):
-        """Read the block packs again and show the toolbox with them, keeping the program on screen
-        (once a run, such as the maker's "Try it", has ended: the page is not replaced under it)."""
+        def unwish():
+            for link in wishing:
+                link.want_parameters(False)
+        maker = self.block_maker = open_block_maker(self.profile, self.language, graph, self, chosen, kind, asker)
+        maker.finished.connect(unwish)
+        maker.sig_saved.connect(lambda block_id: self.reload_packs(keeping_only(maker.block()), tr(
+            "maker_saved", self.language, block=block_id, category=maker.category.currentText().strip())))
+        self.block_maker.sig_try_requested.connect(lambda page: self.runs.run(page=page))
+        return self.block_maker
+
+    def edit_made_block(self, block_id: str = ""):
+        """Open a block made with the maker in it again to change it (its "Edit this block…", or Tools → Edit a
+        made block…, which asks which); what the open program puts into the block's inputs is checked."""
+        from rockly_desktop.ui.blockmaker.editing import choose_made_block, inputs_in_use, saved_block
+
+        block_id = block_id or choose_made_block(self.profile, self.language, self)
+        found = saved_block(self.profile, block_id) if block_id else None
+        if found is not None:
+            self.make_block().edit(found[1], found[0], inputs_in_use(self.editor.workspace, block_id))
+
+    def reload_packs(self, adapt=None, said: str = ""):
+        """Read the block packs again and show the toolbox with them, keeping the program on screen as
+        ``adapt(workspace)`` gives it, if given, and then saying ``said`` in the status bar (once a run, such
+        as the maker's "Try it", has ended: the page is not replaced under it)."""
         if self.runs.state != "idle":
-            self.runs.sig_finished.connect(lambda _result: self.reload_packs(), Qt.ConnectionType.SingleShotConnection)
+            self.runs.sig_finished.connect(lambda _result: self.reload_packs(adapt, said),
+                                           Qt.ConnectionType.SingleShotConnection)
             return
         self.registry.reload_packs()
 
         def answered(state, error):
             self.document.profile = self.registry.get(self.profile.id)
+            if said:  # once the page is ready (which clears the status bar)
+                self.editor.sig_ready.connect(lambda: self.statusBar().showMessage(said, 30000),
+                                              Qt.ConnectionType.SingleShotConnection)
             self._restart_editor()
             if not error:
-                self.editor.load_workspace(state["workspace"], breakpoints=self.document.breakpoints)
+                workspace = adapt(state["workspace"]) if adapt is not None else state["workspace"]
+                self.editor.load_workspace(workspace, breakpoints=self.document.breakpoints)
 
         self.editor.call("getState", None, answered, timeout_ms=ANSWER_TIMEOUT_MS)
 
@@ -560,6 +598,7 @@ class MainWindow(QMainWindow):
 
         tools_menu = bar.addMenu(tr("menu_tools", language))
         self._action(tools_menu, "make_block", lambda: self.teacher_gate(self.make_block))
+        self._action(tools_menu, "edit_made_block", lambda: self.teacher_gate(self.edit_made_block))
 
         settings_menu = bar.addMenu(tr("menu_settings", language))
         self._action(settings_menu, "preferences", self.show_preferences, QKeySequence.StandardKey.Preferences)

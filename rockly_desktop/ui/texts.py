@@ -31,6 +31,7 @@ def editor_page_texts(language: str) -> dict:
     """The editor page's own texts in ``language`` (``EditorView.start``'s ``texts``): its menu, its
     hint, and ``blocklyMsg``, Blockly's keyboard hints."""
     return {"addBreakpoint": tr("add_breakpoint", language), "removeBreakpoint": tr("remove_breakpoint", language),
+            "editMadeBlock": tr("edit_made_block_here", language),
             "emptyHint": tr("empty_hint", language, run=tr("run", language)),
             "blocklyMsg": {name: tr(key, language) for name, key in _NAVIGATION_HINTS.items()}}
 

@@ -72,6 +72,7 @@ def test_a_service_with_two_fields_becomes_a_block_in_the_toolbox_that_runs(qtbo
 
     maker.save_button.click()
     qtbot.waitUntil(lambda: "made_say" in window.editor.known_block_types, timeout=30000)
+    assert window.statusBar().currentMessage() == "The block made_say is in the toolbox under Drive."
     assert (user_packs_dir() / pack_id_for(window.profile) / "blocks.yaml").is_file()
     toolbox = run_js(qtbot, window.editor, "JSON.stringify(Blockly.getMainWorkspace().options.languageTree)")
     assert '"made_say"' in toolbox
@@ -120,6 +121,21 @@ def test_the_topic_monitors_menu_opens_the_maker_with_that_topic_chosen(qtbot, w
     maker = the_maker(qtbot, window)
     assert maker.interface.text() == "/odom" and maker.interface_type.text() == "nav_msgs/Odometry"
     assert maker.kind.currentData() == "publish"
+
+
+@pytest.mark.parametrize(("name", "kind", "made"), [("/MMUI", "service", "call_service"),
+                                                   ("move_base", "action", "send_goal")])
+def test_the_topic_monitor_lists_services_and_actions_whose_menu_opens_the_maker_with_one_chosen(
+        qtbot, german_window, name, kind, made):
+    monitor = german_window.monitor_dock.widget()
+    qtbot.waitUntil(lambda: (name, kind) in monitor.interfaces.names(), timeout=10000)
+    assert monitor.interfaces.title.text().startswith("Dienste und Aktionen: ")
+    menu = monitor.interfaces.menu(name, kind)
+    assert [action.text() for action in menu.actions()] == ["Einen Block daraus bauen…"]
+    menu.actions()[0].trigger()
+    maker = the_maker(qtbot, german_window)
+    assert maker.interface.text() == name and maker.kind.currentData() == made
+    assert maker.offers.currentItem().data(Qt.ItemDataRole.UserRole).kind == kind
 
 
 def test_try_it_runs_the_previewed_block_once_on_the_simulator_before_it_is_saved(qtbot, window):
@@ -218,10 +234,11 @@ def made_and_run(qtbot, window, program) -> None:
 def test_on_ros_1_the_maker_offers_a_plain_nodes_service_and_parameter_and_their_blocks_reach_it(
         qtbot, ros_window, lamp_on_ros):
     robot = ros_window.robot()
+    maker = open_maker(qtbot, ros_window)  # the open maker wishes the parameters listed
     eventually(lambda: ("/lamp/switch", "std_srvs/SetBool") in robot.graph_services()
                and "/lamp/brightness" in robot.graph_parameters(), timeout=20)
     assert ("/move_base", "move_base_msgs/MoveBaseAction") in robot.graph_actions()  # the simulated HOBBIT's
-    maker = open_maker(qtbot, ros_window)
+    qtbot.waitUntil(lambda: maker.choose_named("/lamp/brightness"), timeout=10000)
     assert maker.choose_named("/lamp/switch")  # in the live graph only: no profile declares it
     assert maker.interface_type.text() == "std_srvs/SetBool"
     assert maker.offers.currentItem().text() == "Service: /lamp/switch  (std_srvs/SetBool)  · on the robot now"
@@ -234,7 +251,7 @@ def test_on_ros_1_the_maker_offers_a_plain_nodes_service_and_parameter_and_their
     eventually(lambda: {"service": "/lamp/switch", "request": {"data": True}} in lamp_on_ros.lines, timeout=10)
 
     maker = open_maker(qtbot, ros_window)
-    assert maker.choose_named("/lamp/brightness")
+    qtbot.waitUntil(lambda: maker.choose_named("/lamp/brightness"), timeout=15000)  # listed again once wished again
     assert maker.offers.currentItem().text() == "Parameter: /lamp/brightness  · on the robot now"
     maker.kind.setCurrentIndex(maker.kind.findData("get_param"))
     maker.sentence["en"].setText("the lamp's brightness")
@@ -274,11 +291,12 @@ def test_on_ros_2_the_maker_offers_a_plain_nodes_service_action_and_parameter_an
         qtbot, window, test_robot, ros2_settings, monkeypatch):
     ros2_window = connected(window, ros2_settings, monkeypatch)
     robot = ros2_window.robot()
+    maker = open_maker(qtbot, ros2_window)  # the open maker wishes the parameters listed
     eventually(lambda: ("/set_light", "std_srvs/SetBool") in robot.graph_services()
                and "/test_robot:max_speed" in robot.graph_parameters(), timeout=30)
     assert ("/fibonacci", "test_msgs/FibonacciAction") in robot.graph_actions()
     assert not [name for name, _type in robot.graph_services() if name.endswith("_parameters")]
-    maker = open_maker(qtbot, ros2_window)
+    qtbot.waitUntil(lambda: maker.choose_named("/test_robot:max_speed"), timeout=10000)
     assert maker.choose_named("/set_light")  # the test node's: no profile declares it
     assert maker.offers.currentItem().text() == "Service: /set_light  (std_srvs/SetBool)  · on the robot now"
     assert maker.choose_named("/fibonacci") and maker.interface_type.text() == "test_msgs/FibonacciAction"
@@ -290,7 +308,7 @@ def test_on_ros_2_the_maker_offers_a_plain_nodes_service_action_and_parameter_an
     eventually(lambda: {"data": True} in [line["message"] for line in test_robot.received("/set_light")], timeout=10)
 
     maker = open_maker(qtbot, ros2_window)
-    assert maker.choose_named("/test_robot:max_speed")
+    qtbot.waitUntil(lambda: maker.choose_named("/test_robot:max_speed"), timeout=15000)  # listed once wished again
     maker.kind.setCurrentIndex(maker.kind.findData("get_param"))
     maker.sentence["en"].setText("the top speed")
     maker.block_id.setText("made_max_speed")
@@ -343,6 +361,16 @@ def test_the_filter_narrows_the_offers_and_a_parameter_is_named_and_set(qtbot, w
     qtbot.waitUntil(lambda: "top speed" in (drawn_preview(qtbot, maker) or {}).get("text", ""), timeout=10000)
 
 
+def test_the_robots_parameters_are_wished_while_the_maker_is_open_and_no_longer(qtbot, window, monkeypatch):
+    robot = window.robot()
+    wishes = []
+    monkeypatch.setattr(robot, "want_parameters", wishes.append)
+    maker = open_maker(qtbot, window)
+    qtbot.waitUntil(lambda: wishes == [True], timeout=5000)
+    maker.reject()
+    qtbot.waitUntil(lambda: wishes == [True, False], timeout=5000)
+
+
 def test_the_maker_opens_only_through_the_teachers_gate(qtbot, window):
     """In kiosk mode the gate asks for the teacher's PIN (tests/ui/test_kiosk_lock.py): a visitor makes no blocks."""
     held = []
@@ -392,3 +420,113 @@ def test_the_preview_shows_the_inputs_before_the_sentence_is_written_and_keeps_a
     assert any("must have each of %1 to %2" in problem for problem in maker.problems)
     qtbot.waitUntil(lambda: maker.preview.drawn is not None and not maker.preview.is_drawing, timeout=10000)
     assert drawn_preview(qtbot, maker)["inputs"] == ["sessionid", "requesttext"]
+
+
+def test_a_new_categorys_colour_is_chosen_with_a_swatch_and_written_to_the_pack(qtbot, german_window):
+    maker = open_maker(qtbot, german_window)
+    make_mmui_block(qtbot, maker, block_id="made_lamp_say")
+    first = maker.category.itemText(0)
+    maker.category.setCurrentIndex(0)  # a category of the profile's brings its colour
+    assert maker.colour.colour() == maker.category.itemData(0)[1] == maker.block().colour
+    colours = [maker.colour.box.itemText(row) for row in range(maker.colour.box.count())]
+    assert colours[0] == f"{first}  {maker.category.itemData(0)[1]}" and "Grün  #43a047" in colours
+    maker.category.setEditText("Lampen")  # a new category keeps the colour chosen
+    maker.colour.set_colour("#43a047")
+    assert maker.colour.swatch.styleSheet().startswith("background: #43a047")
+    assert maker.block().colour == "#43a047" and maker.problems == []
+    qtbot.waitUntil(lambda: run_js(qtbot, maker.preview, "(() => { const shown = Blockly.getMainWorkspace()"
+                                   ".getTopBlocks(false); return shown.length ? shown[0].getColour() : ''; })()")
+                    == "#43a047", timeout=10000)
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_lamp_say" in german_window.editor.known_block_types, timeout=30000)
+    import yaml
+
+    toolbox = yaml.safe_load((user_packs_dir() / pack_id_for(german_window.profile) / "toolbox.yaml").read_text())
+    assert [(category["name"], category["colour"]) for category in toolbox["categories"]] == [
+        ({"en": "Lampen", "de": "Lampen"}, "#43a047")]
+
+
+EDIT_ITEM = "Blockly.ContextMenuRegistry.registry.getItem('rocklyEditMadeBlock')"
+
+
+def test_a_made_block_opens_again_from_its_menu_is_changed_and_the_program_using_it_keeps_working(qtbot, window):
+    maker = open_maker(qtbot, window)
+    make_mmui_block(qtbot, maker)
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_say" in window.editor.known_block_types, timeout=30000)
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(stack(
+        block("made_say", inputs={"sessionid": text("9"), "requesttext": text("hi")}, id="say"),
+        block("hobbit_wait", inputs={"seconds": number(0.05)}, id="wait")))})
+    qtbot.waitUntil(lambda: "made_say" in str(window.editor.workspace), timeout=10000)
+    shown = run_js(qtbot, window.editor, f"""(() => {{ const ws = Blockly.getMainWorkspace();
+        return [{EDIT_ITEM}.preconditionFn({{block: ws.getBlockById('say')}}),
+                {EDIT_ITEM}.preconditionFn({{block: ws.getBlockById('wait')}}),
+                {EDIT_ITEM}.displayText()]; }})()""")
+    assert shown == ["enabled", "hidden", "Edit this block…"]
+    run_js(qtbot, window.editor, f"{EDIT_ITEM}.callback({{block: Blockly.getMainWorkspace().getBlockById('say')}})")
+    maker = the_maker(qtbot, window)
+    assert maker.editing == pack_id_for(window.profile) and maker.windowTitle() == "Change the block made_say"
+    assert maker.block_id.text() == "made_say" and maker.block_id.isReadOnly()
+    assert maker.interface.text() == "/MMUI" and maker.sentence["en"].text() == "ask %1 to say %2"
+    assert [(entry.name, entry.default) for entry in maker.block().inputs] == [("sessionid", "7"),
+                                                                               ("requesttext", "hello")]
+    assert maker.block().fixed == {"params": [{"name": "type", "value": "D_PLAIN"},
+                                              {"name": "text", "value": "made by hand"}]}
+    assert maker.problems == [] and not maker.warning_label.isVisibleTo(maker)
+
+    maker.fields.set_use("requestText", "fixed", "bye")  # an input the open program fills goes away
+    assert maker.warning_label.isVisibleTo(maker) and "requestText" in maker.warning_label.text()
+    maker.sentence["en"].setText("let %1 speak")
+    maker.colour.set_colour("#d64541")
+    assert maker.problems == []
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: window.findChild(BlockMakerDialog) is None or not window.findChild(
+        BlockMakerDialog).isVisible(), timeout=10000)
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "(() => { const b = Blockly.getMainWorkspace()"
+                                   ".getBlockById('say'); return b ? b.toString() : ''; })()").startswith("let"),
+                    timeout=30000)
+    kept = run_js(qtbot, window.editor, "Blockly.getMainWorkspace().getBlockById('say')"
+                                        ".getInputTargetBlock('sessionid').getFieldValue('TEXT')")
+    assert kept == "9" and run_js(qtbot, window.editor, "Blockly.getMainWorkspace().getBlockById('wait') !== null")
+    import yaml
+
+    pack = user_packs_dir() / pack_id_for(window.profile)
+    made = yaml.safe_load((pack / "made.yaml").read_text())["blocks"]
+    assert [(entry["id"], entry["sentence"], entry["colour"]) for entry in made] == [
+        ("made_say", {"en": "let %1 speak"}, "#d64541")]
+    assert yaml.safe_load((pack / "pack.yaml").read_text())["version"] == "1.0.1"
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=30000) as finished:
+        assert window.runs.run()
+    assert finished.args[0].outcome == "finished", finished.args[0].message
+
+
+def test_tools_edit_a_made_block_asks_which_and_says_when_there_is_none(qtbot, german_window, monkeypatch):
+    from PySide6.QtWidgets import QInputDialog, QMessageBox
+
+    told = []
+    monkeypatch.setattr(QMessageBox, "exec", lambda box: told.append(box.text()) or 0)
+    edit = next(action for action in german_window.findChildren(QAction)
+                if action.objectName() == "action_edit_made_block")
+    assert edit.text() == "Gebauten Block &ändern…"
+    edit.trigger()
+    assert told == ["Für diesen Roboter wurde noch kein Block gebaut (Werkzeuge → Block bauen…)."]
+    maker = open_maker(qtbot, german_window)
+    make_mmui_block(qtbot, maker, "made_sag", "ask %1 to say %2", "frag %1 und sag %2")
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_sag" in german_window.editor.known_block_types, timeout=30000)
+    asked = []
+    monkeypatch.setattr(QInputDialog, "getItem", lambda *args: asked.append(args[3]) or ("made_sag", True))
+    edit.trigger()
+    assert asked == [["made_sag"]]
+    maker = the_maker(qtbot, german_window)
+    assert maker.windowTitle() == "Den Block made_sag ändern" and maker.save_button.text() == "Änderungen &speichern"
+    assert maker.sentence["de"].text() == "frag %1 und sag %2"
+
+
+def test_the_suggested_block_id_follows_the_offer_chosen_until_the_person_types_one(qtbot, window):
+    maker = open_maker(qtbot, window)
+    assert maker.focusWidget() is maker.offer_filter and maker.interface.text() == ""  # nothing chosen by itself
+    assert maker.choose_named("/odom") and maker.block_id.text() == "made_odom"
+    assert maker.choose_named("/MMUI") and maker.block_id.text() == "made_mmui"
+    maker.block_id.setText("made_say")
+    assert maker.choose_named("/odom") and maker.block_id.text() == "made_say"

@@ -438,3 +438,26 @@ def test_the_monitor_says_when_the_byte_budget_cut_a_topics_history(store, make_
     assert len(labels) == LIST_LIMIT + 1 and str((1 << 20) - LIST_LIMIT) in labels[-1]  # … and "N more"
     monitor.select_topic("/odom")
     assert monitor.history_note.isHidden()
+
+
+def test_the_robots_services_and_actions_are_listed_under_the_topics_filtered_with_them(qtbot, store):
+    offers = [("action", "/move_base", "move_base_msgs/MoveBaseAction"), ("service", "/MMUI", "hobbit_msgs/Request")]
+    monitor = TopicMonitor(store, graph=lambda: [], offers=lambda: offers)
+    qtbot.addWidget(monitor)
+    monitor.show()
+    qtbot.waitExposed(monitor)
+    assert monitor.interfaces.isVisible() and monitor.interfaces.title.text() == "Services and actions: 2"
+    assert monitor.interfaces.names() == [("/MMUI", "service"), ("/move_base", "action")]
+    assert monitor.interfaces.tree.topLevelItem(0).text(0) == "Service"
+    monitor.filter_edit.setText("MoveBase")
+    shown = [item.text(1) for item in (monitor.interfaces.tree.topLevelItem(row) for row in range(2))
+             if not item.isHidden()]
+    assert shown == ["/move_base"]
+    with qtbot.waitSignal(monitor.sig_make_block_requested) as asked:
+        monitor.interfaces.menu("/move_base", "action").actions()[0].trigger()
+    assert asked.args == ["/move_base", "action"]
+
+
+def test_without_services_and_actions_given_the_monitor_lists_topics_only(make_monitor):
+    monitor = make_monitor(shown=True)
+    assert not monitor.interfaces.isVisible()

@@ -166,7 +166,9 @@ def toolbox_entry(block: MadeBlock) -> dict:
 
 
 def python_preview(block: MadeBlock) -> str:
-    """The Python a new block becomes, every input at its default (``None`` without one)."""
-    defaults = {entry.name: repr(entry.default) for entry in block.inputs}
+    """The Python a new block becomes, every input at its default (without one, the value its toolbox
+    entry's shadow starts with: ``''``, ``0``, ``False``)."""
+    defaults = {entry.name: repr(entry.default if entry.default is not None else _SHADOWS[entry.kind][2])
+                for entry in block.inputs}
     defaults["while_waiting"] = "None"
     return string.Formatter().vformat(python_template(block), (), defaults)

@@ -56,6 +56,7 @@ def block_problems(block: MadeBlock, profile, pack=None) -> list:
     problems += _sentence_problems(block)
     if not _COLOUR.fullmatch(str(block.colour or "")):
         problems.append(app_local_text("pack_colour_bad", colour=block.colour))
+    problems += _unwritable_texts(block)
     if not any(str(name).strip() for name in (block.category or {}).values()):
         problems.append(app_local_text("pack_category_missing"))
     return problems
@@ -176,6 +177,28 @@ def _range_problems(entry) -> list:
 
 def _is_number(value) -> bool:
     return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+
+
+def _texts_of(value):
+    """Every text in ``value`` (a text, or mappings and lists holding texts)."""
+    if isinstance(value, str):
+        yield value
+    elif isinstance(value, dict):
+        for item in value.values():
+            yield from _texts_of(item)
+    elif isinstance(value, (list, tuple)):
+        for item in value:
+            yield from _texts_of(item)
+
+
+def _unwritable_texts(block) -> list:
+    """A text with half a character (a lone surrogate: bytes a command line could not decode) cannot go into
+    a UTF-8 file; said instead of failing half-way through the write."""
+    texts = _texts_of([block.sentence, block.tooltip, block.category, block.fixed, block.interface,
+                       [entry.default for entry in block.inputs]])
+    broken = [text for text in texts if any("\ud800" <= char <= "\udfff" for char in text)]
+    return [app_local_text("pack_text_broken", text=broken[0].encode("utf-8", "backslashreplace").decode("ascii"))
+            ] if broken else []
 
 
 def _sentence_problems(block) -> list:

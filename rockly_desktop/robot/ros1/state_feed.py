@@ -2,7 +2,8 @@
 
 A thread asks the master once a second which topics exist (with their types and
 publisher counts: the others' and Rockly's own apart), which services (with their types, asked of
-each server once), actions and parameters, and subscribes to new topics through the shared RosGraph; rospy's
+each server once), actions and parameters (only while ``want_parameters`` wishes them), and subscribes
+to new topics through the shared RosGraph; rospy's
 callback threads then record every message, undecoded (the store decodes what is read).
 Widgets read the store, never rospy.
 """
@@ -31,6 +32,7 @@ class RosStateFeed:
         self._typed_services = []
         self._actions = []
         self._parameters = []
+        self._parameters_wanted = threading.Event()
         self._stopped = threading.Event()
         self._thread = threading.Thread(target=self._poll, name="rockly-ros-graph", daemon=True)
         self._thread.start()
@@ -60,6 +62,14 @@ class RosStateFeed:
         """Names on the parameter server (not ROS's own), as of the last poll."""
         return list(self._parameters)
 
+    def want_parameters(self, wanted: bool):
+        """Ask the master for its parameter names from now on (``wanted``), or no more (and forget them)."""
+        if wanted:
+            self._parameters_wanted.set()
+        else:
+            self._parameters_wanted.clear()
+            self._parameters = []
+
     def stop(self):
         """Stop watching the graph (subscriptions stay with the shared RosGraph)."""
         self._stopped.set()
@@ -84,7 +94,10 @@ class RosStateFeed:
                     for topic, msg_type in types.items():
                         self._followed.follow(topic, msg_type)
                     self._actions = graph_actions(types)
-                    self._parameters = parameter_names(uri)
+                    if self._parameters_wanted.is_set():
+                        names = parameter_names(uri)
+                        if self._parameters_wanted.is_set():  # not unwished meanwhile
+                            self._parameters = names
                     self._typed_services = service_types.typed(
                         name for name, nodes in services if me not in nodes and not name.endswith(ROS_OWN_SERVICES))
                 except Exception as error:

@@ -2,7 +2,9 @@
 
 A thread asks the helper once a second for the graph (topics with their types and publisher
 counts, services, action servers), every PARAMETER_POLL_SECONDS for the nodes' parameters (each
-node's answer bounded by PARAMETER_ANSWER_SECONDS), and subscribes to new topics through the shared Ros2Graph;
+node's answer bounded by PARAMETER_ANSWER_SECONDS) but only while ``want_parameters`` wishes them (every
+node's ``list_parameters`` is a service call: only the block maker needs them), and subscribes to new topics
+through the shared Ros2Graph;
 the helper's messages are recorded as they come. Widgets read the store, never the helper.
 """
 import logging
@@ -28,6 +30,7 @@ class Ros2StateFeed:
         self._followed = FollowedTopics(store, lambda topic, msg_type: ros_graph.topic(topic, msg_type).raw_callbacks)
         self._graph = {"topics": [], "own": {}, "services": [], "actions": []}
         self._parameters = []
+        self._parameters_wanted = threading.Event()
         self._stopped = threading.Event()
         self._thread = threading.Thread(target=self._poll, name="rockly-ros2-graph", daemon=True)
         self._thread.start()
@@ -61,6 +64,14 @@ class Ros2StateFeed:
         """``node:param`` of the graph's nodes' parameters, as of the last parameter poll."""
         return list(self._parameters)
 
+    def want_parameters(self, wanted: bool):
+        """Ask the nodes for their parameters from now on (``wanted``), or no more (and forget them)."""
+        if wanted:
+            self._parameters_wanted.set()
+        else:
+            self._parameters_wanted.clear()
+            self._parameters = []
+
     def stop(self):
         """Stop watching the graph (subscriptions stay with the shared Ros2Graph)."""
         self._stopped.set()
@@ -74,10 +85,13 @@ class Ros2StateFeed:
                 for topic, msg_type, count in self.graph_topics():
                     if count:
                         self._followed.follow(topic, msg_type)
-                if time.monotonic() - parameters_asked >= PARAMETER_POLL_SECONDS:
+                if not self._parameters_wanted.is_set():
+                    parameters_asked = 0.0  # asked at once when wished again
+                elif time.monotonic() - parameters_asked >= PARAMETER_POLL_SECONDS:
                     parameters_asked = time.monotonic()
-                    self._parameters = helper.call("parameters", PARAMETER_ANSWER_SECONDS,
-                                                   timeout=PARAMETER_ANSWER_SECONDS + 5.0)
+                    names = helper.call("parameters", PARAMETER_ANSWER_SECONDS, timeout=PARAMETER_ANSWER_SECONDS + 5.0)
+                    if self._parameters_wanted.is_set():  # not unwished meanwhile
+                        self._parameters = names
             except Exception as error:
                 log.debug("reading the ROS 2 graph failed: %s", error)
             self._stopped.wait(POLL_SECONDS)

@@ -65,6 +65,9 @@ class SimulatedRobot:
     def follow_graph(self):
         """Nothing to start: the simulated world fills ``state`` from the beginning."""
 
+    def want_parameters(self, wanted: bool):
+        """Nothing to ask: the simulated world's parameters are read where they are."""
+
     def status(self):
         """A simulator in this process has no connection to lose."""
         return None

@@ -98,6 +98,10 @@ class FieldTable(QTableWidget):
             self.blockSignals(False)
         self.sig_changed.emit()
 
+    def kind_of(self, path: str) -> str:
+        """The kind of value of the field ``path`` (``number``, ``text``, ...), "" when it is not shown."""
+        return next((entry.kind for entry in self._fields if entry.path == path), "")
+
     def _use_changed(self, row: int):
         self._enable(row)
         self._number_places()

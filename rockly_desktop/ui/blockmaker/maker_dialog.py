@@ -35,9 +35,11 @@ from rockly_desktop.profiles.packs.interfaces import fields_of_block_kind, inter
 from rockly_desktop.profiles.packs.making import save_block
 from rockly_desktop.profiles.packs.spec import COMPARISONS, INTERFACE_KINDS, OUTCOME, BlockInput, MadeBlock
 from rockly_desktop.profiles.packs.validation import BlockMakerError, block_problems, sentence_places
+from rockly_desktop.ui.blockmaker.colour_choice import ColourChoice
+from rockly_desktop.ui.blockmaker.editing import OFFER_KIND, PackBeingEdited, value_text
 from rockly_desktop.ui.blockmaker.field_table import FieldTable
 from rockly_desktop.ui.blockmaker.learning import FieldLearning
-from rockly_desktop.ui.blockmaker.offers import KINDS_OF, Offer, known_offers, robot_offers
+from rockly_desktop.ui.blockmaker.offers import KINDS_OF, Offer, global_name, known_offers, robot_offers
 from rockly_desktop.ui.blockmaker.preview import BlockPreview
 from rockly_desktop.ui.plain_text import plain_label
 from rockly_desktop.ui.texts import said_in, tr
@@ -91,6 +93,10 @@ class BlockMakerDialog(QDialog):
         self.language = language
         self.packs_folder = packs_folder
         self.problems = []
+        self.editing = ""  # the pack of the made block shown again to change ("": a new block)
+        self._edited_pack = None
+        self._used_inputs = set()  # the fields (or values) whose inputs the open program fills, as the table names them
+        self._suggested_id = ""  # the block id the last offer chosen suggested
         self._updating = False
         self._offer = None
         self._not_learnt = {}  # offer -> why the robot did not say its fields (until it is chosen again)
@@ -120,6 +126,10 @@ class BlockMakerDialog(QDialog):
         self.problem_label = plain_label(parent=self, objectName="maker_problems")
         self.problem_label.setWordWrap(True)
         self.problem_label.setStyleSheet("color: #b00020;")
+        self.warning_label = plain_label(parent=self, objectName="maker_warning")
+        self.warning_label.setWordWrap(True)
+        self.warning_label.setStyleSheet("color: #8a4b00;")
+        self.warning_label.hide()
         self.buttons = QDialogButtonBox(self)
         self.save_button = QPushButton(tr("maker_save", language), self)
         self.save_button.setObjectName("maker_save")
@@ -134,7 +144,8 @@ class BlockMakerDialog(QDialog):
         self.try_button.clicked.connect(lambda: self.sig_try_requested.emit(self.preview))
         self.buttons.rejected.connect(self.reject)
         self._lay_out()
-        self.update_block()
+        self.offer_filter.setFocus()  # typing finds an offer; a focused list would choose its first by itself
+        self._kind_changed()  # nothing chosen yet: only what every block has is shown
 
     # -- building
 
@@ -169,9 +180,13 @@ class BlockMakerDialog(QDialog):
         self.category = QComboBox(self)
         self.category.setObjectName("maker_category")
         self.category.setEditable(True)
-        for name, english, colour in category_choices(self.profile, language):
+        categories = category_choices(self.profile, language)
+        for name, english, colour in categories:
             self.category.addItem(name, (english, colour or FALLBACK_COLOUR))
-        self.category.currentTextChanged.connect(self.update_block)
+        self.category.currentTextChanged.connect(self._category_changed)
+        self.colour = ColourChoice([(name, colour) for name, _english, colour in categories], language, self)
+        self.colour.set_colour(self.category.currentData()[1] if categories else FALLBACK_COLOUR)
+        self.colour.sig_changed.connect(self.update_block)
         self.block_id = self._edit("maker_block_id")
         form = QFormLayout()
         for key, widget in (("maker_interface", self.interface), ("maker_interface_type", self.interface_type),
@@ -180,9 +195,10 @@ class BlockMakerDialog(QDialog):
                             ("maker_while_waiting", self.while_waiting), ("maker_sentence_en", self.sentence["en"]),
                             ("maker_sentence_de", self.sentence["de"]), ("maker_tooltip_en", self.tooltip["en"]),
                             ("maker_tooltip_de", self.tooltip["de"]), ("maker_category", self.category),
-                            ("maker_block_id", self.block_id)):
+                            ("maker_colour", self.colour), ("maker_block_id", self.block_id)):
             form.addRow(tr(key, language), widget)
-            widget.setAccessibleName(tr(key, language).rstrip(": "))  # a screen reader names it as the form does
+            named = self.colour.box if widget is self.colour else widget
+            named.setAccessibleName(tr(key, language).rstrip(": "))  # a screen reader names it as the form does
         self.sentence["en"].setPlaceholderText(tr("maker_sentence_hint", language))
         self.form = form
 
@@ -192,6 +208,13 @@ class BlockMakerDialog(QDialog):
         edit.textChanged.connect(self.update_block)
         return edit
 
+    def _category_changed(self, shown: str):
+        """A category of the profile's brings its colour (the person may choose another); a new one keeps it."""
+        index = self.category.findText(shown.strip())
+        if index >= 0:
+            self.colour.set_colour(self.category.itemData(index)[1])  # updates the block through sig_changed
+        self.update_block()
+
     def _lay_out(self):
         right = QWidget(self)
         column = QVBoxLayout(right)
@@ -200,6 +223,7 @@ class BlockMakerDialog(QDialog):
         column.addWidget(self.fields_note)
         column.addWidget(self.fields, 1)
         column.addWidget(self.problem_label)
+        column.addWidget(self.warning_label)
         shown = QHBoxLayout()
         shown.addWidget(self.preview, 1)
         shown.addWidget(self.python, 1)
@@ -264,8 +288,9 @@ class BlockMakerDialog(QDialog):
             self.kind.clear()
             for kind in KINDS_OF[offer.kind]:
                 self.kind.addItem(tr(f"maker_kind_{kind}", self.language), kind)
-            if offer.name and not self.block_id.text():
-                self.block_id.setText(suggested_id(offer.name))
+            if offer.name and self.block_id.text() in ("", self._suggested_id):  # an id the person typed stays
+                self._suggested_id = suggested_id(offer.name)
+                self.block_id.setText(self._suggested_id)
         finally:
             self._updating = False
         self._kind_changed()
@@ -276,15 +301,22 @@ class BlockMakerDialog(QDialog):
             item = self.offers.item(row)
             item.setHidden(not all(word in item.text().lower() for word in words))
 
-    def choose_named(self, name: str) -> bool:
-        """Choose the offer called ``name`` in the list (the Topic monitor's "Make a block from this…")."""
-        for row in range(self.offers.count()):
-            if self.offers.item(row).data(Qt.ItemDataRole.UserRole).name == name:
-                self.offers.setCurrentRow(row)
-                return True
+    def choose_named(self, name: str, kind: str = "") -> bool:
+        """Choose the offer called ``name`` (of ``kind``, "" for any) in the list (the Topic monitor's "Make a
+        block from this…"); ``/move_base`` as the graph names it is the ``move_base`` a profile declares."""
+        for exact in (True, False):
+            for row in range(self.offers.count()):
+                offer = self.offers.item(row).data(Qt.ItemDataRole.UserRole)
+                same = offer.name == name if exact else (bool(offer.name)
+                                                         and global_name(offer.name) == global_name(name))
+                if same and kind in ("", offer.kind):
+                    self.offers.setCurrentRow(row)
+                    return True
         return False
 
     def _kind_changed(self, *_):
+        if self._updating:  # the kinds are being listed anew (``choose`` shows the new first kind once after)
+            return
         kind = self.kind.currentData() or ""
         fields = fields_of_block_kind(self.profile, kind, self.interface_type.text().strip()) if kind else []
         self._updating = True
@@ -342,6 +374,49 @@ class BlockMakerDialog(QDialog):
         response = interface_fields(self.profile, self.interface_type.text().strip(), "srv", "out")
         return [entry.path for entry in response if entry.kind in ("number", "text", "yes_no")]
 
+    def edit(self, made, pack_id: str, used_inputs=()):
+        """Show the saved block ``made`` of the pack ``pack_id`` to change it: saving replaces it in that pack
+        under the same id (programs name it by its id); ``used_inputs`` are the inputs the open program
+        fills, and taking one of them away is said before it is saved."""
+        self.editing = pack_id
+        self._edited_pack = PackBeingEdited.of(self.profile, pack_id, made.id)
+        self._used_inputs = {entry.field or entry.name for entry in made.inputs if entry.name in set(used_inputs)}
+        self.setWindowTitle(tr("maker_edit_title", self.language, block=made.id))
+        self.save_button.setText(tr("maker_save_changes", self.language))
+        self.block_id.setText(made.id)
+        self.block_id.setReadOnly(True)
+        self.block_id.setToolTip(tr("maker_block_id_kept", self.language))
+        offer = Offer(OFFER_KIND.get(made.kind, "topic"), made.interface, made.interface_type)
+        self.offers.blockSignals(True)  # the list shows it chosen (else the list's focus would choose its first)
+        try:
+            if not self.choose_named(made.interface, offer.kind):
+                self._list_offers([offer, *self._listed])
+                self.offers.setCurrentRow(0)
+        finally:
+            self.offers.blockSignals(False)
+        self.choose(offer)
+        self.kind.setCurrentIndex(max(0, self.kind.findData(made.kind)))
+        self._updating = True
+        try:
+            for entry in made.inputs:
+                if entry.field:
+                    self.fields.set_use(entry.field, "input", value_text(entry.default, entry.kind), entry.unit,
+                                        value_text(entry.minimum, "number"), value_text(entry.maximum, "number"))
+            for path, value in made.fixed.items():
+                self.fields.set_use(path, "fixed", value_text(value, self.fields.kind_of(path)))
+            for box, data in ((self.comparison, made.comparison), (self.result, made.result)):
+                box.setCurrentIndex(max(0, box.findData(data)))
+            self.read_field.setCurrentIndex(max(0, self.read_field.findText(made.read_field)))
+            self.while_waiting.setChecked(made.while_waiting)
+            for code in ("en", "de"):
+                self.sentence[code].setText(made.sentence.get(code, ""))
+                self.tooltip[code].setText(made.tooltip.get(code, ""))
+            self.category.setCurrentText(made.category.get(self.language) or made.category.get("en", ""))
+            self.colour.set_colour(made.colour)
+        finally:
+            self._updating = False
+        self.update_block()
+
     # -- the block
 
     def block(self) -> MadeBlock:
@@ -355,14 +430,14 @@ class BlockMakerDialog(QDialog):
             inputs = (BlockInput("value", "number"),)
         shown = self.category.currentText().strip()
         index = self.category.findText(shown)
-        english, colour = self.category.itemData(index) if index >= 0 else (shown, FALLBACK_COLOUR)
+        english = self.category.itemData(index)[0] if index >= 0 else shown
         category = {"en": english, self.language: shown} if shown else {}
         return MadeBlock(
             id=self.block_id.text().strip(), kind=kind, interface=self.interface.text().strip(),
             interface_type=self.interface_type.text().strip() if kind not in ("get_param", "set_param") else "",
             inputs=inputs, fixed=self.fields.fixed() if kind in FILLS_FIELDS else {},
             sentence={code: edit.text() for code, edit in self.sentence.items() if edit.text().strip()},
-            category=category, colour=colour,
+            category=category, colour=self.colour.colour(),
             tooltip={code: edit.text() for code, edit in self.tooltip.items() if edit.text().strip()},
             read_field=self.read_field.currentText() if kind in READS_FIELD else "",
             value_kind=read_kind if kind == "sensor_value" else "number",
@@ -375,9 +450,15 @@ class BlockMakerDialog(QDialog):
         if self._updating:
             return
         block = self.block()
-        self.problems = [said_in(problem, self.language) for problem in block_problems(block, self.profile)]
+        self.problems = [said_in(problem, self.language)
+                         for problem in block_problems(block, self.profile, self._edited_pack)] if block.kind else [
+            tr("maker_choose_first", self.language)]  # nothing chosen yet: no block to find fault with
         self.problem_label.setText("\n".join(self.problems))
         self.problem_label.setVisible(bool(self.problems))
+        dropped = sorted(self._used_inputs - {entry.field or entry.name for entry in block.inputs})
+        self.warning_label.setText(tr("maker_inputs_in_use", self.language, inputs=", ".join(dropped))
+                                   if dropped else "")
+        self.warning_label.setVisible(bool(dropped))
         self.save_button.setEnabled(not self.problems)
         self.try_button.setEnabled(not self.problems)
         self.python.setPlainText(python_preview(block) if block.kind else "")
@@ -388,7 +469,8 @@ class BlockMakerDialog(QDialog):
     def save(self):
         """Write the block into the profile's block pack; on a problem say it and write nothing."""
         try:
-            save_block(self.block(), self.profile, pack_id_for(self.profile), folder=self.packs_folder)
+            save_block(self.block(), self.profile, self.editing or pack_id_for(self.profile), folder=self.packs_folder,
+                       replace_block=bool(self.editing))
         except BlockMakerError as error:
             self.problems = [error.in_language(self.language)]
             self.problem_label.setText(self.problems[0])
@@ -399,15 +481,17 @@ class BlockMakerDialog(QDialog):
 
 
 
-def open_block_maker(profile, language: str, graph, parent, chosen: str = "", asker=None) -> BlockMakerDialog:
+def open_block_maker(profile, language: str, graph, parent, chosen: str = "", kind: str = "",
+                     asker=None) -> BlockMakerDialog:
     """Open the maker (not blocking) over ``parent`` for ``profile``, offering what the robot's live graph
     has (``graph()``: a ``LiveGraph``, read without waiting, again each second) and the profile declares,
-    then the types Rockly knows; with the offer named ``chosen`` chosen. ``asker``: see BlockMakerDialog."""
+    then the types Rockly knows; with the offer named ``chosen`` (of ``kind``, "" for any) chosen.
+    ``asker``: see BlockMakerDialog."""
     known = known_offers(profile)
     dialog = BlockMakerDialog(profile, language, robot_offers(profile, graph()) + known, parent, asker=asker)
     dialog.follow_graph(graph, known)
     dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose)
     if chosen:
-        dialog.choose_named(chosen)
+        dialog.choose_named(chosen, kind)
     dialog.open()
     return dialog

@@ -66,17 +66,17 @@ def robot_offers(profile, graph: LiveGraph = LiveGraph()) -> list:
             "service": dict(graph.services), "action": dict(graph.actions)}
     offers = []
     for kind, names in declared.items():
-        live_types = {_global(name): type_name for name, type_name in live[kind].items()}
-        offers += [Offer(kind, name, live_types.get(_global(name)) or type_name, _global(name) in live_types)
+        live_types = {global_name(name): type_name for name, type_name in live[kind].items()}
+        offers += [Offer(kind, name, live_types.get(global_name(name)) or type_name, global_name(name) in live_types)
                    for name, type_name in names.items()]
-        known = {_global(name) for name in names}  # "move_base" declared is "/move_base" live
+        known = {global_name(name) for name in names}  # "move_base" declared is "/move_base" live
         offers += [Offer(kind, name, type_name, True) for name, type_name in live[kind].items()
-                   if _global(name) not in known]
+                   if global_name(name) not in known]
     offers += [Offer("parameter", name, "", True) for name in graph.parameters]
     return _sorted(offers)
 
 
-def _global(name: str) -> str:
+def global_name(name: str) -> str:
     """A ROS name as the graph lists it: ``move_base`` → ``/move_base``."""
     return "/" + name.strip("/")
 

@@ -7,7 +7,8 @@ only the cells whose text changed, and the tree is updated in place (so it keeps
 expanded branches) and not at all while the topic's newest message is the same object.
 A numeric field can be dragged to a plot ("topic|field.path") or double-clicked to
 ask for one (``sig_plot_requested``). When the store's byte budget cut the selected topic's
-history (a camera's images), a line under its message says so.
+history (a camera's images), a line under its message says so. Under the table, the robot's services and
+action servers (``interface_list``) when the window gives them; each row's menu offers "Make a block from this…".
 """
 import math
 import time
@@ -32,6 +33,7 @@ from PySide6.QtWidgets import (
 )
 
 from rockly_desktop.core.topic_rows import topic_entries
+from rockly_desktop.ui.docks.interface_list import InterfaceList
 from rockly_desktop.ui.docks.topic_models import (
     AGE,
     FILTER_ROLE,
@@ -53,17 +55,19 @@ _NOTHING_SHOWN = object()  # "nothing shown yet": never the same object as a mes
 
 class TopicMonitor(QWidget):
     """The Topic monitor panel over ``store``; ``graph()`` -> [(topic, type, publishers)] lists silent topics too,
-    ``own()`` -> {topic: Rockly's own publishers} counts those in."""
+    ``own()`` -> {topic: Rockly's own publishers} counts those in, ``offers()`` -> [("service" or "action", name,
+    type)] lists the robot's services and actions under the table."""
 
     sig_plot_requested = Signal(str, str)  # topic, field path of a numeric field
-    sig_make_block_requested = Signal(str)  # topic: its context menu's "Make a block from this…"
+    sig_make_block_requested = Signal(str, str)  # name, "topic"/"service"/"action": "Make a block from this…"
 
-    def __init__(self, store, graph=None, language: str = "en", parent=None, own=None):
+    def __init__(self, store, graph=None, language: str = "en", parent=None, own=None, offers=None):
         super().__init__(parent)
         self.setObjectName("topic_monitor")
         self._store = store
         self._graph = graph
         self._own = own
+        self._offers = offers
         self._graph_topics = []
         self._own_publishers = {}
         self._graph_time = -math.inf
@@ -76,9 +80,19 @@ class TopicMonitor(QWidget):
         bar = self._build_bar()
         self._build_table()
         message_pane = self._build_message_pane()
+        self.interfaces = InterfaceList(language, self)
+        self.interfaces.sig_make_block_requested.connect(self.sig_make_block_requested)
+        self.interfaces.setVisible(offers is not None)
+        lists = QSplitter(Qt.Orientation.Vertical, self)
+        lists.setChildrenCollapsible(False)
+        lists.addWidget(self.table)
+        lists.addWidget(self.interfaces)
+        lists.setStretchFactor(0, 3)
+        lists.setStretchFactor(1, 1)
+        lists.setSizes([240, 100])  # the topics keep most of a small dock
         self.splitter = QSplitter(Qt.Orientation.Horizontal, self)
         self.splitter.setChildrenCollapsible(False)
-        self.splitter.addWidget(self.table)
+        self.splitter.addWidget(lists)
         self.splitter.addWidget(message_pane)
         self.splitter.setStretchFactor(0, 3)
         self.splitter.setStretchFactor(1, 2)
@@ -284,6 +298,9 @@ class TopicMonitor(QWidget):
             try:
                 self._graph_topics = list(self._graph())
                 self._own_publishers = dict(self._own()) if self._own is not None else {}
+                if self._offers is not None:
+                    self.interfaces.show_offers(self._offers())
+                    self.interfaces.filter(self.filter_edit.text())
             except Exception:
                 pass
         entries = topic_entries(infos, None if self._graph is None else self._graph_topics, self._own_publishers)
@@ -374,6 +391,7 @@ class TopicMonitor(QWidget):
 
     def _filter_changed(self, text):
         self.proxy.setFilterFixedString(text.strip())
+        self.interfaces.filter(text)
         self._show_count()
         if self._topic is not None and not self.table.selectionModel().hasSelection():
             self._select_row(self._topic)
@@ -382,7 +400,8 @@ class TopicMonitor(QWidget):
         """The context menu of ``topic``'s row: make a block from it."""
         menu = QMenu(self)
         menu.setObjectName("topic_menu")
-        menu.addAction(tr("make_block_from_this", self._language), lambda: self.sig_make_block_requested.emit(topic))
+        menu.addAction(tr("make_block_from_this", self._language),
+                       lambda: self.sig_make_block_requested.emit(topic, "topic"))
         return menu
 
     def _topic_menu(self, position):

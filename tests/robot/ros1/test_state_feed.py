@@ -24,3 +24,30 @@ def test_panel_fields_come_from_the_robot(ros_robot, hobbit):
     eventually(lambda: ros_robot.state.value("/head/emo", "data") == "CONCERNED")
     eventually(lambda: ros_robot.state.value("/battery_state", "percentage") is not None)
     assert 0 < ros_robot.state.value("/battery_state", "percentage") <= 1
+
+
+def test_the_parameter_server_is_asked_for_its_names_only_while_they_are_wished(ros_robot, monkeypatch):
+    import rospy
+
+    from rockly_desktop.robot.ros1 import state_feed
+
+    polls, asks = [], []
+    ask_master, parameter_names = state_feed.ask_master, state_feed.parameter_names
+    monkeypatch.setattr(state_feed, "ask_master", lambda uri, method, *args: polls.append(method)
+                        or ask_master(uri, method, *args))
+    monkeypatch.setattr(state_feed, "parameter_names", lambda uri: asks.append(uri) or parameter_names(uri))
+    rospy.set_param("/wished/volume", 3)
+    ros_robot.want_parameters(False)
+    ros_robot.follow_graph()
+    eventually(lambda: polls.count("getSystemState") >= 3, timeout=30)
+    assert asks == [] and ros_robot.graph_parameters() == []
+
+    ros_robot.want_parameters(True)
+    eventually(lambda: "/wished/volume" in ros_robot.graph_parameters(), timeout=30)
+    ros_robot.want_parameters(False)
+    assert ros_robot.graph_parameters() == []
+    polled = polls.count("getSystemState")
+    eventually(lambda: polls.count("getSystemState") >= polled + 2, timeout=30)  # a poll on its way may end first
+    asked = len(asks)
+    eventually(lambda: polls.count("getSystemState") >= polled + 5, timeout=30)
+    assert len(asks) == asked
