@@ -3,7 +3,9 @@
 ``save_block`` checks the block, then writes the whole pack anew into a hidden folder beside
 it, reads that back as a pack and merges it into the profile (so a pack that would not load
 is never installed), and only then puts it in place of the old folder. A failure at any step
-leaves the old pack as it was.
+leaves the old pack as it was. The definitions of the types the block uses that Rockly knows only
+because the robot said them go into the pack's ``messages`` folder with it, so the pack works after a
+restart and on another computer, with nothing publishing them.
 """
 import os
 import re
@@ -25,10 +27,12 @@ from rockly_desktop.profiles.packs.pack import (
     load_pack,
     user_packs_dir,
 )
+from rockly_desktop.profiles.packs.spec import INTERFACE_KINDS
 from rockly_desktop.profiles.packs.validation import IDENTIFIER, BlockMakerError, check_block
 from rockly_desktop.profiles.yaml_files import read_yaml_mapping
 
 FIRST_VERSION = "1.0.0"
+MESSAGES_FOLDER = "messages"
 _PATCH = re.compile(r"^(\d+)\.(\d+)\.(\d+)$")
 
 
@@ -117,7 +121,19 @@ def save_block(block, profile, pack_id: str, *, folder=None, pack_name=None, ver
         existing = replace(existing, blocks=tuple(spec for spec in existing.blocks if spec.type != block.id))
     check_block(block, base, existing)
     files = _pack_files(block, profile, existing, pack_id, pack_name, version)
+    learnt = learnt_definition_files(block, base)
+    if learnt:
+        manifest = files[PACK_MANIFEST]
+        manifest.setdefault("messages", MESSAGES_FOLDER)
+        files.update({f"{manifest['messages']}/{name}": text for name, text in learnt.items()})
     return _write_pack(target, files, base, existing)
+
+
+def learnt_definition_files(block, profile) -> dict:
+    """``{"package/kind/Name.kind": text}`` of the type ``block`` uses and the types nested in it that ``profile``
+    (without the block's pack) knows only because the robot said them (see ``DefinitionCatalog.learnt_files``)."""
+    kind = INTERFACE_KINDS.get(block.kind)
+    return profile.ros_types.learnt_files(block.interface_type, kind) if kind and block.interface_type else {}
 
 
 def _pack_files(block, profile, existing, pack_id, pack_name, version) -> dict:
@@ -151,14 +167,16 @@ def _pack_files(block, profile, existing, pack_id, pack_name, version) -> dict:
 
 
 def _write_pack(target: Path, files: dict, profile, existing):
-    """Write ``files`` as the pack folder ``target`` all-or-nothing; the new Pack."""
+    """Write ``files`` (``{relative path: data for YAML, or a definition's text}``) as the pack folder ``target``
+    all-or-nothing; the new Pack."""
     target.parent.mkdir(parents=True, exist_ok=True)
     staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.new-", dir=target.parent))
     try:
         if existing is not None:
             shutil.copytree(target, staging, dirs_exist_ok=True)
         for name, data in files.items():
-            (staging / name).write_text(dump_yaml(data), encoding="utf-8")
+            (staging / name).parent.mkdir(parents=True, exist_ok=True)
+            (staging / name).write_text(data if isinstance(data, str) else dump_yaml(data), encoding="utf-8")
         try:
             pack = load_pack(staging)
             with_pack(profile, pack)
