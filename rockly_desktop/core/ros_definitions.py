@@ -261,10 +261,11 @@ class DefinitionCatalog:
                 pending += [(inner, full.split("/")[0]) for inner in declarations]
         return text, nested
 
-    def learnt_files(self, type_name: str, kind: str = "msg") -> dict:
+    def learnt_files(self, type_name: str, kind: str = "msg", into=None) -> dict:
         """``{"package/kind/Name.kind": text}`` of ``type_name`` and the types nested in it that this catalogue
-        knows only because a robot said them (``learn_definition``): no file defines them and no folder
-        holds their package (a file of it there would hide that folder's others). {} for a type not found."""
+        knows only because a robot said them (``learn_definition``): no file defines them and no folder but
+        ``into`` (the one they are to be written to) holds their package (a new file of it elsewhere would hide
+        that folder's others). {} for a type not found."""
         said = self.said(type_name, kind)
         if said is None:
             return {}
@@ -273,8 +274,9 @@ class DefinitionCatalog:
             name = name[:-len("Action")]
         files = {}
         for key in [(package, name, kind), *((*full.split("/", 1), "msg") for full in said[1])]:
+            folder = self._package_dir(key[0])
             if self._definition(*key) is not None and self._files.get(key) is None and key in _LEARNT \
-                    and self._package_dir(key[0]) is None:
+                    and (folder is None or (into is not None and folder.parent == Path(into))):
                 files[f"{key[0]}/{key[2]}/{key[1]}.{key[2]}"] = _LEARNT[key]
         return files
 

@@ -68,7 +68,8 @@ def new_manifest(pack_id: str, profile, name=None) -> dict:
 
 
 def _base_profile(profile, pack_id):
-    """``profile`` without the pack ``pack_id`` (it is merged again as the new pack)."""
+    """``profile`` without the blocks of the pack ``pack_id`` (it is merged again as the new pack); the
+    types of the pack's definitions stay known, as the new pack keeps them."""
     if pack_id not in {pack.id for pack in getattr(profile, "packs", ())}:
         return profile
     types = next(pack.block_types for pack in profile.packs if pack.id == pack_id)
@@ -76,7 +77,8 @@ def _base_profile(profile, pack_id):
                   if "contents" in category else category for category in profile.toolbox_categories]
     return replace(profile, blocks=tuple(spec for spec in profile.blocks if spec.type not in types),
                    toolbox_categories=[category for category in categories if category.get("contents", True)],
-                   packs=tuple(pack for pack in profile.packs if pack.id != pack_id))
+                   packs=tuple(replace(pack, block_types=frozenset(), interfaces={}) if pack.id == pack_id else pack
+                               for pack in profile.packs))
 
 
 def _category_name(category) -> str:
@@ -121,7 +123,7 @@ def save_block(block, profile, pack_id: str, *, folder=None, pack_name=None, ver
         existing = replace(existing, blocks=tuple(spec for spec in existing.blocks if spec.type != block.id))
     check_block(block, base, existing)
     files = _pack_files(block, profile, existing, pack_id, pack_name, version)
-    learnt = learnt_definition_files(block, base)
+    learnt = learnt_definition_files(block, base, existing.message_folder if existing is not None else None)
     if learnt:
         manifest = files[PACK_MANIFEST]
         manifest.setdefault("messages", MESSAGES_FOLDER)
@@ -129,11 +131,12 @@ def save_block(block, profile, pack_id: str, *, folder=None, pack_name=None, ver
     return _write_pack(target, files, base, existing)
 
 
-def learnt_definition_files(block, profile) -> dict:
+def learnt_definition_files(block, profile, into=None) -> dict:
     """``{"package/kind/Name.kind": text}`` of the type ``block`` uses and the types nested in it that ``profile``
-    (without the block's pack) knows only because the robot said them (see ``DefinitionCatalog.learnt_files``)."""
+    knows only because the robot said them, for the definitions folder ``into`` (the pack's, None for a new pack;
+    see ``DefinitionCatalog.learnt_files``)."""
     kind = INTERFACE_KINDS.get(block.kind)
-    return profile.ros_types.learnt_files(block.interface_type, kind) if kind and block.interface_type else {}
+    return profile.ros_types.learnt_files(block.interface_type, kind, into) if kind and block.interface_type else {}
 
 
 def _pack_files(block, profile, existing, pack_id, pack_name, version) -> dict:

@@ -2,9 +2,8 @@
 made by ``rockly blocks make`` from a plain rospy node whose type is generated at run time, the pack holds
 the definition files and validates; a new ``rockly run`` with nothing publishing the type (a command topic
 that only has a subscriber) publishes what the node decodes with its own class, and so does one on a clean
-data folder after export and import. A broken definition file names itself and costs only its own pack."""
+data folder after export and import."""
 import os
-import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -15,7 +14,10 @@ from program_builder import block, rockly_document, stack, text
 from ros_helpers import ros_environment
 from waiting import eventually
 
-from rockly_desktop.profiles.packs.pack import discover_packs
+from rockly_desktop.core import ros_definitions
+from rockly_desktop.profiles.packs.making import save_block
+from rockly_desktop.profiles.packs.spec import BlockInput, MadeBlock
+from rockly_desktop.robot.ros1.live_definitions import topic_definition
 
 REPO = Path(__file__).resolve().parents[3]
 GADGET_NODE = Path(__file__).parent / "ros1_gadget_node.py"
@@ -76,6 +78,12 @@ def test_a_pack_made_from_a_learnt_type_works_in_a_new_process_without_its_publi
     validated = rockly(ros_master, "profiles", "validate", made_pack)
     assert validated.returncode == 0 and "OK  block pack gadget_made" in validated.stdout, validated.stderr
 
+    more = rockly(ros_master, "blocks", "make", "--profile", "hobbit", "--pack", PACK, "--id", "gadget_name",
+                  "--kind", "sensor_value", "--interface", "/gadget/state", "--type", GADGET, "--read-field", "name",
+                  "--value-kind", "text", "--sentence-en", "the gadget's name", "--colour", "#4c97ff",
+                  "--category-en", "Gadget")  # no robot: the pack's own definitions say the fields
+    assert more.returncode == 0, more.stderr
+
     program = tmp_path / "gadget.rockly"
     program.write_text(rockly_document([stack(block("gadget_show", inputs={"name": text("after a restart")}))]))
     heard = shown_on_the_gadget(ros_master, program, "after a restart")
@@ -91,22 +99,27 @@ def test_a_pack_made_from_a_learnt_type_works_in_a_new_process_without_its_publi
     assert shown_on_the_gadget(ros_master, program, "on another laptop", data_home=clean)["brightness"] == 0.5
 
 
+def test_a_block_the_maker_saves_from_a_type_it_learnt_carries_the_type_into_a_new_run(
+        ros_master, registry, tmp_path, monkeypatch):
+    monkeypatch.setattr(ros_definitions, "_LEARNT", {})
+    publisher = gadget_node(ros_master)
+    try:
+        learnt = topic_definition(ros_master.uri, "/gadget/state")  # what the maker's learning asks
+    finally:
+        publisher.stop()
+    ros_definitions.learn_definition(GADGET, "msg", learnt.text, learnt.nested)  # and learns
+    made = MadeBlock(id="gadget_named", kind="publish", interface="/gadget/state", interface_type=GADGET,
+                     inputs=(BlockInput("name", "text", "name"),), fixed={"left_eye.open": True},
+                     sentence={"en": "name the gadget %1"}, category={"en": "Gadget"}, colour="#4c97ff")
+    pack = save_block(made, registry.get("hobbit"), PACK)  # as the maker's dialog saves
+    program = tmp_path / "named.rockly"
+    program.write_text(rockly_document([stack(block("gadget_named", inputs={"name": text("saved by the maker")}))]))
+    assert shown_on_the_gadget(ros_master, program, "saved by the maker")["brightness"] == 0.0
+    assert (pack.root / "messages" / "rockly_test_custom" / "msg" / "Gadget.msg").is_file()
+
+
 def test_a_type_rockly_does_not_know_without_a_robot_to_ask_is_a_clear_message_and_writes_nothing(ros_master):
     result = make_show_block(ros_master)
     assert result.returncode == 1
     assert f"Rockly does not know the type '{GADGET}'" in result.stderr and "--backend ros1" in result.stderr
     assert not (Path(os.environ["XDG_DATA_HOME"]) / "rockly" / "packs" / PACK).exists()
-
-
-def test_a_broken_definition_file_in_a_pack_names_itself_and_costs_nothing_else(ros_master, made_pack, tmp_path):
-    other = tmp_path / "packs"
-    shutil.copytree(made_pack, other / PACK)
-    broken = other / PACK / "messages" / "rockly_test_custom" / "msg" / "Eye.msg"
-    broken.write_text("float64 brightness\nbool\n")
-    packs, errors = discover_packs(other)
-    assert not packs and len(errors) == 1
-    assert str(broken) in str(errors[0]) and "line 2" in str(errors[0])
-    validated = rockly(ros_master, "profiles", "validate", other / PACK)
-    assert validated.returncode == 1 and str(broken) in validated.stderr
-    assert broken.read_text() == "float64 brightness\nbool\n"  # nothing of it is lost
-    assert set(discover_packs(made_pack.parent)[0]) == {PACK}  # the intact copy still loads
