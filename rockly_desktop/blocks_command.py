@@ -5,6 +5,7 @@
         --default speed=0.1 --unit speed=m/s --fixed angular.z=0 \\
         --sentence-en "drive at %1 m/s" --sentence-de "fahre mit %1 m/s" --colour "#4c97ff" \\
         --category-en "My blocks" --category-de "Meine Blöcke"
+        [--backend ros1 --master http://robot:11311]   (a type Rockly does not know is learnt from that robot)
     rockly blocks list [PACK]
     rockly blocks export PACK -o FILE.zip
     rockly blocks import FILE.zip [--replace]
@@ -17,12 +18,15 @@ import yaml
 
 from rockly_desktop.core.app_texts import app_local_text, app_text
 from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.core.ros_definitions import learn_definition
 from rockly_desktop.profiles.packs.archive import export_pack, import_pack
-from rockly_desktop.profiles.packs.interfaces import fields_of_block_kind
+from rockly_desktop.profiles.packs.interfaces import fields_of_block_kind, knows_type
 from rockly_desktop.profiles.packs.making import save_block
-from rockly_desktop.profiles.packs.spec import KINDS, BlockInput, MadeBlock
+from rockly_desktop.profiles.packs.spec import INTERFACE_KINDS, KINDS, BlockInput, MadeBlock
 from rockly_desktop.profiles.packs.validation import BlockMakerError
 from rockly_desktop.profiles.registry import ProfileRegistry
+from rockly_desktop.robot import links
+from rockly_desktop.runtime.options import add_connection_options, connection
 
 
 def add_blocks_parser(commands, language_option) -> None:
@@ -57,6 +61,11 @@ def add_blocks_parser(commands, language_option) -> None:
             make.add_argument(f"--{part}-{lang}", default="", help=f"the block's {part} in {lang}")
     make.add_argument("--colour", default="", help="the block's colour, #rrggbb (the profile's categories' colours)")
     make.add_argument("--replace", action="store_true", help="replace a block of the same id in the pack")
+    kinds = links.link_kinds()
+    make.add_argument("--backend", choices=[entry.kind for entry in kinds],
+                      help="the robot to learn a --type Rockly has no definition for from (kept in the pack), "
+                           "with its connection options, as for rockly run")
+    add_connection_options(make, kinds)
     language_option(make)
     listing = actions.add_parser("list", help="list the blocks of a block pack (without PACK: the installed packs)")
     listing.add_argument("pack", nargs="?")
@@ -160,11 +169,32 @@ def _make(args, registry, language) -> int:
         raise BlockMakerError(app_local_text("pack_profile_missing", profile=args.profile,
                                              installed=", ".join(registry.profiles) or "-"))
     profile = registry.get(args.profile)
+    _learn_type(args, profile)
     block = made_block_from_args(args, profile)
     pack = save_block(block, profile, args.pack, pack_name={"en": args.pack_name} if args.pack_name else None,
                       replace_block=args.replace)
     print(app_text("pack_made", language, id=block.id, pack=pack.id, path=pack.root))
     return 0
+
+
+_LIVE_KINDS = {"publish": "topic", "sensor_value": "topic", "wait_until": "topic", "call_service": "service",
+               "send_goal": "action"}
+
+
+def _learn_type(args, profile) -> None:
+    """Learn ``--type`` from the robot ``--backend`` names when ``profile`` has no definition for it (as the
+    maker does); without a robot, a BlockMakerError saying to name one."""
+    kind = INTERFACE_KINDS.get(args.kind)
+    if not kind or not args.type or "/" not in args.type or knows_type(profile, args.type, kind):
+        return
+    if args.backend in (None, links.DEFAULT_KIND):  # the built-in simulator knows only what the profile knows
+        raise BlockMakerError(app_local_text("pack_type_learn_robot", type=args.type))
+    robot = links.open_link(args.backend, profile, connection(args.backend, args))
+    try:
+        learnt = robot.interface_definition(_LIVE_KINDS[args.kind], args.interface, args.type)
+    finally:
+        robot.shutdown()
+    learn_definition(args.type, kind, learnt.text, learnt.nested)
 
 
 def _list_packs(registry, language) -> int:

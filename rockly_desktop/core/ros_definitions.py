@@ -22,7 +22,9 @@ value gets the same clear message on the simulator as on a real robot.
 A type the robot offers but no file defines can be taught (``learn_definition``) with the text the
 robot said: ROS 1's ``message_definition`` (the type's text and each nested one's, see
 ``split_full_text``). What is learnt holds for every catalogue of this process (a type's name means
-one type on a robot's graph), after the files: a file's definition wins.
+one type on a robot's graph), after the files: a file's definition wins. ``learnt_files`` gives what a
+catalogue knows only that way as definition files, so a block pack can carry them (``profiles.packs``);
+``definition_problem`` says what is wrong with such a file's text.
 """
 import ast
 import os
@@ -164,6 +166,25 @@ def _sections(text: str) -> list:
     return re.split(r"^---\s*$", text, flags=re.MULTILINE)
 
 
+DEFINITION_KINDS = ("msg", "srv", "action")
+_PART_COUNTS = {"msg": 1, "srv": 2, "action": 3}
+_CONSTANT = re.compile(r"^[A-Za-z_][\w/]*\s+[A-Za-z_]\w*\s*=")
+
+
+def definition_problem(text: str, kind: str):
+    """What is wrong with ``text`` as the definition of a ``kind`` (msg, srv, action), in words
+    naming the line; None when every line is a field, a constant, a comment or ``---`` where one belongs."""
+    sections = _sections(text)
+    if len(sections) != _PART_COUNTS[kind]:
+        return (f"a .{kind} definition has {_PART_COUNTS[kind] - 1} '---' line(s) between its parts, "
+                f"this one has {len(sections) - 1}")
+    for number, raw in enumerate(text.splitlines(), 1):
+        line = _without_comment(raw).strip()
+        if line and line != "---" and not _CONSTANT.match(line) and not _FIELD_LINE.match(line):
+            return f"line {number} is neither a field ('TYPE NAME') nor a constant ('TYPE NAME=VALUE'): {raw.strip()!r}"
+    return None
+
+
 class DefinitionCatalog:
     """The message, service and action types found in some folders, and their flattened fields.
 
@@ -239,6 +260,25 @@ class DefinitionCatalog:
                 nested[full] = self._definition(*full.split("/", 1), "msg")
                 pending += [(inner, full.split("/")[0]) for inner in declarations]
         return text, nested
+
+    def learnt_files(self, type_name: str, kind: str = "msg", into=None) -> dict:
+        """``{"package/kind/Name.kind": text}`` of ``type_name`` and the types nested in it that this catalogue
+        knows only because a robot said them (``learn_definition``): no file defines them and no folder but
+        ``into`` (the one they are to be written to) holds their package (a new file of it elsewhere would hide
+        that folder's others). {} for a type not found."""
+        said = self.said(type_name, kind)
+        if said is None:
+            return {}
+        package, _, name = str(type_name).partition("/")
+        if kind == "action" and name.endswith("Action"):
+            name = name[:-len("Action")]
+        files = {}
+        for key in [(package, name, kind), *((*full.split("/", 1), "msg") for full in said[1])]:
+            folder = self._package_dir(key[0])
+            if self._definition(*key) is not None and self._files.get(key) is None and key in _LEARNT \
+                    and (folder is None or (into is not None and folder.parent == Path(into))):
+                files[f"{key[0]}/{key[2]}/{key[1]}.{key[2]}"] = _LEARNT[key]
+        return files
 
     def knows(self, type_name: str, kind: str = "msg") -> bool:
         """True when the definition of ``type_name`` (a ``kind``: msg, srv or action) is found."""

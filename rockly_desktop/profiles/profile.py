@@ -107,9 +107,11 @@ class Profile:
 
     @property
     def message_folders(self) -> list:
-        """The folders of ROS definitions the profile ships (its manifest's ``messages``; none or one)."""
+        """The folders of ROS definitions the profile ships (its manifest's ``messages``; none or one), then its
+        merged packs' (the definitions of types their blocks use that the robot said)."""
         folder = self.manifest.get("messages")
-        return [self.root / folder] if folder else []
+        return ([self.root / folder] if folder else []) + [pack.message_folder for pack in self.packs
+                                                           if pack.message_folder is not None]
 
     @property
     def ros_versions(self) -> dict:

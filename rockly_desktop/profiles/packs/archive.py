@@ -101,8 +101,9 @@ def import_pack(path, profiles: dict, folder=None, replace: bool = False):
                     shutil.copyfileobj(source, sink)
         try:
             pack = load_pack(staging)
-        except ManifestError as error:
-            raise BlockMakerError(app_local_text("pack_zip_bad", path=path, problem=str(error))) from None
+        except ManifestError as error:  # named by its place in the zip, not in the hidden folder it was unpacked to
+            problem = str(error).replace(f"{staging}{os.sep}", "")
+            raise BlockMakerError(app_local_text("pack_zip_bad", path=path, problem=problem)) from None
         return _install(pack, staging, profiles, folder, replace)
     except (OSError, zipfile.BadZipFile) as error:
         raise BlockMakerError(app_local_text("pack_zip_bad", path=path, problem=error)) from None

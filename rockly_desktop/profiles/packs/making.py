@@ -3,7 +3,9 @@
 ``save_block`` checks the block, then writes the whole pack anew into a hidden folder beside
 it, reads that back as a pack and merges it into the profile (so a pack that would not load
 is never installed), and only then puts it in place of the old folder. A failure at any step
-leaves the old pack as it was.
+leaves the old pack as it was. The definitions of the types the block uses that Rockly knows only
+because the robot said them go into the pack's ``messages`` folder with it, so the pack works after a
+restart and on another computer, with nothing publishing them.
 """
 import os
 import re
@@ -25,10 +27,12 @@ from rockly_desktop.profiles.packs.pack import (
     load_pack,
     user_packs_dir,
 )
+from rockly_desktop.profiles.packs.spec import INTERFACE_KINDS
 from rockly_desktop.profiles.packs.validation import IDENTIFIER, BlockMakerError, check_block
 from rockly_desktop.profiles.yaml_files import read_yaml_mapping
 
 FIRST_VERSION = "1.0.0"
+MESSAGES_FOLDER = "messages"
 _PATCH = re.compile(r"^(\d+)\.(\d+)\.(\d+)$")
 
 
@@ -64,7 +68,8 @@ def new_manifest(pack_id: str, profile, name=None) -> dict:
 
 
 def _base_profile(profile, pack_id):
-    """``profile`` without the pack ``pack_id`` (it is merged again as the new pack)."""
+    """``profile`` without the blocks of the pack ``pack_id`` (it is merged again as the new pack); the
+    types of the pack's definitions stay known, as the new pack keeps them."""
     if pack_id not in {pack.id for pack in getattr(profile, "packs", ())}:
         return profile
     types = next(pack.block_types for pack in profile.packs if pack.id == pack_id)
@@ -72,7 +77,8 @@ def _base_profile(profile, pack_id):
                   if "contents" in category else category for category in profile.toolbox_categories]
     return replace(profile, blocks=tuple(spec for spec in profile.blocks if spec.type not in types),
                    toolbox_categories=[category for category in categories if category.get("contents", True)],
-                   packs=tuple(pack for pack in profile.packs if pack.id != pack_id))
+                   packs=tuple(replace(pack, block_types=frozenset(), interfaces={}) if pack.id == pack_id else pack
+                               for pack in profile.packs))
 
 
 def _category_name(category) -> str:
@@ -117,7 +123,20 @@ def save_block(block, profile, pack_id: str, *, folder=None, pack_name=None, ver
         existing = replace(existing, blocks=tuple(spec for spec in existing.blocks if spec.type != block.id))
     check_block(block, base, existing)
     files = _pack_files(block, profile, existing, pack_id, pack_name, version)
+    learnt = learnt_definition_files(block, base, existing.message_folder if existing is not None else None)
+    if learnt:
+        manifest = files[PACK_MANIFEST]
+        manifest.setdefault("messages", MESSAGES_FOLDER)
+        files.update({f"{manifest['messages']}/{name}": text for name, text in learnt.items()})
     return _write_pack(target, files, base, existing)
+
+
+def learnt_definition_files(block, profile, into=None) -> dict:
+    """``{"package/kind/Name.kind": text}`` of the type ``block`` uses and the types nested in it that ``profile``
+    knows only because the robot said them, for the definitions folder ``into`` (the pack's, None for a new pack;
+    see ``DefinitionCatalog.learnt_files``)."""
+    kind = INTERFACE_KINDS.get(block.kind)
+    return profile.ros_types.learnt_files(block.interface_type, kind, into) if kind and block.interface_type else {}
 
 
 def _pack_files(block, profile, existing, pack_id, pack_name, version) -> dict:
@@ -151,14 +170,16 @@ def _pack_files(block, profile, existing, pack_id, pack_name, version) -> dict:
 
 
 def _write_pack(target: Path, files: dict, profile, existing):
-    """Write ``files`` as the pack folder ``target`` all-or-nothing; the new Pack."""
+    """Write ``files`` (``{relative path: data for YAML, or a definition's text}``) as the pack folder ``target``
+    all-or-nothing; the new Pack."""
     target.parent.mkdir(parents=True, exist_ok=True)
     staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.new-", dir=target.parent))
     try:
         if existing is not None:
             shutil.copytree(target, staging, dirs_exist_ok=True)
         for name, data in files.items():
-            (staging / name).write_text(dump_yaml(data), encoding="utf-8")
+            (staging / name).parent.mkdir(parents=True, exist_ok=True)
+            (staging / name).write_text(data if isinstance(data, str) else dump_yaml(data), encoding="utf-8")
         try:
             pack = load_pack(staging)
             with_pack(profile, pack)

@@ -13,14 +13,16 @@ from rockly_desktop.profiles.packs.validation import BlockMakerError
 
 @dataclass(frozen=True)
 class PackInfo:
-    """What a merged profile knows of one of its packs: id, version, name, block types, and the
-    ROS name each made block uses (a teacher switching that part off hides the block)."""
+    """What a merged profile knows of one of its packs: id, version, name, block types, the
+    ROS name each made block uses (a teacher switching that part off hides the block), and the
+    folder of its ROS definitions (None: it has none)."""
 
     id: str
     version: str
     name: object
     block_types: frozenset
     interfaces: dict = field(default_factory=dict)
+    message_folder: object = None
 
 
 def _english(name) -> str:
@@ -59,7 +61,8 @@ def with_pack(profile, pack):
     if problem is not None:
         raise BlockMakerError(problem)
     info = PackInfo(pack.id, pack.version, pack.name, frozenset(pack.block_types),
-                    {made.id: made.interface for made in pack.made if made.id in pack.block_types})
+                    {made.id: made.interface for made in pack.made if made.id in pack.block_types},
+                    pack.message_folder)
     return replace(profile, blocks=profile.blocks + pack.blocks,
                    toolbox_categories=_merged_categories(profile.toolbox_categories, pack.toolbox_categories),
                    packs=(*profile.packs, info))

@@ -7,6 +7,8 @@ A pack looks like a small robot profile without code::
       blocks.yaml    Blockly JSON definitions with their ``python`` templates (as a profile's)
       toolbox.yaml   its categories (as a profile's; no shared ones)
       made.yaml      what the maker knows of each block it made (``spec.MadeBlock.to_data``)
+      messages/      (``messages: messages``) ROS definitions its blocks need that the robot said (as a
+                     profile's ``messages``: <package>/msg|srv|action/*); the profile it joins knows them
 
 Everything but ``made.yaml`` may be edited by hand; ``made.yaml`` only lets the maker show a
 block again and ``rockly blocks list`` say what each does.
@@ -16,6 +18,7 @@ from pathlib import Path
 
 from rockly_desktop.core import paths
 from rockly_desktop.core.errors import ManifestError
+from rockly_desktop.core.ros_definitions import DEFINITION_KINDS, definition_problem
 from rockly_desktop.profiles.blocks import read_blocks
 from rockly_desktop.profiles.i18n import localize
 from rockly_desktop.profiles.manifest import MANIFEST_FIELDS, FieldSpec, read_fields
@@ -29,7 +32,7 @@ _SHARED = {spec.name: spec for spec in MANIFEST_FIELDS}
 PACK_FIELDS = (
     _SHARED["schema"], _SHARED["id"], _SHARED["name"], _SHARED["version"],
     FieldSpec("adds_to", "identifier", True, "The id of the robot profile whose toolbox the pack adds to."),
-    _SHARED["description"], _SHARED["languages"], _SHARED["blocks"], _SHARED["toolbox"],
+    _SHARED["description"], _SHARED["languages"], _SHARED["blocks"], _SHARED["toolbox"], _SHARED["messages"],
 )
 
 
@@ -55,6 +58,12 @@ class Pack:
     def display_name(self, language: str = "en") -> str:
         """The pack's name for people, in ``language``."""
         return localize(self.name, language)
+
+    @property
+    def message_folder(self):
+        """The folder of the pack's ROS definitions (its manifest's ``messages``), or None."""
+        folder = self.manifest.get("messages")
+        return self.root / folder if folder else None
 
     def made_block(self, block_id: str):
         """The MadeBlock of ``block_id``, or None (a block written by hand, or not in the pack)."""
@@ -92,6 +101,21 @@ def _read_made(folder: Path) -> tuple:
     return tuple(made)
 
 
+def check_definitions(folder: Path) -> None:
+    """Raise ManifestError naming the first definition file in ``folder`` (``<package>/msg|srv|action/``) that
+    cannot be read, or a file there that is no definition of its folder's kind."""
+    for path in sorted(folder.glob("*/*/*")):
+        kind = path.parent.name
+        if kind not in DEFINITION_KINDS or path.suffix != f".{kind}" or not path.is_file():
+            raise ManifestError(path, None, "is no ROS definition (those are <package>/msg|srv|action/NAME.KIND)")
+        try:
+            problem = definition_problem(path.read_text(encoding="utf-8"), kind)
+        except (OSError, UnicodeDecodeError) as error:
+            problem = f"cannot be read ({error})"
+        if problem is not None:
+            raise ManifestError(path, None, problem)
+
+
 def load_pack(folder, shared_toolboxes: Path = None) -> Pack:
     """Read and check a whole pack folder; raise ManifestError on the first problem."""
     folder = Path(folder)
@@ -106,6 +130,8 @@ def load_pack(folder, shared_toolboxes: Path = None) -> Pack:
         if "shared" in category:
             raise ManifestError(toolbox_path, f"categories[{index}].shared",
                                 "a block pack adds its own categories only (the profile brings the shared ones)")
+    if manifest.get("messages"):
+        check_definitions(folder / manifest["messages"])
     return Pack(manifest["id"], manifest["name"], manifest["version"], manifest["adds_to"], folder, manifest,
                 blocks, categories, _read_made(folder))
 

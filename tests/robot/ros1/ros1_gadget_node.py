@@ -2,7 +2,9 @@
 its message classes at run time from the .msg texts below (genpy's dynamic generation), publishes
 /gadget/state (rockly_test_custom/Gadget, nested Eye, an array, a constant) five times a second and serves
 /gadget/blink (rockly_test_custom/Blink, a service whose definition no computer here has). It prints one
-JSON line per call, {"service", "request"}; {"ready": true} once both are up. It leaves when stdin ends."""
+JSON line per call, {"service", "request"}; {"ready": true} once both are up. It leaves when stdin ends.
+With the argument ``listen`` it only subscribes to /gadget/state with its own class (as a robot listens to a
+command topic) and prints {"heard": {"name", "brightness"}} for each message."""
 import json
 import sys
 import threading
@@ -47,6 +49,15 @@ def say(data):
     print(json.dumps(data), flush=True)
 
 
+def listen():
+    rospy.init_node("gadget_listener", disable_signals=True)
+    rospy.Subscriber("/gadget/state", gadget_classes()[GADGET], lambda message: say(
+        {"heard": {"name": message.name, "brightness": message.left_eye.brightness}}))
+    say({"ready": True})
+    sys.stdin.read()
+    rospy.signal_shutdown("stdin ended")
+
+
 def main():
     rospy.init_node("gadget", disable_signals=True)
     gadget = gadget_classes()[GADGET]
@@ -68,4 +79,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    listen() if sys.argv[1:] == ["listen"] else main()
