@@ -13,6 +13,8 @@ Two windows may attach at once: the first controls the run, the other watches an
 window's Pause, Step and Continue are off, but its STOP stops the robot (a STOP is a safety control: the agent
 never refuses one). When the controlling window goes, a watching one takes control and is told.
 """
+import threading
+
 from PySide6.QtCore import QObject, Signal
 
 from rockly_desktop.runtime.agent.client import AgentClient, AgentError
@@ -115,7 +117,10 @@ class AttachedRun(QObject):
         if client is None:
             return
         client.on_event = client.on_closed = None
-        client.close()  # the agent takes a closed connection as a detach (no answer to wait for)
+        if self.calls.busy:  # a STOP (or another request) on its way is sent before the connection closes
+            threading.Thread(target=self._close_after_calls, args=(client,), daemon=True, name="agent-detach").start()
+        else:
+            client.close()  # the agent takes a closed connection as a detach (no answer to wait for)
         self._highlight(None)
         self.console.append(tr("attach_detached", self.language()), "info")
         self.controller = False
@@ -124,6 +129,10 @@ class AttachedRun(QObject):
         if recording is not None:
             recording.close()
             self.sig_recorded.emit(str(recording.path))
+
+    def _close_after_calls(self, client):
+        self.calls.wait(ATTACH_TIMEOUT)
+        client.close()
 
     def set_breakpoints(self, block_ids):
         """The window's breakpoints changed: the run on the robot pauses before these blocks from now on."""
