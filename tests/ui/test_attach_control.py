@@ -11,6 +11,7 @@ from agent_tools import REPO, AgentProcess
 from page_tools import call_page, run_js
 from program_builder import block, number, stack, workspace
 from PySide6.QtCore import QTimer
+from screenshots import screenshot
 from standalone_tools import environment, export_standalone
 from test_running import highlighted
 from waiting import eventually
@@ -143,6 +144,7 @@ def test_breakpoints_set_before_and_while_attached_pause_the_robots_run_and_cont
     assert robot.event(lambda event: event.get("event") == "finished")["outcome"] == "finished"
     qtbot.waitUntil(lambda: not window.attached.active, timeout=20000)
     assert "done" in window.console.lines()
+    assert window.statusBar().currentMessage() == ""
 
 
 def test_the_timeline_records_what_the_window_saw_and_the_replay_shows_it_after_the_run(
@@ -202,6 +204,7 @@ def test_a_window_watching_a_run_another_controls_is_told_has_no_pause_and_its_s
     assert not toolbar.pause_action.isEnabled() and not toolbar.step_action.isEnabled()
     assert toolbar.pause_action.toolTip().startswith("Another window controls this run on the robot")
     assert toolbar.stop_action.isEnabled()
+    screenshot(window, "attach_watching")
     toolbar.stop_action.trigger()
     assert robot.event(lambda event: event.get("event") == "finished")["outcome"] == "stopped"
     qtbot.waitUntil(lambda: not window.attached.active, timeout=30000)
@@ -258,6 +261,7 @@ def test_the_robot_bar_shows_what_the_agent_runs_and_attaches_in_one_click_and_s
     window.robots.sig_robot_changed.emit()  # the robot chosen again
     qtbot.waitUntil(bar.isVisible, timeout=20000)
     assert (bar.label.text(), bar.attach_button.text()) == ("On the robot: drives — running", "Attach")
+    screenshot(window.statusBar(), "attach_robot_bar")
     with qtbot.waitSignal(window.attached.sig_attached, timeout=20000):
         bar.attach_button.click()
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)

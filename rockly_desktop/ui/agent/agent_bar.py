@@ -40,7 +40,6 @@ class AgentBar(QWidget):
         self.label = QLabel(self)
         self.attach_button = QPushButton(self)
         self.attach_button.setObjectName("agent_bar_attach")
-        self.attach_button.setFlat(True)
         self.attach_button.clicked.connect(self.attach)
         layout = QHBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)

@@ -123,6 +123,7 @@ class AttachedRun(QObject):
             client.close()  # the agent takes a closed connection as a detach (no answer to wait for)
         self._highlight(None)
         self.console.append(tr("attach_detached", self.language()), "info")
+        self.sig_status.emit("")  # a pause it said is no longer this window's to say
         self.controller = False
         self._set_state("idle")
         recording, self.recording = self.recording, None
@@ -196,7 +197,6 @@ class AttachedRun(QObject):
             self._take_control()
         elif kind == "run" and event.get("state") == "ended":
             self.console.append(tr("attached_run_ended", self.language(), name=self.program), "info")
-            self.sig_status.emit("")
             self.detach()
 
     def _take_control(self):
