@@ -56,6 +56,7 @@ class Run:
         self.end_out = end_out
         self.on_event = on_event
         self.control = RunControl(trace=trace)
+        self.runner = None  # the program's runner, once it is made (its variables may be read from any thread)
         self.stopped_by = signal.SIGINT
 
     def fail(self, error: RocklyError) -> int:
@@ -94,8 +95,9 @@ class Run:
             return EXIT_ERROR
         previous = {signum: signal.signal(signum, self._stop_once()) for signum in STOP_SIGNALS}
         try:
-            result = make_runner(self.profile, robot, self.run_code, self.control, self._reporter(print_blocks),
-                                 language, limits, recording=recording).run()
+            self.runner = make_runner(self.profile, robot, self.run_code, self.control, self._reporter(print_blocks),
+                                      language, limits, recording=recording)
+            result = self.runner.run()
         except RocklyError as error:  # the profile's commands could not be made
             return self.fail(error)
         finally:

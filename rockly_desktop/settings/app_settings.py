@@ -186,6 +186,15 @@ class AppSettings:
         self._store.setValue("blocks/large_text", "true" if look.get("largeText") else "false")
 
     @property
+    def agent_address(self) -> str:
+        """``host:port`` where the robot's agent was last reached (Robot → Programs on the robot…); empty: never."""
+        return str(self._get("agent/address", "") or "")
+
+    @agent_address.setter
+    def agent_address(self, value: str):
+        self._store.setValue("agent/address", value or "")
+
+    @property
     def recordings_folder(self) -> str:
         """Where runs are recorded (default: ``recordings`` in Rockly's XDG data folder)."""
         return str(self._get("recordings/folder", "") or recordings_dir())

@@ -7,6 +7,9 @@ from rockly_desktop import __version__
 from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS, EditorView
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.recovery import RecoverySession, claim_abandoned
+from rockly_desktop.robot.links import link_kind
+from rockly_desktop.runtime.agent.protocol import DEFAULT_PORT
+from rockly_desktop.ui.agent.agent_bar import AgentBar, agent_address
 from rockly_desktop.ui.agent.attached_run import AttachedRun
 from rockly_desktop.ui.docks.registry import Docks
 from rockly_desktop.ui.docks.stage_layout import BottomTabSizes, StageLayout, keep_side_docks_full_height
@@ -83,9 +86,12 @@ class MainWindow(QMainWindow):
         self.robots = RobotChoice(self.document, self.tablet, settings, self)
         self.robots.sig_robot_changed.connect(self.show_robot)
         self.runs = RunSession(self.document, self.editor, self.robots, self.console, self.variables, settings, self)
-        self.attached = AttachedRun(self.editor, self.console, self.variables, lambda: self.language, self)
+        self.attached = AttachedRun(self.editor, self.console, self.variables, lambda: self.language, self,
+                                    breakpoints=lambda: self.document.breakpoints, record=self._record_attached)
         self.runs.sig_state_changed.connect(self._on_run_state)
         self.attached.sig_state_changed.connect(self._on_run_state)
+        self.attached.sig_control_changed.connect(lambda controls: self.run_toolbar.set_watching(not controls))
+        self.attached.sig_status.connect(lambda text: self.statusBar().showMessage(text))
         self.runs.sig_status.connect(lambda text: self.statusBar().showMessage(text))
         self.tablet.sig_dismissed.connect(self.runs.stop)
         self.replay = Replay(self.replay_bar, self.editor, self.variables, self.simulator_dock,
@@ -96,8 +102,12 @@ class MainWindow(QMainWindow):
         self.runs.sig_state_changed.connect(lambda state: state == "starting" and self.replay.close())
         self.runs.sig_finished.connect(lambda _result: self.runs.last_recording and self.replay.open(
             self.runs.last_recording, quiet=True))
+        self.attached.sig_recorded.connect(lambda path: self.replay.open(path, quiet=True))
         self.health = HealthBar(settings.current_language, self)
         self.health.sig_refreshed.connect(self.robots.show_health)  # one source for the light and the status
+        self.agent_bar = AgentBar(self.attached, lambda: self.language, self._agent_address, self)
+        self.robots.sig_robot_changed.connect(self.agent_bar.look)
+        self.statusBar().addPermanentWidget(self.agent_bar)
         self.statusBar().addPermanentWidget(self.health)
         self.statusBar().addPermanentWidget(self.robots.status)
         self.statusBar().addPermanentWidget(self.profile_label)
@@ -210,6 +220,7 @@ class MainWindow(QMainWindow):
         if not self._robot_shown:  # at start the simulator waits until the editor is up
             self._robot_shown = True
             self.show_robot()
+            self.agent_bar.start()
 
     def show_robot(self):
         """Show the active robot in the Simulator dock (a note for a real robot)."""
@@ -291,8 +302,29 @@ class MainWindow(QMainWindow):
     # Commands that replace the program or the editor page must wait until the run ends.
     _IDLE_ONLY_ACTIONS = ("action_new", "action_open", "action_import_xml", "action_preferences")
 
+    def _agent_address(self):
+        """Where the chosen robot's agent is (``agent_bar.agent_address``), None when nowhere is known."""
+        kind = link_kind(self.robots.kind)
+        connection = self.settings.link_connection(kind, self.profile.id) if kind.settings else {}
+        return agent_address(kind.kind, connection, self.settings.agent_address)
+
+    def _remember_agent(self, host: str, port: int):
+        """The Programs dialog reached an agent at ``host``:``port``: the robot bar looks there from now on."""
+        self.settings.agent_address = f"{host}:{port}"
+        self.agent_bar.look()
+
+    def _record_attached(self, snapshot: dict):
+        """The recording of what the window sees of the run on the robot (``snapshot``: the run so far)."""
+        from rockly_desktop.ui.agent.attached_recording import open_attached_recording
+
+        self.replay.close()  # as when a run in the window starts
+        return open_attached_recording(self.settings, self.document, self.editor.workspace, snapshot,
+                                       lambda text: self.console.append(text, "error"))
+
     def _on_run_state(self, state: str):
         self.run_toolbar.set_state(state)
+        if state == "idle":
+            self.run_toolbar.set_watching(False)
         idle = state == "idle"
         for action in self.findChildren(QAction):
             if action.objectName() in self._IDLE_ONLY_ACTIONS:
@@ -317,6 +349,7 @@ class MainWindow(QMainWindow):
     def _on_breakpoints(self, block_ids):
         self.document.breakpoints = list(block_ids)
         self.runs.set_breakpoints(block_ids)
+        self.attached.set_breakpoints(block_ids)
         self.document.mark_modified()
 
     def _run_in_charge(self):
@@ -451,9 +484,11 @@ class MainWindow(QMainWindow):
         # imported when first asked for: it brings the runtime's export (60 ms), which start-up does not need
         from rockly_desktop.ui.agent.robot_programs_dialog import RobotProgramsDialog
 
-        RobotProgramsDialog(self.attached, self.language, self,
+        address = self._agent_address() or ("localhost", DEFAULT_PORT)
+        RobotProgramsDialog(self.attached, self.language, self, *address,
                             open_copy=lambda path, name: self.files.open_copy(path, name), document=self.document,
-                            limits=lambda: self.settings.teacher.limits(self.profile.id)).show()
+                            limits=lambda: self.settings.teacher.limits(self.profile.id),
+                            reached=self._remember_agent).show()
 
     def make_block(self, chosen: str = "", kind: str = ""):
         """Open the block maker (Tools → Make a block…), with the topic, service or action ``chosen`` (of
@@ -650,6 +685,7 @@ class MainWindow(QMainWindow):
             return
         self._close_approved = False
         self.keys.stop()
+        self.agent_bar.stop()
         self.attached.detach()
         self.runs.shutdown()
         self.replay.wait_for_reading()

@@ -227,7 +227,10 @@ def test_a_host_that_never_answers_hello_is_said_and_the_client_keeps_no_thread(
     try:
         with pytest.raises(AgentError) as raised:
             AgentClient("127.0.0.1", silent.getsockname()[1], "de", on_closed=lambda: closed.append(1), timeout=0.5)
-        assert raised.value.key == "agent_connection_lost"
+        assert raised.value.key == "agent_no_answer"
+        port = silent.getsockname()[1]
+        assert raised.value.message == (f"der Agent des Roboters unter 127.0.0.1:{port} hat nicht innerhalb von 0.5 s "
+                                        "geantwortet (ist das Netz zum Roboter langsam oder unterbrochen?)")
         eventually(lambda: not [thread for thread in threading.enumerate()
                                 if thread.name in ("agent-client", "agent-heartbeat")])
         assert closed == []

@@ -4,10 +4,12 @@
 
 It runs the standalone file's program (read as data) with the runtime's ``Run``: its events go to standard
 output as JSON lines (``runtime.event_stream``), and it takes the agent's requests on standard input, one a
-line: ``pause``, ``step``, ``continue``, ``stop``. The end of standard input means the agent is gone (killed,
+line: ``pause``, ``step``, ``continue``, ``stop``, ``breakpoints ["ID", ...]`` (the blocks to pause before from now
+on: the attached editor's). The end of standard input means the agent is gone (killed,
 crashed): the run stops and the robot's safe stop runs here, so the robot stops whatever became of the
 agent. SIGTERM and Ctrl+C stop it with the safe stop too (``Run``'s handlers).
 """
+import json
 import sys
 import threading
 from pathlib import Path
@@ -20,7 +22,8 @@ from rockly_desktop.runtime.options import connection
 from rockly_desktop.runtime.run import EXIT_ERROR, Run
 from rockly_desktop.runtime.standalone import limits_from_data, parser
 
-REQUESTS = ("pause", "step", "continue", "stop")
+VARIABLES_SECONDS = 0.1  # how often the variables are looked at (as often as a window's own run shows them)
+REQUESTS = ("pause", "step", "continue", "stop", "breakpoints")
 
 
 def follow_requests(control, requests=None):
@@ -35,7 +38,31 @@ def follow_requests(control, requests=None):
             control.resume()
         elif request == "stop":
             control.request_stop()
+        elif request.startswith("breakpoints "):
+            control.set_breakpoints(_block_ids(request[len("breakpoints "):]))
     control.request_stop()  # the agent went away: the robot must not drive on unwatched by it
+
+
+def sample_variables(run, stream, ended, seconds: float = VARIABLES_SECONDS):
+    """Write the program's variables to ``stream`` whenever they changed, every ``seconds`` until ``ended``: a window
+    attached to a run that is not paused follows them (the runner says them only at a pause and at the end), and
+    one attaching later is shown them at once (the agent keeps the latest)."""
+    shown = {}
+    while not ended.wait(seconds):
+        runner = run.runner
+        values = runner.variables_snapshot() if runner is not None else {}
+        if values != shown:
+            shown = values
+            stream.write({"event": "variables", "values": values})
+
+
+def _block_ids(text: str) -> list:
+    """The block ids of a ``breakpoints`` request (none for one that is not a JSON list of texts)."""
+    try:
+        ids = json.loads(text)
+    except ValueError:
+        return []
+    return [block for block in ids if isinstance(block, str)] if isinstance(ids, list) else []
 
 
 def main(argv=None) -> int:
@@ -59,8 +86,16 @@ def main(argv=None) -> int:
               program.get("source") or "rockly-program", out=_to_standard_error, on_event=stream.event, trace=True,
               end_out=_to_standard_error)
     threading.Thread(target=follow_requests, args=(run.control,), daemon=True, name="agent-requests").start()
-    status = run.run(args.backend, connection(args.backend, args), args.answer, args.speed,
-                     limits_from_data(program.get("limits", {})), None, program.get("source"), print_blocks=False)
+    ended = threading.Event()
+    sampler = threading.Thread(target=sample_variables, args=(run, stream, ended), daemon=True,
+                               name="agent-variables")
+    sampler.start()
+    try:
+        status = run.run(args.backend, connection(args.backend, args), args.answer, args.speed,
+                         limits_from_data(program.get("limits", {})), None, program.get("source"), print_blocks=False)
+    finally:
+        ended.set()
+        sampler.join()
     stream.write({"event": "exit", "status": status})
     return status
 

@@ -12,7 +12,8 @@ Each call waits for the agent's answer and returns it as a dict; a refusal raise
 window hands it on to its own thread). While attached, the client sends a heartbeat every
 ``HEARTBEAT_SECONDS``: that is what "the editor is there" means to a program that stops the robot when the
 editor is lost. A connection that breaks ends the calls waiting with ``AgentError("agent_connection_lost")``
-and calls ``on_closed``.
+and calls ``on_closed``; an agent that does not answer within ``timeout`` ends the call with
+``AgentError("agent_no_answer")``.
 """
 import itertools
 import socket
@@ -41,6 +42,7 @@ class AgentClient:
         self.on_event = on_event
         self.on_closed = on_closed
         self.timeout = timeout
+        self.address = (host, port)
         self.controller = False
         self._ids = itertools.count(1)
         self._waiting = {}
@@ -76,10 +78,14 @@ class AgentClient:
                 raise self._lost()
             self._waiting[number] = (answer, done)
         self._write({"op": op, "id": number, **fields})
-        if not done.wait(self.timeout) or not answer:
+        answered = done.wait(self.timeout)
+        if not answered or not answer:
             with self._lock:
                 self._waiting.pop(number, None)
-            raise self._lost()
+            if answered or self._closed.is_set():
+                raise self._lost()
+            raise AgentError("agent_no_answer", app_text("agent_no_answer", self.language, host=self.address[0],
+                                                         port=self.address[1], seconds=f"{self.timeout:g}"))
         if not answer.get("ok"):
             raise AgentError(answer.get("error", "?"), answer.get("message", "?"))
         return {key: value for key, value in answer.items() if key not in ("reply", "ok")}
@@ -110,10 +116,12 @@ class AgentClient:
         """The ``.rockly`` text the robot keeps of program ``name`` (None when it came without one)."""
         return self.request("source", name=name)["source"]
 
-    def attach(self, control: bool = True) -> dict:
-        """Watch the run (and control it when ``control`` and no other client does): returns
-        ``{"run": snapshot or None, "controller": bool, "controlled_elsewhere": bool}``; heartbeats start."""
-        answer = self.request("attach", control=control)
+    def attach(self, control: bool = True, breakpoints=()) -> dict:
+        """Watch the run (and control it when ``control`` and no other client does, pausing it before the blocks
+        ``breakpoints``): returns ``{"run": snapshot or None, "controller": bool, "controlled_elsewhere": bool}``;
+        heartbeats start. Control that comes later (the controlling client went) is said by the event
+        ``{"event": "control", "controller": true}``."""
+        answer = self.request("attach", control=control, breakpoints=list(breakpoints))
         self.controller = answer["controller"]
         self._attached.set()
         return answer
@@ -126,6 +134,10 @@ class AgentClient:
     def control(self, what: str):
         """``pause``, ``step`` or ``continue`` the run (the controlling client only)."""
         self.request("control", what=what)
+
+    def breakpoints(self, block_ids):
+        """Pause the run before these blocks from now on (the controlling client only)."""
+        self.request("breakpoints", blocks=list(block_ids))
 
     def close(self):
         """Close the connection (an attached client detaches)."""
@@ -160,6 +172,8 @@ class AgentClient:
                 if message is None:
                     continue
                 if "event" in message:
+                    if message["event"] == "control":
+                        self.controller = bool(message.get("controller"))
                     if self.on_event is not None:
                         self.on_event(message)
                     continue

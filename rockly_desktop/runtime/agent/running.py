@@ -13,9 +13,10 @@ class ProgramRun:
     """Program ``about`` (its library entry) running from ``path`` with the child's command-line ``options``.
 
     ``publish``: called with every event record (from the child's stream, and the agent's ``run`` events);
-    ``on_end``: called once when the child has ended."""
+    ``on_end``: called once when the child has ended; ``breakpoints``: the blocks to pause before (the controlling
+    editor's)."""
 
-    def __init__(self, about: dict, path, options: list, publish, on_end):
+    def __init__(self, about: dict, path, options: list, publish, on_end, breakpoints=()):
         self.about = about
         self.publish = publish
         self.state = "running"
@@ -25,6 +26,7 @@ class ProgramRun:
         self.prints = []
         self.finished = None
         self.status = None
+        self.breakpoints = []  # the controlling editor's; none while no editor controls the run
         self.started = time.time()
         self.last_heartbeat = None  # of the controlling client (the editor); the watch starts with the first
         self.stopped_for_lost_editor = False
@@ -33,6 +35,8 @@ class ProgramRun:
         self.process = subprocess.Popen(
             [sys.executable, "-m", "rockly_desktop.runtime.agent.child", str(path), *options],
             stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, bufsize=1)
+        if breakpoints:  # read by the child before its program's first block (opening the robot link takes longer)
+            self.set_breakpoints(breakpoints)
         self.errors = []
         threading.Thread(target=self._read_errors, daemon=True, name="agent-run-errors").start()
         self._reader = threading.Thread(target=self._read_events, daemon=True, name="agent-run-events")
@@ -43,9 +47,10 @@ class ProgramRun:
     def snapshot(self) -> dict:
         """What a client attaching now needs to show the run."""
         with self._lock:
-            return {"program": self.about["name"], "state": self.state, "block": self.block, "paused": self.paused,
-                    "variables": dict(self.variables), "prints": list(self.prints), "finished": self.finished,
-                    "status": self.status, "on_lost_editor": self.about.get("on_lost_editor"),
+            return {"program": self.about["name"], "profile": self.about.get("profile"), "state": self.state,
+                    "block": self.block, "paused": self.paused, "variables": dict(self.variables),
+                    "prints": list(self.prints), "finished": self.finished, "status": self.status,
+                    "breakpoints": list(self.breakpoints), "on_lost_editor": self.about.get("on_lost_editor"),
                     "decide_seconds": self.about.get("decide_seconds")}
 
     def request(self, what: str):
@@ -55,6 +60,11 @@ class ProgramRun:
             self.process.stdin.flush()
         except (OSError, ValueError):  # it has ended
             pass
+
+    def set_breakpoints(self, block_ids: list):
+        """Pause the program before these blocks from now on (the editor's breakpoints; none: run through)."""
+        self.breakpoints = [str(block) for block in block_ids]
+        self.request("breakpoints " + json.dumps(self.breakpoints))
 
     def heartbeat(self):
         """The editor (the controlling client) is there now."""

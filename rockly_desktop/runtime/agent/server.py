@@ -10,13 +10,19 @@ Requests (each answered; refusals say why in the client's language):
     stop                                                          -> {"stopped": bool}   (any client: a STOP is
                                                                      never refused)
     delete   {"name"}                                             -> {}
-    attach   {"control": bool}                                    -> {"run", "controller", "controlled_elsewhere"}
+    attach   {"control": bool, "breakpoints"?: [block id...]}     -> {"run", "controller", "controlled_elsewhere"}
+                                                                     (the breakpoints apply once it controls)
     detach                                                        -> {}
     control  {"what": "pause"|"step"|"continue"}                  -> {}  (the controlling client only)
+    breakpoints {"blocks": [block id...]}                         -> {}  (the controlling client only: the run,
+                                                                     and one it starts, pause before these blocks)
     heartbeat                                                     (no answer without an "id"); the controlling
                                                                      client's say the editor is there
 
-An attached client gets every event of the run as it happens (see ``agent.protocol``).
+An attached client gets every event of the run as it happens (see ``agent.protocol``). One attached client
+controls the run (the first that asked to); when it goes, the next attached client that asked to control takes
+over and is told ``{"event": "control", "controller": true}``. The breakpoints are the controlling client's: they
+are cleared when it goes (a run must not pause where nobody watches), and the next controller sends its own.
 """
 import socket
 import socketserver
@@ -43,6 +49,7 @@ class _Client:
         self.language = "en"
         self.name = "?"
         self.attached = False
+        self.wants_control = False
         self._lock = threading.Lock()
 
     def send(self, message: dict) -> bool:
@@ -64,6 +71,7 @@ class Agent:
         self.options = options
         self.run = None
         self.controller = None
+        self.breakpoints = []  # the controlling client's: a run started while it is attached pauses there too
         self.clients = []
         self._lock = threading.RLock()
 
@@ -111,7 +119,7 @@ class Agent:
             options = ["--backend", self.backend, *self.options, "--any-profile-version"]
             for answer in answers:
                 options += ["--answer", answer]
-            self.run = ProgramRun(about, path, options, self.publish, self._ended)
+            self.run = ProgramRun(about, path, options, self.publish, self._ended, self.breakpoints)
             self.publish({"event": "run", "state": "started", "program": name})
             return {"run": self.run.snapshot()}
 
@@ -131,10 +139,14 @@ class Agent:
         return {}
 
     def _op_attach(self, client, request):
+        breakpoints = _block_ids(request.get("breakpoints", []))
         with self._lock:
             client.attached = True
-            if request.get("control", True) and self.controller is None:
+            client.wants_control = bool(request.get("control", True))
+            if client.wants_control and self.controller is None:
                 self.controller = client
+            if self.controller is client:
+                self._set_breakpoints(breakpoints)
             if self.run is not None and self.controller is client:
                 self.run.heartbeat()
             return {"run": self._snapshot(), "controller": self.controller is client,
@@ -154,6 +166,19 @@ class Agent:
             raise AgentRefusal("agent_nothing_running")
         self.run.request(what)
         return {}
+
+    def _op_breakpoints(self, client, request):
+        blocks = _block_ids(request.get("blocks"))
+        with self._lock:
+            if self.controller is not client:
+                raise AgentRefusal("agent_not_controller")
+            self._set_breakpoints(blocks)
+        return {}
+
+    def _set_breakpoints(self, blocks: list):
+        self.breakpoints = list(blocks)
+        if self.run is not None and self.run.breakpoints != self.breakpoints:
+            self.run.set_breakpoints(self.breakpoints)
 
     def _op_heartbeat(self, client, request):
         run = self.run
@@ -181,8 +206,13 @@ class Agent:
     def _forget(self, client):
         with self._lock:
             client.attached = False
-            if self.controller is client:
-                self.controller = None
+            if self.controller is not client:
+                return
+            self.controller = next((other for other in self.clients if other.attached and other.wants_control), None)
+            self._set_breakpoints([])  # the next controller sends its own
+            successor = self.controller
+        if successor is not None:
+            successor.send({"event": "control", "controller": True})
 
     def serve_client(self, connection):
         """Read and answer ``connection``'s requests until it closes."""
@@ -224,6 +254,13 @@ class Agent:
         run = self.run
         if run is not None:
             run.end()
+
+
+def _block_ids(value) -> list:
+    """The block ids of a request's breakpoints; refused when they are not a list of texts."""
+    if not isinstance(value, list) or not all(isinstance(block, str) for block in value):
+        raise AgentRefusal("agent_bad_request")
+    return value
 
 
 def _text(value) -> str:

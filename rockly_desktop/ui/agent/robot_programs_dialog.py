@@ -33,18 +33,20 @@ from rockly_desktop.ui.texts import tr
 class RobotProgramsDialog(QDialog):
     """The programs on a robot's agent; ``attached``: the window's ``AttachedRun``. Every answer from the agent
     (or why it cannot be reached) is said in ``status``; ``open_copy(path, name)`` opens the robot's copy of
-    its program (as an untitled copy) when it differs from the window's; Send sends the window's program
+    its program (as an untitled copy) when it differs from the window's; ``reached(host, port)``: an agent answered
+    there; Send sends the window's program
     (``document``: its file and profile) under ``limits()``, the teacher's limits in force. The agent is asked
     off the window's thread (``calls``): while an answer is on its way, ``status`` says so and the buttons that
     would ask again wait; answers that come after the dialog was closed are dropped."""
 
     def __init__(self, attached, language: str, parent=None, host: str = "localhost", port: int = DEFAULT_PORT,
-                 open_copy=None, document=None, limits=None):
+                 open_copy=None, document=None, limits=None, reached=None):
         super().__init__(parent)
         self.attached, self.language, self._open_copy = attached, language, open_copy
-        self.document, self._limits = document, limits
+        self.document, self._limits, self._reached = document, limits, reached
         self._robot_source = None
         self.calls = AgentCalls(self)
+        self._generation = 0  # of the dialog's showing: answers to an earlier one are dropped
         self._enabled_before = None  # the asking buttons' states while an answer is on its way
         self._copies = tempfile.TemporaryDirectory(prefix="rockly-robot-copy-")
         self.setWindowTitle(tr("robot_programs_title", language))
@@ -170,17 +172,14 @@ class RobotProgramsDialog(QDialog):
             self._with_client(lambda client: client.start(name))
 
     def attach(self):
-        """Attach the window to what runs on the robot."""
+        """Attach the window to what runs on the robot (``AttachedRun.attach``: off the window's thread)."""
         host, port = self.host.text().strip(), self.port.value()
-        self.attached.detach()
-        self._ask(lambda: self.attached.reach(host, port), self._reached,
-                  unused=lambda reached: reached[0].close())
+        self._ask(lambda done: self.attached.attach(host, port, done), self._attached, waits=True)
 
-    def _reached(self, reached, error):
+    def _attached(self, error):
         if error is not None:
             self.status.setText(error.message)
             return
-        self.attached.adopt(reached, self.host.text().strip())
         self.attach_button.setEnabled(False)
         name = self.attached.program
         self._with_client(lambda client: client.source(name), lambda source: self._got_source(name, source),
@@ -223,6 +222,8 @@ class RobotProgramsDialog(QDialog):
 
         def answered(answer, error):
             self.status.setText(error.message if error is not None else "")
+            if error is None and self._reached is not None:
+                self._reached(host, port)
             if then is not None:
                 then(answer)
             if refresh:
@@ -233,23 +234,31 @@ class RobotProgramsDialog(QDialog):
     def _forget_calls(self):
         """The dialog closed: answers on their way are dropped, and the buttons wait no more."""
         self.calls.forget()
+        self._generation += 1
         enabled, self._enabled_before = self._enabled_before or {}, None
         for button, was in enabled.items():
             button.setEnabled(was)
 
-    def _ask(self, work, answered, unused=None):
+    def _ask(self, work, answered, unused=None, waits=False):
         """``work()`` off the window's thread, ``answered(answer, error)`` on it; meanwhile ``status`` says the
-        robot is being asked and the buttons that would ask again wait."""
+        robot is being asked and the buttons that would ask again wait. ``waits``: ``work(done)`` asks by itself
+        without waiting (``AttachedRun.attach``) and calls ``done(error)`` on the window's thread."""
         self.status.setText(tr("robot_programs_asking", self.language))
         asking = (self.refresh_button, self.send_button, self.start_button, self.stop_button, self.attach_button)
         self._enabled_before = {button: button.isEnabled() for button in asking}
         for button in asking:
             button.setEnabled(False)
+        generation = self._generation
 
-        def done(answer, error):
+        def done(*answered_with):
+            if generation != self._generation:  # the dialog was closed meanwhile
+                return
             enabled, self._enabled_before = self._enabled_before, None
             for button, was in enabled.items():
                 button.setEnabled(was)
-            answered(answer, error)
+            answered(*answered_with)
 
-        self.calls.run(work, done, unused)
+        if waits:
+            work(done)
+        else:
+            self.calls.run(work, done, unused)

@@ -24,6 +24,7 @@ class RunToolbar(QToolBar):
         self._language = language
         self._always_shown = big
         self._robot_locked = False
+        self._watching = False  # attached to a run another window controls
         if big:
             self.setMovable(False)
             self.setFloatable(False)
@@ -117,6 +118,15 @@ class RunToolbar(QToolBar):
         self.backend.setToolTip(tr("robot_locked_tip" if locked else "run_on_tip", self._language))
         self.set_state(self._state)
 
+    def set_watching(self, watching: bool):
+        """Attached to a run on the robot that another window controls: Pause, Step and Continue are that
+        window's (and say so); STOP stays, as a STOP from any window stops the robot."""
+        self._watching = watching
+        for action, tip in ((self.pause_action, "pause_tip"), (self.step_action, "step_tip"),
+                            (self.continue_action, "continue_tip")):
+            action.setToolTip(tr("attach_watching_tip" if watching else tip, self._language))
+        self.set_state(self._state)
+
     @property
     def delay(self) -> float:
         """Seconds to wait at each block for the slider's position."""
@@ -136,5 +146,8 @@ class RunToolbar(QToolBar):
         self.continue_action.setShortcut(RUN_KEYS if state == "paused" else "")
         self.run_action.setShortcut(RUN_KEYS if state == "idle" else "")
         self.stop_action.setEnabled(state != "idle")
+        if self._watching and state != "idle":
+            for action in (self.pause_action, self.step_action, self.continue_action):
+                action.setEnabled(False)
         self.backend.setEnabled(state == "idle" and not self._robot_locked)
 
