@@ -20,11 +20,9 @@ from rockly_desktop.ui.files.document import Document
 from rockly_desktop.ui.files.examples_menu import ExamplesMenu
 from rockly_desktop.ui.files.program_files import ProgramFiles
 from rockly_desktop.ui.files.recovery_prompt import RecoveryPrompt
-from rockly_desktop.ui.help_dialogs import retitle_help_pages, show_first_steps, show_shortcuts
 from rockly_desktop.ui.keyboard import KeyboardAccess
 from rockly_desktop.ui.message_boxes import plain_message_box
 from rockly_desktop.ui.plain_text import mnemonic_free, plain_label
-from rockly_desktop.ui.preferences.preferences import PreferencesDialog
 from rockly_desktop.ui.replay.replay import Replay
 from rockly_desktop.ui.replay.replay_bar import ReplayBar, under
 from rockly_desktop.ui.robot.health_bar import HealthBar
@@ -455,6 +453,8 @@ class MainWindow(QMainWindow):
         self.menuBar().clear()
         self._build_menus()
         self.keys.set_language(language)
+        from rockly_desktop.ui.help_dialogs import retitle_help_pages  # (help pages: imported when first opened)
+
         retitle_help_pages(self, language)
         self._update_title()
 
@@ -464,6 +464,8 @@ class MainWindow(QMainWindow):
         self.teacher_gate(self._show_preferences)
 
     def _show_preferences(self):
+        from rockly_desktop.ui.preferences.preferences import PreferencesDialog  # not needed to start
+
         dialog = PreferencesDialog(self.language, self, self.profile, self.settings.teacher,
                                    reset_before_run=self.settings.reset_before_run, kiosk=self.settings.kiosk,
                                    kiosk_mode=self.settings.kiosk_mode, block_look=self.settings.block_look,
@@ -639,11 +641,18 @@ class MainWindow(QMainWindow):
         self._action(settings_menu, "preferences", self.show_preferences, QKeySequence.StandardKey.Preferences)
 
         help_menu = bar.addMenu(tr("menu_help", language))
-        self._action(help_menu, "first_steps", lambda: show_first_steps(self, language),
+        self._action(help_menu, "first_steps", lambda: self._help("show_first_steps", language),
                      QKeySequence.StandardKey.HelpContents)
-        self._action(help_menu, "keyboard_shortcuts", lambda: show_shortcuts(self, language))
+        self._action(help_menu, "keyboard_shortcuts", lambda: self._help("show_shortcuts", language))
         self._action(help_menu, "about", lambda: QMessageBox.about(
             self, tr("app_name", language), tr("about_text", language, version=__version__)))
+
+    def _help(self, name: str, language: str):
+        """Show a help page (``help_dialogs.show_first_steps`` or ``show_shortcuts``) in ``language``; the
+        module is imported when first asked for, as start-up does not need it."""
+        from rockly_desktop.ui import help_dialogs
+
+        getattr(help_dialogs, name)(self, language)
 
     def createPopupMenu(self):
         """Qt override: the menu a right-click on a toolbar or dock offers (to hide them); none in kiosk mode."""
