@@ -445,7 +445,8 @@ class MainWindow(QMainWindow):
 
         RobotProgramsDialog(self.attached, self.language, self,
                             open_copy=lambda path, name: self.files.open_copy(path, name), document=self.document,
-                            limits=lambda: self.settings.teacher.limits(self.profile.id)).show()
+                            limits=lambda: self.settings.teacher.limits(self.profile.id),
+                            via="auto" if self.robots.kind == "ros1" else "tcp").show()
 
     def make_block(self, chosen: str = ""):
         """Open the block maker (Tools → Make a block…), with the topic, service or action ``chosen`` chosen."""

@@ -73,6 +73,7 @@ class AgentClient:
             from rockly_desktop.runtime.agent.tcp_transport import TcpLine
 
             self._line = TcpLine(host, port, language, timeout, self._take, self._gone)
+        self.where = self._line.where  # the agent's host, or its ROS 1 master and namespace: what a window names
         self._heart = threading.Thread(target=self._beat, daemon=True, name="agent-heartbeat")
         self._heart.start()
         try:

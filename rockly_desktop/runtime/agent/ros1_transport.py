@@ -135,6 +135,7 @@ class RosLine:
         if not agent_in_graph(master, namespace):
             raise not_there
         self.who = f"{node}/{os.getpid()}-{uuid.uuid4().hex[:8]}"
+        self.where = f"{master} ({namespace})"  # what a window names
         self._take, self._gone = take, gone
         self._ready = threading.Event()
         self._ended = threading.Event()

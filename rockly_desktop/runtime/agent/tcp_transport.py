@@ -25,7 +25,7 @@ class TcpLine:
     beats_always = False  # the agent hears a closed connection; heartbeats only say the editor is there
 
     def __init__(self, host: str, port: int, language: str, timeout: float, take, gone):
-        self.where = f"{host}:{port}"
+        self.where = host  # what a window names
         try:
             self._socket = socket.create_connection((host, port), timeout)
         except OSError as error:

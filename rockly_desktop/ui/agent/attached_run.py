@@ -34,18 +34,20 @@ class AttachedRun(QObject):
         """True while attached to a run that has not ended."""
         return self.client is not None and self.state != "idle"
 
-    def attach(self, host: str, port: int) -> dict:
-        """Attach to what runs on the agent at ``host``:``port`` and show its state so far; returns the agent's
-        answer. Raises ``AgentError`` (its message for people) when it cannot. Waits for the agent: a window
-        calls ``reach`` off its thread and ``adopt`` on it instead."""
+    def attach(self, host: str, port: int, via: str = "tcp") -> dict:
+        """Attach to what runs on the agent at ``host``:``port`` (or over ROS: ``via``, as ``AgentClient`` has it)
+        and show its state so far; returns the agent's answer. Raises ``AgentError`` (its message for people)
+        when it cannot. Waits for the agent: a window calls ``reach`` off its thread and ``adopt`` on it instead."""
         self.detach()
-        return self.adopt(self.reach(host, port), host)
+        reached = self.reach(host, port, via)
+        return self.adopt(reached, reached[0].where)
 
-    def reach(self, host: str, port: int) -> tuple:
-        """Connect to the agent at ``host``:``port`` and attach to its run: ``(client, answer)`` for ``adopt``.
-        Touches nothing of the window, so it may run on any thread. Raises ``AgentError`` when it cannot."""
+    def reach(self, host: str, port: int, via: str = "tcp") -> tuple:
+        """Connect to the agent at ``host``:``port`` (or over ROS, ``via``) and attach to its run: ``(client,
+        answer)`` for ``adopt``. Touches nothing of the window, so it may run on any thread. Raises
+        ``AgentError`` when it cannot."""
         client = AgentClient(host, port, self.language(), on_event=self._sig_event.emit,
-                             on_closed=self._sig_closed.emit, name="rockly window")
+                             on_closed=self._sig_closed.emit, name="rockly window", via=via)
         try:
             answer = client.attach(control=True)
         except AgentError:

@@ -36,14 +36,17 @@ class RobotProgramsDialog(QDialog):
     its program (as an untitled copy) when it differs from the window's; Send sends the window's program
     (``document``: its file and profile) under ``limits()``, the teacher's limits in force. The agent is asked
     off the window's thread (``calls``): while an answer is on its way, ``status`` says so and the buttons that
-    would ask again wait; answers that come after the dialog was closed are dropped."""
+    would ask again wait; answers that come after the dialog was closed are dropped. ``via`` is how the agent
+    is reached (``AgentClient``'s: ``auto`` for a ROS 1 robot: over ROS when its agent is in the graph)."""
 
     def __init__(self, attached, language: str, parent=None, host: str = "localhost", port: int = DEFAULT_PORT,
-                 open_copy=None, document=None, limits=None):
+                 open_copy=None, document=None, limits=None, via: str = "tcp"):
         super().__init__(parent)
+        self.via = via
         self.attached, self.language, self._open_copy = attached, language, open_copy
         self.document, self._limits = document, limits
         self._robot_source = None
+        self._where = host  # where the window attached (the agent's host, or its ROS master and namespace)
         self.calls = AgentCalls(self)
         self._enabled_before = None  # the asking buttons' states while an answer is on its way
         self._copies = tempfile.TemporaryDirectory(prefix="rockly-robot-copy-")
@@ -60,6 +63,10 @@ class RobotProgramsDialog(QDialog):
         address.addWidget(self.refresh_button)
         form = QFormLayout()
         form.addRow(tr("robot_programs_host", language), address)
+        if via != "tcp":
+            note = QLabel(tr("robot_programs_via_ros", language))
+            note.setWordWrap(True)
+            form.addRow(note)
         self.programs = QListWidget()
         self.running = QLabel()
         self.status = QLabel()
@@ -173,14 +180,15 @@ class RobotProgramsDialog(QDialog):
         """Attach the window to what runs on the robot."""
         host, port = self.host.text().strip(), self.port.value()
         self.attached.detach()
-        self._ask(lambda: self.attached.reach(host, port), self._reached,
+        self._ask(lambda: self.attached.reach(host, port, self.via), self._reached,
                   unused=lambda reached: reached[0].close())
 
     def _reached(self, reached, error):
         if error is not None:
             self.status.setText(error.message)
             return
-        self.attached.adopt(reached, self.host.text().strip())
+        self._where = reached[0].where
+        self.attached.adopt(reached, self._where)
         self.attach_button.setEnabled(False)
         name = self.attached.program
         self._with_client(lambda client: client.source(name), lambda source: self._got_source(name, source),
@@ -188,7 +196,7 @@ class RobotProgramsDialog(QDialog):
 
     def _got_source(self, name: str, source):
         self._robot_source = source
-        self.status.setText(tr("attached_to", self.language, name=name, host=self.host.text()))
+        self.status.setText(tr("attached_to", self.language, name=name, host=self._where))
         if source is not None:
             self.attached.editor.call("getState", None, self._compare)
 
@@ -215,7 +223,7 @@ class RobotProgramsDialog(QDialog):
         host, port, language = self.host.text().strip(), self.port.value(), self.language
 
         def work():
-            client = AgentClient(host, port, language, name="rockly window")
+            client = AgentClient(host, port, language, name="rockly window", via=self.via)
             try:
                 return call(client)
             finally:
