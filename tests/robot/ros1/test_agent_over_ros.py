@@ -215,3 +215,25 @@ def test_no_agent_in_the_graph_is_said(robot):
     assert told.returncode == 1
     assert told.stderr == (f"rockly robot: kein Rockly-Agent antwortet im ROS-1-Namensraum /nobody_here bei "
                            f"{master.uri} (läuft 'rockly agent --backend ros1' auf dem Roboter, mit diesem Master?)\n")
+
+
+def test_an_editor_gone_silent_over_ros_leaves_control_to_the_next(robot, agent):
+    """A topic has no closed connection: the agent forgets a client it no longer hears (5 s), so a window that
+    comes after the killed editor controls the run."""
+    master, programs, _ = robot
+    watcher = started(master, programs, "far", "--keep-going")
+    editor = Attached(master)
+    assert editor.first["controller"] is True
+    editor.process.kill()
+    editor.end()
+
+    def next_window_controls():
+        window = Attached(master)
+        window.end()
+        return window.first["controller"]
+    try:
+        eventually(next_window_controls, 60, interval=0.5)
+        assert run_robot(master, "stop").returncode == 0
+        watcher.wait_for(ended)
+    finally:
+        watcher.end()
