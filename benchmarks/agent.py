@@ -4,7 +4,9 @@
     received by a separate plain rospy node, while the program drives under the agent (aim <= 50 ms);
     baseline: the same stop of the same program run in this process (the laptop's run, as benchmarks/ros1.py);
   - attach: a new client connecting, saying hello and attaching to a running program until the run's state is
-    in hand (aim <= 1 s); baseline: one bare TCP request/answer with the same agent (connect, a line, a line).
+    in hand (aim <= 1 s); baseline: one bare TCP request/answer with the same agent (connect, a line, a line);
+  - both again over ROS 1 (the agent's topics, ``AgentClient(via="ros")``), each with its ratio to the TCP figure
+    of the same run.
 
 A real rosmaster on a free port; the agent and the echo node are processes of their own.
 
@@ -93,7 +95,6 @@ def agent_process(master, home, library):
 
 def main():
     from rockly_desktop.profiles.registry import ProfileRegistry
-    from rockly_desktop.runtime.agent.client import AgentClient
 
     home = Path(tempfile.mkdtemp(prefix="rockly-bench-agent-"))
     master = RosMaster(home).start()
@@ -101,27 +102,10 @@ def main():
     echo = Echo(master, home)
     agent, port = agent_process(master, home, home / "library")
     hobbit = ProfileRegistry.discover().get("hobbit")
-    events = []
-    client = AgentClient("127.0.0.1", port, on_event=events.append)
     try:
-        client.send("drive", standalone_program(hobbit))
-        client.attach()
-        agent_stops = []
-        for _ in range(STOP_TRIALS):
-            events.clear()
-            begun = time.time()
-            client.start("drive")
-            echo.wait_for("move", begun, 60)
-            time.sleep(0.1)  # the run is in its wait
-            requested = time.time()
-            client.stop()
-            agent_stops.append(echo.wait_for("zero", requested) - requested)
-            while not any(event.get("state") == "ended" for event in list(events)):
-                time.sleep(0.01)
-        attaches, bare = attach_times(port, client)
+        agent_stops, attaches, bare, ros_stops, ros_attaches = agent_figures(port, master, hobbit, echo)
         local = local_stops(hobbit, master, echo)
     finally:
-        client.close()
         agent.terminate()
         agent.wait(30)
         echo.process.kill()
@@ -130,30 +114,79 @@ def main():
            "the same run on the laptop", "50 ms")
     report("attach to a running program (connect, hello, attach)", attaches, bare,
            "a bare TCP request to the agent", "1000 ms")
+    report("over ROS 1: STOP -> zero Twist on the wire, program under the agent", ros_stops, agent_stops,
+           "the same over TCP", "50 ms")
+    report("over ROS 1: attach to a running program (connect, hello, attach)", ros_attaches, attaches,
+           "the same over TCP", "1000 ms")
     print("(one loaded machine shared with other work: figures vary between runs)")
 
 
-def attach_times(port, client):
-    """Attach times with the program running, and the bare TCP request baseline."""
+def agent_figures(port, master, hobbit, echo):
+    """STOP and attach times over TCP, then over ROS 1, with the same agent and program."""
     from rockly_desktop.runtime.agent.client import AgentClient
 
+    events = []
+    client = AgentClient("127.0.0.1", port, on_event=events.append)
+    try:
+        client.send("drive", standalone_program(hobbit))
+        client.attach()
+        stops = stop_times(client, events, echo)
+        attaches, bare = attach_times(client, lambda: AgentClient("127.0.0.1", port), lambda: bare_request(port))
+    finally:
+        client.close()
+    events = []
+    client = AgentClient(via="ros", master=master.uri, on_event=events.append)
+    try:
+        client.attach()
+        ros_stops = stop_times(client, events, echo)
+        ros_attaches, _ = attach_times(client, lambda: AgentClient(via="ros", master=master.uri), lambda: None)
+    finally:
+        client.close()
+    return stops, attaches, bare, ros_stops, ros_attaches
+
+
+def stop_times(client, events, echo):
+    """STOP -> zero Twist times of the program started and stopped through ``client`` (attached: ``events``)."""
+    stops = []
+    for _ in range(STOP_TRIALS):
+        events.clear()
+        begun = time.time()
+        client.start("drive")
+        echo.wait_for("move", begun, 60)
+        time.sleep(0.1)  # the run is in its wait
+        requested = time.time()
+        client.stop()
+        stops.append(echo.wait_for("zero", requested) - requested)
+        while not any(event.get("state") == "ended" for event in list(events)):
+            time.sleep(0.01)
+    return stops
+
+
+def bare_request(port):
+    with socket.create_connection(("127.0.0.1", port)) as raw:
+        raw.sendall(json.dumps({"op": "list", "id": 1}).encode() + b"\n")
+        raw.makefile("rb").readline()
+
+
+def attach_times(client, new_client, baseline):
+    """Attach times of clients ``new_client()`` with the program running, and ``baseline()``'s times."""
     client.start("drive")
     attaches, bare = [], []
     try:
         for _ in range(ATTACH_TRIALS):
             started = time.perf_counter()
-            watcher = AgentClient("127.0.0.1", port)
+            watcher = new_client()
             state = watcher.attach(control=False)
             attaches.append(time.perf_counter() - started)
             assert state["run"] is not None
             watcher.close()
             started = time.perf_counter()
-            with socket.create_connection(("127.0.0.1", port)) as raw:
-                raw.sendall(json.dumps({"op": "list", "id": 1}).encode() + b"\n")
-                raw.makefile("rb").readline()
+            baseline()
             bare.append(time.perf_counter() - started)
     finally:
         client.stop()
+        while client.programs()["run"] is not None:  # ended: the next figures start their own runs
+            time.sleep(0.01)
     return attaches, bare
 
 

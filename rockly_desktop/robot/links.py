@@ -60,7 +60,9 @@ class LinkKind:
     ``sim_option`` (e.g. ``--ros``) makes ``rockly sim`` serve the simulator on this link's
     middleware through ``sim_server`` (``module:callable``, see ``serve_simulator``).
     ``recording_encoder`` (``module:callable``, see ``recording_encoder``) encodes the robot's topics
-    in a recording of a run on this link; None: they are recorded as JSON.
+    in a recording of a run on this link; None: they are recorded as JSON. ``agent_topics`` (a module, see
+    ``agent_topics``) carries the robot's agent's messages on this link's middleware; None: the agent is reached
+    over TCP only.
     """
 
     kind: str
@@ -74,6 +76,7 @@ class LinkKind:
     sim_option: str = None
     sim_server: str = None
     recording_encoder: str = None
+    agent_topics: str = None
 
     def link_class(self):
         """The link class (imported now, on first use)."""
@@ -121,7 +124,7 @@ LINKS = {entry.kind: entry for entry in (
              settings=ROS1_SETTINGS,
              settings_group="ros", explanation="connect_explanation",
              sim_option="--ros", sim_server="rockly_desktop.robot.ros1.sim_bridge:serve_simulator",
-             recording_encoder=ROS1_ENCODER),
+             recording_encoder=ROS1_ENCODER, agent_topics="rockly_desktop.robot.ros1.agent_topics"),
     LinkKind("ros2", "rockly_desktop.robot.ros2.link:Ros2Robot", "backend_ros2", "a robot over ROS 2",
              settings=ROS2_SETTINGS, settings_group="ros2", explanation="connect_explanation_ros2",
              sim_option="--ros2", sim_server="rockly_desktop.robot.ros2.sim_bridge:serve_simulator",
@@ -191,6 +194,13 @@ def recording_encoder(kind: str, profile, msg_types=()):
     except ImportError:
         return None
     return make(profile, msg_types)
+
+
+def agent_topics(kind: str):
+    """The module of ``kind``'s entry that carries the robot's agent's messages on its middleware
+    (``robot/ros1/agent_topics.py`` is the example), imported now; None when the entry names none."""
+    target = link_kind(kind).agent_topics
+    return importlib.import_module(target) if target is not None else None
 
 
 def _load(target: str):

@@ -490,7 +490,8 @@ class MainWindow(QMainWindow):
         RobotProgramsDialog(self.attached, self.language, self, *address,
                             open_copy=lambda path, name: self.files.open_copy(path, name), document=self.document,
                             limits=lambda: self.settings.teacher.limits(self.profile.id),
-                            reached=self._remember_agent).show()
+                            reached=self._remember_agent,
+                            via="auto" if self.robots.kind == "ros1" else "tcp").show()
 
     def make_block(self, chosen: str = "", kind: str = ""):
         """Open the block maker (Tools → Make a block…), with the topic, service or action ``chosen`` (of

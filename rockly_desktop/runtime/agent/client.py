@@ -1,6 +1,7 @@
 """``AgentClient``: a Qt-free client of the robot's agent, for ``rockly robot ...`` and the window alike.
 
     client = AgentClient("robot.local", language="de", on_event=print)   # connects and says hello
+    client = AgentClient(via="ros", master="http://robot:11311")          # the same over ROS 1
     client.send("square", standalone_text, source_text, on_lost_editor="keep_going", decide_seconds=2.0)
     client.programs(); client.start("square")
     state = client.attach(control=True)      # the run so far; events then arrive on ``on_event`` (its thread)
@@ -14,30 +15,45 @@ window hands it on to its own thread). While attached, the client sends a heartb
 editor is lost. A connection that breaks ends the calls waiting with ``AgentError("agent_connection_lost")``
 and calls ``on_closed``; an agent that does not answer within ``timeout`` ends the call with
 ``AgentError("agent_no_answer")``.
+
+``via`` picks the transport (one module each): ``tcp`` (``agent.tcp_transport``: ``host``:``port``), ``ros``
+(``agent.ros1_transport``: the agent's topics in ``namespace`` on ROS 1 ``master``; this process's one ROS 1
+node), or ``auto``: ROS when ``master`` is given (or this process already has its ROS 1 node) and an agent
+is in that graph, TCP otherwise.
 """
 import itertools
-import socket
 import threading
 
 from rockly_desktop import __version__
 from rockly_desktop.core.app_texts import app_text
-from rockly_desktop.runtime.agent.protocol import DEFAULT_PORT, FORMAT, HEARTBEAT_SECONDS, decode, encode
+from rockly_desktop.runtime.agent.protocol import (
+    DEFAULT_NAMESPACE,
+    DEFAULT_PORT,
+    FORMAT,
+    HEARTBEAT_SECONDS,
+    AgentError,
+)
+
+VIAS = ("auto", "tcp", "ros")
 
 
-class AgentError(Exception):
-    """The agent refused a request, or could not be reached: ``key`` and a ``message`` for people."""
+def chosen_via(via: str, master: str = None, namespace: str = DEFAULT_NAMESPACE) -> str:
+    """``tcp`` or ``ros`` for ``via`` (``auto``: ROS when an agent is in the ROS 1 graph at hand, see above)."""
+    if via != "auto":
+        return via
+    from rockly_desktop.runtime.agent.ros1_transport import agent_in_graph, master_at_hand
 
-    def __init__(self, key: str, message: str):
-        super().__init__(message)
-        self.key = key
-        self.message = message
+    master = master or master_at_hand()
+    return "ros" if master and agent_in_graph(master, namespace) else "tcp"
 
 
 class AgentClient:
-    """A connection to the agent at ``host``:``port``."""
+    """A connection to the agent: at ``host``:``port`` over TCP, or in ``namespace`` on ROS 1 ``master``
+    (``via``, see above; ``self.via`` says which was taken)."""
 
     def __init__(self, host: str = "localhost", port: int = DEFAULT_PORT, language: str = "en",
-                 on_event=None, on_closed=None, name: str = "rockly", timeout: float = 10.0):
+                 on_event=None, on_closed=None, name: str = "rockly", timeout: float = 10.0, via: str = "tcp",
+                 master: str = None, namespace: str = DEFAULT_NAMESPACE):
         self.language = language
         self.on_event = on_event
         self.on_closed = on_closed
@@ -47,18 +63,19 @@ class AgentClient:
         self._ids = itertools.count(1)
         self._waiting = {}
         self._lock = threading.Lock()
-        self._send_lock = threading.Lock()
         self._closed = threading.Event()
         self._attached = threading.Event()
-        try:
-            self._socket = socket.create_connection((host, port), timeout)
-        except OSError as error:
-            raise AgentError("agent_unreachable", app_text("agent_unreachable", language, host=host, port=port,
-                                                           reason=error.strerror or str(error))) from None
-        self._socket.settimeout(None)
-        self._socket.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
-        self._reader = threading.Thread(target=self._read, daemon=True, name="agent-client")
-        self._reader.start()
+        self._watching = threading.Event()  # from the attach request on: the run's events are wanted
+        self.via = chosen_via(via, master, namespace)
+        if self.via == "ros":
+            from rockly_desktop.runtime.agent.ros1_transport import RosLine
+
+            self._line = RosLine(master, namespace, language, timeout, self._take, self._gone)
+        else:
+            from rockly_desktop.runtime.agent.tcp_transport import TcpLine
+
+            self._line = TcpLine(host, port, language, timeout, self._take, self._gone)
+        self.where = self._line.where  # the agent's host, or its ROS 1 master and namespace: what a window names
         self._heart = threading.Thread(target=self._beat, daemon=True, name="agent-heartbeat")
         self._heart.start()
         try:
@@ -67,6 +84,11 @@ class AgentClient:
             self.on_event = self.on_closed = None  # nobody was told of a client that never was
             self.close()  # an agent that never answers (or refuses) keeps no socket or thread of this client
             raise
+        if self.hello.get("format") != FORMAT:  # an agent that did not check (it is older than the check)
+            self.on_event = self.on_closed = None
+            self.close()
+            raise AgentError("agent_other_format", app_text("agent_other_format", language,
+                                                            agent=self.hello.get("agent", "?"), client=__version__))
 
     def request(self, op: str, **fields) -> dict:
         """Send request ``op`` and return the agent's answer (its fields, without ``reply`` and ``ok``); raises
@@ -84,8 +106,8 @@ class AgentClient:
                 self._waiting.pop(number, None)
             if answered or self._closed.is_set():
                 raise self._lost()
-            raise AgentError("agent_no_answer", app_text("agent_no_answer", self.language, host=self.address[0],
-                                                         port=self.address[1], seconds=f"{self.timeout:g}"))
+            raise AgentError("agent_no_answer", app_text("agent_no_answer", self.language, where=self.where,
+                                                         seconds=f"{self.timeout:g}"))
         if not answer.get("ok"):
             raise AgentError(answer.get("error", "?"), answer.get("message", "?"))
         return {key: value for key, value in answer.items() if key not in ("reply", "ok")}
@@ -121,7 +143,12 @@ class AgentClient:
         ``breakpoints``): returns ``{"run": snapshot or None, "controller": bool, "controlled_elsewhere": bool}``;
         heartbeats start. Control that comes later (the controlling client went) is said by the event
         ``{"event": "control", "controller": true}``."""
-        answer = self.request("attach", control=control, breakpoints=list(breakpoints))
+        self._watching.set()
+        try:
+            answer = self.request("attach", control=control, breakpoints=list(breakpoints))
+        except AgentError:
+            self._watching.clear()
+            raise
         self.controller = answer["controller"]
         self._attached.set()
         return answer
@@ -129,6 +156,7 @@ class AgentClient:
     def detach(self):
         """Stop watching (and controlling); the run goes on as its program's choice for a lost editor says."""
         self._attached.clear()
+        self._watching.clear()
         self.request("detach")
 
     def control(self, what: str):
@@ -142,48 +170,37 @@ class AgentClient:
     def close(self):
         """Close the connection (an attached client detaches)."""
         self._closed.set()
-        try:
-            self._socket.shutdown(socket.SHUT_RDWR)
-        except OSError:
-            pass
-        self._socket.close()
-        self._reader.join(5)
+        self._line.close()
         self._heart.join(5)
 
     def _lost(self) -> AgentError:
         return AgentError("agent_connection_lost", app_text("agent_connection_lost", self.language))
 
     def _write(self, message: dict):
-        try:
-            with self._send_lock:
-                self._socket.sendall(encode(message))
-        except OSError:
+        if not self._line.write(message):
             self._closed.set()
 
     def _beat(self):
         while not self._closed.wait(HEARTBEAT_SECONDS):
-            if self._attached.is_set():
+            if self._attached.is_set() or self._line.beats_always:
                 self._write({"op": "heartbeat"})
 
-    def _read(self):
-        try:
-            for line in self._socket.makefile("rb"):
-                message = decode(line)
-                if message is None:
-                    continue
-                if "event" in message:
-                    if message["event"] == "control":
-                        self.controller = bool(message.get("controller"))
-                    if self.on_event is not None:
-                        self.on_event(message)
-                    continue
-                with self._lock:
-                    waiting = self._waiting.pop(message.get("reply"), None)
-                if waiting is not None:
-                    waiting[0].update(message)
-                    waiting[1].set()
-        except (OSError, ValueError):
-            pass
+    def _take(self, message: dict):
+        """One message from the agent (on the transport's reader thread): an event or an answer."""
+        if "event" in message:
+            if message["event"] == "control":
+                self.controller = bool(message.get("controller"))
+            if self.on_event is not None and self._watching.is_set():
+                self.on_event(message)
+            return
+        with self._lock:
+            waiting = self._waiting.pop(message.get("reply"), None)
+        if waiting is not None:
+            waiting[0].update(message)
+            waiting[1].set()
+
+    def _gone(self):
+        """The transport has ended (once): the calls waiting are told, then ``on_closed``."""
         self._closed.set()
         with self._lock:
             waiting, self._waiting = list(self._waiting.values()), {}

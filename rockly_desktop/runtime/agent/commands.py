@@ -9,8 +9,8 @@ import threading
 from pathlib import Path
 
 from rockly_desktop.core.app_texts import app_text
-from rockly_desktop.runtime.agent.client import AgentClient, AgentError
-from rockly_desktop.runtime.agent.protocol import DEFAULT_PORT
+from rockly_desktop.runtime.agent.client import VIAS, AgentClient, AgentError
+from rockly_desktop.runtime.agent.protocol import DEFAULT_NAMESPACE, DEFAULT_PORT
 
 
 def default_library() -> Path:
@@ -73,6 +73,8 @@ def _agent_options(agent):
     agent.add_argument("--host", default="0.0.0.0", help=app_text("agent_host_help", "en"))
     agent.add_argument("--port", type=int, default=DEFAULT_PORT, help=app_text("agent_port_help", "en"))
     agent.add_argument("--speed", type=float, default=1.0, help=app_text("standalone_speed_help", "en"))
+    agent.add_argument("--namespace", default=DEFAULT_NAMESPACE,
+                       help=app_text("agent_namespace_help", "en", namespace=DEFAULT_NAMESPACE))
 
 
 def add_robot_parser(commands, language_option):
@@ -85,6 +87,10 @@ def add_robot_parser(commands, language_option):
 def _robot_options(robot):
     robot.add_argument("--host", default="localhost", help=app_text("robot_host_help", "en"))
     robot.add_argument("--port", type=int, default=DEFAULT_PORT, help=app_text("agent_port_help", "en"))
+    robot.add_argument("--via", choices=VIAS, default="auto", help=app_text("robot_via_help", "en"))
+    robot.add_argument("--master", help=app_text("robot_master_help", "en"))
+    robot.add_argument("--namespace", default=DEFAULT_NAMESPACE,
+                       help=app_text("agent_namespace_help", "en", namespace=DEFAULT_NAMESPACE))
     actions = robot.add_subparsers(dest="robot_command", required=True)
     actions.add_parser("list", help=app_text("robot_list_help", "en"))
     send = actions.add_parser("send", help=app_text("robot_send_help", "en"))
@@ -107,7 +113,8 @@ def serve(args, language: str) -> int:
     from rockly_desktop.profiles.registry import ProfileRegistry
     from rockly_desktop.robot import links
     from rockly_desktop.runtime.agent.library import Library
-    from rockly_desktop.runtime.agent.server import Agent, AgentServer
+    from rockly_desktop.runtime.agent.server import Agent
+    from rockly_desktop.runtime.agent.tcp_transport import AgentServer
     from rockly_desktop.runtime.options import connection
 
     folder = args.library or default_library()
@@ -134,12 +141,30 @@ def serve(args, language: str) -> int:
     threading.Thread(target=server.serve_forever, daemon=True, name="agent-server").start()
     print(app_text("agent_ready", language, host=args.host, port=server.server_address[1], folder=folder,
                    backend=args.backend), flush=True)
+    offer = _offer_on_ros(agent, args, language) if args.backend == "ros1" else None
     while not ending.wait(0.5):
         pass
     server.shutdown()
+    if offer is not None:
+        offer.close()
     agent.shut_down()
     server.server_close()
     return 0
+
+
+def _offer_on_ros(agent, args, language: str):
+    """The agent's calls on the robot's ROS 1 master too (``agent.ros1_transport``); None (said on standard
+    error) when ROS 1 cannot be reached: TCP still serves."""
+    from rockly_desktop.runtime.agent.ros1_transport import RosOffer
+
+    try:
+        offer = RosOffer(agent, args.namespace, args.master, language)
+    except AgentError as error:
+        print(f"rockly agent: {error.message}", file=sys.stderr, flush=True)
+        return None
+    print(app_text("agent_ready_ros", language, master=offer.master, namespace=args.namespace),
+          flush=True)
+    return offer
 
 
 def robot_command(args, language: str, standalone_of=None) -> int:
@@ -155,7 +180,8 @@ def robot_command(args, language: str, standalone_of=None) -> int:
     try:
         client = AgentClient(args.host, args.port, language,
                              on_event=show if args.robot_command == "attach" else None,
-                             on_closed=done.set, name="rockly robot")
+                             on_closed=done.set, name="rockly robot", via=args.via, master=args.master,
+                             namespace=args.namespace)
     except AgentError as error:
         print(f"rockly robot: {error.message}", file=sys.stderr)
         return 1

@@ -1,4 +1,5 @@
-"""The agent's wire format: one JSON object per line over TCP (UTF-8, ``\\n`` at its end).
+"""The agent's messages: JSON objects, one per line over TCP (UTF-8, ``\\n`` at its end), one per std_msgs/String
+over ROS 1 (``agent.ros1_transport``).
 
 A client sends requests ``{"op": OP, "id": N, ...}``; the agent answers each with
 ``{"reply": N, "ok": true, ...}`` or ``{"reply": N, "ok": false, "error": KEY, "message": TEXT}`` (TEXT in the
@@ -14,6 +15,7 @@ HEARTBEAT_SECONDS = 0.2  # how often an attached client says it is there (well i
 LOST_EDITOR_CHOICES = ("keep_going", "stop")
 DEFAULT_DECIDE_SECONDS = 2.0
 MAX_LINE_BYTES = 64 * 1024 * 1024  # a program's text travels in one line
+DEFAULT_NAMESPACE = "/rockly_agent"  # of the agent's topics over ROS 1
 
 
 def encode(message: dict) -> bytes:
@@ -28,6 +30,16 @@ def decode(line: bytes):
     except (UnicodeDecodeError, ValueError):
         return None
     return message if isinstance(message, dict) else None
+
+
+class AgentError(Exception):
+    """The agent refused a request, or could not be reached: ``key`` and a ``message`` for people (a client's
+    side; ``AgentRefusal`` is the agent's)."""
+
+    def __init__(self, key: str, message: str):
+        super().__init__(message)
+        self.key = key
+        self.message = message
 
 
 class AgentRefusal(Exception):

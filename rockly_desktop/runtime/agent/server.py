@@ -1,4 +1,5 @@
-"""The agent (``rockly agent``): its library and its one run, offered to clients over TCP (``agent.protocol``).
+"""The agent (``rockly agent``): its library and its one run, offered to clients through its transports (TCP:
+``agent.tcp_transport``; ROS 1: ``agent.ros1_transport``), which all pass requests to ``Agent.answer``.
 
 Requests (each answered; refusals say why in the client's language):
 
@@ -24,41 +25,12 @@ controls the run (the first that asked to); when it goes, the next attached clie
 over and is told ``{"event": "control", "controller": true}``. The breakpoints are the controlling client's: they
 are cleared when it goes (a run must not pause where nobody watches), and the next controller sends its own.
 """
-import socket
-import socketserver
 import threading
 
 from rockly_desktop import __version__
 from rockly_desktop.runtime.agent.library import Library
-from rockly_desktop.runtime.agent.protocol import (
-    FORMAT,
-    MAX_LINE_BYTES,
-    AgentRefusal,
-    decode,
-    encode,
-    refusal_text,
-)
+from rockly_desktop.runtime.agent.protocol import FORMAT, AgentRefusal, refusal_text
 from rockly_desktop.runtime.agent.running import ProgramRun
-
-
-class _Client:
-    """One connected client: its socket, language, and whether it watches the run."""
-
-    def __init__(self, connection):
-        self.connection = connection
-        self.language = "en"
-        self.name = "?"
-        self.attached = False
-        self.wants_control = False
-        self._lock = threading.Lock()
-
-    def send(self, message: dict) -> bool:
-        try:
-            with self._lock:
-                self.connection.sendall(encode(message))
-            return True
-        except OSError:
-            return False
 
 
 class Agent:
@@ -77,7 +49,7 @@ class Agent:
 
     # -- requests
 
-    def handle(self, client: _Client, request: dict) -> dict:
+    def handle(self, client, request: dict) -> dict:
         """The answer to one ``request`` from ``client`` (without its ``reply`` id); refusals raise AgentRefusal."""
         op = request.get("op")
         handler = getattr(self, "_op_" + op, None) if isinstance(op, str) and op.isidentifier() else None
@@ -189,9 +161,14 @@ class Agent:
     # -- events and clients
 
     def publish(self, record: dict):
-        """Send ``record`` to every attached client (a client that cannot take it is dropped)."""
+        """Give ``record`` to every attached client (a client that cannot take it is dropped). Clients that share
+        an outlet (``client.deliver``: the ROS 1 transport's one events topic) get it through it once."""
+        delivered = {}
         for client in [client for client in list(self.clients) if client.attached]:
-            if not client.send(record):
+            outlet = client.deliver
+            if outlet not in delivered:
+                delivered[outlet] = outlet(record)
+            if not delivered[outlet]:
                 self._forget(client)
 
     def _snapshot(self):
@@ -214,33 +191,22 @@ class Agent:
         if successor is not None:
             successor.send({"event": "control", "controller": True})
 
-    def serve_client(self, connection):
-        """Read and answer ``connection``'s requests until it closes."""
-        client = _Client(connection)
+    def join(self, client):
+        """A transport's new ``client`` (``language``, ``name``, ``attached``, ``wants_control``,
+        ``send(message)``, ``deliver(event)``)."""
         with self._lock:
             self.clients.append(client)
-        reader = connection.makefile("rb")
-        try:
-            while True:
-                line = reader.readline(MAX_LINE_BYTES + 1)
-                if not line:
-                    break
-                request = decode(line)
-                if request is None:
-                    client.send({"reply": None, "ok": False, "error": "agent_bad_request",
-                                 "message": refusal_text(AgentRefusal("agent_bad_request"), client.language)})
-                    continue
-                answer = self._answer(client, request)
-                if answer is not None:
-                    client.send(answer)
-        except OSError:
-            pass
-        finally:
-            self._forget(client)
-            with self._lock:
+
+    def leave(self, client):
+        """``client`` is gone (its connection closed, or it fell silent): it neither watches nor controls."""
+        self._forget(client)
+        with self._lock:
+            if client in self.clients:
                 self.clients.remove(client)
 
-    def _answer(self, client, request):
+    def answer(self, client, request: dict):
+        """The message that answers ``request`` from ``client``: None for a request without an ``id`` that
+        succeeded (a heartbeat)."""
         try:
             answer = {"ok": True, **self.handle(client, request)}
         except AgentRefusal as refusal:
@@ -267,20 +233,3 @@ def _text(value) -> str:
     if not isinstance(value, str):
         raise AgentRefusal("agent_not_standalone")
     return value
-
-
-class AgentServer(socketserver.ThreadingTCPServer):
-    """The agent's TCP server on ``(host, port)``."""
-
-    daemon_threads = True
-    allow_reuse_address = True
-
-    def __init__(self, agent: Agent, host: str, port: int):
-        self.agent = agent
-        super().__init__((host, port), _Handler)
-
-
-class _Handler(socketserver.BaseRequestHandler):
-    def handle(self):
-        self.request.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
-        self.server.agent.serve_client(self.request)

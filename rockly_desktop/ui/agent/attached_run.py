@@ -57,8 +57,9 @@ class AttachedRun(QObject):
         """True while attached to a run that has not ended."""
         return self.client is not None and self.state != "idle"
 
-    def attach(self, host: str, port: int, then=None):
-        """Attach to what runs on the agent at ``host``:``port``, off the window's thread: returns at once. Once the
+    def attach(self, host: str, port: int, then=None, via: str = "tcp"):
+        """Attach to what runs on the agent at ``host``:``port`` (or over ROS: ``via``, as ``AgentClient`` has it),
+        off the window's thread: returns at once. Once the
         agent has answered (within ``ATTACH_TIMEOUT``), the run so far is shown and ``sig_attached`` said, or
         ``sig_attach_failed`` says why not; ``then(error)`` follows on the window's thread (``error``: None or the
         ``AgentError``). A later ``attach`` or ``detach`` drops this one."""
@@ -68,19 +69,19 @@ class AttachedRun(QObject):
 
         def reached(answer, error):
             if error is None:
-                self._adopt(answer, host)
+                self._adopt(answer, answer[0].where)
             else:
                 self.sig_attach_failed.emit(error.message)
             if then is not None:
                 then(error)
 
-        self.calls.run(lambda: self._reach(host, port, breakpoints, language), reached,
+        self.calls.run(lambda: self._reach(host, port, breakpoints, language, via), reached,
                        unused=lambda answer: answer[0].close())
 
-    def _reach(self, host: str, port: int, breakpoints: list, language: str) -> tuple:
+    def _reach(self, host: str, port: int, breakpoints: list, language: str, via: str) -> tuple:
         """Connect and attach (on a call's thread): ``(client, answer)``; raises ``AgentError`` when it cannot."""
         client = AgentClient(host, port, language, on_event=self._sig_event.emit, on_closed=self._sig_closed.emit,
-                             name="rockly window", timeout=ATTACH_TIMEOUT)
+                             name="rockly window", timeout=ATTACH_TIMEOUT, via=via)
         try:
             answer = client.attach(control=True, breakpoints=breakpoints)
         except AgentError:
@@ -92,14 +93,14 @@ class AttachedRun(QObject):
             raise AgentError("nothing_runs", tr("attach_nothing_runs", language))
         return client, answer
 
-    def _adopt(self, reached: tuple, host: str):
+    def _adopt(self, reached: tuple, where: str):
         """Become attached through ``reached`` and show the run so far."""
         self.detach()
         client, answer = reached
         run = answer["run"]
         self.client, self.program, self.controller = client, run["program"], client.controller
         self.recording = self._record(run) if self._record is not None else None  # first: it closes a replay
-        self.console.append(tr("attached_to", self.language(), name=self.program, host=host), "info")
+        self.console.append(tr("attached_to", self.language(), name=self.program, host=where), "info")
         if not self.controller:
             self.console.append(tr("attach_watching", self.language()), "info")
         self.console.append_lines(line for line in run["prints"] if line is not None)

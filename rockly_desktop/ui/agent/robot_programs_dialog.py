@@ -37,14 +37,17 @@ class RobotProgramsDialog(QDialog):
     there; Send sends the window's program
     (``document``: its file and profile) under ``limits()``, the teacher's limits in force. The agent is asked
     off the window's thread (``calls``): while an answer is on its way, ``status`` says so and the buttons that
-    would ask again wait; answers that come after the dialog was closed are dropped."""
+    would ask again wait; answers that come after the dialog was closed are dropped. ``via`` is how the agent
+    is reached (``AgentClient``'s: ``auto`` for a ROS 1 robot: over ROS when its agent is in the graph)."""
 
     def __init__(self, attached, language: str, parent=None, host: str = "localhost", port: int = DEFAULT_PORT,
-                 open_copy=None, document=None, limits=None, reached=None):
+                 open_copy=None, document=None, limits=None, reached=None, via: str = "tcp"):
         super().__init__(parent)
+        self.via = via
         self.attached, self.language, self._open_copy = attached, language, open_copy
         self.document, self._limits, self._reached = document, limits, reached
         self._robot_source = None
+        self._where = host  # where the window attached (the agent's host, or its ROS master and namespace)
         self.calls = AgentCalls(self)
         self._generation = 0  # of the dialog's showing: answers to an earlier one are dropped
         self._enabled_before = None  # the asking buttons' states while an answer is on its way
@@ -62,6 +65,10 @@ class RobotProgramsDialog(QDialog):
         address.addWidget(self.refresh_button)
         form = QFormLayout()
         form.addRow(tr("robot_programs_host", language), address)
+        if via != "tcp":
+            note = QLabel(tr("robot_programs_via_ros", language))
+            note.setWordWrap(True)
+            form.addRow(note)
         self.programs = QListWidget()
         self.running = QLabel()
         self.status = QLabel()
@@ -174,12 +181,13 @@ class RobotProgramsDialog(QDialog):
     def attach(self):
         """Attach the window to what runs on the robot (``AttachedRun.attach``: off the window's thread)."""
         host, port = self.host.text().strip(), self.port.value()
-        self._ask(lambda done: self.attached.attach(host, port, done), self._attached, waits=True)
+        self._ask(lambda done: self.attached.attach(host, port, done, self.via), self._attached, waits=True)
 
     def _attached(self, error):
         if error is not None:
             self.status.setText(error.message)
             return
+        self._where = self.attached.client.where
         self.attach_button.setEnabled(False)
         name = self.attached.program
         self._with_client(lambda client: client.source(name), lambda source: self._got_source(name, source),
@@ -187,7 +195,7 @@ class RobotProgramsDialog(QDialog):
 
     def _got_source(self, name: str, source):
         self._robot_source = source
-        self.status.setText(tr("attached_to", self.language, name=name, host=self.host.text()))
+        self.status.setText(tr("attached_to", self.language, name=name, host=self._where))
         if source is not None:
             self.attached.editor.call("getState", None, self._compare)
 
@@ -214,7 +222,7 @@ class RobotProgramsDialog(QDialog):
         host, port, language = self.host.text().strip(), self.port.value(), self.language
 
         def work():
-            client = AgentClient(host, port, language, name="rockly window")
+            client = AgentClient(host, port, language, name="rockly window", via=self.via)
             try:
                 return call(client)
             finally:

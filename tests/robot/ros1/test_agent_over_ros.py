@@ -1,0 +1,239 @@
+"""The agent's calls over ROS 1 (``rockly agent --backend ros1``'s topics in ``/rockly_agent``), against ``rockly sim
+hobbit --ros`` on a master of the test's own: ``rockly robot --via ros`` processes send, list, start, attach and
+stop; the editor's process killed mid-run stops the robot (a zero velocity on the wire, seen by an independent
+rospy node) or lets the run finish, as the program says; a client of another version, or no agent in the
+graph, is told plainly. Every client is given a TCP port nobody listens on: what works, works over ROS."""
+import json
+import struct
+import subprocess
+import sys
+import threading
+import time
+
+import pytest
+from agent_tools import REPO, AgentProcess
+from program_builder import block, number, rockly_document, stack
+from ros_helpers import RocklyProcess, RosMaster, ros_environment
+from standalone_tools import export_standalone
+from waiting import eventually
+from wire_recorder import WireRecorder
+
+ZERO = (0.0,) * 6
+NO_TCP = ("--port", "1")  # nothing listens there: a call that works went over ROS
+
+
+@pytest.fixture(scope="module")
+def robot(tmp_path_factory):
+    """``(master, programs, wire recorder)``: HOBBIT simulated on ROS; ``programs``: "far" drives 50 m (long
+    enough for every case here), "short" drives, waits 4 s and drives back."""
+    folder = tmp_path_factory.mktemp("agent-over-ros")
+    far, short = folder / "far.rockly", folder / "short.rockly"
+    far.write_text(rockly_document([block("hobbit_move", {"direction": "+"}, {"speed": number(50)}, id="far")]))
+    short.write_text(rockly_document([stack(
+        block("hobbit_move", {"direction": "+"}, {"speed": number(1)}, id="go"),
+        block("hobbit_wait", inputs={"seconds": number(4)}, id="linger"),
+        block("hobbit_move", {"direction": "-"}, {"speed": number(1)}, id="back"))]))
+    programs = {path.stem: export_standalone(path, folder / f"{path.stem}.py", "--language", "en")
+                for path in (far, short)}
+    master = RosMaster(folder / "ros").start()
+    simulator = RocklyProcess(["sim", "hobbit", "--ros", "--no-window", "--master", master.uri], master,
+                              ready_line="on ROS")
+    wire = WireRecorder(master, ["/cmd_vel"])
+    yield master, programs, wire
+    wire.stop()
+    simulator.stop()
+    master.stop()
+
+
+@pytest.fixture
+def agent(robot, tmp_path):
+    master, _, _ = robot
+    agent = AgentProcess(tmp_path / "library", "--master", master.uri, backend="ros1",
+                         env=ros_environment(master.uri, master.home))
+    yield agent
+    agent.stop()
+
+
+def robot_command(master, *args, language="en") -> list:
+    """``rockly robot --via ros --master MASTER ARGS`` (with a TCP port nobody listens on)."""
+    return [sys.executable, "-m", "rockly_desktop", "robot", "--via", "ros", "--master", master.uri, *NO_TCP,
+            "--language", language, *map(str, args)]
+
+
+def run_robot(master, *args, language="en") -> subprocess.CompletedProcess:
+    return subprocess.run(robot_command(master, *args, language=language), capture_output=True, text=True,
+                          timeout=120, cwd=REPO, env=ros_environment(master.uri, master.home))
+
+
+class Attached:
+    """``rockly robot --via ros attach [--watch-only]`` as a process; ``lines``: the JSON lines it printed."""
+
+    def __init__(self, master, *options):
+        self.lines = []
+        self.process = subprocess.Popen(robot_command(master, "attach", *options), cwd=REPO, text=True,
+                                        stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                        env=ros_environment(master.uri, master.home))
+        self._reader = threading.Thread(target=self._read, daemon=True)
+        self._reader.start()
+        eventually(lambda: self.lines or self.process.poll() is not None, 60)
+        assert self.lines, self.process.stderr.read()
+
+    def _read(self):
+        for line in self.process.stdout:
+            self.lines.append(json.loads(line))
+
+    @property
+    def first(self) -> dict:
+        return self.lines[0]
+
+    def seen(self, wanted) -> list:
+        return [line for line in list(self.lines) if wanted(line)]
+
+    def wait_for(self, wanted, timeout=60) -> dict:
+        eventually(lambda: self.seen(wanted), timeout)
+        return self.seen(wanted)[0]
+
+    def end(self):
+        if self.process.poll() is None:
+            self.process.kill()
+        self.process.wait(30)
+        self._reader.join(10)
+        self.process.stderr.close()
+
+
+def ended(line):
+    return line.get("event") == "run" and line.get("state") == "ended"
+
+
+def zero_velocities(wire) -> int:
+    return sum(1 for _type, raw in wire.on("/cmd_vel") if struct.unpack("<6d", raw) == ZERO)
+
+
+def started(master, programs, name, *send_options) -> Attached:
+    """Send program ``name``, start it and attach a watcher (not the editor) once it drives."""
+    sent = run_robot(master, "send", programs[name], "--name", name, *send_options)
+    assert sent.returncode == 0 and sent.stdout == f"'{name}' is on the robot now\n", sent.stderr
+    begun = run_robot(master, "start", name)
+    assert begun.returncode == 0 and begun.stdout == f"'{name}' started on the robot\n", begun.stderr
+    watcher = Attached(master, "--watch-only")
+    assert watcher.first["event"] == "attached" and watcher.first["controller"] is False
+    assert watcher.first["run"]["program"] == name
+    return watcher
+
+
+def test_send_list_start_attach_and_stop_over_ros(robot, agent):
+    master, programs, wire = robot
+    before = zero_velocities(wire)
+    watcher = started(master, programs, "far")
+    try:
+        listed = run_robot(master, "list")
+        assert listed.returncode == 0, listed.stderr
+        assert listed.stdout.startswith("far  hobbit 1.0.0  came 20") and "running: far" in listed.stdout
+        # without --via: the master given and an agent in its graph mean ROS
+        auto = subprocess.run([sys.executable, "-m", "rockly_desktop", "robot", "--master", master.uri, *NO_TCP,
+                               "list"], capture_output=True, text=True, timeout=120, cwd=REPO,
+                              env=ros_environment(master.uri, master.home))
+        assert auto.returncode == 0 and auto.stdout == listed.stdout, auto.stderr
+        eventually(lambda: (watcher.first["run"]["block"] == "far"
+                            or watcher.seen(lambda line: line.get("id") == "far")), 60)
+        stopped = run_robot(master, "stop")
+        assert stopped.stdout == "the program was stopped (the robot stops safely)\n", stopped.stderr
+        eventually(lambda: zero_velocities(wire) > before, 30)
+        end = watcher.wait_for(ended)  # events arrive over ROS
+        watcher.process.wait(60)
+    finally:
+        watcher.end()
+    finished = watcher.wait_for(lambda line: line.get("event") == "finished")
+    assert finished["outcome"] == "stopped" and end["status"] == 130
+    assert watcher.process.returncode == 0  # the attached process ends with the run
+    deleted = run_robot(master, "delete", "far")
+    assert deleted.stdout == "'far' was deleted from the robot\n", deleted.stderr
+    assert run_robot(master, "list").stdout == "no programs on the robot yet\n"
+
+
+def test_a_lost_editor_over_ros_stops_the_robot_within_the_time_to_decide(robot, agent):
+    master, programs, wire = robot
+    watcher = started(master, programs, "far", "--decide-seconds", "1")
+    editor = Attached(master)
+    try:
+        assert editor.first["controller"] is True
+        before = zero_velocities(wire)
+        editor.process.kill()  # the window's side is gone: its heartbeats end
+        killed = time.monotonic()
+        eventually(lambda: zero_velocities(wire) > before, 30)
+        # the product's promise: the robot stops within the chosen time (1 s), with room for a loaded machine
+        assert time.monotonic() - killed < 1.0 + 4.0
+        end = watcher.wait_for(ended)
+    finally:
+        editor.end()
+        watcher.end()
+    assert end["stopped_for_lost_editor"] is True
+    assert watcher.seen(lambda line: line.get("state") == "editor_lost")
+
+
+def test_a_lost_editor_over_ros_lets_a_keep_going_program_finish(robot, agent):
+    master, programs, _ = robot
+    watcher = started(master, programs, "short", "--keep-going", "--decide-seconds", "0.5")
+    editor = Attached(master)
+    try:
+        assert editor.first["controller"] is True and editor.first["run"]["state"] != "ended"
+        editor.process.kill()
+        end = watcher.wait_for(ended, 120)
+    finally:
+        editor.end()
+        watcher.end()
+    assert end["status"] == 0 and end["stopped_for_lost_editor"] is False
+    assert watcher.seen(lambda line: line.get("id") == "back")  # it went on past the time to decide
+    assert watcher.seen(lambda line: line.get("event") == "finished")[0]["outcome"] == "finished"
+
+
+OTHER_VERSION = """
+import sys
+import rockly_desktop.runtime.agent.client as client
+client.FORMAT, client.__version__ = 2, "9.0.0"
+from rockly_desktop.runtime.agent.commands import robot_main
+sys.exit(robot_main(sys.argv[1:]))
+"""
+
+
+@pytest.mark.parametrize("language, expected", [
+    ("en", "rockly robot: the robot's agent (Rockly 0.1.0) and this Rockly (9.0.0) do not speak the same language"),
+    ("de", "rockly robot: der Agent des Roboters (Rockly 0.1.0) und dieses Rockly (9.0.0) sprechen nicht dieselbe "
+           "Sprache"),
+])
+def test_a_client_of_another_version_is_told_over_ros(robot, agent, language, expected):
+    master, _, _ = robot
+    told = subprocess.run([sys.executable, "-c", OTHER_VERSION, "--via", "ros", "--master", master.uri, *NO_TCP,
+                           "--language", language, "list"], capture_output=True, text=True, timeout=120, cwd=REPO,
+                          env=ros_environment(master.uri, master.home))
+    assert told.returncode == 1 and told.stderr.startswith(expected), told.stderr
+
+
+def test_no_agent_in_the_graph_is_said(robot):
+    master, _, _ = robot
+    told = run_robot(master, "--namespace", "/nobody_here", "list", language="de")
+    assert told.returncode == 1
+    assert told.stderr == (f"rockly robot: kein Rockly-Agent antwortet im ROS-1-Namensraum /nobody_here bei "
+                           f"{master.uri} (läuft 'rockly agent --backend ros1' auf dem Roboter, mit diesem Master?)\n")
+
+
+def test_an_editor_gone_silent_over_ros_leaves_control_to_the_next(robot, agent):
+    """A topic has no closed connection: the agent forgets a client it no longer hears (5 s), so a window that
+    comes after the killed editor controls the run."""
+    master, programs, _ = robot
+    watcher = started(master, programs, "far", "--keep-going")
+    editor = Attached(master)
+    assert editor.first["controller"] is True
+    editor.process.kill()
+    editor.end()
+
+    def next_window_controls():
+        window = Attached(master)
+        window.end()
+        return window.first["controller"]
+    try:
+        eventually(next_window_controls, 60, interval=0.5)
+        assert run_robot(master, "stop").returncode == 0
+        watcher.wait_for(ended)
+    finally:
+        watcher.end()

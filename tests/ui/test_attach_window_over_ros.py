@@ -1,0 +1,96 @@
+"""The window on a ROS 1 robot reaches the robot's agent over ROS (``rockly agent --backend ros1`` in a process of
+its own on the session's master, beside ``rockly sim hobbit --ros``): Robot → Programs on the robot lists, attaches
+and STOPs without any TCP address that works; an agent killed mid-run is heard as a lost connection."""
+import subprocess
+import sys
+
+import pytest
+from agent_tools import REPO, AgentProcess
+from page_tools import call_page
+from program_builder import block, number, rockly_document, stack, workspace
+from ros_helpers import ros_environment
+from standalone_tools import environment, export_standalone
+from test_running import highlighted
+
+from rockly_desktop.robot.links import link_kind
+from rockly_desktop.ui.agent.robot_programs_dialog import RobotProgramsDialog
+from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
+
+
+def linger():
+    """Print, wait long, print."""
+    return stack(block("text_print", inputs={"TEXT": block("text", {"TEXT": "hello"})}, id="greet"),
+                 block("hobbit_wait", inputs={"seconds": number(1000)}, id="linger"),
+                 block("text_print", inputs={"TEXT": block("text", {"TEXT": "done"})}, id="tell"))
+
+
+@pytest.fixture
+def ros_window(window, ros_master, hobbit_on_ros, monkeypatch):
+    window.settings.remember_link_connection(link_kind("ros1"), "hobbit", {"master": ros_master.uri,
+                                                                           "host": "127.0.0.1"})
+    monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
+    backend = window.run_toolbar.backend
+    backend.setCurrentIndex(backend.findData("ros1"))
+    assert window.robots.kind == "ros1"
+    return window
+
+
+@pytest.fixture
+def running(ros_master, hobbit_on_ros, tmp_path):
+    """An agent on the session's master running "linger", kept going without an editor;
+    ``robot(*args)`` runs ``rockly robot --via ros`` against it."""
+    source = tmp_path / "linger.rockly"
+    source.write_text(rockly_document([linger()]))
+    env = environment(XDG_CONFIG_HOME=str(tmp_path / "config"), XDG_DATA_HOME=str(tmp_path / "data"))
+    exported = export_standalone(source, tmp_path / "linger.py", "--language", "en", env=env)
+    ros_env = ros_environment(ros_master.uri, tmp_path / "ros")
+    agent = AgentProcess(tmp_path / "library", "--master", ros_master.uri, backend="ros1", env=ros_env)
+
+    def robot(*args):
+        return subprocess.run([sys.executable, "-m", "rockly_desktop", "robot", "--via", "ros", "--master",
+                               ros_master.uri, "--language", "en", *map(str, args)], capture_output=True, text=True,
+                              timeout=120, cwd=REPO, env=ros_env)
+    assert robot("send", exported, "--name", "linger", "--keep-going").returncode == 0
+    assert robot("start", "linger").returncode == 0
+    yield agent, robot
+    robot("stop")
+    agent.stop()
+
+
+def open_and_attach(qtbot, window):
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(linger())})
+    window.show_robot_programs()
+    dialog = window.findChild(RobotProgramsDialog)
+    dialog.refresh_button.click()  # asked over ROS: nothing listens on the dialog's TCP address
+    qtbot.waitUntil(lambda: dialog.programs.count() == 1 and dialog.attach_button.isEnabled(), timeout=30000)
+    assert dialog.running.text().startswith("Running on the robot now: linger")
+    dialog.attach_button.click()
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["linger"], timeout=30000)
+    return dialog
+
+
+def test_the_window_on_a_ros_robot_lists_attaches_and_stops_over_ros(qtbot, ros_window, running, ros_master):
+    _agent, robot = running
+    dialog = open_and_attach(qtbot, ros_window)
+    try:
+        assert dialog.host.text() == "localhost" and ros_window.attached.client.via == "ros"
+        assert "hello" in ros_window.console.lines()
+        assert (f"Attached to 'linger' running on the robot at {ros_master.uri} (/rockly_agent)"
+                in ros_window.console.lines())
+        ros_window.run_toolbar.stop_action.trigger()
+        qtbot.waitUntil(lambda: not ros_window.attached.active, timeout=60000)
+        assert "running:" not in robot("list").stdout
+    finally:
+        dialog.calls.wait(30)
+
+
+def test_an_agent_killed_mid_run_is_a_lost_connection_over_ros(qtbot, ros_window, running):
+    agent, _robot = running
+    dialog = open_and_attach(qtbot, ros_window)
+    try:
+        agent.process.kill()
+        qtbot.waitUntil(lambda: not ros_window.attached.active, timeout=30000)
+        assert ("The connection to the robot's agent was lost: the window is no longer attached."
+                in ros_window.console.lines())
+    finally:
+        dialog.calls.wait(30)
