@@ -238,7 +238,7 @@ def test_attaching_again_after_the_connection_was_lost_shows_the_running_block_a
     attach(robot.port)
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"] and window.variables.values() == {"count": "7"},
                     timeout=10000)  # the variables while the run goes on
-    window.attached.client._socket.shutdown(socket.SHUT_RDWR)  # the network to the robot gone
+    window.attached.client._line._socket.shutdown(socket.SHUT_RDWR)  # the network to the robot gone
     qtbot.waitUntil(lambda: not window.attached.active, timeout=20000)
     assert ("The connection to the robot's agent was lost: the window is no longer attached."
             in window.console.lines())
