@@ -73,7 +73,7 @@ def test_the_window_on_a_ros_robot_lists_attaches_and_stops_over_ros(qtbot, ros_
     _agent, robot = running
     dialog = open_and_attach(qtbot, ros_window)
     try:
-        assert dialog.host.text() == "localhost" and ros_window.attached.client.via == "ros"
+        assert ros_window.attached.client.via == "ros"  # the dialog opens on the master's host; ROS was taken
         assert "hello" in ros_window.console.lines()
         assert (f"Attached to 'linger' running on the robot at {ros_master.uri} (/rockly_agent)"
                 in ros_window.console.lines())
