@@ -37,3 +37,11 @@ def test_a_profile_that_is_not_installed_is_named_with_those_that_are(tmp_path):
     assert result.returncode == 2
     assert result.stderr == ("rockly agent: there is no robot profile 'dalek' here (installed: hobbit, turtlebot), "
                              "so --offer-on-robot-ui cannot offer anything\n")
+
+
+def test_a_robot_that_cannot_be_reached_is_said_in_the_agents_language(tmp_path):
+    result = agent(tmp_path, "--backend", "ros1", "--master", "http://127.0.0.1:1", "--offer-on-robot-ui", "hobbit",
+                   language="de")
+    assert result.returncode == 2 and result.stdout == ""
+    assert result.stderr == ("rockly agent: die Programme können nicht auf der eigenen Oberfläche des Roboters "
+                             "angeboten werden: Unter http://127.0.0.1:1 antwortet kein ROS-Master.\n")

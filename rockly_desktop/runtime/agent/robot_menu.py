@@ -7,7 +7,7 @@ what the person chose through the agent, as a client's request would (a start wh
 import sys
 import threading
 
-from rockly_desktop.core.app_texts import app_text
+from rockly_desktop.core.app_texts import app_catalogue, app_text
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.program_menu import MenuChoice
@@ -39,13 +39,21 @@ def offer_on_robot_ui(agent, profiles: dict, profile_id: str, kind: str, connect
             raise NotOffered(app_text("agent_menu_not_offered", language, robot=profile.display_name(language)))
         link = links.open_link(kind, profile, connection)
     except RocklyError as error:
-        raise NotOffered(app_text("agent_menu_cannot_start", language, reason=error.in_language(language))) from None
+        raise NotOffered(app_text("agent_menu_cannot_start", language, reason=_said(error, language))) from None
     offer = RobotMenu(agent, menu, profile.id, link.backend)
 
     def close():
         offer.close()
         link.shutdown()
     return close
+
+
+def _said(error: RocklyError, language: str) -> str:
+    """``error`` in ``language``: a robot that cannot be reached by its ``reason``'s text (``ros_REASON``)."""
+    key = f"ros_{getattr(error, 'reason', None)}"
+    if key in app_catalogue():
+        return app_text(key, language, **getattr(error, "values", {}))
+    return error.in_language(language)
 
 
 class RobotMenu:
