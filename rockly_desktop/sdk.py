@@ -9,6 +9,8 @@ simulator declares its solid world as data (``World``, ``load_world``: walls and
 footprint cannot enter, which its laser sees) and restores its start with ``reset()``. What a
 laser sees in a direction ("ahead": a sector, ``AHEAD_HALF_WIDTH`` each side) is ``nearest_in_scan``
 (``nearest_reading`` for bare ranges), the same for commands, views and the Robot state panel.
+A profile that can offer the agent's programs on the robot's own UI (``rockly agent --offer-on-robot-ui``)
+subclasses ``ProgramMenu`` (its ``choose`` returns a ``MenuChoice``) and names it in the manifest's ``program_menu``.
 Its words are its own gettext catalogue (``profile_texts(__file__)``: ``locale/messages.pot`` in
 English and ``locale/LANG.po`` beside its profile.yaml); an error raised with one of them,
 ``RobotCommandError(TEXTS("key", value=...))``, is shown in the run's language.
@@ -24,13 +26,15 @@ from rockly_desktop.profiles.manifest import MANIFEST_NAME
 from rockly_desktop.robot.commands import RobotCommands
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
 from rockly_desktop.robot.laser import AHEAD_HALF_WIDTH, nearest_in_scan, nearest_reading
+from rockly_desktop.robot.program_menu import MenuChoice, ProgramMenu
 from rockly_desktop.robot.sim.simulator import RobotSimulator, twist_velocity
 from rockly_desktop.robot.sim.snapshot_values import as_number, as_point, as_points, with_defaults
 from rockly_desktop.robot.sim.tablet import TabletQuestion
 from rockly_desktop.robot.sim.world_map import Obstacle, World, load_world
 
 __all__ = [
-    "AHEAD_HALF_WIDTH", "GoalHandle", "GoalOutcome", "GoalStatus", "LocalText", "Obstacle", "RobotBackend",
+    "AHEAD_HALF_WIDTH", "GoalHandle", "GoalOutcome", "GoalStatus", "LocalText", "MenuChoice", "Obstacle",
+    "ProgramMenu", "RobotBackend",
     "RobotCommandError", "World", "RobotCommands", "RobotSimulator", "RobotTimeout", "TabletQuestion", "Texts",
     "as_number", "as_point", "as_points", "field_value", "load_world", "nearest_in_scan", "nearest_reading",
     "profile_texts", "twist_velocity", "with_defaults",

@@ -48,6 +48,10 @@ MANIFEST_FIELDS = (
               "module:Class of the built-in simulated robot: Class(world, tablet=, speed=)."),
     FieldSpec("simulator_view", "import", False,
               "module:Class of the QWidget drawing the simulator (set_snapshot(dict))."),
+    FieldSpec("program_menu", "program_menu", False,
+              "How `rockly agent --offer-on-robot-ui` offers the robot's programs on its own UI: {hook: "
+              "module:Class (an SDK ProgramMenu), stop: true (offer Stop while one runs), answer_seconds: N (how "
+              "long one question waits before it is asked anew; default 60)}."),
     FieldSpec("messages", "folder", False, "Folder with ROS definitions the robot needs: <package>/msg|srv|action/*."),
     FieldSpec("ros_interface", "ros_interface", False,
               "The robot's ROS interface: {subscribes: {TOPIC: TYPE}, publishes: {...}, services: {NAME: TYPE}, "
@@ -289,6 +293,21 @@ def _check_levels(value):
     return None
 
 
+def _check_program_menu(value):
+    if not isinstance(value, dict) or not isinstance(value.get("hook"), str) \
+            or not _IMPORT_PATH.fullmatch(value["hook"]):
+        return "must say its hook: {hook: 'package.module:Class', stop: true|false, answer_seconds: N}"
+    unknown = set(value) - {"hook", "stop", "answer_seconds"}
+    if unknown:
+        return f"unknown key(s) {sorted(unknown)} (use hook, stop, answer_seconds)"
+    if not isinstance(value.get("stop", False), bool):
+        return "'stop' must be true or false"
+    seconds = value.get("answer_seconds", 60)
+    if isinstance(seconds, bool) or not isinstance(seconds, (int, float)) or not 0 < seconds <= 3600:
+        return "'answer_seconds' must be a number of seconds above 0 and at most 3600"
+    return None
+
+
 def _check(spec: FieldSpec, value, root: Path):
     """Return a problem description for one field's value, or None if it is fine."""
     kind = spec.kind
@@ -336,6 +355,8 @@ def _check(spec: FieldSpec, value, root: Path):
         return _check_capabilities(value)
     elif kind == "levels":
         return _check_levels(value)
+    elif kind == "program_menu":
+        return _check_program_menu(value)
     return None
 
 

@@ -184,13 +184,14 @@ class Profile:
             "madeBlocks": sorted(block for pack in self.packs for block in pack.interfaces),  # "Edit this block…"
         }
 
-    def load_object(self, field_name: str):
-        """Import and return the object a manifest field names as ``module:Name``.
+    def load_object(self, field_name: str, target: str = None):
+        """Import and return the object a manifest field names as ``module:Name`` (``target``: the name it gives
+        inside, e.g. ``program_menu``'s ``hook``).
 
         The profile's python_path is put on ``sys.path`` first. Raises ManifestError
         naming the field when the module or the name cannot be imported.
         """
-        target = self.manifest.get(field_name)
+        target = target or self.manifest.get(field_name)
         if not target:
             raise ManifestError(self.root / MANIFEST_NAME, field_name, "is not set in this profile")
         module_name, attr = target.split(":")
@@ -217,14 +218,28 @@ class Profile:
         A failure inside the profile's code (other than a RocklyError it raises on
         purpose) becomes a ManifestError naming the field, never a traceback.
         """
-        found = self.load_object(field_name)
+        return self._make(field_name, self.manifest.get(field_name), args, kwargs)
+
+    def program_menu(self, language: str):
+        """The profile's way of offering the agent's programs on the robot's own UI (its ``program_menu`` hook, an
+        SDK ``ProgramMenu``, with the manifest's settings), speaking ``language``; None when the profile declares
+        none. ManifestError when the hook cannot be imported or started."""
+        menu = self.manifest.get("program_menu")
+        if not menu:
+            return None
+        return self._make("program_menu", menu["hook"], (language,),
+                          {"offers_stop": menu.get("stop", False),
+                           "answer_seconds": float(menu.get("answer_seconds", 60))})
+
+    def _make(self, field_name: str, target: str, args, kwargs):
+        found = self.load_object(field_name, target)
         try:
             return found(*args, **kwargs)
         except RocklyError:
             raise
         except (Exception, SystemExit) as error:
             raise ManifestError(self.root / MANIFEST_NAME, field_name,
-                                f"{self.manifest[field_name]} failed to start: {_failure(error)}") from error
+                                f"{target} failed to start: {_failure(error)}") from error
 
 
 def _failure(error: BaseException) -> str:

@@ -37,6 +37,7 @@ def test_the_ros1_node_script_starts_the_agent_without_roslaunchs_arguments(tmp_
 def test_the_launch_files_name_the_agent():
     launch = (DOCS / "rockly_agent" / "launch" / "rockly_agent.launch").read_text()
     assert 'pkg="rockly_agent" type="rockly_agent"' in launch and "--backend ros1" in launch
+    assert '<arg name="options" default=""/>' in launch and "$(arg options)" in launch  # e.g. --offer-on-robot-ui
     ros2 = ast.parse((DOCS / "rockly_agent.launch.py").read_text())
     assert "generate_launch_description" in [node.name for node in ros2.body if isinstance(node, ast.FunctionDef)]
     unit = (DOCS / "rockly-agent.service").read_text()

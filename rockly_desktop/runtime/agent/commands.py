@@ -75,6 +75,7 @@ def _agent_options(agent):
     agent.add_argument("--speed", type=float, default=1.0, help=app_text("standalone_speed_help", "en"))
     agent.add_argument("--namespace", default=DEFAULT_NAMESPACE,
                        help=app_text("agent_namespace_help", "en", namespace=DEFAULT_NAMESPACE))
+    agent.add_argument("--offer-on-robot-ui", metavar="PROFILE", help=app_text("agent_offer_help", "en"))
 
 
 def add_robot_parser(commands, language_option):
@@ -129,11 +130,16 @@ def serve(args, language: str) -> int:
         if setting.option and value is not None:
             options += [setting.option, str(value)]
     agent = Agent(Library(folder, ProfileRegistry.discover().profiles), args.backend, options)
+    close_offer = _offer_on_robot_ui(agent, args, language)
+    if close_offer is False:
+        return 2
     try:
         server = AgentServer(agent, args.host, args.port)
     except OSError as error:
         print(app_text("agent_cannot_listen", language, host=args.host, port=args.port, reason=error.strerror),
               file=sys.stderr)
+        if close_offer:
+            close_offer()
         return 1
     ending = threading.Event()
     for signum in (signal.SIGTERM, signal.SIGINT):
@@ -141,12 +147,16 @@ def serve(args, language: str) -> int:
     threading.Thread(target=server.serve_forever, daemon=True, name="agent-server").start()
     print(app_text("agent_ready", language, host=args.host, port=server.server_address[1], folder=folder,
                    backend=args.backend), flush=True)
-    offer = _offer_on_ros(agent, args, language) if args.backend == "ros1" else None
+    ros_calls = _offer_on_ros(agent, args, language) if args.backend == "ros1" else None
+    if close_offer:
+        print(app_text("agent_menu_offered", language, profile=args.offer_on_robot_ui), flush=True)
     while not ending.wait(0.5):
         pass
+    if close_offer:
+        close_offer()
     server.shutdown()
-    if offer is not None:
-        offer.close()
+    if ros_calls is not None:
+        ros_calls.close()
     agent.shut_down()
     server.server_close()
     return 0
@@ -165,6 +175,21 @@ def _offer_on_ros(agent, args, language: str):
     print(app_text("agent_ready_ros", language, master=offer.master, namespace=args.namespace),
           flush=True)
     return offer
+
+
+def _offer_on_robot_ui(agent, args, language):
+    """With ``--offer-on-robot-ui``: its ``close()``, or False when it cannot be offered (said why); else None."""
+    if not args.offer_on_robot_ui:
+        return None
+    from rockly_desktop.runtime.agent.robot_menu import NotOffered, offer_on_robot_ui
+    from rockly_desktop.runtime.options import connection
+
+    try:
+        return offer_on_robot_ui(agent, agent.library.profiles, args.offer_on_robot_ui, args.backend,
+                                 connection(args.backend, args), language)
+    except NotOffered as reason:
+        print(f"rockly agent: {reason}", file=sys.stderr, flush=True)
+        return False
 
 
 def robot_command(args, language: str, standalone_of=None) -> int:

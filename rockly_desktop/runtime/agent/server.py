@@ -45,6 +45,7 @@ class Agent:
         self.controller = None
         self.breakpoints = []  # the controlling client's: a run started while it is attached pauses there too
         self.clients = []
+        self.listeners = []  # called (no arguments) when the library changes or a run starts or ends
         self._lock = threading.RLock()
 
     # -- requests
@@ -75,6 +76,7 @@ class Agent:
                 raise AgentRefusal("agent_program_running", name=name)
             about = self.library.keep(name, _text(request.get("standalone")), request.get("source"),
                                       request.get("on_lost_editor", "stop"), request.get("decide_seconds", 2.0))
+        self._changed()
         return {"program": about}
 
     def _op_source(self, client, request):
@@ -93,6 +95,7 @@ class Agent:
                 options += ["--answer", answer]
             self.run = ProgramRun(about, path, options, self.publish, self._ended, self.breakpoints)
             self.publish({"event": "run", "state": "started", "program": name})
+            self._changed()
             return {"run": self.run.snapshot()}
 
     def _op_stop(self, client, request):
@@ -108,6 +111,7 @@ class Agent:
             if self.run is not None and self.run.about["name"] == name:
                 raise AgentRefusal("agent_program_running", name=name)
             self.library.delete(name)
+        self._changed()
         return {}
 
     def _op_attach(self, client, request):
@@ -179,6 +183,11 @@ class Agent:
         with self._lock:
             if self.run is run:
                 self.run = None
+        self._changed()
+
+    def _changed(self):
+        for listener in list(self.listeners):
+            listener()
 
     def _forget(self, client):
         with self._lock:

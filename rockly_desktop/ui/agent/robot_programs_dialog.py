@@ -1,9 +1,11 @@
 """Robot → "Programs on the robot…": the agent's address, the programs it keeps and what it runs now, with
 Send (the open program, exported standalone as ``rockly export --standalone`` does), Start, Stop and Attach
-(``AttachedRun``); once attached, whether the robot's program is the one open here."""
+(``AttachedRun``); once attached, whether the robot's program is the one open here; and, at a click, how to put
+the agent on a robot."""
 import tempfile
 from pathlib import Path
 
+from PySide6.QtCore import Qt
 from PySide6.QtWidgets import (
     QCheckBox,
     QDialog,
@@ -92,6 +94,13 @@ class RobotProgramsDialog(QDialog):
         for button in (self.send_button, self.start_button, self.stop_button, self.attach_button):
             buttons.addButton(button, QDialogButtonBox.ButtonRole.ActionRole)
         buttons.rejected.connect(self.reject)
+        self.help_button = QPushButton(tr("robot_programs_help", language))
+        self.help_button.setCheckable(True)
+        self.help = QLabel(tr("robot_programs_help_steps", language))
+        self.help.setWordWrap(True)
+        self.help.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        self.help.hide()
+        self.help_button.toggled.connect(self.help.setVisible)
         layout = QVBoxLayout(self)
         layout.addLayout(form)
         layout.addWidget(self.programs, 1)
@@ -99,6 +108,8 @@ class RobotProgramsDialog(QDialog):
         layout.addWidget(self.running)
         layout.addWidget(self.status)
         layout.addLayout(differs)
+        layout.addWidget(self.help_button)
+        layout.addWidget(self.help)
         layout.addWidget(buttons)
         self.refresh_button.clicked.connect(self.refresh)
         self.start_button.clicked.connect(self.start_chosen)

@@ -1,0 +1,85 @@
+"""The agent offering its programs on the robot's own UI (``rockly agent --offer-on-robot-ui hobbit``): HOBBIT's
+tablet through ``/MMUI``, here the built-in simulator's (``rockly sim hobbit --ros`` with its window, in its own
+process) on a real ROS master, a person answering in its window (tests/sim_window_harness.py), the agent in its
+own process, an independent rospy node recording ``/cmd_vel``."""
+import struct
+
+import pytest
+from agent_tools import AgentProcess
+from program_builder import block, number, rockly_document
+from ros_helpers import RosMaster, ros_environment
+from sim_window_harness import SimWindowProcess
+from standalone_tools import export_standalone
+from waiting import eventually
+from wire_recorder import WireRecorder
+
+from rockly_desktop.profiles.registry import ProfileRegistry
+from rockly_desktop.runtime.agent.client import AgentClient
+from rockly_desktop.runtime.agent.library import Library
+
+ZERO = (0.0,) * 6
+
+
+@pytest.fixture(scope="module")
+def own_master(tmp_path_factory):
+    """A master of its own: the session's shared headless HOBBIT already serves /MMUI on the usual one."""
+    master = RosMaster(tmp_path_factory.mktemp("ros-robot-menu")).start()
+    yield master
+    master.stop()
+
+
+@pytest.fixture(scope="module")
+def programs(tmp_path_factory):
+    """``{name: standalone text}``: ``long`` waits ten minutes, ``wave`` shows an emotion and ends."""
+    folder = tmp_path_factory.mktemp("menu-programs")
+    made = {}
+    for name, top in (("long", block("hobbit_wait", inputs={"seconds": number(600)}, id="long")),
+                      ("wave", block("hobbit_emo", {"emotion": "HAPPY"}, id="wave"))):
+        source = folder / f"{name}.rockly"
+        source.write_text(rockly_document([top]))
+        made[name] = export_standalone(source, folder / f"{name}.py", "--language", "en").read_text()
+    return made
+
+
+@pytest.fixture
+def simulator(own_master, tmp_path):
+    sim = SimWindowProcess(own_master, dict(ros_environment(own_master.uri, tmp_path / "ros"),
+                                            QT_QPA_PLATFORM="offscreen"))
+    yield sim
+    sim.stop()
+
+
+def test_the_simulators_tablet_lists_the_programs_and_a_person_starts_and_stops_one(own_master, programs, simulator,
+                                                                                      tmp_path):
+    Library(tmp_path / "library", ProfileRegistry.discover().profiles).keep("long", programs["long"])
+    wire = WireRecorder(own_master, ["/cmd_vel"])
+    agent = AgentProcess(tmp_path / "library", "--master", own_master.uri, "--offer-on-robot-ui", "hobbit",
+                         backend="ros1", env=ros_environment(own_master.uri, own_master.home))
+    events = []
+    watcher = AgentClient("127.0.0.1", agent.port, on_event=events.append)
+    try:
+        assert agent.process.stdout.readline().startswith("rockly agent: the programs for hobbit are offered")
+        watcher.attach(control=False)
+        # the tablet lists what the robot keeps; the person types its number
+        assert simulator.dialog(60) == ("text", "Which program shall I run?\n1. long\nType its number or its name.")
+        simulator.send("type 1")
+        simulator.send("click OK")
+        eventually(lambda: {"event": "run", "state": "started", "program": "long"} in events, 60)
+        # while it runs: a Stop; the person takes it, the robot's safe stop puts a zero velocity on the wire
+        assert simulator.dialog(60) == ("yes_no", "“long” is running. Shall I stop it?")
+        stops_before = sum(1 for _type, raw in wire.on("/cmd_vel") if struct.unpack("<6d", raw) == ZERO)
+        simulator.send("click Yes")
+        eventually(lambda: any(event.get("state") == "ended" for event in events), 60)
+        assert next(event for event in events if event.get("event") == "finished")["outcome"] == "stopped"
+        eventually(lambda: sum(1 for _type, raw in wire.on("/cmd_vel") if struct.unpack("<6d", raw) == ZERO)
+                   > stops_before, 30)
+        # after the run: the list again; a program that comes meanwhile is offered at once
+        assert simulator.dialog(60) == ("text", "Which program shall I run?\n1. long\nType its number or its name.")
+        watcher.send("wave", programs["wave"])
+        assert simulator.dialog(60) == ("text", "Which program shall I run?\n1. long\n2. wave\n"
+                                                "Type its number or its name.")
+    finally:
+        watcher.close()
+        agent.stop()
+        wire.stop()
+    assert agent.process.returncode == 0, agent.process.stderr
