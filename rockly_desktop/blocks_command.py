@@ -189,11 +189,9 @@ def _learn_type(args, profile) -> None:
         return
     if args.backend in (None, links.DEFAULT_KIND):  # the built-in simulator knows only what the profile knows
         raise BlockMakerError(app_local_text("pack_type_learn_robot", type=args.type))
-    robot = links.open_link(args.backend, profile, connection(args.backend, args))
-    try:
-        learnt = robot.interface_definition(_LIVE_KINDS[args.kind], args.interface, args.type)
-    finally:
-        robot.shutdown()
+    # read-only: a link's end is the safe stop, which would stop a program another client runs on the robot
+    learnt = links.read_definition(args.backend, profile, connection(args.backend, args), _LIVE_KINDS[args.kind],
+                                   args.interface, args.type)
     learn_definition(args.type, kind, learnt.text, learnt.nested)
 
 
