@@ -530,3 +530,17 @@ def test_the_suggested_block_id_follows_the_offer_chosen_until_the_person_types_
     assert maker.choose_named("/MMUI") and maker.block_id.text() == "made_mmui"
     maker.block_id.setText("made_say")
     assert maker.choose_named("/odom") and maker.block_id.text() == "made_say"
+
+
+def test_a_fixed_field_left_empty_keeps_its_default_which_its_placeholder_shows(qtbot, german_window):
+    maker = open_maker(qtbot, german_window)
+    assert maker.choose_named("/cmd_vel")
+    maker.fields.set_use("linear.x", "input", "0.1")
+    maker.fields.set_use("angular.z", "fixed", "")
+    assert maker.findChild(QLineEdit, "maker_value_angular.z").placeholderText() == "Vorgabe: 0"
+    maker.sentence["de"].setText("fahre mit %1")
+    maker.block_id.setText("made_default_kept")
+    assert maker.problems == []
+    assert "None" not in maker.python.toPlainText()
+    assert "'angular'" not in maker.python.toPlainText()
+    made_and_run(qtbot, german_window, block("made_default_kept", inputs={"linear_x": number(0.1)}))
