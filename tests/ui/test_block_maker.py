@@ -544,3 +544,35 @@ def test_a_fixed_field_left_empty_keeps_its_default_which_its_placeholder_shows(
     assert "None" not in maker.python.toPlainText()
     assert "'angular'" not in maker.python.toPlainText()
     made_and_run(qtbot, german_window, block("made_default_kept", inputs={"linear_x": number(0.1)}))
+
+
+def test_editing_a_made_block_away_from_an_input_the_program_filled_marks_the_program_changed(qtbot, window):
+    maker = open_maker(qtbot, window)
+    make_mmui_block(qtbot, maker, block_id="made_ask")
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_ask" in window.editor.known_block_types, timeout=30000)
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(stack(
+        block("made_ask", inputs={"sessionid": text("9"), "requesttext": text("hi")}, id="ask")))})
+    qtbot.waitUntil(lambda: "made_ask" in str(window.editor.workspace), timeout=10000)
+
+    def edited(change):
+        window.document.modified = False  # as if just saved
+        window.edit_made_block("made_ask")
+        maker = the_maker(qtbot, window)
+        change(maker)
+        assert maker.problems == []
+        maker.save_button.click()
+        qtbot.waitUntil(lambda: not window.findChild(BlockMakerDialog).isVisible(), timeout=10000)
+        sentence = maker.sentence["en"].text().split("%")[0]
+        qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "(() => { const b = Blockly.getMainWorkspace()"
+                                       ".getBlockById('ask'); return b ? b.toString() : ''; })()").startswith(
+            sentence), timeout=30000)
+
+    edited(lambda maker: maker.sentence["en"].setText("please ask %1 to say %2"))  # nothing the program held is lost
+    assert not window.document.modified and not window.isWindowModified()
+
+    def drop_the_text(maker):
+        maker.fields.set_use("requestText", "fixed", "bye")  # the program's "hi" in it goes with the input
+        maker.sentence["en"].setText("let %1 speak")
+    edited(drop_the_text)
+    assert window.document.modified and window.isWindowModified()  # the title's mark; closing asks to save
