@@ -90,7 +90,9 @@ def test_the_german_window_shows_the_german_sentence(qtbot, german_window):
     assert maker.windowTitle() == "Einen Block bauen"
     assert maker.choose_named("/MMUI")  # the simulated robot serves it now
     assert maker.offers.currentItem().text() == "Dienst: /MMUI  (hobbit_msgs/Request)  · jetzt am Roboter"
-    assert maker.offers.currentItem().toolTip().startswith("Der Roboter bietet das gerade an")
+    assert maker.offers.currentItem().toolTip() == (  # the whole row, then what being on the robot means
+        "Dienst: /MMUI  (hobbit_msgs/Request)  · jetzt am Roboter\n"
+        "Der Roboter bietet das gerade an: Ein Block daraus kann sofort laufen.")
     make_mmui_block(qtbot, maker, "made_sag", "ask %1 to say %2", "frag %1 und sag %2")
     qtbot.waitUntil(lambda: (drawn_preview(qtbot, maker) or {}).get("text", "").startswith("frag"), timeout=10000)
     maker.save_button.click()
@@ -576,3 +578,24 @@ def test_editing_a_made_block_away_from_an_input_the_program_filled_marks_the_pr
         maker.sentence["en"].setText("let %1 speak")
     edited(drop_the_text)
     assert window.document.modified and window.isWindowModified()  # the title's mark; closing asks to save
+
+
+@pytest.mark.parametrize("which, live", [("window", "· on the robot now"), ("german_window", "· jetzt am Roboter")])
+def test_the_offers_say_in_full_what_is_on_the_robot_now_at_the_makers_default_size(qtbot, request, which, live):
+    from PySide6.QtWidgets import QStyleOptionViewItem
+
+    maker = open_maker(qtbot, request.getfixturevalue(which))
+    offers = maker.offers
+    width = offers.viewport().width()
+    rows = [offers.item(row) for row in range(offers.count())]
+    assert any(item.text().endswith(live) for item in rows)
+
+    def drawn(item):  # the text the row is drawn with
+        index = offers.indexFromItem(item)
+        option = QStyleOptionViewItem()
+        option.rect = offers.visualRect(index)
+        offers.itemDelegate().initStyleOption(option, index)
+        return option.text, option.fontMetrics.horizontalAdvance(option.text) < width - option.rect.left()
+    assert [drawn(item) for item in rows if not drawn(item)[1]] == []  # each fits the list: none is cut off
+    assert [item.text() for item in rows if drawn(item)[0].endswith(live) != item.text().endswith(live)] == []
+    assert all(item.text() in item.toolTip() for item in rows)  # the whole of it, with an elided type
