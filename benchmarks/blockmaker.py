@@ -136,11 +136,14 @@ def round_trips(view, count):
 
 def editor_restart(window):
     ready = []
-    window.editor.sig_ready.connect(lambda: ready.append(time.perf_counter()))
+
+    def on_ready():
+        ready.append(time.perf_counter())
+    window.editor.sig_ready.connect(on_ready)
     start = time.perf_counter()
     window._restart_editor()
     wait_until(lambda: ready)
-    window.editor.sig_ready.disconnect()
+    window.editor.sig_ready.disconnect(on_ready)  # only its own: the window's keyboard access follows it too
     return ready[0] - start
 
 
@@ -176,6 +179,8 @@ def main():
         pause(1.0)  # the flyout opens on the next frames
         window.grab().save(str(options.shots / f"toolbox-{options.language}.png"))
 
+    from PySide6.QtCore import QCoreApplication, QEvent
+
     from rockly_desktop.ui.blockmaker.maker_dialog import open_block_maker
     from rockly_desktop.ui.blockmaker.offers import LiveGraph
 
@@ -207,6 +212,8 @@ def main():
     again.close()
     window.document.modified = False
     window.close()
+    window.deleteLater()  # now, as the tests' windows are: a page left for the interpreter's exit crashes QtWebEngine
+    QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
 
 
 if __name__ == "__main__":

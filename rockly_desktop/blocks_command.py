@@ -47,7 +47,7 @@ def add_blocks_parser(commands, language_option) -> None:
     for option, meta, what in (("--unit", "NAME=UNIT", "an input's unit"),
                                ("--default", "NAME=VALUE", "an input's default"),
                                ("--range", "NAME=MIN:MAX", "a number input's bounds (either may be empty)"),
-                               ("--fixed", "FIELD=VALUE", "a field always sent with this value")):
+                               ("--fixed", "FIELD=VALUE", "a field always sent with this value (empty: its default)")):
         make.add_argument(option, action="append", default=[], metavar=meta, help=what + " (repeatable)")
     make.add_argument("--read-field", default="", help="sensor_value/wait_until: the field read")
     make.add_argument("--value-kind", default="number", help="sensor_value: number, text or yes_no")
@@ -151,6 +151,7 @@ def made_block_from_args(args, profile) -> MadeBlock:
     field_kinds = {entry.path: entry.kind for entry in fields_of_block_kind(profile, args.kind, args.type)}
     fixed = {path: _value(text, field_kinds.get(path, "number"))
              for path, text in _pairs(args.fixed, "--fixed").items()}
+    fixed = {path: value for path, value in fixed.items() if value is not None}  # FIELD= keeps its default
     target = None
     if args.target is not None:
         target = _value(args.target, field_kinds.get(args.read_field, "number"))
@@ -189,11 +190,9 @@ def _learn_type(args, profile) -> None:
         return
     if args.backend in (None, links.DEFAULT_KIND):  # the built-in simulator knows only what the profile knows
         raise BlockMakerError(app_local_text("pack_type_learn_robot", type=args.type))
-    robot = links.open_link(args.backend, profile, connection(args.backend, args))
-    try:
-        learnt = robot.interface_definition(_LIVE_KINDS[args.kind], args.interface, args.type)
-    finally:
-        robot.shutdown()
+    # read-only: a link's end is the safe stop, which would stop a program another client runs on the robot
+    learnt = links.read_definition(args.backend, profile, connection(args.backend, args), _LIVE_KINDS[args.kind],
+                                   args.interface, args.type)
     learn_definition(args.type, kind, learnt.text, learnt.nested)
 
 

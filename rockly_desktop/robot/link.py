@@ -99,6 +99,13 @@ class RobotLink(Protocol):
         for. Waits on the robot, bounded in time: never on the window's thread. Raises DefinitionNotLearnt
         saying why (and what to do) when the robot does not say it."""
 
+    @classmethod
+    def read_definition(cls, profile, connection: dict, kind: str, name: str, type_name: str):
+        """``interface_definition`` asked without a link: nothing that commands the robot is made, so
+        nothing stops it afterwards (``rockly blocks make`` learning a type while another client drives
+        the robot). Waits on the robot, bounded in time; RobotUnavailable when it does not answer,
+        DefinitionNotLearnt as ``interface_definition``."""
+
     def want_parameters(self, wanted: bool):
         """Whether ``graph_parameters`` is wanted (the block maker is open): asking every node for its
         parameters costs the robot, so a followed graph lists them only while someone wishes them."""

@@ -169,6 +169,14 @@ def open_link(kind: str, profile, connection: dict = None, **options):
     return link_kind(kind).link_class().open(profile, connection or {}, **options)
 
 
+def read_definition(kind: str, profile, connection: dict, interface_kind: str, name: str, type_name: str):
+    """The definition of ``type_name`` as ``kind``'s robot says it (``RobotLink.read_definition``), asked
+    read-only: no link is opened, so neither is the safe stop done that ends every link (it would stop a
+    program another client runs on the robot). RobotUnavailable when it cannot be used here."""
+    check_available(kind)
+    return link_kind(kind).link_class().read_definition(profile, connection or {}, interface_kind, name, type_name)
+
+
 def serve_simulator(kind: str, profile, connection: dict = None, speed: float = 1.0, tablet=None):
     """``profile``'s simulator served on ``kind``'s middleware until its ``shutdown()``.
 

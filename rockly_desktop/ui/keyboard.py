@@ -87,17 +87,21 @@ class KeyboardAccess(QObject):
             self.jump_actions[key] = action
         QApplication.instance().focusChanged.connect(self._on_focus_changed)
         self._following = True
-        editor.sig_ready.connect(self._on_editor_ready)
-        for signal in renamed_on:
-            signal.connect(self.name_controls)
+        self._connections = [(editor.sig_ready, self._on_editor_ready)]
+        self._connections += [(signal, self.name_controls) for signal in renamed_on]
+        for signal, slot in self._connections:
+            signal.connect(slot)
         self._toolbar_buttons_take_focus()
         self.name_controls()
 
     def stop(self):
-        """The window is closing: follow the application's focus no more and take the ring off its
-        control (a slot still connected would be handed the window's widgets while they are destroyed)."""
+        """The window is closing: follow the application's focus, the editor and the signals that rename no
+        more, and take the ring off its control (a slot still connected would be handed the window's widgets
+        while they are destroyed: a tabbed dock says it is shown when the dock before it goes)."""
         if self._following:
             QApplication.instance().focusChanged.disconnect(self._on_focus_changed)
+            for signal, slot in self._connections:
+                signal.disconnect(slot)
             self._following = False
         if self.ring is not None and shiboken6.isValid(self.ring):
             self.ring.follow(None)
@@ -216,8 +220,10 @@ class KeyboardAccess(QObject):
     # --- names, ring and language -------------------------------------------------------
 
     def name_controls(self, *_args):
-        """Give every control of the window its accessible name in the window's language."""
-        name_controls(self.frame, self._language(), self._editor, self._run_toolbar())
+        """Give every control of the window its accessible name in the window's language (none once the window
+        is deleted: one deleted without closing, e.g. a kiosk that cannot start, still has its docks' signals)."""
+        if shiboken6.isValid(self.frame):
+            name_controls(self.frame, self._language(), self._editor, self._run_toolbar())
 
     def set_language(self, language: str):
         """The window now speaks ``language``: the jump keys' names and the controls' names follow."""

@@ -559,6 +559,8 @@ class MainWindow(QMainWindow):
             if not error:
                 workspace = adapt(state["workspace"]) if adapt is not None else state["workspace"]
                 self.editor.load_workspace(workspace, breakpoints=self.document.breakpoints)
+                if workspace != state["workspace"]:  # what a changed block no longer takes was dropped: not silently
+                    self.document.mark_modified()
 
         self.editor.call("getState", None, answered, timeout_ms=ANSWER_TIMEOUT_MS)
 

@@ -90,7 +90,9 @@ def test_the_german_window_shows_the_german_sentence(qtbot, german_window):
     assert maker.windowTitle() == "Einen Block bauen"
     assert maker.choose_named("/MMUI")  # the simulated robot serves it now
     assert maker.offers.currentItem().text() == "Dienst: /MMUI  (hobbit_msgs/Request)  · jetzt am Roboter"
-    assert maker.offers.currentItem().toolTip().startswith("Der Roboter bietet das gerade an")
+    assert maker.offers.currentItem().toolTip() == (  # the whole row, then what being on the robot means
+        "Dienst: /MMUI  (hobbit_msgs/Request)  · jetzt am Roboter\n"
+        "Der Roboter bietet das gerade an: Ein Block daraus kann sofort laufen.")
     make_mmui_block(qtbot, maker, "made_sag", "ask %1 to say %2", "frag %1 und sag %2")
     qtbot.waitUntil(lambda: (drawn_preview(qtbot, maker) or {}).get("text", "").startswith("frag"), timeout=10000)
     maker.save_button.click()
@@ -530,3 +532,70 @@ def test_the_suggested_block_id_follows_the_offer_chosen_until_the_person_types_
     assert maker.choose_named("/MMUI") and maker.block_id.text() == "made_mmui"
     maker.block_id.setText("made_say")
     assert maker.choose_named("/odom") and maker.block_id.text() == "made_say"
+
+
+def test_a_fixed_field_left_empty_keeps_its_default_which_its_placeholder_shows(qtbot, german_window):
+    maker = open_maker(qtbot, german_window)
+    assert maker.choose_named("/cmd_vel")
+    maker.fields.set_use("linear.x", "input", "0.1")
+    maker.fields.set_use("angular.z", "fixed", "")
+    assert maker.findChild(QLineEdit, "maker_value_angular.z").placeholderText() == "Vorgabe: 0"
+    maker.sentence["de"].setText("fahre mit %1")
+    maker.block_id.setText("made_default_kept")
+    assert maker.problems == []
+    assert "None" not in maker.python.toPlainText()
+    assert "'angular'" not in maker.python.toPlainText()
+    made_and_run(qtbot, german_window, block("made_default_kept", inputs={"linear_x": number(0.1)}))
+
+
+def test_editing_a_made_block_away_from_an_input_the_program_filled_marks_the_program_changed(qtbot, window):
+    maker = open_maker(qtbot, window)
+    make_mmui_block(qtbot, maker, block_id="made_ask")
+    maker.save_button.click()
+    qtbot.waitUntil(lambda: "made_ask" in window.editor.known_block_types, timeout=30000)
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(stack(
+        block("made_ask", inputs={"sessionid": text("9"), "requesttext": text("hi")}, id="ask")))})
+    qtbot.waitUntil(lambda: "made_ask" in str(window.editor.workspace), timeout=10000)
+
+    def edited(change):
+        window.document.modified = False  # as if just saved
+        window.edit_made_block("made_ask")
+        maker = the_maker(qtbot, window)
+        change(maker)
+        assert maker.problems == []
+        maker.save_button.click()
+        qtbot.waitUntil(lambda: not window.findChild(BlockMakerDialog).isVisible(), timeout=10000)
+        sentence = maker.sentence["en"].text().split("%")[0]
+        qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "(() => { const b = Blockly.getMainWorkspace()"
+                                       ".getBlockById('ask'); return b ? b.toString() : ''; })()").startswith(
+            sentence), timeout=30000)
+
+    edited(lambda maker: maker.sentence["en"].setText("please ask %1 to say %2"))  # nothing the program held is lost
+    assert not window.document.modified and not window.isWindowModified()
+
+    def drop_the_text(maker):
+        maker.fields.set_use("requestText", "fixed", "bye")  # the program's "hi" in it goes with the input
+        maker.sentence["en"].setText("let %1 speak")
+    edited(drop_the_text)
+    assert window.document.modified and window.isWindowModified()  # the title's mark; closing asks to save
+
+
+@pytest.mark.parametrize("which, live", [("window", "· on the robot now"), ("german_window", "· jetzt am Roboter")])
+def test_the_offers_say_in_full_what_is_on_the_robot_now_at_the_makers_default_size(qtbot, request, which, live):
+    from PySide6.QtWidgets import QStyleOptionViewItem
+
+    maker = open_maker(qtbot, request.getfixturevalue(which))
+    offers = maker.offers
+    width = offers.viewport().width()
+    rows = [offers.item(row) for row in range(offers.count())]
+    assert any(item.text().endswith(live) for item in rows)
+
+    def drawn(item):  # the text the row is drawn with
+        index = offers.indexFromItem(item)
+        option = QStyleOptionViewItem()
+        option.rect = offers.visualRect(index)
+        offers.itemDelegate().initStyleOption(option, index)
+        return option.text, option.fontMetrics.horizontalAdvance(option.text) < width - option.rect.left()
+    assert [drawn(item) for item in rows if not drawn(item)[1]] == []  # each fits the list: none is cut off
+    assert [item.text() for item in rows if drawn(item)[0].endswith(live) != item.text().endswith(live)] == []
+    assert all(item.text() in item.toolTip() for item in rows)  # the whole of it, with an elided type

@@ -5,6 +5,8 @@ Keys go where a keyboard sends them: to the widget that has the focus (``QApplic
 which is the web view's inner widget while the block editor has the keyboard; Chromium gets them from
 there as it gets a real keyboard's, offscreen too.
 """
+import sys
+
 import pytest
 from page_tools import run_js
 from PySide6.QtCore import Qt
@@ -260,3 +262,32 @@ def test_ctrl_and_a_digit_jump_to_the_toolbox_blocks_code_console_and_simulator(
     assert QApplication.focusWidget() is window.editor.focusProxy()
     press(qtbot, window, K.Key_2, CTRL)
     qtbot.waitUntil(lambda: workspace_focused(qtbot, window), timeout=5000)
+
+
+def test_a_closed_window_names_no_controls_any_more(qtbot, window, monkeypatch):
+    """Nothing of a closed window reaches its controls' naming: the tabbed docks' visibility (as the window hides,
+    and as its docks are destroyed) and the robot box's changes (as the robots shut down) come too late."""
+    from rockly_desktop.ui import keyboard
+
+    named = []
+    monkeypatch.setattr(keyboard, "name_controls", lambda *args: named.append(args))
+    window.document.modified = False
+    window.close()
+    window.robots.sig_robot_changed.emit()
+    window.plot_dock.visibilityChanged.emit(True)
+    assert named == []
+
+
+def test_a_window_deleted_without_closing_says_nothing_of_its_deleted_controls(qtbot, driver, monkeypatch):
+    """A window deleted unclosed (a kiosk that cannot start) still has its docks' signals while Qt destroys them."""
+    from PySide6.QtCore import QCoreApplication, QEvent
+
+    window = driver.open_window()
+    driver.windows.remove(window)
+    window.runs.shutdown()
+    window.robots.shutdown()
+    errors = []  # what a Qt slot raised
+    monkeypatch.setattr(sys, "excepthook", lambda kind, error, trace: errors.append(error))
+    window.deleteLater()
+    QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
+    assert errors == []

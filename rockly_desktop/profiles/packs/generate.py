@@ -64,7 +64,7 @@ def _input_code(entry) -> str:
 
 
 def _fields_code(block: MadeBlock) -> str:
-    entries = {path: _literal(value) for path, value in block.fixed.items()}
+    entries = {path: _literal(value) for path, value in block.fixed.items() if value is not None}  # None: its default
     entries.update({entry.field: _input_code(entry) for entry in block.inputs if entry.field})
     return _dict_code(_nested(entries))
 

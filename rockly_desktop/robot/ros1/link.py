@@ -1,5 +1,6 @@
 """A robot over ROS 1 as a robot link (``robot/link.py``), through this process's one node."""
 import importlib.util
+import os
 
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.state_store import StateStore
@@ -85,6 +86,18 @@ class RosRobot(link_parts.ReadsFollowedGraph):
             except RobotCommandError:
                 self.graph.types.learn(learnt.type_name, learnt.full_text)
         return learnt
+
+    @classmethod
+    def read_definition(cls, profile, connection: dict, kind: str, name: str, type_name: str):
+        """``interface_definition`` through the master at ``connection``'s ``master`` alone (``robot.link``):
+        no node is started and nothing is published, so nothing stops the robot."""
+        from rockly_desktop.robot.ros1 import live_definitions
+        from rockly_desktop.robot.ros1.connection import RosUnavailable, master_answers
+
+        master_uri = connection.get("master") or os.environ.get("ROS_MASTER_URI", "http://localhost:11311")
+        if master_answers(master_uri) is None:
+            raise RosUnavailable(f"no ROS master answers at {master_uri}", "no_master", master=master_uri)
+        return live_definitions.interface_definition(master_uri, kind, "/" + name.strip("/"), type_name)
 
     def backend(self, interrupt: Interrupt):
         """A backend whose waits end when ``interrupt`` is stopped or the master is lost."""

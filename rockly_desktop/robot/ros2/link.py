@@ -193,6 +193,18 @@ class Ros2Robot(link_parts.ReadsFollowedGraph):
 
         return interface_definition(self.helper, kind, name, type_name)
 
+    @classmethod
+    def read_definition(cls, profile, connection: dict, kind: str, name: str, type_name: str):
+        """``interface_definition`` through a helper of its own that is never told the profile's safe stop
+        (``robot.link``): it publishes nothing, so its end stops nothing; the process's helper is left alone."""
+        from rockly_desktop.robot.ros2.live_definitions import interface_definition
+
+        helper = Ros2Helper(Ros2Settings.from_connection(connection))
+        try:
+            return interface_definition(helper, kind, name, type_name)
+        finally:
+            helper.close()
+
     def backend(self, interrupt: Interrupt):
         """A backend whose waits end when ``interrupt`` is stopped or the helper is gone; made at once,
         it works through the helper of its first command (one being replaced is waited for)."""

@@ -102,6 +102,11 @@ class SimulatedRobot:
         """The simulated robot offers only what its profile defines: nothing more to learn."""
         raise DefinitionNotLearnt(app_local_text("maker_fields_unknown", type=type_name))
 
+    @classmethod
+    def read_definition(cls, profile, connection: dict, kind: str, name: str, type_name: str):
+        """The simulated robot offers only what its profile defines: nothing more to learn."""
+        raise DefinitionNotLearnt(app_local_text("maker_fields_unknown", type=type_name))
+
     def own_publishers(self) -> dict:
         """A program drives the simulated robot directly, with no publishers of its own."""
         return {}

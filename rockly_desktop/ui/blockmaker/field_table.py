@@ -1,10 +1,13 @@
 """The fields of a message, request or goal as a table: each one an input of the block, a fixed value,
 or left at its type's default (nested fields by path, ``linear.x``, as the Plot names them)."""
+import json
+
 import yaml
 from PySide6.QtCore import Signal
 from PySide6.QtWidgets import QAbstractItemView, QComboBox, QHeaderView, QLineEdit, QTableWidget, QTableWidgetItem
 
 from rockly_desktop.profiles.packs.spec import VALUE_KINDS, BlockInput
+from rockly_desktop.ui.blockmaker.editing import value_text
 from rockly_desktop.ui.texts import tr
 
 FIELD, TYPE, USE, PLACE, VALUE, UNIT, MINIMUM, MAXIMUM = range(8)
@@ -34,6 +37,13 @@ def read_value(text: str, kind: str):
 def _number(text: str):
     value = read_value(text, "number")
     return value if isinstance(value, (int, float)) and not isinstance(value, bool) else None
+
+
+def _default_text(entry) -> str:
+    """The field's default as typed in the table (a text's in quotes, so an empty one shows)."""
+    if entry.kind == "text":
+        return json.dumps(entry.default or "", ensure_ascii=False)
+    return value_text(entry.default, entry.kind)
 
 
 class FieldTable(QTableWidget):
@@ -81,6 +91,8 @@ class FieldTable(QTableWidget):
                 edit.setAccessibleName(f"{entry.path}: {tr(HEADERS[column], self._language)}")
                 edit.textChanged.connect(self.sig_changed)
                 self.setCellWidget(row, column, edit)
+            self.cellWidget(row, VALUE).setPlaceholderText(tr("maker_value_default", self._language,
+                                                              value=_default_text(entry)))
             self._enable(row)
         self._number_places()
         self.sig_changed.emit()
@@ -138,6 +150,8 @@ class FieldTable(QTableWidget):
         return tuple(made)
 
     def fixed(self) -> dict:
-        """{field path: the value always sent} of the fields given a fixed value."""
-        return {entry.path: read_value(self.cellWidget(row, VALUE).text(), entry.kind)
-                for row, entry in enumerate(self._fields) if self.cellWidget(row, USE).currentData() == "fixed"}
+        """{field path: the value always sent} of the fields given a fixed value; one left empty keeps its
+        default (the placeholder shown), as a field left at its default does."""
+        fixed = {entry.path: read_value(self.cellWidget(row, VALUE).text(), entry.kind)
+                 for row, entry in enumerate(self._fields) if self.cellWidget(row, USE).currentData() == "fixed"}
+        return {path: value for path, value in fixed.items() if value is not None}

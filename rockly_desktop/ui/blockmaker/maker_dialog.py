@@ -20,8 +20,6 @@ from PySide6.QtWidgets import (
     QFormLayout,
     QHBoxLayout,
     QLineEdit,
-    QListWidget,
-    QListWidgetItem,
     QPlainTextEdit,
     QPushButton,
     QSplitter,
@@ -39,6 +37,7 @@ from rockly_desktop.ui.blockmaker.colour_choice import ColourChoice
 from rockly_desktop.ui.blockmaker.editing import OFFER_KIND, PackBeingEdited, value_text
 from rockly_desktop.ui.blockmaker.field_table import FieldTable
 from rockly_desktop.ui.blockmaker.learning import FieldLearning
+from rockly_desktop.ui.blockmaker.offer_list import OfferList
 from rockly_desktop.ui.blockmaker.offers import KINDS_OF, Offer, global_name, known_offers, robot_offers
 from rockly_desktop.ui.blockmaker.preview import BlockPreview
 from rockly_desktop.ui.plain_text import plain_label
@@ -104,7 +103,7 @@ class BlockMakerDialog(QDialog):
         self.learning.sig_learnt.connect(lambda offer: offer == self._offer and self._kind_changed())
         self.learning.sig_failed.connect(self._not_learnt_from)
         self.finished.connect(lambda _result: self.learning.forget())
-        self.offers = QListWidget(self)
+        self.offers = OfferList(language, self)
         self.offers.setObjectName("maker_offers")
         self.offers.setAccessibleName(tr("maker_offers", language))
         self.offer_filter = QLineEdit(self)
@@ -237,7 +236,7 @@ class BlockMakerDialog(QDialog):
         splitter.addWidget(left)
         splitter.addWidget(right)
         splitter.setStretchFactor(1, 3)
-        splitter.setSizes([330, 870])
+        splitter.setSizes([400, 800])
         layout = QVBoxLayout(self)
         layout.addWidget(splitter, 1)
         layout.addWidget(self.buttons)
@@ -250,13 +249,7 @@ class BlockMakerDialog(QDialog):
         try:
             self.offers.clear()
             for offer in offers:
-                kind = tr(offer.text_key, self.language)
-                shown = f"{kind}: {offer.label()}" if offer.label() else kind
-                item = QListWidgetItem(f"{shown}  · {tr('maker_offer_live', self.language)}" if offer.live else shown,
-                                       self.offers)
-                item.setData(Qt.ItemDataRole.UserRole, offer)
-                if offer.live:
-                    item.setToolTip(tr("maker_offer_live_tip", self.language))
+                item = self.offers.add(offer)
                 if chosen is not None and _same_offer(offer, chosen):
                     self.offers.setCurrentItem(item)
         finally:

@@ -123,3 +123,29 @@ def test_a_type_rockly_does_not_know_without_a_robot_to_ask_is_a_clear_message_a
     assert result.returncode == 1
     assert f"Rockly does not know the type '{GADGET}'" in result.stderr and "--backend ros1" in result.stderr
     assert not (Path(os.environ["XDG_DATA_HOME"]) / "rockly" / "packs" / PACK).exists()
+
+
+def test_making_a_block_from_the_robot_puts_nothing_on_cmd_vel_while_a_runs_end_still_stops_it(ros_master, tmp_path):
+    """Learning a type for ``rockly blocks make`` only reads the robot: it must not stop a program another
+    client runs (HOBBIT's safe stop is a zero /cmd_vel); a run's end, heard by the same plain node, still does."""
+    from wire_recorder import WireRecorder
+
+    recorder = WireRecorder(ros_master, ["/cmd_vel"])
+    publisher = gadget_node(ros_master)
+    try:
+        made = rockly(ros_master, "blocks", "make", "--profile", "hobbit", "--pack", "gadget_quiet", "--id",
+                      "gadget_quiet_show", "--kind", "publish", "--interface", "/gadget/state", "--type", GADGET,
+                      "--input", "name=name", "--sentence-en", "show %1 on the gadget", "--colour", "#4c97ff",
+                      "--category-en", "Gadget", "--backend", "ros1", "--master", ros_master.uri,
+                      data_home=tmp_path / "data")
+        assert made.returncode == 0, made.stderr
+        heard_while_making = len(recorder.on("/cmd_vel"))
+        program = tmp_path / "nothing.rockly"
+        program.write_text(rockly_document([stack(block("text_print", inputs={"TEXT": text("done")}))]))
+        ran = rockly(ros_master, "run", program, "--backend", "ros1", "--master", ros_master.uri)
+        assert ran.returncode == 0, ran.stderr
+        eventually(lambda: recorder.on("/cmd_vel"), timeout=15)  # the run's end: its safe stop
+        assert heard_while_making == 0
+    finally:
+        publisher.stop()
+        recorder.stop()

@@ -64,3 +64,34 @@ def test_a_topic_nobody_publishes_or_a_service_not_installed_here_says_why_withi
     with pytest.raises(DefinitionNotLearnt) as said:
         ros2_robot.interface_definition("service", "/nowhere", "nowhere_msgs/Ask")
     assert "does not say its fields" in str(said.value) and "Rocklys ROS-2-Umgebung" in said.value.in_language("de")
+
+
+def test_rockly_blocks_make_learning_a_type_puts_nothing_on_cmd_vel_while_a_runs_end_still_stops_it(
+        test_robot, ros2_settings, tmp_path):
+    """``rockly blocks make --backend ros2`` only reads the robot: the TurtleBot's safe stop (a zero /cmd_vel, heard
+    by the plain rclpy test node) would stop a program another client runs; a run's end still sends it."""
+    import subprocess
+    import sys
+
+    from program_builder import block, rockly_document, stack, text
+
+    repo = Path(__file__).resolve().parents[3]
+    where = ("--backend", "ros2", "--domain", str(ros2_settings.domain_id), "--discovery", "localhost")
+
+    def rockly(*args):
+        return subprocess.run([sys.executable, "-m", "rockly_desktop", *map(str, args)], capture_output=True,
+                              text=True, timeout=180, cwd=repo, env=ros2_settings.environment())
+
+    before = len(test_robot.received("/cmd_vel"))
+    made = rockly("blocks", "make", "--profile", "turtlebot", "--pack", "nested_quiet", "--id", "nested_quiet",
+                  "--kind", "publish", "--interface", "/nested", "--type", NESTED,
+                  "--input", "flag=basic_types_value.bool_value", "--sentence-en", "nest %1", "--colour", "#4c97ff",
+                  "--category-en", "Nested", *where)
+    assert made.returncode == 0, made.stderr
+    heard_while_making = len(test_robot.received("/cmd_vel")) - before
+    program = tmp_path / "nothing.rockly"
+    program.write_text(rockly_document([stack(block("text_print", inputs={"TEXT": text("done")}))]))
+    ran = rockly("run", program, *where)
+    assert ran.returncode == 0, ran.stderr
+    eventually(lambda: len(test_robot.received("/cmd_vel")) > before, timeout=20)  # the run's end: its safe stop
+    assert heard_while_making == 0
