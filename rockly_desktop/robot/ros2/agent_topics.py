@@ -91,13 +91,13 @@ def master_at_hand():
 
 
 def node_name(where=None) -> tuple:
-    """``(this process's helper's node name, the graph as a person reads it)``, the helper started on ``where``
-    when it is the first; a RobotUnavailable when it cannot be."""
+    """``(this process's helper's node name, the graph as a person reads it: a LocalText)``, the helper started
+    on ``where`` when it is the first; a RobotUnavailable when it cannot be."""
     try:
         helper = _helper(where)
     except ValueError as error:  # a domain id out of range
         raise RobotUnavailable(str(error)) from None
-    return f"rockly_{helper.process.pid}", str(helper.settings.describe())
+    return f"rockly_{helper.process.pid}", helper.settings.describe()
 
 
 class Topics:

@@ -54,9 +54,10 @@ def _node(kind: str, where, language: str) -> tuple:
     """``(node name, the graph as a person reads it)`` of this process's ``kind`` node; AgentError when it
     cannot be had."""
     try:
-        return _carrier(kind).node_name(where)
+        node, graph = _carrier(kind).node_name(where)
     except (RocklyError, ImportError) as error:
         raise AgentError(TEXTS[kind][0], app_text(TEXTS[kind][0], language, reason=str(error))) from None
+    return node, graph.in_language(language) if hasattr(graph, "in_language") else graph  # ROS 2's: "domain 7"
 
 
 class _RosClient:
