@@ -174,3 +174,20 @@ def test_no_agent_on_the_domain_is_said(robot):
     assert told.returncode == 1
     assert told.stderr.startswith("rockly robot: kein Rockly-Agent antwortet im ROS-2-Namensraum /nobody_here in "
                                   f"Domäne {settings.domain_id}"), told.stderr
+
+
+def test_the_agent_killed_mid_run_is_heard_lost_and_the_robot_stops(robot, agent):
+    """A topic has no closed connection: a client hears the agent lost as its publisher gone from the graph (the
+    killed agent's helper leaves it); the run's own process stops the robot without the agent."""
+    settings, program, wire = robot
+    watcher = started(settings, program)
+    try:
+        eventually(lambda: driving(wire), 60)
+        before = zeros(wire)
+        agent.process.kill()
+        agent.process.wait(10)
+        watcher.process.wait(60)  # the attached client ends: it lost the agent
+        eventually(lambda: zeros(wire) > before, 30)
+    finally:
+        watcher.end()
+    assert watcher.process.returncode == 0 and not watcher.seen(ended)
