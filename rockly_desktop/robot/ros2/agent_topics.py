@@ -39,17 +39,17 @@ def _settings(where) -> Ros2Settings:
 
 
 def _helper(where=None) -> Ros2Helper:
-    """The helper on the graph ``where`` names: the process's own when it is on that domain (a window's link's,
-    never ended for another), else one started with ``where``'s settings."""
+    """The helper on the graph ``where`` names: the process's own when it is on that domain (a window's or a robot
+    menu's link's, never ended for another), else one started with ``where``'s settings."""
+    settings = None if where is None else _settings(where)
     helper = Ros2Helper.running()
-    if helper is not None and (where is None or (not isinstance(where, dict)
-                                                 and _domain(helper) == str(int(where)))):
+    if helper is not None and (settings is None or _domain(settings) == _domain(helper.settings)):
         return helper
-    return Ros2Helper.get(_settings(where))
+    return Ros2Helper.get(settings or Ros2Settings())
 
 
-def _domain(helper: Ros2Helper) -> str:
-    return helper.settings.environment().get("ROS_DOMAIN_ID") or "0"
+def _domain(settings: Ros2Settings) -> str:
+    return settings.environment().get("ROS_DOMAIN_ID") or "0"
 
 
 def _ask(helper: Ros2Helper, op: str, *args):
@@ -87,7 +87,7 @@ def agent_in_graph(where, namespace: str) -> bool:
 def master_at_hand():
     """The domain id of this process's ROS 2 helper when it has one (e.g. the window connected to a ROS 2 robot)."""
     helper = Ros2Helper.running()
-    return _domain(helper) if helper is not None else None
+    return _domain(helper.settings) if helper is not None else None
 
 
 def node_name(where=None) -> tuple:
