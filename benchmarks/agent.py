@@ -6,9 +6,12 @@
   - attach: a new client connecting, saying hello and attaching to a running program until the run's state is
     in hand (aim <= 1 s); baseline: one bare TCP request/answer with the same agent (connect, a line, a line);
   - both again over ROS 1 (the agent's topics, ``AgentClient(via="ros")``), each with its ratio to the TCP figure
-    of the same run.
+    of the same run;
+  - both over TCP and over ROS 2 with ``rockly agent --backend ros2`` driving ``rockly sim turtlebot --ros2``
+    (``_agent_ros2.py``), the ROS 2 figures each with its ratio to that agent's TCP figure of the same run.
 
-A real rosmaster on a free port; the agent and the echo node are processes of their own.
+A real rosmaster on a free port, a ROS 2 domain of the run's own; the agents, the simulator and the echo nodes are
+processes of their own.
 
     python benchmarks/agent.py
 """
@@ -23,6 +26,7 @@ import threading
 import time
 from pathlib import Path
 
+from _agent_ros2 import ros2_figures
 from _paths import REPO  # its set-up: Rockly and the tests' helpers importable
 from _stop_on_the_wire import DRIVE_AND_WAIT, stop_latencies
 from ros_helpers import RosMaster, ros_environment
@@ -118,6 +122,11 @@ def main():
            "the same over TCP", "50 ms")
     report("over ROS 1: attach to a running program (connect, hello, attach)", ros_attaches, attaches,
            "the same over TCP", "1000 ms")
+    tcp2_stops, tcp2_attaches, ros2_stops, ros2_attaches = ros2_figures(stop_times, attach_times)
+    report("over ROS 2: STOP -> zero Twist on the wire, program under the agent", ros2_stops, tcp2_stops,
+           "the same over TCP (ROS 2 robot)", "50 ms")
+    report("over ROS 2: attach to a running program (connect, hello, attach)", ros2_attaches, tcp2_attaches,
+           "the same over TCP (ROS 2 robot)", "1000 ms")
     print("(one loaded machine shared with other work: figures vary between runs)")
 
 

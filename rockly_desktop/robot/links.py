@@ -128,7 +128,7 @@ LINKS = {entry.kind: entry for entry in (
     LinkKind("ros2", "rockly_desktop.robot.ros2.link:Ros2Robot", "backend_ros2", "a robot over ROS 2",
              settings=ROS2_SETTINGS, settings_group="ros2", explanation="connect_explanation_ros2",
              sim_option="--ros2", sim_server="rockly_desktop.robot.ros2.sim_bridge:serve_simulator",
-             recording_encoder=ROS2_ENCODER),
+             recording_encoder=ROS2_ENCODER, agent_topics="rockly_desktop.robot.ros2.agent_topics"),
 )}
 DEFAULT_KIND = "sim"
 

@@ -491,7 +491,7 @@ class MainWindow(QMainWindow):
                             open_copy=lambda path, name: self.files.open_copy(path, name), document=self.document,
                             limits=lambda: self.settings.teacher.limits(self.profile.id),
                             reached=self._remember_agent,
-                            via="auto" if self.robots.kind == "ros1" else "tcp").show()
+                            via="auto" if link_kind(self.robots.kind).agent_topics else "tcp").show()
 
     def make_block(self, chosen: str = "", kind: str = ""):
         """Open the block maker (Tools → Make a block…), with the topic, service or action ``chosen`` (of

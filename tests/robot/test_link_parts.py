@@ -12,6 +12,9 @@ class Feed:
     def own_publishers(self):
         return {"/cmd_vel": 1}
 
+    def want_parameters(self, wanted):
+        self.parameters_wanted = wanted
+
     def stop(self):
         self.stopped = True
 

@@ -1,6 +1,5 @@
 """The window never waits for the page in a nested event loop: Run, save and close carry on
 when the page has answered, and nothing is lost or started twice meanwhile."""
-import threading
 
 import pytest
 from page_tools import add_block_as_user, call_page
@@ -61,7 +60,7 @@ def test_closing_the_window_while_a_run_starts_starts_nothing_and_stops_the_robo
     assert "Program started" not in window.console.lines()
     snapshot = robot.snapshot()
     assert snapshot["linear"] == 0 and snapshot["motion"] == "idle"
-    assert not [clock for clock in threading.enumerate() if clock.name == robot.simulator.NAME]
+    assert not robot.simulator._thread.is_alive()  # this window's simulator's clock (not another test's)
 
 
 def test_saving_then_closing_at_once_saves_the_file_before_the_window_closes(qtbot, window, sos_file, answer_prompts):

@@ -6,7 +6,7 @@ agent's namespace (default ``/rockly_agent``):
 
 Standard types only: a robot running Rockly's runtime from pip has no catkin build for a service type of our own
 (docs/decisions/031). This module only carries the messages, on this process's one ROS 1 node
-(``RosConnection``); what they mean is the runtime's (``runtime.agent.ros1_transport``), which reaches this module
+(``RosConnection``); what they mean is the runtime's (``runtime.agent.ros_transport``), which reaches this module
 through the robot-link registry (``links.agent_topics``).
 """
 import json

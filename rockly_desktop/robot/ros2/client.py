@@ -89,6 +89,12 @@ class Ros2Helper:
             return helper
 
     @classmethod
+    def running(cls) -> "Ros2Helper | None":
+        """The process's helper when it runs (not lost), else None; none is started."""
+        helper = cls._current
+        return helper if helper is not None and not helper.lost else None
+
+    @classmethod
     def spare(cls) -> "Ros2Helper | None":
         """The spare kept beside the process's helper (it may still be starting), or None."""
         return cls._spare
@@ -131,6 +137,7 @@ class Ros2Helper:
     def __init__(self, settings: Ros2Settings, wait: bool = True):
         """Start the helper with ``settings``; ``wait`` (the default) until it said hello (``started``)."""
         self.settings = settings
+        self.began = time.monotonic()
         self.python = python = ros2_python()
         env = settings.environment()
         env.pop("PYTHONPATH", None)
@@ -332,6 +339,16 @@ class Ros2Helper:
         """Send a request that gets no answer (its failure is raised by a later ``check``)."""
         self.check()
         self._write((wire.CAST, 0, op, args))
+
+    def send(self, op: str, *args, then=None):
+        """Send request ``op`` without waiting and apart from the casts' failures (another user of the helper,
+        e.g. the robot agent's topics beside a link, neither takes nor gets them): ``then(ok, value)`` is called
+        with its answer on the reader thread. RobotConnectionLost when the helper is gone."""
+        if self.lost:
+            raise self.lost_error()
+        call_id = next(self._ids)
+        self._pending[call_id] = _Pending(then=then)
+        self._write((wire.CALL, call_id, op, args))
 
     def publish(self, topic: str, msg_type: str, message):
         """Publish without waiting (a failure is raised by a later ``check``): as CDR bytes encoded

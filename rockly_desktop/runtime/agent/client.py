@@ -2,6 +2,7 @@
 
     client = AgentClient("robot.local", language="de", on_event=print)   # connects and says hello
     client = AgentClient(via="ros", master="http://robot:11311")          # the same over ROS 1
+    client = AgentClient(via="ros", domain=7)                             # the same over ROS 2
     client.send("square", standalone_text, source_text, on_lost_editor="keep_going", decide_seconds=2.0)
     client.programs(); client.start("square")
     state = client.attach(control=True)      # the run so far; events then arrive on ``on_event`` (its thread)
@@ -17,9 +18,9 @@ and calls ``on_closed``; an agent that does not answer within ``timeout`` ends t
 ``AgentError("agent_no_answer")``.
 
 ``via`` picks the transport (one module each): ``tcp`` (``agent.tcp_transport``: ``host``:``port``), ``ros``
-(``agent.ros1_transport``: the agent's topics in ``namespace`` on ROS 1 ``master``; this process's one ROS 1
-node), or ``auto``: ROS when ``master`` is given (or this process already has its ROS 1 node) and an agent
-is in that graph, TCP otherwise.
+(``agent.ros_transport``: the agent's topics in ``namespace`` on ROS 2 domain ``domain`` when it is given, through
+this process's ROS 2 helper; else on ROS 1 ``master``, this process's one ROS 1 node), or ``auto``: ROS when that
+graph is given (or this process already has its ROS 1 node or ROS 2 helper) and an agent is in it, TCP otherwise.
 """
 import itertools
 import threading
@@ -37,23 +38,31 @@ from rockly_desktop.runtime.agent.protocol import (
 VIAS = ("auto", "tcp", "ros")
 
 
-def chosen_via(via: str, master: str = None, namespace: str = DEFAULT_NAMESPACE) -> str:
-    """``tcp`` or ``ros`` for ``via`` (``auto``: ROS when an agent is in the ROS 1 graph at hand, see above)."""
-    if via != "auto":
-        return via
-    from rockly_desktop.runtime.agent.ros1_transport import agent_in_graph, master_at_hand
+def chosen_via(via: str, master: str = None, namespace: str = DEFAULT_NAMESPACE, domain=None) -> tuple:
+    """``("tcp", None, None)`` or ``("ros", "ros1" or "ros2", the graph)`` for ``via`` (see above)."""
+    if via == "tcp":
+        return "tcp", None, None
+    from rockly_desktop.runtime.agent.ros_transport import KINDS, agent_in_graph, master_at_hand
 
-    master = master or master_at_hand()
-    return "ros" if master and agent_in_graph(master, namespace) else "tcp"
+    if domain is not None:
+        graphs = [("ros2", domain)]
+    elif master:
+        graphs = [("ros1", master)]
+    else:
+        graphs = [(kind, where) for kind, where in ((kind, master_at_hand(kind)) for kind in KINDS) if where]
+    if via == "ros":
+        return ("ros", *graphs[0]) if graphs else ("ros", "ros1", None)
+    return next((("ros", kind, where) for kind, where in graphs if agent_in_graph(kind, where, namespace)),
+                ("tcp", None, None))
 
 
 class AgentClient:
-    """A connection to the agent: at ``host``:``port`` over TCP, or in ``namespace`` on ROS 1 ``master``
-    (``via``, see above; ``self.via`` says which was taken)."""
+    """A connection to the agent: at ``host``:``port`` over TCP, or in ``namespace`` on ROS 1 ``master`` or ROS 2
+    ``domain`` (``via``, see above; ``self.via`` says which was taken, ``self.kind`` which ROS)."""
 
     def __init__(self, host: str = "localhost", port: int = DEFAULT_PORT, language: str = "en",
                  on_event=None, on_closed=None, name: str = "rockly", timeout: float = 10.0, via: str = "tcp",
-                 master: str = None, namespace: str = DEFAULT_NAMESPACE):
+                 master: str = None, namespace: str = DEFAULT_NAMESPACE, domain=None):
         self.language = language
         self.on_event = on_event
         self.on_closed = on_closed
@@ -66,16 +75,16 @@ class AgentClient:
         self._closed = threading.Event()
         self._attached = threading.Event()
         self._watching = threading.Event()  # from the attach request on: the run's events are wanted
-        self.via = chosen_via(via, master, namespace)
+        self.via, self.kind, where = chosen_via(via, master, namespace, domain)
         if self.via == "ros":
-            from rockly_desktop.runtime.agent.ros1_transport import RosLine
+            from rockly_desktop.runtime.agent.ros_transport import RosLine
 
-            self._line = RosLine(master, namespace, language, timeout, self._take, self._gone)
+            self._line = RosLine(self.kind, where, namespace, language, timeout, self._take, self._gone)
         else:
             from rockly_desktop.runtime.agent.tcp_transport import TcpLine
 
             self._line = TcpLine(host, port, language, timeout, self._take, self._gone)
-        self.where = self._line.where  # the agent's host, or its ROS 1 master and namespace: what a window names
+        self.where = self._line.where  # the agent's host, or its ROS graph and namespace: what a window names
         self._heart = threading.Thread(target=self._beat, daemon=True, name="agent-heartbeat")
         self._heart.start()
         try:

@@ -90,6 +90,7 @@ def _robot_options(robot):
     robot.add_argument("--port", type=int, default=DEFAULT_PORT, help=app_text("agent_port_help", "en"))
     robot.add_argument("--via", choices=VIAS, default="auto", help=app_text("robot_via_help", "en"))
     robot.add_argument("--master", help=app_text("robot_master_help", "en"))
+    robot.add_argument("--domain", type=int, help=app_text("robot_domain_help", "en"))
     robot.add_argument("--namespace", default=DEFAULT_NAMESPACE,
                        help=app_text("agent_namespace_help", "en", namespace=DEFAULT_NAMESPACE))
     actions = robot.add_subparsers(dest="robot_command", required=True)
@@ -147,7 +148,7 @@ def serve(args, language: str) -> int:
     threading.Thread(target=server.serve_forever, daemon=True, name="agent-server").start()
     print(app_text("agent_ready", language, host=args.host, port=server.server_address[1], folder=folder,
                    backend=args.backend), flush=True)
-    ros_calls = _offer_on_ros(agent, args, language) if args.backend == "ros1" else None
+    ros_calls = _offer_on_ros(agent, args, language) if links.link_kind(args.backend).agent_topics else None
     if close_offer:
         print(app_text("agent_menu_offered", language, profile=args.offer_on_robot_ui), flush=True)
     while not ending.wait(0.5):
@@ -163,17 +164,18 @@ def serve(args, language: str) -> int:
 
 
 def _offer_on_ros(agent, args, language: str):
-    """The agent's calls on the robot's ROS 1 master too (``agent.ros1_transport``); None (said on standard
-    error) when ROS 1 cannot be reached: TCP still serves."""
-    from rockly_desktop.runtime.agent.ros1_transport import RosOffer
+    """The agent's calls on the robot's ROS graph too (``agent.ros_transport``: ROS 1's master, ROS 2's domain);
+    None (said on standard error) when it cannot be reached: TCP still serves."""
+    from rockly_desktop.runtime.agent.ros_transport import RosOffer
+    from rockly_desktop.runtime.options import connection
 
+    where = args.master if args.backend == "ros1" else connection(args.backend, args)
     try:
-        offer = RosOffer(agent, args.namespace, args.master, language)
+        offer = RosOffer(agent, args.backend, args.namespace, where, language)
     except AgentError as error:
         print(f"rockly agent: {error.message}", file=sys.stderr, flush=True)
         return None
-    print(app_text("agent_ready_ros", language, master=offer.master, namespace=args.namespace),
-          flush=True)
+    print(offer.ready, flush=True)
     return offer
 
 
@@ -206,7 +208,7 @@ def robot_command(args, language: str, standalone_of=None) -> int:
         client = AgentClient(args.host, args.port, language,
                              on_event=show if args.robot_command == "attach" else None,
                              on_closed=done.set, name="rockly robot", via=args.via, master=args.master,
-                             namespace=args.namespace)
+                             namespace=args.namespace, domain=args.domain)
     except AgentError as error:
         print(f"rockly robot: {error.message}", file=sys.stderr)
         return 1

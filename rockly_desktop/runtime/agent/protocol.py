@@ -1,5 +1,5 @@
 """The agent's messages: JSON objects, one per line over TCP (UTF-8, ``\\n`` at its end), one per std_msgs/String
-over ROS 1 (``agent.ros1_transport``).
+over ROS 1 and ROS 2 (``agent.ros_transport``).
 
 A client sends requests ``{"op": OP, "id": N, ...}``; the agent answers each with
 ``{"reply": N, "ok": true, ...}`` or ``{"reply": N, "ok": false, "error": KEY, "message": TEXT}`` (TEXT in the

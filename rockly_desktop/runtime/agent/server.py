@@ -1,5 +1,5 @@
 """The agent (``rockly agent``): its library and its one run, offered to clients through its transports (TCP:
-``agent.tcp_transport``; ROS 1: ``agent.ros1_transport``), which all pass requests to ``Agent.answer``.
+``agent.tcp_transport``; ROS 1 and 2: ``agent.ros_transport``), which all pass requests to ``Agent.answer``.
 
 Requests (each answered; refusals say why in the client's language):
 

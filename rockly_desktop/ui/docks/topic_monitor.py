@@ -84,9 +84,11 @@ class TopicMonitor(QWidget):
         self.interfaces.sig_make_block_requested.connect(self.sig_make_block_requested)
         self.interfaces.setVisible(offers is not None)
         lists = QSplitter(Qt.Orientation.Vertical, self)
-        lists.setChildrenCollapsible(False)
         lists.addWidget(self.table)
         lists.addWidget(self.interfaces)
+        lists.setChildrenCollapsible(False)
+        # at least their title line: the services and actions must not make the bottom docks' strip taller
+        self.interfaces.setMinimumHeight(self.interfaces.title.sizeHint().height())
         lists.setStretchFactor(0, 3)
         lists.setStretchFactor(1, 1)
         lists.setSizes([240, 100])  # the topics keep most of a small dock

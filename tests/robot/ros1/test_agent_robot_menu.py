@@ -58,7 +58,9 @@ def test_the_simulators_tablet_lists_the_programs_and_a_person_starts_and_stops_
     events = []
     watcher = AgentClient("127.0.0.1", agent.port, on_event=events.append)
     try:
-        assert agent.process.stdout.readline().startswith("rockly agent: the programs for hobbit are offered")
+        said = [agent.process.stdout.readline() for _ in range(2)]  # on ROS 1 too; the programs offered
+        assert said[0].startswith("rockly agent: on ROS 1 too, master ")
+        assert said[1].startswith("rockly agent: the programs for hobbit are offered")
         watcher.attach(control=False)
         # the tablet lists what the robot keeps; the person types its number
         assert simulator.dialog(60) == ("text", "Which program shall I run?\n1. long\nType its number or its name.")

@@ -112,6 +112,7 @@ class Helper:
         self._goals = {}
         self._settled = set()
         self.qos_overrides = {}
+        self._kept_qos = {}  # QoS asked for by ``keep_qos``: a profile's ``configure`` does not replace it
         self.safe_stop = []
         self.sim = None
 
@@ -212,7 +213,7 @@ class Helper:
         unless ``match`` is False (a helper replacing a lost one: its stop must not wait behind a topic
         nobody subscribes to; a publish matches first anyway). Returns the topics that cannot be
         published here (a type ROS 2's environment lacks)."""
-        self.qos_overrides = dict(qos_overrides or {})
+        self.qos_overrides = {**(qos_overrides or {}), **self._kept_qos}
         self.safe_stop = list(safe_stop or [])
         problems = []
         for action in self.safe_stop:
@@ -225,6 +226,21 @@ class Helper:
                 except LookupError:
                     problems.append(action["publish"]["topic"])
         return problems
+
+    def op_keep_qos(self, topic, setting):
+        """Give ``topic``'s publisher and subscription made from now on the QoS ``setting`` (``qos.from_setting``),
+        whatever a profile configures (the robot agent's topics: reliable and deep)."""
+        qos.from_setting(setting)  # a bad setting is refused here, not when the publisher is made
+        self._kept_qos[topic] = self.qos_overrides[topic] = setting
+
+    def op_ends(self, topic):
+        """``(publishers, subscribers)`` of ``topic`` on other nodes than this helper's own."""
+        own = {self.node.get_name(), self.topics.node.get_name()}
+
+        def others(endpoints):
+            return sum(1 for info in endpoints if info.node_name not in own)
+        return (others(self.node.get_publishers_info_by_topic(topic)),
+                others(self.node.get_subscriptions_info_by_topic(topic)))
 
     def _publisher(self, topic, type_name):
         """The publisher on ``topic``: one per topic (Fast DDS refuses a second type on a topic in one

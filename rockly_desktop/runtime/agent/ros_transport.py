@@ -1,15 +1,17 @@
-"""The agent's ROS 1 transport: the same messages as over TCP (``agent.protocol``), on the agent's two topics
-(``robot/ros1/agent_topics.py``, reached through the robot-link registry): requests go to the agent with
+"""The agent's ROS transport: the same messages as over TCP (``agent.protocol``), on the agent's two topics on
+the robot link ``kind``'s middleware (``ros1``: ``robot/ros1/agent_topics.py``, ``ros2``:
+``robot/ros2/agent_topics.py``, reached through the robot-link registry): requests go to the agent with
 ``"from": CLIENT`` (a name unique to the client), answers come back with ``"to": CLIENT``, the run's events
 without (one topic out keeps a client's answers and events in the order the agent sent them, as one TCP
-connection does). Why topics of standard types: docs/decisions/031.
+connection does). Why topics of standard types: docs/decisions/031. ``where`` is the graph: a ROS 1 master
+URI, a ROS 2 domain id (the agent: its connection's settings); None: this process's node's, or the environment's.
 
 A topic has no "connection closed", so a ROS client says it is there with a heartbeat every
 ``HEARTBEAT_SECONDS`` (attached or not) and ``bye`` when it closes; the agent forgets a client not heard from for
 ``SILENT_CLIENT_SECONDS`` (it neither watches nor controls any more). A client hears a lost agent as its
 incoming topic losing its publisher for ``LOST_AGENT_SECONDS``.
 
-``RosOffer`` is the agent's side, ``RosLine`` a client's; rospy is imported only when one is made.
+``RosOffer`` is the agent's side, ``RosLine`` a client's; the middleware is reached only when one is made.
 """
 import os
 import threading
@@ -17,36 +19,45 @@ import time
 import uuid
 
 from rockly_desktop.core.app_texts import app_text
-from rockly_desktop.robot.link import RobotUnavailable
+from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.runtime.agent.protocol import AgentError
 
-KIND = "ros1"  # the robot link whose middleware carries these topics
+KINDS = ("ros1", "ros2")  # the robot links whose middleware carries these topics
+# the texts naming each: (cannot reach it, no agent in the graph, the agent offers its calls there)
+TEXTS = {"ros1": ("agent_no_ros", "agent_not_in_graph", "agent_ready_ros"),
+         "ros2": ("agent_no_ros2", "agent_not_in_graph_ros2", "agent_ready_ros2")}
 SILENT_CLIENT_SECONDS = 5.0  # a ROS client not heard from this long is gone (it beats every 0.2 s)
 LOST_AGENT_SECONDS = 1.0  # a client's incoming topic without the agent's publisher this long: the agent is gone
 
 
-def _carrier():
+def _carrier(kind: str):
     from rockly_desktop.robot import links
 
-    return links.agent_topics(KIND)
+    return links.agent_topics(kind)
 
 
-def agent_in_graph(master: str, namespace: str) -> bool:
-    """True when the ROS 1 master at ``master`` lists an agent in ``namespace``."""
-    return _carrier().agent_in_graph(master, namespace)
+def agent_in_graph(kind: str, where, namespace: str) -> bool:
+    """True when the ``kind`` graph ``where`` names lists an agent in ``namespace``."""
+    return _carrier(kind).agent_in_graph(where, namespace)
 
 
-def master_at_hand():
-    """The master of this process's ROS 1 node, None when it has none."""
-    return _carrier().master_at_hand()
-
-
-def _node(master, language: str) -> tuple:
-    """``(node name, master URI)`` of this process's ROS 1 node; AgentError when it cannot be had."""
+def master_at_hand(kind: str):
+    """The graph of this process's ``kind`` node (a master URI, a domain id), None when it has none (or the
+    middleware is not installed here)."""
     try:
-        return _carrier().node_name(master)
-    except (RobotUnavailable, ImportError) as error:
-        raise AgentError("agent_no_ros", app_text("agent_no_ros", language, reason=str(error))) from None
+        return _carrier(kind).master_at_hand()
+    except ImportError:
+        return None
+
+
+def _node(kind: str, where, language: str) -> tuple:
+    """``(node name, the graph as a person reads it)`` of this process's ``kind`` node; AgentError when it
+    cannot be had."""
+    try:
+        node, graph = _carrier(kind).node_name(where)
+    except (RocklyError, ImportError) as error:
+        raise AgentError(TEXTS[kind][0], app_text(TEXTS[kind][0], language, reason=str(error))) from None
+    return node, graph.in_language(language) if hasattr(graph, "in_language") else graph  # ROS 2's: "domain 7"
 
 
 class _RosClient:
@@ -68,16 +79,17 @@ class _RosClient:
 
 
 class RosOffer:
-    """``agent``'s calls on ROS 1 ``master`` (None: ``ROS_MASTER_URI``) in ``namespace``; AgentError when ROS 1
-    cannot be reached."""
+    """``agent``'s calls on the ``kind`` graph ``where`` in ``namespace``; AgentError when it cannot be reached.
+    ``ready``: the line saying so, in ``language``."""
 
-    def __init__(self, agent, namespace: str, master: str = None, language: str = "en"):
-        _, self.master = _node(master, language)
+    def __init__(self, agent, kind: str, namespace: str, where=None, language: str = "en"):
+        _, self.master = _node(kind, where, language)
+        self.ready = app_text(TEXTS[kind][2], language, master=self.master, namespace=namespace)
         self.agent = agent
         self._clients = {}
         self._lock = threading.Lock()
         self._stopped = threading.Event()
-        self.topics = _carrier().Topics(namespace, True, self._on_request)
+        self.topics = _carrier(kind).Topics(namespace, True, self._on_request)
         self._watch = threading.Thread(target=self._forget_silent, daemon=True, name="agent-ros-clients")
         self._watch.start()
 
@@ -123,17 +135,17 @@ class RosOffer:
 
 
 class RosLine:
-    """A client's line to the agent in ``namespace`` on ROS 1 ``master`` (None: this process's node's master, or
-    ``ROS_MASTER_URI``): ``take(message)`` gets the agent's messages for this client and its events, in order
-    (on rospy's thread); ``gone()`` is called once when the line has ended (closed, or the agent lost)."""
+    """A client's line to the agent in ``namespace`` on the ``kind`` graph ``where`` (None: this process's node's,
+    or the environment's): ``take(message)`` gets the agent's messages for this client and its events, in order
+    (on the middleware's thread); ``gone()`` is called once when the line has ended (closed, or the agent lost)."""
 
     beats_always = True  # the agent has no closed connection to hear: a client falling silent is gone
 
-    def __init__(self, master, namespace: str, language: str, timeout: float, take, gone):
-        node, master = _node(master, language)
-        not_there = AgentError("agent_not_in_graph", app_text("agent_not_in_graph", language, namespace=namespace,
-                                                              master=master))
-        if not agent_in_graph(master, namespace):
+    def __init__(self, kind: str, where, namespace: str, language: str, timeout: float, take, gone):
+        node, master = _node(kind, where, language)
+        not_there = AgentError(TEXTS[kind][1], app_text(TEXTS[kind][1], language, namespace=namespace,
+                                                        master=master))
+        if not agent_in_graph(kind, where, namespace):
             raise not_there
         self.who = f"{node}/{os.getpid()}-{uuid.uuid4().hex[:8]}"
         self.where = f"{master} ({namespace})"  # what a window names
@@ -141,7 +153,7 @@ class RosLine:
         self._ready = threading.Event()
         self._ended = threading.Event()
         self._ending = threading.Lock()
-        self.topics = _carrier().Topics(namespace, False, self._on_message)
+        self.topics = _carrier(kind).Topics(namespace, False, self._on_message)
         if not self._handshake(timeout):
             self.topics.close()
             raise not_there
@@ -149,9 +161,9 @@ class RosLine:
         self._watch.start()
 
     def _handshake(self, timeout: float) -> bool:
-        """Ask until the agent answers: rospy drops what is published before a subscriber is connected, and a
-        publisher lists a subscriber only after the subscriber sees the connection up; an answer that came back
-        means both ways work. True when it came within ``timeout``."""
+        """Ask until the agent answers: ROS drops what is published before a subscriber is connected (ROS 2's
+        discovery is gradual), and a publisher lists a subscriber only after the subscriber sees the connection
+        up; an answer that came back means both ways work. True when it came within ``timeout``."""
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
             if self.topics.connected():
