@@ -487,11 +487,12 @@ class MainWindow(QMainWindow):
         from rockly_desktop.ui.agent.robot_programs_dialog import RobotProgramsDialog
 
         address = self._agent_address() or ("localhost", DEFAULT_PORT)
+        on_ros = bool(link_kind(self.robots.kind).agent_topics)  # the agent is asked on the chosen robot's graph
         RobotProgramsDialog(self.attached, self.language, self, *address,
                             open_copy=lambda path, name: self.files.open_copy(path, name), document=self.document,
                             limits=lambda: self.settings.teacher.limits(self.profile.id),
                             reached=self._remember_agent,
-                            via="auto" if link_kind(self.robots.kind).agent_topics else "tcp").show()
+                            via="auto" if on_ros else "tcp", graph_kind=self.robots.kind if on_ros else None).show()
 
     def make_block(self, chosen: str = "", kind: str = ""):
         """Open the block maker (Tools → Make a block…), with the topic, service or action ``chosen`` (of

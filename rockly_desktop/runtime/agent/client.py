@@ -38,8 +38,10 @@ from rockly_desktop.runtime.agent.protocol import (
 VIAS = ("auto", "tcp", "ros")
 
 
-def chosen_via(via: str, master: str = None, namespace: str = DEFAULT_NAMESPACE, domain=None) -> tuple:
-    """``("tcp", None, None)`` or ``("ros", "ros1" or "ros2", the graph)`` for ``via`` (see above)."""
+def chosen_via(via: str, master: str = None, namespace: str = DEFAULT_NAMESPACE, domain=None,
+               graph_kind: str = None) -> tuple:
+    """``("tcp", None, None)`` or ``("ros", "ros1" or "ros2", the graph)`` for ``via`` (see above); without a
+    ``master`` or ``domain``, only the graph of ``graph_kind`` (the chosen robot's) this process is on, if given."""
     if via == "tcp":
         return "tcp", None, None
     from rockly_desktop.runtime.agent.ros_transport import KINDS, agent_in_graph, master_at_hand
@@ -49,7 +51,8 @@ def chosen_via(via: str, master: str = None, namespace: str = DEFAULT_NAMESPACE,
     elif master:
         graphs = [("ros1", master)]
     else:
-        graphs = [(kind, where) for kind, where in ((kind, master_at_hand(kind)) for kind in KINDS) if where]
+        kinds = [graph_kind] if graph_kind else KINDS
+        graphs = [(kind, where) for kind, where in ((kind, master_at_hand(kind)) for kind in kinds) if where]
     if via == "ros":
         return ("ros", *graphs[0]) if graphs else ("ros", "ros1", None)
     return next((("ros", kind, where) for kind, where in graphs if agent_in_graph(kind, where, namespace)),
@@ -62,7 +65,7 @@ class AgentClient:
 
     def __init__(self, host: str = "localhost", port: int = DEFAULT_PORT, language: str = "en",
                  on_event=None, on_closed=None, name: str = "rockly", timeout: float = 10.0, via: str = "tcp",
-                 master: str = None, namespace: str = DEFAULT_NAMESPACE, domain=None):
+                 master: str = None, namespace: str = DEFAULT_NAMESPACE, domain=None, graph_kind: str = None):
         self.language = language
         self.on_event = on_event
         self.on_closed = on_closed
@@ -75,7 +78,7 @@ class AgentClient:
         self._closed = threading.Event()
         self._attached = threading.Event()
         self._watching = threading.Event()  # from the attach request on: the run's events are wanted
-        self.via, self.kind, where = chosen_via(via, master, namespace, domain)
+        self.via, self.kind, where = chosen_via(via, master, namespace, domain, graph_kind)
         if self.via == "ros":
             from rockly_desktop.runtime.agent.ros_transport import RosLine
 

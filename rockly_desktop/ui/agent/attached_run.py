@@ -57,7 +57,7 @@ class AttachedRun(QObject):
         """True while attached to a run that has not ended."""
         return self.client is not None and self.state != "idle"
 
-    def attach(self, host: str, port: int, then=None, via: str = "tcp"):
+    def attach(self, host: str, port: int, then=None, via: str = "tcp", graph_kind: str = None):
         """Attach to what runs on the agent at ``host``:``port`` (or over ROS: ``via``, as ``AgentClient`` has it),
         off the window's thread: returns at once. Once the
         agent has answered (within ``ATTACH_TIMEOUT``), the run so far is shown and ``sig_attached`` said, or
@@ -75,13 +75,14 @@ class AttachedRun(QObject):
             if then is not None:
                 then(error)
 
-        self.calls.run(lambda: self._reach(host, port, breakpoints, language, via), reached,
+        self.calls.run(lambda: self._reach(host, port, breakpoints, language, via, graph_kind), reached,
                        unused=lambda answer: answer[0].close())
 
-    def _reach(self, host: str, port: int, breakpoints: list, language: str, via: str) -> tuple:
+    def _reach(self, host: str, port: int, breakpoints: list, language: str, via: str, graph_kind: str) -> tuple:
         """Connect and attach (on a call's thread): ``(client, answer)``; raises ``AgentError`` when it cannot."""
         client = AgentClient(host, port, language, on_event=self._sig_event.emit, on_closed=self._sig_closed.emit,
-                             name="rockly window", timeout=ATTACH_TIMEOUT, via=via)
+                             name="rockly window", timeout=ATTACH_TIMEOUT, via=via,
+                             graph_kind=graph_kind)
         try:
             answer = client.attach(control=True, breakpoints=breakpoints)
         except AgentError:

@@ -40,12 +40,14 @@ class RobotProgramsDialog(QDialog):
     (``document``: its file and profile) under ``limits()``, the teacher's limits in force. The agent is asked
     off the window's thread (``calls``): while an answer is on its way, ``status`` says so and the buttons that
     would ask again wait; answers that come after the dialog was closed are dropped. ``via`` is how the agent
-    is reached (``AgentClient``'s: ``auto`` for a ROS 1 robot: over ROS when its agent is in the graph)."""
+    is reached (``AgentClient``'s: ``auto`` for a ROS robot: over ROS when its agent is in the graph of
+    ``graph_kind``, the chosen robot's link kind)."""
 
     def __init__(self, attached, language: str, parent=None, host: str = "localhost", port: int = DEFAULT_PORT,
-                 open_copy=None, document=None, limits=None, reached=None, via: str = "tcp"):
+                 open_copy=None, document=None, limits=None, reached=None, via: str = "tcp",
+                 graph_kind: str = None):
         super().__init__(parent)
-        self.via = via
+        self.via, self.graph_kind = via, graph_kind
         self.attached, self.language, self._open_copy = attached, language, open_copy
         self.document, self._limits, self._reached = document, limits, reached
         self._robot_source = None
@@ -192,7 +194,8 @@ class RobotProgramsDialog(QDialog):
     def attach(self):
         """Attach the window to what runs on the robot (``AttachedRun.attach``: off the window's thread)."""
         host, port = self.host.text().strip(), self.port.value()
-        self._ask(lambda done: self.attached.attach(host, port, done, self.via), self._attached, waits=True)
+        self._ask(lambda done: self.attached.attach(host, port, done, self.via, self.graph_kind), self._attached,
+                  waits=True)
 
     def _attached(self, error):
         if error is not None:
@@ -233,7 +236,7 @@ class RobotProgramsDialog(QDialog):
         host, port, language = self.host.text().strip(), self.port.value(), self.language
 
         def work():
-            client = AgentClient(host, port, language, name="rockly window", via=self.via)
+            client = AgentClient(host, port, language, name="rockly window", via=self.via, graph_kind=self.graph_kind)
             try:
                 return call(client)
             finally:
