@@ -24,7 +24,6 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
-import numpy
 import yaml
 
 CONTACT = 1e-4          # m: a footprint this close to an obstacle touches it
@@ -108,6 +107,8 @@ class World:
         if not (math.isfinite(self.radius) and self.radius > 0):
             raise ValueError(f"the robot's radius must be a positive number, not {radius!r}")
         self.area = None if area is None else rectangle(*area)[0] + rectangle(*area)[2]
+        import numpy  # here, not with the module: the SDK brings this module in while the editor's page loads
+
         starts, vectors = [], []
         for obstacle in self.obstacles:
             for (ax, ay), (bx, by) in _edges(obstacle.points):
@@ -197,6 +198,8 @@ class World:
     def cast(self, x, y, angles):
         """Distance from (x, y) along each direction in ``angles`` (radians) to the nearest obstacle edge
         (``inf`` where a ray hits nothing), all rays at once."""
+        import numpy  # already loaded by __init__: a dictionary look-up
+
         angles = numpy.asarray(angles, dtype=float)
         if not len(self._a):
             return numpy.full(angles.shape, numpy.inf)
