@@ -30,8 +30,8 @@ TITLES = {"en": ("Rockly", "Make a block"), "de": ("Rockly", "Einen Block bauen"
 SENTENCES = {"en": "ask %1 to say %2", "de": "frag %1 und sag %2"}
 SPOTS = {  # (x, y) in the maker's window
     "first offer": (124, 47),
-    "sessionID use": (668, 414),
-    "requestText use": (668, 444),
+    "sessionID use": (738, 414),
+    "requestText use": (738, 444),
     "sentence en": (824, 133),
     "sentence de": (824, 161),
 }
