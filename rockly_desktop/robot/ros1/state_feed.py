@@ -11,6 +11,7 @@ import logging
 import threading
 
 from rockly_desktop.robot.followed_topics import FollowedTopics
+from rockly_desktop.robot.parameter_wish import ParameterWish
 from rockly_desktop.robot.ros1.connection import ask_master
 from rockly_desktop.robot.ros1.graph_offers import ServiceTypes, graph_actions, parameter_names
 
@@ -31,8 +32,7 @@ class RosStateFeed:
         self._services = set()
         self._typed_services = []
         self._actions = []
-        self._parameters = []
-        self._parameters_wanted = threading.Event()
+        self._parameters = ParameterWish()
         self._stopped = threading.Event()
         self._thread = threading.Thread(target=self._poll, name="rockly-ros-graph", daemon=True)
         self._thread.start()
@@ -60,15 +60,11 @@ class RosStateFeed:
 
     def graph_parameters(self) -> list:
         """Names on the parameter server (not ROS's own), as of the last poll."""
-        return list(self._parameters)
+        return list(self._parameters.names)
 
     def want_parameters(self, wanted: bool):
-        """Ask the master for its parameter names from now on (``wanted``), or no more (and forget them)."""
-        if wanted:
-            self._parameters_wanted.set()
-        else:
-            self._parameters_wanted.clear()
-            self._parameters = []
+        """Ask for the parameter names from now on (``wanted``), or no more (and forget them)."""
+        self._parameters.want(wanted)
 
     def stop(self):
         """Stop watching the graph (subscriptions stay with the shared RosGraph)."""
@@ -94,10 +90,9 @@ class RosStateFeed:
                     for topic, msg_type in types.items():
                         self._followed.follow(topic, msg_type)
                     self._actions = graph_actions(types)
-                    if self._parameters_wanted.is_set():
+                    if self._parameters.wanted.is_set():
                         names = parameter_names(uri)
-                        if self._parameters_wanted.is_set():  # not unwished meanwhile
-                            self._parameters = names
+                        self._parameters.keep(names)  # unless unwished meanwhile
                     self._typed_services = service_types.typed(
                         name for name, nodes in services if me not in nodes and not name.endswith(ROS_OWN_SERVICES))
                 except Exception as error:

@@ -12,6 +12,7 @@ import threading
 import time
 
 from rockly_desktop.robot.followed_topics import FollowedTopics
+from rockly_desktop.robot.parameter_wish import ParameterWish
 
 log = logging.getLogger(__name__)
 
@@ -29,8 +30,7 @@ class Ros2StateFeed:
         self._ros_graph = ros_graph
         self._followed = FollowedTopics(store, lambda topic, msg_type: ros_graph.topic(topic, msg_type).raw_callbacks)
         self._graph = {"topics": [], "own": {}, "services": [], "actions": []}
-        self._parameters = []
-        self._parameters_wanted = threading.Event()
+        self._parameters = ParameterWish()
         self._stopped = threading.Event()
         self._thread = threading.Thread(target=self._poll, name="rockly-ros2-graph", daemon=True)
         self._thread.start()
@@ -62,15 +62,11 @@ class Ros2StateFeed:
 
     def graph_parameters(self) -> list:
         """``node:param`` of the graph's nodes' parameters, as of the last parameter poll."""
-        return list(self._parameters)
+        return list(self._parameters.names)
 
     def want_parameters(self, wanted: bool):
-        """Ask the nodes for their parameters from now on (``wanted``), or no more (and forget them)."""
-        if wanted:
-            self._parameters_wanted.set()
-        else:
-            self._parameters_wanted.clear()
-            self._parameters = []
+        """Ask for the parameter names from now on (``wanted``), or no more (and forget them)."""
+        self._parameters.want(wanted)
 
     def stop(self):
         """Stop watching the graph (subscriptions stay with the shared Ros2Graph)."""
@@ -85,13 +81,12 @@ class Ros2StateFeed:
                 for topic, msg_type, count in self.graph_topics():
                     if count:
                         self._followed.follow(topic, msg_type)
-                if not self._parameters_wanted.is_set():
+                if not self._parameters.wanted.is_set():
                     parameters_asked = 0.0  # asked at once when wished again
                 elif time.monotonic() - parameters_asked >= PARAMETER_POLL_SECONDS:
                     parameters_asked = time.monotonic()
                     names = helper.call("parameters", PARAMETER_ANSWER_SECONDS, timeout=PARAMETER_ANSWER_SECONDS + 5.0)
-                    if self._parameters_wanted.is_set():  # not unwished meanwhile
-                        self._parameters = names
+                    self._parameters.keep(names)  # unless unwished meanwhile
             except Exception as error:
                 log.debug("reading the ROS 2 graph failed: %s", error)
             self._stopped.wait(POLL_SECONDS)
