@@ -1,7 +1,11 @@
 """The robot's agent (``rockly agent``) as a process of its own, and ``rockly robot`` as a user runs it."""
+import json
 import subprocess
 import sys
+import threading
 from pathlib import Path
+
+from waiting import eventually
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -38,3 +42,57 @@ class AgentProcess:
                 self.process.wait(10)
         self.process.stdout.close()
         self.process.stderr.close()
+
+
+class AttachedClient:
+    """``rockly robot ... attach [--watch-only]`` (``command``) as a process; ``lines``: the JSON lines it printed."""
+
+    def __init__(self, command: list, env: dict):
+        self.lines = []
+        self.process = subprocess.Popen(command, cwd=REPO, text=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                        env=env)
+        self._reader = threading.Thread(target=self._read, daemon=True)
+        self._reader.start()
+        eventually(lambda: self.lines or self.process.poll() is not None, 60)
+        assert self.lines, self.process.stderr.read()
+
+    def _read(self):
+        for line in self.process.stdout:
+            self.lines.append(json.loads(line))
+
+    @property
+    def first(self) -> dict:
+        return self.lines[0]
+
+    def seen(self, wanted) -> list:
+        return [line for line in list(self.lines) if wanted(line)]
+
+    def wait_for(self, wanted, timeout=60) -> dict:
+        eventually(lambda: self.seen(wanted), timeout)
+        return self.seen(wanted)[0]
+
+    def end(self):
+        if self.process.poll() is None:
+            self.process.kill()
+        self.process.wait(30)
+        self._reader.join(10)
+        self.process.stdout.close()
+        self.process.stderr.close()
+
+
+def run_ended(line) -> bool:
+    """An attached client's line saying the run ended."""
+    return line.get("event") == "run" and line.get("state") == "ended"
+
+
+def sent_started_and_watched(run_robot, attach, program, name, *send_options) -> AttachedClient:
+    """Send ``program`` as ``name`` with ``run_robot(*args)``, start it and ``attach("--watch-only")`` a watcher
+    (not the editor), checking what each step says."""
+    sent = run_robot("send", program, "--name", name, *send_options)
+    assert sent.returncode == 0 and sent.stdout == f"'{name}' is on the robot now\n", sent.stderr
+    begun = run_robot("start", name)
+    assert begun.returncode == 0 and begun.stdout == f"'{name}' started on the robot\n", begun.stderr
+    watcher = attach("--watch-only")
+    assert watcher.first["event"] == "attached" and watcher.first["controller"] is False
+    assert watcher.first["run"]["program"] == name
+    return watcher

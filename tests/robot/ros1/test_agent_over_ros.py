@@ -3,15 +3,14 @@ hobbit --ros`` on a master of the test's own: ``rockly robot --via ros`` process
 stop; the editor's process killed mid-run stops the robot (a zero velocity on the wire, seen by an independent
 rospy node) or lets the run finish, as the program says; a client of another version, or no agent in the
 graph, is told plainly. Every client is given a TCP port nobody listens on: what works, works over ROS."""
-import json
 import struct
 import subprocess
 import sys
-import threading
 import time
 
 import pytest
-from agent_tools import REPO, AgentProcess
+from agent_tools import REPO, AgentProcess, AttachedClient, sent_started_and_watched
+from agent_tools import run_ended as ended
 from program_builder import block, number, rockly_document, stack
 from ros_helpers import RocklyProcess, RosMaster, ros_environment
 from standalone_tools import export_standalone
@@ -65,60 +64,19 @@ def run_robot(master, *args, language="en") -> subprocess.CompletedProcess:
                           timeout=120, cwd=REPO, env=ros_environment(master.uri, master.home))
 
 
-class Attached:
-    """``rockly robot --via ros attach [--watch-only]`` as a process; ``lines``: the JSON lines it printed."""
-
-    def __init__(self, master, *options):
-        self.lines = []
-        self.process = subprocess.Popen(robot_command(master, "attach", *options), cwd=REPO, text=True,
-                                        stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                                        env=ros_environment(master.uri, master.home))
-        self._reader = threading.Thread(target=self._read, daemon=True)
-        self._reader.start()
-        eventually(lambda: self.lines or self.process.poll() is not None, 60)
-        assert self.lines, self.process.stderr.read()
-
-    def _read(self):
-        for line in self.process.stdout:
-            self.lines.append(json.loads(line))
-
-    @property
-    def first(self) -> dict:
-        return self.lines[0]
-
-    def seen(self, wanted) -> list:
-        return [line for line in list(self.lines) if wanted(line)]
-
-    def wait_for(self, wanted, timeout=60) -> dict:
-        eventually(lambda: self.seen(wanted), timeout)
-        return self.seen(wanted)[0]
-
-    def end(self):
-        if self.process.poll() is None:
-            self.process.kill()
-        self.process.wait(30)
-        self._reader.join(10)
-        self.process.stderr.close()
-
-
-def ended(line):
-    return line.get("event") == "run" and line.get("state") == "ended"
+def attached(master, *options) -> AttachedClient:
+    """``rockly robot --via ros attach [--watch-only]`` as a process."""
+    return AttachedClient(robot_command(master, "attach", *options), ros_environment(master.uri, master.home))
 
 
 def zero_velocities(wire) -> int:
     return sum(1 for _type, raw in wire.on("/cmd_vel") if struct.unpack("<6d", raw) == ZERO)
 
 
-def started(master, programs, name, *send_options) -> Attached:
+def started(master, programs, name, *send_options) -> AttachedClient:
     """Send program ``name``, start it and attach a watcher (not the editor) once it drives."""
-    sent = run_robot(master, "send", programs[name], "--name", name, *send_options)
-    assert sent.returncode == 0 and sent.stdout == f"'{name}' is on the robot now\n", sent.stderr
-    begun = run_robot(master, "start", name)
-    assert begun.returncode == 0 and begun.stdout == f"'{name}' started on the robot\n", begun.stderr
-    watcher = Attached(master, "--watch-only")
-    assert watcher.first["event"] == "attached" and watcher.first["controller"] is False
-    assert watcher.first["run"]["program"] == name
-    return watcher
+    return sent_started_and_watched(lambda *args: run_robot(master, *args), lambda *options: attached(master, *options),
+                                    programs[name], name, *send_options)
 
 
 def test_send_list_start_attach_and_stop_over_ros(robot, agent):
@@ -154,7 +112,7 @@ def test_send_list_start_attach_and_stop_over_ros(robot, agent):
 def test_a_lost_editor_over_ros_stops_the_robot_within_the_time_to_decide(robot, agent):
     master, programs, wire = robot
     watcher = started(master, programs, "far", "--decide-seconds", "1")
-    editor = Attached(master)
+    editor = attached(master)
     try:
         assert editor.first["controller"] is True
         before = zero_velocities(wire)
@@ -174,7 +132,7 @@ def test_a_lost_editor_over_ros_stops_the_robot_within_the_time_to_decide(robot,
 def test_a_lost_editor_over_ros_lets_a_keep_going_program_finish(robot, agent):
     master, programs, _ = robot
     watcher = started(master, programs, "short", "--keep-going", "--decide-seconds", "0.5")
-    editor = Attached(master)
+    editor = attached(master)
     try:
         assert editor.first["controller"] is True and editor.first["run"]["state"] != "ended"
         editor.process.kill()
@@ -222,13 +180,13 @@ def test_an_editor_gone_silent_over_ros_leaves_control_to_the_next(robot, agent)
     comes after the killed editor controls the run."""
     master, programs, _ = robot
     watcher = started(master, programs, "far", "--keep-going")
-    editor = Attached(master)
+    editor = attached(master)
     assert editor.first["controller"] is True
     editor.process.kill()
     editor.end()
 
     def next_window_controls():
-        window = Attached(master)
+        window = attached(master)
         window.end()
         return window.first["controller"]
     try:

@@ -3,14 +3,13 @@ turtlebot --ros2`` on the test run's own domain: ``rockly robot --via ros --doma
 attach and stop; the editor's process killed mid-run stops the robot (a zero velocity on the wire, seen by an
 independent rclpy node) within the time to decide; no agent on the domain is told plainly. Every client is given a
 TCP port nobody listens on: what works, works over ROS 2."""
-import json
 import subprocess
 import sys
-import threading
 import time
 
 import pytest
-from agent_tools import REPO, AgentProcess
+from agent_tools import REPO, AgentProcess, AttachedClient, sent_started_and_watched
+from agent_tools import run_ended as ended
 from json_line_node import JsonLineNode
 from ros2_fixtures import ROS2_PYTHON
 from test_standalone_on_ros2 import RECORDER, long_drive_exported, turtlebot_sim_on_ros2
@@ -57,45 +56,9 @@ def run_robot(settings, *args, language="en") -> subprocess.CompletedProcess:
                           timeout=120, cwd=REPO, env=settings.environment())
 
 
-class Attached:
-    """``rockly robot --via ros --domain N attach [--watch-only]`` as a process; ``lines``: the JSON lines it
-    printed."""
-
-    def __init__(self, settings, *options):
-        self.lines = []
-        self.process = subprocess.Popen(robot_command(settings, "attach", *options), cwd=REPO, text=True,
-                                        stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=settings.environment())
-        self._reader = threading.Thread(target=self._read, daemon=True)
-        self._reader.start()
-        eventually(lambda: self.lines or self.process.poll() is not None, 60)
-        assert self.lines, self.process.stderr.read()
-
-    def _read(self):
-        for line in self.process.stdout:
-            self.lines.append(json.loads(line))
-
-    @property
-    def first(self) -> dict:
-        return self.lines[0]
-
-    def seen(self, wanted) -> list:
-        return [line for line in list(self.lines) if wanted(line)]
-
-    def wait_for(self, wanted, timeout=60) -> dict:
-        eventually(lambda: self.seen(wanted), timeout)
-        return self.seen(wanted)[0]
-
-    def end(self):
-        if self.process.poll() is None:
-            self.process.kill()
-        self.process.wait(30)
-        self._reader.join(10)
-        self.process.stdout.close()
-        self.process.stderr.close()
-
-
-def ended(line):
-    return line.get("event") == "run" and line.get("state") == "ended"
+def attached(settings, *options) -> AttachedClient:
+    """``rockly robot --via ros --domain N attach [--watch-only]`` as a process."""
+    return AttachedClient(robot_command(settings, "attach", *options), settings.environment())
 
 
 def zeros(wire) -> int:
@@ -106,16 +69,10 @@ def driving(wire) -> bool:
     return any(line["linear"][0] == 0.1 for line in list(wire.lines))
 
 
-def started(settings, program, *send_options) -> Attached:
+def started(settings, program, *send_options) -> AttachedClient:
     """Send the program as "long", start it and attach a watcher (not the editor) once it drives."""
-    sent = run_robot(settings, "send", program, "--name", "long", *send_options)
-    assert sent.returncode == 0 and sent.stdout == "'long' is on the robot now\n", sent.stderr
-    begun = run_robot(settings, "start", "long")
-    assert begun.returncode == 0 and begun.stdout == "'long' started on the robot\n", begun.stderr
-    watcher = Attached(settings, "--watch-only")
-    assert watcher.first["event"] == "attached" and watcher.first["controller"] is False
-    assert watcher.first["run"]["program"] == "long"
-    return watcher
+    return sent_started_and_watched(lambda *args: run_robot(settings, *args),
+                                    lambda *options: attached(settings, *options), program, "long", *send_options)
 
 
 def test_send_list_start_attach_and_stop_over_ros2(robot, agent):
@@ -150,7 +107,7 @@ def test_send_list_start_attach_and_stop_over_ros2(robot, agent):
 def test_a_lost_editor_over_ros2_stops_the_robot_within_the_time_to_decide(robot, agent):
     settings, program, wire = robot
     watcher = started(settings, program, "--decide-seconds", "1")
-    editor = Attached(settings)
+    editor = attached(settings)
     try:
         assert editor.first["controller"] is True
         eventually(lambda: driving(wire), 60)
