@@ -6,11 +6,10 @@ import os
 import subprocess
 import sys
 import tempfile
-import threading
-import time
 from pathlib import Path
 
 from _paths import REPO
+from _twist_echo import TwistEcho
 
 ROS2_PYTHON = REPO / ".venv-ros2" / "bin" / "python"
 DRIVE = "robot.drive_for(0.1, 120)\n"  # drives until stopped (each trial stops it)
@@ -27,31 +26,6 @@ node.create_subscription(Twist, "/cmd_vel", on_twist, 1000)
 print("ready", flush=True)
 rclpy.spin(node)
 '''
-
-
-class Echo:
-    """The separate rclpy node: ``wait_for(kind, after)`` the receive time of a Twist of ``kind`` (move, zero)."""
-
-    def __init__(self, env):
-        self.seen = []
-        self.process = subprocess.Popen([str(ROS2_PYTHON), "-c", ECHO_NODE], env=env, stdout=subprocess.PIPE,
-                                        text=True)
-        assert self.process.stdout.readline().startswith("ready")
-        threading.Thread(target=self._read, daemon=True).start()
-
-    def _read(self):
-        for line in self.process.stdout:
-            kind, when = line.split()
-            self.seen.append((kind, float(when)))
-
-    def wait_for(self, kind, after, timeout=10.0):
-        deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline:
-            for seen_kind, when in list(self.seen):
-                if seen_kind == kind and when > after:
-                    return when
-            time.sleep(0.0005)
-        raise RuntimeError(f"no {kind} Twist on the wire")
 
 
 def _started(command, env, ready_text):
@@ -90,7 +64,7 @@ def ros2_figures(stop_times, attach_times):
     turtlebot = ProfileRegistry.discover().get("turtlebot")
     program = standalone_text("bench-drive.rockly", turtlebot, {"code": DRIVE, "variables": {}}, {}, Limits(), "en")
     simulator, _ = _started(["sim", "turtlebot", "--ros2", "--no-window", *on_the_domain], env, "is up on ROS")
-    echo = Echo(env)
+    echo = TwistEcho(ROS2_PYTHON, ECHO_NODE, env)
     agent, ready = _started(["agent", "--backend", "ros2", *on_the_domain, "--host", "127.0.0.1", "--port", "0",
                              "--library", str(library)], env, "listening on")
     port = int(ready.split("127.0.0.1:")[1].split(",")[0])

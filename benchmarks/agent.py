@@ -29,6 +29,7 @@ from pathlib import Path
 from _agent_ros2 import ros2_figures
 from _paths import REPO  # its set-up: Rockly and the tests' helpers importable
 from _stop_on_the_wire import DRIVE_AND_WAIT, stop_latencies
+from _twist_echo import TwistEcho
 from ros_helpers import RosMaster, ros_environment
 
 STOP_TRIALS = 10
@@ -45,31 +46,6 @@ rospy.Subscriber("/cmd_vel", Twist, on_twist, queue_size=1000)
 print("ready", flush=True)
 rospy.spin()
 '''
-
-
-class Echo:
-    """The separate node: ``seen`` gets ``(kind, receive time)`` of every Twist on /cmd_vel."""
-
-    def __init__(self, master, home):
-        self.seen = []
-        self.process = subprocess.Popen(["/usr/bin/python3", "-c", ECHO_NODE], env=ros_environment(master.uri, home),
-                                        stdout=subprocess.PIPE, text=True)
-        assert self.process.stdout.readline().startswith("ready")
-        threading.Thread(target=self._read, daemon=True).start()
-
-    def _read(self):
-        for line in self.process.stdout:
-            kind, when = line.split()
-            self.seen.append((kind, float(when)))
-
-    def wait_for(self, kind, after, timeout=10.0):
-        deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline:
-            for seen_kind, when in list(self.seen):
-                if seen_kind == kind and when > after:
-                    return when
-            time.sleep(0.0005)
-        raise RuntimeError(f"no {kind} Twist on the wire")
 
 
 def median_ms(values):
@@ -103,7 +79,7 @@ def main():
     home = Path(tempfile.mkdtemp(prefix="rockly-bench-agent-"))
     master = RosMaster(home).start()
     os.environ.update(ros_environment(master.uri, home))
-    echo = Echo(master, home)
+    echo = TwistEcho("/usr/bin/python3", ECHO_NODE, ros_environment(master.uri, home))
     agent, port = agent_process(master, home, home / "library")
     hobbit = ProfileRegistry.discover().get("hobbit")
     try:
