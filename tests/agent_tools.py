@@ -1,11 +1,15 @@
 """The robot's agent (``rockly agent``) as a process of its own, and ``rockly robot`` as a user runs it."""
 import json
+import struct
 import subprocess
 import sys
 import threading
+from contextlib import contextmanager
 from pathlib import Path
 
+from ros_helpers import hobbit_on_own_master, ros_environment
 from waiting import eventually
+from wire_recorder import WireRecorder
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -42,6 +46,35 @@ class AgentProcess:
                 self.process.wait(10)
         self.process.stdout.close()
         self.process.stderr.close()
+
+
+@contextmanager
+def hobbit_on_ros_with_wire(folder: Path):
+    """``(master, wire recorder of /cmd_vel)``: HOBBIT simulated on a rosmaster of its own (its home in ``folder``),
+    all stopped after."""
+    master, simulator = hobbit_on_own_master(folder)
+    wire = WireRecorder(master, ["/cmd_vel"])
+    try:
+        yield master, wire
+    finally:
+        wire.stop()
+        simulator.stop()
+        master.stop()
+
+
+@contextmanager
+def ros1_agent(library: Path, master):
+    """``rockly agent --backend ros1`` on ``master`` (tests' RosMaster), its programs in ``library``; stopped after."""
+    agent = AgentProcess(library, "--master", master.uri, backend="ros1", env=ros_environment(master.uri, master.home))
+    try:
+        yield agent
+    finally:
+        agent.stop()
+
+
+def zero_velocities(wire) -> int:
+    """How many zero Twists the wire recorder has seen on /cmd_vel."""
+    return sum(1 for _type, raw in wire.on("/cmd_vel") if struct.unpack("<6d", raw) == (0.0,) * 6)
 
 
 class AttachedClient:

@@ -3,21 +3,16 @@
 the wire, seen by an independent rospy node."""
 import json
 import signal
-import struct
 import subprocess
 import time
 
 import pytest
-from agent_tools import REPO, AgentProcess
-from ros_helpers import hobbit_on_own_master, ros_environment
+from agent_tools import REPO, hobbit_on_ros_with_wire, ros1_agent, zero_velocities
 from standalone_tools import exported_program
 from test_standalone_on_ros import far_drive
 from waiting import eventually
-from wire_recorder import WireRecorder
 
 from rockly_desktop.runtime.agent.client import AgentClient
-
-ZERO = (0.0,) * 6
 
 
 @pytest.fixture(scope="module")
@@ -26,25 +21,14 @@ def robot(tmp_path_factory):
     long enough for every case here."""
     folder = tmp_path_factory.mktemp("agent-ros")
     exported, _source = exported_program(folder, far_drive(), "far")
-    master, simulator = hobbit_on_own_master(folder)
-    wire = WireRecorder(master, ["/cmd_vel"])
-    yield master, exported, wire
-    wire.stop()
-    simulator.stop()
-    master.stop()
+    with hobbit_on_ros_with_wire(folder) as (master, wire):
+        yield master, exported, wire
 
 
 @pytest.fixture
 def agent(robot, tmp_path):
-    master, _, _ = robot
-    agent = AgentProcess(tmp_path / "library", "--master", master.uri, backend="ros1",
-                         env=ros_environment(master.uri, master.home))
-    yield agent
-    agent.stop()
-
-
-def zero_velocities(wire) -> int:
-    return sum(1 for _type, raw in wire.on("/cmd_vel") if struct.unpack("<6d", raw) == ZERO)
+    with ros1_agent(tmp_path / "library", robot[0]) as agent:
+        yield agent
 
 
 def start_driving(agent, exported, events, **send):

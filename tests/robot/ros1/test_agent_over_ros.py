@@ -3,21 +3,25 @@ hobbit --ros`` on a master of the test's own: ``rockly robot --via ros`` process
 stop; the editor's process killed mid-run stops the robot (a zero velocity on the wire, seen by an independent
 rospy node) or lets the run finish, as the program says; a client of another version, or no agent in the
 graph, is told plainly. Every client is given a TCP port nobody listens on: what works, works over ROS."""
-import struct
 import subprocess
 import sys
 import time
 
 import pytest
-from agent_tools import REPO, AgentProcess, AttachedClient, sent_started_and_watched
+from agent_tools import (
+    REPO,
+    AttachedClient,
+    hobbit_on_ros_with_wire,
+    ros1_agent,
+    sent_started_and_watched,
+    zero_velocities,
+)
 from agent_tools import run_ended as ended
 from program_builder import block, number, rockly_document, stack
-from ros_helpers import RocklyProcess, RosMaster, ros_environment
+from ros_helpers import ros_environment
 from standalone_tools import export_standalone
 from waiting import eventually
-from wire_recorder import WireRecorder
 
-ZERO = (0.0,) * 6
 NO_TCP = ("--port", "1")  # nothing listens there: a call that works went over ROS
 
 
@@ -34,23 +38,14 @@ def robot(tmp_path_factory):
         block("hobbit_move", {"direction": "-"}, {"speed": number(1)}, id="back"))]))
     programs = {path.stem: export_standalone(path, folder / f"{path.stem}.py", "--language", "en")
                 for path in (far, short)}
-    master = RosMaster(folder / "ros").start()
-    simulator = RocklyProcess(["sim", "hobbit", "--ros", "--no-window", "--master", master.uri], master,
-                              ready_line="on ROS")
-    wire = WireRecorder(master, ["/cmd_vel"])
-    yield master, programs, wire
-    wire.stop()
-    simulator.stop()
-    master.stop()
+    with hobbit_on_ros_with_wire(folder) as (master, wire):
+        yield master, programs, wire
 
 
 @pytest.fixture
 def agent(robot, tmp_path):
-    master, _, _ = robot
-    agent = AgentProcess(tmp_path / "library", "--master", master.uri, backend="ros1",
-                         env=ros_environment(master.uri, master.home))
-    yield agent
-    agent.stop()
+    with ros1_agent(tmp_path / "library", robot[0]) as agent:
+        yield agent
 
 
 def robot_command(master, *args, language="en") -> list:
@@ -67,10 +62,6 @@ def run_robot(master, *args, language="en") -> subprocess.CompletedProcess:
 def attached(master, *options) -> AttachedClient:
     """``rockly robot --via ros attach [--watch-only]`` as a process."""
     return AttachedClient(robot_command(master, "attach", *options), ros_environment(master.uri, master.home))
-
-
-def zero_velocities(wire) -> int:
-    return sum(1 for _type, raw in wire.on("/cmd_vel") if struct.unpack("<6d", raw) == ZERO)
 
 
 def started(master, programs, name, *send_options) -> AttachedClient:
