@@ -77,6 +77,31 @@ def zero_velocities(wire) -> int:
     return sum(1 for _type, raw in wire.on("/cmd_vel") if struct.unpack("<6d", raw) == (0.0,) * 6)
 
 
+@contextmanager
+def installed_agent(bin_folder: Path, library: Path, *options, env: dict):
+    """``rockly-agent --backend ... OPTIONS`` of an installed environment (its ``bin_folder``) on a free localhost
+    port, run from / with ``env``; yields ``robot(*args)``: the stdout of that environment's ``rockly-robot``, which
+    must succeed. Afterwards the agent is ended with SIGTERM and must exit cleanly."""
+    agent = subprocess.Popen([str(bin_folder / "rockly-agent"), "--host", "127.0.0.1", "--port", "0", "--library",
+                              str(library), *map(str, options)], cwd="/", env=env, text=True,
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    try:
+        ready = agent.stdout.readline()
+        assert "listening on 127.0.0.1:" in ready, agent.stderr.read()
+        port = ready.split("127.0.0.1:")[1].split(",")[0]
+
+        def robot(*args):
+            result = subprocess.run([str(bin_folder / "rockly-robot"), "--port", port, *map(str, args)], cwd="/",
+                                    env=env, capture_output=True, text=True, timeout=120)
+            assert result.returncode == 0, result.stderr
+            return result.stdout
+        yield robot
+    finally:
+        agent.terminate()
+        agent.communicate(timeout=60)
+    assert agent.returncode == 0
+
+
 class AttachedClient:
     """``rockly robot ... attach [--watch-only]`` (``command``) as a process; ``lines``: the JSON lines it printed."""
 

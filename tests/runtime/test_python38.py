@@ -16,6 +16,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
+from agent_tools import installed_agent
 from program_builder import block, number, rockly_document
 from standalone_tools import environment, export_standalone
 from test_runtime_install import build_wheel
@@ -109,22 +110,6 @@ def test_the_agent_keeps_a_program_and_its_client_lists_it_on_python_3_8(venv38,
     source.write_text(rockly_document([block("hobbit_move", {"direction": "+"}, {"speed": number(0.5)}, id="ahead")]))
     exported = export_standalone(source, tmp_path / "ahead.py", "--language", "en")
     env = environment(PYTHONPATH="", ROCKLY_DATA_DIR="", PATH=f"{venv38}:/usr/bin:/bin")
-    agent = subprocess.Popen([str(venv38 / "rockly-agent"), "--backend", "ros1", "--host", "127.0.0.1", "--port", "0",
-                              "--library", str(tmp_path / "library")], cwd="/", env=env, text=True,
-                             stdout=subprocess.PIPE, stderr=subprocess.PIPE)
-    try:
-        ready = agent.stdout.readline()
-        assert "listening on 127.0.0.1:" in ready, agent.stderr.read()
-        port = ready.split("127.0.0.1:")[1].split(",")[0]
-
-        def robot(*args):
-            result = subprocess.run([str(venv38 / "rockly-robot"), "--port", port, *map(str, args)], cwd="/",
-                                    env=env, capture_output=True, text=True, timeout=120)
-            assert result.returncode == 0, result.stderr
-            return result.stdout
+    with installed_agent(venv38, tmp_path / "library", "--backend", "ros1", env=env) as robot:
         assert robot("send", exported) == "'ahead' is on the robot now\n"
         assert robot("list").startswith("ahead  hobbit 1.0.0  came ")
-    finally:
-        agent.terminate()
-        agent.communicate(timeout=60)
-    assert agent.returncode == 0

@@ -14,6 +14,7 @@ import zipfile
 from pathlib import Path
 
 import pytest
+from agent_tools import installed_agent
 from program_builder import block, number, rockly_document, stack
 from standalone_tools import REPO, environment, events, export_standalone, run_file
 from waiting import eventually
@@ -124,19 +125,7 @@ def test_the_agent_and_its_client_run_from_the_fresh_venv(fresh_venv, tmp_path):
     source.write_text(rockly_document([block("hobbit_move", {"direction": "+"}, {"speed": number(0.5)}, id="ahead")]))
     exported = export_standalone(source, tmp_path / "ahead.py", "--language", "en")
     env = environment(PYTHONPATH="", ROCKLY_DATA_DIR="", PATH=f"{bin_folder}:/usr/bin:/bin")
-    agent = subprocess.Popen([str(bin_folder / "rockly-agent"), "--backend", "sim", "--host", "127.0.0.1", "--port",
-                              "0", "--library", str(tmp_path / "library"), "--speed", "20"], cwd="/", env=env,
-                             text=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
-    try:
-        ready = agent.stdout.readline()
-        assert "listening on 127.0.0.1:" in ready, agent.stderr.read()
-        port = ready.split("127.0.0.1:")[1].split(",")[0]
-
-        def robot(*args):
-            result = subprocess.run([str(bin_folder / "rockly-robot"), "--port", port, *map(str, args)], cwd="/",
-                                    env=env, capture_output=True, text=True, timeout=120)
-            assert result.returncode == 0, result.stderr
-            return result.stdout
+    with installed_agent(bin_folder, tmp_path / "library", "--backend", "sim", "--speed", "20", env=env) as robot:
         assert robot("send", exported) == "'ahead' is on the robot now\n"
         assert robot("list").startswith("ahead  hobbit 1.0.0  came ")
         robot("start", "ahead")
@@ -144,7 +133,3 @@ def test_the_agent_and_its_client_run_from_the_fresh_venv(fresh_venv, tmp_path):
         if '"state": "ended"' not in attached:
             assert '"run": null' in attached
         eventually(lambda: "running:" not in robot("list"), 60)
-    finally:
-        agent.terminate()
-        agent.communicate(timeout=60)
-    assert agent.returncode == 0
