@@ -11,10 +11,9 @@ from program_builder import block, number, rockly_document, stack, workspace
 from ros_helpers import ros_environment
 from standalone_tools import environment, export_standalone
 from test_running import highlighted
+from window_tools import on_hobbit_over_ros1
 
-from rockly_desktop.robot.links import link_kind
 from rockly_desktop.ui.agent.robot_programs_dialog import RobotProgramsDialog
-from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
 
 
 def linger():
@@ -26,13 +25,7 @@ def linger():
 
 @pytest.fixture
 def ros_window(window, ros_master, hobbit_on_ros, monkeypatch):
-    window.settings.remember_link_connection(link_kind("ros1"), "hobbit", {"master": ros_master.uri,
-                                                                           "host": "127.0.0.1"})
-    monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
-    backend = window.run_toolbar.backend
-    backend.setCurrentIndex(backend.findData("ros1"))
-    assert window.robots.kind == "ros1"
-    return window
+    return on_hobbit_over_ros1(window, ros_master.uri, monkeypatch)
 
 
 @pytest.fixture

@@ -14,13 +14,11 @@ from PySide6.QtWidgets import QComboBox, QLineEdit, QListWidget, QPlainTextEdit,
 from ros_helpers import ros_environment
 from test_ros2_window import connected
 from waiting import eventually
-from window_tools import state
+from window_tools import on_hobbit_over_ros1, state
 
 from rockly_desktop.profiles.packs.pack import user_packs_dir
-from rockly_desktop.robot.links import link_kind
 from rockly_desktop.ui.blockmaker.maker_dialog import BlockMakerDialog, pack_id_for
 from rockly_desktop.ui.blockmaker.offers import Offer
-from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
 
 PARAMS = '[{name: type, value: D_PLAIN}, {name: text, value: "made by hand"}]'
 
@@ -174,13 +172,7 @@ def test_a_block_saved_while_a_program_runs_reaches_the_toolbox_once_the_run_end
 @pytest.fixture
 def ros_window(window, ros_master, hobbit_on_ros, monkeypatch):
     """The window on HOBBIT over ROS 1 (the ROS-level simulator in its own process, a real master)."""
-    window.settings.remember_link_connection(link_kind("ros1"), "hobbit",
-                                             {"master": ros_master.uri, "host": "127.0.0.1"})
-    monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
-    backend = window.run_toolbar.backend
-    backend.setCurrentIndex(backend.findData("ros1"))
-    assert window.robots.kind == "ros1"
-    return window
+    return on_hobbit_over_ros1(window, ros_master.uri, monkeypatch)
 
 
 def test_on_ros_1_the_maker_offers_the_live_graph_and_a_made_sensor_block_reads_the_robot(qtbot, ros_window):

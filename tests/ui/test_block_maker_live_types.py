@@ -16,12 +16,11 @@ from ros_helpers import ros_environment
 from test_block_maker import made_and_run, open_maker
 from test_ros2_window import connected
 from waiting import eventually
+from window_tools import on_hobbit_over_ros1
 from wire_recorder import WireRecorder
 
 from rockly_desktop.core import ros_definitions
-from rockly_desktop.robot.links import link_kind
 from rockly_desktop.robot.ros2 import live_definitions
-from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
 
 GADGET_NODE = Path(__file__).parents[1] / "robot" / "ros1" / "ros1_gadget_node.py"
 GADGET = "rockly_test_custom/Gadget"
@@ -31,13 +30,7 @@ NESTED_NODE = Path(__file__).parents[1] / "robot" / "ros2" / "ros2_nested_node.p
 @pytest.fixture
 def ros_window(window, ros_master, hobbit_on_ros, monkeypatch):
     """The window on HOBBIT over ROS 1 (the ROS-level simulator in its own process, a real master)."""
-    window.settings.remember_link_connection(link_kind("ros1"), "hobbit",
-                                             {"master": ros_master.uri, "host": "127.0.0.1"})
-    monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
-    backend = window.run_toolbar.backend
-    backend.setCurrentIndex(backend.findData("ros1"))
-    assert window.robots.kind == "ros1"
-    return window
+    return on_hobbit_over_ros1(window, ros_master.uri, monkeypatch)
 
 
 @pytest.fixture

@@ -4,6 +4,8 @@ from PySide6.QtCore import QCoreApplication, QEvent
 from PySide6.QtWidgets import QMessageBox
 
 from rockly_desktop.app import build_main_window
+from rockly_desktop.robot.links import link_kind
+from rockly_desktop.ui.robot.connection_dialog import ConnectionDialog
 
 SIMULATOR_SPEED = 25.0  # simulated time runs this much faster in tests
 
@@ -35,6 +37,17 @@ class WindowDriver:
         with self.qtbot.waitSignal(window.editor.sig_ready, timeout=30000):
             window.start(open_path)
         return window
+
+
+def on_hobbit_over_ros1(window, master_uri: str, monkeypatch):
+    """``window`` switched to HOBBIT over ROS 1 on the master at ``master_uri`` (the connection dialog accepted as
+    it is); returned for a fixture to hand on."""
+    window.settings.remember_link_connection(link_kind("ros1"), "hobbit", {"master": master_uri, "host": "127.0.0.1"})
+    monkeypatch.setattr(ConnectionDialog, "exec", lambda dialog: 1)
+    backend = window.run_toolbar.backend
+    backend.setCurrentIndex(backend.findData("ros1"))
+    assert window.robots.kind == "ros1"
+    return window
 
 
 def error_boxes(window) -> list:
