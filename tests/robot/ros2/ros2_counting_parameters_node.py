@@ -3,11 +3,10 @@
 {"asked": "list_parameters"} for each request, so a test counts the asks on the node's side. It prints
 {"ready": true} once the service is up, and leaves when stdin ends."""
 import json
-import sys
-import threading
 
 import rclpy
 from rcl_interfaces.srv import ListParameters
+from ros2_node_life import serve_until_stdin_ends
 
 
 def main():
@@ -20,10 +19,7 @@ def main():
         return response
 
     node.create_service(ListParameters, "/counted/list_parameters", answer)
-    threading.Thread(target=rclpy.spin, args=(node,), daemon=True).start()
-    print(json.dumps({"ready": True}), flush=True)
-    sys.stdin.read()
-    rclpy.try_shutdown()
+    serve_until_stdin_ends(node)
 
 
 if __name__ == "__main__":

@@ -3,10 +3,9 @@
 int32_value 7, and prints {"message": {"int32_value", "float64_value"}} for every message it hears there
 (its own and others'). {"ready": true} once it publishes; it leaves when stdin ends."""
 import json
-import sys
-import threading
 
 import rclpy
+from ros2_node_life import serve_until_stdin_ends
 from test_msgs.msg import Nested
 
 
@@ -28,10 +27,7 @@ def main():
         publisher.publish(message)
 
     node.create_timer(0.5, publish)
-    threading.Thread(target=rclpy.spin, args=(node,), daemon=True).start()
-    print(json.dumps({"ready": True}), flush=True)
-    sys.stdin.read()
-    rclpy.try_shutdown()
+    serve_until_stdin_ends(node)
 
 
 if __name__ == "__main__":
