@@ -30,6 +30,17 @@ def requests_to(helper):
         del helper.call
 
 
+@contextlib.contextmanager
+def plain_node(settings, script: Path, name: str):
+    """A plain rclpy test node (``script``, run with the test robot's Python) on the run's domain, as a JsonLineNode
+    called ``name`` in its messages; stopped after."""
+    node = JsonLineNode([TEST_ROBOT_PYTHON, script], settings.environment(), name)
+    try:
+        yield node
+    finally:
+        node.stop()
+
+
 @pytest.fixture(scope="session")
 def ros2_settings():
     """The link settings of this test run: its own domain id, discovery on this machine only."""

@@ -4,8 +4,7 @@ import time
 from pathlib import Path
 
 import pytest
-from json_line_node import JsonLineNode
-from ros2_fixtures import TEST_ROBOT_PYTHON, requests_to
+from ros2_fixtures import plain_node, requests_to
 from waiting import eventually
 
 MUTE_NODE = Path(__file__).parent / "ros2_mute_parameters_node.py"
@@ -14,16 +13,14 @@ COUNTED_NODE = Path(__file__).parent / "ros2_counting_parameters_node.py"
 
 @pytest.fixture
 def mute_node(ros2_settings):
-    node = JsonLineNode([TEST_ROBOT_PYTHON, MUTE_NODE], ros2_settings.environment(), "the mute parameters node")
-    yield node
-    node.stop()
+    with plain_node(ros2_settings, MUTE_NODE, "the mute parameters node") as node:
+        yield node
 
 
 @pytest.fixture
 def counted_node(ros2_settings):
-    node = JsonLineNode([TEST_ROBOT_PYTHON, COUNTED_NODE], ros2_settings.environment(), "the counted parameters node")
-    yield node
-    node.stop()
+    with plain_node(ros2_settings, COUNTED_NODE, "the counted parameters node") as node:
+        yield node
 
 
 def test_the_links_graph_has_the_test_nodes_service_action_and_parameters(ros2_robot):

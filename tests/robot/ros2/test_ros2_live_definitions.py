@@ -6,8 +6,7 @@ import time
 from pathlib import Path
 
 import pytest
-from json_line_node import JsonLineNode
-from ros2_fixtures import TEST_ROBOT_PYTHON
+from ros2_fixtures import plain_node
 from waiting import eventually
 
 from rockly_desktop.core import ros_definitions
@@ -21,9 +20,8 @@ NESTED = "test_msgs/Nested"
 
 @pytest.fixture
 def nested_node(ros2_settings):
-    node = JsonLineNode([TEST_ROBOT_PYTHON, NESTED_NODE], ros2_settings.environment(), "the nested node")
-    yield node
-    node.stop()
+    with plain_node(ros2_settings, NESTED_NODE, "the nested node") as node:
+        yield node
 
 
 @pytest.fixture
