@@ -177,7 +177,10 @@ def test_an_editor_gone_silent_over_ros_leaves_control_to_the_next(robot, agent)
     editor.end()
 
     def next_window_controls():
-        window = attached(master)
+        try:
+            window = attached(master)
+        except AssertionError:  # no answer this time: each look before left a killed client at the master
+            return False
         window.end()
         return window.first["controller"]
     try:

@@ -606,6 +606,10 @@ def main():
     finally:
         helper.do_safe_stop()
         helper.close()
+        sys.stderr.flush()
+        # Leave now: a pool worker still waiting on a slow node must not keep the helper (and its place in the
+        # graph) alive after its last act; Rockly hears the end as its pipe closing.
+        os._exit(0)
 
 
 def _share_dirs():
