@@ -17,13 +17,13 @@ import time
 
 from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.robot.link import RobotUnavailable
+from rockly_desktop.robot.ros2 import wire
 from rockly_desktop.robot.ros2.client import Ros2Helper
 from rockly_desktop.robot.ros2.environment import Ros2Settings
 
 TYPE = "std_msgs/msg/String"
 QOS = {"reliability": "reliable", "durability": "volatile", "depth": 1000}
 ASK_SECONDS = 10.0  # a helper's answer about the graph, on a loaded machine
-DISCOVERY_SECONDS = 5.0  # a fresh helper may take this long to discover an agent already there
 
 
 def topics(namespace: str) -> tuple:
@@ -73,11 +73,11 @@ def agent_in_graph(where, namespace: str) -> bool:
     topic on another node); a fresh helper looks until it had DISCOVERY_SECONDS to discover it."""
     try:
         helper = _helper(where)
-        deadline = time.monotonic() + DISCOVERY_SECONDS
+        deadline = time.monotonic() + wire.DISCOVERY_SECONDS
         while True:
             if _ask(helper, "ends", topics(namespace)[0])[1]:
                 return True
-            if time.monotonic() >= deadline or time.monotonic() - helper.began > DISCOVERY_SECONDS:
+            if time.monotonic() >= deadline or time.monotonic() - helper.began > wire.DISCOVERY_SECONDS:
                 return False
             time.sleep(0.1)
     except (RobotCommandError, RobotUnavailable, ValueError):

@@ -224,8 +224,9 @@ class Ros2Backend(RobotBackend):
         return entry.latest
 
     def wait_for_message(self, topic: str, msg_type: str, timeout: float) -> dict:
-        """The next message on ``topic``; RobotTimeout naming it after ``timeout``."""
-        return next_message(self, topic, msg_type, timeout)
+        """The next message on ``topic``; RobotTimeout naming it after ``timeout`` (counted once a fresh helper had
+        its discovery: a robot's publisher may not be known in its first seconds)."""
+        return next_message(self, topic, msg_type, timeout, grace=self._helper.discovery_left())
 
     def call_service(self, name: str, srv_type: str, request: dict, timeout: float) -> dict:
         """Call a service; Stop, a lost helper and ``timeout`` end the wait at once."""

@@ -166,6 +166,7 @@ class Ros2Helper:
         self._closed = threading.Event()
         self._waiting_since = None  # when the reader began waiting for the next frame; None: it has one
         self.info = {}
+        self.said_hello = None  # when (monotonic) the helper said hello: its DDS participant was made
         self._stderr_reader = threading.Thread(target=self._read_errors, name="ros2-helper-stderr", daemon=True)
         self._stderr_reader.start()
         threading.Thread(target=self._read, name="ros2-helper-reader", daemon=True).start()
@@ -188,6 +189,13 @@ class Ros2Helper:
                     threading.Thread(target=self._measure, name="ros2-helper-round-trip", daemon=True).start()
         if self._start_failure is not None:
             raise self._start_failure
+
+    def discovery_left(self) -> float:
+        """Seconds until the helper's DDS participant had ``wire.DISCOVERY_SECONDS`` to discover the others (0 once
+        it had): a wait for what the graph holds does not count them."""
+        if self.said_hello is None:
+            return wire.DISCOVERY_SECONDS
+        return max(0.0, self.said_hello + wire.DISCOVERY_SECONDS - time.monotonic())
 
     def start_quietly(self):
         """``started``, for a spare: a failure is logged (the spare is then not taken)."""
@@ -275,6 +283,7 @@ class Ros2Helper:
                 self.process.kill()
                 return
             self.info = data
+            self.said_hello = time.monotonic()
             self._hello.set()
         elif kind == "failed":
             self._failures.append(data)

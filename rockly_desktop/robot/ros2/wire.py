@@ -19,6 +19,9 @@ import struct
 
 PROTOCOL = 4
 HEARTBEAT_SECONDS = 0.2
+# A new DDS participant may take 2 s (a busy machine: more) to discover the others: a fresh helper's waits for
+# what the graph holds (a subscriber to match, a topic's type, a first message) count only after this much.
+DISCOVERY_SECONDS = 5.0
 CALL, CAST, REPLY, EVENT = "call", "cast", "reply", "event"
 
 _HEADER = struct.Struct(">I")

@@ -37,12 +37,11 @@ from rockly_desktop.robot.ros2.helper.ros_values import (
 from rockly_desktop.robot.ros2.helper.topic_reader import TopicReader
 
 FIRST_PUBLISH_WAIT = 2.0  # a new publisher waits this long for the graph's subscribers to match
-DISCOVERY_SECONDS = 5.0  # a new DDS participant may take 2 s (a busy machine: more) to discover the others
 ACTION_SERVER_WAIT = 5.0
-PARAMETER_WAIT = 5.0  # a node's parameter service: a fresh helper's discovery (DISCOVERY_SECONDS) and then some
+PARAMETER_WAIT = 5.0  # a node's parameter service: a fresh helper's discovery and then some
 SERVER_SETTLE = 0.25
 PARAMETER_TRIES = 3  # reading or setting a parameter is safe to ask again when an answer was lost
-TOPIC_WAIT = 1.0  # a subscription without a type waits this long for the topic to be discovered
+TOPIC_WAIT = 1.0  # a subscription without a type waits this long (a fresh helper: its discovery) for the topic
 REPLACE_WAIT = 1.0  # a publisher of a new type waits this long for the one it replaces to be gone
 _GOAL_STATUS = {4: "succeeded", 5: "preempted", 6: "aborted"}
 
@@ -280,7 +279,7 @@ class Helper:
         """Wait (≤ FIRST_PUBLISH_WAIT) until ``publisher`` has matched every subscriber the graph lists for ``topic``,
         and at least one: discovery is gradual in ROS 2, a robot's subscriber may not be known yet
         (in the helper's first seconds, it waits until discovery had DISCOVERY_SECONDS)."""
-        deadline = max(time.monotonic() + FIRST_PUBLISH_WAIT, self.started + DISCOVERY_SECONDS)
+        deadline = max(time.monotonic() + FIRST_PUBLISH_WAIT, self.started + wire.DISCOVERY_SECONDS)
         while (publisher.get_subscription_count() < max(1, self.node.count_subscribers(topic))
                and time.monotonic() < deadline):
             time.sleep(0.005)
@@ -304,7 +303,7 @@ class Helper:
         the helper is too young to know them all: a spare taking over sends the safe stop), matched first."""
         publisher, message_class = self._publisher(topic, type_name)
         if publisher.get_subscription_count() == 0 and (
-                self.node.count_subscribers(topic) > 0 or time.monotonic() < self.started + DISCOVERY_SECONDS):
+                self.node.count_subscribers(topic) > 0 or time.monotonic() < self.started + wire.DISCOVERY_SECONDS):
             self._match(publisher, topic)
         return publisher, message_class
 
@@ -317,7 +316,7 @@ class Helper:
         robot publishes (a camera), the write waits and the subscription's own history (its QoS depth)
         keeps the latest messages, dropping the oldest.
         """
-        deadline = time.monotonic() + TOPIC_WAIT
+        deadline = max(time.monotonic() + TOPIC_WAIT, self.started + wire.DISCOVERY_SECONDS)
         while not type_name:
             type_name = (dict(self.node.get_topic_names_and_types()).get(topic) or [None])[0]
             if type_name:
