@@ -146,13 +146,10 @@ def test_the_agent_killed_mid_run_is_heard_lost_and_the_robot_stops(robot, agent
     try:
         eventually(lambda: driving(wire, since), 60)
         before = zeros(wire)
-        print("test: kill agent", time.time(), len(wire.lines), flush=True)
         agent.process.kill()
         agent.process.wait(10)
         watcher.process.wait(60)  # the attached client ends: it lost the agent
-        print("test: watcher ended", time.time(), len(wire.lines), flush=True)
         eventually(lambda: zeros(wire) > before, 30)
     finally:
-        print("test: end", time.time(), len(wire.lines), wire.lines[-3:], flush=True)
         watcher.end()
     assert watcher.process.returncode == 0 and not watcher.seen(ended)
