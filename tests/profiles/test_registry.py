@@ -197,6 +197,19 @@ def test_profile_installed_as_a_python_package_is_found_by_its_entry_point(tmp_p
     assert "rockly_testbot_profile" not in sys.modules, "finding the package must not import it"
 
 
+def test_without_a_distribution_declaring_profiles_discovery_leaves_importlib_metadata_unimported(tmp_path):
+    # importlib.metadata brings the email package: a tenth of the window's start, for the plugins most never have.
+    script = ("import json, sys; from rockly_desktop.profiles.registry import ProfileRegistry; "
+              "registry = ProfileRegistry.discover(); "
+              "print(json.dumps([sorted(registry.profiles), 'importlib.metadata' in sys.modules]))")
+    env = {key: value for key, value in os.environ.items() if key != "ROCKLY_DATA_DIR"}
+    env["XDG_DATA_HOME"] = str(tmp_path / "xdg")
+    result = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, env=env,
+                            capture_output=True, text=True, timeout=60, check=False)
+    assert result.returncode == 0, result.stderr
+    assert json.loads(result.stdout) == [["hobbit", "turtlebot"], False]
+
+
 @pytest.mark.parametrize("value, reason", [
     ("rockly_no_such_package_here", "no such package is installed"),
     ("rockly_no_such_parent_here.profile", "ModuleNotFoundError: No module named 'rockly_no_such_parent_here'"),
