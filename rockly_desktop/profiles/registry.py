@@ -40,8 +40,9 @@ def _folders_in(parent: Path, source: str) -> list:
 
 def _may_be_declared(group: str) -> bool:
     """False when no installed distribution declares entry points of ``group``: no ``entry_points.txt`` of a
-    ``.dist-info`` or ``.egg-info`` folder on ``sys.path`` names it, and nothing but folders and Python's own
-    finder could hold distributions. True when one may (``importlib.metadata`` then says which)."""
+    ``.dist-info`` or ``.egg-info`` folder on ``sys.path`` names it, and nothing but such folders (no zip, no
+    egg, no finder but Python's own) could hold distributions. True when one may (``importlib.metadata`` then
+    says which)."""
     if any(hasattr(finder, "find_distributions") for finder in sys.meta_path
            if finder is not importlib.machinery.PathFinder):
         return True
@@ -52,6 +53,8 @@ def _may_be_declared(group: str) -> bool:
             return True  # a zip file or an egg: importlib.metadata looks inside
         except OSError:
             continue
+        if str(entry).lower().endswith(".egg"):
+            return True  # an old-style egg folder keeps its entry points in EGG-INFO
         for child in children:
             if child.name.lower().endswith((".dist-info", ".egg-info")) and child.is_dir():
                 try:

@@ -210,6 +210,19 @@ def test_without_a_distribution_declaring_profiles_discovery_leaves_importlib_me
     assert json.loads(result.stdout) == [["hobbit", "turtlebot"], False]
 
 
+def test_a_profile_installed_as_an_old_style_egg_folder_is_found(tmp_path, monkeypatch):
+    egg = tmp_path / "rockly_eggbot-0.1-py3.egg"  # easy_install's layout: the egg folder itself is on sys.path
+    (egg / "EGG-INFO").mkdir(parents=True)
+    (egg / "EGG-INFO" / "PKG-INFO").write_text("Metadata-Version: 1.1\nName: rockly-eggbot\nVersion: 0.1\n")
+    (egg / "EGG-INFO" / "entry_points.txt").write_text(f"[{ENTRY_POINT_GROUP}]\neggbot = rockly_eggbot_profile\n")
+    copy_profile(egg / "rockly_eggbot_profile", "eggbot")
+    monkeypatch.syspath_prepend(str(egg))
+
+    registry = ProfileRegistry.discover()
+
+    assert registry.get("eggbot").source == "entry point eggbot"
+
+
 @pytest.mark.parametrize("value, reason", [
     ("rockly_no_such_package_here", "no such package is installed"),
     ("rockly_no_such_parent_here.profile", "ModuleNotFoundError: No module named 'rockly_no_such_parent_here'"),
