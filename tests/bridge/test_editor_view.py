@@ -240,6 +240,15 @@ def test_nothing_is_fetched_from_the_network(qtbot, editor):
     assert all(url.startswith(("file:", "qrc:", "data:")) for url in local)
 
 
+def test_the_silent_editor_starts_no_audio(qtbot, editor):
+    # Blockly makes an AudioContext for each workspace the browser could play sounds in; Rockly plays none,
+    # and starting Chromium's audio for them was most of the page's start-up work.
+    workspaces = """(() => { const ws = Blockly.getMainWorkspace();
+        return [ws, ws.getToolbox().getFlyout().getWorkspace(), ws.trashcan.flyout.getWorkspace()]; })()"""
+    assert run_js(qtbot, editor, f"{workspaces}.map(w => Boolean(w.getAudioManager().context))") == [False] * 3
+    assert run_js(qtbot, editor, "typeof window.AudioContext") == "undefined"
+
+
 def test_numbers_too_big_for_64_bits_still_reach_python(qtbot, editor):
     # A child types 99999999999999999999: every later edit must still arrive (the app tracks changes by them).
     with qtbot.waitSignal(editor.sig_changed, timeout=10000) as loaded:

@@ -197,6 +197,32 @@ def test_profile_installed_as_a_python_package_is_found_by_its_entry_point(tmp_p
     assert "rockly_testbot_profile" not in sys.modules, "finding the package must not import it"
 
 
+def test_without_a_distribution_declaring_profiles_discovery_leaves_importlib_metadata_unimported(tmp_path):
+    # importlib.metadata brings the email package: a tenth of the window's start, for the plugins most never have.
+    script = ("import json, sys; from rockly_desktop.profiles.registry import ProfileRegistry; "
+              "registry = ProfileRegistry.discover(); "
+              "print(json.dumps([sorted(registry.profiles), 'importlib.metadata' in sys.modules]))")
+    env = {key: value for key, value in os.environ.items() if key != "ROCKLY_DATA_DIR"}
+    env["XDG_DATA_HOME"] = str(tmp_path / "xdg")
+    result = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, env=env,
+                            capture_output=True, text=True, timeout=60, check=False)
+    assert result.returncode == 0, result.stderr
+    assert json.loads(result.stdout) == [["hobbit", "turtlebot"], False]
+
+
+def test_a_profile_installed_as_an_old_style_egg_folder_is_found(tmp_path, monkeypatch):
+    egg = tmp_path / "rockly_eggbot-0.1-py3.egg"  # easy_install's layout: the egg folder itself is on sys.path
+    (egg / "EGG-INFO").mkdir(parents=True)
+    (egg / "EGG-INFO" / "PKG-INFO").write_text("Metadata-Version: 1.1\nName: rockly-eggbot\nVersion: 0.1\n")
+    (egg / "EGG-INFO" / "entry_points.txt").write_text(f"[{ENTRY_POINT_GROUP}]\neggbot = rockly_eggbot_profile\n")
+    copy_profile(egg / "rockly_eggbot_profile", "eggbot")
+    monkeypatch.syspath_prepend(str(egg))
+
+    registry = ProfileRegistry.discover()
+
+    assert registry.get("eggbot").source == "entry point eggbot"
+
+
 @pytest.mark.parametrize("value, reason", [
     ("rockly_no_such_package_here", "no such package is installed"),
     ("rockly_no_such_parent_here.profile", "ModuleNotFoundError: No module named 'rockly_no_such_parent_here'"),

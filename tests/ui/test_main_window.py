@@ -1,4 +1,5 @@
 """The main window as a person meets it: toolbox, Code dock, status, languages, memory, profiles."""
+import gc
 import shutil
 
 from page_tools import toolbox_names
@@ -14,6 +15,24 @@ REPO_HOBBIT = __import__("pathlib").Path(__file__).resolve().parents[2] / "profi
 
 def menu_titles(window) -> list:
     return [action.text() for action in window.menuBar().actions()]
+
+
+def test_python_collects_garbage_again_once_the_editor_is_ready(qtbot, driver, monkeypatch):
+    # The start's own objects are not collected among while it runs; afterwards collecting goes on as before.
+    import rockly_desktop.app as app
+
+    enabled_while_reading = []
+    read_profiles = app._read_profiles
+    monkeypatch.setattr(app, "_read_profiles", lambda *args: enabled_while_reading.append(gc.isenabled())
+                        or read_profiles(*args))
+    window = app.build_main_window(driver.settings_path)
+    driver.windows.append(window)
+    assert enabled_while_reading == [False]
+    assert gc.isenabled() and gc.get_freeze_count() > 0
+    window.show()
+    with qtbot.waitSignal(window.editor.sig_ready, timeout=30000):
+        window.start()
+    assert gc.isenabled() and gc.get_freeze_count() == 0
 
 
 def test_window_shows_hobbit_toolbox_code_dock_and_robot(qtbot, window):
