@@ -71,11 +71,12 @@ def test_the_helpers_last_act_is_the_safe_stop(own_helper, test_robot, turtlebot
     robot = Ros2Robot(turtlebot, ros2_settings)
     robot.backend(Interrupt()).publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.2}})
     eventually(lambda: last_forward_speed(test_robot) == 0.2)
+    ended = robot.helper  # the link replaces it once lost: ``robot.helper`` is then the new one
     if ending == "SIGTERM":
-        robot.helper.process.send_signal(signal.SIGTERM)
+        ended.process.send_signal(signal.SIGTERM)
     else:
-        robot.helper.process.stdin.close()
-    eventually(lambda: robot.helper.lost)
+        ended.process.stdin.close()
+    eventually(lambda: ended.lost)
     eventually(lambda: last_forward_speed(test_robot) == 0.0)
     # the link replaces its lost helper (and starts a new spare): wait, so the teardown ends those too
     eventually(lambda: robot.replaced is not None)
