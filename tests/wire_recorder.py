@@ -2,7 +2,8 @@
 
 Run as a process (``WireRecorder``): it subscribes with ``rospy.AnyMsg`` (any type, as raw bytes)
 and prints one JSON line per message (``{"topic", "type", "data": hex}``) and one per change of
-its connections (``{"topic", "connections"}``). Nothing of Rockly runs in it.
+its connections (``{"topic", "connections"}``). Nothing of Rockly runs in it. With ``connect_after``, it is a node
+on a busy robot: it connects to each new publisher only that many seconds after the master told it of one.
 """
 import json
 import subprocess
@@ -16,15 +17,16 @@ from rockly_desktop.robot.ros1.connection import ask_master
 
 
 class WireRecorder:
-    """The recorder node as a process on ``master`` (tests' RosMaster), listening to ``topics``."""
+    """The recorder node as a process on ``master`` (tests' RosMaster), listening to ``topics`` (connecting to a
+    new publisher ``connect_after`` seconds late, when given)."""
 
-    def __init__(self, master, topics):
+    def __init__(self, master, topics, connect_after: float = 0.0):
         from ros_helpers import ros_environment
 
         self.messages, self._connections = [], {}
         self._master_uri = master.uri
-        self._process = subprocess.Popen([sys.executable, __file__, *topics], text=True, stdout=subprocess.PIPE,
-                                         env=ros_environment(master.uri, master.home))
+        self._process = subprocess.Popen([sys.executable, __file__, str(connect_after), *topics], text=True,
+                                         stdout=subprocess.PIPE, env=ros_environment(master.uri, master.home))
         self._reader = threading.Thread(target=self._read, daemon=True)
         self._reader.start()
         for topic in topics:
@@ -60,9 +62,15 @@ class WireRecorder:
         self._reader.join(10)
 
 
-def _record(topics):
-    import rospy
+def _record(topics, connect_after: float):
+    import time
 
+    import rospy
+    from rospy.impl.registration import RegManager
+
+    if connect_after:  # rospy connects a subscriber to each new publisher on a thread of its own: delay it
+        connect = RegManager._connect_topic_thread
+        RegManager._connect_topic_thread = lambda *args: (time.sleep(connect_after), connect(*args))
     rospy.init_node("rockly_wire_recorder", disable_signals=True)
     lock = threading.Lock()
 
@@ -88,4 +96,4 @@ if __name__ == "__main__":
     import signal
 
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(0))
-    _record(sys.argv[1:])
+    _record(sys.argv[2:], float(sys.argv[1]))
