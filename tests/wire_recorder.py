@@ -13,7 +13,7 @@ from pathlib import Path
 
 from waiting import eventually
 
-from rockly_desktop.robot.ros1.connection import ask_master
+NAME = "rockly_wire_recorder"  # the node's, as the master lists it: /NAME
 
 
 class WireRecorder:
@@ -41,12 +41,11 @@ class WireRecorder:
                 self.messages.append((entry["topic"], entry["type"], bytes.fromhex(entry["data"])))
 
     def wait_connected(self, topic):
-        """Return once the node is connected to every publisher of ``topic`` the master lists."""
-        def connected():
-            publishers = dict(ask_master(self._master_uri, "getSystemState")[0]).get(topic, [])
-            listed = [node for node in publishers if node != "/rockly_wire_recorder"]
-            return self._connections.get(topic, 0) >= len(listed) and topic in self._connections
-        eventually(connected)
+        """Return once every publisher of ``topic`` the master lists has connected the node (as the publisher says:
+        the node's own count of its connections includes those still being made)."""
+        from ros_helpers import publishers_reach
+
+        eventually(lambda: topic in self._connections and publishers_reach(self._master_uri, topic, "/" + NAME))
 
     def on(self, topic):
         """``(type, raw bytes)`` of every message seen on ``topic`` so far."""
@@ -66,12 +65,12 @@ def _record(topics, connect_after: float):
     import time
 
     import rospy
-    from rospy.impl.registration import RegManager
+    from rospy.impl import tcpros_pubsub
 
-    if connect_after:  # rospy connects a subscriber to each new publisher on a thread of its own: delay it
-        connect = RegManager._connect_topic_thread
-        RegManager._connect_topic_thread = lambda *args: (time.sleep(connect_after), connect(*args))
-    rospy.init_node("rockly_wire_recorder", disable_signals=True)
+    if connect_after:  # rospy connects a subscriber to each new publisher on a thread of its own: delay that thread
+        connect = tcpros_pubsub.robust_connect_subscriber
+        tcpros_pubsub.robust_connect_subscriber = lambda *args: (time.sleep(connect_after), connect(*args))
+    rospy.init_node(NAME, disable_signals=True)
     lock = threading.Lock()
 
     def show(entry):
