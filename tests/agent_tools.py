@@ -15,7 +15,8 @@ REPO = Path(__file__).resolve().parents[1]
 
 
 class AgentProcess:
-    """``rockly agent --backend BACKEND`` on a free localhost port, its programs in ``library``."""
+    """``rockly agent --backend BACKEND`` on a free localhost port, its programs in ``library``; on ROS 1 (its
+    ``--master`` among ``options``), returns once the master lists the agent's own node on its topics."""
 
     def __init__(self, library: Path, *options, backend="sim", env=None):
         self.process = subprocess.Popen(
@@ -25,6 +26,21 @@ class AgentProcess:
         ready = self.process.stdout.readline()
         assert "listening on" in ready, ready + self.process.stderr.read()
         self.port = int(ready.split("listening on 127.0.0.1:")[1].split(",")[0])
+        if backend == "ros1":  # it says it listens on TCP before its node is up: a ROS client then finds no agent
+            self._wait_on_ros1(str(options[options.index("--master") + 1]))
+
+    def _wait_on_ros1(self, master_uri: str):
+        """Return once the master lists this agent's node (``rockly_PID_...``) as a subscriber of its requests."""
+        from rockly_desktop.robot.ros1.agent_topics import topics
+        from rockly_desktop.robot.ros1.connection import ask_master
+        from rockly_desktop.runtime.agent.protocol import DEFAULT_NAMESPACE
+
+        def listed():
+            subscribers = dict(ask_master(master_uri, "getSystemState")[1]).get(topics(DEFAULT_NAMESPACE)[0], [])
+            return self.process.poll() is not None or any(
+                node.startswith(f"/rockly_{self.process.pid}_") for node in subscribers)
+        eventually(listed, 60)
+        assert self.process.poll() is None, self.process.stderr.read()
 
     def robot(self, *args, language="en", timeout=120, env=None) -> subprocess.CompletedProcess:
         """``rockly robot --port PORT ARGS`` run to its end."""

@@ -28,14 +28,34 @@ def ros_environment(master_uri: str, home: Path) -> dict:
                 ROS_LOG_DIR=str(home / "log"), PYTHONUNBUFFERED="1")
 
 
+def publishers_reach(master_uri: str, topic: str, subscriber: str) -> bool:
+    """True when every publisher of ``topic`` the master lists (but ``subscriber``) has a connection up to the node
+    ``subscriber``, as the publisher's own bus info says (``getBusInfo``); a listed node that refuses (killed)
+    publishes nothing. Only the publisher's side tells: rospy counts a subscriber's connection before it has
+    connected, and what is published before the publisher has the connection is lost to that subscriber."""
+    for node in dict(ask_master(master_uri, "getSystemState")[0]).get(topic, []):
+        if node == subscriber:
+            continue
+        try:
+            bus = ask_master(ask_master(master_uri, "lookupNode", node), "getBusInfo")
+        except ConnectionRefusedError:
+            continue
+        except (OSError, xmlrpc.client.Error):  # slow to answer: ask again
+            return False
+        if not any(entry[1] == subscriber and entry[2] == "o" and entry[4] == topic for entry in bus):
+            return False
+    return True
+
+
 def connected_subscription(ros_robot, topic: str, msg_type: str):
-    """This process's shared subscription to ``topic``, once connected to every publisher the master lists.
+    """This process's shared subscription to ``topic``, once every publisher the master lists has connected it.
 
     rospy connects a subscriber to a publisher in a thread of its own: a message sent before
     that connection is up is lost to this subscriber."""
+    import rospy
+
     entry = ros_robot.graph.topic(topic, msg_type)
-    publishers = dict(ask_master(ros_robot.connection.master_uri, "getSystemState")[0]).get(topic, [])
-    eventually(lambda: entry._subscriber.get_num_connections() >= len(publishers))
+    eventually(lambda: publishers_reach(ros_robot.connection.master_uri, topic, rospy.get_name()))
     return entry
 
 

@@ -2,7 +2,8 @@
 
 Run as a process (``WireRecorder``): it subscribes with ``rospy.AnyMsg`` (any type, as raw bytes)
 and prints one JSON line per message (``{"topic", "type", "data": hex}``) and one per change of
-its connections (``{"topic", "connections"}``). Nothing of Rockly runs in it.
+its connections (``{"topic", "connections"}``). Nothing of Rockly runs in it. With ``connect_after``, it is a node
+on a busy robot: it connects to each new publisher only that many seconds after the master told it of one.
 """
 import json
 import subprocess
@@ -12,19 +13,20 @@ from pathlib import Path
 
 from waiting import eventually
 
-from rockly_desktop.robot.ros1.connection import ask_master
+NAME = "rockly_wire_recorder"  # the node's, as the master lists it: /NAME
 
 
 class WireRecorder:
-    """The recorder node as a process on ``master`` (tests' RosMaster), listening to ``topics``."""
+    """The recorder node as a process on ``master`` (tests' RosMaster), listening to ``topics`` (connecting to a
+    new publisher ``connect_after`` seconds late, when given)."""
 
-    def __init__(self, master, topics):
+    def __init__(self, master, topics, connect_after: float = 0.0):
         from ros_helpers import ros_environment
 
         self.messages, self._connections = [], {}
         self._master_uri = master.uri
-        self._process = subprocess.Popen([sys.executable, __file__, *topics], text=True, stdout=subprocess.PIPE,
-                                         env=ros_environment(master.uri, master.home))
+        self._process = subprocess.Popen([sys.executable, __file__, str(connect_after), *topics], text=True,
+                                         stdout=subprocess.PIPE, env=ros_environment(master.uri, master.home))
         self._reader = threading.Thread(target=self._read, daemon=True)
         self._reader.start()
         for topic in topics:
@@ -39,12 +41,11 @@ class WireRecorder:
                 self.messages.append((entry["topic"], entry["type"], bytes.fromhex(entry["data"])))
 
     def wait_connected(self, topic):
-        """Return once the node is connected to every publisher of ``topic`` the master lists."""
-        def connected():
-            publishers = dict(ask_master(self._master_uri, "getSystemState")[0]).get(topic, [])
-            listed = [node for node in publishers if node != "/rockly_wire_recorder"]
-            return self._connections.get(topic, 0) >= len(listed) and topic in self._connections
-        eventually(connected)
+        """Return once every publisher of ``topic`` the master lists has connected the node (as the publisher says:
+        the node's own count of its connections includes those still being made)."""
+        from ros_helpers import publishers_reach
+
+        eventually(lambda: topic in self._connections and publishers_reach(self._master_uri, topic, "/" + NAME))
 
     def on(self, topic):
         """``(type, raw bytes)`` of every message seen on ``topic`` so far."""
@@ -60,10 +61,16 @@ class WireRecorder:
         self._reader.join(10)
 
 
-def _record(topics):
-    import rospy
+def _record(topics, connect_after: float):
+    import time
 
-    rospy.init_node("rockly_wire_recorder", disable_signals=True)
+    import rospy
+    from rospy.impl import tcpros_pubsub
+
+    if connect_after:  # rospy connects a subscriber to each new publisher on a thread of its own: delay that thread
+        connect = tcpros_pubsub.robust_connect_subscriber
+        tcpros_pubsub.robust_connect_subscriber = lambda *args: (time.sleep(connect_after), connect(*args))
+    rospy.init_node(NAME, disable_signals=True)
     lock = threading.Lock()
 
     def show(entry):
@@ -88,4 +95,4 @@ if __name__ == "__main__":
     import signal
 
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(0))
-    _record(sys.argv[1:])
+    _record(sys.argv[2:], float(sys.argv[1]))

@@ -20,9 +20,10 @@ def test_a_run_on_ros1_records_the_robots_topics_as_it_published_them(ros_robot,
                                                                          "drive": "hobbit_move"})
     result = make_runner(hobbit, ros_robot, PROGRAM, RunControl(), lambda event: None, recording=recording).run()
     assert result.outcome == "finished", result
+    with ros_robot.state._lock:  # the feed's thread goes on adding /odom messages to the history
+        history = list(ros_robot.state._topics["/odom"].history)
     published = {m["header"]["seq"]: m  # the ROS-level simulator leaves stamps at 0
-                 for m in (from_message(raw) if not isinstance(raw, dict) else raw
-                           for _t, raw, _size in ros_robot.state._topics["/odom"].history)}
+                 for m in (from_message(raw) if not isinstance(raw, dict) else raw for _t, raw, _size in history)}
 
     found, messages = channels_and_messages(path)
     assert found["/odom"] == ("ros1", "nav_msgs/Odometry", "ros1msg")

@@ -20,7 +20,9 @@ from rockly_desktop.robot.ros1.message_values import from_message, to_message
 from rockly_desktop.robot.ros1.service_calls import ServiceCaller
 
 POLL_SECONDS = 0.01
-FIRST_PUBLISH_WAIT = 1.0  # a new publisher waits this long for subscribers to connect
+# A new publisher waits at most this long for the subscribers the master lists to connect: each connects
+# through the master, its own node and this one (three processes), over 1 s on a busy robot or computer.
+FIRST_PUBLISH_WAIT = 5.0
 
 _ACTIONLIB_STATUS = {3: GoalStatus.SUCCEEDED, 4: GoalStatus.ABORTED, 2: GoalStatus.PREEMPTED,
                      8: GoalStatus.PREEMPTED, 5: GoalStatus.REJECTED, 9: GoalStatus.ABORTED}
@@ -42,6 +44,7 @@ class RosGraph:
         self._services = {}
         self._actions = {}
         self.goals_sent = set()  # actions whose goal publisher has waited for its subscribers
+        self.unreached = {}  # topic -> how many subscribers answered when a whole wait for them ended unconnected
         self.available_services = set()
         self.sent = {}  # topic -> (when, message) this node last published (commands like /head/move)
         # Told of each service call this node makes, as (service, "service", {request, response}):
@@ -244,7 +247,7 @@ class Ros1Backend(RobotBackend):
         return resolved
 
     def connect_publisher(self, topic: str, msg_type: str):
-        """The publisher of ``topic``; on first use, or while nobody is connected yet, wait (≤ 1 s)
+        """The publisher of ``topic``; on first use, or while nobody is connected yet, wait (≤ FIRST_PUBLISH_WAIT)
         until the subscribers the master lists have connected."""
         self._check()
         publisher, first = self.graph.publisher(topic, msg_type)
@@ -253,12 +256,20 @@ class Ros1Backend(RobotBackend):
         return publisher
 
     def _wait_for_subscribers(self, publisher):
-        """Wait (≤ 1 s) until ``publisher`` is connected to every subscriber the master lists."""
-        expected = self.graph.subscriber_count(publisher.resolved_name)
-        self.wait_until(lambda: publisher.get_num_connections() >= expected, FIRST_PUBLISH_WAIT)
+        """Wait (≤ FIRST_PUBLISH_WAIT) until ``publisher`` is connected to every subscriber the master lists that
+        answers. Subscribers a whole wait ended without (one of another type, one that cannot reach this computer's
+        address) are not waited for again, unless the master lists more of them."""
+        topic = publisher.resolved_name
+        expected = self.graph.subscriber_count(topic)
+        if expected and self.graph.unreached.get(topic) == expected:
+            return
+        if self.wait_until(lambda: publisher.get_num_connections() >= expected, FIRST_PUBLISH_WAIT):
+            self.graph.unreached.pop(topic, None)
+        else:
+            self.graph.unreached[topic] = expected
 
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
-        """Publish on ``topic`` (a new publisher first waits briefly for its subscribers)."""
+        """Publish on ``topic`` (a new publisher first waits for its subscribers to connect)."""
         publisher = self.connect_publisher(topic, msg_type)  # on first use, or its first message is lost
         publisher.publish(to_message(publisher.data_class, message))
         self.graph.sent[topic] = (time.monotonic(), message)
