@@ -20,7 +20,9 @@ def test_typed_publish_and_a_goal_with_a_while_waiting_handler_run_on_ros(ros_ma
     assert lines[-1] == "finished"
     assert 0.4 in turns and turns[-1] == 0.0          # the typed Twist went out, then the stop's zero Twist
     progress = [line for line in lines if line.startswith("print") and "arm: MoveToCandle" in line]
-    assert progress and progress[-1].endswith("arm: MoveToCandle 100 %")   # feedback from the real action server
+    # feedback from the real action server; ROS 1 keeps no order between an action's feedback and result
+    # topics, and actionlib drops feedback after the result, so the last one seen may be short of 100 %
+    assert progress and all(line.endswith(" %") for line in progress)
     handler_steps = [line for line in lines if line.split()[:2] == ["block", "progress"]]
     assert len(handler_steps) == len(progress)        # the handler's block ran as a step of the program
     assert "print   [info] The arm's goal ended: succeeded" in lines
