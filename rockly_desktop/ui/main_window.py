@@ -9,7 +9,7 @@ from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.recovery import RecoverySession, claim_abandoned
 from rockly_desktop.robot.links import link_kind
 from rockly_desktop.runtime.agent.protocol import DEFAULT_PORT
-from rockly_desktop.ui.agent.agent_bar import AgentBar, agent_address
+from rockly_desktop.ui.agent.agent_bar import AgentBar, AgentWay, agent_address
 from rockly_desktop.ui.agent.attached_run import AttachedRun
 from rockly_desktop.ui.docks.registry import Docks
 from rockly_desktop.ui.docks.stage_layout import BottomTabSizes, StageLayout, keep_side_docks_full_height
@@ -103,7 +103,7 @@ class MainWindow(QMainWindow):
         self.attached.sig_recorded.connect(lambda path: self.replay.open(path, quiet=True))
         self.health = HealthBar(settings.current_language, self)
         self.health.sig_refreshed.connect(self.robots.show_health)  # one source for the light and the status
-        self.agent_bar = AgentBar(self.attached, lambda: self.language, self._agent_address, self)
+        self.agent_bar = AgentBar(self.attached, lambda: self.language, self._agent_way, self)
         self.robots.sig_robot_changed.connect(self.agent_bar.look)
         self.statusBar().addPermanentWidget(self.agent_bar)
         self.statusBar().addPermanentWidget(self.health)
@@ -305,6 +305,14 @@ class MainWindow(QMainWindow):
         kind = link_kind(self.robots.kind)
         connection = self.settings.link_connection(kind, self.profile.id) if kind.settings else {}
         return agent_address(kind.kind, connection, self.settings.agent_address)
+
+    def _agent_way(self):
+        """How the robot bar asks the chosen robot's agent (an ``AgentWay``): as the Programs dialog reaches it, over
+        the robot's ROS graph first when it is on one; None when there is no way."""
+        address = self._agent_address()
+        if not link_kind(self.robots.kind).agent_topics:
+            return AgentWay(*address) if address else None
+        return AgentWay(*(address or (None, DEFAULT_PORT)), via="auto", graph_kind=self.robots.kind)
 
     def _remember_agent(self, host: str, port: int):
         """The Programs dialog reached an agent at ``host``:``port``: the robot bar looks there from now on."""

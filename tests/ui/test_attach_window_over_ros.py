@@ -1,6 +1,7 @@
 """The window on a ROS 1 robot reaches the robot's agent over ROS (``rockly agent --backend ros1`` in a process of
 its own on the session's master, beside ``rockly sim hobbit --ros``): Robot → Programs on the robot lists, attaches
-and STOPs without any TCP address that works; an agent killed mid-run is heard as a lost connection."""
+and STOPs without any TCP address that works, the robot bar shows the run and attaches in one click; an agent
+killed mid-run is heard as a lost connection."""
 import subprocess
 import sys
 
@@ -9,10 +10,12 @@ from agent_tools import REPO, AgentProcess
 from page_tools import call_page
 from program_builder import block, number, rockly_document, stack, workspace
 from ros_helpers import ros_environment
+from screenshots import screenshot
 from standalone_tools import environment, export_standalone
 from test_running import highlighted
 from window_tools import on_hobbit_over_ros1
 
+from rockly_desktop.runtime.agent.protocol import DEFAULT_PORT
 from rockly_desktop.ui.agent.robot_programs_dialog import RobotProgramsDialog
 
 
@@ -60,6 +63,35 @@ def open_and_attach(qtbot, window):
     dialog.attach_button.click()
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["linger"], timeout=30000)
     return dialog
+
+
+def bar_shows_and_attaches(qtbot, window, agent, name: str):
+    """The robot bar of ``window`` (its robot chosen on the agent's ROS graph, no TCP way to ``agent``) says
+    ``agent`` runs "linger" and its Attach attaches over ROS; returns the ROS it attached over."""
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(linger())})
+    assert window._agent_address() in (None, ("127.0.0.1", DEFAULT_PORT)) and agent.port != DEFAULT_PORT
+    bar = window.agent_bar
+    window.robots.sig_robot_changed.emit()  # the robot chosen again, the agent now running
+    qtbot.waitUntil(bar.isVisible, timeout=30000)
+    assert (bar.label.text(), bar.attach_button.text()) == ("On the robot: linger — running", "Attach")
+    window.resize(1280, window.height())  # wide enough for the status bar's parts side by side
+    screenshot(window, name)
+    with qtbot.waitSignal(window.attached.sig_attached, timeout=30000):
+        bar.attach_button.click()
+    qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["linger"], timeout=30000)
+    assert window.attached.active and window.attached.client.via == "ros"
+    assert not bar.isVisible()  # attached: the toolbar and the glowing block say the rest
+    kind = window.attached.client.kind
+    bar.stop()
+    window.attached.detach()
+    bar.calls.wait(30)
+    window.attached.calls.wait(30)
+    return kind
+
+
+def test_the_robot_bar_of_a_ros_robot_shows_the_run_and_attaches_over_ros(qtbot, ros_window, running):
+    agent, _robot = running
+    assert bar_shows_and_attaches(qtbot, ros_window, agent, "agent_bar_over_ros1") == "ros1"
 
 
 def test_the_window_on_a_ros_robot_lists_attaches_and_stops_over_ros(qtbot, ros_window, running, ros_master):

@@ -1,6 +1,6 @@
 """The window on a ROS 2 robot reaches the robot's agent over ROS 2 (``rockly agent --backend ros2`` in a process of
 its own on the test run's domain, beside a plain rclpy test robot): Robot → Programs on the robot lists, attaches
-and STOPs without any TCP address that works."""
+and STOPs without any TCP address that works; the robot bar shows the run and attaches in one click."""
 import subprocess
 import sys
 
@@ -8,7 +8,7 @@ import pytest
 from agent_tools import REPO, AgentProcess
 from program_builder import rockly_document
 from standalone_tools import environment, export_standalone
-from test_attach_window_over_ros import linger, open_and_attach
+from test_attach_window_over_ros import bar_shows_and_attaches, linger, open_and_attach
 from test_ros2_window import connected
 
 
@@ -51,3 +51,10 @@ def test_the_window_on_a_ros2_robot_lists_attaches_and_stops_over_ros2(qtbot, wi
         assert "running:" not in robot("list").stdout
     finally:
         dialog.calls.wait(30)
+
+
+def test_the_robot_bar_of_a_ros2_robot_shows_the_run_and_attaches_over_ros2(qtbot, window, ros2_settings, running,
+                                                                          monkeypatch):
+    agent, _robot = running
+    ros2_window = connected(window, ros2_settings, monkeypatch)
+    assert bar_shows_and_attaches(qtbot, ros2_window, agent, "agent_bar_over_ros2") == "ros2"

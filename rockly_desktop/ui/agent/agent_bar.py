@@ -1,13 +1,17 @@
 """``AgentBar``: in the status bar, what the chosen robot's agent runs now ("On the robot: square — running"), with
 one click to attach. The agent is asked off the window's thread (``AgentCalls``, at most ``LOOK_TIMEOUT`` a look)
 when the robot is chosen and every ``LOOK_MS`` while the window is not attached; when no agent answers (none
-there, none reachable, nothing running) the bar shows nothing, and the window never waits for it."""
+there, none reachable, nothing running) the bar shows nothing, and the window never waits for it. A robot over
+ROS has its agent asked as the Programs dialog asks it (``AgentWay``): over ROS when the window's own node or
+helper is on the robot's graph and an agent is in it (one look at the graph; no node or helper is started for a
+look), else over TCP; Attach goes the way the look went."""
+from typing import NamedTuple
 from urllib.parse import urlsplit
 
 from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QPushButton, QWidget
 
-from rockly_desktop.runtime.agent.client import AgentClient
+from rockly_desktop.runtime.agent.client import AgentClient, chosen_via
 from rockly_desktop.runtime.agent.protocol import DEFAULT_PORT
 from rockly_desktop.ui.agent.agent_calls import AgentCalls
 from rockly_desktop.ui.texts import tr
@@ -28,15 +32,41 @@ def agent_address(kind: str, connection: dict, remembered: str):
     return (host, port) if host else None
 
 
+class AgentWay(NamedTuple):
+    """How the chosen robot's agent is asked: at ``host``:``port`` over TCP (``host`` None: no address known, so
+    not over TCP) and, with ``via`` "auto", first over ROS on the graph of the robot link ``graph_kind``."""
+
+    host: str | None
+    port: int
+    via: str = "tcp"
+    graph_kind: str | None = None
+
+
+def _ask_run(way: AgentWay, language: str) -> tuple:
+    """``(the way the agent answered: "tcp" or "ros", what it runs)``; ``(None, None)`` when there is no way to
+    try. Raises AgentError when the agent cannot be reached."""
+    via = way.via
+    if way.host is None:  # only the robot's graph is known: a look that finds no agent there tries no TCP
+        via = chosen_via(via, graph_kind=way.graph_kind)[0]
+        if via == "tcp":
+            return None, None
+    client = AgentClient(way.host or "", way.port, language, name="rockly window", timeout=LOOK_TIMEOUT, via=via,
+                         graph_kind=way.graph_kind)
+    try:
+        return client.via, client.programs()["run"]
+    finally:
+        client.close()
+
+
 class AgentBar(QWidget):
-    """Says what the agent at ``address()`` (``agent_address``; None: no robot with an agent is chosen) runs; its
+    """Says what the agent that ``way()`` names (an ``AgentWay``; None: no robot with an agent is chosen) runs; its
     Attach button attaches ``attached`` (the window's ``AttachedRun``). ``language()``: the window's, now."""
 
-    def __init__(self, attached, language, address, parent=None):
+    def __init__(self, attached, language, way, parent=None):
         super().__init__(parent)
         self.setObjectName("agent_bar")
-        self.attached, self._language, self._address = attached, language, address
-        self.shown_at = None  # the address whose run is shown
+        self.attached, self._language, self._way = attached, language, way
+        self.shown_at = None  # the way whose run is shown, and the transport it answered on
         self.label = QLabel(self)
         self.attach_button = QPushButton(self)
         self.attach_button.setObjectName("agent_bar_attach")
@@ -64,26 +94,19 @@ class AgentBar(QWidget):
 
     def look(self):
         """Ask the chosen robot's agent what runs there (unless an answer is on its way, or the window is attached)."""
-        address = self._address()
-        if address is None or self.attached.active or self.attached.calls.busy:
-            self._show(None, None)
+        way = self._way()
+        if way is None or self.attached.active or self.attached.calls.busy:
+            self._show(None, None, None)
             return
         if self.calls.busy:
             return
-        host, port, language = *address, self._language()
+        language = self._language()
+        self.calls.run(lambda: _ask_run(way, language),
+                       lambda answer, error: self._show(way, *((None, None) if error is not None else answer)))
 
-        def ask():
-            client = AgentClient(host, port, language, name="rockly window", timeout=LOOK_TIMEOUT)
-            try:
-                return client.programs()["run"]
-            finally:
-                client.close()
-
-        self.calls.run(ask, lambda run, error: self._show(address, None if error is not None else run))
-
-    def _show(self, address, run):
-        runs = bool(run) and run["state"] != "ended" and address == self._address() and not self.attached.active
-        self.shown_at = address if runs else None
+    def _show(self, way, via, run):
+        runs = bool(run) and run["state"] != "ended" and way == self._way() and not self.attached.active
+        self.shown_at = (way, via) if runs else None
         if runs:
             language = self._language()
             self.label.setText(tr("agent_bar_running", language, name=run["program"],
@@ -97,7 +120,8 @@ class AgentBar(QWidget):
         if self.shown_at is None:
             return
         self.attach_button.setEnabled(False)
-        self.attached.attach(*self.shown_at, self._attached)
+        way, via = self.shown_at
+        self.attached.attach(way.host or "", way.port, self._attached, via, way.graph_kind)
 
     def _attached(self, error):
         if error is not None:
