@@ -10,7 +10,7 @@ from pathlib import Path
 
 from rockly_desktop.core.app_texts import app_text
 from rockly_desktop.runtime.agent.client import VIAS, AgentClient, AgentError
-from rockly_desktop.runtime.agent.protocol import DEFAULT_NAMESPACE, DEFAULT_PORT
+from rockly_desktop.runtime.agent.protocol import ALIVE_SECONDS, DEFAULT_NAMESPACE, DEFAULT_PORT
 
 
 def default_library() -> Path:
@@ -151,8 +151,8 @@ def serve(args, language: str) -> int:
     ros_calls = _offer_on_ros(agent, args, language) if links.link_kind(args.backend).agent_topics else None
     if close_offer:
         print(app_text("agent_menu_offered", language, profile=args.offer_on_robot_ui), flush=True)
-    while not ending.wait(0.5):
-        pass
+    while not ending.wait(ALIVE_SECONDS):
+        agent.say_alive()
     if close_offer:
         close_offer()
     server.shutdown()
