@@ -6,15 +6,17 @@ import os
 import signal
 import socket
 import subprocess
+import time
 
 import pytest
-from agent_tools import REPO, AgentProcess
+from agent_tools import REPO, AgentProcess, AttachedClient
 from program_builder import block, number, rockly_document, stack
 from standalone_tools import environment, exported_program
 from tiny_disk import fill, tiny_disk
 from waiting import eventually
 
 from rockly_desktop.runtime.agent.client import AgentClient, AgentError
+from rockly_desktop.runtime.agent.protocol import AGENT_SILENT_SECONDS
 
 
 def drive_and_tell():
@@ -284,6 +286,39 @@ def test_the_agent_killed_mid_run_leaves_the_robot_stopped(agent_at, program):
             return True
         return False
     eventually(gone, 60)  # it ended (after its safe stop), not killed by anyone
+
+
+def test_a_frozen_agent_is_heard_lost_and_its_run_goes_on(agent_at, program):
+    """SIGSTOP closes nothing (the TCP connection stays open): the attached ``rockly robot attach`` (the editor)
+    hears the agent fall silent and ends as for a closed connection; the run's own process goes on, and the agent,
+    woken, still runs it (a keep-going program: the editor's loss is the agent's to judge, as before)."""
+    agent = agent_at(speed=0.01)  # the drive would take 100 s
+    watcher = Watcher(agent)
+    try:
+        watcher.client.send("drive", program[0].read_text(), on_lost_editor="keep_going")
+        watcher.client.attach(control=False)
+        watcher.client.start("drive")
+        started = watcher.wait_for(lambda event: event.get("event") == "started")
+    finally:
+        watcher.close()
+    editor = AttachedClient(agent.robot_command("attach"), None)
+    try:
+        assert editor.first["controller"] is True and editor.first["run"]["state"] == "running"
+        agent.process.send_signal(signal.SIGSTOP)
+        frozen = time.monotonic()
+        try:
+            editor.process.wait(AGENT_SILENT_SECONDS + 30)
+            took = time.monotonic() - frozen
+            os.kill(started["pid"], 0)  # the run's own process was not touched
+        finally:
+            agent.process.send_signal(signal.SIGCONT)
+    finally:
+        editor.end()
+    assert editor.process.returncode == 0 and not editor.seen(ended)
+    # the product's promise: a few seconds, with room for a loaded machine
+    assert took < AGENT_SILENT_SECONDS + 10
+    listed = agent.robot("list")
+    assert listed.returncode == 0 and "running: drive" in listed.stdout, listed.stderr
 
 
 def test_events_reach_every_watcher_while_many_attach(agent_at, program):

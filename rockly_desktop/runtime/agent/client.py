@@ -14,8 +14,9 @@ Each call waits for the agent's answer and returns it as a dict; a refusal raise
 window hands it on to its own thread). While attached, the client sends a heartbeat every
 ``HEARTBEAT_SECONDS``: that is what "the editor is there" means to a program that stops the robot when the
 editor is lost. A connection that breaks ends the calls waiting with ``AgentError("agent_connection_lost")``
-and calls ``on_closed``; an agent that does not answer within ``timeout`` ends the call with
-``AgentError("agent_no_answer")``.
+and calls ``on_closed``; so does an agent that said it beats (its ``hello``) and then is not heard from for
+``AGENT_SILENT_SECONDS`` (hung, frozen, or the network cut: no transport says so soon, see ``agent.protocol``).
+An agent that does not answer within ``timeout`` ends the call with ``AgentError("agent_no_answer")``.
 
 ``via`` picks the transport (one module each): ``tcp`` (``agent.tcp_transport``: ``host``:``port``), ``ros``
 (``agent.ros_transport``: the agent's topics in ``namespace`` on ROS 2 domain ``domain`` when it is given, through
@@ -24,10 +25,12 @@ graph is given (or this process already has its ROS 1 node or ROS 2 helper) and 
 """
 import itertools
 import threading
+import time
 
 from rockly_desktop import __version__
 from rockly_desktop.core.app_texts import app_text
 from rockly_desktop.runtime.agent.protocol import (
+    AGENT_SILENT_SECONDS,
     DEFAULT_NAMESPACE,
     DEFAULT_PORT,
     FORMAT,
@@ -78,6 +81,8 @@ class AgentClient:
         self._closed = threading.Event()
         self._attached = threading.Event()
         self._watching = threading.Event()  # from the attach request on: the run's events are wanted
+        self._heard = time.monotonic()  # when the agent last said anything
+        self._agent_beats = False  # its hello said it says it is there: its silence means it is lost
         self.via, self.kind, where = chosen_via(via, master, namespace, domain, graph_kind)
         if self.via == "ros":
             from rockly_desktop.runtime.agent.ros_transport import RosLine
@@ -101,6 +106,7 @@ class AgentClient:
             self.close()
             raise AgentError("agent_other_format", app_text("agent_other_format", language,
                                                             agent=self.hello.get("agent", "?"), client=__version__))
+        self._agent_beats = bool(self.hello.get("alive_seconds"))
 
     def request(self, op: str, **fields) -> dict:
         """Send request ``op`` and return the agent's answer (its fields, without ``reply`` and ``ok``); raises
@@ -194,11 +200,16 @@ class AgentClient:
 
     def _beat(self):
         while not self._closed.wait(HEARTBEAT_SECONDS):
+            if self._agent_beats and time.monotonic() - self._heard > AGENT_SILENT_SECONDS:
+                self._line.lose()  # as if the connection had closed: ``_gone`` follows
+                return
             if self._attached.is_set() or self._line.beats_always:
                 self._write({"op": "heartbeat"})
 
     def _take(self, message: dict):
-        """One message from the agent (on the transport's reader thread): an event or an answer."""
+        """One message from the agent (on the transport's reader thread): an event, an answer, or ``ALIVE`` (none
+        of them)."""
+        self._heard = time.monotonic()
         if "event" in message:
             if message["event"] == "control":
                 self.controller = bool(message.get("controller"))

@@ -10,7 +10,7 @@ from pathlib import Path
 
 from rockly_desktop.core.app_texts import app_text
 from rockly_desktop.runtime.agent.client import VIAS, AgentClient, AgentError
-from rockly_desktop.runtime.agent.protocol import DEFAULT_NAMESPACE, DEFAULT_PORT
+from rockly_desktop.runtime.agent.protocol import ALIVE_SECONDS, DEFAULT_NAMESPACE, DEFAULT_PORT
 
 
 def default_library() -> Path:
@@ -151,6 +151,8 @@ def serve(args, language: str) -> int:
     ros_calls = _offer_on_ros(agent, args, language) if links.link_kind(args.backend).agent_topics else None
     if close_offer:
         print(app_text("agent_menu_offered", language, profile=args.offer_on_robot_ui), flush=True)
+    # its own thread: a send to a client behind a cut network may block, and must not keep SIGTERM from ending
+    threading.Thread(target=_say_alive, args=(agent, ending), daemon=True, name="agent-alive").start()
     while not ending.wait(0.5):
         pass
     if close_offer:
@@ -161,6 +163,11 @@ def serve(args, language: str) -> int:
     agent.shut_down()
     server.server_close()
     return 0
+
+
+def _say_alive(agent, ending):
+    while not ending.wait(ALIVE_SECONDS):
+        agent.say_alive()
 
 
 def _offer_on_ros(agent, args, language: str):

@@ -6,12 +6,24 @@ A client sends requests ``{"op": OP, "id": N, ...}``; the agent answers each wit
 language the client named in its ``hello``). An attached client also gets the run's events as they happen:
 the lines of ``runtime.event_stream`` (``{"event": "block", ...}``) and the agent's own
 ``{"event": "run", "state": ...}``, ``{"event": "control", "controller": BOOL}``.
+
+Every ``ALIVE_SECONDS`` the agent says ``{"alive": true}`` to every client (over ROS once, to all): neither an
+answer nor an event, so a client older than it drops it unread (its ``reply`` names no request it waits for). The
+agent's ``hello`` answer says ``"alive_seconds"``; a client that got it ends its line as lost after
+``AGENT_SILENT_SECONDS`` without a word from the agent (a hung or frozen agent, a cut network close nothing: a TCP
+connection stays open, a ROS publisher stays in the graph). A client of an older agent (no ``alive_seconds``)
+keeps hearing a lost agent only from its transport.
 """
 import json
 
 FORMAT = 1  # of this protocol; an agent and a client of other formats say so and stop
 DEFAULT_PORT = 11411
 HEARTBEAT_SECONDS = 0.2  # how often an attached client says it is there (well inside any time to decide)
+ALIVE = {"alive": True}
+ALIVE_SECONDS = 0.5  # how often the agent says it is there
+# a client not hearing the agent this long has lost it: six beats missed, so a loaded machine or a short Wi-Fi
+# drop does not end a line that works, and a window stops showing a run that is gone within a few seconds
+AGENT_SILENT_SECONDS = 3.0
 LOST_EDITOR_CHOICES = ("keep_going", "stop")
 DEFAULT_DECIDE_SECONDS = 2.0
 MAX_LINE_BYTES = 64 * 1024 * 1024  # a program's text travels in one line

@@ -9,7 +9,9 @@ URI, a ROS 2 domain id (the agent: its connection's settings); None: this proces
 A topic has no "connection closed", so a ROS client says it is there with a heartbeat every
 ``HEARTBEAT_SECONDS`` (attached or not) and ``bye`` when it closes; the agent forgets a client not heard from for
 ``SILENT_CLIENT_SECONDS`` (it neither watches nor controls any more). A client hears a lost agent as its
-incoming topic losing its publisher for ``LOST_AGENT_SECONDS``.
+incoming topic losing its publisher for ``LOST_AGENT_SECONDS`` (fast: a process that ends), or as the agent's
+``ALIVE`` (broadcast to all clients) not heard for ``AGENT_SILENT_SECONDS`` (``AgentClient``: a hung or frozen
+agent, a cut network, which leave the publisher in the graph: ROS 2 until the DDS lease ends, ROS 1 for ever).
 
 ``RosOffer`` is the agent's side, ``RosLine`` a client's; the middleware is reached only when one is made.
 """
@@ -182,13 +184,17 @@ class RosLine:
         self._end()
         self._watch.join(5)
 
+    def lose(self):
+        """End the line as lost (the agent fell silent; ``gone`` follows)."""
+        self._end()
+
     def _on_message(self, message: dict):
         if self._ended.is_set():
             return
         to = message.pop("to", None)
         if to == self.who and message.get("reply") == self.who:
             self._ready.set()
-        elif to == self.who or (to is None and "event" in message):
+        elif to == self.who or to is None:  # an answer to this client; an event or ``ALIVE`` to all
             self._take(message)
 
     def _watch_agent(self):

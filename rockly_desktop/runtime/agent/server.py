@@ -3,7 +3,8 @@
 
 Requests (each answered; refusals say why in the client's language):
 
-    hello    {"rockly", "format", "language", "client"}        -> {"agent", "format", "backend", "profiles"}
+    hello    {"rockly", "format", "language", "client"}        -> {"agent", "format", "backend", "profiles",
+                                                                     "alive_seconds"}
     list                                                          -> {"programs": [about...], "run": snapshot|null}
     send     {"name", "standalone", "source"?, "on_lost_editor"?, "decide_seconds"?} -> {"program": about}
     source   {"name"}                                             -> {"source": .rockly text|null}
@@ -29,7 +30,7 @@ import threading
 
 from rockly_desktop import __version__
 from rockly_desktop.runtime.agent.library import Library
-from rockly_desktop.runtime.agent.protocol import FORMAT, AgentRefusal, refusal_text
+from rockly_desktop.runtime.agent.protocol import ALIVE, ALIVE_SECONDS, FORMAT, AgentRefusal, refusal_text
 from rockly_desktop.runtime.agent.running import ProgramRun
 
 
@@ -64,7 +65,7 @@ class Agent:
         if request.get("format") != FORMAT:
             raise AgentRefusal("agent_other_format", agent=__version__, client=request.get("rockly", "?"))
         return {"agent": __version__, "format": FORMAT, "backend": self.backend,
-                "profiles": {p.id: p.version for p in self.library.profiles.values()}}
+                "profiles": {p.id: p.version for p in self.library.profiles.values()}, "alive_seconds": ALIVE_SECONDS}
 
     def _op_list(self, client, request):
         return {"programs": self.library.entries(), "run": self._snapshot()}
@@ -174,6 +175,15 @@ class Agent:
                 delivered[outlet] = outlet(record)
             if not delivered[outlet]:
                 self._forget(client)
+
+    def say_alive(self):
+        """Tell every client the agent is there (``agent.protocol``'s ``ALIVE``; call it every ``ALIVE_SECONDS``),
+        once per outlet; a client that cannot take it is left to its transport."""
+        said = set()
+        for client in list(self.clients):
+            if client.deliver not in said:
+                said.add(client.deliver)
+                client.deliver(ALIVE)
 
     def _snapshot(self):
         run = self.run

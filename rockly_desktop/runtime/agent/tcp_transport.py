@@ -47,12 +47,16 @@ class TcpLine:
         except OSError:
             return False
 
-    def close(self):
-        """End the connection (``gone`` follows on the reader thread) and wait for the reader."""
+    def lose(self):
+        """End the connection as lost (the agent fell silent): ``gone`` follows on the reader thread."""
         try:
             self._socket.shutdown(socket.SHUT_RDWR)
         except OSError:
             pass
+
+    def close(self):
+        """End the connection (``gone`` follows on the reader thread) and wait for the reader."""
+        self.lose()
         self._socket.close()
         self._reader.join(5)
 

@@ -3,6 +3,7 @@ hobbit --ros`` on a master of the test's own: ``rockly robot --via ros`` process
 stop; the editor's process killed mid-run stops the robot (a zero velocity on the wire, seen by an independent
 rospy node) or lets the run finish, as the program says; a client of another version, or no agent in the
 graph, is told plainly. Every client is given a TCP port nobody listens on: what works, works over ROS."""
+import signal
 import subprocess
 import sys
 import time
@@ -21,6 +22,8 @@ from program_builder import block, number, rockly_document, stack
 from ros_helpers import ros_environment
 from standalone_tools import export_standalone
 from waiting import eventually
+
+from rockly_desktop.runtime.agent.protocol import AGENT_SILENT_SECONDS
 
 NO_TCP = ("--port", "1")  # nothing listens there: a call that works went over ROS
 
@@ -118,6 +121,29 @@ def test_a_lost_editor_over_ros_stops_the_robot_within_the_time_to_decide(robot,
         watcher.end()
     assert end["stopped_for_lost_editor"] is True
     assert watcher.seen(lambda line: line.get("state") == "editor_lost")
+
+
+def test_a_frozen_agent_is_heard_lost_over_ros_and_its_run_goes_on(robot, agent):
+    """SIGSTOP leaves the agent's publisher at the master for ever: the attached client hears the agent fall silent
+    and ends as for a lost publisher; the agent, woken, still runs the program (a keep-going one)."""
+    master, programs, _ = robot
+    watcher = started(master, programs, "far", "--keep-going")
+    try:
+        agent.process.send_signal(signal.SIGSTOP)
+        frozen = time.monotonic()
+        try:
+            watcher.process.wait(AGENT_SILENT_SECONDS + 30)
+            took = time.monotonic() - frozen
+        finally:
+            agent.process.send_signal(signal.SIGCONT)
+    finally:
+        watcher.end()
+    assert watcher.process.returncode == 0 and not watcher.seen(ended)
+    # the product's promise: a few seconds, with room for a loaded machine
+    assert took < AGENT_SILENT_SECONDS + 10
+    listed = run_robot(master, "list")
+    assert listed.returncode == 0 and "running: far" in listed.stdout, listed.stderr
+    assert run_robot(master, "stop").returncode == 0
 
 
 def test_a_lost_editor_over_ros_lets_a_keep_going_program_finish(robot, agent):

@@ -3,6 +3,7 @@ turtlebot --ros2`` on the test run's own domain: ``rockly robot --via ros --doma
 attach and stop; the editor's process killed mid-run stops the robot (a zero velocity on the wire, seen by an
 independent rclpy node) within the time to decide; no agent on the domain is told plainly. Every client is given a
 TCP port nobody listens on: what works, works over ROS 2."""
+import signal
 import subprocess
 import sys
 import time
@@ -14,6 +15,8 @@ from json_line_node import JsonLineNode
 from ros2_fixtures import ROS2_PYTHON
 from test_standalone_on_ros2 import RECORDER, long_drive_exported, turtlebot_sim_on_ros2
 from waiting import eventually
+
+from rockly_desktop.runtime.agent.protocol import AGENT_SILENT_SECONDS
 
 ZERO = {"linear": [0.0, 0.0, 0.0], "angular": [0.0, 0.0, 0.0]}
 NO_TCP = ("--port", "1")  # nothing listens there: a call that works went over ROS 2
@@ -153,3 +156,32 @@ def test_the_agent_killed_mid_run_is_heard_lost_and_the_robot_stops(robot, agent
     finally:
         watcher.end()
     assert watcher.process.returncode == 0 and not watcher.seen(ended)
+
+
+def test_a_frozen_agent_is_heard_lost_over_ros2_and_its_run_goes_on(robot, agent):
+    """SIGSTOP leaves the agent's publisher in the graph (its ROS 2 helper lives on): the attached client hears the
+    agent fall silent and ends as for a lost publisher; the run's own process goes on driving, and the agent, woken,
+    still runs it (a keep-going program)."""
+    settings, program, wire = robot
+    since = len(wire.lines)
+    watcher = started(settings, program, "--keep-going")
+    try:
+        eventually(lambda: driving(wire, since), 60)
+        agent.process.send_signal(signal.SIGSTOP)
+        frozen = time.monotonic()
+        try:
+            watcher.process.wait(AGENT_SILENT_SECONDS + 30)
+            took = time.monotonic() - frozen
+            moving = len(wire.lines)
+            eventually(lambda: driving(wire, moving), 30)  # the run drives on without the agent
+        finally:
+            agent.process.send_signal(signal.SIGCONT)
+    finally:
+        watcher.end()
+    assert watcher.process.returncode == 0 and not watcher.seen(ended)
+    # the product's promise: a few seconds, with room for a loaded machine
+    assert took < AGENT_SILENT_SECONDS + 10
+    listed = run_robot(settings, "list")
+    assert listed.returncode == 0 and "running: long" in listed.stdout, listed.stderr
+    stopped = run_robot(settings, "stop")
+    assert stopped.returncode == 0, stopped.stderr
