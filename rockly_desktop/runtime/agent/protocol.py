@@ -21,9 +21,10 @@ DEFAULT_PORT = 11411
 HEARTBEAT_SECONDS = 0.2  # how often an attached client says it is there (well inside any time to decide)
 ALIVE = {"alive": True}
 ALIVE_SECONDS = 0.5  # how often the agent says it is there
-# a client not hearing the agent this long has lost it: six beats missed, so a loaded machine or a short Wi-Fi
-# drop does not end a line that works, and a window stops showing a run that is gone within a few seconds
-AGENT_SILENT_SECONDS = 3.0
+# a client not hearing the agent this long has lost it: ten beats missed, so a loaded machine or a short Wi-Fi
+# drop does not end a line that works (as long as the agent waits for a silent client), and a window stops
+# showing a run that is gone within a few seconds
+AGENT_SILENT_SECONDS = 5.0
 LOST_EDITOR_CHOICES = ("keep_going", "stop")
 DEFAULT_DECIDE_SECONDS = 2.0
 MAX_LINE_BYTES = 64 * 1024 * 1024  # a program's text travels in one line
