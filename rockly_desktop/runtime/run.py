@@ -18,9 +18,9 @@ from rockly_desktop.recording.mcap_file import disk_full, problem_text
 from rockly_desktop.robot.links import open_link
 from rockly_desktop.robot.sim.answer_list import AnswerList
 from rockly_desktop.robot.wrappers.limits import Limits
+from rockly_desktop.runtime.stop_signals import StopOnSignals
 
 EXIT_FINISHED, EXIT_ERROR = 0, 1
-STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM)
 
 
 def failed(command: str, error: RocklyError, language: str) -> int:
@@ -93,32 +93,20 @@ class Run:
                            reason=problem_text(error, language)), file=sys.stderr)
             robot.shutdown()
             return EXIT_ERROR
-        previous = {signum: signal.signal(signum, self._stop_once()) for signum in STOP_SIGNALS}
+        signals = StopOnSignals(self.control.request_stop)
         try:
-            self.runner = make_runner(self.profile, robot, self.run_code, self.control, self._reporter(print_blocks),
-                                      language, limits, recording=recording)
-            result = self.runner.run()
+            with signals:
+                self.runner = make_runner(self.profile, robot, self.run_code, self.control,
+                                          self._reporter(print_blocks), language, limits, recording=recording)
+                result = self.runner.run()
         except RocklyError as error:  # the profile's commands could not be made
             return self.fail(error)
         finally:
-            for signum, handler in previous.items():
-                signal.signal(signum, handler)
+            self.stopped_by = signals.signum or signal.SIGINT
             if recording is not None:
                 recording.close()
             robot.shutdown()
         return self._report_end(result)
-
-    def _stop_once(self):
-        """A handler for SIGINT and SIGTERM asking the run to stop, for the first signal only: a second
-        one interrupting the first inside ``request_stop()`` would wait forever for the lock it holds."""
-        stopping = []
-
-        def handler(signum, _frame):
-            if not stopping:
-                stopping.append(signum)
-                self.stopped_by = signum
-                self.control.request_stop()
-        return handler
 
     def _reporter(self, print_blocks: bool):
         language, types, out, on_event = self.language, self.types, self.out, self.on_event
