@@ -28,8 +28,9 @@ def test_the_links_graph_has_the_test_nodes_service_action_and_parameters(ros2_r
     ros2_robot.want_parameters(True)
     eventually(lambda: "/test_robot:max_speed" in ros2_robot.graph_parameters(), timeout=30)
     assert "/test_robot:robot_name" in ros2_robot.graph_parameters()
-    assert ("/set_light", "std_srvs/SetBool") in ros2_robot.graph_services()
-    assert ("/fibonacci", "test_msgs/FibonacciAction") in ros2_robot.graph_actions()
+    # the followed graph's next look may come after the parameters' listing
+    eventually(lambda: ("/set_light", "std_srvs/SetBool") in ros2_robot.graph_services(), timeout=30)
+    eventually(lambda: ("/fibonacci", "test_msgs/FibonacciAction") in ros2_robot.graph_actions(), timeout=30)
 
 
 def test_a_node_that_never_lists_its_parameters_holds_the_listing_up_no_longer_than_its_bound(ros2_robot, mute_node):
