@@ -1,15 +1,19 @@
 """The robot's agent (``rockly agent``) as a process of its own, and ``rockly robot`` as a user runs it."""
 import json
+import signal
 import struct
 import subprocess
 import sys
 import threading
+import time
 from contextlib import contextmanager
 from pathlib import Path
 
 from ros_helpers import hobbit_on_own_master, ros_environment
 from waiting import eventually
 from wire_recorder import WireRecorder
+
+from rockly_desktop.runtime.agent.protocol import AGENT_SILENT_SECONDS
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -170,3 +174,17 @@ def sent_started_and_watched(run_robot, attach, program, name, *send_options) ->
     assert watcher.first["event"] == "attached" and watcher.first["controller"] is False
     assert watcher.first["run"]["program"] == name
     return watcher
+
+
+def seconds_until_ended_while_frozen(agent: subprocess.Popen, client: subprocess.Popen, meanwhile=lambda: None):
+    """Freeze ``agent`` (SIGSTOP) until ``client`` ends (it should hear the agent lost), run ``meanwhile()``, and let
+    the agent go on (SIGCONT, whatever happened); the seconds the client took."""
+    agent.send_signal(signal.SIGSTOP)
+    frozen = time.monotonic()
+    try:
+        client.wait(AGENT_SILENT_SECONDS + 30)
+        took = time.monotonic() - frozen
+        meanwhile()
+    finally:
+        agent.send_signal(signal.SIGCONT)
+    return took

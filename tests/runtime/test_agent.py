@@ -6,10 +6,9 @@ import os
 import signal
 import socket
 import subprocess
-import time
 
 import pytest
-from agent_tools import REPO, AgentProcess, AttachedClient
+from agent_tools import REPO, AgentProcess, AttachedClient, seconds_until_ended_while_frozen
 from program_builder import block, number, rockly_document, stack
 from standalone_tools import environment, exported_program
 from tiny_disk import fill, tiny_disk
@@ -304,14 +303,8 @@ def test_a_frozen_agent_is_heard_lost_and_its_run_goes_on(agent_at, program):
     editor = AttachedClient(agent.robot_command("attach"), None)
     try:
         assert editor.first["controller"] is True and editor.first["run"]["state"] == "running"
-        agent.process.send_signal(signal.SIGSTOP)
-        frozen = time.monotonic()
-        try:
-            editor.process.wait(AGENT_SILENT_SECONDS + 30)
-            took = time.monotonic() - frozen
-            os.kill(started["pid"], 0)  # the run's own process was not touched
-        finally:
-            agent.process.send_signal(signal.SIGCONT)
+        # the run's own process was not touched
+        took = seconds_until_ended_while_frozen(agent.process, editor.process, lambda: os.kill(started["pid"], 0))
     finally:
         editor.end()
     assert editor.process.returncode == 0 and not editor.seen(ended)

@@ -17,7 +17,6 @@ import time
 
 from rockly_desktop.core.errors import RobotCommandError
 from rockly_desktop.robot.link import RobotUnavailable
-from rockly_desktop.robot.ros2 import wire
 from rockly_desktop.robot.ros2.client import Ros2Helper
 from rockly_desktop.robot.ros2.environment import Ros2Settings
 
@@ -73,11 +72,10 @@ def agent_in_graph(where, namespace: str) -> bool:
     topic on another node); a fresh helper looks until it had DISCOVERY_SECONDS to discover it."""
     try:
         helper = _helper(where)
-        deadline = time.monotonic() + wire.DISCOVERY_SECONDS
         while True:
             if _ask(helper, "ends", topics(namespace)[0])[1]:
                 return True
-            if time.monotonic() >= deadline or time.monotonic() - helper.began > wire.DISCOVERY_SECONDS:
+            if not helper.discovery_left():
                 return False
             time.sleep(0.1)
     except (RobotCommandError, RobotUnavailable, ValueError):

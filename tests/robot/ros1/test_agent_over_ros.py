@@ -3,7 +3,6 @@ hobbit --ros`` on a master of the test's own: ``rockly robot --via ros`` process
 stop; the editor's process killed mid-run stops the robot (a zero velocity on the wire, seen by an independent
 rospy node) or lets the run finish, as the program says; a client of another version, or no agent in the
 graph, is told plainly. Every client is given a TCP port nobody listens on: what works, works over ROS."""
-import signal
 import subprocess
 import sys
 import time
@@ -14,6 +13,7 @@ from agent_tools import (
     AttachedClient,
     hobbit_on_ros_with_wire,
     ros1_agent,
+    seconds_until_ended_while_frozen,
     sent_started_and_watched,
     zero_velocities,
 )
@@ -129,13 +129,7 @@ def test_a_frozen_agent_is_heard_lost_over_ros_and_its_run_goes_on(robot, agent)
     master, programs, _ = robot
     watcher = started(master, programs, "far", "--keep-going")
     try:
-        agent.process.send_signal(signal.SIGSTOP)
-        frozen = time.monotonic()
-        try:
-            watcher.process.wait(AGENT_SILENT_SECONDS + 30)
-            took = time.monotonic() - frozen
-        finally:
-            agent.process.send_signal(signal.SIGCONT)
+        took = seconds_until_ended_while_frozen(agent.process, watcher.process)
     finally:
         watcher.end()
     assert watcher.process.returncode == 0 and not watcher.seen(ended)
