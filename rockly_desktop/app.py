@@ -84,7 +84,8 @@ def _build_main_window(settings_path, extra_profile_dirs, kiosk):
     from rockly_desktop.bridge.editor_view import EditorView
 
     editor = EditorView()  # Chromium loads the page while Python reads profiles and builds the window
-    registry, first_setup = while_events_run(lambda: _read_profiles(settings_path, extra_profile_dirs))
+    registry, first_setup, look = while_events_run(lambda: _read_profiles(settings_path, extra_profile_dirs))
+    editor.set_look(look)  # before the setup, which then injects Blockly in it
     if first_setup is not None:  # the page builds that profile's workspace while the window is made
         editor.prepare(*first_setup)
     main_window_class = while_events_run(_main_window_class)
@@ -99,8 +100,8 @@ def _build_main_window(settings_path, extra_profile_dirs, kiosk):
 
 
 def _read_profiles(settings_path, extra_profile_dirs):
-    """The installed profiles, and ``EditorView.prepare``'s arguments for the one the window
-    starts with, as the settings name it (None if no profile is installed)."""
+    """The installed profiles, ``EditorView.prepare``'s arguments for the one the window starts
+    with, as the settings name it (None if no profile is installed), and the blocks' look."""
     from rockly_desktop.profiles.registry import ProfileRegistry
     from rockly_desktop.settings.app_settings import AppSettings
     from rockly_desktop.ui.texts import editor_page_texts
@@ -109,9 +110,9 @@ def _read_profiles(settings_path, extra_profile_dirs):
     language, profile_id = remembered.language, remembered.profile_id
     registry = ProfileRegistry.discover(extra_profile_dirs)
     if not registry.profiles:
-        return registry, None
+        return registry, None, remembered.block_look
     first = registry.profiles.get(profile_id) or registry.default()  # as MainWindow picks it
-    return registry, (first.editor_config(language), language, editor_page_texts(language))
+    return registry, (first.editor_config(language), language, editor_page_texts(language)), remembered.block_look
 
 
 def _main_window_class():

@@ -489,12 +489,18 @@
     return themes.get(name);
   }
 
-  function setLook(look) {
+  /** The page's classes for ``look``; returns its theme. Block colours are the profile's own: high contrast darkens
+   * them under white text and black outlines (rockly.css). */
+  function lookClasses(look) {
     look = look || {};
-    // Block colours are the profile's own: high contrast darkens them under white text and black outlines (rockly.css).
     document.getElementById('workspace').classList.toggle('rocklyHighContrast', Boolean(look.highContrast));
     document.getElementById('workspace').classList.toggle('rocklyLargeText', Boolean(look.largeText));
-    workspace.setTheme(lookTheme(look));
+    return lookTheme(look);
+  }
+
+  /** Show the blocks in another look (the setup gave the first). */
+  function setLook(look) {
+    workspace.setTheme(lookClasses(look));
     // Fields keep the size they measured in the old font: measure every one again, then the toolbox's
     // new width takes its room from the workspace, whose view keeps its corner.
     for (const block of workspace.getAllBlocks(false)) {
@@ -507,7 +513,7 @@
   }
 
   const calls = {
-    async setup({language, profile, media, first, texts, hidden}) {
+    async setup({language, profile, media, first, texts, hidden, look}) {
       if (language !== 'en') await loadScript('vendor/msg/' + language + '.js');
       Object.assign(Blockly.Msg, (texts && texts.blocklyMsg) || {});  // Blockly's keyboard hints, in Rockly's words
       // Prepared ahead of the program: nothing shows until `show`.
@@ -518,6 +524,7 @@
         toolbox: profile.toolbox,
         media,
         renderer: 'zelos',
+        theme: lookClasses(look),  // the look from the start: setting it later measures every block again
         grid: {spacing: 24, length: 3, colour: '#dfe3ea', snap: true},
         zoom: {controls: true, wheel: true, startScale: 0.8, maxScale: 2.5, minScale: 0.3, scaleSpeed: 1.15},
         trashcan: true,

@@ -40,6 +40,11 @@ def offline_web_profile() -> QWebEngineProfile:
     return profile
 
 
+def plain_look(look: dict) -> dict:
+    """``look`` as the page takes it: {"highContrast": bool, "largeText": bool}."""
+    return {"highContrast": bool(look.get("highContrast")), "largeText": bool(look.get("largeText"))}
+
+
 class EditorPage(QWebEnginePage):
     """A page that reports JavaScript errors instead of hiding them in the console."""
 
@@ -83,7 +88,7 @@ class EditorView(QWebEngineView):
         self._prepared = False  # the setup sent is prepare()'s, not yet claimed by start()
         self._prepared_answer = None  # its answer, when it came before start()
         self.known_block_types = frozenset()
-        self._look = {}
+        self._look = plain_look({})
         self.workspace = {}
         self.python = ""
         # Chromium starts and loads Blockly while Python goes on building the window.
@@ -101,7 +106,7 @@ class EditorView(QWebEngineView):
         meanwhile. A ``start`` with the same profile, language and texts then only shows
         the program and the workspace; any other ``start`` loads a fresh page.
         """
-        self._setup_args = self._setup(editor_config, language, None, texts, hidden=True)
+        self._setup_args = self._setup(editor_config, language, None, texts, hidden=True, look=self._look)
         self._prepared = True
         if self._page_state == "hello":
             self._send_setup()
@@ -115,7 +120,7 @@ class EditorView(QWebEngineView):
         ``on_first_result(result, error)`` gets its answer. ``texts`` are the page's own
         menu texts (``addBreakpoint``, ``removeBreakpoint``) in ``language``.
         """
-        setup = self._setup(editor_config, language, first_call, texts, hidden=False)
+        setup = self._setup(editor_config, language, first_call, texts, hidden=False, look=self._look)
         prepared, self._prepared = self._prepared, False
         self._on_first_result = on_first_result
         if prepared and self._page_state == "setup sent" and self._same_page(setup):
@@ -134,7 +139,7 @@ class EditorView(QWebEngineView):
             self.load(QUrl.fromLocalFile(str(paths.editor_page())))
 
     @staticmethod
-    def _setup(editor_config, language, first_call, texts, hidden) -> dict:
+    def _setup(editor_config, language, first_call, texts, hidden, look) -> dict:
         return {
             "language": language,
             "profile": editor_config,
@@ -142,11 +147,12 @@ class EditorView(QWebEngineView):
             "first": {"call": first_call[0], "args": first_call[1]} if first_call else None,
             "texts": texts,
             "hidden": hidden,
+            "look": look,
         }
 
     def _same_page(self, setup: dict) -> bool:
         """True when ``setup`` asks for the page the prepared setup made."""
-        ignored = ("first", "hidden")
+        ignored = ("first", "hidden", "look")  # a look set meanwhile follows the setup (set_look)
         return ({key: value for key, value in setup.items() if key not in ignored}
                 == {key: value for key, value in self._setup_args.items() if key not in ignored})
 
@@ -179,9 +185,19 @@ class EditorView(QWebEngineView):
 
     def set_look(self, look: dict):
         """Show the blocks with ``look`` ({"highContrast": bool, "largeText": bool}), this page and every
-        page loaded later."""
-        self._look = dict(look)
-        self.call("setLook", self._look)
+        page loaded later.
+
+        A page not yet set up gets it with its setup, which injects Blockly in that look: changing the
+        look of a page with blocks measures every block again (some 200 ms for 300 blocks).
+        """
+        look = plain_look(look)
+        if look == self._look:
+            return
+        self._look = look
+        if self._setup_args is not None:
+            self._setup_args["look"] = look  # a setup not sent yet, or a page loaded again
+        if self._page_state == "setup sent":
+            self.call("setLook", look)
 
     def clear(self):
         """Empty the workspace."""
@@ -198,8 +214,6 @@ class EditorView(QWebEngineView):
     def _on_hello(self):
         self.channel.reset()
         self._page_state = "hello"
-        if self._look and self._setup_args is not None:  # a reloaded page is told the look anew
-            self.channel.call("setLook", self._look)
         if self._setup_args is not None:
             self._send_setup()
 

@@ -9,11 +9,14 @@ import sys
 
 import pytest
 from page_tools import run_js
+from program_builder import number, rockly_document
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QAccessible
 from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication, QDockWidget, QTabBar, QWidget
 
+from rockly_desktop.bridge.channel import PageChannel
+from rockly_desktop.settings.app_settings import AppSettings
 from rockly_desktop.ui.help_dialogs import shortcuts_html
 from rockly_desktop.ui.preferences.preferences import PreferencesDialog
 from rockly_desktop.ui.texts import tr
@@ -222,6 +225,26 @@ def test_high_contrast_and_larger_text_from_preferences_stay_through_a_language_
     qtbot.waitUntil(lambda: window.language == "de" and window.editor.is_ready, timeout=15000)
     qtbot.waitUntil(lambda: run_js(qtbot, window.editor, LOOK)["contrast"], timeout=5000)
     qtbot.waitUntil(lambda: run_js(qtbot, window.editor, LOOK)["size"] == after["size"], timeout=5000)
+
+
+@pytest.mark.parametrize("look", [{"highContrast": True, "largeText": True},
+                                  {"highContrast": False, "largeText": False}], ids=["contrast-and-large", "plain"])
+def test_a_window_starts_in_the_remembered_look_without_measuring_its_blocks_again(qtbot, driver, tmp_path,
+                                                                                   monkeypatch, look):
+    # The look goes with the page's setup: a setLook after the start-up program measured its blocks again.
+    AppSettings(driver.settings_path).block_look = look
+    program = tmp_path / "drive.rockly"
+    program.write_text(rockly_document([{"type": "hobbit_move", "fields": {"direction": "+"}, "x": 10, "y": 10,
+                                                "inputs": {"speed": {"shadow": number(1)}}}]))
+    calls = []
+    original_call = PageChannel.call
+    monkeypatch.setattr(PageChannel, "call", lambda self, name, *args, **kwargs: calls.append(name)
+                        or original_call(self, name, *args, **kwargs))
+    window = driver.open_window(program)
+    shown = run_js(qtbot, window.editor, LOOK)
+    assert shown["contrast"] == look["highContrast"]
+    assert shown["theme"] == "rockly" + "-contrast" * look["highContrast"] + "-large" * look["largeText"]
+    assert "setLook" not in calls, calls
 
 
 def test_the_control_that_has_the_keyboard_wears_a_thick_orange_ring_on_every_dock(qtbot, window):
