@@ -63,6 +63,10 @@ class KeyboardAccess(QObject):
     ``editor`` is the block editor, ``run_toolbar()`` the run toolbar of the moment, ``docks`` the
     window's ``registry.Docks``, ``language()`` the window's language; with ``settings.kiosk_mode`` a
     closed dock stays closed. Each signal in ``renamed_on`` says that controls may have come or gone.
+
+    The keys work at once; the controls get their names, the toolbar's buttons the keyboard and the
+    ring its first control once the editor is up (or has said it cannot start): done while the window
+    was built, that work (Python wrappers and enums for every control) delayed the editor's start.
     """
 
     def __init__(self, frame, editor, run_toolbar, docks, language, settings, renamed_on=()):
@@ -87,12 +91,12 @@ class KeyboardAccess(QObject):
             self.jump_actions[key] = action
         QApplication.instance().focusChanged.connect(self._on_focus_changed)
         self._following = True
-        self._connections = [(editor.sig_ready, self._on_editor_ready)]
-        self._connections += [(signal, self.name_controls) for signal in renamed_on]
+        self._controls_set_up = False
+        self._connections = [(editor.sig_ready, self._on_editor_ready),
+                             (editor.sig_page_error, self._set_up_controls)]
+        self._connections += [(signal, self._rename) for signal in renamed_on]
         for signal, slot in self._connections:
             signal.connect(slot)
-        self._toolbar_buttons_take_focus()
-        self.name_controls()
 
     def stop(self):
         """The window is closing: follow the application's focus, the editor and the signals that rename no
@@ -232,13 +236,30 @@ class KeyboardAccess(QObject):
         self._toolbar_buttons_take_focus()  # (the toolbar was made anew)
         name_controls(self.frame, language, self._editor, self._run_toolbar())
 
-    def _on_editor_ready(self):
+    def _set_up_controls(self, *_args):
+        """Name the controls and let the toolbar's buttons take the keyboard (the first time only)."""
+        if self._controls_set_up or not shiboken6.isValid(self.frame):
+            return
+        self._controls_set_up = True
+        self._toolbar_buttons_take_focus()
         self.name_controls()
+
+    def _rename(self, *_args):
+        if self._controls_set_up:  # (before, the set-up names them all)
+            self.name_controls()
+
+    def _on_editor_ready(self):
+        if self._controls_set_up:
+            self.name_controls()  # a new page (another robot or language): controls may have changed
+        else:
+            self._set_up_controls()
         focused = QApplication.focusWidget()
         if focused is None or _inside(focused, self._editor):  # a fresh window: keys go to the blocks
             self.give_focus(self._editor)
 
     def _on_focus_changed(self, _old, new):
+        if not self._controls_set_up:
+            return  # the editor's start gives the keyboard to the blocks, with the ring
         if not shiboken6.isValid(self.frame) or new is None or new.window() is not self.frame:
             return  # (another window, a dialog, has the keyboard: the ring stays where it comes back to)
         if not new.accessibleName():  # a control made since the window was last named

@@ -13,7 +13,7 @@ from program_builder import number, rockly_document
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QAccessible
 from PySide6.QtTest import QTest
-from PySide6.QtWidgets import QApplication, QDockWidget, QTabBar, QWidget
+from PySide6.QtWidgets import QApplication, QDockWidget, QTabBar, QToolButton, QWidget
 
 from rockly_desktop.bridge.channel import PageChannel
 from rockly_desktop.settings.app_settings import AppSettings
@@ -314,3 +314,42 @@ def test_a_window_deleted_without_closing_says_nothing_of_its_deleted_controls(q
     window.deleteLater()
     QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
     assert errors == []
+
+
+def test_the_controls_are_named_once_the_editor_is_up_not_while_the_window_is_built(qtbot, driver, monkeypatch):
+    # Naming every control made Python wrappers and enums for each while the editor waited for its program.
+    from rockly_desktop.app import build_main_window
+    from rockly_desktop.ui import keyboard
+
+    named = []
+    name_controls = keyboard.name_controls
+    monkeypatch.setattr(keyboard, "name_controls", lambda *args: named.append(args) or name_controls(*args))
+    window = build_main_window(driver.settings_path)
+    driver.windows.append(window)
+    window.show()
+    assert named == []
+    with qtbot.waitSignal(window.editor.sig_ready, timeout=30000):
+        window.start()
+    assert len(named) == 1
+    assert QAccessible.queryAccessibleInterface(window.run_toolbar.speed).text(QAccessible.Text.Name) \
+        == tr("speed", "en")
+    assert all(button.focusPolicy() == Qt.FocusPolicy.TabFocus
+               for button in window.run_toolbar.findChildren(QToolButton) if button.defaultAction() is not None)
+    qtbot.waitUntil(lambda: window.editor.hasFocus() or window.editor.focusProxy().hasFocus(), timeout=5000)
+
+
+def test_a_window_whose_editor_cannot_start_still_names_its_controls(qtbot, driver, monkeypatch):
+    from rockly_desktop.app import build_main_window
+    from rockly_desktop.bridge.editor_view import EditorView
+
+    setup = EditorView._setup
+    monkeypatch.setattr(EditorView, "_setup", staticmethod(lambda *args, **kwargs: {**setup(*args, **kwargs),
+                                                                                    "profile": None}))
+    window = build_main_window(driver.settings_path)
+    driver.windows.append(window)
+    window.show()
+    with qtbot.waitSignal(window.editor.sig_page_error, timeout=30000):
+        window.start()
+    qtbot.waitUntil(lambda: QAccessible.queryAccessibleInterface(window.run_toolbar.speed)
+                    .text(QAccessible.Text.Name) == tr("speed", "en"), timeout=5000)
+    assert not window.editor.is_ready
