@@ -330,7 +330,7 @@ def test_the_controls_are_named_once_the_editor_is_up_not_while_the_window_is_bu
     assert named == []
     with qtbot.waitSignal(window.editor.sig_ready, timeout=30000):
         window.start()
-    assert len(named) == 1
+    assert named  # (a robot shown or a tab switched later names them again)
     assert QAccessible.queryAccessibleInterface(window.run_toolbar.speed).text(QAccessible.Text.Name) \
         == tr("speed", "en")
     assert all(button.focusPolicy() == Qt.FocusPolicy.TabFocus
