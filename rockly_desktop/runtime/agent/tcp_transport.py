@@ -1,10 +1,12 @@
 """The agent's TCP transport: JSON lines (``agent.protocol``) on one connection per client.
 
 ``AgentServer`` offers an ``Agent`` on a TCP port (the agent's side); ``TcpLine`` is a client's connection to
-it (``AgentClient``'s side). A connection that closes is a client gone.
+it (``AgentClient``'s side). A connection that closes is a client gone, and so is one that takes nothing the
+agent sends for ``SEND_SECONDS``.
 """
 import socket
 import socketserver
+import struct
 import threading
 
 from rockly_desktop.core.app_texts import app_text
@@ -71,6 +73,12 @@ class TcpLine:
         self._gone()
 
 
+# A client whose connection takes none of what the agent sends for this long (a laptop gone to sleep, a cut
+# network: TCP closes nothing) is dropped: the run's events and the agent's beats to every other client wait
+# for each send, and the program itself waits once its events back up.
+SEND_SECONDS = 2.0
+
+
 class _Client:
     """One connected client: its socket, language, and whether it watches the run."""
 
@@ -81,14 +89,26 @@ class _Client:
         self.attached = False
         self.wants_control = False
         self._lock = threading.Lock()
+        self._dropped = False
+        whole, part = divmod(SEND_SECONDS, 1)
+        connection.setsockopt(socket.SOL_SOCKET, socket.SO_SNDTIMEO, struct.pack("ll", int(whole), int(part * 1e6)))
 
     def send(self, message: dict) -> bool:
-        try:
-            with self._lock:
+        """Send ``message``; False when the client is gone or has been dropped for taking nothing (its connection
+        is then shut, which ends its reader and so its place among the agent's clients)."""
+        with self._lock:
+            if self._dropped:
+                return False
+            try:
                 self.connection.sendall(encode(message))
-            return True
-        except OSError:
-            return False
+                return True
+            except OSError:  # closed, or SEND_SECONDS without taking a byte: a line cut mid-message is no line
+                self._dropped = True
+                try:
+                    self.connection.shutdown(socket.SHUT_RDWR)
+                except OSError:
+                    pass
+                return False
 
     deliver = send  # the run's events: each TCP client gets its own copy
 
