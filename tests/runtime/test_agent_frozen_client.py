@@ -1,7 +1,10 @@
-"""A client that takes nothing any more (a laptop gone to sleep, a cut network: TCP closes nothing) is dropped by the
-agent (``rockly agent`` in a process of its own): the run, the other clients and a STOP do not wait for it."""
+"""A client that takes nothing any more (a laptop gone to sleep, a cut network: TCP closes nothing), or takes the
+run's events far slower than they come (bad Wi-Fi), is dropped by the agent (``rockly agent`` in a process of its
+own): the run, the other clients and a STOP do not wait for it."""
 import json
 import socket
+import threading
+import time
 
 import pytest
 from agent_tools import AgentProcess
@@ -37,9 +40,8 @@ def agent(tmp_path, chatty_program):
     agent.stop()
 
 
-def asleep_watcher(port: int) -> socket.socket:
-    """A client that says hello, watches the run, and then reads nothing (with a small receive buffer: it is full
-    at once)."""
+def watcher(port: int) -> socket.socket:
+    """A client that says hello and watches the run (with a small receive buffer: it fills at once)."""
     connection = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
     connection.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
     connection.connect(("127.0.0.1", port))
@@ -49,23 +51,51 @@ def asleep_watcher(port: int) -> socket.socket:
     return connection
 
 
-def test_a_client_that_takes_nothing_is_dropped_and_holds_up_neither_the_run_nor_a_stop(agent):
-    asleep = asleep_watcher(agent.port)
+class SlowReader:
+    """Takes 4 kB of what ``connection`` holds every 20 ms (some 200 kB/s) until it ends."""
+
+    def __init__(self, connection):
+        self.connection = connection
+        self.ended = threading.Event()
+        self._thread = threading.Thread(target=self._read, daemon=True)
+        self._thread.start()
+
+    def _read(self):
+        try:
+            while self.connection.recv(4096):
+                time.sleep(0.02)
+        except OSError:
+            pass
+        self.ended.set()
+
+    def join(self):
+        self._thread.join(10)
+
+
+@pytest.mark.parametrize("kind", ["asleep", "slow"])
+def test_a_client_that_cannot_keep_up_is_dropped_and_holds_up_neither_the_run_nor_a_stop(agent, kind):
+    behind = watcher(agent.port)
+    reader = SlowReader(behind) if kind == "slow" else None
     printed = []
     editor = AgentClient("127.0.0.1", agent.port, on_event=lambda event: event.get("event") == "print"
                          and printed.append(len(event.get("text", ""))))
     try:
         editor.attach(control=True)
         editor.start("chatty")
-        # far more than the asleep client's connection holds (its buffer and the agent's, 4 MB at most): before,
-        # every event then waited for it, the program with them, and the editor heard nothing more
+        # far more than the client behind can take meanwhile: before, every event waited for it, the program with
+        # them, and the editor heard events only as fast as that client took them (asleep: no more at all)
         eventually(lambda: sum(printed) > 40_000_000, 120)
         assert editor.stop()
         eventually(lambda: editor.programs()["run"] is None, 4 * SEND_SECONDS + 10)
-        # the agent shut the asleep client's connection: what it had taken is followed by the end
-        asleep.settimeout(30)
-        while asleep.recv(1 << 20):
-            pass
+        # the agent shut the connection of the client behind: what it had taken is followed by the end
+        if reader is not None:
+            eventually(reader.ended.is_set, 30)
+        else:
+            behind.settimeout(30)
+            while behind.recv(1 << 20):
+                pass
     finally:
         editor.close()
-        asleep.close()
+        behind.close()
+        if reader is not None:
+            reader.join()

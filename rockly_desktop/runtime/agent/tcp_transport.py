@@ -2,8 +2,9 @@
 
 ``AgentServer`` offers an ``Agent`` on a TCP port (the agent's side); ``TcpLine`` is a client's connection to
 it (``AgentClient``'s side). A connection that closes is a client gone, and so is one that takes nothing the
-agent sends for ``SEND_SECONDS``.
+agent sends for ``SEND_SECONDS`` or falls ``OUTBOX_BYTES`` behind.
 """
+import collections
 import socket
 import socketserver
 import struct
@@ -73,14 +74,16 @@ class TcpLine:
         self._gone()
 
 
-# A client whose connection takes none of what the agent sends for this long (a laptop gone to sleep, a cut
-# network: TCP closes nothing) is dropped: the run's events and the agent's beats to every other client wait
-# for each send, and the program itself waits once its events back up.
+# What the agent sends a client waits in the client's own outbox, written by a thread of its own: the run's
+# events, the beats to the other clients and the program itself (whose events would back up) never wait for a
+# client's network. A client is dropped, its connection shut, when its connection takes none of it for
+# SEND_SECONDS (a laptop gone to sleep, a cut network: TCP closes nothing) or when it falls OUTBOX_BYTES behind.
 SEND_SECONDS = 2.0
+OUTBOX_BYTES = 16 * 1024 * 1024
 
 
 class _Client:
-    """One connected client: its socket, language, and whether it watches the run."""
+    """One connected client: its socket, language, whether it watches the run, and its outbox."""
 
     def __init__(self, connection):
         self.connection = connection
@@ -88,29 +91,66 @@ class _Client:
         self.name = "?"
         self.attached = False
         self.wants_control = False
-        self._lock = threading.Lock()
+        self._outbox = collections.deque()
+        self._outbox_bytes = 0
+        self._changed = threading.Condition()
         self._dropped = False
         whole, part = divmod(SEND_SECONDS, 1)
         connection.setsockopt(socket.SOL_SOCKET, socket.SO_SNDTIMEO, struct.pack("ll", int(whole), int(part * 1e6)))
+        self._writer = threading.Thread(target=self._write, name="rockly-agent-client-send", daemon=True)
+        self._writer.start()
 
     def send(self, message: dict) -> bool:
-        """Send ``message``; False when the client is gone or has been dropped for taking nothing (its connection
-        is then shut, which ends its reader and so its place among the agent's clients)."""
-        with self._lock:
+        """Queue ``message`` for the client; False when it is gone or has been dropped (see ``OUTBOX_BYTES``)."""
+        data = encode(message)
+        with self._changed:
             if self._dropped:
                 return False
-            try:
-                self.connection.sendall(encode(message))
-                return True
-            except OSError:  # closed, or SEND_SECONDS without taking a byte: a line cut mid-message is no line
-                self._dropped = True
-                try:
-                    self.connection.shutdown(socket.SHUT_RDWR)
-                except OSError:
-                    pass
+            if self._outbox_bytes + len(data) > OUTBOX_BYTES:
+                self._drop()
                 return False
+            self._outbox.append(data)
+            self._outbox_bytes += len(data)
+            self._changed.notify()
+        return True
 
     deliver = send  # the run's events: each TCP client gets its own copy
+
+    def close(self):
+        """The client has gone: its writer ends (what it had not taken is dropped)."""
+        with self._changed:
+            self._drop()
+        self._writer.join(SEND_SECONDS + 1)
+
+    def _write(self):
+        while True:
+            with self._changed:
+                while not self._outbox and not self._dropped:
+                    self._changed.wait()
+                if self._dropped:
+                    return
+                data = self._outbox.popleft()
+                self._outbox_bytes -= len(data)
+            try:
+                self.connection.sendall(data)
+            except OSError:  # closed, or SEND_SECONDS without taking a byte: a line cut mid-message is no line
+                with self._changed:
+                    self._drop()
+                return
+
+    def _drop(self):
+        """(with ``_changed`` held) Stop sending and shut the connection, which ends its reader and so its place
+        among the agent's clients."""
+        if self._dropped:
+            return
+        self._dropped = True
+        self._outbox.clear()
+        self._outbox_bytes = 0
+        self._changed.notify_all()
+        try:
+            self.connection.shutdown(socket.SHUT_RDWR)
+        except OSError:
+            pass
 
 
 def serve_connection(agent, connection):
@@ -135,6 +175,7 @@ def serve_connection(agent, connection):
         pass
     finally:
         agent.leave(client)
+        client.close()
 
 
 class AgentServer(socketserver.ThreadingTCPServer):
