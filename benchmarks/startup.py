@@ -96,9 +96,9 @@ def child_rockly(program: str, settings: str):
             app.quit()
 
     code.textChanged.connect(check)
-    window.show()
-    window.start(program)
+    window.start(program)  # in run_gui's order
     phase("program sent")
+    window.show()
     app.exec()
     window.deleteLater()
 

@@ -20,7 +20,12 @@ def prepare_qt_environment():
     flags = os.environ.get("QTWEBENGINE_CHROMIUM_FLAGS", "")
     if "--log-level" not in flags:
         # Chromium's own log (D-Bus, GPU probing) means nothing to Rockly's users.
-        os.environ["QTWEBENGINE_CHROMIUM_FLAGS"] = f"{flags} --log-level=3".strip()
+        flags = f"{flags} --log-level=3"
+    if "--disable-renderer-backgrounding" not in flags:
+        # The editor page loads its start-up program before the window shows (``run_gui``): Chromium would run
+        # a page not yet on screen at a lower priority, and load it a third slower.
+        flags = f"{flags} --disable-renderer-backgrounding"
+    os.environ["QTWEBENGINE_CHROMIUM_FLAGS"] = flags.strip()
 
 
 def route_qt_messages_to_logging():
@@ -161,9 +166,9 @@ def run_gui(open_path=None, kiosk: bool = False) -> int:
         return 1
     if kiosk and start_kiosk(window, open_path) is None:
         return 2
-    if not kiosk:
-        window.show()
     window.start(open_path)
+    if not kiosk:  # after start(): the page loads the program before Chromium draws an empty editor (decision 017)
+        window.show()
     return app.exec()
 
 

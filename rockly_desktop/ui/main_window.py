@@ -179,6 +179,10 @@ class MainWindow(QMainWindow):
         self._starting = False
         if not self._editor_started:
             self._restart_editor()
+        QTimer.singleShot(0, self._ask_what_the_start_found)  # once the window shows (it may show after start())
+
+    def _ask_what_the_start_found(self):
+        """Offer the unsaved program a Rockly that did not close cleanly left behind; name the profiles that broke."""
         recovery = claim_abandoned()
         if recovery is not None:
             self.recovery_prompt = RecoveryPrompt(recovery, self.files, self.autosave, self.language, self)

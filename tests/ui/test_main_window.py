@@ -8,6 +8,7 @@ from PySide6.QtCore import QCoreApplication
 from PySide6.QtWidgets import QLabel, QMessageBox
 from window_tools import WindowDriver, error_boxes, state
 
+import rockly_desktop.app as app
 from rockly_desktop.ui.preferences.preferences import PreferencesDialog
 
 REPO_HOBBIT = __import__("pathlib").Path(__file__).resolve().parents[2] / "profiles" / "hobbit"
@@ -19,8 +20,6 @@ def menu_titles(window) -> list:
 
 def test_python_collects_garbage_again_once_the_editor_is_ready(qtbot, driver, monkeypatch):
     # The start's own objects are not collected among while it runs; afterwards collecting goes on as before.
-    import rockly_desktop.app as app
-
     enabled_while_reading = []
     read_profiles = app._read_profiles
     monkeypatch.setattr(app, "_read_profiles", lambda *args: enabled_while_reading.append(gc.isenabled())
@@ -33,6 +32,30 @@ def test_python_collects_garbage_again_once_the_editor_is_ready(qtbot, driver, m
     with qtbot.waitSignal(window.editor.sig_ready, timeout=30000):
         window.start()
     assert gc.isenabled() and gc.get_freeze_count() == 0
+
+
+def test_a_window_started_before_it_shows_opens_its_program_and_asks_once_it_is_shown(qtbot, tmp_path, monkeypatch):
+    # run_gui's order: the program goes to the page first; what the start found is asked in the shown window.
+    extra = tmp_path / "profiles"
+    shutil.copytree(REPO_HOBBIT, extra / "broken", ignore=shutil.ignore_patterns("__pycache__"))
+    manifest = extra / "broken" / "profile.yaml"
+    manifest.write_text(manifest.read_text().replace("id: hobbit", "id: broken").replace("blocks.yaml", "no.yaml"))
+    program = tmp_path / "drive.rockly"
+    program.write_text(rockly_document([block("hobbit_move", {"direction": "+"}, {"speed": number(2)})]))
+    window_shown_when_asked = []
+    monkeypatch.setattr(QMessageBox, "open", lambda box: window_shown_when_asked.append(box.parent().isVisible())
+                        or QMessageBox.show(box))
+    driver = WindowDriver(qtbot, tmp_path / "settings.ini", [extra])
+    try:
+        window = app.build_main_window(driver.settings_path, [extra])
+        driver.windows.append(window)
+        with qtbot.waitSignal(window.editor.sig_ready, timeout=30000):
+            window.start(str(program))
+            window.show()
+        assert window.editor.python == "robot.drive(2, 'forward')\n"
+        qtbot.waitUntil(lambda: window_shown_when_asked == [True], timeout=5000)
+    finally:
+        driver.close_all()
 
 
 def test_window_shows_hobbit_toolbox_code_dock_and_robot(qtbot, window):
