@@ -179,7 +179,8 @@ class MainWindow(QMainWindow):
         self._starting = False
         if not self._editor_started:
             self._restart_editor()
-        QTimer.singleShot(0, self._ask_what_the_start_found)  # once the window shows (it may show after start())
+        # once the window shows (it may show after start()); not at all once the window is gone
+        QTimer.singleShot(0, self, self._ask_what_the_start_found)
 
     def _ask_what_the_start_found(self):
         """Offer the unsaved program a Rockly that did not close cleanly left behind; name the profiles that broke."""
