@@ -102,7 +102,7 @@ class Run:
         except RocklyError as error:  # the profile's commands could not be made
             return self.fail(error)
         finally:
-            self.stopped_by = signals.signum or self.stopped_by
+            self.stopped_by = signals.signum or signal.SIGINT
             if recording is not None:
                 recording.close()
             robot.shutdown()

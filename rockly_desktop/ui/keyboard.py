@@ -249,8 +249,10 @@ class KeyboardAccess(QObject):
             self.name_controls()
 
     def _on_editor_ready(self):
-        self._rename()  # a new page (another robot or language): controls may have changed
-        self._set_up_controls()  # (the first page)
+        if self._controls_set_up:
+            self.name_controls()  # a new page (another robot or language): controls may have changed
+        else:
+            self._set_up_controls()
         focused = QApplication.focusWidget()
         if focused is None or _inside(focused, self._editor):  # a fresh window: keys go to the blocks
             self.give_focus(self._editor)

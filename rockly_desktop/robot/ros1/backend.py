@@ -260,23 +260,22 @@ class Ros1Backend(RobotBackend):
         answers. Subscribers a whole wait ended without (one of another type, one that cannot reach this computer's
         address) are not waited for again, unless the master lists more of them."""
         topic = publisher.resolved_name
-        expected = self.graph.subscriber_count(topic)
-        if expected and self.graph.unreached.get(topic) == expected:
+        expected = [self.graph.subscriber_count(topic)]
+        if expected[0] and self.graph.unreached.get(topic) == expected[0]:
             return
 
         def all_connected() -> bool:
-            nonlocal expected
-            if publisher.get_num_connections() < expected:
+            if publisher.get_num_connections() < expected[0]:
                 return False
             # enough connections: but one may be a subscriber that came meanwhile (this node's own state feed
             # following the new topic) while a listed one is still connecting; counted again, the master says
-            expected = self.graph.subscriber_count(topic)
-            return publisher.get_num_connections() >= expected
+            expected[0] = self.graph.subscriber_count(topic)
+            return publisher.get_num_connections() >= expected[0]
 
         if self.wait_until(all_connected, FIRST_PUBLISH_WAIT):
             self.graph.unreached.pop(topic, None)
         else:
-            self.graph.unreached[topic] = expected
+            self.graph.unreached[topic] = expected[0]
 
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
         """Publish on ``topic`` (a new publisher first waits for its subscribers to connect)."""
