@@ -19,6 +19,7 @@ import yaml
 from rockly_desktop.core.app_texts import app_local_text, app_text
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.ros_definitions import learn_definition
+from rockly_desktop.core.yaml_nesting import too_deep
 from rockly_desktop.profiles.packs.archive import export_pack, import_pack
 from rockly_desktop.profiles.packs.interfaces import fields_of_block_kind, knows_type
 from rockly_desktop.profiles.packs.making import save_block
@@ -125,8 +126,8 @@ def _pairs(entries, option):
 
 def _value(text, kind):
     """A value typed on the command line, as the kind of value it is for."""
-    if kind == "text":
-        return text
+    if kind == "text" or too_deep(text):
+        return text  # a value that nests too deeply for the parser is not one a field takes: said as not fitting
     return yaml.safe_load(text) if text.strip() else None
 
 

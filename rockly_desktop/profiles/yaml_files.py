@@ -12,6 +12,7 @@ from pathlib import Path
 
 from rockly_desktop.core import paths
 from rockly_desktop.core.errors import ManifestError
+from rockly_desktop.core.yaml_nesting import MAX_NESTING, too_deep
 
 CACHE_FORMAT = 1
 
@@ -51,6 +52,10 @@ def _parse(path: Path, text: str) -> dict:
     import yaml  # only when a file is not in the cache: importing PyYAML takes a while too
 
     loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)  # libyaml's when PyYAML has it: several times faster
+    depth = too_deep(text)
+    if depth is not None:
+        raise ManifestError(path, None, f"this YAML nests up to {depth} levels deep; Rockly reads at most "
+                                        f"{MAX_NESTING}")
     try:
         alias = _first_alias(yaml, loader, text)
         if alias is not None:

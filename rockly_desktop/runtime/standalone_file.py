@@ -10,6 +10,7 @@ import re
 
 from rockly_desktop import __version__
 from rockly_desktop.core.app_texts import app_text
+from rockly_desktop.core.export import comment_line
 from rockly_desktop.robot.wrappers.limits import Limits
 from rockly_desktop.runtime.standalone import FORMAT, limits_data
 
@@ -57,8 +58,8 @@ def standalone_text(source: str, profile, run_code: dict, types: dict, limits: L
     missing = app_text("standalone_no_runtime", language)
     return "\n".join([
         "#!/usr/bin/env python3",
-        f"# {header}",
-        f"#   {usage}",
+        f"# {comment_line(header)}",
+        f"#   {comment_line(usage)}",
         "import sys",
         "",
         "PROGRAM = " + data_literal(program),

@@ -1,7 +1,7 @@
 """A block pack as one zip file, to share between laptops.
 
 The zip holds the pack's folder (``PACK_ID/pack.yaml``, ...). Importing checks every entry
-before anything is written (no absolute path, no ``..``, no link, a bounded size), unpacks
+before anything is written (no absolute path, no ``..``, no link, no name twice, a bounded size), unpacks
 into a hidden folder beside the packs, reads it as a pack (manifest, blocks, toolbox), checks
 that it can join the profile it adds to, and only then puts it in place.
 """
@@ -66,6 +66,9 @@ def _checked_entries(path: Path, archive: zipfile.ZipFile) -> tuple:
         if not info.is_dir():
             entries.append((info, pure))
     names = {pure for _info, pure in entries}
+    if len(names) < len(entries):  # zip listers show the first copy, unpacking keeps the last: which is the pack?
+        twice = next(pure for pure in names if sum(entry == pure for _info, entry in entries) > 1)
+        raise BlockMakerError(app_local_text("pack_zip_bad", path=path, problem=f"it holds {twice} twice"))
     if PurePosixPath(PACK_MANIFEST) in names:
         return "", entries
     tops = {pure.parts[0] for pure in names}

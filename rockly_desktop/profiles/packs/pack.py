@@ -23,10 +23,14 @@ from rockly_desktop.profiles.blocks import read_blocks
 from rockly_desktop.profiles.i18n import localize
 from rockly_desktop.profiles.manifest import MANIFEST_FIELDS, FieldSpec, read_fields
 from rockly_desktop.profiles.packs.spec import MadeBlock
+from rockly_desktop.profiles.packs.template_check import TemplateRefused, check_template
 from rockly_desktop.profiles.toolbox import read_toolbox
 from rockly_desktop.profiles.yaml_files import read_yaml_mapping
 
 PACK_MANIFEST = "pack.yaml"
+# Blockly's own block families: a pack defining one of them would change what every program's
+# loops, numbers and texts do (a profile's and another pack's types are refused when it joins).
+BLOCKLY_PREFIXES = ("controls_", "logic_", "math_", "text", "lists_", "variables_", "procedures_", "colour_")
 MADE_FILE = "made.yaml"
 _SHARED = {spec.name: spec for spec in MANIFEST_FIELDS}
 PACK_FIELDS = (
@@ -116,6 +120,19 @@ def check_definitions(folder: Path) -> None:
             raise ManifestError(path, None, problem)
 
 
+def check_pack_blocks(path: Path, blocks) -> None:
+    """Raise ManifestError for the first block of a pack's block file (``path``) that redefines one of
+    Blockly's own block types or whose template does more than call Rockly's commands (``template_check``)."""
+    for index, spec in enumerate(blocks):
+        if spec.type.startswith(BLOCKLY_PREFIXES):
+            raise ManifestError(path, f"blocks[{index}].type", f"'{spec.type}' is one of Blockly's own block "
+                                                               f"types (or named like them); a pack adds new ones")
+        try:
+            check_template(spec.code, spec.slots, spec.handlers)
+        except TemplateRefused as refusal:
+            raise ManifestError(path, f"blocks[{index}].python.code", str(refusal)) from None
+
+
 def load_pack(folder, shared_toolboxes: Path = None) -> Pack:
     """Read and check a whole pack folder; raise ManifestError on the first problem."""
     folder = Path(folder)
@@ -123,6 +140,7 @@ def load_pack(folder, shared_toolboxes: Path = None) -> Pack:
         raise ManifestError(folder / PACK_MANIFEST, None, "no block pack manifest here (pack.yaml is missing)")
     manifest = read_pack_manifest(folder)
     blocks = read_blocks(folder / manifest["blocks"])
+    check_pack_blocks(folder / manifest["blocks"], blocks)
     toolbox_path = folder / manifest["toolbox"]
     categories = read_toolbox(toolbox_path, shared_toolboxes or paths.shared_toolboxes_dir(),
                               {spec.type for spec in blocks})

@@ -26,6 +26,8 @@ from pathlib import Path
 
 import yaml
 
+from rockly_desktop.core.yaml_nesting import MAX_NESTING, too_deep
+
 CONTACT = 1e-4          # m: a footprint this close to an obstacle touches it
 STEP = 0.01             # m: the longest straight piece a swept motion checks at once
 TURN_STEP = 0.1         # rad: the largest turn a swept motion checks at once
@@ -228,8 +230,12 @@ def load_world(path, texts=None) -> World:
     ValueError naming the file and what is wrong."""
     path = Path(path)
     try:
-        data = yaml.load(path.read_text(encoding="utf-8"), Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
-    except (OSError, yaml.YAMLError) as error:
+        text = path.read_text(encoding="utf-8")
+        depth = too_deep(text)
+        if depth is not None:
+            raise ValueError(f"{path}: this YAML nests up to {depth} levels deep; Rockly reads at most {MAX_NESTING}")
+        data = yaml.load(text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
+    except (OSError, UnicodeDecodeError, yaml.YAMLError) as error:
         raise ValueError(f"{path}: {error}") from None
     return World.from_data(data, str(path), texts)
 
