@@ -64,6 +64,7 @@ def add_agent_parser(commands, language_option):
 
 def _agent_options(agent):
     from rockly_desktop.robot import links
+    from rockly_desktop.runtime.agent.library import DEFAULT_QUOTA_BYTES
     from rockly_desktop.runtime.options import add_connection_options
 
     agent.add_argument("--backend", default=links.DEFAULT_KIND, choices=[entry.kind for entry in links.link_kinds()],
@@ -73,6 +74,8 @@ def _agent_options(agent):
     agent.add_argument("--host", default="0.0.0.0", help=app_text("agent_host_help", "en"))
     agent.add_argument("--port", type=int, default=DEFAULT_PORT, help=app_text("agent_port_help", "en"))
     agent.add_argument("--speed", type=float, default=1.0, help=app_text("standalone_speed_help", "en"))
+    agent.add_argument("--library-quota", type=int, metavar="MB", default=DEFAULT_QUOTA_BYTES // 2**20,
+                       help=app_text("agent_quota_help", "en", megabytes=DEFAULT_QUOTA_BYTES // 2**20))
     agent.add_argument("--namespace", default=DEFAULT_NAMESPACE,
                        help=app_text("agent_namespace_help", "en", namespace=DEFAULT_NAMESPACE))
     agent.add_argument("--offer-on-robot-ui", metavar="PROFILE", help=app_text("agent_offer_help", "en"))
@@ -130,7 +133,8 @@ def serve(args, language: str) -> int:
         value = connection(args.backend, args).get(setting.name)
         if setting.option and value is not None:
             options += [setting.option, str(value)]
-    agent = Agent(Library(folder, ProfileRegistry.discover().profiles), args.backend, options)
+    agent = Agent(Library(folder, ProfileRegistry.discover().profiles, args.library_quota * 2**20), args.backend,
+                  options)
     close_offer = _offer_on_robot_ui(agent, args, language)
     if close_offer is False:
         return 2

@@ -22,10 +22,13 @@ from rockly_desktop.core.program import parse_program
 from rockly_desktop.core.workspace_checks import workspace_problem
 from rockly_desktop.recording.mcap_file import disk_full
 from rockly_desktop.runtime import standalone
+from rockly_desktop.runtime.agent.program_check import standalone_parts
 from rockly_desktop.runtime.agent.protocol import DEFAULT_DECIDE_SECONDS, LOST_EDITOR_CHOICES, AgentRefusal
 
 NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_.\- ]{0,63}$")
 STANDALONE, SOURCE, ABOUT = "program.py", "program.rockly", "about.json"
+VERSION = re.compile(r"^[0-9A-Za-z][0-9A-Za-z.+\-]{0,39}$")
+DEFAULT_QUOTA_BYTES = 256 * 1024 * 1024  # the library's programs in all: some 80 programs of 10,000 blocks
 
 
 def standalone_program(text: str) -> tuple:
@@ -55,9 +58,10 @@ def version_tuple(version: str) -> tuple:
 class Library:
     """The programs in ``folder``; ``profiles``: the installed profiles (id -> profile)."""
 
-    def __init__(self, folder: Path, profiles: dict):
+    def __init__(self, folder: Path, profiles: dict, quota_bytes: int = DEFAULT_QUOTA_BYTES):
         self.folder = Path(folder)
         self.profiles = profiles
+        self.quota_bytes = quota_bytes
 
     def entries(self) -> list:
         """What is known of each kept program (its ``about.json``), by name."""
@@ -86,13 +90,22 @@ class Library:
     def keep(self, name: str, standalone_text: str, source_text: str = None, on_lost_editor: str = "stop",
              decide_seconds: float = DEFAULT_DECIDE_SECONDS) -> dict:
         """Check and keep a program (replacing one of the same name); returns its ``about.json``."""
-        folder = self._folder_of(name)
-        if on_lost_editor not in LOST_EDITOR_CHOICES:
-            raise AgentRefusal("agent_bad_lost_editor", choice=on_lost_editor, choices=", ".join(LOST_EDITOR_CHOICES))
+        return self.store(self.check(name, standalone_text, source_text, on_lost_editor, decide_seconds))
+
+    def check(self, name: str, standalone_text: str, source_text: str = None, on_lost_editor: str = "stop",
+              decide_seconds: float = DEFAULT_DECIDE_SECONDS) -> dict:
+        """What ``store`` keeps of a program, checked (the standalone text read in a child process: see
+        ``program_check``); nothing is written. AgentRefusal says what is wrong."""
+        self._folder_of(name)
+        if not isinstance(on_lost_editor, str) or on_lost_editor not in LOST_EDITOR_CHOICES:
+            raise AgentRefusal("agent_bad_lost_editor", choice=str(on_lost_editor)[:40],
+                               choices=", ".join(LOST_EDITOR_CHOICES))
         if not isinstance(decide_seconds, (int, float)) or isinstance(decide_seconds, bool) or not (
                 0 < decide_seconds <= 600):
-            raise AgentRefusal("agent_bad_decide_seconds", seconds=decide_seconds)
-        program, _ = standalone_program(standalone_text)
+            raise AgentRefusal("agent_bad_decide_seconds", seconds=str(decide_seconds)[:40])
+        if source_text is not None and not isinstance(source_text, str):
+            raise AgentRefusal("agent_bad_request")
+        program, _ = standalone_parts(standalone_text)
         profile = self._check_profile(program)
         if source_text is not None:
             self._check_source(source_text, profile.id)
@@ -101,9 +114,32 @@ class Library:
                  "rockly": program.get("rockly"), "source": program.get("source"),
                  "on_lost_editor": on_lost_editor, "decide_seconds": float(decide_seconds),
                  "has_source": source_text is not None}
-        self._replace(folder, {STANDALONE: standalone_text, SOURCE: source_text,
-                               ABOUT: json.dumps(about, indent=1, ensure_ascii=False) + "\n"})
+        return {"about": about, STANDALONE: standalone_text, SOURCE: source_text,
+                ABOUT: json.dumps(about, indent=1, ensure_ascii=False) + "\n"}
+
+    def store(self, checked: dict) -> dict:
+        """Keep a program ``check`` gave (replacing one of the same name), within the library's quota; returns its
+        ``about.json``."""
+        about = checked["about"]
+        folder = self._folder_of(about["name"])
+        texts = {file_name: checked[file_name] for file_name in (STANDALONE, SOURCE, ABOUT)}
+        incoming = sum(len(text.encode("utf-8", "surrogatepass")) for text in texts.values() if text is not None)
+        if self._bytes_kept(besides=folder) + incoming > self.quota_bytes:
+            raise AgentRefusal("agent_library_full", name=about["name"], megabytes=self.quota_bytes // 2**20)
+        self._replace(folder, texts)
         return about
+
+    def _bytes_kept(self, besides: Path) -> int:
+        """The bytes of every file in the library but those of ``besides`` (the folder a program replaces)."""
+        total = 0
+        for path in self.folder.glob("*/*"):
+            if path.parent == besides:
+                continue
+            try:
+                total += path.stat().st_size
+            except OSError:
+                continue
+        return total
 
     def source(self, name: str):
         """The ``.rockly`` text of program ``name`` (None when it came without one)."""
@@ -152,9 +188,14 @@ class Library:
         return self.folder / name
 
     def _check_profile(self, program: dict):
+        if not isinstance(program.get("format", standalone.FORMAT), int):
+            raise AgentRefusal("agent_not_standalone")
         if program.get("format", standalone.FORMAT) > standalone.FORMAT:
             raise AgentRefusal("agent_newer_format", rockly=program.get("rockly", "?"))
         wanted = program["profile"]
+        if not isinstance(wanted.get("id"), str) or not isinstance(wanted.get("version"), str) or not (
+                VERSION.match(wanted["version"])):
+            raise AgentRefusal("agent_not_standalone")
         profile = self.profiles.get(wanted.get("id"))
         if profile is None:
             raise AgentRefusal("agent_no_profile", profile=wanted.get("id"), version=wanted.get("version"),

@@ -27,7 +27,9 @@ ALIVE_SECONDS = 0.5  # how often the agent says it is there
 AGENT_SILENT_SECONDS = 5.0
 LOST_EDITOR_CHOICES = ("keep_going", "stop")
 DEFAULT_DECIDE_SECONDS = 2.0
-MAX_LINE_BYTES = 64 * 1024 * 1024  # a program's text travels in one line
+# A program's texts travel in one line: a 10,000-block program is some 3 MB as .rockly and as much again as its
+# standalone file; JSON's escapes make that up to twice as long.
+MAX_LINE_BYTES = 16 * 1024 * 1024
 DEFAULT_NAMESPACE = "/rockly_agent"  # of the agent's topics over ROS 1
 
 
@@ -40,7 +42,7 @@ def decode(line: bytes):
     """The object of one line; None for a line that is not a JSON object."""
     try:
         message = json.loads(line.decode("utf-8"))
-    except (UnicodeDecodeError, ValueError):
+    except (UnicodeDecodeError, ValueError, RecursionError):
         return None
     return message if isinstance(message, dict) else None
 

@@ -72,11 +72,13 @@ class Agent:
 
     def _op_send(self, client, request):
         name = request.get("name")
+        # checked before the lock (the text is read in a child process): a STOP or another client never waits for it
+        checked = self.library.check(name, _text(request.get("standalone")), request.get("source"),
+                                     request.get("on_lost_editor", "stop"), request.get("decide_seconds", 2.0))
         with self._lock:
             if self.run is not None and self.run.about["name"] == name:
                 raise AgentRefusal("agent_program_running", name=name)
-            about = self.library.keep(name, _text(request.get("standalone")), request.get("source"),
-                                      request.get("on_lost_editor", "stop"), request.get("decide_seconds", 2.0))
+            about = self.library.store(checked)
         self._changed()
         return {"program": about}
 
@@ -229,6 +231,10 @@ class Agent:
         try:
             answer = {"ok": True, **self.handle(client, request)}
         except AgentRefusal as refusal:
+            answer = {"ok": False, "error": refusal.key, "message": refusal_text(refusal, client.language)}
+        except (TypeError, ValueError, AttributeError, KeyError, IndexError, RecursionError):
+            # a field of the wrong kind (a list for a name, a number for answers): no request Rockly sends
+            refusal = AgentRefusal("agent_bad_request")
             answer = {"ok": False, "error": refusal.key, "message": refusal_text(refusal, client.language)}
         if "id" not in request:
             return None if answer["ok"] else {"reply": None, **answer}

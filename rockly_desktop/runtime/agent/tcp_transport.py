@@ -2,13 +2,16 @@
 
 ``AgentServer`` offers an ``Agent`` on a TCP port (the agent's side); ``TcpLine`` is a client's connection to
 it (``AgentClient``'s side). A connection that closes is a client gone, and so is one that takes nothing the
-agent sends for ``SEND_SECONDS`` or falls ``OUTBOX_BYTES`` behind.
+agent sends for ``SEND_SECONDS`` or falls ``OUTBOX_BYTES`` behind, one that sends a line longer than
+``MAX_LINE_BYTES`` or too slowly (``LineReader``), and one more than the server holds (``AgentServer``).
 """
 import collections
+import select
 import socket
 import socketserver
 import struct
 import threading
+import time
 
 from rockly_desktop.core.app_texts import app_text
 from rockly_desktop.runtime.agent.protocol import (
@@ -116,9 +119,10 @@ class _Client:
 
     deliver = send  # the run's events: each TCP client gets its own copy
 
-    def close(self):
-        """The client has gone: its writer ends (what it had not taken is dropped)."""
+    def close(self, flush_seconds: float = 0.0):
+        """The client has gone: its writer ends (what it had not taken within ``flush_seconds`` is dropped)."""
         with self._changed:
+            self._changed.wait_for(lambda: not self._outbox or self._dropped, flush_seconds)
             self._drop()
         self._writer.join(SEND_SECONDS + 1)
 
@@ -131,6 +135,7 @@ class _Client:
                     return
                 data = self._outbox.popleft()
                 self._outbox_bytes -= len(data)
+                self._changed.notify_all()  # a close waiting for the outbox to empty
             try:
                 self.connection.sendall(data)
             except OSError:  # closed, or SEND_SECONDS without taking a byte: a line cut mid-message is no line
@@ -153,14 +158,88 @@ class _Client:
             pass
 
 
+# What a connection may hold of the agent: a connection cap in all and per address (each connection costs two
+# threads and a descriptor, and 1,100 idle ones once locked out every client, STOP included); a first line within
+# FIRST_LINE_SECONDS; and a line once begun must go on (no gap over GAP_SECONDS) and end within LINE_SECONDS plus a
+# second per LINE_BYTES_A_SECOND it holds (a slowloris sends a byte now and then and never ends it).
+MAX_CONNECTIONS = 64
+MAX_CONNECTIONS_PER_ADDRESS = 16
+FIRST_LINE_SECONDS = 10.0
+GAP_SECONDS = 10.0
+LINE_SECONDS = 10.0
+LINE_BYTES_A_SECOND = 32 * 1024
+
+
+class LineRefused(Exception):
+    """A connection's line the agent will not wait for or hold: ``key`` names the catalogue text."""
+
+    def __init__(self, key: str):
+        super().__init__(key)
+        self.key = key
+
+
+class LineReader:
+    """The lines a connection sends, within the bounds above; ``next_line()`` is the next one (None: closed)."""
+
+    def __init__(self, connection):
+        self._connection = connection
+        self._poll = select.poll()
+        self._poll.register(connection, select.POLLIN)
+        self._buffer = bytearray()
+        self._scanned = 0  # bytes of the buffer known to hold no line end
+        self._opened = time.monotonic()
+        self._lines = 0
+
+    def next_line(self):
+        """The next line (with its ``\n``), or None when the connection has closed; LineRefused past a bound."""
+        begun = time.monotonic() if self._buffer else None
+        while True:
+            end = self._buffer.find(b"\n", self._scanned)
+            if end >= 0:
+                line = bytes(self._buffer[:end + 1])
+                del self._buffer[:end + 1]
+                self._scanned, self._lines = 0, self._lines + 1
+                return line
+            self._scanned = len(self._buffer)
+            if len(self._buffer) > MAX_LINE_BYTES:
+                raise LineRefused("agent_line_too_long")
+            if begun is None and self._buffer:
+                begun = time.monotonic()
+            wait = self._wait(begun)
+            if wait is not None and wait <= 0 or not self._poll.poll(None if wait is None else wait * 1000):
+                raise LineRefused("agent_line_too_slow")
+            data = self._connection.recv(1 << 16)
+            if not data:
+                return None
+            self._buffer += data
+
+    def _wait(self, begun):
+        """Seconds to wait for more (None: as long as it takes: a client between requests)."""
+        now = time.monotonic()
+        if self._lines == 0:
+            return self._opened + FIRST_LINE_SECONDS - now
+        if begun is None:
+            return None
+        return min(GAP_SECONDS, begun + LINE_SECONDS + len(self._buffer) / LINE_BYTES_A_SECOND - now)
+
+
 def serve_connection(agent, connection):
-    """Read and answer ``connection``'s requests to ``agent`` until it closes."""
+    """Read and answer ``connection``'s requests to ``agent`` until it closes (or breaks a bound: it is told why
+    and closed)."""
     client = _Client(connection)
     agent.join(client)
-    reader = connection.makefile("rb")
+    lines = LineReader(connection)
+    flush_seconds = 0.0
     try:
         while True:
-            line = reader.readline(MAX_LINE_BYTES + 1)
+            try:
+                line = lines.next_line()
+            except LineRefused as refused:
+                client.send({"reply": None, "ok": False, "error": refused.key,
+                             "message": refusal_text(AgentRefusal(refused.key, megabytes=MAX_LINE_BYTES // 2**20),
+                                                     client.language)})
+                flush_seconds = 1.0  # the refusal goes out before the connection closes
+                break
             if not line:
                 break
             request = decode(line)
@@ -175,18 +254,41 @@ def serve_connection(agent, connection):
         pass
     finally:
         agent.leave(client)
-        client.close()
+        client.close(flush_seconds)
 
 
 class AgentServer(socketserver.ThreadingTCPServer):
-    """The agent's TCP server on ``(host, port)``."""
+    """The agent's TCP server on ``(host, port)``, holding at most ``MAX_CONNECTIONS`` connections
+    (``MAX_CONNECTIONS_PER_ADDRESS`` from one address); one more is told so and closed at once."""
 
     daemon_threads = True
     allow_reuse_address = True
 
     def __init__(self, agent, host: str, port: int):
         self.agent = agent
+        self._open = {}  # accepted connection -> its address
+        self._open_lock = threading.Lock()
         super().__init__((host, port), _Handler)
+
+    def verify_request(self, request, client_address):
+        address = client_address[0]
+        with self._open_lock:
+            if len(self._open) < MAX_CONNECTIONS and (
+                    sum(held == address for held in self._open.values()) < MAX_CONNECTIONS_PER_ADDRESS):
+                self._open[request] = address
+                return True
+        try:  # said without waiting: a connection that reads nothing gets nothing
+            request.setblocking(False)
+            request.send(encode({"reply": None, "ok": False, "error": "agent_too_many_connections",
+                                 "message": app_text("agent_too_many_connections", "en")}))
+        except OSError:
+            pass
+        return False
+
+    def shutdown_request(self, request):
+        with self._open_lock:
+            self._open.pop(request, None)
+        super().shutdown_request(request)
 
 
 class _Handler(socketserver.BaseRequestHandler):
