@@ -7,7 +7,7 @@ import pytest
 from number_cases import READ, REFUSED
 from page_tools import call_page, run_js
 from program_builder import block, number, rockly_document
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QPoint, Qt
 from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication
 from screenshots import screenshot
@@ -69,6 +69,14 @@ def press_enter(qtbot, window):
     qtbot.waitUntil(lambda: not run_js(qtbot, window.editor, f"{FIELD}.isBeingEdited_"), timeout=5000)
 
 
+def note_drawn(qtbot, window) -> bool:
+    """True once the window's picture shows the refusal's background (rockly.css) inside its note's corner."""
+    left, top = run_js(qtbot, window.editor, "(() => { const r = document.querySelector('.rocklyNumberRefused')"
+                                             ".getBoundingClientRect(); return [r.left + 3, r.top + 3]; })()")
+    corner = window.editor.mapTo(window, QPoint(round(left), round(top)))
+    return window.grab().toImage().pixelColor(corner).name() == "#fff3e0"
+
+
 def saved_number(qtbot, window, path):
     assert completed(qtbot, window.files.save_as, str(path))
     saved = json.loads(path.read_text(encoding="utf-8"))
@@ -101,6 +109,7 @@ def test_english_2_comma_5_is_refused_and_the_field_keeps_its_number(qtbot, driv
     type_into_field(qtbot, window, "2,5")
     note = "(document.querySelector('.rocklyNumberRefused') || {}).textContent"
     assert run_js(qtbot, window.editor, note) == "Not a number. Write decimals with a point, like 2.5."
+    qtbot.waitUntil(lambda: note_drawn(qtbot, window), timeout=5000)  # the page draws it a frame later
     screenshot(window, f"english-2-comma-5-refused-{size[0]}")
     press_enter(qtbot, window)
     assert run_js(qtbot, window.editor, f"{FIELD}.getValue()") == 1

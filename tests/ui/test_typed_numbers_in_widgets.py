@@ -3,6 +3,7 @@
 import pytest
 from PySide6.QtCore import QSettings, Qt
 from PySide6.QtTest import QTest
+from screenshots import screenshot
 
 from rockly_desktop.settings.teacher import TeacherSettings
 from rockly_desktop.ui.preferences.preferences import PreferencesDialog
@@ -26,6 +27,7 @@ def preferences(qtbot, tmp_path, hobbit, language):
 
 def type_limit(tab, keys):
     box = tab.max_speed
+    tab.window().tabs.setCurrentWidget(tab)
     tab.window().show()
     box.setFocus()
     box.lineEdit().selectAll()
@@ -42,6 +44,7 @@ def test_the_teacher_speed_limit_is_read_as_the_language_writes_it(qtbot, tmp_pa
     tab = dialog.teacher_tab
     type_limit(tab, keys)
     assert tab.max_speed.text() == shown
+    screenshot(dialog, f"preferences-speed-limit-{language}-{keys}")
     tab.apply()
     assert teacher.limits("hobbit").max_speed == kept
 
