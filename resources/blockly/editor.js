@@ -516,6 +516,7 @@
     async setup({language, profile, media, first, texts, hidden, look}) {
       if (language !== 'en') await loadScript('vendor/msg/' + language + '.js');
       Object.assign(Blockly.Msg, (texts && texts.blocklyMsg) || {});  // Blockly's keyboard hints, in Rockly's words
+      RocklyNumbers.setLanguage(language, texts && texts.numberRefused);
       // Prepared ahead of the program: nothing shows until `show`.
       if (hidden) document.getElementById('workspace').style.visibility = 'hidden';
       RocklyTypedFields.setCatalog(profile.types);

@@ -4,6 +4,7 @@ A new text is one entry in ``resources/locale/messages.pot`` (English) and one i
 ``LANG.po`` (``scripts/move-texts.py`` writes both from ``"key": ("English", "German")`` pairs).
 """
 from rockly_desktop.core.app_texts import app_catalogue, app_text, language_name, languages
+from rockly_desktop.core.numbers import number_text
 
 
 def tr(key: str, language: str, **values) -> str:
@@ -29,10 +30,11 @@ _NAVIGATION_HINTS = {f"KEYBOARD_NAV_{name.upper()}_HINT": f"nav_hint_{name}" for
 
 def editor_page_texts(language: str) -> dict:
     """The editor page's own texts in ``language`` (``EditorView.start``'s ``texts``): its menu, its
-    hint, and ``blocklyMsg``, Blockly's keyboard hints."""
+    hint, a number field's refusal, and ``blocklyMsg``, Blockly's keyboard hints."""
     return {"addBreakpoint": tr("add_breakpoint", language), "removeBreakpoint": tr("remove_breakpoint", language),
             "editMadeBlock": tr("edit_made_block_here", language),
             "emptyHint": tr("empty_hint", language, run=tr("run", language)),
+            "numberRefused": tr("number_refused", language, example=number_text(2.5, language)),
             "blocklyMsg": {name: tr(key, language) for name, key in _NAVIGATION_HINTS.items()}}
 
 

@@ -529,7 +529,7 @@ def test_the_suggested_block_id_follows_the_offer_chosen_until_the_person_types_
 def test_a_fixed_field_left_empty_keeps_its_default_which_its_placeholder_shows(qtbot, german_window):
     maker = open_maker(qtbot, german_window)
     assert maker.choose_named("/cmd_vel")
-    maker.fields.set_use("linear.x", "input", "0.1")
+    maker.fields.set_use("linear.x", "input", "0,1")  # a German window writes 0.1 so
     maker.fields.set_use("angular.z", "fixed", "")
     assert maker.findChild(QLineEdit, "maker_value_angular.z").placeholderText() == "Vorgabe: 0"
     maker.sentence["de"].setText("fahre mit %1")

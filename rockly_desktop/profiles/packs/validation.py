@@ -160,6 +160,9 @@ def _input_problems(block, profile) -> list:
 
 def _range_problems(entry) -> list:
     low, high = entry.minimum, entry.maximum
+    not_numbers = [bound for bound in (low, high) if bound is not None and not _is_number(bound)]
+    if not_numbers:  # a bound typed as no number ("2,5" in English) is said, not dropped
+        return [app_local_text("pack_input_bound_bad", name=entry.name, bound=not_numbers[0])]
     if entry.kind == "number":
         if low is not None and high is not None and low > high:
             return [app_local_text("pack_input_range_bad", name=entry.name, minimum=low, maximum=high)]

@@ -6,6 +6,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from rockly_desktop.core.errors import ManifestError
+from rockly_desktop.core.numbers import number_text
 from rockly_desktop.profiles.packs.generate import block_definition
 from rockly_desktop.profiles.packs.pack import load_pack, user_packs_dir
 
@@ -29,12 +30,15 @@ class PackBeingEdited:
         return cls(pack_id, frozenset(types) - {block_id})
 
 
-def value_text(value, kind: str) -> str:
-    """``value`` as the field table shows it, read back by ``field_table.read_value`` as the same value."""
+def value_text(value, kind: str, language: str) -> str:
+    """``value`` as the field table shows it in ``language``, read back by ``field_table.read_value`` as the same
+    value ("0,3" in German)."""
     if value is None:
         return ""
     if kind == "text" and isinstance(value, str):
         return value
+    if kind == "number" and isinstance(value, (int, float)) and not isinstance(value, bool):
+        return number_text(value, language)
     return json.dumps(value, ensure_ascii=False)  # JSON is YAML: lists, mappings, true, numbers
 
 

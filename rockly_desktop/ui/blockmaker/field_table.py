@@ -6,6 +6,7 @@ import yaml
 from PySide6.QtCore import Signal
 from PySide6.QtWidgets import QAbstractItemView, QComboBox, QHeaderView, QLineEdit, QTableWidget, QTableWidgetItem
 
+from rockly_desktop.core.numbers import read_number
 from rockly_desktop.profiles.packs.spec import VALUE_KINDS, BlockInput
 from rockly_desktop.ui.blockmaker.editing import value_text
 from rockly_desktop.ui.texts import tr
@@ -21,29 +22,29 @@ def input_name(path: str) -> str:
     return path.replace(".", "_").lower()
 
 
-def read_value(text: str, kind: str):
-    """The value a person typed for a field of ``kind``: a text as it is, anything else as YAML
-    (``0.3``, ``true``, ``[1, 2]``); None for nothing typed."""
+def read_value(text: str, kind: str, language: str):
+    """The value a person typed for a field of ``kind``: a text as it is, a number as ``language`` writes it
+    ("0,3" in German), anything else as YAML (``true``, ``[1, 2]``); None for nothing typed."""
     if not text.strip():
         return None
     if kind == "text":
         return text
+    if kind == "number":
+        try:
+            return read_number(text, language)
+        except ValueError:
+            return text  # shown to the person as a value that does not fit
     try:
         return yaml.safe_load(text)
     except yaml.YAMLError:
         return text  # shown to the person as a value that does not fit
 
 
-def _number(text: str):
-    value = read_value(text, "number")
-    return value if isinstance(value, (int, float)) and not isinstance(value, bool) else None
-
-
-def _default_text(entry) -> str:
+def _default_text(entry, language: str) -> str:
     """The field's default as typed in the table (a text's in quotes, so an empty one shows)."""
     if entry.kind == "text":
         return json.dumps(entry.default or "", ensure_ascii=False)
-    return value_text(entry.default, entry.kind)
+    return value_text(entry.default, entry.kind, language)
 
 
 class FieldTable(QTableWidget):
@@ -92,7 +93,7 @@ class FieldTable(QTableWidget):
                 edit.textChanged.connect(self.sig_changed)
                 self.setCellWidget(row, column, edit)
             self.cellWidget(row, VALUE).setPlaceholderText(tr("maker_value_default", self._language,
-                                                              value=_default_text(entry)))
+                                                              value=_default_text(entry, self._language)))
             self._enable(row)
         self._number_places()
         self.sig_changed.emit()
@@ -144,14 +145,15 @@ class FieldTable(QTableWidget):
                 continue
             text = self.cellWidget(row, VALUE).text
             made.append(BlockInput(input_name(entry.path), entry.kind, entry.path,
-                                   self.cellWidget(row, UNIT).text().strip(), read_value(text(), entry.kind),
-                                   _number(self.cellWidget(row, MINIMUM).text()),
-                                   _number(self.cellWidget(row, MAXIMUM).text())))
+                                   self.cellWidget(row, UNIT).text().strip(),
+                                   read_value(text(), entry.kind, self._language),
+                                   read_value(self.cellWidget(row, MINIMUM).text(), "number", self._language),
+                                   read_value(self.cellWidget(row, MAXIMUM).text(), "number", self._language)))
         return tuple(made)
 
     def fixed(self) -> dict:
         """{field path: the value always sent} of the fields given a fixed value; one left empty keeps its
         default (the placeholder shown), as a field left at its default does."""
-        fixed = {entry.path: read_value(self.cellWidget(row, VALUE).text(), entry.kind)
+        fixed = {entry.path: read_value(self.cellWidget(row, VALUE).text(), entry.kind, self._language)
                  for row, entry in enumerate(self._fields) if self.cellWidget(row, USE).currentData() == "fixed"}
         return {path: value for path, value in fixed.items() if value is not None}

@@ -393,10 +393,11 @@ class BlockMakerDialog(QDialog):
         try:
             for entry in made.inputs:
                 if entry.field:
-                    self.fields.set_use(entry.field, "input", value_text(entry.default, entry.kind), entry.unit,
-                                        value_text(entry.minimum, "number"), value_text(entry.maximum, "number"))
+                    self.fields.set_use(entry.field, "input", value_text(entry.default, entry.kind, self.language),
+                                        entry.unit, value_text(entry.minimum, "number", self.language),
+                                        value_text(entry.maximum, "number", self.language))
             for path, value in made.fixed.items():
-                self.fields.set_use(path, "fixed", value_text(value, self.fields.kind_of(path)))
+                self.fields.set_use(path, "fixed", value_text(value, self.fields.kind_of(path), self.language))
             for box, data in ((self.comparison, made.comparison), (self.result, made.result)):
                 box.setCurrentIndex(max(0, box.findData(data)))
             self.read_field.setCurrentIndex(max(0, self.read_field.findText(made.read_field)))

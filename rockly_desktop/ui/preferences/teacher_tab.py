@@ -4,7 +4,6 @@ from PySide6.QtCore import QEvent, Qt
 from PySide6.QtWidgets import (
     QCheckBox,
     QComboBox,
-    QDoubleSpinBox,
     QFormLayout,
     QLabel,
     QLineEdit,
@@ -16,6 +15,7 @@ from PySide6.QtWidgets import (
 )
 
 from rockly_desktop.settings.teacher import MIN_PIN_LENGTH, wait_text
+from rockly_desktop.ui.number_box import NumberBox
 from rockly_desktop.ui.plain_text import mnemonic_free, plain_label
 from rockly_desktop.ui.texts import tr
 
@@ -117,8 +117,8 @@ class TeacherTab(QStackedWidget):
             chosen = max(0, self.level_box.findData(whole))
         self.level_box.setCurrentIndex(chosen)
         form.addRow(tr("teacher_level", language), self.level_box)
-        self.max_speed = QDoubleSpinBox(page, objectName="teacher_max_speed", decimals=2, singleStep=0.05,
-                                        maximum=5.0, suffix=" m/s")
+        self.max_speed = NumberBox(language, page, objectName="teacher_max_speed", decimals=2, singleStep=0.05,
+                                   maximum=5.0, suffix=" m/s")
         self.max_speed.setSpecialValueText(tr("teacher_no_limit", language))
         self.max_speed.setValue(limits.max_speed or 0.0)
         form.addRow(tr("teacher_max_speed", language), self.max_speed)

@@ -51,8 +51,9 @@ class RunToolbar(QToolBar):
         self.speed.setRange(0, SLIDER_STEPS)
         self.speed.setValue(SLIDER_STEPS)
         self.speed.setFixedWidth(100 if big else 110)
-        self.speed.setToolTip(tr("speed_tip", language))
+        self._speed_tip()
         self.speed.valueChanged.connect(lambda _value: self.sig_delay_changed.emit(self.delay))
+        self.speed.valueChanged.connect(self._speed_tip)
         self.addWidget(self.speed)
         self.addWidget(QLabel(f" {tr('fast', language)}  ", self))
         self.addSeparator()
@@ -126,6 +127,12 @@ class RunToolbar(QToolBar):
                             (self.continue_action, "continue_tip")):
             action.setToolTip(tr("attach_watching_tip" if watching else tip, self._language))
         self.set_state(self._state)
+
+    def _speed_tip(self, *_value):
+        """The slider's tooltip says how long each block waits, in the window's language ("0,4 s")."""
+        delay = self.delay
+        self.speed.setToolTip(tr("speed_tip_wait", self._language, seconds=delay) if delay else
+                              tr("speed_tip", self._language))
 
     @property
     def delay(self) -> float:
