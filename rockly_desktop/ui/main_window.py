@@ -30,6 +30,7 @@ from rockly_desktop.ui.robot.robot_choice import RobotChoice
 from rockly_desktop.ui.run.block_badges import badges_shown
 from rockly_desktop.ui.run.run_session import RunSession
 from rockly_desktop.ui.run.run_toolbar import RunToolbar
+from rockly_desktop.ui.run.stop_anywhere import StopAnywhere
 from rockly_desktop.ui.texts import editor_page_texts, tr
 from rockly_desktop.ui.window_fit import fit_first_window
 
@@ -110,6 +111,7 @@ class MainWindow(QMainWindow):
         self.statusBar().addPermanentWidget(self.robots.status)
         self.statusBar().addPermanentWidget(self.profile_label)
         self._build_run_toolbar()
+        self.stop_anywhere = StopAnywhere(self, lambda: self.run_toolbar)  # STOP acts through dialogs and menus
 
         self.files = ProgramFiles(self.document, self.editor, settings, registry, self)
         self.files.sig_status.connect(lambda text: self.statusBar().showMessage(text, 8000))
