@@ -691,8 +691,14 @@ class MainWindow(QMainWindow):
             QTimer.singleShot(0, self, self._follow_disk)
         return super().event(event)
 
+    def active_dialog(self):
+        """The dialog that waits for an answer (modal), or None: one of the window's, which ``stop_anywhere`` keeps
+        modal, or another."""
+        dialogs = self.stop_anywhere.open_dialogs
+        return dialogs[-1] if dialogs else QApplication.activeModalWidget()
+
     def _follow_disk(self):
-        if self.runs.state == "idle" and not self._close_waiting and QApplication.activeModalWidget() is None:
+        if self.runs.state == "idle" and not self._close_waiting and self.active_dialog() is None:
             self.files.follow_disk()
 
     # --- closing ------------------------------------------------------------------------

@@ -1,38 +1,27 @@
-"""STOP as a person reaches it while a dialog or a menu is open (a module of its own: test files import it by
-name): a real mouse click at STOP's place in the window, which goes through Qt's window-level delivery, where a
-modal dialog blocks it (a click sent straight to the button would not be blocked), and the dialogs opened
-through the window's own commands, some of which run an event loop of their own until they close."""
+"""A run to stop while a dialog is open (a module of its own: test files import it by name): a long drive, and
+the dialogs opened through the window's own commands, some of which run an event loop of their own until they
+close. The click at STOP is ``window_tools.click_stop``."""
 from program_builder import block, number
-from PySide6.QtCore import Qt, QTimer
-from PySide6.QtTest import QTest
-from PySide6.QtWidgets import QApplication, QDialog
+from PySide6.QtCore import QTimer
+from PySide6.QtWidgets import QDialog
 from test_running import load
+from window_tools import modal_dialog
 
 
-def stop_button(window):
-    toolbar = window.run_toolbar
-    return toolbar.widgetForAction(toolbar.stop_action)
-
-
-def click_stop(window):
-    """A left click at the middle of STOP, delivered to the window as the window system delivers it."""
-    button = stop_button(window)
-    QTest.mouseClick(window.windowHandle(), Qt.MouseButton.LeftButton, Qt.KeyboardModifier.NoModifier,
-                     button.mapTo(window, button.rect().center()))
-
-
-def drive_on(qtbot, window):
-    """Start a long drive on the window's robot and return once the robot moves."""
-    load(qtbot, window, block("hobbit_move", {"direction": "+"}, {"speed": number(100)}))
+def drive_on(qtbot, window, turn=False):
+    """Start a long drive (or a long turn on the spot, where no wall is in the way however fast the simulated
+    time runs) on the window's robot and return once the robot moves."""
+    load(qtbot, window, block("hobbit_turn", {"direction": "+"}, {"angle": number(360000)}) if turn
+         else block("hobbit_move", {"direction": "+"}, {"speed": number(100)}))
     assert window.runs.run()
-    qtbot.waitUntil(lambda: window.runs.state == "running" and window.robot().snapshot()["motion"] == "moving",
+    qtbot.waitUntil(lambda: window.runs.state == "running" and window.robot().snapshot()["motion"] != "idle",
                     timeout=15000)
 
 
 def open_dialog(window, kind: str = QDialog):
     """The newest visible dialog of ``kind`` in ``window`` (at any depth), or None."""
     shown = [dialog for dialog in window.findChildren(kind) if dialog.isVisible() and dialog.isWindow()]
-    active = QApplication.activeModalWidget()
+    active = modal_dialog()
     return active if active in shown else (shown[-1] if shown else None)
 
 

@@ -7,9 +7,9 @@ from program_builder import block, number
 from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication, QFileDialog, QLineEdit, QMessageBox
-from stop_tools import click_stop, drive_on, open_dialog, while_open
+from stop_tools import drive_on, open_dialog, while_open
 from test_running import load
-from window_tools import on_hobbit_over_ros1
+from window_tools import click_stop, on_hobbit_over_ros1
 from wire_recorder import WireRecorder
 
 from rockly_desktop.ui.blockmaker.maker_dialog import BlockMakerDialog
@@ -48,7 +48,7 @@ def test_a_click_on_stop_with_a_dialog_open_stops_the_simulated_robot(qtbot, dri
     open_it, kind = DIALOGS[name]
 
     def click(dialog):
-        assert dialog.isModal() or dialog in window.stop_anywhere.open_dialogs
+        assert dialog.isModal()  # to the person: the window waits for its answer
         click_stop(window)
         return stopped(qtbot, window)
 
@@ -85,6 +85,16 @@ def test_other_clicks_on_the_window_still_wait_for_the_dialog(qtbot, driver):
                       click_pause) == "running"
     window.runs.stop()
     assert stopped(qtbot, window)
+
+
+def test_the_window_under_a_dialog_gives_the_keys_back_to_the_dialog(qtbot, window):
+    def activate_the_window(box):
+        window.activateWindow()  # as a window manager may do on a click, or Alt+Tab
+        qtbot.waitUntil(lambda: QApplication.focusWindow() is box.windowHandle())
+        return True
+
+    assert while_open(qtbot, lambda: a_message_box(window), lambda: open_dialog(window, QMessageBox),
+                      activate_the_window)
 
 
 def test_the_first_esc_in_a_dialogs_text_field_stops_the_robot(qtbot, driver):

@@ -55,6 +55,8 @@ class StopAnywhere(QObject):
         kind = event.type()
         if kind in _INPUT and isinstance(watched, QWindow):
             return self._filter_input(watched, event)
+        if kind == QEvent.Type.FocusIn and isinstance(watched, QWindow):
+            self._keep_in_front(watched)  # the window's shortcuts act before its filters: keys stay with the dialog
         if kind == QEvent.Type.ChildPolished and isinstance(event.child(), QDialog) and event.child().isWindow():
             event.child().installEventFilter(self)  # its Show comes here, and its own dialogs' polish
         elif kind == QEvent.Type.Show and isinstance(watched, QDialog):
@@ -86,10 +88,16 @@ class StopAnywhere(QObject):
             return False
         if kind in _PRESSES and window is self._main and self._on_stop(event.globalPosition().toPoint()):
             self._stop()
-        elif kind == QEvent.Type.MouseButtonPress:  # as a modal dialog does: it comes to the front
+        elif kind == QEvent.Type.MouseButtonPress:
+            self._keep_in_front(window)
+        return True
+
+    def _keep_in_front(self, window: QWindow):
+        """As a modal dialog does: the newest dialog comes to the front when ``window`` under it is used."""
+        dialogs = self.open_dialogs
+        if dialogs and window.type() != Qt.WindowType.Popup and not self._within(window, dialogs[-1].windowHandle()):
             dialogs[-1].raise_()
             dialogs[-1].activateWindow()
-        return True
 
     @staticmethod
     def _within(window: QWindow, owner: QWindow) -> bool:
