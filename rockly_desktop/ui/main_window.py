@@ -30,6 +30,7 @@ from rockly_desktop.ui.robot.robot_choice import RobotChoice
 from rockly_desktop.ui.run.block_badges import badges_shown
 from rockly_desktop.ui.run.run_session import RunSession
 from rockly_desktop.ui.run.run_toolbar import RunToolbar
+from rockly_desktop.ui.run.stop_anywhere import StopAnywhere
 from rockly_desktop.ui.texts import editor_page_texts, tr
 from rockly_desktop.ui.window_fit import fit_first_window
 
@@ -110,6 +111,7 @@ class MainWindow(QMainWindow):
         self.statusBar().addPermanentWidget(self.robots.status)
         self.statusBar().addPermanentWidget(self.profile_label)
         self._build_run_toolbar()
+        self.stop_anywhere = StopAnywhere(self, lambda: self.run_toolbar)  # STOP acts through dialogs and menus
 
         self.files = ProgramFiles(self.document, self.editor, settings, registry, self)
         self.files.sig_status.connect(lambda text: self.statusBar().showMessage(text, 8000))
@@ -689,8 +691,14 @@ class MainWindow(QMainWindow):
             QTimer.singleShot(0, self, self._follow_disk)
         return super().event(event)
 
+    def active_dialog(self):
+        """The dialog that waits for an answer (modal), or None: one of the window's, which ``stop_anywhere`` keeps
+        modal, or another."""
+        dialogs = self.stop_anywhere.open_dialogs
+        return dialogs[-1] if dialogs else QApplication.activeModalWidget()
+
     def _follow_disk(self):
-        if self.runs.state == "idle" and not self._close_waiting and QApplication.activeModalWidget() is None:
+        if self.runs.state == "idle" and not self._close_waiting and self.active_dialog() is None:
             self.files.follow_disk()
 
     # --- closing ------------------------------------------------------------------------

@@ -9,7 +9,9 @@ from program_builder import block, number, rockly_document, stack
 from PySide6.QtCore import QCoreApplication, QEvent, QPoint, QPointF, Qt, QTimer
 from PySide6.QtGui import QMouseEvent
 from PySide6.QtWidgets import QApplication, QDialog, QFileDialog, QMenu
+from stop_tools import drive_on, open_dialog, while_open
 from test_running import load
+from window_tools import click_stop, modal_dialog
 
 from rockly_desktop.app import build_main_window, start_kiosk
 from rockly_desktop.settings.app_settings import AppSettings
@@ -139,7 +141,7 @@ def test_kiosk_file_dialogs_stay_in_the_kiosk_folder(qtbot, open_kiosk, folders,
     seen = []
 
     def use_the_dialog():
-        dialog = QApplication.activeModalWidget()
+        dialog = modal_dialog()
         seen.append(("starts in", isinstance(dialog, QFileDialog), dialog.directory().absolutePath()))
         dialog.setDirectory(str(tmp_path))
         dialog.directoryEntered.emit(str(tmp_path))               # as when the person goes up a folder
@@ -255,3 +257,19 @@ def test_a_kiosk_nobody_could_leave_does_not_start(qtbot, driver, monkeypatch):
     window = build_main_window(driver.settings_path, kiosk=True)
     assert start_kiosk(window) is None and shown == ["Kiosk mode needs a way out"]
     QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)    # the window is gone
+
+
+@pytest.mark.parametrize("prompt", ["leaving", "teacher"])
+def test_the_big_stop_stops_the_robot_with_the_pin_prompt_open(qtbot, open_kiosk, start_program, prompt):
+    window, kiosk = open_kiosk(start_program)
+    drive_on(qtbot, window, turn=True)
+    ask = {"leaving": kiosk.ask_pin, "teacher": lambda: kiosk.ask_teacher(lambda: None)}[prompt]
+
+    def click_the_big_stop(dialog):
+        assert dialog.isModal()  # a PIN prompt waits for its answer
+        click_stop(window)
+        qtbot.waitUntil(lambda: window.runs.state == "idle", timeout=5000)
+        snapshot = window.robot().snapshot()
+        return window.runs.last_result.outcome, snapshot["linear"], snapshot["angular"]
+
+    assert while_open(qtbot, ask, lambda: open_dialog(window), click_the_big_stop) == ("stopped", 0, 0)

@@ -21,7 +21,7 @@ from PySide6.QtWidgets import (
 )
 from test_kiosk import PIN, clock, folders, open_kiosk, python_shown  # noqa: F401 (fixtures)
 from test_running import load
-from window_tools import error_boxes
+from window_tools import error_boxes, modal_dialog
 
 from rockly_desktop.settings.app_settings import AppSettings
 from rockly_desktop.ui.files.file_dialogs import ConfinedFileDialog
@@ -42,7 +42,7 @@ def with_dialog(qtbot, use) -> list:
     failures = []
 
     def later():
-        dialog = QApplication.activeModalWidget()
+        dialog = modal_dialog()
         if dialog is None:
             QTimer.singleShot(10, later)
             return

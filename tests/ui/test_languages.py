@@ -2,7 +2,8 @@
 from page_tools import call_page, run_js
 from program_builder import block, number, stack, text, workspace
 from PySide6.QtCore import QTimer
-from PySide6.QtWidgets import QApplication, QMessageBox
+from PySide6.QtWidgets import QMessageBox
+from window_tools import modal_dialog
 
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.robot.links import link_kind
@@ -33,7 +34,7 @@ def answer_save_prompt(window) -> list:
     seen = []
 
     def cancel():
-        box = QApplication.activeModalWidget()
+        box = modal_dialog()
         seen.extend(button_texts(box))
         box.button(QMessageBox.StandardButton.Cancel).click()
 

@@ -1,7 +1,8 @@
 """Driving real Rockly windows from tests (a module of its own: test files import it by name)."""
 from page_tools import call_page
-from PySide6.QtCore import QCoreApplication, QEvent
-from PySide6.QtWidgets import QMessageBox
+from PySide6.QtCore import QCoreApplication, QEvent, Qt
+from PySide6.QtTest import QTest
+from PySide6.QtWidgets import QApplication, QMessageBox
 
 from rockly_desktop.app import build_main_window
 from rockly_desktop.robot.links import link_kind
@@ -48,6 +49,24 @@ def on_hobbit_over_ros1(window, master_uri: str, monkeypatch):
     backend.setCurrentIndex(backend.findData("ros1"))
     assert window.robots.kind == "ros1"
     return window
+
+
+def click_stop(window):
+    """A left click at the middle of STOP, delivered to the window as the window system delivers it (where a
+    modal dialog blocks it; a click sent straight to the button would not be blocked)."""
+    button = window.run_toolbar.widgetForAction(window.run_toolbar.stop_action)
+    QTest.mouseClick(window.windowHandle(), Qt.MouseButton.LeftButton, Qt.KeyboardModifier.NoModifier,
+                     button.mapTo(window, button.rect().center()))
+
+
+def modal_dialog():
+    """The dialog that waits for an answer: a window's (shown modeless to Qt, so that STOP acts through it:
+    decision 032), or Qt's modal one; None when there is none."""
+    for window in QApplication.topLevelWidgets():
+        dialog = window.active_dialog() if hasattr(window, "active_dialog") and window.isVisible() else None
+        if dialog is not None:
+            return dialog
+    return QApplication.activeModalWidget()
 
 
 def error_boxes(window) -> list:

@@ -8,7 +8,6 @@ from datetime import datetime
 from PySide6.QtCore import QEvent, QObject, Qt, QTimer
 from PySide6.QtGui import QKeySequence, QShortcut
 from PySide6.QtWidgets import (
-    QApplication,
     QDialog,
     QDialogButtonBox,
     QDockWidget,
@@ -153,7 +152,7 @@ class Kiosk(QObject):
         if self._runs.state != "idle":
             self._runs.stop()  # the next check starts over once the run has ended
             return
-        modal = QApplication.activeModalWidget()
+        modal = self.frame.active_dialog()
         if modal is not None:  # a question nobody answers; starting over waits until it is gone
             modal.close()
             return
