@@ -263,17 +263,25 @@ class PinDialog(QDialog):
             self.problem.setText(tr("teacher_wrong_pin", self._language))
             return
         answer = self._teacher.try_pin(pin)
-        self.problem.setText(answer.problem(self._language))
+        self._say(answer.problem(self._language))
         if answer.right:
             super().accept()
 
     def open(self):
         """Qt override: open with an empty PIN field."""
         wait = self._teacher.pin_wait()
-        self.problem.setText(wait_text(wait, self._language) if wait > 0 else "")
+        self._say(wait_text(wait, self._language) if wait > 0 else "")
         self.pin.clear()
         super().open()
         self.pin.setFocus()
+
+    def _say(self, problem: str):
+        """Show ``problem`` whole: a window does not grow by itself for a wrapped text's extra lines."""
+        self.problem.setText(problem)
+        self.layout().activate()
+        needed = self.heightForWidth(self.width())
+        if needed > self.height():
+            self.resize(self.width(), needed)
 
 
 class LeaveDialog(PinDialog):
