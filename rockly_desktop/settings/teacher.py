@@ -57,10 +57,10 @@ class PinAnswer:
 
 
 def wait_text(seconds: float, language: str) -> str:
-    """'Too many wrong PINs: the next one is taken in … seconds/minutes.' in ``language``."""
-    if seconds > 90:
-        return app_text("teacher_pin_wait_minutes", language, minutes=math.ceil(seconds / 60))
+    """'Too many wrong PINs: the next one is taken in … seconds' (or '… min … s' from a minute on) in ``language``."""
     whole = max(1, math.ceil(seconds))
+    if whole >= 60:
+        return app_text("teacher_pin_wait_min_s", language, minutes=whole // 60, seconds=whole % 60)
     return app_text("teacher_pin_wait_second" if whole == 1 else "teacher_pin_wait_seconds", language, seconds=whole)
 
 

@@ -11,6 +11,7 @@ from rockly_desktop.ui.texts import tr
 
 _STEPS = ("first_steps_robot", "first_steps_blocks", "first_steps_run", "first_steps_glow", "first_steps_loose",
           "first_steps_put_back", "first_steps_examples")
+_TEACHERS_STEPS = {"first_steps_robot"}  # what they point to asks for the teacher's PIN in a kiosk: not told there
 
 _STYLE = "<style>body { font-size: 11pt; } li { margin-bottom: 8px; } p { margin-bottom: 10px; }</style>"
 
@@ -39,7 +40,8 @@ def _in_menu_bar_or_window(action, window) -> bool:
 
 
 def first_steps_html(window, language: str) -> str:
-    """The First Steps page: the texts, with the window's own names and shortcuts filled in."""
+    """The First Steps page: the texts, with the window's own names and shortcuts filled in (in a kiosk, only
+    the steps a visitor can take)."""
     def keys(name):
         action = window.findChild(QAction, name)
         shortcut = action.shortcut() if action is not None else QKeySequence()
@@ -55,7 +57,8 @@ def first_steps_html(window, language: str) -> str:
         "save": _plain(tr("save", language)),
     }
     names = {name: f"<b>{escape(value)}</b>" for name, value in values.items()}
-    steps = "".join(f"<li>{escape(tr(key, language)).format(**names)}</li>" for key in _STEPS)
+    shown = [key for key in _STEPS if not (window.settings.kiosk_mode and key in _TEACHERS_STEPS)]
+    steps = "".join(f"<li>{escape(tr(key, language)).format(**names)}</li>" for key in shown)
     return (f"{_STYLE}<h2>{escape(tr('first_steps_title', language))}</h2>"
             f"<p>{escape(tr('first_steps_intro', language))}</p><ol>{steps}</ol>")
 

@@ -104,7 +104,8 @@ class MainWindow(QMainWindow):
         self.attached.sig_recorded.connect(lambda path: self.replay.open(path, quiet=True))
         self.health = HealthBar(settings.current_language, self)
         self.health.sig_refreshed.connect(self.robots.show_health)  # one source for the light and the status
-        self.agent_bar = AgentBar(self.attached, lambda: self.language, self._agent_way, self)
+        self.agent_bar = AgentBar(self.attached, lambda: self.language, self._agent_way, self,
+                                  gate=lambda command: self.teacher_gate(command))
         self.robots.sig_robot_changed.connect(self.agent_bar.look)
         self.statusBar().addPermanentWidget(self.agent_bar)
         self.statusBar().addPermanentWidget(self.health)
@@ -607,13 +608,18 @@ class MainWindow(QMainWindow):
         menu.addAction(action)
         return action
 
+    def _teacher_action(self, menu, key, command, shortcut=None):
+        """An action whose ``command`` reaches beyond the window's own program (other files, the robot's
+        programs, the profile's blocks): it runs through ``teacher_gate``, so a kiosk asks for the PIN first."""
+        return self._action(menu, key, lambda: self.teacher_gate(command), shortcut)
+
     def _build_menus(self):
         language, bar = self.language, self.menuBar()
         file_menu = bar.addMenu(tr("menu_file", language))
         self._action(file_menu, "new", lambda: self.files.new(), QKeySequence.StandardKey.New)
-        self._action(file_menu, "open", lambda: self.files.open(), QKeySequence.StandardKey.Open)
+        self._teacher_action(file_menu, "open", lambda: self.files.open(), QKeySequence.StandardKey.Open)
         self.recent_menu = file_menu.addMenu(tr("open_recent", language))
-        self._action(file_menu, "open_recording", lambda: self.replay.choose(self.settings.recordings_folder))
+        self._teacher_action(file_menu, "open_recording", lambda: self.replay.choose(self.settings.recordings_folder))
         self.recent_menu.aboutToShow.connect(self._fill_recent_menu)
         self.examples_menu = ExamplesMenu(self.files, lambda: self.profile, language, file_menu)
         file_menu.addMenu(self.examples_menu)
@@ -621,8 +627,8 @@ class MainWindow(QMainWindow):
         self._action(file_menu, "save", lambda: self.files.save(), QKeySequence.StandardKey.Save)
         self._action(file_menu, "save_as", lambda: self.files.save_as(), QKeySequence.StandardKey.SaveAs)
         file_menu.addSeparator()
-        self._action(file_menu, "import_xml", lambda: self.files.import_xml())
-        self._action(file_menu, "export_python", lambda: self.files.export_python(), "Ctrl+E")
+        self._teacher_action(file_menu, "import_xml", lambda: self.files.import_xml())
+        self._teacher_action(file_menu, "export_python", lambda: self.files.export_python(), "Ctrl+E")
         file_menu.addSeparator()
         self._action(file_menu, "quit", self.close, QKeySequence.StandardKey.Quit)
 
@@ -644,7 +650,7 @@ class MainWindow(QMainWindow):
         self._follow_robot_lock()
         robot_menu.addSeparator()
         robot_menu.addAction(self.run_toolbar.reset_action)
-        self._action(robot_menu, "robot_programs", self.show_robot_programs)
+        self._teacher_action(robot_menu, "robot_programs", self.show_robot_programs)
 
         view_menu = bar.addMenu(tr("menu_view", language))
         for dock in self.docks.values():
@@ -653,8 +659,8 @@ class MainWindow(QMainWindow):
         view_menu.addAction(self.stage.action_for(language))
 
         tools_menu = bar.addMenu(tr("menu_tools", language))
-        self._action(tools_menu, "make_block", lambda: self.teacher_gate(self.make_block))
-        self._action(tools_menu, "edit_made_block", lambda: self.teacher_gate(self.edit_made_block))
+        self._teacher_action(tools_menu, "make_block", self.make_block)
+        self._teacher_action(tools_menu, "edit_made_block", self.edit_made_block)
 
         settings_menu = bar.addMenu(tr("menu_settings", language))
         self._action(settings_menu, "preferences", self.show_preferences, QKeySequence.StandardKey.Preferences)
@@ -680,9 +686,11 @@ class MainWindow(QMainWindow):
     def _fill_recent_menu(self):
         self.recent_menu.clear()
         for path in self.settings.recent_files:
-            self.recent_menu.addAction(mnemonic_free(path), lambda p=path: self.files.open(p))
+            self.recent_menu.addAction(mnemonic_free(path),
+                                       lambda p=path: self.teacher_gate(lambda: self.files.open(p)))
         self.recent_menu.addSeparator()
-        self.recent_menu.addAction(tr("clear_recent", self.language), self.settings.clear_recent_files)
+        self.recent_menu.addAction(tr("clear_recent", self.language),
+                                   lambda: self.teacher_gate(self.settings.clear_recent_files))
 
     def event(self, event):
         """Qt override: back at the front, the window takes in a change another window or program made

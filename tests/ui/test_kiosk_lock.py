@@ -195,7 +195,7 @@ def test_the_open_dialog_lists_and_takes_nothing_outside_the_kiosk_folders(qtbot
 
 
 def test_open_recording_is_confined_to_the_recordings_folder(qtbot, open_kiosk, tmp_path):
-    window, _kiosk = open_kiosk()
+    window, kiosk = open_kiosk()
     recordings = Path(window.settings.recordings_folder).resolve()
     settings_file = Path(AppSettings(None)._store.fileName())     # the teacher's PIN lives here
     seen = {}
@@ -210,8 +210,10 @@ def test_open_recording_is_confined_to_the_recordings_folder(qtbot, open_kiosk, 
         box.close()
         dialog.reject()
 
+    window.findChild(QAction, "action_open_recording").trigger()   # the teacher's, behind the PIN
+    kiosk.teacher_dialog.pin.setText(PIN)
     failures = with_dialog(qtbot, use)
-    window.findChild(QAction, "action_open_recording").trigger()
+    kiosk.teacher_dialog.accept()
     assert failures == []
     assert seen["kind"] == (True, str(recordings))
     assert seen["config"] == (True, str(recordings), True)

@@ -7,6 +7,7 @@ from pathlib import Path
 import pytest
 from fake_time import FakeTime
 from PySide6.QtCore import QSettings
+from screenshots import screenshot
 
 from rockly_desktop.settings import teacher as teacher_settings
 from rockly_desktop.settings.app_settings import AppSettings
@@ -160,3 +161,22 @@ def test_rockly_s_own_settings_folder_is_made_private():
     settings.language = "de"
     settings.sync()
     assert mode(folder) == 0o700 and mode(file) == 0o600
+
+
+@pytest.mark.parametrize("language, wait", [("en", "5 min 20 s."), ("de", "5 Min. 20 Sek. angenommen.")])
+def test_the_kiosks_pin_prompt_shows_a_long_wait_whole_in_minutes_and_seconds(qtbot, clock, settings_path, language,
+                                                                             wait):
+    teacher = AppSettings(settings_path).teacher
+    for number in range(8):  # earlier visitors' guesses, each after its wait
+        clock.now += teacher.try_pin(f"{number:04d}").wait
+    leave = LeaveDialog(teacher, language)
+    qtbot.addWidget(leave)
+    leave.open()
+    qtbot.waitUntil(leave.isVisible)
+    leave.pin.setText("9999")
+    leave.accept()   # the ninth wrong PIN: 320 s to wait, said under a text one line longer than before
+    problem = leave.problem
+    screenshot(leave, f"pin_lockout_{language}")
+    assert problem.text().endswith(wait)
+    qtbot.waitUntil(lambda: problem.height() >= problem.heightForWidth(problem.width()))
+    assert problem.geometry().bottom() < leave.height() and problem.isVisible()

@@ -60,9 +60,10 @@ def _ask_run(way: AgentWay, language: str) -> tuple:
 
 class AgentBar(QWidget):
     """Says what the agent that ``way()`` names (an ``AgentWay``; None: no robot with an agent is chosen) runs; its
-    Attach button attaches ``attached`` (the window's ``AttachedRun``). ``language()``: the window's, now."""
+    Attach button attaches ``attached`` (the window's ``AttachedRun``) once ``gate(command)`` runs the command (a
+    kiosk asks for the teacher's PIN first). ``language()``: the window's, now."""
 
-    def __init__(self, attached, language, way, parent=None):
+    def __init__(self, attached, language, way, parent=None, gate=lambda command: command()):
         super().__init__(parent)
         self.setObjectName("agent_bar")
         self.attached, self._language, self._way = attached, language, way
@@ -70,7 +71,7 @@ class AgentBar(QWidget):
         self.label = QLabel(self)
         self.attach_button = QPushButton(self)
         self.attach_button.setObjectName("agent_bar_attach")
-        self.attach_button.clicked.connect(self.attach)
+        self.attach_button.clicked.connect(lambda: gate(self.attach))
         layout = QHBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
         layout.addWidget(self.label)

@@ -30,8 +30,7 @@ class OnStage(Enum):
 class InKiosk(Enum):
     """What kiosk mode does with a dock."""
 
-    ALLOWED = "allowed"  # as the stage left it; the View menu may show it
-    SHOWN = "shown"  # shown again for every new visitor
+    ALLOWED = "allowed"  # as the stage left it (and puts back for every new visitor); the View menu may show it
     CLOSED = "closed"  # closed for good (its exports would open file dialogs anywhere)
 
 
@@ -77,7 +76,7 @@ def _variable_headers(language: str) -> list:
 # In the View menu's order.
 DOCKS = (
     DockSpec("simulator_dock", "simulator_dock", RIGHT, "simulator", _titled_only(SimulatorDock),
-             on_stage=OnStage.BIG_SIMULATED, in_kiosk=InKiosk.SHOWN, first_height=420),
+             on_stage=OnStage.BIG_SIMULATED, first_height=420),
     DockSpec("code_dock", "code_dock", RIGHT, "program", _titled_only(CodeDock),
              first_width=460, first_height=300),
     DockSpec("variables_dock", "variables_dock", RIGHT, "program",
@@ -85,7 +84,7 @@ DOCKS = (
              retranslate=lambda dock, language: dock.table.setHorizontalHeaderLabels(_variable_headers(language))),
     DockSpec("state_dock", "state_dock", RIGHT, "program", _plain_dock, on_stage=OnStage.BIG_REAL),
     DockSpec("console_dock", "console_dock", BOTTOM, "bottom", _titled_only(ConsoleDock),
-             on_stage=OnStage.STRIP, in_kiosk=InKiosk.SHOWN, first_height=130),
+             on_stage=OnStage.STRIP, first_height=130),
     DockSpec("monitor_dock", "monitor_dock", BOTTOM, "bottom", _plain_dock, in_kiosk=InKiosk.CLOSED, roomy=True),
     DockSpec("plot_dock", "plot_dock", BOTTOM, "bottom", _plain_dock, in_kiosk=InKiosk.CLOSED, roomy=True),
 )

@@ -95,7 +95,7 @@ class StageLayout(QObject):
         # the page keeps its flyout and zoom controls off the blocks on stage (a page made anew is told again)
         editor.sig_ready.connect(self._tell_page)
         # another robot shows or hides the simulator: arrange again once the window has done so
-        robots.sig_robot_changed.connect(lambda: self.active and QTimer.singleShot(0, self, self._arrange))
+        robots.sig_robot_changed.connect(lambda: self.active and QTimer.singleShot(0, self, self.arrange))
 
     @property
     def active(self) -> bool:
@@ -112,7 +112,7 @@ class StageLayout(QObject):
         """Go on stage when the window was on stage when it last closed."""
         if self._settings.stage:
             self._normal_state = self._settings.normal_window_state or self._frame.saveState()
-            self._arrange()
+            self.arrange()
             self.action.setChecked(True)
 
     def set_active(self, on: bool):
@@ -124,7 +124,7 @@ class StageLayout(QObject):
             return
         if on:
             self._normal_state = self._frame.saveState()
-            self._arrange()
+            self.arrange()
         else:
             self._keep_share()
             self._frame.restoreState(self._normal_state)
@@ -151,7 +151,8 @@ class StageLayout(QObject):
     def _strips(self):
         return self._docks.where(lambda spec: spec.on_stage == OnStage.STRIP)
 
-    def _arrange(self):
+    def arrange(self):
+        """On stage, show only the stage's docks, at the stage's sizes (again, after they were changed)."""
         big, strips = self._big_dock(), self._strips()
         for dock in self._docks.values():
             if dock is not big and dock not in strips:

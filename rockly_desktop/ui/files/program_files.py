@@ -38,7 +38,8 @@ class ProgramFiles(QObject):
     ended (at once when nothing had to wait; False when it failed or was cancelled).
     ``parent`` is the widget the dialogs belong to; ``file_dialogs`` asks for files (kiosk mode
     puts dialogs confined to one folder in its place); ``may_reload()`` says whether the program on
-    screen may be replaced now (not while it runs).
+    screen may be replaced now (not while it runs); ``keep_changes(then)``, when set, keeps unsaved
+    changes without asking and then calls ``then()`` (a kiosk keeps a visitor's program in its own folder).
     """
 
     sig_status = Signal(str)
@@ -55,6 +56,7 @@ class ProgramFiles(QObject):
         self._after_saves = []  # continuations waiting until no save waits for the page
         self.file_dialogs = FileDialogs()
         self.may_reload = lambda: True
+        self.keep_changes = None
         self._asked_about = None  # the change on disk last asked about (asked once, until Save)
 
     @property
@@ -169,6 +171,9 @@ class ProgramFiles(QObject):
             return
         if not self.document.modified:
             then(True)
+            return
+        if self.keep_changes is not None:
+            self.keep_changes(lambda: then(True))
             return
         language = self.settings.language
         box = plain_message_box(self.parent(), QMessageBox.Icon.Warning, tr("save_changes_title", language),

@@ -1,8 +1,8 @@
-"""Kiosk mode for a fair stand (``rockly --kiosk [PROGRAM]``): the stage layout, a big STOP that
+"""Kiosk mode for a fair stand (``rockly --kiosk [PROGRAM]``): the stage layout, locked, a big STOP that
 cannot be hidden, no context menus, no way out without the teacher's PIN or key chord (nor to
 the robot choice and Preferences), a window that comes back full screen, file dialogs kept in
-the kiosk's folders, a start program nobody can write over, and a fresh start for the next
-visitor after a few minutes without input."""
+the kiosk's folders, a start program nobody can write over, a visitor's changes kept without a question,
+and a fresh start (the whole layout too) for the next visitor after a few minutes without input."""
 from datetime import datetime
 
 from PySide6.QtCore import QEvent, QObject, Qt, QTimer
@@ -32,6 +32,11 @@ def can_be_left(settings) -> bool:
     return settings.teacher.has_pin or bool(settings.kiosk.quit_chord)
 
 
+# what the window itself is told when the mouse is on an edge between docks: a drag there resizes them
+_EDGE_DRAGGING = (QEvent.Type.MouseButtonPress, QEvent.Type.MouseButtonDblClick, QEvent.Type.MouseMove,
+                  QEvent.Type.HoverMove)
+
+
 class Kiosk(QObject):
     """Turns ``frame`` (the QMainWindow of a window built with ``settings.kiosk_mode`` on) into a kiosk
     whose start program is ``start_program`` (a path, or None for an empty program). The caller
@@ -52,6 +57,7 @@ class Kiosk(QObject):
         self._app_settings = settings
         self.settings = settings.kiosk
         self._language = language
+        self._stage = stage
         self._docks, self._editor, self._document, self._files = docks, editor, document, files
         self._replay, self._runs, self._robots, self._run_toolbar = replay, runs, robots, run_toolbar
         self.start_program = str(start_program) if start_program else None
@@ -72,6 +78,7 @@ class Kiosk(QObject):
         editor.setContextMenuPolicy(Qt.ContextMenuPolicy.NoContextMenu)
         self._refuse_context_menus()
         files.sig_program_replaced.connect(self._keep_programs_safe)
+        files.keep_changes = self._keep_visitor_program  # New, an example…: nobody is asked to save "Untitled"
         frame.installEventFilter(self)
         self.chord = None
         if self.settings.quit_chord:
@@ -85,9 +92,12 @@ class Kiosk(QObject):
 
     def eventFilter(self, watched, event):
         """Closing the window (Quit, Alt+F4) asks for the teacher's PIN first; a minimised window (the
-        window manager's Iconify) or one no longer full screen comes back full screen at once."""
+        window manager's Iconify) or one no longer full screen comes back full screen at once; the edges
+        between the docks take no mouse (the mouse reaches the window itself only there)."""
         if watched is not self.frame or self._may_close:
             return False
+        if event.type() in _EDGE_DRAGGING:
+            return True
         if event.type() == QEvent.Type.Close:
             event.ignore()
             self.ask_pin()
@@ -208,14 +218,14 @@ class Kiosk(QObject):
 
     def _forget_visitor(self):
         """Nothing of the last visitor stays in sight: console, replay, variables, the blocks' badges
-        and values; the toolbar (with STOP), simulator and console shown, the window full screen in front."""
+        and values; the toolbar (with STOP) shown, the stage's docks at their sizes (the View menu or the
+        teacher may have changed them), the window full screen in front."""
         self._replay.close()
         self._docks["console_dock"].clear()
         self._docks["variables_dock"].clear()
         self._editor.call("clearMarks")
-        # the View menu may have hidden a dock
-        for part in [self._run_toolbar()] + self._docks.where(lambda spec: spec.in_kiosk == InKiosk.SHOWN):
-            part.show()
+        self._run_toolbar().show()
+        self._stage.arrange()
         self.to_the_front()
 
     def _keep_programs_safe(self):
@@ -252,17 +262,25 @@ class PinDialog(QDialog):
             self.problem.setText(tr("teacher_wrong_pin", self._language))
             return
         answer = self._teacher.try_pin(pin)
-        self.problem.setText(answer.problem(self._language))
+        self._say(answer.problem(self._language))
         if answer.right:
             super().accept()
 
     def open(self):
         """Qt override: open with an empty PIN field."""
         wait = self._teacher.pin_wait()
-        self.problem.setText(wait_text(wait, self._language) if wait > 0 else "")
+        self._say(wait_text(wait, self._language) if wait > 0 else "")
         self.pin.clear()
         super().open()
         self.pin.setFocus()
+
+    def _say(self, problem: str):
+        """Show ``problem`` whole: a window does not grow by itself for a wrapped text's extra lines."""
+        self.problem.setText(problem)
+        self.layout().activate()
+        needed = self.heightForWidth(self.width())
+        if needed > self.height():
+            self.resize(self.width(), needed)
 
 
 class LeaveDialog(PinDialog):
