@@ -97,6 +97,7 @@ class MainWindow(QMainWindow):
                              lambda: badges_shown(self.settings, self.profile.id), self.console, self._made_plot,
                              lambda: self.state_dock.widget() if isinstance(self.state_dock.widget(), StatePanels)
                              else None, self.robots, registry)
+        self.replay.sig_past_shown.connect(lambda keys: self.docks.mark_past(keys, self.language))
         self.runs.sig_state_changed.connect(lambda state: state == "starting" and self.replay.close())
         self.runs.sig_finished.connect(lambda _result: self.runs.last_recording and self.replay.open(
             self.runs.last_recording, quiet=True))
