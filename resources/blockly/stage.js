@@ -5,7 +5,8 @@
  *   the toolbox is deleted), and where they were is no place a dropped block disappears into;
  * - the flyout's blocks are drawn smaller where it would take more than half of the view (fitted
  *   again whenever the view's width changes);
- * - while the flyout is out, the program moves right of it, and back when it closes.
+ * - while the flyout is out, the program moves right of it, and back when it closes;
+ * - the blocks are drawn larger, for an audience (the desk's zoom comes back when the stage is left).
  */
 'use strict';
 
@@ -13,9 +14,11 @@ const RocklyStage = (() => {
   const GAP = 16;                 // px between the flyout's edge and the program
   const FLYOUT_SHARE = 0.5;       // of the view's width the flyout may take on stage
   const MIN_FLYOUT_SCALE = 0.5;   // smaller blocks are not read at a glance
+  const STAGE_SCALE = 1.25;       // the workspace's scale on stage: text read from a few metres (the desk's is 0.8)
   let workspace = null;
   let on = false;
   let shifted = 0;                // px the program was moved right for the flyout
+  let deskScale = null;           // the workspace's scale before the stage
 
   function install(ws) {
     workspace = ws;
@@ -92,6 +95,13 @@ const RocklyStage = (() => {
   function set(active) {
     if (active === on) return;
     if (!active) moveProgram(-shifted);
+    if (active) {
+      deskScale = workspace.scale;
+      if (deskScale < STAGE_SCALE) workspace.setScale(STAGE_SCALE);
+    } else if (deskScale !== null) {
+      workspace.setScale(deskScale);
+      deskScale = null;
+    }
     on = active;
     document.body.classList.toggle('rocklyStage', on);
     const flyout = workspace.getFlyout();
