@@ -91,15 +91,23 @@ const RocklyStage = (() => {
     shifted += dx;
   }
 
+  /** Zoom to ``scale`` around the view's top left corner (right of the toolbox), where a program starts (Blockly's setScale
+   * zooms around the centre, and the program's start went out of sight). */
+  function scaleTo(scale) {
+    const speed = workspace.options.zoomOptions.scaleSpeed;
+    const corner = workspace.getMetricsManager().getAbsoluteMetrics();  // right of the toolbox
+    workspace.zoom(corner.left, corner.top, Math.log(scale / workspace.scale) / Math.log(speed));
+  }
+
   /** Go on stage or leave it. */
   function set(active) {
     if (active === on) return;
     if (!active) moveProgram(-shifted);
     if (active) {
       deskScale = workspace.scale;
-      if (deskScale < STAGE_SCALE) workspace.setScale(STAGE_SCALE);
+      if (deskScale < STAGE_SCALE) scaleTo(STAGE_SCALE);
     } else if (deskScale !== null) {
-      workspace.setScale(deskScale);
+      scaleTo(deskScale);
       deskScale = null;
     }
     on = active;
