@@ -5,7 +5,8 @@
  *   the toolbox is deleted), and where they were is no place a dropped block disappears into;
  * - the flyout's blocks are drawn smaller where it would take more than half of the view (fitted
  *   again whenever the view's width changes);
- * - while the flyout is out, the program moves right of it, and back when it closes.
+ * - while the flyout is out, the program moves right of it, and back when it closes;
+ * - the blocks are drawn larger, for an audience (the desk's zoom comes back when the stage is left).
  */
 'use strict';
 
@@ -13,9 +14,11 @@ const RocklyStage = (() => {
   const GAP = 16;                 // px between the flyout's edge and the program
   const FLYOUT_SHARE = 0.5;       // of the view's width the flyout may take on stage
   const MIN_FLYOUT_SCALE = 0.5;   // smaller blocks are not read at a glance
+  const STAGE_SCALE = 1.25;       // the workspace's scale on stage: text read from a few metres (the desk's is 0.8)
   let workspace = null;
   let on = false;
   let shifted = 0;                // px the program was moved right for the flyout
+  let deskScale = null;           // the workspace's scale before the stage
 
   function install(ws) {
     workspace = ws;
@@ -88,10 +91,25 @@ const RocklyStage = (() => {
     shifted += dx;
   }
 
+  /** Zoom to ``scale`` around the view's top left corner (right of the toolbox), where a program starts (Blockly's setScale
+   * zooms around the centre, and the program's start went out of sight). */
+  function scaleTo(scale) {
+    const speed = workspace.options.zoomOptions.scaleSpeed;
+    const corner = workspace.getMetricsManager().getAbsoluteMetrics();  // right of the toolbox
+    workspace.zoom(corner.left, corner.top, Math.log(scale / workspace.scale) / Math.log(speed));
+  }
+
   /** Go on stage or leave it. */
   function set(active) {
     if (active === on) return;
     if (!active) moveProgram(-shifted);
+    if (active) {
+      deskScale = workspace.scale;
+      if (deskScale < STAGE_SCALE) scaleTo(STAGE_SCALE);
+    } else if (deskScale !== null) {
+      scaleTo(deskScale);
+      deskScale = null;
+    }
     on = active;
     document.body.classList.toggle('rocklyStage', on);
     const flyout = workspace.getFlyout();

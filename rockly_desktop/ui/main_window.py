@@ -15,6 +15,7 @@ from rockly_desktop.ui.docks.registry import Docks
 from rockly_desktop.ui.docks.stage_layout import BottomTabSizes, StageLayout, keep_side_docks_full_height
 from rockly_desktop.ui.docks.state_panels import StatePanels
 from rockly_desktop.ui.docks.tablet import QtTablet
+from rockly_desktop.ui.docks.tablet_placement import global_rect
 from rockly_desktop.ui.files.autosave import Autosave
 from rockly_desktop.ui.files.document import Document
 from rockly_desktop.ui.files.examples_menu import ExamplesMenu
@@ -79,7 +80,10 @@ class MainWindow(QMainWindow):
         self._plot_store = None
         self.docks.place()
         self.profile_label = plain_label(parent=self, objectName="profile_label")
-        self.tablet = QtTablet(self, self.profile.display_name(), lambda: self.language)
+        self.tablet = QtTablet(self, self.profile.display_name(), lambda: self.language,
+                               clear_of=lambda: global_rect(self.simulator_dock))
+        self.tablet.sig_unanswered.connect(lambda robot: self.console.append(
+            tr("tablet_no_answer", self.language, robot=robot), "robot"))
         self.tablet.sig_notice.connect(lambda _robot, text: self.console.append(
             tr("robot_says", self.language, text=text), "robot"))
         self.robots = RobotChoice(self.document, self.tablet, settings, self)
@@ -98,6 +102,7 @@ class MainWindow(QMainWindow):
                              lambda: badges_shown(self.settings, self.profile.id), self.console, self._made_plot,
                              lambda: self.state_dock.widget() if isinstance(self.state_dock.widget(), StatePanels)
                              else None, self.robots, registry)
+        self.replay.sig_past_shown.connect(lambda keys: self.docks.mark_past(keys, self.language))
         self.runs.sig_state_changed.connect(lambda state: state == "starting" and self.replay.close())
         self.runs.sig_finished.connect(lambda _result: self.runs.last_recording and self.replay.open(
             self.runs.last_recording, quiet=True))

@@ -3,6 +3,7 @@ timeline shows under the workspace, and a moment lights the block and shows the 
 import json
 from pathlib import Path
 
+import pytest
 from page_tools import call_page, run_js
 from program_builder import block, number, stack, workspace
 from PySide6.QtCore import QPoint, Qt
@@ -235,3 +236,25 @@ def test_a_breakpoint_is_a_marker_of_its_own_and_a_click_on_it_jumps_there(qtbot
     qtbot.mouseClick(strip, Qt.MouseButton.LeftButton, pos=QPoint(round(strip._x(marker.time)), strip.height() // 2))
     assert bar.position == marker.time  # exactly: the breakpoint's block may have come a fraction of a ms before
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["second"], timeout=5000)
+
+
+
+@pytest.mark.parametrize(("fixture", "mark"), [("window", "Replay"), ("german_window", "Wiederholung")])
+def test_every_dock_showing_the_past_says_replay_until_the_timeline_closes(qtbot, request, fixture, mark):
+    window = request.getfixturevalue(fixture)
+    window.simulator_speed = 2.0
+    window.plot_dock.raise_()
+    window.plot_panel().add_curve("/odom", "pose.pose.position.x")
+    assert run_to_the_end(qtbot, window, stack(
+        block("text_print", inputs={"TEXT": block("text", {"TEXT": "go"})}),
+        block("hobbit_move", {"direction": "+"}, {"speed": number(1)}))).outcome == "finished"
+    qtbot.waitUntil(window.replay_bar.isVisible, timeout=5000)
+    driven = [window.docks[key] for key in ("simulator_dock", "variables_dock", "console_dock", "plot_dock")]
+    live_titles = [dock.windowTitle() for dock in driven]
+    assert not any(mark in title for title in live_titles)
+    window.replay_bar.jump_to(window.replay_bar.duration)  # the robot where it stopped, the line printed
+    assert [dock.windowTitle() for dock in driven] == [f"{title} — {mark}" for title in live_titles]
+    assert mark not in window.code_dock.windowTitle()  # the code is the program's, not a moment's
+    shot(window, f"replay_marked_{fixture}")
+    window.replay_bar.close_timeline()
+    assert [dock.windowTitle() for dock in driven] == live_titles

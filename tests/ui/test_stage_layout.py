@@ -2,6 +2,7 @@
 import pytest
 from page_tools import START_IN_VIEW, run_js
 from PySide6.QtCore import Qt
+from PySide6.QtTest import QTest
 from window_tools import WindowDriver
 
 from rockly_desktop.app import build_main_window
@@ -154,4 +155,50 @@ def test_going_on_stage_right_after_start_keeps_the_programs_start_in_view(qtbot
         window.start(str(examples_dir() / "hobbit" / "drive-a-square.rockly"))
     window.stage.set_active(True)
     qtbot.waitUntil(lambda: staged(window, 1280, 800), timeout=3000)
+    qtbot.waitUntil(lambda: _start_in_view(qtbot, window), timeout=3000)
+
+
+def simulator_size(window):
+    return window.simulator_dock.width(), window.simulator_dock.height()
+
+
+def test_f11_maximises_a_window_that_is_not_and_leaving_gives_back_its_size_and_the_simulators(qtbot, window):
+    window.showNormal()
+    window.resize(760, 560)  # (smaller than the offscreen screen, so that maximising shows)
+    qtbot.waitUntil(lambda: (window.width(), window.height()) == (760, 560), timeout=3000)
+    simulator_before = simulator_size(window)
+    QTest.keyClick(window, Qt.Key.Key_F11)
+    qtbot.waitUntil(lambda: window.isMaximized() and window.stage.active, timeout=3000)
+    qtbot.waitUntil(lambda: window.width() > 760 and not window.code_dock.isVisible(), timeout=3000)
+    QTest.keyClick(window, Qt.Key.Key_F11)
+    qtbot.waitUntil(lambda: not window.isMaximized() and (window.width(), window.height()) == (760, 560),
+                    timeout=3000)
+    qtbot.waitUntil(lambda: simulator_size(window) == simulator_before, timeout=3000)
+
+
+def test_leaving_the_stage_on_a_maximised_window_keeps_it_maximised_and_gives_the_simulator_its_size(qtbot, window):
+    window.showMaximized()
+    qtbot.waitUntil(window.isMaximized, timeout=3000)
+    qtbot.waitUntil(lambda: window.simulator_dock.width() > 0, timeout=3000)
+    simulator_before = simulator_size(window)
+    window.stage.set_active(True)
+    qtbot.waitUntil(lambda: not window.code_dock.isVisible(), timeout=3000)
+    window.stage.set_active(False)
+    assert window.isMaximized()
+    qtbot.waitUntil(lambda: simulator_size(window) == simulator_before, timeout=3000)
+
+
+def workspace_scale(qtbot, window) -> float:
+    return run_js(qtbot, window.editor, "Blockly.getMainWorkspace().scale")
+
+
+def test_on_stage_the_blocks_are_drawn_larger_and_back_at_desk_size_after_the_start_in_view(qtbot, driver):
+    window = driver.open_window(str(examples_dir() / "hobbit" / "drive-a-square.rockly"))
+    laid_out(qtbot, window, 1920, 1080)
+    desk = workspace_scale(qtbot, window)
+    window.stage.set_active(True)
+    qtbot.waitUntil(lambda: workspace_scale(qtbot, window) >= desk * 1.4, timeout=3000)
+    qtbot.waitUntil(lambda: _start_in_view(qtbot, window), timeout=3000)
+    window.stage.set_active(False)
+    qtbot.waitUntil(lambda: abs(workspace_scale(qtbot, window) - desk) < 1e-6, timeout=3000)
     qtbot.waitUntil(lambda: _start_in_view(qtbot, window), timeout=3000)

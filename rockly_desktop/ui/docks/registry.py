@@ -98,6 +98,7 @@ class Docks(Mapping):
         self._frame = frame
         self.specs = tuple(DOCKS if specs is None else specs)
         self._docks = {}
+        self._past = set()  # the keys of the docks that show a recorded moment (a replay's)
         for spec in self.specs:
             dock = spec.make(language, frame)
             dock.setObjectName(spec.key)
@@ -142,9 +143,18 @@ class Docks(Mapping):
     def retitle(self, language: str):
         """Name every dock (and what it shows) in ``language``."""
         for spec in self.specs:
-            self[spec.key].setWindowTitle(tr(spec.title, language))
+            title = tr(spec.title, language)
+            if spec.key in self._past:
+                title = tr("dock_replayed", language, title=title)
+            self[spec.key].setWindowTitle(title)
             if spec.retranslate is not None:
                 spec.retranslate(self[spec.key], language)
+
+    def mark_past(self, keys, language: str):
+        """Mark the docks ``keys`` name as showing the past (a replay drives them), and only those; say it in
+        ``language``."""
+        self._past = set(keys)
+        self.retitle(language)
 
     def where(self, keep: Callable[[DockSpec], bool]) -> list:
         """The docks whose spec ``keep`` accepts, in the table's order."""

@@ -67,9 +67,10 @@ class BottomTabSizes(QObject):
 
 
 class StageLayout(QObject):
-    """View → Stage (F11): the simulator (a real robot's state panels) takes most of ``frame`` (the
-    QMainWindow), the blocks stay beside it, the console is a strip under them; code, variables, topic
-    monitor and plot are closed (each as its entry in ``docks``, a ``registry.Docks``, says). Leaving
+    """View → Stage (F11): ``frame`` (the QMainWindow) is maximised (until the stage is left, when it was
+    smaller than its screen), the simulator (a real robot's state panels) takes most of it, the blocks stay
+    beside it, drawn larger, the console is a strip under them; code, variables, topic monitor and plot are
+    closed (each as its entry in ``docks``, a ``registry.Docks``, says). Leaving
     puts back the layout from before. ``settings`` (AppSettings) remember whether the stage was on, the
     simulator's share of the width and the layout to go back to; the page in ``editor`` is told when
     the stage is on; ``robots`` (RobotChoice) says whether the robot is simulated.
@@ -87,6 +88,10 @@ class StageLayout(QObject):
         self._persons_share = settings.stage_share is not None  # a width the person dragged is kept as it is
         self._settled = False  # the docks have the sizes given (only then is a share the person's)
         self._given = 0  # px the simulator was given last
+        self._maximised_for_stage = False  # the stage maximised the window: leaving gives it its size back
+        self._normal_sizes = None  # (the big dock, its width and height) before the stage
+        self._left_state = None  # the layout the stage was left for
+        self._resized_back = True  # False from leaving a stage that maximised the window until it has its size
         self.action = QAction(frame, checkable=True)
         self.action.setObjectName("action_stage")
         self.action.setShortcut(QKeySequence(Qt.Key.Key_F11))
@@ -122,15 +127,45 @@ class StageLayout(QObject):
     def _toggled(self, on: bool):
         if on == self.active:
             return
+        frame = self._frame
         if on:
-            self._normal_state = self._frame.saveState()
+            self._normal_state = frame.saveState()
+            big = self._big_dock()
+            self._normal_sizes = (big, big.width(), big.height()) if big.isVisible() else None
+            self._maximised_for_stage = not self._fills_its_screen()
+            if self._maximised_for_stage:
+                frame.showMaximized()
             self.arrange()
         else:
             self._keep_share()
-            self._frame.restoreState(self._normal_state)
-            self._normal_state = None
+            self._left_state, self._normal_state = self._normal_state, None
+            if self._maximised_for_stage:
+                self._maximised_for_stage = False
+                self._resized_back = False  # the layout is given again once the window has its size back
+                frame.showNormal()
+            self._go_back()
         self._settings.stage = on
         self._tell_page()
+
+    def _fills_its_screen(self) -> bool:
+        """The window is maximised or full screen, or as wide or as tall as its screen's room anyway."""
+        frame = self._frame
+        if frame.isMaximized() or frame.isFullScreen() or frame.screen() is None:
+            return True
+        room, size = frame.screen().availableGeometry(), frame.frameGeometry()
+        return size.width() >= room.width() or size.height() >= room.height()
+
+    def _go_back(self):
+        """The layout from before the stage, with the big dock's size from then (restoring a layout in a window
+        of another size gives docks other sizes: a maximised window's simulator came back a sliver)."""
+        if self.active or self._left_state is None:
+            return
+        self._frame.restoreState(self._left_state)
+        if self._normal_sizes is None:
+            return
+        dock, width, height = self._normal_sizes
+        self._frame.resizeDocks([dock], [width], Qt.Orientation.Horizontal)
+        self._frame.resizeDocks([dock], [height], Qt.Orientation.Vertical)
 
     def _tell_page(self):
         self._editor.call("setStage", {"on": self.active})
@@ -195,7 +230,12 @@ class StageLayout(QObject):
             self._settings.stage_share = self._share
 
     def eventFilter(self, watched, event):
-        """On stage, a window shown, grown or shrunk gives the simulator its share of its width."""
-        if watched is self._frame and event.type() in (QEvent.Type.Resize, QEvent.Type.Show) and self.active:
-            self._apply_later()
+        """On stage, a window shown, grown or shrunk gives the simulator its share of its width; a window the
+        stage maximised gets the layout from before once it has its size back."""
+        if watched is self._frame and event.type() in (QEvent.Type.Resize, QEvent.Type.Show):
+            if self.active:
+                self._apply_later()
+            elif event.type() == QEvent.Type.Resize and not self._resized_back and not self._frame.isMaximized():
+                self._resized_back = True
+                QTimer.singleShot(0, self, self._go_back)  # once the docks have been laid out at that size
         return False

@@ -1,7 +1,8 @@
 """The simulated robot's tablet in the app: its questions appear as real dialogs.
 
 ``QtTablet.ask`` is called from a simulator thread; the dialog is shown by the GUI
-thread and the caller waits (interruptibly) for the person's answer.
+thread, beside the simulator view (never over the robot), and the caller waits
+(interruptibly) for the person's answer.
 """
 import threading
 
@@ -11,6 +12,7 @@ from PySide6.QtWidgets import QDialog, QDialogButtonBox, QLabel, QLineEdit, QVBo
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
 from rockly_desktop.robot.sim.tablet import TabletQuestion
+from rockly_desktop.ui.docks.tablet_placement import place_clear_of
 from rockly_desktop.ui.texts import tr
 
 
@@ -22,6 +24,7 @@ class TabletRequest:
         self.text = text
         self.answer = ""
         self.answered = False  # False when the dialog was closed without an answer
+        self.closed = False  # its window was closed (×): "no answer" is the answer
         self.done = threading.Event()
 
 
@@ -62,6 +65,12 @@ class TabletDialog(QDialog):
         self.request.answered = True
         self.accept()
 
+    def closeEvent(self, event):
+        """Qt override: the window's × (the reject that follows says so: Esc alone stops the program)."""
+        if self.isVisible():
+            self.request.closed = True
+        super().closeEvent(event)
+
     def done(self, result):
         """Qt override: whatever closes the dialog answers the request."""
         super().done(result)
@@ -74,14 +83,17 @@ class QtTablet(QObject):
     _sig_show = Signal(object)
     _sig_close = Signal(object)
     sig_notice = Signal(str, str)  # the robot's name, the text it shows
-    sig_dismissed = Signal()  # the person closed a question without answering (Esc or the window's ×)
+    sig_dismissed = Signal()  # the person left a question with Esc (the app stops the run)
+    sig_unanswered = Signal(str)  # the robot's name: the person closed a question's window (×), which answers ''
 
-    def __init__(self, parent, robot_name: str, language, unanswered: str = None):
-        """``parent`` is the dialogs' parent; ``language()`` the language they speak. With ``unanswered``,
-        a question closed without an answer raises RobotCommandError(``unanswered``); without,
-        it answers '' (the app stops the run on ``sig_dismissed`` instead)."""
+    def __init__(self, parent, robot_name: str, language, unanswered: str = None, clear_of=lambda: None):
+        """``parent`` is the dialogs' parent; ``language()`` the language they speak; ``clear_of()`` the
+        rectangle (screen coordinates) a dialog must not cover, or None. With ``unanswered``, a question
+        closed without an answer raises RobotCommandError(``unanswered``); without, it answers ''
+        (Esc: the app stops the run on ``sig_dismissed``; ×: ``sig_unanswered`` says so)."""
         super().__init__(parent)
         self._parent = parent
+        self._clear_of = clear_of
         self._language = language
         self.robot_name = robot_name
         self.unanswered = unanswered
@@ -112,10 +124,29 @@ class QtTablet(QObject):
         language = self._language()
         dialog = TabletDialog(request, tr("tablet_title", language, robot=self.robot_name), language, self._parent)
         dialog.finished.connect(lambda _result: self.open_dialogs.pop(id(request), None))
-        dialog.rejected.connect(lambda: id(request) in self._closing or self.sig_dismissed.emit())
+        dialog.rejected.connect(lambda: self._rejected(request))
         self.open_dialogs[id(request)] = dialog
         dialog.setModal(False)  # the big STOP button must stay reachable
+        self._place(dialog)
         dialog.show()
+
+    def _place(self, dialog):
+        avoid = self._clear_of()
+        if avoid is None:
+            return
+        dialog.adjustSize()
+        window = self._parent.window()
+        near = window.frameGeometry()
+        screen = window.screen().availableGeometry() if window.screen() is not None else near
+        dialog.move(place_clear_of(dialog.frameGeometry().size(), avoid, near, screen.united(near)))
+
+    def _rejected(self, request: TabletRequest):
+        if id(request) in self._closing:
+            return
+        if request.closed and self.unanswered is None:
+            self.sig_unanswered.emit(self.robot_name)
+        else:
+            self.sig_dismissed.emit()
 
     def _close(self, request: TabletRequest):
         dialog = self.open_dialogs.pop(id(request), None)

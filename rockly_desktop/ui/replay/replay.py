@@ -21,9 +21,11 @@ from rockly_desktop.ui.texts import tr
 class Replay(QObject):
     """Drives the ``bar`` (``ReplayBar``) and shows its moments in the ``editor``, the ``variables`` dock,
     the ``simulator`` dock (whose live refresh pauses while a moment is shown), the ``console`` and the
-    plot panel. ``sig_opened(shown)``: a recording asked for with ``open`` was read, and shown or not."""
+    plot panel. ``sig_opened(shown)``: a recording asked for with ``open`` was read, and shown or not;
+    ``sig_past_shown(keys)`` names the docks (by their registry keys) that show a moment instead of the robot now."""
 
     sig_opened = Signal(bool)
+    sig_past_shown = Signal(tuple)  # the keys of the docks a moment drives (none: all show the robot live again)
 
     def __init__(self, bar, editor, variables, simulator, language, parent=None, badges=lambda: True,
                  console=None, plot=lambda: None, state_panels=lambda: None, robots=None, registry=None):
@@ -56,6 +58,8 @@ class Replay(QObject):
         self._reader = None  # the RecordingReader whose recording is to be shown
         self._data = None  # the ReplayData shown
         self._shown_block = None
+        self._past = ()  # the keys of the docks showing a moment, as last said
+        self._snapshot_shown = False  # the simulator view shows a recorded snapshot, not the robot now
         self.file_dialogs = FileDialogs()  # kiosk mode puts dialogs kept in one folder in its place
         bar.sig_moment.connect(self.show_moment)
         bar.sig_closed.connect(self._back_to_live)
@@ -181,6 +185,7 @@ class Replay(QObject):
         if self.moments is None:
             return
         moment = self.moments.at(seconds)
+        past = ["variables_dock"]
         if moment.block != self._shown_block:
             self._shown_block = moment.block
             self.editor.call("highlight", {"id": moment.block})
@@ -188,9 +193,12 @@ class Replay(QObject):
         if self.console is not None and moment.printed != self._shown_printed:
             self._shown_printed = moment.printed
             self.console.show_recorded(self._printed, moment.printed)
+        if self.console is not None:
+            past.append("console_dock")
         plot = self._plot()
         if plot is not None:
             plot.show_recorded(self.topics, seconds, self.moments.duration)
+            past.append("plot_dock")
         if self._badges_wanted():
             badges = self.moments.badges(seconds)
             if badges != self._shown_badges:
@@ -200,24 +208,36 @@ class Replay(QObject):
             if values != self._shown_values:
                 self._shown_values = values
                 self.editor.call("setValues", {"values": values, "label": tr("block_value", self.language)})
-        self._show_state(seconds)
+        if self._show_state(seconds):
+            past.append("state_dock")
         view = self.simulator.view
         if moment.snapshot is not None and view is not None:
             self.simulator.stop()
             view.set_snapshot(moment.snapshot)
+            self._snapshot_shown = True
         elif self.path is not None:
             if self.plan is None:
                 self.plan = PlanView(self.path.bounds(), self.language)
                 self.simulator.show_recorded_view(self.plan)
             self.plan.show_poses(self.path.until(seconds))
+        if self._snapshot_shown or self.plan is not None:  # a snapshot shown stays until the view is live again
+            past.append("simulator_dock")
+        self._say_past(tuple(past))
 
-    def _show_state(self, seconds: float):
+    def _say_past(self, keys: tuple):
+        if keys != self._past:
+            self._past = keys
+            self.sig_past_shown.emit(keys)
+
+    def _show_state(self, seconds: float) -> bool:
+        """Show the recorded topics at ``seconds`` in the Robot state panels; whether there are any."""
         panels = self._state_panels()
         if panels is None:
-            return
+            return False
         if self._live_panels is None or self._live_panels[0] is not panels:
             self._live_panels = (panels, panels.store)
         panels.set_store(self.topics.at(seconds))
+        return True
 
     def _back_to_live(self):
         self._shown_block = self._shown_badges = self._shown_printed = self._shown_values = None
@@ -235,3 +255,5 @@ class Replay(QObject):
         if plot is not None:
             plot.show_live()
         self.simulator.resume()
+        self._snapshot_shown = False
+        self._say_past(())

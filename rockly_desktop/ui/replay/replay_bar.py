@@ -9,7 +9,7 @@ import time
 
 from PySide6.QtCore import QRectF, Qt, QTimer, Signal
 from PySide6.QtGui import QColor, QPainter
-from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QSlider, QToolButton, QVBoxLayout, QWidget
+from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QSlider, QStyle, QToolButton, QVBoxLayout, QWidget
 
 from rockly_desktop.ui.plain_text import tooltip_text
 from rockly_desktop.ui.texts import tr
@@ -161,12 +161,21 @@ class ReplayBar(QWidget):
         else:
             self.slider.setValue(_slider_value(seconds))
 
+    @property
+    def playing(self) -> bool:
+        """True while the bar plays the recording."""
+        return self._timer.isActive()
+
+    def _at_end(self) -> bool:
+        # the slider's last millisecond may lie past the end, the end between two of its milliseconds
+        return self.position >= self.duration
+
     def toggle_play(self):
         """Play from the scrubber (from the start when at the end), or pause."""
         if self._timer.isActive():
             self.pause()
             return
-        if self.slider.value() >= self.slider.maximum():
+        if self._at_end():
             self.jump_to(0.0)
         self._played_at = time.monotonic()
         self._timer.start()
@@ -188,7 +197,7 @@ class ReplayBar(QWidget):
         step = (now - self._played_at) * self.speed.currentData()
         self._played_at = now
         self.jump_to(min(self.duration, self.position + step))
-        if self.slider.value() >= self.slider.maximum():
+        if self._at_end():
             self.pause()
 
     def _on_slider(self, _value):
@@ -200,7 +209,9 @@ class ReplayBar(QWidget):
         self.time_label.setText(f"{text} {self._note}".strip())
 
     def _show_play_state(self):
-        self.play_button.setText("⏸" if self._timer.isActive() else "▶")
+        # the style's icons: the fonts here may have no ⏸ (nor ▶), and a missing glyph shows as a box
+        icon = QStyle.StandardPixmap.SP_MediaPause if self._timer.isActive() else QStyle.StandardPixmap.SP_MediaPlay
+        self.play_button.setIcon(self.style().standardIcon(icon))
         self.play_button.setToolTip(tr("replay_pause" if self._timer.isActive() else "replay_play", self.language))
 
 
