@@ -537,11 +537,13 @@ class MainWindow(QMainWindow):
         def unwish():
             for link in wishing:
                 link.want_parameters(False)
+        from rockly_desktop.ui.blockmaker.trial import BlockTrial
+
         maker = self.block_maker = open_block_maker(self.profile, self.language, graph, self, chosen, kind, asker)
         maker.finished.connect(unwish)
         maker.sig_saved.connect(lambda block_id: self.reload_packs(keeping_only(maker.block()), tr(
             "maker_saved", self.language, block=block_id, category=maker.category.currentText().strip())))
-        self.block_maker.sig_try_requested.connect(lambda page: self.runs.run(page=page))
+        BlockTrial(maker, self.runs, lambda: self.simulator_dock if self.simulator_dock.isVisible() else None)
         return self.block_maker
 
     def edit_made_block(self, block_id: str = ""):

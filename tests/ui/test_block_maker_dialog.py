@@ -105,3 +105,54 @@ def test_the_python_shown_uses_the_value_typed_into_the_preview_block(qtbot, win
     maker.sentence["en"].setText("ask %1 now to say %2")   # a change to the block draws it anew with its defaults
     qtbot.waitUntil(lambda: "now" in drawn_preview(qtbot, maker)["text"], timeout=10000)
     assert "'sessionID': '7'" in maker.python.toPlainText()
+
+
+def tried(qtbot, maker) -> list:
+    """Press Try it as a person does and wait for the maker's report of how the try ended."""
+    QTest.mouseClick(maker.try_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: maker.try_report.isVisible() and "…" not in maker.try_report.toPlainText(),
+                    timeout=30000)
+    return maker.try_report.toPlainText().splitlines()
+
+
+def test_try_it_shows_in_the_maker_what_was_sent_the_robots_answer_and_the_result(qtbot, window):
+    maker = open_maker(qtbot, window)
+    make_mmui_block(qtbot, maker, block_id="made_try")
+    qtbot.waitUntil(lambda: (drawn_preview(qtbot, maker) or {}).get("text", "").startswith("ask"), timeout=10000)
+    type_into_preview_field(qtbot, maker, "sessionid", "12")
+    qtbot.waitUntil(lambda: "'sessionID': '12'" in maker.python.toPlainText(), timeout=5000)
+    report = tried(qtbot, maker)
+    assert report[0].startswith("Called the service /MMUI with: ") and '"sessionID": "12"' in report[0], report
+    assert report[1:] == ['The robot answered: {"params": []}', "Done: the block worked."]
+    assert window.robot().snapshot()["tablet"] == {"kind": "D_PLAIN", "text": "made by hand"}
+
+
+@pytest.mark.parametrize("language, refused", [
+    ("en", "The robot could not do this: The simulated HOBBIT does not know the emotion 'happy'. It knows: "),
+    ("de", "Das konnte der Roboter nicht tun: Der simulierte HOBBIT kennt das Gefühl 'happy' nicht. Er kennt: ")])
+def test_an_emotion_the_simulator_does_not_know_is_a_refusal_shown_in_the_maker(qtbot, request, language, refused):
+    window = request.getfixturevalue("window" if language == "en" else "german_window")
+    maker = open_maker(qtbot, window)
+    assert maker.choose_named("/head/emo")
+    maker.fields.set_use("data", "input", "happy")
+    maker.sentence["en"].setText("eyes show %1")
+    maker.sentence["de"].setText("Augen zeigen %1")
+    qtbot.waitUntil(lambda: (drawn_preview(qtbot, maker) or {}).get("text", "").startswith(
+        "eyes" if language == "en" else "Augen"), timeout=10000)
+    report = tried(qtbot, maker)
+    sent = "Sent on the topic" if language == "en" else "Auf dem Topic"
+    assert report[0].startswith(sent) and '{"data": "happy"}' in report[0], report
+    assert report[1].startswith(refused), report
+    assert len(report) == 2, report   # the refusal is the whole story: no second line about the run
+    assert window.robot().snapshot()["emotion"] == "NEUTRAL"
+
+
+def test_trying_moves_the_maker_off_the_simulator_view(qtbot, window):
+    maker = open_maker(qtbot, window)
+    make_mmui_block(qtbot, maker)
+    dock = window.simulator_dock
+    seen = dock.rect().translated(dock.mapToGlobal(QPoint(0, 0)))
+    assert maker.frameGeometry().intersects(seen)   # as it opens: over the simulator
+    tried(qtbot, maker)
+    assert not maker.frameGeometry().intersects(seen), (maker.frameGeometry(), seen)
+    assert maker.save_button.isVisible() and maker.try_report.isVisible()

@@ -132,6 +132,12 @@ class BlockMakerDialog(QDialog):
         self.warning_label.setWordWrap(True)
         self.warning_label.setStyleSheet("color: #8a4b00;")
         self.warning_label.hide()
+        self.try_report = QPlainTextEdit(self)
+        self.try_report.setObjectName("maker_try_report")
+        self.try_report.setReadOnly(True)
+        self.try_report.setAccessibleName(tr("maker_try_report", language))
+        self.try_report.setMaximumHeight(self.fontMetrics().lineSpacing() * 6 + 12)
+        self.try_report.hide()
         self.buttons = QDialogButtonBox(self)
         self.save_button = QPushButton(tr("maker_save", language), self)
         self.save_button.setObjectName("maker_save")
@@ -230,6 +236,7 @@ class BlockMakerDialog(QDialog):
         shown.addWidget(self.preview, 1)
         shown.addWidget(self.python, 1)
         column.addLayout(shown, 1)
+        column.addWidget(self.try_report)
         left = QWidget(self)
         offers = QVBoxLayout(left)
         offers.setContentsMargins(0, 0, 0, 0)
@@ -468,6 +475,11 @@ class BlockMakerDialog(QDialog):
         inputs = tuple(replace(entry, default=typed[entry.name]) if entry.name in typed else entry
                        for entry in block.inputs)
         self.python.setPlainText(python_preview(replace(block, inputs=inputs)) if block.kind else "")
+
+    def show_try_report(self, lines: list):
+        """Show what the last "Try it" did (``trial.report_lines``) under the preview."""
+        self.try_report.setPlainText("\n".join(lines))
+        self.try_report.show()
 
     def keyPressEvent(self, event):
         """Qt override: Enter ends what is being typed (a form's field, the preview block's field) and presses
