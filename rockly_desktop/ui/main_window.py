@@ -88,6 +88,8 @@ class MainWindow(QMainWindow):
                                     breakpoints=lambda: self.document.breakpoints, record=self._record_attached)
         self.runs.sig_state_changed.connect(self._on_run_state)
         self.attached.sig_state_changed.connect(self._on_run_state)
+        self.attached.sig_state_changed.connect(lambda _state: self.simulator_dock.say_not_the_robot(
+            tr("simulator_not_the_robot", self.language) if self.attached.active else ""))
         self.attached.sig_control_changed.connect(lambda controls: self.run_toolbar.set_watching(not controls))
         self.attached.sig_status.connect(lambda text: self.statusBar().showMessage(text))
         self.runs.sig_status.connect(lambda text: self.statusBar().showMessage(text))
