@@ -175,8 +175,9 @@ def test_the_open_program_is_sent_exported_and_starts_on_the_robot(qtbot, window
         [about] = watcher.programs()["programs"]
         assert (about["name"], about["on_lost_editor"]) == ("program", "keep_going")
         assert same_program(watcher.source("program"), workspace(greet_and_drive()))
-        qtbot.waitUntil(lambda: dialog.programs.count() == 1 and dialog.start_button.isEnabled(), timeout=20000)
+        qtbot.waitUntil(lambda: dialog.programs.count() == 1, timeout=20000)
         dialog.programs.item(0).setSelected(True)
+        assert dialog.start_button.isEnabled()   # once a program is chosen
         dialog.start_button.click()
         eventually(lambda: any(event.get("event") == "run" and event.get("state") == "ended" for event in list(events)),
                    120)

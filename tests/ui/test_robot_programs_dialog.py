@@ -81,7 +81,7 @@ def test_after_stop_the_console_says_the_run_ended_and_not_that_it_goes_on(qtbot
     assert window.simulator_dock.windowTitle() == "Simulator"
     dialog.attach_button.click()
     qtbot.waitUntil(lambda: highlighted(qtbot, window) == ["drive"], timeout=10000)
-    assert window.simulator_dock.windowTitle() == "Simulator — on this computer, not the robot you are attached to"
+    assert window.simulator_dock.windowTitle() == "Simulator — on this computer, not the robot"
     window.run_toolbar.stop_action.trigger()
     eventually(lambda: any(event.get("event") == "finished" for event in list(events)), 60)
     qtbot.waitUntil(lambda: not window.attached.active, timeout=20000)

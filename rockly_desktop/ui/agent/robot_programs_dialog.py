@@ -139,10 +139,15 @@ class RobotProgramsDialog(QDialog):
 
     def _show_help(self, shown: bool):
         """Show or hide the steps; the dialog grows to show them whole (a wrapped text's height is not in its
-        layout's minimum)."""
+        layout's minimum), as far as its screen allows, moved up to stay on it."""
         self.help.setVisible(shown)
-        if shown:
-            self.resize(self.width(), max(self.height(), self.layout().totalHeightForWidth(self.width())))
+        if not shown:
+            return
+        area, frame = self.screen().availableGeometry(), self.frameGeometry()
+        extra = frame.height() - self.height()  # the window's title bar and borders
+        height = min(max(self.height(), self.layout().totalHeightForWidth(self.width())), area.height() - extra)
+        self.resize(self.width(), height)
+        self.move(frame.left(), max(area.top(), min(frame.top(), area.bottom() + 1 - height - extra)))  # on screen
 
     def _enable_start(self):
         self.start_button.setEnabled(not self._runs and self.chosen() is not None)
