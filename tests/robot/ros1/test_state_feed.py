@@ -60,7 +60,7 @@ def test_what_a_rockly_agent_publishes_counts_as_rocklys_and_the_simulated_robot
     feed = ros_robot.follow_graph()
     agent = AgentProcess(tmp_path / "library", "--master", ros_master.uri, backend="ros1")
     try:
-        answers = "/rockly_agent/from_agent"   # published by the agent's node (a rockly_PID_… node like the simulator's)
+        answers = "/rockly_agent/from_agent"   # the agent node publishes it (named rockly_PID_… as the simulator)
         eventually(lambda: feed.own_publishers().get(answers) == 1, 30)
         assert (answers, "std_msgs/String", 0) in feed.graph_topics()
         assert ("/odom", "nav_msgs/Odometry", 1) in feed.graph_topics()   # the simulated robot is not Rockly here
