@@ -28,7 +28,7 @@ def limits_line(profile, limits: Limits, language: str):
 
 
 def make_runner(profile, robot, run_code: dict, control, emit, language: str = "en",
-                limits: Limits = None, recording=None) -> ProgramRunner:
+                limits: Limits = None, recording=None, notes=None) -> ProgramRunner:
     """A ProgramRunner for the page's ``getRunCode`` answer, bound to ``robot``.
 
     The program sees the profile's command object as ``robot`` and the generic ROS
@@ -36,10 +36,13 @@ def make_runner(profile, robot, run_code: dict, control, emit, language: str = "
     Both command objects go through the teacher's ``limits`` (see ``robot/wrappers/limits.py``), and send
     what differs per ROS version as the robot wants it (``robot/wrappers/ros_versions.py``).
     The run reports its errors in ``language``. A ``RunRecording`` (``recording``) records the
-    run: what the program sends, its blocks, variables and events, until it ends.
+    run: what the program sends, its blocks, variables and events, until it ends. ``notes(entry)`` is told
+    the same of what is sent and what comes back (``RecordedBackend``'s entries; the block maker's "Try it").
     """
     limited = limited_backend(profile, link_backend(robot, control.interrupt), limits or Limits(), language)
     backend = limited if recording is None else RecordedBackend(limited, recording.command)
+    if notes is not None:
+        backend = RecordedBackend(backend, notes)
     commands = profile.create("api", backend)
     ros = RosCommands(backend, types=profile.ros_types)
 

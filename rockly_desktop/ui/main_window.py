@@ -93,6 +93,8 @@ class MainWindow(QMainWindow):
                                     breakpoints=lambda: self.document.breakpoints, record=self._record_attached)
         self.runs.sig_state_changed.connect(self._on_run_state)
         self.attached.sig_state_changed.connect(self._on_run_state)
+        self.attached.sig_state_changed.connect(lambda _state: self.simulator_dock.say_not_the_robot(
+            tr("simulator_not_the_robot", self.language) if self.attached.active else ""))
         self.attached.sig_control_changed.connect(lambda controls: self.run_toolbar.set_watching(not controls))
         self.attached.sig_status.connect(lambda text: self.statusBar().showMessage(text))
         self.runs.sig_status.connect(lambda text: self.statusBar().showMessage(text))
@@ -545,11 +547,13 @@ class MainWindow(QMainWindow):
         def unwish():
             for link in wishing:
                 link.want_parameters(False)
+        from rockly_desktop.ui.blockmaker.trial import BlockTrial
+
         maker = self.block_maker = open_block_maker(self.profile, self.language, graph, self, chosen, kind, asker)
         maker.finished.connect(unwish)
         maker.sig_saved.connect(lambda block_id: self.reload_packs(keeping_only(maker.block()), tr(
             "maker_saved", self.language, block=block_id, category=maker.category.currentText().strip())))
-        self.block_maker.sig_try_requested.connect(lambda page: self.runs.run(page=page))
+        BlockTrial(maker, self.runs, lambda: self.simulator_dock if self.simulator_dock.isVisible() else None)
         return self.block_maker
 
     def edit_made_block(self, block_id: str = ""):

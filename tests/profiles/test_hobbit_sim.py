@@ -434,10 +434,12 @@ def test_show_emotion(sim, hobbit, emotion):
     assert sim.snapshot()["emotion"] == emotion
 
 
-def test_unknown_emotion_is_ignored_with_a_warning(world, sim, caplog):
-    world.publish("/head/emo", "std_msgs/String", {"data": "ANGRY"})
+def test_an_unknown_emotion_is_refused_to_the_program_naming_the_known_ones(world, sim):
+    with pytest.raises(RobotCommandError) as refused:
+        world.publish("/head/emo", "std_msgs/String", {"data": "ANGRY"})
     assert sim.snapshot()["emotion"] == "NEUTRAL"
-    assert "unknown emotion 'ANGRY' ignored" in caplog.text
+    assert str(refused.value).startswith("The simulated HOBBIT does not know the emotion 'ANGRY'. It knows: CONCERNED,")
+    assert refused.value.in_language("de").startswith("Der simulierte HOBBIT kennt das Gefühl 'ANGRY' nicht.")
 
 
 # --- arm, gripper, turntable ----------------------------------------------------------------------

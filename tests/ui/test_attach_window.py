@@ -9,6 +9,7 @@ from agent_tools import AgentProcess
 from page_tools import call_page
 from program_builder import block, number, stack, workspace
 from PySide6.QtCore import QTimer
+from PySide6.QtWidgets import QInputDialog
 from screenshots import screenshot
 from standalone_tools import exported_program
 from test_running import highlighted
@@ -168,12 +169,15 @@ def test_the_open_program_is_sent_exported_and_starts_on_the_robot(qtbot, window
                          limits=lambda: window.settings.teacher.limits("hobbit"))
         dialog.keep_going.setChecked(True)
         dialog.send_button.click()
+        qtbot.waitUntil(lambda: dialog.findChild(QInputDialog) is not None, timeout=5000)
+        dialog.findChild(QInputDialog).textValueSelected.emit("program")   # the name it is asked for
         qtbot.waitUntil(lambda: dialog.status.text() == "'program' is on the robot now", timeout=20000)
         [about] = watcher.programs()["programs"]
         assert (about["name"], about["on_lost_editor"]) == ("program", "keep_going")
         assert same_program(watcher.source("program"), workspace(greet_and_drive()))
-        qtbot.waitUntil(lambda: dialog.programs.count() == 1 and dialog.start_button.isEnabled(), timeout=20000)
+        qtbot.waitUntil(lambda: dialog.programs.count() == 1, timeout=20000)
         dialog.programs.item(0).setSelected(True)
+        assert dialog.start_button.isEnabled()   # once a program is chosen
         dialog.start_button.click()
         eventually(lambda: any(event.get("event") == "run" and event.get("state") == "ended" for event in list(events)),
                    120)

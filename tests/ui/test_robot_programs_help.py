@@ -25,6 +25,8 @@ def test_the_help_opens_with_the_steps_in_the_windows_language(qtbot, language, 
     assert dialog.help_button.text() == button and not dialog.help.isVisible()
     dialog.help_button.click()
     assert dialog.help.isVisible()
+    assert dialog.help.height() >= dialog.help.heightForWidth(dialog.help.width())   # not clipped
+    assert dialog.screen().availableGeometry().contains(dialog.frameGeometry())   # its buttons too
     steps = dialog.help.text()
     assert steps.startswith(first) and steps.endswith(last)
     assert "'~/rockly/bin/rockly-agent --backend ros1'" in steps and "11411" in steps

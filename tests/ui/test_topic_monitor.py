@@ -6,6 +6,8 @@ import array
 
 import pytest
 from PySide6.QtCore import QPoint, Qt, QTimer
+from PySide6.QtTest import QTest
+from PySide6.QtWidgets import QStyle
 
 from rockly_desktop.core.state_store import StateStore
 from rockly_desktop.ui.docks.topic_models import LIST_LIMIT, RATE, TOPIC
@@ -440,13 +442,22 @@ def test_the_monitor_says_when_the_byte_budget_cut_a_topics_history(store, make_
     assert monitor.history_note.isHidden()
 
 
-def test_the_robots_services_and_actions_are_listed_under_the_topics_filtered_with_them(qtbot, store):
+def show_the_interfaces(qtbot, monitor):
+    """Click the tab of the services and actions, as a person does."""
+    bar = monitor.lists.tabBar()
+    QTest.mouseClick(bar, Qt.MouseButton.LeftButton, pos=bar.tabRect(1).center())
+    qtbot.waitUntil(monitor.interfaces.isVisible, timeout=3000)
+
+
+def test_the_robots_services_and_actions_are_listed_beside_the_topics_filtered_with_them(qtbot, store):
     offers = [("action", "/move_base", "move_base_msgs/MoveBaseAction"), ("service", "/MMUI", "hobbit_msgs/Request")]
     monitor = TopicMonitor(store, graph=lambda: [], offers=lambda: offers)
     qtbot.addWidget(monitor)
     monitor.show()
     qtbot.waitExposed(monitor)
-    assert monitor.interfaces.isVisible() and monitor.interfaces.title.text() == "Services and actions: 2"
+    assert monitor.lists.tabText(1) == "Services and actions"
+    show_the_interfaces(qtbot, monitor)
+    assert monitor.interfaces.title.text() == "Services and actions: 2"
     assert monitor.interfaces.names() == [("/MMUI", "service"), ("/move_base", "action")]
     assert monitor.interfaces.tree.topLevelItem(0).text(0) == "Service"
     monitor.filter_edit.setText("MoveBase")
@@ -460,4 +471,68 @@ def test_the_robots_services_and_actions_are_listed_under_the_topics_filtered_wi
 
 def test_without_services_and_actions_given_the_monitor_lists_topics_only(make_monitor):
     monitor = make_monitor(shown=True)
-    assert not monitor.interfaces.isVisible()
+    assert not monitor.interfaces.isVisible() and not monitor.lists.tabBar().isVisible()
+
+
+HOBBIT_TOPICS = [("/battery_state", "sensor_msgs/BatteryState", 1), ("/bumper", "std_msgs/Bool", 1),
+                 ("/DiscreteMotionState", "std_msgs/String", 1), ("/joint_states", "sensor_msgs/JointState", 1),
+                 ("/move_base_simple/goal", "geometry_msgs/PoseStamped", 1), ("/odom", ODOM, 1)]
+DOCK_SIZES = [(806, 240), (1254, 320)]  # the Topic monitor in the window at 1280×800 and at 1920×1080
+
+
+def drawn_text(table, row: int, column: int) -> str:
+    """The cell's text as the table draws it: cut to the cell's room with the table's elide mode."""
+    text = table.model().index(row, column).data()
+    room = table.columnWidth(column) - 2 * (table.style().pixelMetric(QStyle.PixelMetric.PM_FocusFrameHMargin) + 1)
+    return table.fontMetrics().elidedText(text, table.textElideMode(), room)
+
+
+@pytest.mark.parametrize("size", DOCK_SIZES)
+@pytest.mark.parametrize("language", ["en", "de"])
+def test_topic_names_are_shown_whole_at_the_docks_sizes_and_a_longer_one_is_cut_at_its_end(
+        qtbot, store, size, language):
+    monitor = TopicMonitor(store, graph=lambda: HOBBIT_TOPICS, language=language, offers=lambda: [])
+    qtbot.addWidget(monitor)
+    monitor.resize(*size)
+    monitor.show()
+    qtbot.waitExposed(monitor)
+    table = monitor.table
+    assert [drawn_text(table, row, TOPIC) for row in range(6)] == [table.model().index(row, TOPIC).data()
+                                                                    for row in range(6)]
+    long_name = "/hobbit/perception/people_detector/tracked_persons_with_their_faces"
+    monitor._graph = lambda: [*HOBBIT_TOPICS, (long_name, "std_msgs/String", 1)]
+    monitor.refresh()
+    row = next(row for row in range(7) if table.model().index(row, TOPIC).data() == long_name)
+    drawn = drawn_text(table, row, TOPIC)
+    assert drawn.endswith("…") and long_name.startswith(drawn[:-1]) and len(drawn) > 12, drawn
+    assert drawn_text(table, row, 1) != ""   # the type keeps a place
+
+
+@pytest.mark.parametrize("size", DOCK_SIZES)
+def test_the_services_and_actions_show_at_least_four_rows_at_the_docks_sizes(qtbot, store, size):
+    offers = [("service", f"/service_{number}", "std_srvs/Trigger") for number in range(6)]
+    monitor = TopicMonitor(store, graph=lambda: HOBBIT_TOPICS, offers=lambda: offers)
+    qtbot.addWidget(monitor)
+    monitor.resize(*size)
+    monitor.show()
+    qtbot.waitExposed(monitor)
+    show_the_interfaces(qtbot, monitor)
+    tree = monitor.interfaces.tree
+    whole = [row for row in range(tree.topLevelItemCount())
+             if tree.viewport().rect().contains(tree.visualItemRect(tree.topLevelItem(row)))]
+    assert len(whole) >= 4, (whole, tree.viewport().size())
+
+
+def test_every_topic_a_program_publishes_on_the_simulator_says_rockly(qtbot, window):
+    from rockly_desktop.robot.interrupt import Interrupt
+
+    robot = window.robot()
+    backend = robot.backend(Interrupt())
+    backend.publish("/head/emo", "std_msgs/String", {"data": "HAPPY"})   # as a program's block does
+    backend.publish("/cmd_vel", "geometry_msgs/Twist", {"linear": {"x": 0.0}})
+    monitor = window.findChild(TopicMonitor)
+    monitor.refresh()
+    qtbot.waitUntil(lambda: "/head/emo" in [row[TOPIC] for row in rows(monitor)], timeout=5000)
+    assert row_of(monitor, "/head/emo")["publishers"] == "1 (Rockly)"
+    assert row_of(monitor, "/cmd_vel")["publishers"] == "1 (Rockly)"
+    assert row_of(monitor, "/odom")["publishers"] == "1"   # the simulated robot's own

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 from rockly_desktop.sdk import GoalStatus, RobotCommandError, RobotSimulator, TabletQuestion, twist_velocity
 
 from .base import MOVE_SPEED, TURN_SPEED
-from .world import CONTACT_TOPIC, WORLD, blocked_on_the_way, goal_problem
+from .world import CONTACT_TOPIC, TEXTS, WORLD, blocked_on_the_way, goal_problem
 
 log = logging.getLogger(__name__)
 
@@ -485,9 +485,9 @@ class SimHobbit(RobotSimulator):
 
     def _on_emotion(self, message):
         emotion = message.get("data")
-        if not isinstance(emotion, str) or emotion not in EMOTIONS:
-            log.warning("simulated HOBBIT: unknown emotion %r ignored", emotion)
-            return
+        if not isinstance(emotion, str) or emotion not in EMOTIONS:  # the program hears it (on ROS: the log)
+            raise RobotCommandError(TEXTS("sim_unknown_emotion", emotion=repr(emotion),
+                                          known=", ".join(sorted(EMOTIONS))))
         with self.lock:
             self._emotion = emotion
 

@@ -42,7 +42,7 @@ class SimRosBridge:
         for topic, msg_type in interface.get("subscribes", {}).items():
             self._endpoints.append(rospy.Subscriber(
                 topic, types.message_class(msg_type),
-                lambda message, topic=topic, msg_type=msg_type: world.publish(topic, msg_type, from_message(message))))
+                lambda message, topic=topic, msg_type=msg_type: self._deliver(topic, msg_type, from_message(message))))
         for topic, msg_type in interface.get("publishes", {}).items():
             publisher = rospy.Publisher(topic, types.message_class(msg_type), queue_size=50)
             message_class = types.message_class(msg_type)
@@ -55,6 +55,13 @@ class SimRosBridge:
                 lambda request, name=name, srv_type=srv_type: self._serve(name, srv_type, request)))
         self._action_servers = [self._serve_action(name, action_type)
                                 for name, action_type in interface.get("actions", {}).items()]
+
+    def _deliver(self, topic, msg_type, message):
+        """Hand a message heard on ROS to the simulated robot; one it refuses is logged (a topic has no answer)."""
+        try:
+            self._world.publish(topic, msg_type, message)
+        except RobotCommandError as refusal:
+            log.warning("simulated robot: %s", refusal)
 
     def _serve(self, name, srv_type, request):
         with self._calls_changed:

@@ -12,6 +12,7 @@ import threading
 
 from rockly_desktop.robot.followed_topics import FollowedTopics
 from rockly_desktop.robot.parameter_wish import ParameterWish
+from rockly_desktop.robot.ros1.agent_topics import topics as agent_topics
 from rockly_desktop.robot.ros1.connection import ask_master
 from rockly_desktop.robot.ros1.graph_offers import ServiceTypes, graph_actions, parameter_names
 
@@ -19,6 +20,13 @@ log = logging.getLogger(__name__)
 
 POLL_SECONDS = 1.0
 ROS_OWN_SERVICES = ("/get_loggers", "/set_logger_level")  # every rospy node's, no robot's
+
+
+def rockly_agents(subscriber_list) -> set:
+    """The nodes of Rockly agents among the master's ``[(topic, [node, ...]), ...]`` subscribers: those that
+    listen on an agent's requests topic (``NAMESPACE/to_agent``, ``agent_topics``)."""
+    requests = "/" + agent_topics("agent")[0].rsplit("/", 1)[1]  # "/to_agent", whatever the namespace
+    return {node for topic, nodes in subscriber_list if topic.endswith(requests) for node in nodes}
 
 
 class RosStateFeed:
@@ -39,11 +47,12 @@ class RosStateFeed:
 
     def graph_topics(self) -> list:
         """(topic, type, publisher count) of every topic the master knows, as of the last poll; the count
-        is the others' (Rockly's own are ``own_publishers``)."""
+        is the others' (Rockly's own, this window's and its agents', are ``own_publishers``)."""
         return list(self._topics)
 
     def own_publishers(self) -> dict:
-        """{topic: 1} for each topic this process's node publishes, as of the last poll."""
+        """{topic: Rockly's publishers} for each topic this process's node or a Rockly agent's publishes (what a
+        program runs on the robot sends), as of the last poll."""
         return dict(self._own)
 
     def services(self) -> set:
@@ -79,13 +88,15 @@ class RosStateFeed:
             if not self._ros_graph.connection.lost:
                 try:
                     types = dict(ask_master(uri, "getTopicTypes"))
-                    publisher_list, _subscribers, services = ask_master(uri, "getSystemState")
+                    publisher_list, subscriber_list, services = ask_master(uri, "getSystemState")
                     publishers = dict(publisher_list)
                     me = rospy.get_name()
+                    rocklys = {me} | rockly_agents(subscriber_list)
                     self._services = {name for name, _nodes in services}
-                    self._own = {topic: 1 for topic, nodes in publishers.items() if me in nodes}
+                    self._own = {topic: len(rocklys.intersection(nodes)) for topic, nodes in publishers.items()
+                                 if rocklys.intersection(nodes)}
                     self._topics = sorted((topic, msg_type, len([node for node in publishers.get(topic, [])
-                                                                 if node != me]))
+                                                                 if node not in rocklys]))
                                           for topic, msg_type in types.items())
                     for topic, msg_type in types.items():
                         self._followed.follow(topic, msg_type)

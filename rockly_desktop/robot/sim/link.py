@@ -37,6 +37,7 @@ class SimulatedRobot:
         self.simulator.start()
         self._encoder = None
         self._listens = listened_types(profile)
+        self._published = set()  # the topics programs published on (the simulated robot's commands, made blocks')
 
     @classmethod
     def unavailable(cls):
@@ -60,7 +61,7 @@ class SimulatedRobot:
     def backend(self, interrupt: Interrupt):
         """A backend whose waits end when ``interrupt`` is stopped; a message the simulated robot
         would not get on a real ROS (another type than it listens for, values that do not fit) is refused."""
-        return SimBackend(self.world, interrupt, self._listens, self.profile.ros_types)
+        return SimBackend(self.world, interrupt, self._listens, self.profile.ros_types, published=self._published)
 
     def follow_graph(self):
         """Nothing to start: the simulated world fills ``state`` from the beginning."""
@@ -81,8 +82,11 @@ class SimulatedRobot:
         return self.simulator.snapshot()
 
     def graph_topics(self) -> list:
-        """(topic, type, publisher count) of the simulated robot's topics."""
-        return [(topic, msg_type, 1) for topic, msg_type in self.world.topics()]
+        """(topic, type, publisher count) of the simulated robot's topics: the simulated robot publishes each,
+        except those only programs published on (Rockly's own: ``own_publishers``)."""
+        robots = self.profile.ros_interface.get("publishes") or {}
+        return [(topic, msg_type, int(topic in robots or topic not in self._published))
+                for topic, msg_type in self.world.topics()]
 
     def graph_services(self) -> list:
         """(service, type) of the simulated robot's services, typed as its profile declares them ("" if not)."""
@@ -108,8 +112,8 @@ class SimulatedRobot:
         raise DefinitionNotLearnt(app_local_text("maker_fields_unknown", type=type_name))
 
     def own_publishers(self) -> dict:
-        """A program drives the simulated robot directly, with no publishers of its own."""
-        return {}
+        """{topic: 1} for each topic a program published on (Rockly's publisher, as on a real ROS)."""
+        return dict.fromkeys(set(self._published), 1)
 
     def health(self) -> list:
         """HealthItems of the simulated robot (its interface as the manifest declares it)."""

@@ -235,11 +235,12 @@ class SimBackend(RobotBackend):
     ``listens`` ({topic: {types}}) are the types the simulated robot subscribes with, and ``types``
     (a DefinitionCatalog) the definitions Rockly knows: a message of another type on such a topic,
     or one whose values do not fit its type (a speed as the text "1.0" or as true), is refused with
-    a RobotCommandError, as a real ROS would not deliver it.
+    a RobotCommandError, as a real ROS would not deliver it. ``published`` (a set) gets each topic published on.
     """
 
-    def __init__(self, world: SimWorld, interrupt, listens=None, types=None):
+    def __init__(self, world: SimWorld, interrupt, listens=None, types=None, published=None):
         self._world = world
+        self._published = published if published is not None else set()
         self.interrupt = interrupt
         self._listens = listens or {}
         self._types = types
@@ -260,6 +261,7 @@ class SimBackend(RobotBackend):
             except RobotCommandError as error:
                 raise RobotCommandError(app_local_text("sim_message_refused", type=msg_type, topic=topic,
                                                        problem=str(error))) from None
+        self._published.add(topic)
         self._world.publish(topic, msg_type, message)
 
     def latest(self, topic: str, msg_type: str):

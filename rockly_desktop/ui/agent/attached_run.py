@@ -111,9 +111,10 @@ class AttachedRun(QObject):
         self.sig_control_changed.emit(self.controller)
         self.sig_attached.emit(self.program)
 
-    def detach(self):
+    def detach(self, ended: bool = False):
         """Stop watching; the run on the robot goes on (or stops) as its program chose for a lost editor. What the
-        window saw goes to ``sig_recorded``."""
+        window saw goes to ``sig_recorded``. ``ended``: the run ended (or its connection was lost) and the Console
+        said so already: nothing is said of it going on."""
         self.calls.forget()
         client, self.client = self.client, None
         if client is None:
@@ -124,7 +125,8 @@ class AttachedRun(QObject):
         else:
             client.close()  # the agent takes a closed connection as a detach (no answer to wait for)
         self._highlight(None)
-        self.console.append(tr("attach_detached", self.language()), "info")
+        if not ended:
+            self.console.append(tr("attach_detached", self.language()), "info")
         self.sig_status.emit("")  # a pause it said is no longer this window's to say
         self.controller = False
         self._set_state("idle")
@@ -199,7 +201,7 @@ class AttachedRun(QObject):
             self._take_control()
         elif kind == "run" and event.get("state") == "ended":
             self.console.append(tr("attached_run_ended", self.language(), name=self.program), "info")
-            self.detach()
+            self.detach(ended=True)
 
     def _take_control(self):
         """The window that controlled the run has gone: this one controls it now, with its own breakpoints."""
@@ -211,4 +213,4 @@ class AttachedRun(QObject):
     def _on_closed(self):
         if self.client is not None:
             self.console.append(tr("attach_connection_lost", self.language()), "error")
-            self.detach()
+            self.detach(ended=True)

@@ -1,17 +1,18 @@
 """Robot → "Programs on the robot…": the agent's address, the programs it keeps and what it runs now, with
 Send (the open program, exported standalone as ``rockly export --standalone`` does), Start, Stop and Attach
 (``AttachedRun``); once attached, whether the robot's program is the one open here; and, at a click, how to put
-the agent on a robot."""
+the agent on a robot. While it is open the agent is asked again each second, so what it says stays true."""
 import tempfile
 from pathlib import Path
 
-from PySide6.QtCore import Qt
+from PySide6.QtCore import Qt, QTimer
 from PySide6.QtWidgets import (
     QCheckBox,
     QDialog,
     QDialogButtonBox,
     QFormLayout,
     QHBoxLayout,
+    QInputDialog,
     QLabel,
     QLineEdit,
     QListWidget,
@@ -30,6 +31,8 @@ from rockly_desktop.runtime.standalone_file import standalone_text
 from rockly_desktop.ui.agent.agent_calls import AgentCalls
 from rockly_desktop.ui.agent.program_difference import same_program
 from rockly_desktop.ui.texts import tr
+
+POLL_MS = 1000  # the agent is asked again this often while the dialog is open
 
 
 class RobotProgramsDialog(QDialog):
@@ -55,6 +58,7 @@ class RobotProgramsDialog(QDialog):
         self.calls = AgentCalls(self)
         self._generation = 0  # of the dialog's showing: answers to an earlier one are dropped
         self._enabled_before = None  # the asking buttons' states while an answer is on its way
+        self._runs = False  # whether the agent said a program runs
         self._copies = tempfile.TemporaryDirectory(prefix="rockly-robot-copy-")
         self.setWindowTitle(tr("robot_programs_title", language))
         self.host = QLineEdit(host)
@@ -102,7 +106,7 @@ class RobotProgramsDialog(QDialog):
         self.help.setWordWrap(True)
         self.help.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         self.help.hide()
-        self.help_button.toggled.connect(self.help.setVisible)
+        self.help_button.toggled.connect(self._show_help)
         layout = QVBoxLayout(self)
         layout.addLayout(form)
         layout.addWidget(self.programs, 1)
@@ -120,7 +124,53 @@ class RobotProgramsDialog(QDialog):
         self.attach_button.clicked.connect(self.attach)
         attached.sig_state_changed.connect(self._follow_attachment)
         self.finished.connect(self._forget_calls)
+        self.programs.itemSelectionChanged.connect(self._enable_start)
+        self._enable_start()
+        self._poll_timer = QTimer(self)
+        self._poll_timer.setInterval(POLL_MS)
+        self._poll_timer.timeout.connect(self._poll)
+        self.finished.connect(self._poll_timer.stop)
         self.resize(520, 360)
+
+    def showEvent(self, event):
+        """Qt override: the agent is asked again each second while the dialog shows."""
+        super().showEvent(event)
+        self._poll_timer.start()
+
+    def _show_help(self, shown: bool):
+        """Show or hide the steps; the dialog grows to show them whole (a wrapped text's height is not in its
+        layout's minimum), as far as its screen allows, moved up to stay on it."""
+        self.help.setVisible(shown)
+        if not shown:
+            return
+        area, frame = self.screen().availableGeometry(), self.frameGeometry()
+        extra = frame.height() - self.height()  # the window's title bar and borders
+        height = min(max(self.height(), self.layout().totalHeightForWidth(self.width())), area.height() - extra)
+        self.resize(self.width(), height)
+        self.move(frame.left(), max(area.top(), min(frame.top(), area.bottom() + 1 - height - extra)))  # on screen
+
+    def _enable_start(self):
+        self.start_button.setEnabled(not self._runs and self.chosen() is not None)
+
+    def _poll(self):
+        """Ask the agent quietly for its programs and what runs (not while another question is on its way)."""
+        if self._enabled_before is not None or self.calls.busy:
+            return
+        host, port, language = self.host.text().strip(), self.port.value(), self.language
+
+        def work():
+            client = AgentClient(host, port, language, name="rockly window", via=self.via, graph_kind=self.graph_kind)
+            try:
+                return client.programs()
+            finally:
+                client.close()
+
+        def answered(answer, error):
+            if self._enabled_before is None:  # a question asked meanwhile answers for itself
+                self._show_programs(answer, "")
+                if error is not None:
+                    self.status.setText(error.message)
+        self.calls.run(work, answered)
 
     def refresh(self, said: str = ""):
         """Ask the agent for its programs and what runs; ``said``: what ``status`` says once they are shown."""
@@ -128,7 +178,13 @@ class RobotProgramsDialog(QDialog):
                           refresh=False)
 
     def _show_programs(self, answer, said: str):
+        """Show the agent's ``answer`` to ``programs()``; None (it was not reached): nothing is known, nothing shown."""
         if answer is None:
+            self.programs.clear()
+            self.running.setText("")
+            self._runs = False
+            self._enable_start()
+            self.attach_button.setEnabled(False)
             return
         chosen = self.chosen()
         self.programs.clear()
@@ -141,8 +197,8 @@ class RobotProgramsDialog(QDialog):
         if not answer["programs"]:
             self.status.setText(tr("robot_no_programs", self.language))
         run = answer["run"]
-        runs = bool(run) and run["state"] != "ended"
-        self.start_button.setEnabled(not runs)
+        runs = self._runs = bool(run) and run["state"] != "ended"
+        self._enable_start()
         self.attach_button.setEnabled(runs and not self.attached.active)
         if runs:
             self.running.setText(tr("robot_programs_running", self.language, name=run["program"],
@@ -164,16 +220,28 @@ class RobotProgramsDialog(QDialog):
         return items[0].data(256) if items else None
 
     def send_open_program(self):
-        """Send the window's program to the robot: the page's code and blocks, exported standalone."""
-        self.attached.editor.call("getRunCode", {"values": False}, lambda run_code, error: self.attached.editor.call(
-            "getState", None, lambda state, state_error: self._send(run_code, state, error or state_error)))
+        """Send the window's program to the robot: the page's code and blocks, exported standalone, under its
+        file's name (a program never saved: under the name the person gives it)."""
+        if self.document.path:
+            self._send_named(Path(self.document.path).stem)
+            return
+        ask = QInputDialog(self)
+        ask.setObjectName("robot_program_name")
+        ask.setWindowTitle(tr("robot_programs_send", self.language).replace("&", ""))
+        ask.setLabelText(tr("robot_program_name", self.language))
+        ask.textValueSelected.connect(lambda name: name.strip() and self._send_named(name.strip()))
+        ask.finished.connect(ask.deleteLater)
+        ask.open()
 
-    def _send(self, run_code, state, error):
+    def _send_named(self, name: str):
+        self.attached.editor.call("getRunCode", {"values": False}, lambda run_code, error: self.attached.editor.call(
+            "getState", None, lambda state, state_error: self._send(name, run_code, state, error or state_error)))
+
+    def _send(self, name, run_code, state, error):
         if error:
             self.status.setText(str(error))
             return
         profile, workspace = self.document.profile, state["workspace"]
-        name = Path(self.document.path).stem if self.document.path else "program"
         standalone = standalone_text(f"{name}.rockly", profile, run_code, block_types_by_id(workspace),
                                      self._limits(), self.language)
         source = Program(profile.id, workspace, list(self.document.breakpoints),

@@ -10,7 +10,7 @@ window's language) and redraws the preview; saving writes nothing while there is
 import re
 from dataclasses import replace
 
-from PySide6.QtCore import Qt, QTimer, Signal
+from PySide6.QtCore import QSize, Qt, QTimer, Signal
 from PySide6.QtGui import QFontDatabase
 from PySide6.QtWidgets import (
     QCheckBox,
@@ -42,12 +42,14 @@ from rockly_desktop.ui.blockmaker.offers import KINDS_OF, Offer, global_name, kn
 from rockly_desktop.ui.blockmaker.preview import BlockPreview
 from rockly_desktop.ui.plain_text import plain_label
 from rockly_desktop.ui.texts import said_in, tr
+from rockly_desktop.ui.window_fit import fit_first_window
 
 PREVIEW_TYPE = "rockly_maker_preview"  # the preview's block type: never one of the toolbox's
 FILLS_FIELDS = ("publish", "call_service", "send_goal")
 READS_FIELD = ("sensor_value", "wait_until")
 FALLBACK_COLOUR = "#4c97ff"
 GRAPH_REFRESH_MS = 1000  # the live graph is read again this often while the maker is open (as the feeds poll)
+WANTED_SIZE = QSize(1200, 800)  # or less: the dialog with its frame fits the screen (its buttons stay on it)
 
 
 def pack_id_for(profile) -> str:
@@ -117,6 +119,7 @@ class BlockMakerDialog(QDialog):
             item.data(Qt.ItemDataRole.UserRole)))
         self._build_form()
         self.preview = BlockPreview(profile, language, self)
+        self.preview.sig_typed.connect(lambda: self._show_python(self.preview.typed_values()))
         self.python = QPlainTextEdit(self)
         self.python.setObjectName("maker_python")
         self.python.setReadOnly(True)
@@ -129,6 +132,12 @@ class BlockMakerDialog(QDialog):
         self.warning_label.setWordWrap(True)
         self.warning_label.setStyleSheet("color: #8a4b00;")
         self.warning_label.hide()
+        self.try_report = QPlainTextEdit(self)
+        self.try_report.setObjectName("maker_try_report")
+        self.try_report.setReadOnly(True)
+        self.try_report.setAccessibleName(tr("maker_try_report", language))
+        self.try_report.setMaximumHeight(self.fontMetrics().lineSpacing() * 6 + 12)
+        self.try_report.hide()
         self.buttons = QDialogButtonBox(self)
         self.save_button = QPushButton(tr("maker_save", language), self)
         self.save_button.setObjectName("maker_save")
@@ -227,6 +236,7 @@ class BlockMakerDialog(QDialog):
         shown.addWidget(self.preview, 1)
         shown.addWidget(self.python, 1)
         column.addLayout(shown, 1)
+        column.addWidget(self.try_report)
         left = QWidget(self)
         offers = QVBoxLayout(left)
         offers.setContentsMargins(0, 0, 0, 0)
@@ -240,7 +250,7 @@ class BlockMakerDialog(QDialog):
         layout = QVBoxLayout(self)
         layout.addWidget(splitter, 1)
         layout.addWidget(self.buttons)
-        self.resize(1200, 800)
+        fit_first_window(self, WANTED_SIZE)
 
     def _list_offers(self, offers):
         """Show ``offers`` in the list (the live ones marked), keeping the one chosen and the filter."""
@@ -455,10 +465,30 @@ class BlockMakerDialog(QDialog):
         self.warning_label.setVisible(bool(dropped))
         self.save_button.setEnabled(not self.problems)
         self.try_button.setEnabled(not self.problems)
-        self.python.setPlainText(python_preview(block) if block.kind else "")
+        self._show_python({})  # the preview is drawn anew with the defaults
         if block.kind:
             self.preview.show_block(replace(block, id=PREVIEW_TYPE, sentence=drawable_sentence(block)))
         self.sig_changed.emit()
+
+    def _show_python(self, typed: dict):
+        """Show the Python of the block with the ``typed`` values ({input name: value}) in place of the defaults."""
+        block = self.block()
+        inputs = tuple(replace(entry, default=typed[entry.name]) if entry.name in typed else entry
+                       for entry in block.inputs)
+        self.python.setPlainText(python_preview(replace(block, inputs=inputs)) if block.kind else "")
+
+    def show_try_report(self, lines: list):
+        """Show what the last "Try it" did (``trial.report_lines``) under the preview."""
+        self.try_report.setPlainText("\n".join(lines))
+        self.try_report.show()
+
+    def keyPressEvent(self, event):
+        """Qt override: Enter ends what is being typed (a form's field, the preview block's field) and presses
+        only a button that has the focus; never Save and close on its own."""
+        if event.key() in (Qt.Key.Key_Return, Qt.Key.Key_Enter) and not isinstance(self.focusWidget(), QPushButton):
+            event.accept()
+            return
+        super().keyPressEvent(event)
 
     def save(self):
         """Write the block into the profile's block pack; on a problem say it and write nothing."""

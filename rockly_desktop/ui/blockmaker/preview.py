@@ -16,6 +16,7 @@ class BlockPreview(EditorView):
     """Draws a MadeBlock for ``profile`` in ``language``; ``sig_drawn`` once the page has drawn the newest."""
 
     sig_drawn = Signal()
+    sig_typed = Signal()  # the person changed a value in the drawn block (``typed_values``)
 
     def __init__(self, profile, language: str, parent=None):
         super().__init__(parent)
@@ -25,6 +26,7 @@ class BlockPreview(EditorView):
         self._waiting = False   # a drawing was sent and not answered yet
         self._next = None       # the newest block entry not sent yet
         self.drawn = None       # what the page shows: {"block": editor_config entry, "state": its toolbox entry}
+        self.sig_changed.connect(lambda _workspace, _python, origin: origin == "user" and self.sig_typed.emit())
         self.start({"profile": profile.id, "blocks": [], "toolbox": None, "types": profile.ros_types.editor_catalog},
                    language)
 
@@ -43,6 +45,17 @@ class BlockPreview(EditorView):
         self._next = entry
         if not self._waiting:
             self._send()
+
+    def typed_values(self) -> dict:
+        """{input name: value} of the drawn block's inputs as the page has them now (a yes/no as a bool)."""
+        tops = ((self.workspace or {}).get("blocks") or {}).get("blocks") or []
+        values = {}
+        for name, slot in (tops[0].get("inputs", {}) if tops else {}).items():
+            fields = (slot.get("shadow") or slot.get("block") or {}).get("fields") or {}
+            if len(fields) == 1:
+                (field, value), = fields.items()
+                values[name] = value == "TRUE" if field == "BOOL" else value
+        return values
 
     def _send(self):
         entry, self._next = self._next, None

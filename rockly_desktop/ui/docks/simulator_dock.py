@@ -22,6 +22,18 @@ class SimulatorDock(QDockWidget):
         self._timer.setInterval(REFRESH_MS)
         self._timer.timeout.connect(self.refresh)
         self._live = None  # (the live widget, whether the dock was hidden) while a recorded view is shown
+        self._own_title = None  # the dock's title while a note is added to it
+
+    def say_not_the_robot(self, note: str):
+        """Put ``note`` in the dock's title (the window is attached to a real robot's run: this simulated robot
+        is not that robot); "" gives the dock its own title back."""
+        if note:
+            if self._own_title is None:
+                self._own_title = self.windowTitle()
+            self.setWindowTitle(f"{self._own_title} — {note}")
+        elif self._own_title is not None:
+            self.setWindowTitle(self._own_title)
+            self._own_title = None
 
     def show_robot(self, robot, view, note: str = "—"):
         """Show ``robot``'s simulation in ``view``; without a view, show ``note`` instead."""

@@ -13,7 +13,7 @@ action servers (``interface_list``) when the window gives them; each row's menu 
 import math
 import time
 
-from PySide6.QtCore import QItemSelectionModel, QSortFilterProxyModel, Qt, QTimer, Signal
+from PySide6.QtCore import QEvent, QItemSelectionModel, QSortFilterProxyModel, Qt, QTimer, Signal
 from PySide6.QtGui import QPalette
 from PySide6.QtWidgets import (
     QAbstractItemView,
@@ -26,6 +26,7 @@ from PySide6.QtWidgets import (
     QStackedWidget,
     QStyle,
     QTableView,
+    QTabWidget,
     QToolButton,
     QTreeView,
     QVBoxLayout,
@@ -82,16 +83,16 @@ class TopicMonitor(QWidget):
         message_pane = self._build_message_pane()
         self.interfaces = InterfaceList(language, self)
         self.interfaces.sig_make_block_requested.connect(self.sig_make_block_requested)
-        self.interfaces.setVisible(offers is not None)
-        lists = QSplitter(Qt.Orientation.Vertical, self)
-        lists.addWidget(self.table)
-        lists.addWidget(self.interfaces)
-        lists.setChildrenCollapsible(False)
-        # at least their title line: the services and actions must not make the bottom docks' strip taller
-        self.interfaces.setMinimumHeight(self.interfaces.title.sizeHint().height())
-        lists.setStretchFactor(0, 3)
-        lists.setStretchFactor(1, 1)
-        lists.setSizes([240, 100])  # the topics keep most of a small dock
+        # the topics and the services and actions each get the dock's whole height (one under the other,
+        # a bottom dock left the services one and a half rows)
+        self.lists = QTabWidget(self)
+        self.lists.setObjectName("monitor_lists")
+        self.lists.setDocumentMode(True)
+        self.lists.addTab(self.table, tr("monitor_tab_topics", language))
+        self.lists.addTab(self.interfaces, tr("monitor_tab_interfaces", language))
+        self.lists.tabBar().setVisible(offers is not None)
+        self.lists.setTabVisible(1, offers is not None)
+        lists = self.lists
         self.splitter = QSplitter(Qt.Orientation.Horizontal, self)
         self.splitter.setChildrenCollapsible(False)
         self.splitter.addWidget(lists)
@@ -151,17 +152,17 @@ class TopicMonitor(QWidget):
         self.table.setAlternatingRowColors(True)
         self.table.setShowGrid(False)
         self.table.setWordWrap(False)
-        self.table.setTextElideMode(Qt.TextElideMode.ElideMiddle)
+        self.table.setTextElideMode(Qt.TextElideMode.ElideRight)  # a name's start says what it is
         self.table.verticalHeader().hide()
         self.table.verticalHeader().setDefaultSectionSize(self.fontMetrics().height() + 8)
         header = self.table.horizontalHeader()
         header.setHighlightSections(False)
-        header.setSectionResizeMode(TOPIC, QHeaderView.ResizeMode.Stretch)
+        header.setSectionResizeMode(TYPE, QHeaderView.ResizeMode.Stretch)  # the topic's column is fitted to its names
         width = self.fontMetrics().horizontalAdvance
-        header.resizeSection(TYPE, width("sensor_msgs/BatteryState") + 16)
         for column in (PUBLISHERS, RATE, AGE):
             header.resizeSection(column, max(width(tr(HEADERS[column], self._language)), width("1000.0")) + 22)
         self.table.selectionModel().selectionChanged.connect(self._selection_changed)
+        self.table.viewport().installEventFilter(self)  # its width changes the room for the topics' names
         self.table.setContextMenuPolicy(Qt.ContextMenuPolicy.CustomContextMenu)
         self.table.customContextMenuRequested.connect(self._topic_menu)
 
@@ -264,6 +265,12 @@ class TopicMonitor(QWidget):
 
     # -- Qt events
 
+    def eventFilter(self, watched, event):
+        """Qt override: the topics' column is fitted again when the table's width changes."""
+        if watched is self.table.viewport() and event.type() == QEvent.Type.Resize:
+            self._fit_topic_column()
+        return super().eventFilter(watched, event)
+
     def showEvent(self, event):
         super().showEvent(event)
         self.refresh()
@@ -306,9 +313,24 @@ class TopicMonitor(QWidget):
             except Exception:
                 pass
         entries = topic_entries(infos, None if self._graph is None else self._graph_topics, self._own_publishers)
+        listed = self.table_model.rowCount()
         self.table_model.update(entries)
+        if self.table_model.rowCount() != listed:
+            self._fit_topic_column()
         self._show_count()
         self._show_history_note(infos.get(self._topic))
+
+    def _fit_topic_column(self):
+        """Make the topics' column as wide as their longest name, leaving the type at least a third of the
+        table (a longer name is cut at its end)."""
+        width = self.table.fontMetrics().horizontalAdvance
+        longest = max((width(topic) for topic in self.table_model.topics()), default=0)
+        header = self.table.horizontalHeader()
+        fixed = sum(header.sectionSize(column) for column in (PUBLISHERS, RATE, AGE))
+        room = (self.table.viewport().width() - fixed) * 2 // 3
+        header.resizeSection(TOPIC, max(width(tr(HEADERS[TOPIC], self._language)) + 30,
+                                        min(longest + 2 * self.style().pixelMetric(
+                                            QStyle.PixelMetric.PM_FocusFrameHMargin) + 12, room)))
 
     def _show_history_note(self, info):
         """Say under the message when the store's byte budget cut the selected topic's history."""

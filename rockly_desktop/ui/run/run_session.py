@@ -63,9 +63,10 @@ class RunSession(QObject):
 
     # --- commands -----------------------------------------------------------------------
 
-    def run(self, step_first: bool = False, page=None) -> bool:
+    def run(self, step_first: bool = False, page=None, notes=None) -> bool:
         """Start the program in the editor (pausing at its first block if ``step_first``), or on ``page``,
-        another editor page (the block maker's preview: its one block tried once, under the same limits).
+        another editor page (the block maker's preview: its one block tried once, under the same limits);
+        ``notes(entry)`` is told what the run sends and what comes back (from the run's thread).
 
         The page is asked for the code; the run starts when it answers ('starting' until
         then). False when a run is already under way.
@@ -78,11 +79,11 @@ class RunSession(QObject):
         self._values_on = badges_shown(self.settings, self.document.profile.id)
         self._values_shown = None
         (page or self.editor).call("getRunCode", {"values": self._values_on},
-                         lambda run_code, error: self._start(request, run_code, error, step_first),
+                         lambda run_code, error: self._start(request, run_code, error, step_first, notes),
                          timeout_ms=ANSWER_TIMEOUT_MS)
         return True
 
-    def _start(self, request, run_code, error, step_first: bool):
+    def _start(self, request, run_code, error, step_first: bool, notes=None):
         if request is not self._start_request:  # stopped (or the window closed) while the page answered
             return
         self._start_request = None
@@ -111,7 +112,7 @@ class RunSession(QObject):
             self._recording = recording if badges_shown(self.settings, profile.id) else None
             self._badges_shown = None
             thread = ProgramThread(lambda emit: make_runner(profile, robot, run_code, control, emit, language, limits,
-                                                            recording), self)
+                                                            recording, notes), self)
         except (RocklyError, RuntimeError) as problem:
             if recording is not None:
                 recording.close()

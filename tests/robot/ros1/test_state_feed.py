@@ -51,3 +51,19 @@ def test_the_parameter_server_is_asked_for_its_names_only_while_they_are_wished(
     asked = len(asks)
     eventually(lambda: polls.count("getSystemState") >= polled + 5, timeout=30)
     assert len(asks) == asked
+
+
+def test_what_a_rockly_agent_publishes_counts_as_rocklys_and_the_simulated_robots_topics_do_not(ros_robot, ros_master,
+                                                                                              tmp_path):
+    from agent_tools import AgentProcess
+
+    feed = ros_robot.follow_graph()
+    agent = AgentProcess(tmp_path / "library", "--master", ros_master.uri, backend="ros1")
+    try:
+        answers = "/rockly_agent/from_agent"   # the agent node publishes it (named rockly_PID_… as the simulator)
+        eventually(lambda: feed.own_publishers().get(answers) == 1, 30)
+        assert (answers, "std_msgs/String", 0) in feed.graph_topics()
+        assert ("/odom", "nav_msgs/Odometry", 1) in feed.graph_topics()   # the simulated robot is not Rockly here
+        assert "/odom" not in feed.own_publishers()
+    finally:
+        agent.stop()
