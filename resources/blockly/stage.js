@@ -3,27 +3,20 @@
  * editor. There the toolbox's flyout and the zoom controls never cover the blocks a child is using:
  * - the zoom buttons and the trashcan are put away (the wheel still zooms, and a block dropped on
  *   the toolbox is deleted), and where they were is no place a dropped block disappears into;
- * - the flyout's blocks are drawn smaller where it would take more than half of the view (fitted
- *   again whenever the view's width changes);
+ * - the flyout's blocks are drawn at the workspace's scale in every category, as off stage: a wide
+ *   block makes its flyout wider, never its text smaller;
  * - while the flyout is out, the program moves right of it, and back when it closes.
  */
 'use strict';
 
 const RocklyStage = (() => {
   const GAP = 16;                 // px between the flyout's edge and the program
-  const FLYOUT_SHARE = 0.5;       // of the view's width the flyout may take on stage
-  const MIN_FLYOUT_SCALE = 0.5;   // smaller blocks are not read at a glance
   let workspace = null;
   let on = false;
   let shifted = 0;                // px the program was moved right for the flyout
 
   function install(ws) {
     workspace = ws;
-    const flyout = ws.getFlyout();
-    if (flyout) {
-      const ownScale = flyout.getFlyoutScale.bind(flyout);
-      flyout.getFlyoutScale = () => (on ? fittedScale(flyout, ownScale()) : ownScale());
-    }
     for (const control of [ws.trashcan, ws.zoomControls_]) {
       if (!control || !control.getClientRect) continue;
       const ownRect = control.getClientRect.bind(control);
@@ -32,16 +25,7 @@ const RocklyStage = (() => {
     ws.addChangeListener((event) => {
       if (on && event.type === Blockly.Events.TOOLBOX_ITEM_SELECT) requestAnimationFrame(followFlyout);
     });
-    addEventListener('resize', () => on && requestAnimationFrame(refit));  // the stage settling, a window resized
-  }
-
-  /** After the view's size changed: the open flyout's scale fitted to the new width (Blockly only
-   * moves a flyout on a resize; one opened before the page had its stage size stayed too wide),
-   * and the program right of it. */
-  function refit() {
-    const flyout = workspace.getFlyout();
-    if (flyout && flyout.isVisible() && flyout.getWorkspace().scale !== flyout.getFlyoutScale()) flyout.reflow();
-    followFlyout();
+    addEventListener('resize', () => on && requestAnimationFrame(followFlyout));  // the stage settling, a window resized
   }
 
   /** Blockly lets the program move at most half a view away from the view's edge: on stage it may
@@ -51,15 +35,6 @@ const RocklyStage = (() => {
       const padded = super.getPaddedContent_(view, content);
       return on ? {...padded, left: padded.left - view.width} : padded;
     }
-  }
-
-  /** The flyout's scale on stage: the workspace's, or less so that it takes at most FLYOUT_SHARE of the view. */
-  function fittedScale(flyout, scale) {
-    const blocks = flyout.getWorkspace().getTopBlocks(false);
-    if (!blocks.length) return scale;
-    const widest = Math.max(...blocks.map((block) => block.getHeightWidth().width)) + 2 * flyout.MARGIN;
-    const view = workspace.getMetricsManager().getViewMetrics().width;
-    return Math.max(MIN_FLYOUT_SCALE, Math.min(scale, (FLYOUT_SHARE * view) / widest));
   }
 
   /** The left edge (page px) of the top blocks that are on screen, or null. */
@@ -94,8 +69,6 @@ const RocklyStage = (() => {
     if (!active) moveProgram(-shifted);
     on = active;
     document.body.classList.toggle('rocklyStage', on);
-    const flyout = workspace.getFlyout();
-    if (flyout && flyout.isVisible()) flyout.reflow();
   }
 
   return {install, set, active: () => on, MetricsManager: StageMetrics};
