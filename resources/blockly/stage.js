@@ -5,7 +5,8 @@
  *   the toolbox is deleted), and where they were is no place a dropped block disappears into;
  * - the flyout's blocks are drawn at the workspace's scale in every category, as off stage: a wide
  *   block makes its flyout wider, never its text smaller;
- * - while the flyout is out, the program moves right of it, and back when it closes.
+ * - while the flyout is out, the program moves right of it, and back when it closes; a block being
+ *   dragged out of it (which closes it) stays under the pointer while the program comes back.
  */
 'use strict';
 
@@ -61,6 +62,20 @@ const RocklyStage = (() => {
     if (!dx) return;
     workspace.scroll(workspace.scrollX + dx, workspace.scrollY);
     shifted += dx;
+    keepDragUnderPointer(dx);
+  }
+
+  /** After a scroll by ``dx`` px during a drag (a block taken from the flyout closes it): the dragged
+   * block back under the pointer. Blockly puts it at the drag's start plus the pointer's way since, in
+   * workspace units, so the scroll is taken off that start; its gesture has no public API for that. */
+  function keepDragUnderPointer(dx) {
+    const dragger = workspace.currentGesture_ && workspace.currentGesture_.dragger;
+    if (!dragger || !dragger.startLoc || !workspace.isDragging()) return;
+    const back = -dx / workspace.scale;
+    const {Coordinate} = Blockly.utils;
+    dragger.startLoc = new Coordinate(dragger.startLoc.x + back, dragger.startLoc.y);
+    const at = dragger.draggable.getRelativeToSurfaceXY();
+    dragger.draggable.drag(new Coordinate(at.x + back, at.y));
   }
 
   /** Go on stage or leave it. */
