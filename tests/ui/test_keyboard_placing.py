@@ -1,0 +1,53 @@
+"""Placing blocks with Blockly's keys in the real window (keys go to the focused widget, as a keyboard's do):
+a block taken from the flyout goes below the selected block."""
+import pytest
+from page_tools import call_page, run_js
+from program_builder import block, stack, workspace
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QApplication
+from test_keyboard import K, active, focused_block, focused_category, press
+
+FOCUSED_ID = "(() => { const n = Blockly.getFocusManager().getFocusedNode(); return n && n.id; })()"
+PROGRAM = """Blockly.getMainWorkspace().getTopBlocks(true).map((top) => {
+  const ids = []; for (let b = top; b; b = b.getNextBlock()) ids.push(b.type === 'hobbit_emo' ? b.id : b.type);
+  return ids; })"""
+
+
+def window_with_program(qtbot, driver, *ids):
+    window = driver.open_window()
+    qtbot.waitUntil(lambda: active(window), timeout=5000)
+    blocks = [block("hobbit_emo", id=block_id) for block_id in ids]
+    blocks[0].update(x=0, y=0)
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(stack(*blocks)), "breakpoints": []})
+    press(qtbot, window, K.Key_2, Qt.KeyboardModifier.ControlModifier)   # the keyboard into the program's blocks
+    qtbot.waitUntil(lambda: window.editor.focusProxy() is QApplication.focusWidget(), timeout=5000)
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "Blockly.getFocusManager().getFocusedTree()"
+                                                         " === Blockly.getMainWorkspace()"), timeout=5000)
+    press(qtbot, window, K.Key_Down)                                       # from the workspace to its first block
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, FOCUSED_ID) == ids[0], timeout=5000)
+    return window
+
+
+def take_first_drive_block(qtbot, window):
+    """T into the toolbox, right into Drive's blocks, Enter takes the first one."""
+    press(qtbot, window, K.Key_T)
+    qtbot.waitUntil(lambda: focused_category(qtbot, window) is not None, timeout=5000)
+    press(qtbot, window, K.Key_Right)
+    qtbot.waitUntil(lambda: focused_block(qtbot, window) == "hobbit_move", timeout=5000)
+    press(qtbot, window, K.Key_Enter)
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "Blockly.getMainWorkspace().isDragging()"), timeout=5000)
+
+
+@pytest.mark.parametrize("downs", [0, 1, 2], ids=["first", "second", "third"])
+def test_a_block_taken_from_the_flyout_goes_below_the_selected_block(qtbot, driver, downs):
+    program = ["first", "second", "third"]
+    window = window_with_program(qtbot, driver, *program)
+    for _ in range(downs):
+        press(qtbot, window, K.Key_Down)
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, FOCUSED_ID) == program[downs], timeout=5000)
+    take_first_drive_block(qtbot, window)
+    press(qtbot, window, K.Key_Enter)                                       # put it down where it is offered
+    qtbot.waitUntil(lambda: not run_js(qtbot, window.editor, "Blockly.getMainWorkspace().isDragging()"),
+                    timeout=5000)
+    program.insert(downs + 1, "hobbit_move")
+    assert run_js(qtbot, window.editor, PROGRAM) == [program]
