@@ -6,7 +6,8 @@
  * - the flyout's blocks are drawn at the workspace's scale in every category, as off stage: a wide
  *   block makes its flyout wider, never its text smaller;
  * - while the flyout is out, the program moves right of it, and back when it closes; a block being
- *   dragged out of it (which closes it) stays under the pointer while the program comes back.
+ *   dragged or taken with the keys out of it (which closes it) stays where it is on screen while the
+ *   program comes back.
  */
 'use strict';
 
@@ -15,6 +16,7 @@ const RocklyStage = (() => {
   let workspace = null;
   let on = false;
   let shifted = 0;                // px the program was moved right for the flyout
+  let homeLeft = null;            // the program's left edge (page px) before that
 
   function install(ws) {
     workspace = ws;
@@ -38,9 +40,10 @@ const RocklyStage = (() => {
     }
   }
 
-  /** The left edge (page px) of the top blocks that are on screen, or null. */
+  /** The left edge (page px) of the top blocks that are on screen (not one being moved), or null. */
   function programLeft() {
-    const edges = workspace.getTopBlocks(false).map((block) => block.getSvgRoot().getBoundingClientRect())
+    const edges = workspace.getTopBlocks(false).filter((block) => !block.isDragging())
+        .map((block) => block.getSvgRoot().getBoundingClientRect())
         .filter((box) => box.right > 0 && box.left < innerWidth && box.bottom > 0 && box.top < innerHeight)
         .map((box) => box.left);
     return edges.length ? Math.min(...edges) : null;
@@ -49,33 +52,46 @@ const RocklyStage = (() => {
   function followFlyout() {
     const flyout = workspace.getFlyout();
     const out = Boolean(flyout && flyout.isVisible());
+    const left = programLeft();
     if (!out) {
-      moveProgram(-shifted);
+      // Back where it was: Blockly may have scrolled meanwhile (a block taken with the keys is
+      // scrolled into sight as the flyout closes), and that scroll was only for the flyout's sake.
+      if (shifted) moveProgram(homeLeft !== null && left !== null ? homeLeft - left : -shifted);
+      shifted = 0;
       return;
     }
-    const left = programLeft();
     const edge = workspace.getMetricsManager().getAbsoluteMetrics().left + flyout.getWidth() + GAP;
-    if (left !== null && left < edge) moveProgram(edge - left);
+    if (left !== null && left < edge) {
+      if (!shifted) homeLeft = left;
+      moveProgram(edge - left);
+    }
   }
 
   function moveProgram(dx) {
     if (!dx) return;
     workspace.scroll(workspace.scrollX + dx, workspace.scrollY);
     shifted += dx;
-    keepDragUnderPointer(dx);
+    keepDraggedInPlace(dx);
   }
 
-  /** After a scroll by ``dx`` px during a drag (a block taken from the flyout closes it): the dragged
-   * block back under the pointer. Blockly puts it at the drag's start plus the pointer's way since, in
-   * workspace units, so the scroll is taken off that start; its gesture has no public API for that. */
-  function keepDragUnderPointer(dx) {
-    const dragger = workspace.currentGesture_ && workspace.currentGesture_.dragger;
+  /** After a scroll by ``dx`` px during a drag or a keyboard move (taking a block from the flyout
+   * closes it): the block where it was on screen, under the pointer, in sight. Blockly puts a dragged
+   * block at the drag's start plus the way moved since, in workspace units, so the scroll is taken off
+   * that start; neither its gesture nor its keyboard mover has public API for it. A block the keys
+   * show at a connection stays at that connection. */
+  function keepDraggedInPlace(dx) {
+    const mover = Blockly.KeyboardMover.mover;
+    const keyboard = mover.isMoving();
+    const dragger = keyboard ? mover.dragger : workspace.currentGesture_ && workspace.currentGesture_.dragger;
     if (!dragger || !dragger.startLoc || !workspace.isDragging()) return;
+    const strategy = dragger.draggable.dragStrategy;
+    if (keyboard && strategy && strategy.connectionCandidate) return;
     const back = -dx / workspace.scale;
     const {Coordinate} = Blockly.utils;
-    dragger.startLoc = new Coordinate(dragger.startLoc.x + back, dragger.startLoc.y);
-    const at = dragger.draggable.getRelativeToSurfaceXY();
-    dragger.draggable.drag(new Coordinate(at.x + back, at.y));
+    const shift = (at) => new Coordinate(at.x + back, at.y);
+    dragger.startLoc = shift(dragger.startLoc);
+    if (keyboard) mover.startLocation = shift(mover.startLocation);
+    dragger.draggable.drag(shift(dragger.draggable.getRelativeToSurfaceXY()));
   }
 
   /** Go on stage or leave it. */
