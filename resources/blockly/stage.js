@@ -61,10 +61,11 @@ const RocklyStage = (() => {
       return;
     }
     const edge = workspace.getMetricsManager().getAbsoluteMetrics().left + flyout.getWidth() + GAP;
-    if (left !== null && left < edge) {
-      if (!shifted) homeLeft = left;
-      moveProgram(edge - left);
-    }
+    if (left === null) return;
+    if (!shifted) homeLeft = left;
+    // Right of this flyout, and no further than that from where it was (a narrower category after a wider one).
+    const wanted = Math.max(edge, homeLeft);
+    if (left < edge || (shifted && left > wanted)) moveProgram(wanted - left);
   }
 
   function moveProgram(dx) {

@@ -114,3 +114,20 @@ def test_every_flyout_draws_its_blocks_at_the_workspaces_scale(qtbot, driver, pr
     small = [flyout for flyout in sizes["flyouts"]
              if flyout["scale"] != sizes["scale"] or flyout["text"] < sizes["text"] - 0.5]
     assert small == [], sizes
+
+
+PROGRAM_AND_FLYOUT = """(() => { const ws = Blockly.getMainWorkspace();
+  const r = ws.getBlockById(%r).getSvgRoot().getBoundingClientRect();
+  return {program: r.left, flyout: ws.getMetricsManager().getAbsoluteMetrics().left + ws.getFlyout().getWidth()};
+  })()"""
+
+
+def test_on_stage_the_program_follows_a_narrower_flyout_back_to_its_edge(qtbot, driver):
+    window = editor_with_program(qtbot, driver, stage=True)
+    first = run_js(qtbot, window.editor, "Blockly.getMainWorkspace().getTopBlocks(true)[0].id")
+    click_category(qtbot, window, "Drive")
+    wide = run_js(qtbot, window.editor, PROGRAM_AND_FLYOUT % first)
+    click_category(qtbot, window, "Head")
+    narrow = run_js(qtbot, window.editor, PROGRAM_AND_FLYOUT % first)
+    assert narrow["flyout"] < wide["flyout"] - 100, (wide, narrow)
+    assert 0 <= narrow["program"] - narrow["flyout"] <= 40, (wide, narrow)   # beside Head's flyout, not Drive's
