@@ -88,3 +88,19 @@ def test_on_stage_a_block_taken_and_moved_with_the_keys_stays_in_sight_and_so_do
         screenshot(window.editor, f"keys-stage-{'selected' if selected else 'nothing'}-{step}")
         press(qtbot, window, K.Key_Left)
     press(qtbot, window, K.Key_Escape)
+
+
+def overlap(a, b) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+@pytest.mark.parametrize("stage", [False, True], ids=["normal", "stage"])
+def test_a_block_taken_with_nothing_selected_starts_in_sight_below_the_program_not_over_it(qtbot, driver, stage):
+    window = window_with_program(qtbot, driver, "first", "second", stage=stage, select=False)
+    take_first_drive_block(qtbot, window)
+    frames_passed(qtbot, window.editor)
+    shown = run_js(qtbot, window.editor, IN_SIGHT)
+    assert inside(shown["moving"], shown["view"]) and not overlap(shown["moving"], shown["program"]), shown
+    assert shown["moving"][1] >= shown["program"][3], shown
+    screenshot(window.editor, f"keys-nothing-selected-{'stage' if stage else 'normal'}")
+    press(qtbot, window, K.Key_Escape)
