@@ -53,6 +53,7 @@
   python.pythonGenerator.addReservedWords('robot,ros,__rockly__');
   guardLargeResults(python.pythonGenerator, python.Order);
   RocklyValues.instrument(python.pythonGenerator, python.Order);
+  RocklyKeyboardPlacing.install();
 
   function loadScript(src) {
     return new Promise((resolve, reject) => {

@@ -3,30 +3,26 @@
  * editor. There the toolbox's flyout and the zoom controls never cover the blocks a child is using:
  * - the zoom buttons and the trashcan are put away (the wheel still zooms, and a block dropped on
  *   the toolbox is deleted), and where they were is no place a dropped block disappears into;
- * - the flyout's blocks are drawn smaller where it would take more than half of the view (fitted
- *   again whenever the view's width changes);
- * - while the flyout is out, the program moves right of it, and back when it closes;
+ * - the flyout's blocks are drawn at the workspace's scale in every category, as off stage: a wide
+ *   block makes its flyout wider, never its text smaller;
+ * - while the flyout is out, the program moves right of it, and back when it closes; a block being
+ *   dragged or taken with the keys out of it (which closes it) stays where it is on screen while the
+ *   program comes back;
  * - the blocks are drawn larger, for an audience (the desk's zoom comes back when the stage is left).
  */
 'use strict';
 
 const RocklyStage = (() => {
   const GAP = 16;                 // px between the flyout's edge and the program
-  const FLYOUT_SHARE = 0.5;       // of the view's width the flyout may take on stage
-  const MIN_FLYOUT_SCALE = 0.5;   // smaller blocks are not read at a glance
   const STAGE_SCALE = 1.25;       // the workspace's scale on stage: text read from a few metres (the desk's is 0.8)
   let workspace = null;
   let on = false;
   let shifted = 0;                // px the program was moved right for the flyout
+  let homeLeft = null;            // the program's left edge (page px) before that
   let deskScale = null;           // the workspace's scale before the stage
 
   function install(ws) {
     workspace = ws;
-    const flyout = ws.getFlyout();
-    if (flyout) {
-      const ownScale = flyout.getFlyoutScale.bind(flyout);
-      flyout.getFlyoutScale = () => (on ? fittedScale(flyout, ownScale()) : ownScale());
-    }
     for (const control of [ws.trashcan, ws.zoomControls_]) {
       if (!control || !control.getClientRect) continue;
       const ownRect = control.getClientRect.bind(control);
@@ -35,16 +31,7 @@ const RocklyStage = (() => {
     ws.addChangeListener((event) => {
       if (on && event.type === Blockly.Events.TOOLBOX_ITEM_SELECT) requestAnimationFrame(followFlyout);
     });
-    addEventListener('resize', () => on && requestAnimationFrame(refit));  // the stage settling, a window resized
-  }
-
-  /** After the view's size changed: the open flyout's scale fitted to the new width (Blockly only
-   * moves a flyout on a resize; one opened before the page had its stage size stayed too wide),
-   * and the program right of it. */
-  function refit() {
-    const flyout = workspace.getFlyout();
-    if (flyout && flyout.isVisible() && flyout.getWorkspace().scale !== flyout.getFlyoutScale()) flyout.reflow();
-    followFlyout();
+    addEventListener('resize', () => on && requestAnimationFrame(followFlyout));  // the stage settling, a window resized
   }
 
   /** Blockly lets the program move at most half a view away from the view's edge: on stage it may
@@ -56,18 +43,10 @@ const RocklyStage = (() => {
     }
   }
 
-  /** The flyout's scale on stage: the workspace's, or less so that it takes at most FLYOUT_SHARE of the view. */
-  function fittedScale(flyout, scale) {
-    const blocks = flyout.getWorkspace().getTopBlocks(false);
-    if (!blocks.length) return scale;
-    const widest = Math.max(...blocks.map((block) => block.getHeightWidth().width)) + 2 * flyout.MARGIN;
-    const view = workspace.getMetricsManager().getViewMetrics().width;
-    return Math.max(MIN_FLYOUT_SCALE, Math.min(scale, (FLYOUT_SHARE * view) / widest));
-  }
-
-  /** The left edge (page px) of the top blocks that are on screen, or null. */
+  /** The left edge (page px) of the top blocks that are on screen (not one being moved), or null. */
   function programLeft() {
-    const edges = workspace.getTopBlocks(false).map((block) => block.getSvgRoot().getBoundingClientRect())
+    const edges = workspace.getTopBlocks(false).filter((block) => !block.isDragging())
+        .map((block) => block.getSvgRoot().getBoundingClientRect())
         .filter((box) => box.right > 0 && box.left < innerWidth && box.bottom > 0 && box.top < innerHeight)
         .map((box) => box.left);
     return edges.length ? Math.min(...edges) : null;
@@ -76,19 +55,47 @@ const RocklyStage = (() => {
   function followFlyout() {
     const flyout = workspace.getFlyout();
     const out = Boolean(flyout && flyout.isVisible());
+    const left = programLeft();
     if (!out) {
-      moveProgram(-shifted);
+      // Back where it was: Blockly may have scrolled meanwhile (a block taken with the keys is
+      // scrolled into sight as the flyout closes), and that scroll was only for the flyout's sake.
+      if (shifted) moveProgram(homeLeft !== null && left !== null ? homeLeft - left : -shifted);
+      shifted = 0;
       return;
     }
-    const left = programLeft();
     const edge = workspace.getMetricsManager().getAbsoluteMetrics().left + flyout.getWidth() + GAP;
-    if (left !== null && left < edge) moveProgram(edge - left);
+    if (left === null) return;
+    if (!shifted) homeLeft = left;
+    // Right of this flyout, and no further than that from where it was (a narrower category after a wider one).
+    const wanted = Math.max(edge, homeLeft);
+    if (left < edge || (shifted && left > wanted)) moveProgram(wanted - left);
   }
 
   function moveProgram(dx) {
     if (!dx) return;
     workspace.scroll(workspace.scrollX + dx, workspace.scrollY);
     shifted += dx;
+    keepDraggedInPlace(dx);
+  }
+
+  /** After a scroll by ``dx`` px during a drag or a keyboard move (taking a block from the flyout
+   * closes it): the block where it was on screen, under the pointer, in sight. Blockly puts a dragged
+   * block at the drag's start plus the way moved since, in workspace units, so the scroll is taken off
+   * that start; neither its gesture nor its keyboard mover has public API for it. A block the keys
+   * show at a connection stays at that connection. */
+  function keepDraggedInPlace(dx) {
+    const mover = Blockly.KeyboardMover.mover;
+    const keyboard = mover.isMoving();
+    const dragger = keyboard ? mover.dragger : workspace.currentGesture_ && workspace.currentGesture_.dragger;
+    if (!dragger || !dragger.startLoc || !workspace.isDragging()) return;
+    const strategy = dragger.draggable.dragStrategy;
+    if (keyboard && strategy && strategy.connectionCandidate) return;
+    const back = -dx / workspace.scale;
+    const {Coordinate} = Blockly.utils;
+    const shift = (at) => new Coordinate(at.x + back, at.y);
+    dragger.startLoc = shift(dragger.startLoc);
+    if (keyboard) mover.startLocation = shift(mover.startLocation);
+    dragger.draggable.drag(shift(dragger.draggable.getRelativeToSurfaceXY()));
   }
 
   /** Zoom to ``scale`` around the view's top left corner (right of the toolbox), where a program starts (Blockly's setScale
@@ -112,8 +119,6 @@ const RocklyStage = (() => {
     }
     on = active;
     document.body.classList.toggle('rocklyStage', on);
-    const flyout = workspace.getFlyout();
-    if (flyout && flyout.isVisible()) flyout.reflow();
   }
 
   return {install, set, active: () => on, MetricsManager: StageMetrics};

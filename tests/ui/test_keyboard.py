@@ -53,7 +53,7 @@ def active(window):
     return QApplication.activeWindow() is window
 
 
-def take_block(qtbot, window, category_downs, block_downs, block_type, after_drop=()):
+def take_block(qtbot, window, category_downs, block_downs, block_type):
     """T, down to the category, right into its blocks, down to the block, Enter takes it, Enter puts it down."""
     press(qtbot, window, K.Key_T)
     qtbot.waitUntil(lambda: focused_category(qtbot, window) is not None, timeout=5000)
@@ -66,8 +66,6 @@ def take_block(qtbot, window, category_downs, block_downs, block_type, after_dro
     press(qtbot, window, K.Key_Enter)
     qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "Blockly.getMainWorkspace().getAllBlocks(false)"
                                                          f".some(b => b.type === {block_type!r})"), timeout=5000)
-    for key in after_drop:
-        press(qtbot, window, key)
     press(qtbot, window, K.Key_Enter)
 
 
@@ -78,7 +76,7 @@ def test_a_program_is_built_run_and_stopped_with_keys_only(qtbot, driver):
     qtbot.waitUntil(lambda: window.editor.focusProxy() is QApplication.focusWidget(), timeout=5000)
     qtbot.waitUntil(lambda: workspace_focused(qtbot, window), timeout=5000)
     take_block(qtbot, window, 0, 0, "hobbit_move")  # Drive: drive forward 1 m
-    take_block(qtbot, window, 0, 1, "hobbit_turn", after_drop=(K.Key_Down,))  # under the drive: turn left 90°
+    take_block(qtbot, window, 0, 1, "hobbit_turn")  # under the drive (the selected block): turn left 90°
     take_block(qtbot, window, 1, 1, "hobbit_emo")  # Head: show happy, under the turn
     program = "robot.drive(1, 'forward')\nrobot.turn(90, 'left')\nrobot.show_emotion('HAPPY')\n"
     qtbot.waitUntil(lambda: window.editor.python == program, timeout=5000)
