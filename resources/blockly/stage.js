@@ -7,19 +7,16 @@
  *   block makes its flyout wider, never its text smaller;
  * - while the flyout is out, the program moves right of it, and back when it closes; a block being
  *   dragged or taken with the keys out of it (which closes it) stays where it is on screen while the
- *   program comes back;
- * - the blocks are drawn larger, for an audience (the desk's zoom comes back when the stage is left).
+ *   program comes back.
  */
 'use strict';
 
 const RocklyStage = (() => {
   const GAP = 16;                 // px between the flyout's edge and the program
-  const STAGE_SCALE = 1.25;       // the workspace's scale on stage: text read from a few metres (the desk's is 0.8)
   let workspace = null;
   let on = false;
   let shifted = 0;                // px the program was moved right for the flyout
   let homeLeft = null;            // the program's left edge (page px) before that
-  let deskScale = null;           // the workspace's scale before the stage
 
   function install(ws) {
     workspace = ws;
@@ -98,25 +95,10 @@ const RocklyStage = (() => {
     dragger.draggable.drag(shift(dragger.draggable.getRelativeToSurfaceXY()));
   }
 
-  /** Zoom to ``scale`` around the view's top left corner (right of the toolbox), where a program starts (Blockly's setScale
-   * zooms around the centre, and the program's start went out of sight). */
-  function scaleTo(scale) {
-    const speed = workspace.options.zoomOptions.scaleSpeed;
-    const corner = workspace.getMetricsManager().getAbsoluteMetrics();  // right of the toolbox
-    workspace.zoom(corner.left, corner.top, Math.log(scale / workspace.scale) / Math.log(speed));
-  }
-
   /** Go on stage or leave it. */
   function set(active) {
     if (active === on) return;
     if (!active) moveProgram(-shifted);
-    if (active) {
-      deskScale = workspace.scale;
-      if (deskScale < STAGE_SCALE) scaleTo(STAGE_SCALE);
-    } else if (deskScale !== null) {
-      scaleTo(deskScale);
-      deskScale = null;
-    }
     on = active;
     document.body.classList.toggle('rocklyStage', on);
   }
