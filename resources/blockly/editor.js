@@ -515,7 +515,7 @@
   const calls = {
     async setup({language, profile, media, first, texts, hidden, look}) {
       if (language !== 'en') await loadScript('vendor/msg/' + language + '.js');
-      Object.assign(Blockly.Msg, (texts && texts.blocklyMsg) || {});  // Blockly's keyboard hints, in Rockly's words
+      Object.assign(Blockly.Msg, (texts && texts.blocklyMsg) || {});  // Blockly's hints and untranslated words, in Rockly's
       // Prepared ahead of the program: nothing shows until `show`.
       if (hidden) document.getElementById('workspace').style.visibility = 'hidden';
       RocklyTypedFields.setCatalog(profile.types);
@@ -533,6 +533,7 @@
         plugins: {metricsManager: RocklyStage.MetricsManager},
       });
       workspace.addChangeListener(onWorkspaceEvent);
+      RocklyKeyNames.watch();
       workspace.addChangeListener(afterPlacing);
       RocklyStage.install(workspace);
       window.addEventListener('resize', keepViewCorner);  // added after inject's own: runs after it

@@ -1,9 +1,11 @@
-"""What a block says and shows in a run (real QtWebEngine + Blockly): its badge when a STOP ended it, and
-a badge's text whole inside its frame."""
+"""What a block and the window say and show (real QtWebEngine + Blockly): a block's badge when a STOP ended it,
+a badge's text whole inside its frame, Blockly's own words in German, one word for where a program runs."""
 from page_tools import call_page, run_js
-from program_builder import block, workspace
+from program_builder import block, number, workspace
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QApplication
+from PySide6.QtWidgets import QApplication, QLabel
+
+from rockly_desktop.ui.preferences.preferences import PreferencesDialog
 
 
 def badge_look(qtbot, window, block_id):
@@ -43,4 +45,50 @@ def test_a_block_ended_by_stop_says_stopped_in_its_own_colour_and_its_running_ba
         const fill = getComputedStyle(probe.firstChild).fill;
         probe.remove();
         return fill; })()""")
-    assert stopped["fill"] not in (failed_fill, running["fill"], "rgb(236, 239, 241)")  # not failed's, running's or plain
+    plain = "rgb(236, 239, 241)"
+    assert stopped["fill"] not in (failed_fill, running["fill"], plain)  # its own: not failed's, running's or plain
+
+
+def menu_texts(qtbot, window, target: str) -> list:
+    """The items of the context menu Blockly opens on ``target`` (a page expression: a block or the workspace);
+    opened again should the page close it before it was read (a focus the window's start gives the blocks late)."""
+    items = []
+
+    def opened():
+        run_js(qtbot, window.editor, f"""(() => {{
+            const ws = Blockly.getMainWorkspace(), target = {target};
+            const box = (target.getSvgRoot ? target.getSvgRoot() : ws.getParentSvg()).getBoundingClientRect();
+            target.showContextMenu(new PointerEvent('contextmenu', {{clientX: box.left + 10, clientY: box.top + 10}}));
+            return true; }})()""")
+        items[:] = run_js(qtbot, window.editor, "[...document.querySelectorAll('.blocklyContextMenu "
+                                                ".blocklyMenuItemContent')].map(item => item.textContent)")
+        return bool(items)
+
+    qtbot.waitUntil(opened, timeout=5000)
+    run_js(qtbot, window.editor, "Blockly.ContextMenu.hide() || true")
+    return items
+
+
+def test_blocklys_menus_and_the_repeat_block_speak_german_without_stray_gaps(qtbot, german_window):
+    window = german_window
+    call_page(qtbot, window.editor, "load", {"workspace": workspace(
+        block("controls_repeat_ext", inputs={"TIMES": number(4)}, id="repeat"))})
+    workspace_menu = menu_texts(qtbot, window, "ws")
+    block_menu = menu_texts(qtbot, window, "ws.getBlockById('repeat')")
+    assert "Rückgängig Strg + Z" in workspace_menu and "Wiederholen Strg + Y" in workspace_menu
+    assert any(item.startswith("2 Bausteine löschen") and item.endswith(" Entf") for item in block_menu), block_menu
+    english = ("Control", "Delete", "Shift", "Escape")
+    assert not [item for item in workspace_menu + block_menu if any(word in item for word in english)]
+    words = run_js(qtbot, window.editor, "[...Blockly.getMainWorkspace().getBlockById('repeat').getSvgRoot()"
+                                         ".querySelectorAll(':scope > g > .blocklyText, :scope > .blocklyText')]"
+                                         ".map(text => text.textContent)")
+    assert [word for word in words if word != "4"][:2] == ["wiederhole", "Mal:"], words  # no "-mal" after a gap
+
+
+def test_the_teacher_tab_and_the_toolbar_use_one_word_for_where_a_program_runs(qtbot, german_window, registry):
+    window = german_window
+    label = next(widget.text().strip() for widget in window.run_toolbar.findChildren(QLabel)
+                 if widget.text().strip().endswith(":"))
+    dialog = PreferencesDialog("de", None, registry.get("hobbit"), window.settings.teacher)
+    qtbot.addWidget(dialog)
+    assert f"„{label.rstrip(':')}“" in dialog.teacher_tab.lock_robot.text()
