@@ -619,17 +619,19 @@
       setBreakpoints(ids);
       return [...breakpoints];
     },
-    markError({id, message}) {
+    async markError({id, message}) {
       clearMarks();
       const block = id && workspace.getBlockById(id);
       if (!block) return false;
       block.getSvgRoot().classList.add('rocklyError');
       block.setWarningText(message);
       errorBlockId = id;
+      await Blockly.renderManagement.finishQueuedRenders();  // its warning icon drawn: the block as wide as it shows
       // Not selected: a selected block is outlined in the running glow's yellow, and the
-      // error must look like an error.
+      // error must look like an error (rockly.css keeps it red should it be selected later).
       workspace.centerOnBlock(id);
-      return true;
+      const box = block.getSvgRoot().getBoundingClientRect();
+      return {left: box.left, top: box.top, width: box.width, height: box.height};  // where the message goes beside
     },
     clearMarks() {
       clearMarks();

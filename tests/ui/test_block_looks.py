@@ -1,9 +1,10 @@
 """What a block and the window say and show (real QtWebEngine + Blockly): a block's badge when a STOP ended it,
 a badge's text whole inside its frame, Blockly's own words in German, one word for where a program runs."""
+import pytest
 from page_tools import call_page, run_js
-from program_builder import block, number, workspace
-from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QApplication, QLabel
+from program_builder import block, number, stack, workspace
+from PySide6.QtCore import QPoint, QRect, QSize, Qt
+from PySide6.QtWidgets import QApplication, QLabel, QMessageBox
 
 from rockly_desktop.ui.preferences.preferences import PreferencesDialog
 
@@ -92,3 +93,47 @@ def test_the_teacher_tab_and_the_toolbar_use_one_word_for_where_a_program_runs(q
     dialog = PreferencesDialog("de", None, registry.get("hobbit"), window.settings.teacher)
     qtbot.addWidget(dialog)
     assert f"„{label.rstrip(':')}“" in dialog.teacher_tab.lock_robot.text()
+
+
+def block_on_screen(qtbot, window, block_id) -> QRect:
+    """Where the block ``block_id`` is on the screen (global pixels)."""
+    box = run_js(qtbot, window.editor, f"(() => {{ const r = Blockly.getMainWorkspace().getBlockById('{block_id}')"
+                                       ".getSvgRoot().getBoundingClientRect();"
+                                       " return [r.left, r.top, r.width, r.height]; })()")
+    zoom = window.editor.zoomFactor()
+    left, top, width, height = (round(value * zoom) for value in box)
+    return QRect(window.editor.mapToGlobal(QPoint(left, top)), QSize(width, height))
+
+
+def run_error_box(window):
+    boxes = [box for box in window.findChildren(QMessageBox) if box.objectName() == "run_error_box" and box.isVisible()]
+    return boxes[0] if boxes else None
+
+
+@pytest.mark.parametrize("size", [(1280, 800), (1920, 1080)])
+def test_an_errors_message_stands_beside_its_block_and_the_block_stays_red_after_ok(qtbot, driver, size):
+    window = driver.open_window()
+    window.resize(*size)
+    program = workspace(stack(block("variables_set", {"VAR": {"id": "x"}}, {"VALUE": block(
+        "math_arithmetic", {"OP": "DIVIDE"}, {"A": number(1), "B": number(0)})}, id="divide")))
+    program["variables"] = [{"name": "x", "id": "x"}]
+    call_page(qtbot, window.editor, "load", {"workspace": program})
+    window.runs.run()
+    qtbot.waitUntil(lambda: run_error_box(window) is not None, timeout=20000)
+    box = run_error_box(window)
+    qtbot.waitUntil(lambda: not block_on_screen(qtbot, window, "divide").intersects(box.frameGeometry()), timeout=5000)
+    assert window.frameGeometry().contains(box.frameGeometry())  # beside the block, still on the window
+
+    ok = box.button(QMessageBox.StandardButton.Ok)
+    qtbot.mouseClick(ok, Qt.MouseButton.LeftButton, pos=ok.rect().center())
+    qtbot.waitUntil(lambda: run_error_box(window) is None, timeout=5000)
+    marked = block_on_screen(qtbot, window, "divide")
+    page = window.editor.focusProxy()
+    qtbot.mouseClick(page, Qt.MouseButton.LeftButton, pos=page.mapFromGlobal(marked.topLeft() + QPoint(12, 12)))
+    outline = ("[...Blockly.getMainWorkspace().getBlockById('divide').getSvgRoot()"
+               ".querySelectorAll(':scope > .blocklyPath')]"
+               ".map(path => [getComputedStyle(path).stroke, getComputedStyle(path).filter])")
+    selected = "Blockly.getMainWorkspace().getBlockById('divide').getSvgRoot().classList.contains('blocklySelected')"
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, selected), timeout=5000)  # the click selected it
+    for stroke, glow in run_js(qtbot, window.editor, outline):
+        assert stroke == "rgb(213, 0, 0)" and "SelectedGlow" not in glow, (stroke, glow)  # red, no yellow glow
