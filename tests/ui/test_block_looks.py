@@ -4,7 +4,8 @@ import pytest
 from page_tools import call_page, run_js
 from program_builder import block, number, stack, workspace
 from PySide6.QtCore import QPoint, QRect, QSize, Qt
-from PySide6.QtWidgets import QApplication, QLabel, QMessageBox
+from PySide6.QtTest import QTest
+from PySide6.QtWidgets import QApplication, QDockWidget, QLabel, QMessageBox, QTabBar
 
 from rockly_desktop.ui.preferences.preferences import PreferencesDialog
 
@@ -137,3 +138,80 @@ def test_an_errors_message_stands_beside_its_block_and_the_block_stays_red_after
     qtbot.waitUntil(lambda: run_js(qtbot, window.editor, selected), timeout=5000)  # the click selected it
     for stroke, glow in run_js(qtbot, window.editor, outline):
         assert stroke == "rgb(213, 0, 0)" and "SelectedGlow" not in glow, (stroke, glow)  # red, no yellow glow
+
+
+ORANGE = "rgb(255, 109, 0)"  # the window's focus ring (ui/keyboard.py's #ff6d00)
+
+
+def test_a_block_focused_in_the_flyout_wears_the_windows_orange_ring(qtbot, window):
+    qtbot.waitUntil(lambda: activated(window), timeout=5000)
+    QTest.keyClick(QApplication.focusWidget(), Qt.Key.Key_1, Qt.KeyboardModifier.ControlModifier)  # to the toolbox
+    focused = ("(() => { const node = Blockly.getFocusManager().getFocusedNode();"
+               " return node && node.getSvgRoot && node.workspace.isFlyout ? node.id : null; })()")
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "Blockly.getFocusManager().getFocusedNode() !== null"),
+                    timeout=5000)
+    QTest.keyClick(QApplication.focusWidget(), Qt.Key.Key_Right)  # into the category's blocks
+    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, focused) is not None, timeout=5000)
+    stroke = run_js(qtbot, window.editor, f"""(() => {{
+        const path = Blockly.getMainWorkspace().getFlyout().getWorkspace().getBlockById({focused})
+            .getSvgRoot().querySelector(':scope > .blocklyPath');
+        const style = getComputedStyle(path);
+        return [style.stroke, parseFloat(style.strokeWidth)]; }})()""")
+    assert stroke[0] == ORANGE and stroke[1] >= 3, stroke
+
+
+def activated(window):
+    window.activateWindow()
+    return QApplication.activeWindow() is window
+
+
+def ring_around(widget) -> list:
+    """The colours at the middle of ``widget``'s four edges, as drawn."""
+    image = widget.grab().toImage()
+    middle_x, middle_y = widget.width() // 2, widget.height() // 2
+    edges = [(middle_x, 1), (1, middle_y), (middle_x, widget.height() - 2), (widget.width() - 2, middle_y)]
+    return [image.pixelColor(x, y).name() for x, y in edges]
+
+
+def test_a_dialogs_control_that_has_the_keyboard_wears_the_orange_ring(qtbot, window):
+    qtbot.waitUntil(lambda: activated(window), timeout=5000)
+    dialog = PreferencesDialog("en", window, window.profile, window.settings.teacher)
+    dialog.open()
+    qtbot.waitUntil(lambda: QApplication.activeWindow() is dialog, timeout=5000)
+    for _ in range(3):
+        QTest.keyClick(QApplication.focusWidget() or dialog, Qt.Key.Key_Tab)
+        focused = QApplication.focusWidget()
+        assert focused.window() is dialog
+        qtbot.waitUntil(lambda focused=focused: ring_around(focused) == ["#ff6d00"] * 4, timeout=5000)
+    dialog.reject()
+
+
+def group_of(window, widget) -> str:
+    """What ``widget`` belongs to, as a person sees it: a dock's name, 'tabs of' the dock a tab bar shows, the
+    toolbar, the blocks."""
+    if isinstance(widget, QTabBar):
+        return "tabs of " + widget.tabText(widget.currentIndex())
+    node = widget
+    while node is not None and not isinstance(node, QDockWidget):
+        node = node.parentWidget()
+    if node is not None:
+        return node.windowTitle()
+    return "blocks" if widget is window.editor.focusProxy() else "toolbar"
+
+
+@pytest.mark.parametrize("size", [(1280, 800), (1920, 1080)])
+def test_tab_goes_through_the_docks_in_visual_order_each_tab_bar_after_its_dock(qtbot, window, size):
+    window.resize(*size)
+    qtbot.waitUntil(lambda: activated(window), timeout=5000)
+    window.editor.setFocus()
+    groups = []
+    for _ in range(40):
+        QTest.keyClick(QApplication.focusWidget(), Qt.Key.Key_Tab)
+        group = group_of(window, QApplication.focusWidget())
+        if group == "blocks":
+            break
+        if not groups or groups[-1] != group:
+            groups.append(group)
+    # the right column top to bottom (the simulator; the code with its tabs), then the bottom row (the console
+    # with its tabs), then round to the toolbar
+    assert groups == ["Simulator", "Python code", "tabs of Python code", "Console", "tabs of Console", "toolbar"]
