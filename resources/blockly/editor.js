@@ -630,6 +630,7 @@
       // Not selected: a selected block is outlined in the running glow's yellow, and the
       // error must look like an error (rockly.css keeps it red should it be selected later).
       workspace.centerOnBlock(id);
+      noteViewCorner();  // now, not when the viewport event comes: a resize before it (the replay bar) keeps the block
       const box = block.getSvgRoot().getBoundingClientRect();
       return {left: box.left, top: box.top, width: box.width, height: box.height};  // where the message goes beside
     },
