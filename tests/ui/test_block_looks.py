@@ -158,12 +158,12 @@ def test_a_block_focused_in_the_flyout_wears_the_windows_orange_ring(qtbot, wind
                     timeout=5000)
     QTest.keyClick(QApplication.focusWidget(), Qt.Key.Key_Right)  # into the category's blocks
     qtbot.waitUntil(lambda: run_js(qtbot, window.editor, focused) is not None, timeout=5000)
-    stroke = run_js(qtbot, window.editor, f"""(() => {{
-        const path = Blockly.getMainWorkspace().getFlyout().getWorkspace().getBlockById({focused})
-            .getSvgRoot().querySelector(':scope > .blocklyPath');
-        const style = getComputedStyle(path);
-        return [style.stroke, parseFloat(style.strokeWidth)]; }})()""")
-    assert stroke[0] == ORANGE and stroke[1] >= 3, stroke
+    outlines = run_js(qtbot, window.editor, f"""[...Blockly.getMainWorkspace().getFlyout().getWorkspace()
+        .getBlockById({focused}).getSvgRoot().querySelectorAll(':scope > .blocklyPath')]
+        .map(path => getComputedStyle(path))
+        .map(style => [style.stroke, parseFloat(style.strokeWidth), style.filter])""")
+    for stroke, width, glow in outlines:  # its outline and the selection's drawn over it
+        assert stroke == ORANGE and width >= 3 and "Glow" not in glow, outlines
 
 
 def activated(window):
