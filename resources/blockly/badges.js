@@ -11,7 +11,14 @@ const RocklyBadges = (() => {
   const TYPE = new Blockly.icons.IconType('rockly_badge');
   const HEIGHT = 16;
   const PAD = 6;
-  const CHAR_WIDTH = 6.2;
+  const FONT = '11px sans-serif';  // the badge text's font in rockly.css
+  const measure = document.createElement('canvas').getContext('2d');
+
+  /** The width `text` takes in the badge's font (a guess per character cut "running…" short). */
+  function textWidth(text) {
+    measure.font = FONT;
+    return Math.ceil(measure.measureText(text).width);
+  }
 
   class Badge extends Blockly.icons.Icon {
     constructor(block, text, state) {
@@ -29,7 +36,7 @@ const RocklyBadges = (() => {
     }
 
     width() {
-      return PAD * 2 + this.text.length * CHAR_WIDTH;
+      return PAD * 2 + textWidth(this.text);
     }
 
     getSize() {

@@ -516,7 +516,7 @@
   const calls = {
     async setup({language, profile, media, first, texts, hidden, look}) {
       if (language !== 'en') await loadScript('vendor/msg/' + language + '.js');
-      Object.assign(Blockly.Msg, (texts && texts.blocklyMsg) || {});  // Blockly's keyboard hints, in Rockly's words
+      Object.assign(Blockly.Msg, (texts && texts.blocklyMsg) || {});  // Blockly's hints and untranslated words, in Rockly's
       RocklyNumbers.setLanguage(language, texts && texts.numberRefused);
       // Prepared ahead of the program: nothing shows until `show`.
       if (hidden) document.getElementById('workspace').style.visibility = 'hidden';
@@ -535,6 +535,7 @@
         plugins: {metricsManager: RocklyStage.MetricsManager},
       });
       workspace.addChangeListener(onWorkspaceEvent);
+      RocklyKeyNames.watch();
       workspace.addChangeListener(afterPlacing);
       RocklyStage.install(workspace);
       window.addEventListener('resize', keepViewCorner);  // added after inject's own: runs after it
@@ -620,17 +621,20 @@
       setBreakpoints(ids);
       return [...breakpoints];
     },
-    markError({id, message}) {
+    async markError({id, message}) {
       clearMarks();
       const block = id && workspace.getBlockById(id);
       if (!block) return false;
       block.getSvgRoot().classList.add('rocklyError');
       block.setWarningText(message);
       errorBlockId = id;
+      await Blockly.renderManagement.finishQueuedRenders();  // its warning icon drawn: the block as wide as it shows
       // Not selected: a selected block is outlined in the running glow's yellow, and the
-      // error must look like an error.
+      // error must look like an error (rockly.css keeps it red should it be selected later).
       workspace.centerOnBlock(id);
-      return true;
+      noteViewCorner();  // now, not when the viewport event comes: a resize before it (the replay bar) keeps the block
+      const box = block.getSvgRoot().getBoundingClientRect();
+      return {left: box.left, top: box.top, width: box.width, height: box.height};  // where the message goes beside
     },
     clearMarks() {
       clearMarks();

@@ -2,10 +2,17 @@
 
 A service call or a goal makes its block ``running``; the answer makes it ``succeeded``,
 the goal's outcome ``succeeded``, ``aborted``, ``preempted`` or ``rejected``, a failure
-``timed_out`` (a RobotTimeout) or ``failed``, each with the seconds it took. Fed live by
+``timed_out`` (a RobotTimeout), ``stopped`` (the person stopped the program: ProgramStopped) or
+``failed``, each with the seconds it took. Fed live by
 a run's recording and, for a replay, with the recorded commands up to a moment.
 """
 _STARTS = ("call", "goal")
+_FAILURES = {"RobotTimeout": "timed_out", "ProgramStopped": "stopped"}  # error class -> state
+
+
+def _failure(text: str) -> str:
+    """The state of a block whose command failed with ``text`` ("ErrorClass: message")."""
+    return _FAILURES.get(text.split(":", 1)[0], "failed")
 
 
 class BadgeStates:
@@ -27,8 +34,7 @@ class BadgeStates:
         elif kind == "outcome":
             state = (entry.get("status") or "succeeded", entry.get("seconds"))
         elif kind == "failed":
-            timed_out = str(entry.get("text", "")).startswith("RobotTimeout")
-            state = ("timed_out" if timed_out else "failed", entry.get("seconds"))
+            state = (_failure(str(entry.get("text", ""))), entry.get("seconds"))
         else:
             return
         self.states = {**self.states, block: state}  # a new dict: readers in other threads see one or the other

@@ -1,11 +1,12 @@
-"""The main window from the keyboard alone: Tab and Shift+Tab through every control in reading order,
-a ring that shows where the keys go, keys to jump to the toolbox, the blocks, the code, the console and
-the simulator, and focus that enters the block editor on the workspace with Blockly's own keys on.
+"""The main window from the keyboard alone: Tab and Shift+Tab through every control in reading order, a ring
+that shows where the keys go (in the window and in the dialogs it opens), keys to jump to the toolbox, the
+blocks, the code, the console and the simulator, and focus that enters the block editor on the workspace with
+Blockly's own keys on.
 
 Tab is the window's shortcut, not each widget's: tables, the web view and text views would keep it.
 """
 import shiboken6
-from PySide6.QtCore import QEvent, QObject, Qt
+from PySide6.QtCore import QEvent, QObject, QPoint, QRect, Qt
 from PySide6.QtGui import QAction, QKeySequence, QShortcut
 from PySide6.QtWidgets import QApplication, QDockWidget, QFrame, QTabBar, QToolBar, QToolButton
 
@@ -162,6 +163,12 @@ class KeyboardAccess(QObject):
         return frame.centralWidget()
 
     def _reading_place(self, container):
+        """Where ``container`` comes in the reading order: (region, top, left, 0); the tab bar of tabbed docks
+        right after the dock it shows (it belongs to that group, not to the next one down)."""
+        if isinstance(container, QTabBar):
+            dock = self._shown_by(container)
+            if dock is not None:
+                return self._reading_place(dock)[:3] + (1,)
         frame = self.frame
         if isinstance(container, QToolBar):
             region = 0
@@ -174,7 +181,20 @@ class KeyboardAccess(QObject):
                 area is None and top_left.y() > frame.centralWidget().geometry().bottom() - 1)
             region = 4 if bottom else 3
         top_left = container.mapTo(frame, container.rect().topLeft())
-        return region, top_left.y(), top_left.x()
+        return region, top_left.y(), top_left.x(), 0
+
+    def _shown_by(self, bar):
+        """The dock a main window's tab ``bar`` shows now: the one in sight over (or under) it."""
+        frame = self.frame
+        place = QRect(bar.mapTo(frame, QPoint(0, 0)), bar.size())
+        beside = []
+        for dock in frame.findChildren(QDockWidget):
+            if not dock.isVisible() or dock.visibleRegion().isEmpty():
+                continue
+            area = QRect(dock.mapTo(frame, QPoint(0, 0)), dock.size())
+            if area.left() <= place.center().x() <= area.right():
+                beside.append((min(abs(area.bottom() - place.top()), abs(place.bottom() - area.top())), dock))
+        return min(beside, key=lambda pair: pair[0])[1] if beside else None
 
     def move(self, step: int):
         """Give the keyboard to the next (``step`` 1) or previous (-1) control; from nowhere, to the first."""
@@ -260,9 +280,9 @@ class KeyboardAccess(QObject):
     def _on_focus_changed(self, _old, new):
         if not self._controls_set_up:
             return  # the editor's start gives the keyboard to the blocks, with the ring
-        if not shiboken6.isValid(self.frame) or new is None or new.window() is not self.frame:
-            return  # (another window, a dialog, has the keyboard: the ring stays where it comes back to)
-        if not new.accessibleName():  # a control made since the window was last named
+        if not shiboken6.isValid(self.frame) or new is None or not _opened_by(new.window(), self.frame):
+            return  # (another window has the keyboard: the ring stays where it comes back to)
+        if new.window() is self.frame and not new.accessibleName():  # a control made since the window was named
             self.name_controls()
         if self.ring is None or not shiboken6.isValid(self.ring):  # it went with the control it lay over
             self.ring = FocusRing(self.frame)
@@ -270,6 +290,16 @@ class KeyboardAccess(QObject):
             self.ring.follow(None)  # a click or a touch shows where it went by itself: the ring is for keys
             return
         self.ring.follow(self._editor if _inside(new, self._editor) else new)
+
+
+def _opened_by(window, frame) -> bool:
+    """True for ``frame`` itself and for a dialog it opened (or one such a dialog opened): the ring goes there too."""
+    while window is not None:
+        if window is frame:
+            return True
+        parent = window.parentWidget()
+        window = parent.window() if parent is not None else None
+    return False
 
 
 def _focus_chain(window) -> list:

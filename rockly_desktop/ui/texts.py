@@ -27,15 +27,25 @@ _NAVIGATION_HINTS = {f"KEYBOARD_NAV_{name.upper()}_HINT": f"nav_hint_{name}" for
     "block_navigation", "constrained_move", "copied", "cut", "flyout_label", "unconstrained_move",
     "workspace_navigation")}
 
+# More of Blockly's words its German messages leave English (key names in its menus, its shortcuts) and the
+# repeat block's title (its "%1-mal" showed as "4 -mal": a field stands apart from the text after it)
+_BLOCKLY_WORDS = {name: f"blockly_{name.lower()}" for name in (
+    "BACKSPACE_KEY", "COMMAND_KEY", "CONTROL_KEY", "DELETE_KEY", "END_KEY", "ENTER_KEY", "ESCAPE",
+    "HOME_KEY", "INSERT_KEY", "OPTION_KEY", "PAGE_DOWN_KEY", "PAGE_UP_KEY", "SHIFT_KEY", "SPACE_KEY", "TAB_KEY",
+    "COPY_SHORTCUT", "CUT_SHORTCUT", "PASTE_SHORTCUT", "EDIT_BLOCK_CONTENTS", "MOVE_BLOCK", "SHORTCUTS_DELETE",
+    "SHORTCUTS_DUPLICATE", "SHORTCUTS_ESCAPE", "SHORTCUTS_CLEANUP", "SHORTCUTS_SHOW_CONTEXT_MENU", "RESET_ZOOM",
+    "ZOOM_IN", "ZOOM_OUT", "OPEN_TRASH", "CLOSE", "CONTROLS_REPEAT_TITLE")}
+
 
 def editor_page_texts(language: str) -> dict:
     """The editor page's own texts in ``language`` (``EditorView.start``'s ``texts``): its menu, its
-    hint, a number field's refusal, and ``blocklyMsg``, Blockly's keyboard hints."""
+    hint, a number field's refusal, and ``blocklyMsg``, Blockly's keyboard hints and the words of its own it leaves
+    untranslated."""
     return {"addBreakpoint": tr("add_breakpoint", language), "removeBreakpoint": tr("remove_breakpoint", language),
             "editMadeBlock": tr("edit_made_block_here", language),
             "emptyHint": tr("empty_hint", language, run=tr("run", language)),
             "numberRefused": tr("number_refused", language, example=number_text(2.5, language)),
-            "blocklyMsg": {name: tr(key, language) for name, key in _NAVIGATION_HINTS.items()}}
+            "blocklyMsg": {name: tr(key, language) for name, key in {**_NAVIGATION_HINTS, **_BLOCKLY_WORDS}.items()}}
 
 
 def robot_problem(error, language: str) -> tuple:

@@ -4,8 +4,9 @@ A robot's own refusal (a bump, a part the teacher switched off, a goal it could 
 the robot says: its name in the title, its words and where to look, no "Something went wrong" and
 no traceback, for nothing in Rockly or the program broke. Any other error (in the Python the person
 wrote, or in Rockly itself) keeps its traceback behind Show Details, except in a kiosk, where a
-visitor sees no tracebacks at all.
+visitor sees no tracebacks at all. The box stands beside the block the error came from, not over it.
 """
+from PySide6.QtCore import QPoint, QRect
 from PySide6.QtWidgets import QMessageBox
 
 from rockly_desktop.ui.message_boxes import plain_message_box
@@ -27,3 +28,22 @@ def run_problem_box(parent, result, robot_name: str, language: str, kiosk: bool 
             box.setDetailedText(result.details)
     box.setObjectName("run_error_box")
     return box
+
+
+GAP = 16  # pixels between a block and the box beside it
+
+
+def place_beside(box: QMessageBox, block: QRect, area: QRect) -> bool:
+    """Move the shown ``box`` beside ``block`` (global pixels) inside ``area`` (the window's frame): to its right,
+    left, below or above, the first side with room. False (the box stays) when no side has room."""
+    size = box.frameGeometry().size()
+    width, height = size.width(), size.height()
+    top = min(max(block.top(), area.top()), area.bottom() - height + 1)  # level with the block, inside the area
+    left = min(max(block.left(), area.left()), area.right() - width + 1)
+    for corner in (QPoint(block.right() + GAP, top), QPoint(block.left() - GAP - width, top),
+                   QPoint(left, block.bottom() + GAP), QPoint(left, block.top() - GAP - height)):
+        place = QRect(corner, size)
+        if area.contains(place) and not place.intersects(block):
+            box.move(box.pos() + corner - box.frameGeometry().topLeft())
+            return True
+    return False

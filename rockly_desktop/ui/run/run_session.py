@@ -6,7 +6,8 @@ speed never floods the GUI, while a pause shows the exact block and values.
 """
 import sys
 
-from PySide6.QtCore import QObject, QTimer, Signal
+import shiboken6
+from PySide6.QtCore import QObject, QPoint, QRect, QSize, QTimer, Signal
 
 from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS
 from rockly_desktop.core.errors import RocklyError
@@ -14,7 +15,7 @@ from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import RunFinished, RunPaused, RunResumed, VariablesChanged
 from rockly_desktop.executor.qt_adapter import ProgramThread
 from rockly_desktop.ui.run.block_badges import badge_texts, badges_shown
-from rockly_desktop.ui.run.run_messages import run_problem_box
+from rockly_desktop.ui.run.run_messages import place_beside, run_problem_box
 from rockly_desktop.ui.texts import robot_problem, tr
 
 FOLLOW_MS = 33
@@ -263,12 +264,23 @@ class RunSession(QObject):
         self._show_block_values()
         if result.outcome == "error":
             self.console.append(result.message, "error")
-            self.editor.call("markError", {"id": result.block_id, "message": result.message})
-            run_problem_box(self.parent(), result, self.document.profile.display_name(language), language,
-                            kiosk=self.settings.kiosk_mode).open()
+            box = run_problem_box(self.parent(), result, self.document.profile.display_name(language), language,
+                                  kiosk=self.settings.kiosk_mode)
+            box.open()
+            self.editor.call("markError", {"id": result.block_id, "message": result.message},
+                             lambda marked, _error: self._put_beside_block(box, marked))
         else:
             self.console.append(tr("run_finished" if result.outcome == "finished" else "run_stopped", language), "info")
         self.sig_status.emit("")
+
+    def _put_beside_block(self, box, marked):
+        """Move the error's ``box`` beside its block (``marked``: the page's box of it, in page pixels)."""
+        if not isinstance(marked, dict) or not shiboken6.isValid(box) or not box.isVisible():
+            return  # no block to point to, or the box is gone
+        zoom = self.editor.zoomFactor()
+        corner = self.editor.mapToGlobal(QPoint(round(marked["left"] * zoom), round(marked["top"] * zoom)))
+        block = QRect(corner, QSize(round(marked["width"] * zoom), round(marked["height"] * zoom)))
+        place_beside(box, block, self.editor.window().frameGeometry())
 
     def _on_thread_finished(self):
         if self.thread is None:  # already handled by shutdown()
