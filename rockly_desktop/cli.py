@@ -328,9 +328,9 @@ def main(argv=None) -> int:
 
             return run_blocks_command(args, args.language or _app_language())
         if args.command == "agent":
-            from rockly_desktop.runtime.agent.commands import serve
+            from rockly_desktop.runtime.agent.commands import agent_command
 
-            return serve(args, args.language or "en")
+            return agent_command(args, args.language or "en")
         if args.command == "robot":
             from rockly_desktop.runtime.agent.commands import robot_command
 

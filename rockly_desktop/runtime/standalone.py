@@ -2,11 +2,12 @@
 
     python3 OUT.py [--backend sim|ros1|ros2] [connection options] [--answer A]... [--speed S]
                    [--language en|de] [--events PATH|-] [--record OUT.mcap] [--any-profile-version]
+                   [--robot-limits FILE]
 
 The file holds the program (the page's run code, its block types, its variables' names), the robot
-profile's id and version it was made for, and the teacher's limits in force when it was exported; the
-runtime installed on the computer it runs on (``rockly-runtime``) provides everything else. Nothing here
-needs Qt or Blockly.
+profile's id and version it was made for, and the teacher's limits in force when it was exported (a run
+keeps the stricter of those and the robot's own, ``runtime.robot_limits``); the runtime installed on the
+computer it runs on (``rockly-runtime``) provides everything else. Nothing here needs Qt or Blockly.
 
 Exit status: 0 finished; 1 an error in the program, or the robot could not be reached; 2 a wrong
 command line; 3 the profile is not installed here, has another version than the one the program was
@@ -23,6 +24,8 @@ from rockly_desktop.robot import links
 from rockly_desktop.robot.wrappers.limits import Limits
 from rockly_desktop.runtime.event_stream import EventStream, event_record, started_record
 from rockly_desktop.runtime.options import add_connection_options, connection
+from rockly_desktop.runtime.robot_limits import RobotLimitsError, read_robot_limits
+from rockly_desktop.runtime.robot_limits import default_path as default_limits_path
 from rockly_desktop.runtime.run import EXIT_ERROR, Run
 
 FORMAT = 1  # of the PROGRAM a standalone file holds; a newer one is refused with a message
@@ -37,6 +40,12 @@ def limits_data(limits: Limits) -> dict:
 def limits_from_data(data: dict) -> Limits:
     """The Limits a file holds (``limits_data``'s form)."""
     return Limits(data.get("max_speed"), data.get("max_turn"), frozenset(data.get("switched_off", ())))
+
+
+def run_limits(program: dict, robot_limits_path=None) -> Limits:
+    """The limits a run of ``program`` keeps here: the stricter of the program's and the robot's own
+    (``runtime.robot_limits``; RobotLimitsError when the robot's file is broken)."""
+    return limits_from_data(program.get("limits", {})).stricter(read_robot_limits(robot_limits_path))
 
 
 def parser(program: dict, language: str) -> argparse.ArgumentParser:
@@ -58,6 +67,8 @@ def parser(program: dict, language: str) -> argparse.ArgumentParser:
     parser.add_argument("--record", metavar="OUT.mcap", help=app_text("standalone_record_help", language))
     parser.add_argument("--any-profile-version", action="store_true",
                         help=app_text("standalone_any_version_help", language))
+    parser.add_argument("--robot-limits", metavar="FILE",
+                        help=app_text("standalone_robot_limits_help", language, default=default_limits_path()))
     return parser
 
 
@@ -93,12 +104,16 @@ def main(program: dict, run_code: str, argv=None, on_event=None) -> int:
             out = _to_standard_error
     for write in writers:
         write(started_record(program.get("source"), profile.id, profile.version, args.backend))
+    try:
+        limits = run_limits(program, args.robot_limits)
+    except RobotLimitsError as error:
+        print(f"{command}: {error.in_language(language)}", file=sys.stderr)
+        return EXIT_ERROR
     run = Run(profile, {"code": run_code, "variables": program.get("variables")}, types, language, command,
               out=out, on_event=_each(writers, types) if writers else None, trace=bool(writers), end_out=out)
     try:
-        status = run.run(args.backend, connection(args.backend, args), args.answer, args.speed,
-                         limits_from_data(program.get("limits", {})), args.record, program.get("source"),
-                         print_blocks=False)
+        status = run.run(args.backend, connection(args.backend, args), args.answer, args.speed, limits, args.record,
+                         program.get("source"), print_blocks=False)
         for write in writers:
             write({"event": "exit", "status": status})
         return status

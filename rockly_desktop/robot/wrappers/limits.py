@@ -53,6 +53,13 @@ class Limits:
         """True when nothing is limited."""
         return self.max_speed is None and self.max_turn is None and not self.switched_off
 
+    def stricter(self, other: "Limits") -> "Limits":
+        """The limits that hold both these and ``other``: the lower speeds, every capability either switches off."""
+        def lower(mine, theirs):
+            return theirs if mine is None else mine if theirs is None else min(mine, theirs)
+        return Limits(lower(self.max_speed, other.max_speed), lower(self.max_turn, other.max_turn),
+                      frozenset(self.switched_off | other.switched_off))
+
 
 def limits_text(limits: Limits, capability_names, language: str = "en"):
     """One line saying which of ``limits`` apply (``capability_names``: the switched-off ones'

@@ -19,8 +19,9 @@ from rockly_desktop.profiles.registry import ProfileRegistry
 from rockly_desktop.runtime.agent.library import standalone_program
 from rockly_desktop.runtime.event_stream import EventStream, started_record
 from rockly_desktop.runtime.options import connection
+from rockly_desktop.runtime.robot_limits import RobotLimitsError
 from rockly_desktop.runtime.run import EXIT_ERROR, Run
-from rockly_desktop.runtime.standalone import limits_from_data, parser
+from rockly_desktop.runtime.standalone import parser, run_limits
 
 VARIABLES_SECONDS = 0.1  # how often the variables are looked at (as often as a window's own run shows them)
 REQUESTS = ("pause", "step", "continue", "stop", "breakpoints")
@@ -82,6 +83,12 @@ def main(argv=None) -> int:
                        version=program["profile"]["version"], installed="-"), file=sys.stderr)
         stream.write({"event": "exit", "status": EXIT_ERROR})
         return EXIT_ERROR
+    try:
+        limits = run_limits(program, args.robot_limits)
+    except RobotLimitsError as error:
+        print(error.in_language(language), file=sys.stderr)
+        stream.write({"event": "exit", "status": EXIT_ERROR})
+        return EXIT_ERROR
     run = Run(profile, {"code": run_code, "variables": program.get("variables")}, types, language,
               program.get("source") or "rockly-program", out=_to_standard_error, on_event=stream.event, trace=True,
               end_out=_to_standard_error)
@@ -91,8 +98,8 @@ def main(argv=None) -> int:
                                name="agent-variables")
     sampler.start()
     try:
-        status = run.run(args.backend, connection(args.backend, args), args.answer, args.speed,
-                         limits_from_data(program.get("limits", {})), None, program.get("source"), print_blocks=False)
+        status = run.run(args.backend, connection(args.backend, args), args.answer, args.speed, limits, None,
+                         program.get("source"), print_blocks=False)
     finally:
         ended.set()
         sampler.join()

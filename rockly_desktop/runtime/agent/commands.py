@@ -11,6 +11,7 @@ from pathlib import Path
 from rockly_desktop.core.app_texts import app_text
 from rockly_desktop.runtime.agent.client import VIAS, AgentClient, AgentError
 from rockly_desktop.runtime.agent.protocol import ALIVE_SECONDS, DEFAULT_NAMESPACE, DEFAULT_PORT
+from rockly_desktop.runtime.robot_limits import default_path as default_limits_path
 
 
 def default_library() -> Path:
@@ -26,7 +27,7 @@ def agent_main(argv=None) -> int:
     _agent_options(parser)
     _language_option(parser)
     args = parser.parse_args(argv)
-    return serve(args, args.language or "en")
+    return agent_command(args, args.language or "en")
 
 
 def robot_main(argv=None) -> int:
@@ -76,6 +77,15 @@ def _agent_options(agent):
     agent.add_argument("--speed", type=float, default=1.0, help=app_text("standalone_speed_help", "en"))
     agent.add_argument("--library-quota", type=int, metavar="MB", default=DEFAULT_QUOTA_BYTES // 2**20,
                        help=app_text("agent_quota_help", "en", megabytes=DEFAULT_QUOTA_BYTES // 2**20))
+    agent.add_argument("--robot-limits", metavar="FILE", type=Path,
+                       help=app_text("standalone_robot_limits_help", "en", default=default_limits_path()))
+    actions = agent.add_subparsers(dest="agent_action", metavar="limits")
+    limits = actions.add_parser("limits", help=app_text("agent_limits_help", "en"))
+    limits.add_argument("--max-speed", type=float, metavar="M/S", help=app_text("agent_limits_speed_help", "en"))
+    limits.add_argument("--max-turn", type=float, metavar="DEG/S", help=app_text("agent_limits_turn_help", "en"))
+    limits.add_argument("--switch-off", action="append", default=[], metavar="CAPABILITY",
+                        help=app_text("agent_limits_off_help", "en"))
+    limits.add_argument("--none", action="store_true", help=app_text("agent_limits_none_help", "en"))
     agent.add_argument("--namespace", default=DEFAULT_NAMESPACE,
                        help=app_text("agent_namespace_help", "en", namespace=DEFAULT_NAMESPACE))
     agent.add_argument("--offer-on-robot-ui", metavar="PROFILE", help=app_text("agent_offer_help", "en"))
@@ -113,6 +123,45 @@ def _robot_options(robot):
     attach.add_argument("--watch-only", action="store_true", help=app_text("robot_watch_only_help", "en"))
 
 
+def agent_command(args, language: str) -> int:
+    """``rockly agent``: serve, or ``rockly agent limits``: show or set the robot's own limits."""
+    if getattr(args, "agent_action", None) == "limits":
+        return limits_command(args, language)
+    return serve(args, language)
+
+
+def limits_command(args, language: str) -> int:
+    """Show the robot's limits, or change those given (``--none``: none); a speed below 0 is refused."""
+    from rockly_desktop.robot.wrappers.limits import Limits
+    from rockly_desktop.runtime.robot_limits import RobotLimitsError, read_robot_limits, write_robot_limits
+
+    path = args.robot_limits
+    try:
+        limits = Limits() if args.none else read_robot_limits(path)
+    except RobotLimitsError as error:
+        print(error.in_language(language), file=sys.stderr)
+        return 1
+    speeds = {"max_speed": args.max_speed, "max_turn": args.max_turn}
+    if any(value is not None and not value >= 0 for value in speeds.values()):
+        print(app_text("agent_limits_negative", language), file=sys.stderr)
+        return 2
+    if args.none or args.switch_off or any(value is not None for value in speeds.values()):
+        limits = Limits(speeds["max_speed"] if args.max_speed is not None else limits.max_speed,
+                        speeds["max_turn"] if args.max_turn is not None else limits.max_turn,
+                        frozenset(limits.switched_off | set(args.switch_off)))
+        try:
+            path = write_robot_limits(limits, path)
+        except OSError as error:
+            print(app_text("agent_limits_cannot_write", language, reason=error.strerror or str(error)),
+                  file=sys.stderr)
+            return 1
+    print(app_text("agent_limits_now", language, path=path or default_limits_path(),
+                   speed="-" if limits.max_speed is None else limits.max_speed,
+                   turn="-" if limits.max_turn is None else limits.max_turn,
+                   off=", ".join(sorted(limits.switched_off)) or "-"))
+    return 0
+
+
 def serve(args, language: str) -> int:
     """Run the agent until SIGTERM or Ctrl+C; a running program is stopped first (its safe stop runs)."""
     from rockly_desktop.profiles.registry import ProfileRegistry
@@ -128,7 +177,8 @@ def serve(args, language: str) -> int:
     except OSError as error:
         print(app_text("agent_no_library", language, folder=folder, reason=error.strerror), file=sys.stderr)
         return 1
-    options = ["--speed", str(args.speed), "--language", language]
+    options = ["--speed", str(args.speed), "--language", language, "--robot-limits",
+               str(args.robot_limits or default_limits_path())]
     for setting in links.link_kind(args.backend).settings:
         value = connection(args.backend, args).get(setting.name)
         if setting.option and value is not None:
