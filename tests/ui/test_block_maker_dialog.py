@@ -11,6 +11,7 @@ from PySide6.QtCore import QPoint, Qt
 from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QDialog
 from test_block_maker import drawn_preview, make_mmui_block, open_maker
+from window_tools import one_screen_platform
 
 FITTED_MAKER = """
 import json, sys
@@ -43,14 +44,9 @@ def inside(inner, outer) -> bool:
 @pytest.mark.parametrize("size", [(1280, 800), (1920, 1080)])
 @pytest.mark.parametrize("language", ["en", "de"])
 def test_the_maker_with_its_frame_and_buttons_fits_the_screen(tmp_path, size, language):
-    width, height = size
-    config = tmp_path / "screen.json"   # Qt's offscreen platform: one screen of this size, windows with frames
-    config.write_text(json.dumps({"windowFrameMargins": True, "screens": [
-        {"name": "screen", "x": 0, "y": 0, "width": width, "height": height, "logicalDpi": 96, "logicalBaseDpi": 96,
-         "dpr": 1}]}))
     script = tmp_path / "maker.py"
     script.write_text(FITTED_MAKER)
-    env = dict(os.environ, QT_QPA_PLATFORM=f"offscreen:configfile={config}", QTWEBENGINE_DISABLE_SANDBOX="1",
+    env = dict(os.environ, QT_QPA_PLATFORM=one_screen_platform(tmp_path, *size), QTWEBENGINE_DISABLE_SANDBOX="1",
                XDG_CONFIG_HOME=str(tmp_path / "config"), XDG_DATA_HOME=str(tmp_path / "data"))
     done = subprocess.run([sys.executable, str(script), language], env=env, timeout=120, capture_output=True,
                           text=True, check=True)

@@ -8,6 +8,7 @@ import sys
 
 import pytest
 from page_tools import run_js
+from window_tools import one_screen_platform
 
 from rockly_desktop.core.paths import examples_dir
 
@@ -38,13 +39,9 @@ def inside(inner, outer) -> bool:
 @pytest.mark.parametrize("size", SIZES)
 def test_the_first_window_with_its_frame_fits_the_screens_available_area(tmp_path, size):
     width, height = size
-    config = tmp_path / "screen.json"   # Qt's offscreen platform: one screen of this size, windows with frames
-    config.write_text(json.dumps({"windowFrameMargins": True, "screens": [
-        {"name": "screen", "x": 0, "y": 0, "width": width, "height": height, "logicalDpi": 96, "logicalBaseDpi": 96,
-         "dpr": 1}]}))
     script = tmp_path / "first_window.py"
     script.write_text(FIRST_WINDOW)
-    env = dict(os.environ, QT_QPA_PLATFORM=f"offscreen:configfile={config}", QTWEBENGINE_DISABLE_SANDBOX="1")
+    env = dict(os.environ, QT_QPA_PLATFORM=one_screen_platform(tmp_path, *size), QTWEBENGINE_DISABLE_SANDBOX="1")
     done = subprocess.run([sys.executable, str(script), str(tmp_path / "settings.ini")], env=env, timeout=120,
                           capture_output=True, text=True, check=True)
     shown = json.loads(done.stdout.strip().splitlines()[-1])

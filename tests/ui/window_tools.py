@@ -92,3 +92,15 @@ def opened_recording(qtbot, window, path) -> bool:
     with qtbot.waitSignal(window.replay.sig_opened, timeout=60000) as reading:
         window.replay.open(path)
     return reading.args[0]
+
+
+def one_screen_platform(folder, width: int, height: int) -> str:
+    """``QT_QPA_PLATFORM`` for Qt's offscreen platform with one screen of ``width`` × ``height`` whose windows
+    have frames (its configuration written into ``folder``)."""
+    import json
+
+    config = folder / "screen.json"
+    config.write_text(json.dumps({"windowFrameMargins": True, "screens": [
+        {"name": "screen", "x": 0, "y": 0, "width": width, "height": height, "logicalDpi": 96, "logicalBaseDpi": 96,
+         "dpr": 1}]}))
+    return f"offscreen:configfile={config}"
