@@ -4,10 +4,11 @@ slowloris, a connection that says nothing, more connections than it holds and a 
 is refused or cut, the agent stays small, and a paired editor's STOP still ends the run (issue 30)."""
 import json
 import socket
+import subprocess
 import time
 
 import pytest
-from agent_tools import AgentProcess
+from agent_tools import REPO, AgentProcess
 from program_builder import block, rockly_document, text
 from standalone_tools import environment, export_standalone
 from waiting import eventually
@@ -33,6 +34,7 @@ def programs(tmp_path_factory):
         source.write_text(rockly_document([top]))
         made[name] = (export_standalone(source, folder / f"{name}.py", "--language", "en", env=env).read_text(),
                       source.read_text())
+    made["forever_path"] = folder / "forever.py"
     return made
 
 
@@ -203,3 +205,24 @@ def test_the_library_keeps_to_its_quota(tmp_path, programs):
     finally:
         client.close()
         agent.stop()
+
+
+def test_a_program_sent_again_by_another_says_whose_it_replaced_and_a_padded_name_is_refused(agent, programs):
+    standalone = programs["forever"][0]
+    teacher = AgentClient("127.0.0.1", agent.port, name="teacher's window")
+    try:
+        teacher.send("demo", standalone)
+        with pytest.raises(AgentError) as padded:
+            teacher.send("demo ", standalone)  # it would be listed beside "demo" as if it were that one
+        assert padded.value.key == "agent_bad_name"
+    finally:
+        teacher.close()
+    replaced = subprocess.run(AgentProcess.robot_command(agent, "send", programs["forever_path"], "--name", "demo"),
+                              capture_output=True, text=True, timeout=120, cwd=REPO)
+    assert replaced.returncode == 0, replaced.stderr
+    assert "it replaces the 'demo' that teacher's window (" in replaced.stdout
+    lister = AgentClient("127.0.0.1", agent.port)
+    try:
+        assert [entry["name"] for entry in lister.programs()["programs"]] == ["demo"]
+    finally:
+        lister.close()

@@ -23,7 +23,9 @@ An agent that does not answer within ``timeout`` ends the call with ``AgentError
 this process's ROS 2 helper; else on ROS 1 ``master``, this process's one ROS 1 node), or ``auto``: ROS when that
 graph is given (or this process already has its ROS 1 node or ROS 2 helper) and an agent is in it, TCP otherwise.
 """
+import getpass
 import itertools
+import socket
 import threading
 import time
 
@@ -96,7 +98,8 @@ class AgentClient:
         self._heart = threading.Thread(target=self._beat, daemon=True, name="agent-heartbeat")
         self._heart.start()
         try:
-            self.hello = self.request("hello", rockly=__version__, format=FORMAT, language=language, client=name)
+            self.hello = self.request("hello", rockly=__version__, format=FORMAT, language=language,
+                                      client=f"{name} ({_who()})")
         except AgentError:
             self.on_event = self.on_closed = None  # nobody was told of a client that never was
             self.close()  # an agent that never answers (or refuses) keeps no socket or thread of this client
@@ -231,3 +234,13 @@ class AgentClient:
             done.set()
         if self.on_closed is not None:
             self.on_closed()
+
+
+def _who() -> str:
+    """``user@computer`` of this client, what the agent says of whoever sent a program (said, not proven)."""
+    try:
+        user = getpass.getuser()
+    except (KeyError, OSError):  # a user id without a name (a container)
+        user = "?"
+    return f"{user}@{socket.gethostname()}"
+

@@ -299,8 +299,12 @@ def _act(client, args, language, standalone_of, done) -> int:
     if action == "send":
         standalone, source = standalone_of(args.program)
         name = args.name or args.program.stem
-        client.send(name, standalone, source, "keep_going" if args.keep_going else "stop", args.decide_seconds)
+        about = client.send(name, standalone, source, "keep_going" if args.keep_going else "stop", args.decide_seconds)
         print(app_text("robot_sent", language, name=name))
+        replaced = about.get("replaced")
+        if replaced:
+            print(app_text("robot_replaced", language, name=name, sender=replaced.get("sender", "?"),
+                           received=replaced.get("received", "?")))
         return 0
     if action == "start":
         client.start(args.name, args.answer)

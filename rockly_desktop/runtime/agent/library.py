@@ -114,15 +114,20 @@ class Library:
                  "rockly": program.get("rockly"), "source": program.get("source"),
                  "on_lost_editor": on_lost_editor, "decide_seconds": float(decide_seconds),
                  "has_source": source_text is not None}
-        return {"about": about, STANDALONE: standalone_text, SOURCE: source_text,
-                ABOUT: json.dumps(about, indent=1, ensure_ascii=False) + "\n"}
+        return {"about": about, STANDALONE: standalone_text, SOURCE: source_text}
 
-    def store(self, checked: dict) -> dict:
-        """Keep a program ``check`` gave (replacing one of the same name), within the library's quota; returns its
-        ``about.json``."""
-        about = checked["about"]
+    def store(self, checked: dict, sender: str = "?") -> dict:
+        """Keep a program ``check`` gave (replacing one of the same name: its ``about.json`` then says whose it
+        replaced and when, ``replaced``), within the library's quota; returns its ``about.json``."""
+        about = dict(checked["about"], sender=str(sender)[:80])
         folder = self._folder_of(about["name"])
-        texts = {file_name: checked[file_name] for file_name in (STANDALONE, SOURCE, ABOUT)}
+        try:
+            previous = self.about(about["name"])
+            about["replaced"] = {"sender": previous.get("sender", "?"), "received": previous.get("received")}
+        except AgentRefusal:
+            pass
+        texts = {file_name: checked[file_name] for file_name in (STANDALONE, SOURCE)}
+        texts[ABOUT] = json.dumps(about, indent=1, ensure_ascii=False) + "\n"
         incoming = sum(len(text.encode("utf-8", "surrogatepass")) for text in texts.values() if text is not None)
         if self._bytes_kept(besides=folder) + incoming > self.quota_bytes:
             raise AgentRefusal("agent_library_full", name=about["name"], megabytes=self.quota_bytes // 2**20)
@@ -183,7 +188,8 @@ class Library:
                 shutil.rmtree(incoming, ignore_errors=True)
 
     def _folder_of(self, name) -> Path:
-        if not isinstance(name, str) or not NAME.match(name) or name.strip(". ") != name.strip() or ".." in name:
+        if (not isinstance(name, str) or not NAME.match(name) or name != name.strip() or name.strip(". ") != name
+                or ".." in name):  # "demo " beside "demo" would look like one program and be two
             raise AgentRefusal("agent_bad_name", name=str(name)[:80])
         return self.folder / name
 

@@ -78,7 +78,7 @@ class Agent:
         with self._lock:
             if self.run is not None and self.run.about["name"] == name:
                 raise AgentRefusal("agent_program_running", name=name)
-            about = self.library.store(checked)
+            about = self.library.store(checked, client.name)
         self._changed()
         return {"program": about}
 
