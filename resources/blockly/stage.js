@@ -3,30 +3,40 @@
  * editor. There the toolbox's flyout and the zoom controls never cover the blocks a child is using:
  * - the zoom buttons and the trashcan are put away (the wheel still zooms, and a block dropped on
  *   the toolbox is deleted), and where they were is no place a dropped block disappears into;
- * - the flyout's blocks are drawn at the workspace's scale in every category, as off stage: a wide
- *   block makes its flyout wider, never its text smaller;
- * - while the flyout is out, the program moves right of it, and back when it closes; a block being
- *   dragged or taken with the keys out of it (which closes it) stays where it is on screen while the
- *   program comes back.
+ * - the flyout's blocks are drawn at the desk's scale in every category, as off stage: a wide block
+ *   makes its flyout wider, never its text smaller;
+ * - while the flyout is out, the program moves right of it, and back when it closes; while a block
+ *   taken out of it (which closes it) is dragged or moved with the keys, the program stays where it is,
+ *   and both come back together once the block is dropped;
+ * - the program's blocks are drawn larger, for an audience (the desk's zoom comes back when the stage is
+ *   left); the flyouts stay at the desk's scale, for the person at the laptop.
  */
 'use strict';
 
 const RocklyStage = (() => {
   const GAP = 16;                 // px between the flyout's edge and the program
+  const STAGE_SCALE = 1.25;       // the workspace's scale on stage: text read from a few metres (the desk's is 0.8)
   let workspace = null;
   let on = false;
   let shifted = 0;                // px the program was moved right for the flyout
   let homeLeft = null;            // the program's left edge (page px) before that
+  let deskScale = null;           // the workspace's scale before the stage
 
   function install(ws) {
     workspace = ws;
+    const flyout = ws.getFlyout();
+    if (flyout) {  // the flyout stays at the desk's size on stage: it is read by the person at the laptop
+      const ownScale = flyout.getFlyoutScale.bind(flyout);
+      flyout.getFlyoutScale = () => (on && deskScale !== null ? Math.min(ownScale(), deskScale) : ownScale());
+    }
     for (const control of [ws.trashcan, ws.zoomControls_]) {
       if (!control || !control.getClientRect) continue;
       const ownRect = control.getClientRect.bind(control);
       control.getClientRect = () => (on ? null : ownRect());
     }
     ws.addChangeListener((event) => {
-      if (on && event.type === Blockly.Events.TOOLBOX_ITEM_SELECT) requestAnimationFrame(followFlyout);
+      const moved = event.type === Blockly.Events.BLOCK_DRAG && !event.isStart;
+      if (on && (event.type === Blockly.Events.TOOLBOX_ITEM_SELECT || moved)) requestAnimationFrame(followFlyout);
     });
     addEventListener('resize', () => on && requestAnimationFrame(followFlyout));  // the stage settling, a window resized
   }
@@ -54,6 +64,9 @@ const RocklyStage = (() => {
     const out = Boolean(flyout && flyout.isVisible());
     const left = programLeft();
     if (!out) {
+      // A block taken out of the flyout (which closes it) is being moved: the program stays where the person
+      // sees it until the block is dropped, then both come back together (BLOCK_DRAG's end calls again).
+      if (workspace.isDragging()) return;
       // Back where it was: Blockly may have scrolled meanwhile (a block taken with the keys is
       // scrolled into sight as the flyout closes), and that scroll was only for the flyout's sake.
       if (shifted) moveProgram(homeLeft !== null && left !== null ? homeLeft - left : -shifted);
@@ -72,36 +85,32 @@ const RocklyStage = (() => {
     if (!dx) return;
     workspace.scroll(workspace.scrollX + dx, workspace.scrollY);
     shifted += dx;
-    keepDraggedInPlace(dx);
   }
 
-  /** After a scroll by ``dx`` px during a drag or a keyboard move (taking a block from the flyout
-   * closes it): the block where it was on screen, under the pointer, in sight. Blockly puts a dragged
-   * block at the drag's start plus the way moved since, in workspace units, so the scroll is taken off
-   * that start; neither its gesture nor its keyboard mover has public API for it. A block the keys
-   * show at a connection stays at that connection. */
-  function keepDraggedInPlace(dx) {
-    const mover = Blockly.KeyboardMover.mover;
-    const keyboard = mover.isMoving();
-    const dragger = keyboard ? mover.dragger : workspace.currentGesture_ && workspace.currentGesture_.dragger;
-    if (!dragger || !dragger.startLoc || !workspace.isDragging()) return;
-    const strategy = dragger.draggable.dragStrategy;
-    if (keyboard && strategy && strategy.connectionCandidate) return;
-    const back = -dx / workspace.scale;
-    const {Coordinate} = Blockly.utils;
-    const shift = (at) => new Coordinate(at.x + back, at.y);
-    dragger.startLoc = shift(dragger.startLoc);
-    if (keyboard) mover.startLocation = shift(mover.startLocation);
-    dragger.draggable.drag(shift(dragger.draggable.getRelativeToSurfaceXY()));
+  /** Zoom to ``scale`` around the view's top left corner (right of the toolbox), where a program starts (Blockly's
+   * setScale zooms around the centre, and the program's start went out of sight). */
+  function scaleTo(scale) {
+    const speed = workspace.options.zoomOptions.scaleSpeed;
+    const corner = workspace.getMetricsManager().getAbsoluteMetrics();  // right of the toolbox
+    workspace.zoom(corner.left, corner.top, Math.log(scale / workspace.scale) / Math.log(speed));
   }
 
   /** Go on stage or leave it. */
   function set(active) {
     if (active === on) return;
     if (!active) moveProgram(-shifted);
+    if (active) {
+      deskScale = workspace.scale;
+      if (deskScale < STAGE_SCALE) scaleTo(STAGE_SCALE);
+    } else if (deskScale !== null) {
+      scaleTo(deskScale);
+      deskScale = null;
+    }
     on = active;
     document.body.classList.toggle('rocklyStage', on);
+    const flyout = workspace.getFlyout();
+    if (flyout && flyout.isVisible()) flyout.reflow();
   }
 
-  return {install, set, active: () => on, MetricsManager: StageMetrics};
+  return {install, set, active: () => on, deskScale: () => deskScale, MetricsManager: StageMetrics};
 })();

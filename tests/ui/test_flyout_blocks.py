@@ -97,12 +97,13 @@ FLYOUT_SIZES = """(() => { const ws = Blockly.getMainWorkspace(); const toolbox 
                 text: Math.min(...heights(ws.getFlyout().getWorkspace()))});
   }
   toolbox.clearSelection();
-  return {scale: ws.scale, text: Math.min(...heights(ws)), flyouts: sizes}; })()"""
+  const desk = (RocklyStage.active() && RocklyStage.deskScale()) || ws.scale;  // on stage the program is drawn larger
+  return {scale: desk, text: Math.min(...heights(ws)) * desk / ws.scale, flyouts: sizes}; })()"""
 
 
 @pytest.mark.parametrize("stage", [False, True], ids=["normal", "stage"])
 @pytest.mark.parametrize("profile", ["hobbit", "turtlebot"])
-def test_every_flyout_draws_its_blocks_at_the_workspaces_scale(qtbot, driver, profile, stage):
+def test_every_flyout_draws_its_blocks_at_the_desks_scale(qtbot, driver, profile, stage):
     window = editor_with_program(qtbot, driver, stage)
     if profile != window.profile.id:
         window.document.modified = False

@@ -186,3 +186,19 @@ def test_leaving_the_stage_on_a_maximised_window_keeps_it_maximised_and_gives_th
     window.stage.set_active(False)
     assert window.isMaximized()
     qtbot.waitUntil(lambda: simulator_size(window) == simulator_before, timeout=3000)
+
+
+def workspace_scale(qtbot, window) -> float:
+    return run_js(qtbot, window.editor, "Blockly.getMainWorkspace().scale")
+
+
+def test_on_stage_the_blocks_are_drawn_larger_and_back_at_desk_size_after_the_start_in_view(qtbot, driver):
+    window = driver.open_window(str(examples_dir() / "hobbit" / "drive-a-square.rockly"))
+    laid_out(qtbot, window, 1920, 1080)
+    desk = workspace_scale(qtbot, window)
+    window.stage.set_active(True)
+    qtbot.waitUntil(lambda: workspace_scale(qtbot, window) >= desk * 1.4, timeout=3000)
+    qtbot.waitUntil(lambda: _start_in_view(qtbot, window), timeout=3000)
+    window.stage.set_active(False)
+    qtbot.waitUntil(lambda: abs(workspace_scale(qtbot, window) - desk) < 1e-6, timeout=3000)
+    qtbot.waitUntil(lambda: _start_in_view(qtbot, window), timeout=3000)

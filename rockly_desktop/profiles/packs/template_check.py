@@ -56,75 +56,81 @@ def check_template(code: str, slots: dict = None, handlers: dict = None) -> None
     """Raise TemplateRefused when the template ``code`` (a block's ``python: code:``, with its
     ``slots`` and ``handlers`` as ``BlockSpec`` holds them) does more than call Rockly's commands."""
     filled = _filled(code, slots or {}, handlers or {})
+    source = filled if "\n" in filled.strip() else filled.strip()
     try:
-        tree = ast.parse(filled if "\n" in filled.strip() else filled.strip())
+        tree = ast.parse(source)
     except SyntaxError as error:
         raise TemplateRefused(error.lineno or 1, f"this is not Python ({error.msg})") from None
+    checker = _Checker(source)
     for statement in tree.body:
-        _check_statement(statement)
+        checker.statement(statement)
 
 
-def _check_statement(node) -> None:
-    if isinstance(node, ast.Pass):
-        return
-    if isinstance(node, ast.Expr):
-        _check_expression(node.value)
-        return
-    if isinstance(node, ast.While) and not node.orelse:
-        _check_expression(node.test)
-        for statement in node.body:
-            _check_statement(statement)
-        return
-    raise TemplateRefused(node.lineno, f"a block pack may only call robot.… and ros.… commands, not "
-                                       f"'{_source_word(node)}'")
+class _Checker:
+    """Walks a filled template's tree; ``source`` names what it refuses."""
 
+    def __init__(self, source: str):
+        self.source = source
 
-def _check_expression(node) -> None:
-    if isinstance(node, _LITERAL_NODES):
-        return
-    if isinstance(node, ast.Name):
-        if node.id.startswith(_SLOT_PREFIX):
+    def statement(self, node) -> None:
+        if isinstance(node, ast.Pass):
             return
-        raise TemplateRefused(node.lineno, f"'{node.id}' is no input of the block, no literal and no command")
-    if isinstance(node, ast.Call):
-        _check_call(node)
-        return
-    if isinstance(node, _CONTAINERS):
-        children = node.elts
-    elif isinstance(node, ast.Dict):
-        if any(key is None for key in node.keys):
-            raise TemplateRefused(node.lineno, "'**' is not allowed in a block pack")
-        children = [*node.keys, *node.values]
-    elif isinstance(node, ast.UnaryOp) and isinstance(node.op, _UNARY):
-        children = [node.operand]
-    elif isinstance(node, ast.BoolOp):
-        children = node.values
-    elif isinstance(node, ast.Compare):
-        children = [node.left, *node.comparators]
-    else:
-        raise TemplateRefused(node.lineno, f"a block pack may only pass values to robot.… and ros.… commands, "
-                                           f"not '{_source_word(node)}'")
-    for child in children:
-        _check_expression(child)
-
-
-def _check_call(node: ast.Call) -> None:
-    function = node.func
-    if not (isinstance(function, ast.Attribute) and isinstance(function.value, ast.Name)
-            and function.value.id in COMMAND_OBJECTS and _PUBLIC.fullmatch(function.attr)):
+        if isinstance(node, ast.Expr):
+            self.expression(node.value)
+            return
+        if isinstance(node, ast.While) and not node.orelse:
+            self.expression(node.test)
+            for statement in node.body:
+                self.statement(statement)
+            return
         raise TemplateRefused(node.lineno, f"a block pack may only call robot.… and ros.… commands, not "
-                                           f"'{ast.unparse(function)}'")
-    for argument in node.args:
-        if isinstance(argument, ast.Starred):
-            raise TemplateRefused(node.lineno, "'*' is not allowed in a block pack")
-        _check_expression(argument)
-    for keyword in node.keywords:
-        if keyword.arg is None:
-            raise TemplateRefused(node.lineno, "'**' is not allowed in a block pack")
-        _check_expression(keyword.value)
+                                           f"'{self.words(node)}'")
 
+    def expression(self, node) -> None:
+        if isinstance(node, _LITERAL_NODES):
+            return
+        if isinstance(node, ast.Name):
+            if node.id.startswith(_SLOT_PREFIX):
+                return
+            raise TemplateRefused(node.lineno, f"'{node.id}' is no input of the block, no literal and no command")
+        if isinstance(node, ast.Call):
+            self.call(node)
+            return
+        if isinstance(node, _CONTAINERS):
+            children = node.elts
+        elif isinstance(node, ast.Dict):
+            if any(key is None for key in node.keys):
+                raise TemplateRefused(node.lineno, "'**' is not allowed in a block pack")
+            children = [*node.keys, *node.values]
+        elif isinstance(node, ast.UnaryOp) and isinstance(node.op, _UNARY):
+            children = [node.operand]
+        elif isinstance(node, ast.BoolOp):
+            children = node.values
+        elif isinstance(node, ast.Compare):
+            children = [node.left, *node.comparators]
+        else:
+            raise TemplateRefused(node.lineno, f"a block pack may only pass values to robot.… and ros.… commands, "
+                                               f"not '{self.words(node)}'")
+        for child in children:
+            self.expression(child)
 
-def _source_word(node) -> str:
-    """A short name of what ``node`` is, for the message (its source, cut to one line)."""
-    text = ast.unparse(node).splitlines()[0]
-    return text if len(text) <= 60 else text[:57] + "..."
+    def call(self, node: ast.Call) -> None:
+        function = node.func
+        if not (isinstance(function, ast.Attribute) and isinstance(function.value, ast.Name)
+                and function.value.id in COMMAND_OBJECTS and _PUBLIC.fullmatch(function.attr)):
+            raise TemplateRefused(node.lineno, f"a block pack may only call robot.… and ros.… commands, not "
+                                               f"'{self.words(function)}'")
+        for argument in node.args:
+            if isinstance(argument, ast.Starred):
+                raise TemplateRefused(node.lineno, "'*' is not allowed in a block pack")
+            self.expression(argument)
+        for keyword in node.keywords:
+            if keyword.arg is None:
+                raise TemplateRefused(node.lineno, "'**' is not allowed in a block pack")
+            self.expression(keyword.value)
+
+    def words(self, node) -> str:
+        """What ``node`` says in the template, on one line and cut short (the runtime runs on Python 3.8: no
+        ``ast.unparse``)."""
+        text = (ast.get_source_segment(self.source, node) or type(node).__name__).splitlines()[0]
+        return text if len(text) <= 60 else text[:57] + "..."
