@@ -146,7 +146,12 @@ class AttachedClient:
         return [line for line in list(self.lines) if wanted(line)]
 
     def wait_for(self, wanted, timeout=60) -> dict:
-        eventually(lambda: self.seen(wanted), timeout)
+        try:
+            eventually(lambda: self.seen(wanted) or not self._reader.is_alive(), timeout)  # or all it said was read
+            assert self.seen(wanted)
+        except AssertionError:
+            raise AssertionError(f"not seen (waited up to {timeout} s); exit status {self.process.poll()}; "
+                                 f"lines: {self.lines}") from None
         return self.seen(wanted)[0]
 
     def end(self):

@@ -145,13 +145,14 @@ def test_a_lost_editor_over_ros_lets_a_keep_going_program_finish(robot, agent):
     watcher = started(master, programs, "short", "--keep-going", "--decide-seconds", "0.5")
     editor = attached(master)
     try:
-        assert editor.first["controller"] is True and editor.first["run"]["state"] != "ended"
+        run = editor.first["run"]
+        assert editor.first["controller"] is True and run is not None and run["state"] != "ended", watcher.lines
         editor.process.kill()
         end = watcher.wait_for(ended, 120)
     finally:
         editor.end()
         watcher.end()
-    assert end["status"] == 0 and end["stopped_for_lost_editor"] is False
+    assert end["status"] == 0 and end["stopped_for_lost_editor"] is False, watcher.lines
     assert watcher.seen(lambda line: line.get("id") == "back")  # it went on past the time to decide
     assert watcher.seen(lambda line: line.get("event") == "finished")[0]["outcome"] == "finished"
 
