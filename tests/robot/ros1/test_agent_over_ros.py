@@ -12,6 +12,7 @@ from agent_tools import (
     REPO,
     AttachedClient,
     hobbit_on_ros_with_wire,
+    put_back_on_own_master,
     ros1_agent,
     seconds_until_ended_while_frozen,
     sent_started_and_watched,
@@ -47,6 +48,9 @@ def robot(tmp_path_factory):
 
 @pytest.fixture
 def agent(robot, tmp_path):
+    """The agent, on a simulator put back where it started: the drives of the tests before (whose number and length
+    depend on their order and the machine's load) would otherwise have taken HOBBIT into a wall."""
+    put_back_on_own_master(robot[0])
     with ros1_agent(tmp_path / "library", robot[0]) as agent:
         yield agent
 
