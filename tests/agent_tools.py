@@ -82,6 +82,22 @@ def hobbit_on_ros_with_wire(folder: Path):
         master.stop()
 
 
+PUT_BACK = """
+import sys
+sys.path.insert(0, "tests")
+from ros_helpers import put_back_simulator
+put_back_simulator(sys.argv[1])
+"""
+
+
+def put_back_on_own_master(master):
+    """Put the simulator on ``master`` (a RosMaster of a test's own) back where it started, from a process of its own:
+    this process's one ROS node may be on another master."""
+    done = subprocess.run([sys.executable, "-c", PUT_BACK, master.uri], cwd=REPO, capture_output=True, text=True,
+                          timeout=120, env=ros_environment(master.uri, master.home))
+    assert done.returncode == 0, done.stderr
+
+
 @contextmanager
 def ros1_agent(library: Path, master):
     """``rockly agent --backend ros1`` on ``master`` (tests' RosMaster), its programs in ``library``; stopped after."""
@@ -146,7 +162,12 @@ class AttachedClient:
         return [line for line in list(self.lines) if wanted(line)]
 
     def wait_for(self, wanted, timeout=60) -> dict:
-        eventually(lambda: self.seen(wanted), timeout)
+        try:
+            eventually(lambda: self.seen(wanted) or not self._reader.is_alive(), timeout)  # or all it said was read
+            assert self.seen(wanted)
+        except AssertionError:
+            raise AssertionError(f"not seen (waited up to {timeout} s); exit status {self.process.poll()}; "
+                                 f"lines: {self.lines}") from None
         return self.seen(wanted)[0]
 
     def end(self):

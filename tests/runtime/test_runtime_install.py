@@ -96,7 +96,7 @@ def test_the_fresh_venv_has_no_qt_and_the_runtime_imports(fresh_venv):
                             "import rockly_desktop.robot.sim.link\n"
                             "assert not [name for name in sys.modules if name.startswith(('PySide6', 'shiboken6'))]\n"
                             "print(rockly_desktop.runtime.standalone.__file__)"],
-                           capture_output=True, text=True, timeout=120, cwd="/")
+                           capture_output=True, text=True, timeout=120, cwd="/", env=environment(PYTHONPATH=""))
     assert check.returncode == 0, check.stderr
     assert "/venv/lib/" in check.stdout  # the installed copy, not the checkout
 

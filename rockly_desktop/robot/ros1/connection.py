@@ -3,9 +3,11 @@
 rospy allows ``init_node`` once per process, so the node is started on first use with
 the master chosen then (``ROS_MASTER_URI``, ``ROS_IP``/``ROS_HOSTNAME`` are read at that
 moment). A watchdog asks the master for its pid twice a second; waits in the backend
-fail within ~2 s of the master vanishing; when it is back (or another master answers
-there, even between two looks), the node registers its endpoints with it again and the
-status returns to connected.
+fail within ~2 s of the master vanishing (nothing listens at its address any more), or
+once it has not answered for SILENT_SECONDS (a hung master, a cut network): a master that
+only answers late, as on a loaded computer, is not lost. When it is back (or another
+master answers there, even between two looks), the node registers its endpoints with it
+again and the status returns to connected.
 """
 import logging
 import os
@@ -22,6 +24,7 @@ log = logging.getLogger(__name__)
 CONNECTED, CONNECTING, LOST = "connected", "connecting", "lost"
 WATCH_SECONDS = 0.5
 PROBE_TIMEOUT = 1.0
+SILENT_SECONDS = 10.0  # a master or robot node that answers no look for this long is lost (a late one is not)
 NODE_NAME = "rockly"
 
 
@@ -47,10 +50,13 @@ def ask_master(master_uri: str, method: str, *args):
 
 
 def master_pid(master_uri: str) -> tuple:
-    """The master's pid and the round-trip time of asking it (seconds), or (None, None) when it does not answer."""
+    """The master's pid and the round-trip time of asking it (seconds); ``(None, seconds waited)`` when it did not
+    answer within PROBE_TIMEOUT (late: it may be busy), ``(None, None)`` when it refused or failed."""
     started = time.monotonic()
     try:
         pid = ask_master(master_uri, "getPid")
+    except TimeoutError:
+        return None, time.monotonic() - started
     except (OSError, xmlrpc.client.Error):
         return None, None
     return pid, time.monotonic() - started
@@ -58,7 +64,8 @@ def master_pid(master_uri: str) -> tuple:
 
 def master_answers(master_uri: str) -> float:
     """The master's round-trip time in seconds, or None when it does not answer."""
-    return master_pid(master_uri)[1]
+    pid, round_trip = master_pid(master_uri)
+    return None if pid is None else round_trip
 
 
 def address_problem(environment):
@@ -104,6 +111,7 @@ class RosConnection:
         self.round_trip = None
         self.address_problem = None  # (kind, address) when the robot could not reach this computer
         self._master_pid = None
+        self._answered_at = None  # when the master last answered a look
         self._stopped = threading.Event()
         self._watchdog = None
 
@@ -144,7 +152,8 @@ class RosConnection:
         deadline = time.monotonic() + timeout
         while True:
             self._master_pid, self.round_trip = master_pid(self.master_uri)
-            if self.round_trip is not None:
+            if self._master_pid is not None:
+                self._answered_at = time.monotonic()
                 return True
             if time.monotonic() >= deadline:
                 return False
@@ -155,8 +164,16 @@ class RosConnection:
             self._look()
 
     def _look(self):
-        """Ask the master once: note whether it answers, and tell a new master of this node."""
-        pid, self.round_trip = master_pid(self.master_uri)
+        """Ask the master once: note whether it answers, and tell a new master of this node. A late answer keeps the
+        status until the master has been silent for SILENT_SECONDS."""
+        pid, waited = master_pid(self.master_uri)
+        now = time.monotonic()
+        if pid is None and waited is not None and self._answered_at is not None \
+                and now - self._answered_at < SILENT_SECONDS:
+            return
+        self.round_trip = None if pid is None else waited
+        if pid is not None:
+            self._answered_at = now
         status = CONNECTED if pid is not None else LOST
         if status != self.status:
             log.warning("ROS master %s: %s", self.master_uri, status)

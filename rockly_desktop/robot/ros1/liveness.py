@@ -6,14 +6,16 @@ A waiting command depends on the topics it listens to (an action's status, the o
 drive watches): twice a second the publishers the master lists for them are asked for
 their pid. A killed node does not answer (the master keeps listing a node killed with
 ``kill -9``, so the list alone would not tell), and a topic whose publishers all stopped
-answering ends the wait with RobotConnectionLost naming it. A new publisher waits only for
-the subscribers that answer, so the safe stop after a lost node does not wait for the dead.
+answering ends the wait with RobotConnectionLost naming it. A node that only answers late
+(a loaded computer) still counts as answering until it has been silent for SILENT_SECONDS.
+A new publisher waits only for the subscribers that answer, so the safe stop after a lost
+node does not wait for the dead.
 """
 import threading
 import time
 import xmlrpc.client
 
-from rockly_desktop.robot.ros1.connection import ask_master
+from rockly_desktop.robot.ros1.connection import SILENT_SECONDS, ask_master
 
 LOOK_SECONDS = 0.5
 
@@ -29,7 +31,7 @@ class NodeLiveness:
         self._lock = threading.Lock()
         self._nodes = ({}, {})  # publishers, subscribers: topic -> [node names]
         self._state_at = -LOOK_SECONDS
-        self._alive = {}  # node name -> (when looked, answers)
+        self._alive = {}  # node name -> (when looked, answers, when it last answered or was first looked at)
 
     def publishers(self, topic: str):
         """(listed, answering) publishers of ``topic``, this node left out; None when the master does not answer."""
@@ -55,14 +57,16 @@ class NodeLiveness:
             return len(nodes), sum(1 for node in nodes if node == self._own_node or self._answers(node, now))
 
     def _answers(self, node: str, now: float) -> bool:
-        looked_at, answers = self._alive.get(node, (-LOOK_SECONDS, False))
+        looked_at, answers, heard_at = self._alive.get(node, (-LOOK_SECONDS, False, now))
         if now - looked_at >= LOOK_SECONDS:
             try:
                 self._ask(self._ask(self._master_uri, "lookupNode", node), "getPid")
-                answers = True
+                answers, heard_at = True, now
+            except TimeoutError:  # late (the node or the master is busy), not gone
+                answers = now - heard_at < SILENT_SECONDS
             except (OSError, xmlrpc.client.Error):
                 answers = False
-            self._alive[node] = (now, answers)
+            self._alive[node] = (now, answers, heard_at)
         return answers
 
 
