@@ -83,6 +83,7 @@ class TcpLine:
 # SEND_SECONDS (a laptop gone to sleep, a cut network: TCP closes nothing) or when it falls OUTBOX_BYTES behind.
 SEND_SECONDS = 2.0
 OUTBOX_BYTES = 16 * 1024 * 1024
+LINGER_SECONDS = 2.0  # for a refused client to take its refusal (and stop sending) before its connection closes
 
 
 class _Client:
@@ -96,6 +97,7 @@ class _Client:
         self.wants_control = False
         self._outbox = collections.deque()
         self._outbox_bytes = 0
+        self._sending = False
         self._changed = threading.Condition()
         self._dropped = False
         whole, part = divmod(SEND_SECONDS, 1)
@@ -119,12 +121,31 @@ class _Client:
 
     deliver = send  # the run's events: each TCP client gets its own copy
 
-    def close(self, flush_seconds: float = 0.0):
-        """The client has gone: its writer ends (what it had not taken within ``flush_seconds`` is dropped)."""
+    def close(self):
+        """The client has gone: its writer ends (what it had not taken is dropped)."""
         with self._changed:
-            self._changed.wait_for(lambda: not self._outbox or self._dropped, flush_seconds)
             self._drop()
         self._writer.join(SEND_SECONDS + 1)
+
+    def refuse(self, message: dict):
+        """Tell the client ``message`` and end the connection so that it is read: sent whole within
+        ``LINGER_SECONDS``, the sending side shut, and what the client still sends read and dropped until it
+        closes (or ``LINGER_SECONDS``), since a close with unread bytes resets the connection and the client
+        would lose the message."""
+        self.send(message)
+        until = time.monotonic() + LINGER_SECONDS
+        with self._changed:
+            self._changed.wait_for(lambda: (not self._outbox and not self._sending) or self._dropped, LINGER_SECONDS)
+        try:
+            self.connection.shutdown(socket.SHUT_WR)
+            poll = select.poll()
+            poll.register(self.connection, select.POLLIN)
+            while (left := until - time.monotonic()) > 0 and poll.poll(left * 1000):
+                if not self.connection.recv(1 << 16):
+                    break
+        except OSError:
+            pass
+        self.close()
 
     def _write(self):
         while True:
@@ -135,13 +156,16 @@ class _Client:
                     return
                 data = self._outbox.popleft()
                 self._outbox_bytes -= len(data)
-                self._changed.notify_all()  # a close waiting for the outbox to empty
+                self._sending = True
             try:
                 self.connection.sendall(data)
             except OSError:  # closed, or SEND_SECONDS without taking a byte: a line cut mid-message is no line
                 with self._changed:
                     self._drop()
                 return
+            with self._changed:
+                self._sending = False
+                self._changed.notify_all()  # a refusal waiting to be sent whole
 
     def _drop(self):
         """(with ``_changed`` held) Stop sending and shut the connection, which ends its reader and so its place
@@ -229,16 +253,15 @@ def serve_connection(agent, connection):
     client = _Client(connection)
     agent.join(client)
     lines = LineReader(connection)
-    flush_seconds = 0.0
+    refusal = None
     try:
         while True:
             try:
                 line = lines.next_line()
             except LineRefused as refused:
-                client.send({"reply": None, "ok": False, "error": refused.key,
-                             "message": refusal_text(AgentRefusal(refused.key, megabytes=MAX_LINE_BYTES // 2**20),
-                                                     client.language)})
-                flush_seconds = 1.0  # the refusal goes out before the connection closes
+                refusal = {"reply": None, "ok": False, "error": refused.key,
+                           "message": refusal_text(AgentRefusal(refused.key, megabytes=MAX_LINE_BYTES // 2**20),
+                                                   client.language)}
                 break
             if not line:
                 break
@@ -254,7 +277,10 @@ def serve_connection(agent, connection):
         pass
     finally:
         agent.leave(client)
-        client.close(flush_seconds)
+        if refusal is not None:
+            client.refuse(refusal)
+        else:
+            client.close()
 
 
 class AgentServer(socketserver.ThreadingTCPServer):
