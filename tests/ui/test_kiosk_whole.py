@@ -66,7 +66,7 @@ def test_file_new_in_the_kiosk_asks_nothing_and_keeps_the_visitors_program(qtbot
     asked = []
 
     def refuse_questions():  # a question (Save "Untitled"?) would wait in its own event loop
-        question = QApplication.activeModalWidget()
+        question = window.active_dialog()  # the window's own, modal to it and not to Qt (decision 032)
         if question is not None:
             asked.append(question.windowTitle())
             question.reject()
