@@ -4,10 +4,8 @@ the entry says, with no other change anywhere."""
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDockWidget, QPlainTextEdit
 
-from rockly_desktop.app import build_main_window, start_kiosk
-from rockly_desktop.settings.app_settings import AppSettings
 from rockly_desktop.ui.docks import registry
-from rockly_desktop.ui.docks.registry import DockSpec, InKiosk, OnStage
+from rockly_desktop.ui.docks.registry import DockSpec, OnStage
 
 
 def _notes_dock(_language, parent):
@@ -44,23 +42,3 @@ def test_a_dock_in_the_table_is_built_listed_renamed_and_closed_on_stage(qtbot, 
     qtbot.waitUntil(lambda: window.language == "de", timeout=15000)
     assert notes.windowTitle() == "Diagramm"
     assert notes.toggleViewAction() in view_menu(window)              # the View menu made anew lists it too
-
-
-def test_the_kiosk_shows_a_dock_again_for_the_next_visitor_when_its_entry_says(qtbot, driver, monkeypatch, tmp_path):
-    _add_notes_dock(monkeypatch, in_kiosk=InKiosk.SHOWN)
-    settings = AppSettings(driver.settings_path)
-    settings.kiosk.programs_folder, settings.kiosk.visitors_folder = tmp_path / "kiosk", tmp_path / "visitors"
-    settings.kiosk.quit_chord = "Ctrl+Alt+Shift+K"
-    settings.sync()
-    window = build_main_window(driver.settings_path, kiosk=True)
-    driver.windows.append(window)
-    kiosk = start_kiosk(window)
-    with qtbot.waitSignal(window.editor.sig_ready, timeout=30000):
-        window.start()
-    notes = window.docks["notes_dock"]
-    assert not notes.isVisible()                                     # on stage, as every dock but the big ones
-    kiosk.idle.sig_idle.emit()                                       # nobody touched it for minutes
-    qtbot.waitUntil(lambda: "Welcome" in window.statusBar().currentMessage(), timeout=15000)
-    assert notes.isVisible()
-    window.document.modified = False
-    kiosk.leave()
