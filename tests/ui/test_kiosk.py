@@ -125,9 +125,18 @@ def test_the_kiosk_has_blocklys_menus_but_not_the_browsers(qtbot, open_kiosk):
                     == [window.editor.width(), window.editor.height()], timeout=5000)
     page = window.editor.focusProxy() or window.editor
     qtbot.mouseClick(page, Qt.MouseButton.RightButton, pos=QPoint(40, page.height() - 60))   # under the categories
-    qtbot.mouseClick(page, Qt.MouseButton.RightButton, pos=QPoint(page.width() // 2, page.height() // 2))
-    qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "!!document.querySelector('.blocklyContextMenu')"),
-                    timeout=5000)                                     # the workspace's own menu
+    assert not [menu for menu in window.findChildren(QMenu) if menu.isVisible()]    # no Back, Reload, Save page
+    # A right click that lands while the stage's zoom still settles the workspace opens nothing (red once in a
+    # loaded CI run): the person clicks again, and so does the test, until Blockly's menu shows.
+    for _attempt in range(5):
+        qtbot.mouseClick(page, Qt.MouseButton.RightButton, pos=QPoint(page.width() // 2, page.height() // 2))
+        try:
+            qtbot.waitUntil(lambda: run_js(qtbot, window.editor, "!!document.querySelector('.blocklyContextMenu')"),
+                            timeout=2000)                                 # the workspace's own menu
+            break
+        except qtbot.TimeoutError:
+            pass
+    assert run_js(qtbot, window.editor, "!!document.querySelector('.blocklyContextMenu')")
     assert not [menu for menu in window.findChildren(QMenu) if menu.isVisible()]    # no Back, Reload, Save page
 
 
