@@ -47,6 +47,7 @@ class Agent:
         self.breakpoints = []  # the controlling client's: a run started while it is attached pauses there too
         self.clients = []
         self.listeners = []  # called (no arguments) when the library changes or a run starts or ends
+        self.source_checks = None  # agent.source_match's SourceChecks: whether a kept program's code is its blocks'
         self._lock = threading.RLock()
 
     # -- requests
@@ -79,7 +80,9 @@ class Agent:
             if self.run is not None and self.run.about["name"] == name:
                 raise AgentRefusal("agent_program_running", name=name)
             about = self.library.store(checked, client.name)
-        self._changed()
+        if self.source_checks is not None:
+            self.source_checks.check_later(about)
+        self.changed()
         return {"program": about}
 
     def _op_source(self, client, request):
@@ -98,7 +101,7 @@ class Agent:
                 options += ["--answer", answer]
             self.run = ProgramRun(about, path, options, self.publish, self._ended, self.breakpoints)
             self.publish({"event": "run", "state": "started", "program": name})
-            self._changed()
+            self.changed()
             return {"run": self.run.snapshot()}
 
     def _op_stop(self, client, request):
@@ -114,7 +117,7 @@ class Agent:
             if self.run is not None and self.run.about["name"] == name:
                 raise AgentRefusal("agent_program_running", name=name)
             self.library.delete(name)
-        self._changed()
+        self.changed()
         return {}
 
     def _op_attach(self, client, request):
@@ -195,9 +198,10 @@ class Agent:
         with self._lock:
             if self.run is run:
                 self.run = None
-        self._changed()
+        self.changed()
 
-    def _changed(self):
+    def changed(self):
+        """Tell the listeners the library, the run or a program's check changed."""
         for listener in list(self.listeners):
             listener()
 
@@ -245,6 +249,8 @@ class Agent:
         run = self.run
         if run is not None:
             run.end()
+        if self.source_checks is not None:
+            self.source_checks.close()
 
 
 def _block_ids(value) -> list:
