@@ -1,0 +1,137 @@
+"""What a lesson's ``lesson.yaml`` and its goals may hold: one table, read by the validation and the reference.
+
+A field's ``kind`` says what its value must be; ``docs/lessons.md`` holds the reference this module
+writes (``lesson_reference_markdown``), and a test keeps the two the same.
+"""
+import math
+import re
+from dataclasses import dataclass
+
+LEVELS = ("starter", "explorer", "full")
+IDENTIFIER = re.compile(r"^[a-z][a-z0-9_-]{0,63}$")
+
+KIND_EXPECTED = {
+    "text": "a text",
+    "identifier": "an id: lower-case letters, digits, '-' and '_', starting with a letter",
+    "number": "a number",
+    "positive": "a number above 0",
+    "count": "a whole number, 0 or more",
+    "level": "one of " + ", ".join(LEVELS),
+    "pose": "[x, y, heading]: metres on the world's map and degrees (0 faces +x)",
+    "rect": "[x0, y0, x1, y1]: a rectangle on the world's map, in metres, x0 < x1 and y0 < y1",
+    "area": "the name of an area of the lesson (its `areas`)",
+    "thing": "the id of a wall or piece of furniture of the world (its world map)",
+    "goal": "the id of another goal of the lesson",
+    "block": "a block type of the lesson's robot",
+    "texts": "a list of texts",
+    "bool": "true or false",
+    "areas": "a mapping of areas",
+    "goals": "a list of goals",
+}
+
+
+@dataclass(frozen=True)
+class Field:
+    """One field: its name, the kind of value, whether it must be there, what it means; ``choices`` for a choice."""
+
+    name: str
+    kind: str
+    required: bool
+    meaning: str
+    choices: tuple = ()
+
+    @property
+    def expected(self) -> str:
+        """What the value must be, in words."""
+        if self.choices:
+            return "one of " + ", ".join(str(choice) for choice in self.choices)
+        return KIND_EXPECTED[self.kind]
+
+
+LESSON_FIELDS = (
+    Field("id", "identifier", True, "The lesson's id, unique among the lessons (progress is kept by it)."),
+    Field("robot", "identifier", True, "The id of the robot profile the lesson is for."),
+    Field("level", "level", True, "Starter (7–10), Explorer (11–14) or Full: the toolbox level it is written for."),
+    Field("order", "count", False, "Where it comes in the list of its robot and level (default 0)."),
+    Field("world", "identifier", True, "The simulated world it happens in: the id its simulator gives it (WORLD_ID)."),
+    Field("start", "pose", False, "Where the robot starts: [x, y, heading in degrees] (default [0, 0, 0])."),
+    Field("program", "text", False, "A .rockly file in the lesson's folder the child starts from."),
+    Field("time_limit", "positive", False,
+          "Simulated seconds a program may run before the check stops it and says so (default 120)."),
+    Field("answers", "texts", False, "What a person answers on the robot's tablet during the check, in order."),
+    Field("areas", "areas", False,
+          "Named places on the world's map: {NAME: {rect: [x0, y0, x1, y1], name: {en: the kitchen, de: die Küche}}}."),
+    Field("goals", "goals", True, "What the program must make the robot do: a list of goals (below), each a kind."),
+)
+GOAL_COMMON = (
+    Field("kind", "identifier", True, "The goal's kind (the table below)."),
+    Field("id", "identifier", False, "A name other goals (before, within) refer to it by."),
+)
+
+
+def check_value(field: Field, value, names: dict):
+    """None when ``value`` fits ``field``, else what was expected (``names``: kind -> the names that exist)."""
+    kind = field.kind
+    if field.choices:
+        return None if value in field.choices else field.expected
+    if kind in ("text",):
+        return None if isinstance(value, str) and value.strip() else field.expected
+    if kind == "identifier":
+        return None if isinstance(value, str) and IDENTIFIER.match(value) else field.expected
+    if kind == "bool":
+        return None if isinstance(value, bool) else field.expected
+    if kind in ("number", "positive", "count"):
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+            return field.expected
+        if kind == "positive" and value <= 0 or kind == "count" and (value < 0 or int(value) != value):
+            return field.expected
+        return None
+    if kind == "level":
+        return None if value in LEVELS else field.expected
+    if kind in ("pose", "rect"):
+        size = 3 if kind == "pose" else 4
+        if not (isinstance(value, list) and len(value) == size
+                and all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in value)):
+            return field.expected
+        if kind == "rect" and not (value[0] < value[2] and value[1] < value[3]):
+            return field.expected
+        return None
+    if kind == "texts":
+        return None if isinstance(value, list) and all(isinstance(v, str) for v in value) else field.expected
+    if kind in ("area", "thing", "goal", "block"):
+        known = names.get(kind, ())
+        if isinstance(value, str) and value in known:
+            return None
+        shown = ", ".join(sorted(known)[:12]) or "none"
+        return f"{field.expected} (there are: {shown})"
+    raise ValueError(f"unknown field kind {kind!r}")
+
+
+def _cell(text: str) -> str:
+    return text.replace("|", "\\|").replace("<", "&lt;").replace(">", "&gt;")
+
+
+def goal_table(goal_kinds) -> list:
+    """The Markdown rows of a table of ``goal_kinds`` (LessonGoal classes)."""
+    rows = ["| Goal kind | Fields | Meaning |", "| --- | --- | --- |"]
+    for goal in goal_kinds:
+        fields = "; ".join(f"`{field.name}`{'' if field.required else ' (optional)'}: {field.expected}"
+                           for field in goal.fields) or "none"
+        rows.append(f"| `{goal.kind}` | {_cell(fields)} | {_cell(goal.meaning)} |")
+    return rows
+
+
+def lesson_reference_markdown(generic_kinds, profile_kinds: dict) -> str:
+    """The reference of ``lesson.yaml``, the ``generic_kinds`` of goals and each profile's own
+    (``profile_kinds``: {robot name: [LessonGoal classes]}), as Markdown."""
+    rows = ["| Field | Required | Meaning |", "| --- | --- | --- |"]
+    rows += [f"| `{field.name}` | {'yes' if field.required else 'no'} | {_cell(field.meaning)} |"
+             for field in LESSON_FIELDS]
+    rows += ["", "Goals every robot has:", ""] + goal_table(generic_kinds)
+    for robot, kinds in sorted(profile_kinds.items()):
+        rows += ["", f"Goals {robot} adds (its profile's `lesson_goals`):", ""] + goal_table(kinds)
+    return "\n".join(rows) + "\n"
+
+
+REFERENCE_START = "<!-- lesson reference: generated by `rockly lessons reference` -->"
+REFERENCE_END = "<!-- end of the lesson reference -->"
