@@ -16,7 +16,7 @@ from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import BlockEntered, OutputPrinted
 from rockly_desktop.executor.run_setup import make_runner
-from rockly_desktop.lessons.goals import Moment, blocks_of
+from rockly_desktop.lessons.goals import Moment, blocks_of, toolbox_blocks
 from rockly_desktop.lessons.lesson import Lesson, start_heading
 from rockly_desktop.lessons.stepping import BLOCK_SECONDS, SteppedClock, SteppedRobot
 from rockly_desktop.robot.sim.answer_list import AnswerList
@@ -77,17 +77,7 @@ def level_blocks(profile, level: str):
     """The block types the toolbox offers at ``level`` (None: every block, the Full level)."""
     if level == "full" or profile.level(level) is None:
         return None
-    found = set()
-    stack = [profile.toolbox("en", level)]
-    while stack:
-        item = stack.pop()
-        if isinstance(item, dict):
-            if item.get("kind") == "block" and item.get("type"):
-                found.add(item["type"])
-            stack.extend(item.values())
-        elif isinstance(item, list):
-            stack.extend(item)
-    return found
+    return toolbox_blocks(profile, level)
 
 
 class _Observer:

@@ -404,6 +404,27 @@ class AtMostBlocks(ShapeGoal):
         return Verdict(count <= most, app_local_text(key, count=count, most=most))
 
 
+def toolbox_blocks(profile, level: str = None) -> set:
+    """The block types the profile's toolbox offers at ``level`` (None: the whole toolbox), with the
+    numbers and texts its blocks hold (their shadows)."""
+    found = set()
+    stack = [profile.toolbox("en", level)]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, dict):
+            if isinstance(item.get("type"), str) and item.get("kind") in ("block", None):
+                found.add(item["type"])
+            stack.extend(item.values())
+        elif isinstance(item, list):
+            stack.extend(item)
+    return found
+
+
+def known_blocks(profile) -> set:
+    """Every block type a lesson may name for ``profile``: its own and all its toolbox offers."""
+    return set(profile.block_types) | toolbox_blocks(profile)
+
+
 def sensor_blocks(profile) -> set:
     """The block types of the profile's Sensors category (its English name)."""
     found = set()

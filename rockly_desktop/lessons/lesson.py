@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
 
-from rockly_desktop.lessons.goals import GENERIC_GOALS, Area, GoalContext, Words
+from rockly_desktop.lessons.goals import GENERIC_GOALS, Area, GoalContext, Words, known_blocks
 from rockly_desktop.lessons.lesson_file import LessonError, read_located
 from rockly_desktop.lessons.schema import GOAL_COMMON, LESSON_FIELDS, Field, check_value
 from rockly_desktop.lessons.steps import read_steps
@@ -131,7 +131,7 @@ def load_lesson(folder, profiles: dict) -> Lesson:
     kinds = goal_kinds(profile)
     goals = _goals(located, data["goals"], kinds, {
         "area": set(areas), "thing": {obstacle.id for obstacle in (world.obstacles if world else ())},
-        "block": profile.block_types})
+        "block": known_blocks(profile)})
     texts = _texts(folder, profile)
     program = None
     if data.get("program"):
@@ -205,7 +205,8 @@ def _goals(located, data, kinds: dict, names: dict) -> list:
 
 
 def _texts(folder: Path, profile) -> dict:
-    texts = {language: read_steps(folder / text_file(language), profile.block_types) for language in LANGUAGES}
+    blocks = known_blocks(profile)
+    texts = {language: read_steps(folder / text_file(language), blocks) for language in LANGUAGES}
     english = len(texts["en"].steps)
     for language, text in texts.items():
         if len(text.steps) != english:

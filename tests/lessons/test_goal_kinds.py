@@ -217,7 +217,7 @@ def test_follows_wall(tmp_path, profiles):
     assert along.passed
     away = only(check(tmp_path / "b", profiles, ["robot.drive(2.0)"], goals=[goal], robot="turtlebot",
                       start=[0, -0.6, 0]))
-    assert not away.passed and away.words("en").startswith("The TurtleBot followed the wall for only 0.0 m")
+    assert not away.passed and away.words("en").startswith("TurtleBot followed the wall for only 0.0 m")
 
 
 def test_a_block_costs_simulated_time():
