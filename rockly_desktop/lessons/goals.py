@@ -120,7 +120,8 @@ class LessonGoal:
         """Look at the run after a tick."""
 
     def heard(self, topic: str, message: dict, moment: Moment):
-        """Something went over the robot's topics or services (a service as ``{request, response}``)."""
+        """Something went over the robot's topics or services (a service as ``{request, response}``); not
+        the streams its profile names (odometry, laser...), which the snapshots show."""
 
     def printed(self, text: str, moment: Moment):
         """The program printed ``text``."""

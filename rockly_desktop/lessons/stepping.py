@@ -83,6 +83,7 @@ class SteppedRobot(SimulatedRobot):
 
     def __init__(self, profile, tablet=None):
         super().__init__(profile, tablet=tablet, clock=False)
+        self.world.untap(self.state.record)   # no state panel watches a check
         self.clock = None
 
     def use_clock(self, clock: SteppedClock):

@@ -5,6 +5,7 @@ import zipfile
 
 import pytest
 from lesson_tools import check, program, write_lesson
+from profile_copies import REPO
 from program_builder import block, workspace
 
 from rockly_desktop.lessons.archive import export_lessons, import_lessons
@@ -106,3 +107,16 @@ def test_an_unsafe_or_broken_pack_installs_nothing(tmp_path, profiles):
         import_lessons(zipped, profiles, folder=tmp_path / "user")
     assert caught.value.path == f"{zipped}: bad/one/lesson.yaml" and caught.value.line == 2
     assert not (tmp_path / "user" / "bad").exists() and list((tmp_path / "user").iterdir()) == []
+
+
+def test_the_readmes_example_lesson_is_valid_and_its_first_try_passes(tmp_path, profiles):
+    readme = (REPO / "README.md").read_text(encoding="utf-8").split("## Lessons and challenges", 1)[1]
+    yaml_text = readme.split("```yaml\n", 1)[1].split("```", 1)[0]
+    steps = readme.split("```markdown\n", 1)[1].split("```", 1)[0]
+    (tmp_path / "lesson.yaml").write_text(yaml_text, encoding="utf-8")
+    (tmp_path / "lesson.en.md").write_text(steps, encoding="utf-8")
+    (tmp_path / "lesson.de.md").write_text(steps, encoding="utf-8")
+    lesson = load_lesson(tmp_path, profiles)
+    assert check_program(lesson, program("robot.drive(3)")).passed
+    too_far = check_program(lesson, program("robot.drive(3.5)"))
+    assert [goal.passed for goal in too_far.goals] == [True, False]

@@ -33,7 +33,7 @@ def message_copy(value):
     if kind is dict:
         return {key: message_copy(item) for key, item in value.items()}
     if kind is list:
-        if all(type(item) in _SCALARS for item in value):
+        if _SCALARS.issuperset(map(type, value)):
             return value.copy()
         return [message_copy(item) for item in value]
     return copy.deepcopy(value)
@@ -69,18 +69,24 @@ class SimWorld:
         self._taps = []
         self.params = {}  # the parameter server of the simulated robot
 
-    def tap(self, callback):
-        """Also show ``callback(topic, msg_type, message)`` everything that happens in the world.
+    def tap(self, callback, skip=()):
+        """Also show ``callback(topic, msg_type, message)`` everything that happens in the world, but for
+        the topics in ``skip``.
 
         Topics as they are published; a service call as ``<service>`` with its request and
         response; an action goal as ``<action>/goal`` and its end as ``<action>/result``
         (the topics actionlib uses on ROS), so state panels read both the same way.
         """
-        self._taps.append(callback)
+        self._taps.append((callback, frozenset(skip)))
+
+    def untap(self, callback):
+        """Show ``callback`` nothing more."""
+        self._taps = [(tapped, skip) for tapped, skip in self._taps if tapped != callback]
 
     def _show_taps(self, topic, msg_type, message):
-        for callback in list(self._taps):
-            callback(topic, msg_type, message_copy(message))
+        for callback, skip in list(self._taps):
+            if topic not in skip:
+                callback(topic, msg_type, message_copy(message))
 
     # --- topics -----------------------------------------------------------------------
 
