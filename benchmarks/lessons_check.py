@@ -55,7 +55,8 @@ def timed(command) -> tuple:
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--runs", type=int, default=30, help="how many of the programs `rockly run` runs in turn")
+    parser.add_argument("--runs", type=int, default=30,
+                        help="how many of the programs `rockly run` runs in turn (0: the check alone)")
     parser.add_argument("--speed", type=float, default=1.0, help="`rockly run --speed`")
     parser.add_argument("--jobs", type=int, default=0, help="`rockly lessons check --jobs` (0: one per core)")
     args = parser.parse_args()
@@ -74,11 +75,13 @@ def main() -> int:
             return 1
         print(f"rockly lessons check, {len(paths)} programs: {check_wall:.1f} s ({check_wall / len(paths):.2f} s a "
               f"program), {check_cpu / check_wall:.2f} cores busy")
+        runs = min(args.runs, len(paths))
+        if not runs:
+            return 0
         run_wall = 0.0
-        for path in paths[:args.runs]:
+        for path in paths[:runs]:
             wall, _cpu, result = timed(rockly + ["run", str(path), "--speed", str(args.speed)])
             run_wall += wall
-        runs = min(args.runs, len(paths))
         per_run = run_wall / runs
         print(f"rockly run --speed {args.speed:g}, {runs} programs in turn: {run_wall:.1f} s ({per_run:.2f} s a "
               f"program)")

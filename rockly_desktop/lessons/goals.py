@@ -130,6 +130,11 @@ class LessonGoal:
         """The result once the run ended at ``end``."""
         raise NotImplementedError
 
+    @property
+    def label(self):
+        """What a child reads for this goal when another names it: its ``name`` (Words), else its id."""
+        return Words(self.spec["name"]) if self.spec.get("name") else self.id
+
     def met(self, moment: Moment):
         """Note that the goal is met now (the first time counts)."""
         if self.met_at is None:
@@ -296,14 +301,13 @@ class Before(LessonGoal):
 
     def verdict(self, end):
         first, then = (self.context.goals[self.spec[name]] for name in ("first", "then"))
+        names = {"first": first.label, "then": then.label}
         if first.met_at is not None and then.met_at is not None and first.met_order <= then.met_order:
-            return Verdict(True, app_local_text("lesson_before_passed", first=self.spec["first"],
-                                                then=self.spec["then"]))
+            return Verdict(True, app_local_text("lesson_before_passed", **names))
         if first.met_at is None or then.met_at is None:
-            return Verdict(False, app_local_text("lesson_before_missing", first=self.spec["first"],
-                                                 then=self.spec["then"]))
-        return Verdict(False, app_local_text("lesson_before_failed", first=self.spec["first"], then=self.spec["then"],
-                                             time=then.met_at), then.met_at, then.met_moment.block)
+            return Verdict(False, app_local_text("lesson_before_missing", **names))
+        return Verdict(False, app_local_text("lesson_before_failed", time=then.met_at, **names), then.met_at,
+                       then.met_moment.block)
 
 
 class Within(LessonGoal):
@@ -315,11 +319,11 @@ class Within(LessonGoal):
     def verdict(self, end):
         goal, seconds = self.context.goals[self.spec["goal"]], float(self.spec["seconds"])
         if goal.met_at is not None and goal.met_at <= seconds + 1e-9:
-            return Verdict(True, app_local_text("lesson_within_passed", goal=self.spec["goal"], time=goal.met_at,
+            return Verdict(True, app_local_text("lesson_within_passed", goal=goal.label, time=goal.met_at,
                                                 seconds=seconds))
         if goal.met_at is None:
-            return Verdict(False, app_local_text("lesson_within_missing", goal=self.spec["goal"]))
-        return Verdict(False, app_local_text("lesson_within_failed", goal=self.spec["goal"], time=goal.met_at,
+            return Verdict(False, app_local_text("lesson_within_missing", goal=goal.label))
+        return Verdict(False, app_local_text("lesson_within_failed", goal=goal.label, time=goal.met_at,
                                              seconds=seconds), goal.met_at, goal.met_moment.block)
 
 

@@ -25,6 +25,7 @@ KIND_EXPECTED = {
     "block": "a block type of the lesson's robot",
     "texts": "a list of texts",
     "bool": "true or false",
+    "words": "a text in each language: {en: the kitchen, de: die Küche}",
     "areas": "a mapping of areas",
     "goals": "a list of goals",
 }
@@ -66,6 +67,7 @@ LESSON_FIELDS = (
 GOAL_COMMON = (
     Field("kind", "identifier", True, "The goal's kind (the table below)."),
     Field("id", "identifier", False, "A name other goals (before, within) refer to it by."),
+    Field("name", "words", False, "What a child reads for it when another goal names it: {en: .., de: ..}."),
 )
 
 
@@ -96,6 +98,10 @@ def check_value(field: Field, value, names: dict):
         if kind == "rect" and not (value[0] < value[2] and value[1] < value[3]):
             return field.expected
         return None
+    if kind == "words":
+        good = isinstance(value, dict) and isinstance(value.get("en"), str) and all(
+            isinstance(text, str) and text.strip() for text in value.values())
+        return None if good else field.expected
     if kind == "texts":
         return None if isinstance(value, list) and all(isinstance(v, str) for v in value) else field.expected
     if kind in ("area", "thing", "goal", "block"):
@@ -127,6 +133,9 @@ def lesson_reference_markdown(generic_kinds, profile_kinds: dict) -> str:
     rows = ["| Field | Required | Meaning |", "| --- | --- | --- |"]
     rows += [f"| `{field.name}` | {'yes' if field.required else 'no'} | {_cell(field.meaning)} |"
              for field in LESSON_FIELDS]
+    rows += ["", "Every goal has:", "", "| Field | Required | Meaning |", "| --- | --- | --- |"]
+    rows += [f"| `{field.name}` | {'yes' if field.required else 'no'} | {_cell(field.meaning)} |"
+             for field in GOAL_COMMON]
     rows += ["", "Goals every robot has:", ""] + goal_table(generic_kinds)
     for robot, kinds in sorted(profile_kinds.items()):
         rows += ["", f"Goals {robot} adds (its profile's `lesson_goals`):", ""] + goal_table(kinds)
