@@ -16,7 +16,7 @@ from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import BlockEntered, OutputPrinted
 from rockly_desktop.executor.run_setup import make_runner
-from rockly_desktop.lessons.goals import Moment, blocks_of, toolbox_blocks
+from rockly_desktop.lessons.goals import Moment, Words, blocks_of, toolbox_blocks
 from rockly_desktop.lessons.lesson import Lesson, start_heading
 from rockly_desktop.lessons.stepping import BLOCK_SECONDS, SteppedClock, SteppedRobot
 from rockly_desktop.robot.sim.answer_list import AnswerList
@@ -188,18 +188,10 @@ def _beyond_level(lesson, workspace):
     beyond = sorted({block.get("type") for block in blocks_of(workspace)} - allowed - {None})
     if not beyond:
         return None
-    level = lesson.profile.level(lesson.level)
+    name = lesson.profile.level(lesson.level)["name"]
+    level = Words(name if isinstance(name, dict) else {"en": str(name)})
     return GoalResult("level", None, False, app_local_text("lesson_beyond_level", blocks=", ".join(beyond),
-                                                           level=_LevelName(level)))
-
-
-class _LevelName:
-    def __init__(self, level):
-        self.name = level.get("name") if level else {}
-
-    def in_language(self, language):
-        name = self.name
-        return name.get(language) or name.get("en", "") if isinstance(name, dict) else str(name)
+                                                           level=level))
 
 
 def _ending(finished, reached_limit, stuck, lesson, end):
