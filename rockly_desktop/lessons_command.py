@@ -19,7 +19,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-from rockly_desktop.core.app_texts import app_text
+from rockly_desktop.core.app_texts import app_local_text, app_text
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.workspace_blocks import block_types_by_id
 from rockly_desktop.lessons.archive import export_lessons, import_lessons
@@ -117,7 +117,7 @@ def validate(paths, profiles, language) -> int:
                 continue
             folders = lesson_folders(path) if path.is_dir() else []
             if not folders:
-                raise LessonError(path, 0, "expected a lesson folder (with a lesson.yaml), a folder of them or a .zip")
+                raise LessonError(path, 0, app_local_text("lesson_problem_validate_path"))
             for lesson_folder in folders:
                 try:
                     lesson = load_lesson(lesson_folder, profiles)
@@ -138,7 +138,7 @@ def program_paths(arguments) -> list:
         if argument.is_dir():
             inside = sorted(argument.glob(f"*{PROGRAM_SUFFIX}"))
             if not inside:
-                raise LessonError(argument, 0, "expected .rockly programs in the folder")
+                raise LessonError(argument, 0, app_local_text("lesson_problem_no_programs"))
             found += inside
         else:
             found.append(argument)
@@ -151,7 +151,7 @@ def find_lesson(name: str, profiles: dict):
         return load_lesson(name, profiles)
     lesson = LessonLibrary.discover(profiles).get(name)
     if lesson is None:
-        raise LessonError(name, 0, "no such lesson: give a lesson folder or an id that `rockly lessons list` shows")
+        raise LessonError(name, 0, app_local_text("lesson_problem_no_such_lesson", command="rockly lessons list"))
     return lesson
 
 

@@ -13,6 +13,7 @@ import tempfile
 import zipfile
 from pathlib import Path, PurePosixPath
 
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.lessons.lesson import load_lesson
 from rockly_desktop.lessons.lesson_file import LessonError
 from rockly_desktop.lessons.library import lesson_folders, user_lessons_dir
@@ -26,7 +27,7 @@ def export_lessons(folder, output) -> Path:
     ``output``, all or nothing; returns its path. LessonError when the folder holds no lesson."""
     folder, output = Path(folder), Path(output)
     if not lesson_folders(folder):
-        raise LessonError(folder, 0, "expected a folder with lessons (each a folder with a lesson.yaml)")
+        raise LessonError(folder, 0, app_local_text("lesson_problem_no_lessons"))
     output.parent.mkdir(parents=True, exist_ok=True)
     handle, temp_name = tempfile.mkstemp(prefix=f".{output.name}.", suffix=".tmp", dir=output.parent)
     os.close(handle)
@@ -48,22 +49,22 @@ def _pack_entries(path: Path, archive: zipfile.ZipFile):
     """(the pack's top folder, [ZipInfo]) after refusing anything unsafe."""
     infos = archive.infolist()
     if len(infos) > MAX_ENTRIES:
-        raise LessonError(path, 0, f"the zip holds more than {MAX_ENTRIES} entries")
+        raise LessonError(path, 0, app_local_text("lesson_problem_zip_entries", entries=MAX_ENTRIES))
     total, names, tops = 0, set(), set()
     for info in infos:
         pure = PurePosixPath(info.filename)
         if ("\\" in info.filename or pure.is_absolute() or ".." in pure.parts or ":" in info.filename
                 or stat.S_ISLNK(info.external_attr >> 16)):
-            raise LessonError(path, 0, f"the zip holds an unsafe entry: {info.filename}")
+            raise LessonError(path, 0, app_local_text("lesson_problem_zip_unsafe", name=info.filename))
         total += info.file_size
         if total > MAX_BYTES:
-            raise LessonError(path, 0, f"the zip unpacks to more than {MAX_BYTES // 2**20} MB")
+            raise LessonError(path, 0, app_local_text("lesson_problem_zip_size", megabytes=MAX_BYTES // 2**20))
         if pure in names:
-            raise LessonError(path, 0, f"the zip holds {pure} twice")
+            raise LessonError(path, 0, app_local_text("lesson_problem_zip_twice", name=str(pure)))
         names.add(pure)
         tops.add(pure.parts[0])
     if len(tops) != 1:
-        raise LessonError(path, 0, "expected one folder at the top of the zip: the lesson pack")
+        raise LessonError(path, 0, app_local_text("lesson_problem_zip_top"))
     return tops.pop(), infos
 
 
@@ -76,13 +77,13 @@ def import_lessons(path, profiles: dict, folder=None, replace: bool = False) -> 
     try:
         archive = zipfile.ZipFile(path)
     except (OSError, zipfile.BadZipFile) as error:
-        raise LessonError(path, 0, f"cannot read the zip: {error}") from None
+        raise LessonError(path, 0, app_local_text("lesson_problem_zip_unreadable", reason=error)) from None
     with archive:
         top, infos = _pack_entries(path, archive)
         target = folder / top
         if target.exists() and not replace:
-            raise LessonError(path, 0, f"a lesson pack '{top}' is installed already ({target}); "
-                                       f"import it with --replace to put this one in its place")
+            raise LessonError(path, 0, app_local_text("lesson_problem_pack_installed", pack=top, folder=target,
+                                                              option="--replace"))
         folder.mkdir(parents=True, exist_ok=True)
         staging = Path(tempfile.mkdtemp(prefix=".import-", dir=folder))
         try:
@@ -91,13 +92,13 @@ def import_lessons(path, profiles: dict, folder=None, replace: bool = False) -> 
             unpacked = staging / top
             found = lesson_folders(unpacked)
             if not found:
-                raise LessonError(path, 0, "the pack holds no lesson (a folder with a lesson.yaml)")
+                raise LessonError(path, 0, app_local_text("lesson_problem_pack_empty"))
             for lesson_folder in found:
                 try:
                     load_lesson(lesson_folder, profiles)
                 except LessonError as error:   # named as it is in the zip, not in the hidden folder
                     inside = Path(error.path).relative_to(staging).as_posix()
-                    raise LessonError(f"{path}: {inside}", error.line, error.problem) from None
+                    raise LessonError(f"{path}: {inside}", error.line, error._problem) from None
             if target.exists():
                 shutil.rmtree(target)
             os.replace(unpacked, target)

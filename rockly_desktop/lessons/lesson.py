@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
 
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.lessons.goals import GENERIC_GOALS, Area, GoalContext, Words, known_blocks
 from rockly_desktop.lessons.lesson_file import LessonError, read_located
 from rockly_desktop.lessons.schema import GOAL_COMMON, LESSON_FIELDS, Field, check_value
@@ -102,31 +103,32 @@ def load_lesson(folder, profiles: dict) -> Lesson:
     located = read_located(folder / LESSON_FILE)
     data = located.data
     if not isinstance(data, dict):
-        raise located.error("expected a mapping of the lesson's fields (id: ..., robot: ..., goals: ...)")
+        raise located.error(app_local_text("lesson_problem_not_mapping", fields="id: ..., robot: ..., goals: ..."))
     known = {spec.name: spec for spec in LESSON_FIELDS}
     for key in data:
         if key not in known:
-            raise located.error(f"'{key}' is no lesson field; expected one of {', '.join(known)}", key)
+            raise located.error(app_local_text("lesson_problem_unknown_field", field=key, known=", ".join(known)), key)
     for spec in LESSON_FIELDS:
         if spec.required and spec.name not in data:
-            raise located.error(f"'{spec.name}' is missing: {spec.meaning}")
+            raise located.error(app_local_text("lesson_problem_field_missing", field=spec.name))
         if spec.name in data and spec.kind not in ("areas", "goals"):
             problem = check_value(spec, data[spec.name], {})
             if problem:
-                raise located.error(f"'{spec.name}': expected {problem}", spec.name)
+                raise located.error(app_local_text("lesson_problem_field", field=spec.name, expected=problem),
+                                    spec.name)
     profile = profiles.get(data["robot"])
     if profile is None:
-        raise located.error(f"'robot': expected one of the installed robots ({', '.join(sorted(profiles))}), "
-                            f"not '{data['robot']}'", "robot")
+        raise located.error(app_local_text("lesson_problem_robot", robots=", ".join(sorted(profiles)),
+                                           robot=data["robot"]), "robot")
     if not profile.has_simulator:
-        raise located.error(f"'robot': {profile.id} has no simulator to check lessons on", "robot")
+        raise located.error(app_local_text("lesson_problem_no_simulator", robot=profile.id), "robot")
     if data["world"] != world_name(profile):
-        raise located.error(f"'world': {profile.id}'s simulator has the world '{world_name(profile)}', "
-                            f"not '{data['world']}'", "world")
+        raise located.error(app_local_text("lesson_problem_world", robot=profile.id, known=world_name(profile),
+                                           world=data["world"]), "world")
     world = world_of(profile)
     start = tuple(float(value) for value in data.get("start", (0.0, 0.0, 0.0)))
     if world is not None and not (world.in_area(start[0], start[1]) and world.fits(start[0], start[1])):
-        raise located.error(f"'start': the robot does not fit at ({start[0]:g}, {start[1]:g})", "start")
+        raise located.error(app_local_text("lesson_problem_start", x=start[0], y=start[1]), "start")
     areas = _areas(located, data.get("areas", {}))
     kinds = goal_kinds(profile)
     goals = _goals(located, data["goals"], kinds, {
@@ -137,8 +139,7 @@ def load_lesson(folder, profiles: dict) -> Lesson:
     if data.get("program"):
         program = folder / data["program"]
         if not program.is_file() or program.resolve().parent != folder.resolve():
-            raise located.error(f"'program': expected a .rockly file in the lesson's folder, not "
-                                f"'{data['program']}'", "program")
+            raise located.error(app_local_text("lesson_problem_program", program=data["program"]), "program")
     return Lesson(folder, data["id"], profile, data["level"], int(data.get("order", 0)), data["world"],
                   (start[0], start[1], start[2]), float(data.get("time_limit", DEFAULT_TIME_LIMIT)),
                   list(data.get("answers", [])), areas, goals, texts, program, kinds)
@@ -146,61 +147,61 @@ def load_lesson(folder, profiles: dict) -> Lesson:
 
 def _areas(located, data) -> dict:
     if not isinstance(data, dict):
-        raise located.error("'areas': expected a mapping {NAME: {rect: [x0, y0, x1, y1], name: {en: .., de: ..}}}",
-                            "areas")
+        raise located.error(app_local_text("lesson_problem_areas"), "areas")
     areas = {}
     for name, entry in data.items():
         where = ("areas", name)
         if not isinstance(entry, dict) or set(entry) - {"rect", "name"} or "rect" not in entry:
-            raise located.error(f"area '{name}': expected {{rect: [x0, y0, x1, y1], name: {{en: .., de: ..}}}}",
-                                *where)
+            raise located.error(app_local_text("lesson_problem_area", area=name), *where)
         problem = check_value(Field("rect", "rect", True, ""), entry["rect"], {})
         if problem:
-            raise located.error(f"area '{name}': 'rect': expected {problem}", *where, "rect")
+            raise located.error(app_local_text("lesson_problem_area_rect", area=name, expected=problem), *where, "rect")
         label = entry.get("name", {"en": name})
         if not (isinstance(label, dict) and isinstance(label.get("en"), str)
                 and all(isinstance(text, str) for text in label.values())):
-            raise located.error(f"area '{name}': 'name': expected {{en: the kitchen, de: die Küche}}", *where, "name")
+            raise located.error(app_local_text("lesson_problem_area_name", area=name), *where, "name")
         areas[str(name)] = Area(tuple(float(v) for v in entry["rect"]), Words(label))
     return areas
 
 
 def _goals(located, data, kinds: dict, names: dict) -> list:
     if not isinstance(data, list) or not data:
-        raise located.error("'goals': expected a list of goals, each {kind: ..., ...}", "goals")
+        raise located.error(app_local_text("lesson_problem_goals"), "goals")
     ids = {entry.get("id") for entry in data if isinstance(entry, dict) and isinstance(entry.get("id"), str)}
     names = dict(names, goal=ids)
     seen = set()
     for index, entry in enumerate(data):
         where = ("goals", index)
         if not isinstance(entry, dict):
-            raise located.error("a goal: expected a mapping {kind: ..., ...}", *where)
+            raise located.error(app_local_text("lesson_problem_goal", number=index + 1), *where)
         kind = kinds.get(entry.get("kind"))
         if kind is None:
-            raise located.error(f"goal {index + 1}: 'kind': expected one of {', '.join(sorted(kinds))}, "
-                                f"not {entry.get('kind')!r}", *where, "kind")
+            raise located.error(app_local_text("lesson_problem_goal_kind", number=index + 1,
+                                               known=", ".join(sorted(kinds)), kind=entry.get("kind")),
+                                *where, "kind")
         fields = {spec.name: spec for spec in GOAL_COMMON + tuple(kind.fields)}
         for key in entry:
             if key not in fields:
-                raise located.error(f"goal {index + 1} ({kind.kind}): '{key}' is not one of its fields "
-                                    f"({', '.join(fields)})", *where, key)
+                raise located.error(app_local_text("lesson_problem_goal_field", number=index + 1, kind=kind.kind,
+                                                   field=key, known=", ".join(fields)), *where, key)
         for spec in fields.values():
             if spec.name == "kind":
                 continue
             if spec.name not in entry:
                 if spec.required:
-                    raise located.error(f"goal {index + 1} ({kind.kind}): '{spec.name}' is missing: {spec.meaning}",
-                                        *where)
+                    raise located.error(app_local_text("lesson_problem_goal_missing", number=index + 1, kind=kind.kind,
+                                                       field=spec.name), *where)
                 continue
             problem = check_value(spec, entry[spec.name], names)
             if problem:
-                raise located.error(f"goal {index + 1} ({kind.kind}): '{spec.name}': expected {problem}",
-                                    *where, spec.name)
+                raise located.error(app_local_text("lesson_problem_goal_value", number=index + 1, kind=kind.kind,
+                                                   field=spec.name, expected=problem), *where, spec.name)
         if entry.get("id") is not None and entry["id"] in seen:
-            raise located.error(f"goal {index + 1}: the id '{entry['id']}' is given twice", *where, "id")
+            raise located.error(app_local_text("lesson_problem_goal_twice", number=index + 1, id=entry["id"]),
+                                *where, "id")
         seen.add(entry.get("id"))
         if any(entry.get(name) == entry.get("id") for name in ("first", "then", "goal") if entry.get("id")):
-            raise located.error(f"goal {index + 1}: it cannot refer to itself", *where)
+            raise located.error(app_local_text("lesson_problem_goal_itself", number=index + 1), *where)
     return [dict(entry) for entry in data]
 
 
@@ -210,8 +211,8 @@ def _texts(folder: Path, profile) -> dict:
     english = len(texts["en"].steps)
     for language, text in texts.items():
         if len(text.steps) != english:
-            raise LessonError(folder / text_file(language), 0,
-                        f"expected {english} steps, as {text_file('en')} has, not {len(text.steps)}")
+            raise LessonError(folder / text_file(language), 0, app_local_text(
+                "lesson_problem_steps", steps=english, english=text_file("en"), found=len(text.steps)))
     return texts
 
 

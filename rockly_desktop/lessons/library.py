@@ -7,6 +7,7 @@ but is kept in ``problems`` (LessonErrors), so a teacher sees it in ``rockly les
 from pathlib import Path
 
 from rockly_desktop.core import paths
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.lessons.goals import GENERIC_GOALS
 from rockly_desktop.lessons.lesson import LESSON_FILE, goal_kinds, load_lesson
 from rockly_desktop.lessons.lesson_file import LessonError
@@ -56,8 +57,8 @@ class LessonLibrary:
                     problems.append(error)
                     continue
                 if lesson.id in lessons:
-                    problems.append(LessonError(folder / LESSON_FILE, 1, f"the id '{lesson.id}' is taken by "
-                                                                         f"{lessons[lesson.id].folder}"))
+                    problems.append(LessonError(folder / LESSON_FILE, 1, app_local_text(
+                        "lesson_problem_id_taken", id=lesson.id, folder=lessons[lesson.id].folder)))
                     continue
                 lessons[lesson.id] = lesson
         return cls(lessons, problems)

@@ -7,27 +7,29 @@ import math
 import re
 from dataclasses import dataclass
 
+from rockly_desktop.core.app_texts import app_local_text
+
 LEVELS = ("starter", "explorer", "full")
 IDENTIFIER = re.compile(r"^[a-z][a-z0-9_-]{0,63}$")
 
 KIND_EXPECTED = {
-    "text": "a text",
-    "identifier": "an id: lower-case letters, digits, '-' and '_', starting with a letter",
-    "number": "a number",
-    "positive": "a number above 0",
-    "count": "a whole number, 0 or more",
-    "level": "one of " + ", ".join(LEVELS),
-    "pose": "[x, y, heading]: metres on the world's map and degrees (0 faces +x)",
-    "rect": "[x0, y0, x1, y1]: a rectangle on the world's map, in metres, x0 < x1 and y0 < y1",
-    "area": "the name of an area of the lesson (its `areas`)",
-    "thing": "the id of a wall or piece of furniture of the world (its world map)",
-    "goal": "the id of another goal of the lesson",
-    "block": "a block type of the lesson's robot",
-    "texts": "a list of texts",
-    "bool": "true or false",
-    "words": "a text in each language: {en: the kitchen, de: die Küche}",
-    "areas": "a mapping of areas",
-    "goals": "a list of goals",
+    "text": app_local_text("lesson_expect_text"),
+    "identifier": app_local_text("lesson_expect_identifier"),
+    "number": app_local_text("lesson_expect_number"),
+    "positive": app_local_text("lesson_expect_positive"),
+    "count": app_local_text("lesson_expect_count"),
+    "level": app_local_text("lesson_expect_level", levels=", ".join(LEVELS)),
+    "pose": app_local_text("lesson_expect_pose"),
+    "rect": app_local_text("lesson_expect_rect"),
+    "area": app_local_text("lesson_expect_area"),
+    "thing": app_local_text("lesson_expect_thing"),
+    "goal": app_local_text("lesson_expect_goal"),
+    "block": app_local_text("lesson_expect_block"),
+    "texts": app_local_text("lesson_expect_texts"),
+    "bool": app_local_text("lesson_expect_bool", values="true, false"),
+    "words": app_local_text("lesson_expect_words"),
+    "areas": app_local_text("lesson_expect_areas"),
+    "goals": app_local_text("lesson_expect_goals"),
 }
 
 
@@ -42,10 +44,10 @@ class Field:
     choices: tuple = ()
 
     @property
-    def expected(self) -> str:
-        """What the value must be, in words."""
+    def expected(self):
+        """What the value must be, in words (a LocalText: ``str()`` is English)."""
         if self.choices:
-            return "one of " + ", ".join(str(choice) for choice in self.choices)
+            return app_local_text("lesson_expect_choice", choices=", ".join(str(choice) for choice in self.choices))
         return KIND_EXPECTED[self.kind]
 
 
@@ -72,7 +74,8 @@ GOAL_COMMON = (
 
 
 def check_value(field: Field, value, names: dict):
-    """None when ``value`` fits ``field``, else what was expected (``names``: kind -> the names that exist)."""
+    """None when ``value`` fits ``field``, else what was expected, a LocalText (``names``: kind -> the names that
+    exist)."""
     kind = field.kind
     if field.choices:
         return None if value in field.choices else field.expected
@@ -108,8 +111,8 @@ def check_value(field: Field, value, names: dict):
         known = names.get(kind, ())
         if isinstance(value, str) and value in known:
             return None
-        shown = ", ".join(sorted(known)[:12]) or "none"
-        return f"{field.expected} (there are: {shown})"
+        shown = ", ".join(sorted(known)[:12]) or "-"
+        return app_local_text("lesson_expect_names", expected=field.expected, names=shown)
     raise ValueError(f"unknown field kind {kind!r}")
 
 

@@ -12,6 +12,7 @@
 """
 from dataclasses import dataclass, field
 
+from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.lessons.lesson_file import LessonError, read_text
 
 HINT, BLOCKS, TOOLBOX = "> ", "blocks:", "toolbox:"
@@ -43,15 +44,15 @@ def read_steps(path, block_types: set) -> LessonText:
     names a block ``block_types`` does not hold."""
     lines = read_text(path).splitlines()
     if not lines or not lines[0].startswith("# ") or not lines[0][2:].strip():
-        raise LessonError(path, 1, "expected the title as the first line: '# Title'")
+        raise LessonError(path, 1, app_local_text("lesson_problem_no_title"))
     title, intro, steps = lines[0][2:].strip(), [], []
     for number, line in enumerate(lines[1:], start=2):
         stripped = line.strip()
         if line.startswith("# "):
-            raise LessonError(path, number, "expected one title only: a step starts with '## '")
+            raise LessonError(path, number, app_local_text("lesson_problem_second_title"))
         if line.startswith("## "):
             if not line[3:].strip():
-                raise LessonError(path, number, "expected a step's title after '## '")
+                raise LessonError(path, number, app_local_text("lesson_problem_step_title"))
             steps.append(Step(line[3:].strip()))
             continue
         if not steps:
@@ -67,8 +68,8 @@ def read_steps(path, block_types: set) -> LessonText:
             names = [name.strip() for name in stripped.split(":", 1)[1].split(",") if name.strip()]
             unknown = [name for name in names if name not in block_types]
             if unknown or not names:
-                raise LessonError(path, number, f"expected block types of the lesson's robot, not "
-                                                f"{', '.join(unknown) or 'nothing'}")
+                raise LessonError(path, number, app_local_text("lesson_problem_step_blocks",
+                                                               blocks=", ".join(unknown) or "-"))
             if lowered.startswith(BLOCKS):
                 step.blocks.extend(names)
             else:
@@ -76,7 +77,7 @@ def read_steps(path, block_types: set) -> LessonText:
         else:
             step.text = f"{step.text}\n{line}" if step.text else line
     if not steps:
-        raise LessonError(path, len(lines), "expected at least one step: a line starting with '## '")
+        raise LessonError(path, len(lines), app_local_text("lesson_problem_no_step"))
     for step in steps:
         step.text = step.text.strip()
     return LessonText(title, "\n".join(intro).strip(), steps)

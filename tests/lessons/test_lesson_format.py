@@ -108,3 +108,10 @@ def test_the_docs_hold_the_generated_reference_exactly(profiles):
     text = (REPO / "docs" / "lessons.md").read_text(encoding="utf-8")
     section = text.split(REFERENCE_START + "\n", 1)[1].split(REFERENCE_END, 1)[0]
     assert section == lesson_reference(profiles), "docs/lessons.md is out of date: paste `rockly lessons reference` in"
+
+
+def test_a_broken_lesson_is_said_in_german_too(tmp_path, profiles):
+    folder = write_lesson(tmp_path, goals=[{"kind": "ends_near", "thing": "box_1", "within": -1}])
+    error = refused(folder, profiles)
+    assert error.in_language("de").endswith("Ziel 1 (ends_near): 'within': erwartet: eine Zahl über 0")
+    assert str(error).endswith("goal 1 (ends_near): 'within': expected a number above 0")
