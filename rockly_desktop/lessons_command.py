@@ -179,7 +179,11 @@ def check(lesson_name, arguments, profiles, language, csv_path=None, jobs=1) -> 
             types[path] = block_types_by_id(workspace)
             futures[path] = pool.submit(GeneratedProgram(path.name, run_code, workspace, types[path]))
         for path, future in futures.items():
-            rows[path] = future.result()
+            try:
+                rows[path] = future.result()
+            except RocklyError as error:   # the robot's commands could not be made for it: said, the others go on
+                rows[path] = _problem(path, app_text("lesson_cannot_check", language, program=path.name,
+                                                     error=error.in_language(language)))
     results = [rows[path] for path in paths]
     for path, result in zip(paths, results, strict=True):
         _print_result(result, types.get(path, {}), language)
