@@ -12,7 +12,8 @@ The API the window's Lessons dock, ``rockly lessons`` and the tests share (no Qt
   the page's run code, the workspace JSON, block types by id) on the lesson's simulated robot in
   simulated time and returns a ``CheckResult``: per goal whether it passed, in words a child reads
   (LocalTexts), how the run ended, and ``failing``: the simulated time and block of the first failing
-  moment. It blocks until done (about a second): call it off the window's thread;
+  moment; with ``record=PATH`` it also writes the run as a recording in simulated time, for a replay at
+  that moment. It blocks until done (about a second): call it off the window's thread;
 * ``parallel.ParallelChecks``: many programs in worker processes; ``archive``: lessons shared as one zip.
 
 A profile adds goal kinds by naming a list of ``goals.LessonGoal`` classes in its manifest's

@@ -10,19 +10,23 @@ failing moment (for a replay). The program's file is never touched: the check ge
 """
 import math
 import threading
+import time
 from dataclasses import dataclass, field
 
 from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import BlockEntered, OutputPrinted
 from rockly_desktop.executor.run_setup import make_runner
+from rockly_desktop.executor.run_to_mcap import RunRecording
 from rockly_desktop.lessons.goals import Moment, Words, blocks_of, toolbox_blocks
 from rockly_desktop.lessons.lesson import Lesson, start_heading
 from rockly_desktop.lessons.stepping import BLOCK_SECONDS, SteppedClock, SteppedRobot
+from rockly_desktop.recording import channels
 from rockly_desktop.robot.sim.answer_list import AnswerList
 from rockly_desktop.robot.wrappers.limits import Limits
 
 REAL_SECONDS = 60.0   # a program that lets no simulated time pass (an empty endless loop) is stopped after this
+SNAPSHOT_SECONDS = 0.1   # simulated seconds between two simulator snapshots in a check's recording
 
 
 @dataclass
@@ -89,6 +93,8 @@ class _Observer:
         self.commands = frozenset(commands)   # topics that change what the snapshot shows at once
         self.block = None
         self.travelled = 0.0
+        self.recording = None   # a RunRecording the snapshots are noted in, as simulated time passes
+        self._next_snapshot = 0.0
         self._last = None
         self._order = 0
         self.moment = self.look()
@@ -111,6 +117,9 @@ class _Observer:
         moment = self.look()
         for goal in self.goals:
             goal.see(moment)
+        if self.recording is not None and moment.time >= self._next_snapshot:
+            self._next_snapshot = moment.time + SNAPSHOT_SECONDS
+            self.recording.recorder.note(channels.SIMULATOR, moment.snapshot)
 
     def heard(self, topic, _msg_type, message):
         if topic in self.commands:
@@ -130,14 +139,19 @@ class _Observer:
 
 
 def check_program(lesson: Lesson, program: GeneratedProgram, language: str = "en",
-                  real_seconds: float = REAL_SECONDS) -> CheckResult:
+                  real_seconds: float = REAL_SECONDS, record=None, program_bytes: bytes = None) -> CheckResult:
     """Run ``program`` on the lesson's simulated robot in simulated time and judge the lesson's goals.
 
-    ``language``: of the run's own error messages (the results' words are LocalTexts, in any language)."""
+    ``language``: of the run's own error messages (the results' words are LocalTexts, in any language).
+    ``record``: an MCAP file to record the run to, stamped in simulated time from now (a replay's timeline
+    is then the simulated one, and ``CheckResult.failing``'s time is a moment on it); ``program_bytes``:
+    the ``.rockly`` file it keeps. Raises OSError when that recording cannot be begun."""
     profile = lesson.profile
     goals = lesson.make_goals(program.workspace)
-    robot = SteppedRobot(profile, tablet=AnswerList(lesson.answers, lambda _line: None, language=language))
+    robot = SteppedRobot(profile, tablet=AnswerList(lesson.answers, lambda _line: None, language=language),
+                         keep_state=record is not None)
     control = RunControl(trace=True)
+    recording = None
     try:
         robot.simulator.place(lesson.start[0], lesson.start[1], start_heading(lesson))
         commands = set(profile.ros_interface.get("subscribes") or {}) - set(profile.velocity_topics)
@@ -153,10 +167,16 @@ def check_program(lesson: Lesson, program: GeneratedProgram, language: str = "en
             if isinstance(event, BlockEntered):
                 clock.spend(BLOCK_SECONDS)
 
+        if record is not None:
+            started = time.time_ns()
+            recording = RunRecording(record, profile, robot, program.name, program_bytes, program.types,
+                                     clock=lambda: started + int(robot.simulator.time * 1e9), snapshots=False)
+            observer.recording = recording
         stuck = threading.Event()
         guard = threading.Timer(real_seconds, lambda: (stuck.set(), control.request_stop()))
         guard.daemon = True
-        runner = make_runner(profile, robot, program.run_code, control, on_event, language, Limits())
+        runner = make_runner(profile, robot, program.run_code, control, on_event, language, Limits(),
+                             recording=recording)
         guard.start()
         try:
             finished = runner.run()
@@ -164,6 +184,9 @@ def check_program(lesson: Lesson, program: GeneratedProgram, language: str = "en
             guard.cancel()
         end = observer.look()
     finally:
+        if recording is not None:
+            recording.recorder.note(channels.SIMULATOR, observer.moment.snapshot)
+            recording.close()
         robot.shutdown()
     results = [_result(goal, goal.verdict(end)) for goal in goals]
     beyond = _beyond_level(lesson, program.workspace)

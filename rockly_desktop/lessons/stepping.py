@@ -79,11 +79,13 @@ class SteppedBackend(SimBackend):
 
 
 class SteppedRobot(SimulatedRobot):
-    """The profile's simulator as a robot link whose time is stepped (``clock``, set by ``use_clock``)."""
+    """The profile's simulator as a robot link whose time is stepped (``clock``, set by ``use_clock``);
+    its state store is filled only for a recording (``keep_state``): no state panel watches a check."""
 
-    def __init__(self, profile, tablet=None):
+    def __init__(self, profile, tablet=None, keep_state: bool = False):
         super().__init__(profile, tablet=tablet, clock=False)
-        self.world.untap(self.state.record)   # no state panel watches a check
+        if not keep_state:
+            self.world.untap(self.state.record)
         self.clock = None
 
     def use_clock(self, clock: SteppedClock):

@@ -120,3 +120,25 @@ def test_the_readmes_example_lesson_is_valid_and_its_first_try_passes(tmp_path, 
     assert check_program(lesson, program("robot.drive(3)")).passed
     too_far = check_program(lesson, program("robot.drive(3.5)"))
     assert [goal.passed for goal in too_far.goals] == [True, False]
+
+
+def test_a_recorded_check_replays_in_simulated_time_at_its_failing_moment(tmp_path, profiles):
+    from rockly_desktop.recording.moments import Moments
+    from rockly_desktop.recording.reading import read_recording
+
+    lesson = load_lesson(write_lesson(tmp_path / "lesson", goals=NO_BUMP, start=[0, 0, 0]), profiles)
+    started = time.monotonic()
+    result = check_program(lesson, program("robot.drive(1.0)", "robot.drive(1.0)"), record=tmp_path / "try.mcap",
+                           program_bytes=b"{}")
+    took = time.monotonic() - started
+    failing_time, failing_block = result.failing
+    assert failing_block == "b2" and 9 < failing_time < 12.5 and took < failing_time / 2
+    recording = read_recording(tmp_path / "try.mcap")
+    assert recording.complete and recording.metadata["world"] and recording.program == b"{}"
+    moments = Moments(recording)
+    assert moments.duration == pytest.approx(result.time, abs=0.1)   # the timeline is the simulated one
+    at_failing = moments.at(failing_time)
+    assert at_failing.block == "b2" and moments.at(failing_time - 5).block == "b2"
+    assert moments.at(2.0).block == "b1"
+    assert at_failing.snapshot["x"] == pytest.approx(1.9 - 0.105, abs=0.02)   # touching the red box
+    assert moments.at(3.0).snapshot["x"] == pytest.approx(0.45, abs=0.1)   # 0.15 m/s: driving on sim time
