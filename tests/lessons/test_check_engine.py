@@ -142,3 +142,12 @@ def test_a_recorded_check_replays_in_simulated_time_at_its_failing_moment(tmp_pa
     assert moments.at(2.0).block == "b1"
     assert at_failing.snapshot["x"] == pytest.approx(1.9 - 0.105, abs=0.02)   # touching the red box
     assert moments.at(3.0).snapshot["x"] == pytest.approx(0.45, abs=0.1)   # 0.15 m/s: driving on sim time
+
+
+def test_a_check_is_the_same_every_time_goal_threads_and_all(tmp_path, profiles):
+    goals = [{"kind": "arm_at", "pose": "table"}, {"kind": "gripper", "state": "open"}]
+    lesson = load_lesson(write_lesson(tmp_path, robot="hobbit", goals=goals), profiles)
+    code = program("robot.navigate_to(1.5, -1.0, 90)", "robot.move_arm('table')", "robot.gripper('open')")
+    times = {tuple(goal.words("en") for goal in result.goals) + (result.time,)
+             for result in (check_program(lesson, code) for _ in range(3))}
+    assert len(times) == 1, times

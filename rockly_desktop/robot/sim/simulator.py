@@ -79,6 +79,8 @@ class RobotSimulator:
     TICK_SECONDS = 0.1        # real seconds between two ticks of the clock
     WORLD_ID = "world"      # the name a lesson gives the world it moves in
     FOLLOW_SECONDS = 0.01     # real seconds a goal's thread waits for the next tick at most
+    STEP_WAIT_SECONDS = 0.25  # real seconds a step waits at most for the goal threads (a loaded machine's
+                              # scheduling; a goal that does not follow with next_tick costs this a tick)
 
     def __init__(self, world, tablet=None, speed=1.0):
         self.speed = checked_speed(speed)
@@ -184,7 +186,7 @@ class RobotSimulator:
         """Let ``dt`` simulated seconds pass now (a simulator started with ``clock=False``), then wait
         until ``goals_running()`` goal threads (SimWorld.running_goals) look at the new state again."""
         self._tick(dt)
-        deadline = time.monotonic() + self.FOLLOW_SECONDS
+        deadline = time.monotonic() + self.STEP_WAIT_SECONDS
         with self._ticked:
             tick = self._ticks
             # goals_running() changes without telling this condition: look again every 0.5 ms
