@@ -39,6 +39,7 @@ import uuid
 from rockly_desktop.core.app_texts import app_text
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.runtime.agent.protocol import ALIVE, FORMAT, AgentError
+from rockly_desktop.runtime.agent.robot_keys import ros_address
 from rockly_desktop.runtime.agent.sealed import (
     FROM_AGENT,
     TO_AGENT,
@@ -110,7 +111,7 @@ class _RosClient:
 
     def __init__(self, offer, who: str, paired=None, line: str = None):
         self.who = who
-        self._paired = paired
+        self._sealed_for = self._paired = paired
         self.line = line
         self.language = "en"
         self.name = "?"
@@ -118,7 +119,7 @@ class _RosClient:
         self.wants_control = False
         self.heard = time.monotonic()
         self._offer = offer
-        self.deliver = self.send if paired is not None else offer.say_to_unpaired
+        self.deliver = self.send if paired is not None else offer.say_to_unpaired  # each paired line its own
         if paired is not None:
             self._binding = Binding(offer.namespace, FROM_AGENT, paired.id, line, offer.session)
             self._counter = LineCounter()
@@ -129,16 +130,24 @@ class _RosClient:
         return self._paired
 
     @paired.setter
-    def paired(self, _paired):
-        """Kept as the line was made: a line is paired by its key alone. The agent's ``pair`` (which makes a TCP
-        connection paired) leaves a clear line as it was: anyone on the graph can write its clear name."""
+    def paired(self, paired):
+        """A line is paired by its key alone: the agent may take its pairing away (revoked) or renew it, never
+        give one to a line that came without (its ``pair``, which makes a TCP connection paired, leaves a clear
+        line as it was: anyone on the graph can write its clear name)."""
+        if paired is None or (self._sealed_for is not None and paired.id == self._sealed_for.id):
+            self._paired = paired
+
+    def cut(self):
+        """Its pairing was revoked: nothing it sends is taken any more (its key is not found), and what it is
+        sent stays sealed for it alone."""
+        self._paired = None
 
     def send(self, message: dict) -> bool:
-        if self._paired is None:
+        if self._sealed_for is None:
             return self._offer.topics.publish({**message, "to": self.who})
         with self._sending:
-            box = seal(self._paired.key, self._binding, self._counter.next(), message)
-            return self._offer.topics.publish({"client": self._paired.id, "line": self.line, "box": box})
+            box = seal(self._sealed_for.key, self._binding, self._counter.next(), message)
+            return self._offer.topics.publish({"client": self._sealed_for.id, "line": self.line, "box": box})
 
 
 class RosOffer:
@@ -306,8 +315,8 @@ class RosLine:
         if not agent_in_graph(kind, where, namespace):
             raise not_there
         self.namespace = _namespace(namespace)
-        self.address = f"{kind}:{_carrier(kind).master_at_hand()} {self.namespace}"
-        self.key = keys.get(self.address) if keys is not None else None
+        self.address = ros_address(kind, _carrier(kind).master_at_hand(), self.namespace)
+        self.key = keys.get(self.address) if keys is not None else None  # a RobotKey
         self.who = f"{node}/{os.getpid()}-{uuid.uuid4().hex[:8]}"
         self.line = new_line()
         self.where = f"{master} ({namespace})"  # what a window names
@@ -328,8 +337,7 @@ class RosLine:
         if self.key is not None:
             if not self._agent.get("known"):
                 self.topics.close()
-                raise AgentError("agent_not_paired_here", app_text("agent_not_paired_here", language,
-                                                                   where=self.where))
+                raise AgentError("agent_not_paired", app_text("agent_not_paired", language))  # revoked
             self._sealing = (self.key.client, self.key.key)
         self._watch = threading.Thread(target=self._watch_agent, daemon=True, name="agent-client")
         self._watch.start()
