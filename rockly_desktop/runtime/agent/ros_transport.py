@@ -177,10 +177,10 @@ class RosOffer:
         return self.topics.publish(message) if message == ALIVE else True
 
     def _on_request(self, message: dict):
-        if "box" in message:
-            self._on_sealed(message)
-        else:
+        if "from" in message:  # what comes before a key (a pair request's code is in a box of its own)
             self._on_clear(message)
+        else:
+            self._on_sealed(message)
 
     def _on_sealed(self, message: dict):
         client_id, line, box = message.get("client"), message.get("line"), message.get("box")
