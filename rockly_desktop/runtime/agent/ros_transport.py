@@ -155,13 +155,17 @@ class RosOffer:
     ``ready``: the line saying so, in ``language``. ``dropped`` counts, by reason, what it did not take."""
 
     def __init__(self, agent, kind: str, namespace: str, where=None, language: str = "en"):
+        try:
+            self._exchange = PairingExchange()  # this run's X25519 key: pairing over the topics
+        except ImportError as missing:  # nothing can be sealed: nothing is offered in clear instead
+            raise AgentError("agent_ros_needs_cryptography", app_text("agent_ros_needs_cryptography", language,
+                                                                      reason=str(missing))) from None
         _, self.master = _node(kind, where, language)
         self.ready = app_text(TEXTS[kind][2], language, master=self.master, namespace=namespace)
         self.agent = agent
         self.namespace = _namespace(namespace)
         self.session = new_session()
         self.dropped = collections.Counter()
-        self._exchange = PairingExchange()  # this run's X25519 key: pairing over the topics
         self._replays = Replays()
         self._language = language
         self._dropped_said = (0, None)  # (how many were said, when)

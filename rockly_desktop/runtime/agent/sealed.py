@@ -12,18 +12,15 @@ Pairing over ROS (``PairingExchange``) derives a one-time key from an X25519 exc
 
     box = seal(key, binding, counter, message)
     counter, message = unseal(key, binding, box)        # Unsealable when it does not open
+
+``cryptography`` (pinned) is imported when first used: the runtime's other parts, and a client that never speaks
+over ROS, do without it (a robot's Python may lack it: ``RosOffer`` then says so, and TCP still serves).
 """
 import base64
 import binascii
 import json
 import secrets
 import time
-
-from cryptography.exceptions import InvalidTag
-from cryptography.hazmat.primitives import hashes, serialization
-from cryptography.hazmat.primitives.asymmetric.x25519 import X25519PrivateKey, X25519PublicKey
-from cryptography.hazmat.primitives.ciphers.aead import AESGCM
-from cryptography.hazmat.primitives.kdf.hkdf import HKDF
 
 PURPOSE = "rockly-agent-ros/1"  # the associated data's first word: a box of another protocol never opens here
 TO_AGENT, FROM_AGENT = "to_agent", "from_agent"
@@ -47,6 +44,8 @@ class Binding:
 
 def seal(key: bytes, binding: Binding, counter: int, message: dict) -> str:
     """``message`` with its ``counter`` sealed with ``key`` for ``binding``: base64 text."""
+    from cryptography.hazmat.primitives.ciphers.aead import AESGCM
+
     nonce = secrets.token_bytes(NONCE_BYTES)
     plain = json.dumps({"n": counter, "m": message}, ensure_ascii=False).encode("utf-8")
     return base64.b64encode(nonce + AESGCM(key).encrypt(nonce, plain, binding.associated)).decode("ascii")
@@ -54,6 +53,9 @@ def seal(key: bytes, binding: Binding, counter: int, message: dict) -> str:
 
 def unseal(key: bytes, binding: Binding, box) -> tuple:
     """``(counter, message)`` of ``box`` sealed with ``key`` for ``binding``; Unsealable when it does not open."""
+    from cryptography.exceptions import InvalidTag
+    from cryptography.hazmat.primitives.ciphers.aead import AESGCM
+
     try:
         raw = base64.b64decode(box.encode("ascii"), validate=True)
         plain = AESGCM(key).decrypt(raw[:NONCE_BYTES], raw[NONCE_BYTES:], binding.associated)
@@ -134,16 +136,23 @@ class Replays:
 class PairingExchange:
     """The one-time key of a pairing over ROS: X25519 between a client's fresh key and the agent's session key,
     then HKDF-SHA256 over the shared secret, bound to both public keys. Either side makes one with its own
-    private key (None: a fresh one) and the other side's public key (``public_text`` gives its own, base64)."""
+    fresh private key and the other side's public key (``public_text`` gives its own, base64)."""
 
-    def __init__(self, private: X25519PrivateKey = None):
-        self.private = private or X25519PrivateKey.generate()
+    def __init__(self):
+        from cryptography.hazmat.primitives import serialization
+        from cryptography.hazmat.primitives.asymmetric.x25519 import X25519PrivateKey
+
+        self.private = X25519PrivateKey.generate()
         self.public_text = _text(self.private.public_key().public_bytes(serialization.Encoding.Raw,
                                                                         serialization.PublicFormat.Raw))
 
     def key_with(self, their_public_text, client_side: bool) -> bytes:
         """The shared one-time key with the side whose public key is ``their_public_text``; Unsealable when that
         is not an X25519 public key."""
+        from cryptography.hazmat.primitives import hashes
+        from cryptography.hazmat.primitives.asymmetric.x25519 import X25519PublicKey
+        from cryptography.hazmat.primitives.kdf.hkdf import HKDF
+
         try:
             theirs = base64.b64decode(their_public_text.encode("ascii"), validate=True)
             shared = self.private.exchange(X25519PublicKey.from_public_bytes(theirs))
