@@ -189,3 +189,31 @@ def test_a_line_whose_key_the_agent_no_longer_knows_is_told_to_pair(graph, tmp_p
     with pytest.raises(AgentError) as refused:
         Client(keys)
     assert refused.value.key == "agent_not_paired"
+
+
+def test_an_agent_that_does_not_seal_is_told_apart_before_anything_is_sent(tmp_path, monkeypatch):
+    """An agent from before sealing answers the clear hello without a session: a paired laptop must not send its
+    requests in clear to it, so the line ends, saying the two do not speak the same language."""
+    bus = Bus()
+    monkeypatch.setattr(ros_transport, "_carrier", lambda kind: bus.carrier())
+    old = bus.carrier().Topics("/rockly_agent", True, lambda message: old.publish(
+        {"reply": message.get("id"), "ok": True, "agent": "0.0.9", "to": message.get("from")}))
+    try:
+        with pytest.raises(AgentError) as refused:
+            Client(RobotKeys(tmp_path / "robot-keys.json"))
+        assert refused.value.key == "agent_other_format" and "0.0.9" in refused.value.message
+        assert [message for topic, message in bus.went_by if topic == "to_agent" and message.get("op") != "hello"] == []
+    finally:
+        bus.stop()
+
+
+def test_a_line_that_paired_is_not_paired_under_its_clear_name(graph, tmp_path):
+    """The agent's ``pair`` makes the client it answers paired (a TCP connection stays so); over ROS the clear name
+    that paired is anyone's to write: a request in that name is still refused."""
+    bus, agent, _, pairings = graph
+    client, _, _, _ = paired_client(tmp_path, pairings)
+    Stranger(bus).write({"op": "list", "id": "x", "from": client.line.who})
+    eventually(lambda: any(m.get("reply") == "x" for topic, m in bus.went_by if topic == "from_agent"))
+    (answer,) = [m for topic, m in bus.went_by if topic == "from_agent" and m.get("reply") == "x"]
+    assert answer["error"] == "agent_not_paired"
+    client.close()

@@ -36,6 +36,7 @@ import threading
 import time
 import uuid
 
+from rockly_desktop import __version__
 from rockly_desktop.core.app_texts import app_text
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.runtime.agent.protocol import ALIVE, FORMAT, AgentError
@@ -338,6 +339,10 @@ class RosLine:
         if not self._handshake(timeout):
             self.topics.close()
             raise not_there
+        if not isinstance(self._agent.get("session"), str):  # an agent from before sealing: nothing safe to say
+            self.topics.close()
+            raise AgentError("agent_other_format", app_text("agent_other_format", language,
+                                                            agent=self._agent.get("agent", "?"), client=__version__))
         if self.key is not None:
             if not self._agent.get("known"):
                 self.topics.close()
