@@ -222,6 +222,7 @@ def test_the_keys_are_kept_for_their_owner_only(agent):
     folder = agent_folder(agent.library)
     for path in (folder / "pairings.json", folder / "tls-key.pem", RobotKeys().path):
         assert stat.S_IMODE(os.stat(path).st_mode) == 0o600, path
+    assert stat.S_IMODE(os.stat(folder).st_mode) == 0o700
     assert agent.key.client in (folder / "pairings.json").read_text()
 
 

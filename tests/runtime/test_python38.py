@@ -7,8 +7,8 @@ The interpreter: ``ROCKLY_PYTHON38``, else ``python3.8`` on the PATH, else pyenv
 and say so. No network: the runtime's pure-Python dependencies (PyYAML without its C part, mcap and its ROS
 supports) are linked in from this test's Python, and the venv sees Debian's own rospy (pure Python) as a Noetic
 robot's venv made with ``--system-site-packages`` does. numpy, lz4, zstandard and cryptography are binary and exist
-here only for this Python, so a program cannot run on 3.8 here (the SDK's simulated world needs numpy when a profile loads): on a
-robot, pip installs their 3.8 builds."""
+here only for this Python, so a program cannot run on 3.8 here (the SDK's simulated world needs numpy when a
+profile loads): on a robot, pip installs their 3.8 builds."""
 import json
 import os
 import shutil
