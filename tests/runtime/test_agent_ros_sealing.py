@@ -217,3 +217,21 @@ def test_a_line_that_paired_is_not_paired_under_its_clear_name(graph, tmp_path):
     (answer,) = [m for topic, m in bus.went_by if topic == "from_agent" and m.get("reply") == "x"]
     assert answer["error"] == "agent_not_paired"
     client.close()
+
+
+def test_a_forged_answer_to_a_pair_request_does_not_keep_the_line_from_pairing(graph, tmp_path, monkeypatch):
+    """A stranger answers the pair request first, with a box of its own: the line waits for the agent's."""
+    bus, agent, _, pairings = graph
+    client = Client(RobotKeys(tmp_path / "robot-keys.json"))
+    stranger = Stranger(bus)
+    stranger.agent_side = True  # it speaks to the clients, as the agent does
+    answer_pair = agent.answer
+
+    def forged_first(line, request):  # the stranger's answer goes out before the agent's
+        if request.get("op") == "pair":
+            stranger.write({"to": client.line.who, "reply": request["id"], "box": base64.b64encode(b"y" * 48).decode()})
+        return answer_pair(line, request)
+    monkeypatch.setattr(agent, "answer", forged_first)
+    answer = client.ask("pair", code=pairings.new_code().code, name="ada@laptop")
+    assert answer["ok"] is True and client.ask("list")["ok"] is True  # paired, and sealing with the key
+    client.close()

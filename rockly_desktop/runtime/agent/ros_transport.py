@@ -96,7 +96,6 @@ def _node(kind: str, where, language: str) -> tuple:
     return node, graph.in_language(language) if hasattr(graph, "in_language") else graph  # ROS 2's: "domain 7"
 
 
-
 def _namespace(namespace: str) -> str:
     return "/" + namespace.strip("/")
 
@@ -275,7 +274,7 @@ class RosOffer:
     def _drop(self, key: tuple):
         with self._lock:
             client = self._clients.pop(key, None)
-            if client is not None and client.paired is not None:
+            if client is not None and key[0]:  # a sealed line (revoked or not): its counter is kept a while
                 self._replays.ended(*key)
         if client is not None:
             self.agent.leave(client)
@@ -435,12 +434,13 @@ class RosLine:
     def _on_paired(self, message: dict):
         """The agent's answer to this line's ``pair``: opened with its one-time key; a line that paired seals
         with the pair's key from now on."""
-        once = self._pairing.pop(message["reply"])
+        once = self._pairing[message["reply"]]
         try:
             _, answer = unseal(once, Binding(self.namespace, FROM_AGENT, "", self.who, self._agent["session"]),
                                message.get("box"))
         except Unsealable:
-            return
+            return  # not the agent's: its answer may still come
+        del self._pairing[message["reply"]]
         if answer.get("ok") and answer.get("client") and answer.get("key"):
             try:
                 self._sealing = (str(answer["client"]), base64.b64decode(answer["key"], validate=True))
