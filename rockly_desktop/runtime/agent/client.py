@@ -19,7 +19,7 @@ and calls ``on_closed``; so does an agent that said it beats (its ``hello``) and
 An agent that does not answer within ``timeout`` ends the call with ``AgentError("agent_no_answer")``.
 
 A client proves it is paired with the key this laptop keeps for the agent's address (``RobotKeys``; over TCP in
-its ``hello``, over ROS in every message); without one it can say hello and ``pair(code)``, which keeps the key.
+its ``hello``, over ROS by sealing every message); without one it can say hello and ``pair(code)``, which keeps the key.
 Anything else an agent refuses with ``AgentError("agent_not_paired", ...)``, saying how to pair.
 
 ``via`` picks the transport (one module each): ``tcp`` (``agent.tcp_transport``: ``host``:``port``), ``ros``
