@@ -7,7 +7,7 @@ Requests (each answered; refusals say why in the client's language):
                                                                   -> {"agent", "format", "backend", "profiles",
                                                                      "alive_seconds", "paired", "name"}
     pair     {"code", "name"}                                     -> {"client", "key", "role", "agent"}
-    pairing_code {"role"?}  (a teacher)                           -> {"code", "seconds"}
+    pairing_code {"role"?}  (a teacher)                           -> {"code", "seconds", "role"}
     list                                                          -> {"programs": [about...], "run": snapshot|null}
     send     {"name", "standalone", "source"?, "on_lost_editor"?, "decide_seconds"?} -> {"program": about}
     source   {"name"}                                             -> {"source": .rockly text|null}
@@ -73,6 +73,7 @@ class Agent:
         self.name = socket.gethostname()  # what a laptop calls this agent
         self.run = None
         self.started_by = None  # the id of the client that started the run
+        self._pairings_version = None  # of the paired clients, when revoked ones were last looked for
         self.controller = None
         self.breakpoints = []  # the controlling client's: a run started while it is attached pauses there too
         self.clients = []
@@ -267,7 +268,7 @@ class Agent:
     def check_pairings(self):
         """Close the connections of clients revoked since the last look (call it now and then: the alive beat)."""
         version = self.pairings.version()
-        if version == getattr(self, "_pairings_version", None):
+        if version == self._pairings_version:
             return
         self._pairings_version = version
         for client in list(self.clients):
