@@ -6,7 +6,8 @@ Requests (each answered; refusals say why in the client's language):
     hello    {"rockly", "format", "language", "client", "client_id"?, "proof"?}
                                                                   -> {"agent", "format", "backend", "profiles",
                                                                      "alive_seconds", "paired", "name"}
-    pair     {"code", "name"}                                     -> {"client", "key", "role", "agent"}
+    pair     {"code", "name", "role"?}                            -> {"client", "key", "role", "agent"}
+                                                                     ("role": "student" asks for less than the code)
     pairing_code {"role"?}  (a teacher)                           -> {"code", "seconds", "role"}
     list                                                          -> {"programs": [about...], "run": snapshot|null}
     send     {"name", "standalone", "source"?, "on_lost_editor"?, "decide_seconds"?} -> {"program": about}
@@ -113,7 +114,8 @@ class Agent:
 
     def _op_pair(self, client, request):
         name = request.get("name")
-        paired = self.pairings.pair(request.get("code"), name if isinstance(name, str) and name else client.name)
+        paired = self.pairings.pair(request.get("code"), name if isinstance(name, str) and name else client.name,
+                                    request.get("role"))
         client.paired = paired
         return {"client": paired.id, "key": base64.b64encode(paired.key).decode("ascii"), "role": paired.role,
                 "agent": self.name}
