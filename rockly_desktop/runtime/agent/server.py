@@ -6,8 +6,9 @@ Requests (each answered; refusals say why in the client's language):
     hello    {"rockly", "format", "language", "client", "client_id"?, "proof"?}
                                                                   -> {"agent", "format", "backend", "profiles",
                                                                      "alive_seconds", "paired", "name"}
-    pair     {"code", "name"}                                     -> {"client", "key", "role", "agent"}
-    pairing_code {"role"?}  (a teacher)                           -> {"code", "seconds"}
+    pair     {"code", "name", "role"?}                            -> {"client", "key", "role", "agent"}
+                                                                     ("role": "student" asks for less than the code)
+    pairing_code {"role"?}  (a teacher)                           -> {"code", "seconds", "role"}
     list                                                          -> {"programs": [about...], "run": snapshot|null}
     send     {"name", "standalone", "source"?, "on_lost_editor"?, "decide_seconds"?} -> {"program": about}
     source   {"name"}                                             -> {"source": .rockly text|null}
@@ -73,10 +74,12 @@ class Agent:
         self.name = socket.gethostname()  # what a laptop calls this agent
         self.run = None
         self.started_by = None  # the id of the client that started the run
+        self._pairings_version = None  # of the paired clients, when revoked ones were last looked for
         self.controller = None
         self.breakpoints = []  # the controlling client's: a run started while it is attached pauses there too
         self.clients = []
         self.listeners = []  # called (no arguments) when the library changes or a run starts or ends
+        self.source_checks = None  # agent.source_match's SourceChecks: whether a kept program's code is its blocks'
         self._lock = threading.RLock()
 
     # -- requests
@@ -111,7 +114,8 @@ class Agent:
 
     def _op_pair(self, client, request):
         name = request.get("name")
-        paired = self.pairings.pair(request.get("code"), name if isinstance(name, str) and name else client.name)
+        paired = self.pairings.pair(request.get("code"), name if isinstance(name, str) and name else client.name,
+                                    request.get("role"))
         client.paired = paired
         return {"client": paired.id, "key": base64.b64encode(paired.key).decode("ascii"), "role": paired.role,
                 "agent": self.name}
@@ -136,7 +140,9 @@ class Agent:
                 raise AgentRefusal("agent_program_running", name=name)
             self._may_change(client, name)
             about = self.library.store(checked, client.name, {"client": client.paired.id, "role": client.paired.role})
-        self._changed()
+        if self.source_checks is not None:
+            self.source_checks.check_later(about)
+        self.changed()
         return {"program": about}
 
     def _op_source(self, client, request):
@@ -160,7 +166,7 @@ class Agent:
             if self.controller is not None and not self._may_control(self.controller):
                 self._hand_control_on()
             self.publish({"event": "run", "state": "started", "program": name})
-            self._changed()
+            self.changed()
             return {"run": self.run.snapshot()}
 
     def _op_stop(self, client, request):
@@ -177,7 +183,7 @@ class Agent:
                 raise AgentRefusal("agent_program_running", name=name)
             self._may_change(client, name)
             self.library.delete(name)
-        self._changed()
+        self.changed()
         return {}
 
     def _op_attach(self, client, request):
@@ -264,7 +270,7 @@ class Agent:
     def check_pairings(self):
         """Close the connections of clients revoked since the last look (call it now and then: the alive beat)."""
         version = self.pairings.version()
-        if version == getattr(self, "_pairings_version", None):
+        if version == self._pairings_version:
             return
         self._pairings_version = version
         for client in list(self.clients):
@@ -303,9 +309,10 @@ class Agent:
             if self.run is run:
                 self.run = None
                 self.started_by = None
-        self._changed()
+        self.changed()
 
-    def _changed(self):
+    def changed(self):
+        """Tell the listeners the library, the run or a program's check changed."""
         for listener in list(self.listeners):
             listener()
 
@@ -358,6 +365,8 @@ class Agent:
         run = self.run
         if run is not None:
             run.end()
+        if self.source_checks is not None:
+            self.source_checks.close()
 
 
 def _owner(about: dict) -> str:
