@@ -11,8 +11,12 @@ BLOCKLY   := resources/blockly/vendor/.version
 # Tests and benchmarks run as root in CI, where Chromium's sandbox cannot start
 # (the app itself turns the sandbox off only when it runs as root).
 TEST_ENV  := QTWEBENGINE_DISABLE_SANDBOX=1 QT_QPA_PLATFORM=offscreen
+# `make test` runs the suite shuffled, in the order of this seed (pytest-randomly prints it in the header):
+# the same order for the same commit, so CI gives the same answer twice; `make test TEST_SEED=N` repeats
+# another run's order. Moved only after a whole run with the new seed was green (docs/decisions/038).
+TEST_SEED ?= 2911
 
-.PHONY: setup ros2 run test bench clean runtime
+.PHONY: setup ros2 run test test-shuffled bench clean runtime
 
 setup: $(STAMP_SYS) $(STAMP_PY) $(BLOCKLY)
 
@@ -46,7 +50,11 @@ run: setup
 test: setup ros2
 	$(VENV)/bin/ruff check .
 	$(TEST_ENV) $(VENV)/bin/lint-imports
-	$(TEST_ENV) $(PY) -m pytest
+	$(TEST_ENV) $(PY) -m pytest -p randomly --randomly-seed=$(TEST_SEED)
+
+# A new order each time (its seed printed in the header): what the pinned seed does not show.
+test-shuffled: setup ros2
+	$(TEST_ENV) $(PY) -m pytest -p randomly
 
 # Byte-compiled first, as an installed Rockly is (the bare-Blockly baseline's PySide6 is too).
 bench: setup ros2

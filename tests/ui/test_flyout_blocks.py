@@ -24,6 +24,7 @@ FLYOUT_OPEN = "Blockly.getMainWorkspace().getFlyout().isVisible()"
 TWO_FRAMES = ("(window.rocklyFrames = 0, requestAnimationFrame(() => requestAnimationFrame("
               "() => { window.rocklyFrames = 2; })), true)")
 GRAB = 12  # px right of and below the flyout block's corner, where the mouse takes it
+FOLLOWED = 1.5  # px: a dragged block this near to where the mouse holds it has followed the mouse
 
 
 def frames_passed(qtbot, view):
@@ -57,6 +58,34 @@ def mouse_to(page, start, end, steps=8):
                                      round(start[1] + (end[1] - start[1]) * step / steps)))
 
 
+def block_follows(qtbot, view, mouse):
+    """Wait until the block being dragged has its corner GRAB px above and left of ``mouse``: the page took the move."""
+    def followed():
+        dragged = run_js(qtbot, view, DRAGGED)
+        return dragged is not None and all(abs(dragged[i] + GRAB - mouse[i]) <= FOLLOWED for i in (0, 1))
+    qtbot.waitUntil(followed, timeout=5000)
+
+
+def drag_to(qtbot, view, page, start, aim, steps=8):
+    """Move the mouse from ``start`` towards where ``aim()`` says, as a hand does: a step at a time, each one
+    followed by the dragged block before the next; where the target moved meanwhile, on to where it is now.
+    Returns where the mouse ends."""
+    mouse = start
+    for _attempt in range(3):
+        target = aim()
+        if target == mouse:
+            return mouse
+        for step in range(1, steps + 1):
+            mouse = (round(start[0] + (target[0] - start[0]) * step / steps),
+                     round(start[1] + (target[1] - start[1]) * step / steps))
+            QTest.mouseMove(page, QPoint(*mouse))
+            block_follows(qtbot, view, mouse)
+        start = mouse
+        frames_passed(qtbot, view)
+    assert aim() == mouse, "the program kept moving while the block was dragged to it"
+    return mouse
+
+
 @pytest.mark.parametrize("stage", [False, True], ids=["normal", "stage"])
 def test_a_block_dragged_from_the_flyout_lands_where_it_is_dropped_and_snaps_on(qtbot, driver, stage):
     window = editor_with_program(qtbot, driver, stage)
@@ -69,17 +98,18 @@ def test_a_block_dragged_from_the_flyout_lands_where_it_is_dropped_and_snaps_on(
     mouse_to(page, press, (press[0] + 40, press[1] + 40))                 # the drag starts: the flyout closes
     qtbot.waitUntil(lambda: run_js(qtbot, view, DRAGGED) is not None and not run_js(qtbot, view, FLYOUT_OPEN),
                     timeout=5000)
+    block_follows(qtbot, view, (press[0] + 40, press[1] + 40))
     frames_passed(qtbot, view)
     screenshot(window.editor, f"drop-{'stage' if stage else 'normal'}-dragging")
-    last = run_js(qtbot, view, LAST_OF_PROGRAM % first)                        # where the person sees the program now
-    target = (round(last["left"] + GRAB), round(last["bottom"] + GRAB))
-    mouse_to(page, (press[0] + 40, press[1] + 40), target)
-    frames_passed(qtbot, view)
-    dragged = run_js(qtbot, view, DRAGGED)
-    assert abs(dragged[0] + GRAB - target[0]) < 30 and abs(dragged[1] + GRAB - target[1]) < 30, (dragged, target)
+
+    def below_the_program():  # where the person sees the program's last block now, and just below it
+        last = run_js(qtbot, view, LAST_OF_PROGRAM % first)
+        return round(last["left"] + GRAB), round(last["bottom"] + GRAB)
+    target = drag_to(qtbot, view, page, (press[0] + 40, press[1] + 40), below_the_program)
+    last_id = run_js(qtbot, view, LAST_OF_PROGRAM % first)["id"]
     QTest.mouseRelease(page, Qt.MouseButton.LeftButton, pos=QPoint(*target))
-    qtbot.waitUntil(lambda: run_js(qtbot, view, DRAGGED) is None, timeout=5000)
-    after = run_js(qtbot, view, f"(() => {{ const next = Blockly.getMainWorkspace().getBlockById({last['id']!r})"
+    qtbot.waitUntil(lambda: run_js(qtbot, view, DRAGGED) is None, timeout=5000)   # Blockly's drag has ended
+    after = run_js(qtbot, view, f"(() => {{ const next = Blockly.getMainWorkspace().getBlockById({last_id!r})"
                                 ".getNextBlock(); return next && next.type; })()")
     assert after == taken["type"]
     frames_passed(qtbot, view)

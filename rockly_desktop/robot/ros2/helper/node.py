@@ -2,9 +2,10 @@
 
 Started by ``robot.ros2.client.Ros2Helper`` with ``.venv-ros2``'s Python (which imports
 ``rockly_desktop`` from Rockly's folder and calls ``main``); it imports rclpy, this package's
-modules and ``robot.ros2.wire`` only. Requests come as ``wire`` frames on stdin; the node
-spins in its own thread (subscription, feedback and result callbacks), waits that may take a
-while (a service or action server to appear) run in a small pool, everything else inline.
+modules, ``robot.ros2.wire`` and the frame of stamped commands (``robot.wrappers.ros_versions``)
+only. Requests come as ``wire`` frames on stdin; the node spins in its own thread (subscription,
+feedback and result callbacks), waits that may take a while (a service or action server to appear)
+run in a small pool, everything else inline.
 
 A thread of its own says it is alive every ``wire.HEARTBEAT_SECONDS`` (Rockly ends a helper
 that falls silent). When stdin ends (Rockly quit or died) or SIGTERM comes, its last act is the
@@ -35,6 +36,7 @@ from rockly_desktop.robot.ros2.helper.ros_values import (
     to_parameter_value,
 )
 from rockly_desktop.robot.ros2.helper.topic_reader import TopicReader
+from rockly_desktop.robot.wrappers.ros_versions import FRAME_ID
 
 FIRST_PUBLISH_WAIT = 2.0  # a new publisher waits this long for the graph's subscribers to match
 ACTION_SERVER_WAIT = 5.0
@@ -550,6 +552,15 @@ class Helper:
         self.sim.goal_end(gid, status, result, text)
 
     # --- the end
+    def _zero(self, message_class):
+        """An all-zero ``message_class``; a stamped one (a TwistStamped) stamped now, in the frame Rockly's stamped
+        commands are given in, as every command before it was (a robot may drop a command stamped at 0)."""
+        message = message_class()
+        if message_class.get_fields_and_field_types().get("header") == "std_msgs/Header":
+            message.header.stamp = self.node.get_clock().now().to_msg()
+            message.header.frame_id = FRAME_ID
+        return message
+
     def do_safe_stop(self):
         """The profile's safe stop, sent and (briefly) waited for delivery: the helper's last act."""
         for action in self.safe_stop:
@@ -558,7 +569,7 @@ class Helper:
                     body = action["publish"]
                     current = self._publishers.get(body["topic"])
                     if current and current[1] is not interface_class(body["type"], "msg") and not body.get("message"):
-                        current[0].publish(current[1]())  # an all-zero stop in the type the robot was sent
+                        current[0].publish(self._zero(current[1]))  # a stop in the type the robot was sent
                     else:
                         self.op_publish(body["topic"], body["type"], dict(body.get("message") or {}))
                     self._publishers[body["topic"]][0].wait_for_all_acked(rclpy.duration.Duration(seconds=0.5))
