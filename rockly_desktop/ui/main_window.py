@@ -226,7 +226,8 @@ class MainWindow(QMainWindow):
 
         kiosk = Kiosk(self, start_program, settings=self.settings, language=lambda: self.language, stage=self.stage,
                       docks=self.docks, editor=self.editor, document=self.document, files=self.files,
-                      replay=self.replay, runs=self.runs, robots=self.robots, run_toolbar=lambda: self.run_toolbar)
+                      replay=self.replay, runs=self.runs, robots=self.robots, run_toolbar=lambda: self.run_toolbar,
+                      lessons=self.lessons)
         self.teacher_gate = kiosk.ask_teacher
         self.gate_asks_pin = True
         return kiosk
@@ -500,7 +501,9 @@ class MainWindow(QMainWindow):
         dialog = PreferencesDialog(self.language, self, self.profile, self.settings.teacher,
                                    reset_before_run=self.settings.reset_before_run, kiosk=self.settings.kiosk,
                                    kiosk_mode=self.settings.kiosk_mode, block_look=self.settings.block_look,
-                                   pin_given=self.gate_asks_pin)
+                                   pin_given=self.gate_asks_pin, challenges=[
+                                       (lesson.id, lesson.title(self.language))
+                                       for lesson in self.lessons.library.for_robot(self.profile.id)])
         if dialog.exec():
             self.settings.reset_before_run = dialog.reset_before_run
             self.settings.block_look = dialog.block_look

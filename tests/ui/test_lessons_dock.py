@@ -49,6 +49,13 @@ def start_lesson(qtbot, dock, lesson_id):
     qtbot.waitUntil(lambda: dock.lesson is not None and dock.lesson.id == lesson_id, timeout=15000)
 
 
+def highlighted(qtbot, window) -> list:
+    """The ids of the blocks glowing as the running (or replayed) one."""
+    return run_js(qtbot, window.editor, "Blockly.getMainWorkspace().getAllBlocks(false)"
+                                        ".filter(b => b.getSvgRoot().classList.contains('blocklyHighlighted'))"
+                                        ".map(b => b.id)")
+
+
 def marked_types(qtbot, window) -> list:
     """The types of the canvas blocks and toolbox categories the page marks as the step's."""
     return run_js(qtbot, window.editor, """(() => {
@@ -207,7 +214,16 @@ def test_a_failed_check_opens_the_replay_at_the_failing_moment(qtbot, window):
     assert not dock.next_lesson_button.isVisible()
     qtbot.waitUntil(lambda: window.replay_bar.isVisible(), timeout=CHECK_MS)
     qtbot.waitUntil(lambda: abs(window.replay_bar.position - result.failing[0]) < 0.2, timeout=15000)
+    if result.failing[1]:  # the responsible block glows
+        qtbot.waitUntil(lambda: highlighted(qtbot, window) == [result.failing[1]], timeout=15000)
+    assert dock.verdict.text().startswith("Not yet.")  # the replay's retitling of the docks keeps the results
+    assert [dock.results.item(i).text() for i in range(dock.results.count())] == texts
     assert state(qtbot, window)["workspace"] == before
+
+    window.set_language("de")  # the results are said again in German
+    qtbot.waitUntil(lambda: dock.verdict.text().startswith("Noch nicht."), timeout=15000)
+    german = [dock.results.item(i).text() for i in range(dock.results.count())]
+    assert len(german) == len(texts) and german != texts
 
 
 def test_the_dock_in_german(qtbot, german_window):

@@ -66,6 +66,7 @@ class LessonGuide(QObject):
         dock.sig_step.connect(self._show_step)
         dock.sig_check.connect(self.check)
         replay.sig_opened.connect(self._show_failing)
+        editor.sig_ready.connect(lambda: self._step is not None and self._show_step(self._step))  # a new page
 
     @property
     def library(self) -> LessonLibrary:
@@ -91,6 +92,20 @@ class LessonGuide(QObject):
             self.files.open_copy(lesson.program, lesson.title(self._language()), then=replaced)
         else:
             self.files.maybe_save(then=lambda ok: ok and (self.files.new(ask=False), replaced(True)))
+
+    def start_challenge(self, lesson_id: str):
+        """A new kiosk visitor: no progress, and the lesson ``lesson_id`` (the challenge of the day, "" for none;
+        one of another robot is none) shown from its first step in the dock, brought to the front."""
+        self.progress.forget_visitor()
+        lesson = self.library.get(lesson_id) if lesson_id else None
+        if lesson is not None and lesson.robot != self._profile().id:
+            lesson = None
+        if lesson is not None or self.dock.isVisible():  # a hidden dock's list follows once it shows
+            self.follow_robot()
+        self.dock.begin(lesson, challenge=lesson is not None)
+        if lesson is not None:
+            self.dock.show()
+            self.dock.raise_()
 
     def _show_step(self, step):
         self._step = step

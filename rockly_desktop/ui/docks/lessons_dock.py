@@ -26,6 +26,7 @@ from rockly_desktop.lessons.schema import LEVELS
 from rockly_desktop.ui.texts import tr
 
 PASSED, FAILED = "#2e7d32", "#c62828"
+STEP_TEXT_HEIGHT = 110  # px
 
 
 class LessonsDock(QDockWidget):
@@ -39,6 +40,8 @@ class LessonsDock(QDockWidget):
         super().__init__(title, parent)
         self.language = "en"
         self.lesson = None  # the open lesson
+        self.challenge = False  # the open lesson is a kiosk's challenge of the day
+        self._shown = None  # the check result shown (a CheckResult), or the text of why none could be made
         self.step_index = 0
         self._hints_shown = 0
         self._lessons = []
@@ -55,6 +58,7 @@ class LessonsDock(QDockWidget):
         self.step_heading.setStyleSheet("font-weight: bold")
         self.step_text = QTextBrowser(objectName="lesson_step_text")
         self.step_text.setOpenExternalLinks(False)
+        self.step_text.setMaximumHeight(STEP_TEXT_HEIGHT)  # a step is a few short sentences: results get the room
         self.hints = QLabel(objectName="lesson_hints", wordWrap=True)
         self.hints.setStyleSheet("color: #1f5fa8")
         self.hint_button = QPushButton(objectName="lesson_hint")
@@ -81,7 +85,7 @@ class LessonsDock(QDockWidget):
         column.addWidget(self.start_button)
         column.addWidget(self.title)
         column.addWidget(self.step_heading)
-        column.addWidget(self.step_text, 3)
+        column.addWidget(self.step_text, 1)
         column.addWidget(self.hints)
         steps = QHBoxLayout()
         for button in (self.back_button, self.hint_button, self.next_button):
@@ -89,7 +93,7 @@ class LessonsDock(QDockWidget):
         column.addLayout(steps)
         column.addWidget(self.check_button)
         column.addWidget(self.verdict)
-        column.addWidget(self.results, 2)
+        column.addWidget(self.results, 3)
         column.addWidget(self.next_lesson_button)
         return page
 
@@ -150,9 +154,10 @@ class LessonsDock(QDockWidget):
 
     # --- the open lesson ------------------------------------------------------------------
 
-    def begin(self, lesson):
-        """Show ``lesson`` (None: none) from its first step, no results yet."""
-        self.lesson = lesson
+    def begin(self, lesson, challenge: bool = False):
+        """Show ``lesson`` (None: none) from its first step, no results yet; a kiosk's ``challenge`` of the day
+        says so in its title."""
+        self.lesson, self.challenge = lesson, challenge
         self.clear_result()
         self.show_lessons(self._lessons, self._passed)
         self.show_step(0)
@@ -163,8 +168,7 @@ class LessonsDock(QDockWidget):
         self.step_index = max(0, min(index, len(steps) - 1))
         self._hints_shown = 0
         step = steps[self.step_index] if steps else None
-        self.title.setText(self.lesson.title(self.language) if self.lesson is not None else
-                           tr("lessons_choose", self.language))
+        self.title.setText(self._title())
         self.step_heading.setText(tr("lessons_step", self.language, number=self.step_index + 1, steps=len(steps),
                                      title=step.title) if step else "")
         self.step_text.setMarkdown(step.text if step else "")
@@ -174,6 +178,12 @@ class LessonsDock(QDockWidget):
         self.next_button.setEnabled(step is not None and self.step_index < len(steps) - 1)
         self.check_button.setEnabled(self.lesson is not None)
         self.sig_step.emit(step)
+
+    def _title(self) -> str:
+        if self.lesson is None:
+            return tr("lessons_choose", self.language)
+        title = self.lesson.title(self.language)
+        return tr("lessons_challenge", self.language, title=title) if self.challenge else title
 
     def _step(self):
         steps = self.lesson.steps(self.language) if self.lesson is not None else []
@@ -201,6 +211,7 @@ class LessonsDock(QDockWidget):
 
     def clear_result(self):
         """Forget the last check's results."""
+        self._shown = None
         self.verdict.setText("")
         self.verdict.setStyleSheet("")
         self.results.clear()
@@ -210,6 +221,7 @@ class LessonsDock(QDockWidget):
     def show_result(self, result):
         """Show a ``check.CheckResult``: each goal passed or not, in the child's words; success offers the next
         lesson."""
+        self._shown = result
         self.results.clear()
         for goal in result.goals:
             item = QListWidgetItem(("✓ " if goal.passed else "✗ ") + goal.words(self.language))
@@ -235,6 +247,7 @@ class LessonsDock(QDockWidget):
 
     def show_problem(self, text: str):
         """Say why the check could not run."""
+        self._shown = text
         self.results.clear()
         self.results.hide()
         self.verdict.setText(text)
@@ -250,7 +263,10 @@ class LessonsDock(QDockWidget):
         self.back_button.setText(tr("lessons_back", language))
         self.next_button.setText(tr("lessons_next", language))
         self.check_button.setText(tr("lessons_check", language))
-        index = self.step_index
+        shown = self._shown
         self.show_lessons(self._lessons, self._passed)
-        self.clear_result()
-        self.show_step(index)
+        self.show_step(self.step_index)
+        if isinstance(shown, str):
+            self.show_problem(shown)  # said in the language it was said in: the error's own words
+        elif shown is not None:
+            self.show_result(shown)
