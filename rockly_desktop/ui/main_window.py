@@ -148,8 +148,7 @@ class MainWindow(QMainWindow):
                                    lambda: self.profile.toolbox(self.language, *self._toolbox_choice()),
                                    lambda: self.language, self)
         self.lessons_dock.visibilityChanged.connect(lambda visible: visible and self.lessons.follow_robot())
-        self.document.sig_profile_changed.connect(lambda _profile: self.lessons_dock.isVisible()
-                                                  and self.lessons.follow_robot())
+        self.document.sig_profile_changed.connect(lambda _profile: self.lessons.follow_robot())
         self.stage = StageLayout(self, settings, self.editor, self.robots, self.docks)
         self._build_menus()
         self.document.sig_profile_changed.connect(self._on_profile_changed)

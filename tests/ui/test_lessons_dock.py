@@ -154,6 +154,11 @@ def test_a_step_narrows_the_teachers_level_and_never_widens_it(qtbot, window, us
     start_lesson(qtbot, dock, "drive-once")
     qtbot.waitUntil(lambda: toolbox_types(qtbot, window) == ["turtlebot_drive", "turtlebot_turn"], timeout=15000)
 
+    dock.hide()  # another robot chosen while the dock is away: its lesson closes, the toolbox is the robot's own
+    choose_robot(qtbot, window, "hobbit")
+    assert dock.lesson is None
+    qtbot.waitUntil(lambda: "hobbit_emo" in toolbox_types(qtbot, window), timeout=15000)
+
 
 def test_opening_a_lesson_asks_before_replacing_unsaved_work(qtbot, window, answer_prompts):
     choose_robot(qtbot, window, "hobbit")

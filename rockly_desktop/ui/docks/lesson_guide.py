@@ -76,11 +76,13 @@ class LessonGuide(QObject):
         return self._library
 
     def follow_robot(self):
-        """List the chosen robot's lessons; a lesson of another robot is closed."""
+        """Close a lesson of another robot than the chosen one, and list the chosen robot's lessons when the dock
+        shows (a hidden dock's list is made once it shows)."""
         robot = self._profile().id
         if self.dock.lesson is not None and self.dock.lesson.robot != robot:
             self.dock.begin(None)
-        self.dock.show_lessons(self.library.for_robot(robot), self.progress.passed)
+        if self.dock.isVisible():
+            self.dock.show_lessons(self.library.for_robot(robot), self.progress.passed)
 
     def open(self, lesson):
         """Open ``lesson``: its start program (or an empty one) replaces the program on screen, after asking to
@@ -100,12 +102,11 @@ class LessonGuide(QObject):
         lesson = self.library.get(lesson_id) if lesson_id else None
         if lesson is not None and lesson.robot != self._profile().id:
             lesson = None
-        if lesson is not None or self.dock.isVisible():  # a hidden dock's list follows once it shows
-            self.follow_robot()
-        self.dock.begin(lesson, challenge=lesson is not None)
         if lesson is not None:
             self.dock.show()
             self.dock.raise_()
+        self.follow_robot()
+        self.dock.begin(lesson, challenge=lesson is not None)
 
     def _show_step(self, step):
         self._step = step

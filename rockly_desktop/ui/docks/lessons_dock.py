@@ -27,6 +27,7 @@ from rockly_desktop.ui.texts import tr
 
 PASSED, FAILED = "#2e7d32", "#c62828"
 STEP_TEXT_HEIGHT = 110  # px
+RESULTS_HEIGHT = 100  # px: four or five goals' words in sight
 
 
 class LessonsDock(QDockWidget):
@@ -53,12 +54,11 @@ class LessonsDock(QDockWidget):
         self.start_button = QPushButton(objectName="lesson_start")
         self.start_button.clicked.connect(lambda: self._open_item(self.lesson_list.currentItem()))
         self.title = QLabel(objectName="lesson_title", wordWrap=True)
-        self.title.setStyleSheet("font-weight: bold; font-size: 14pt")
+        self.title.setStyleSheet("font-weight: bold; font-size: 13pt")
         self.step_heading = QLabel(objectName="lesson_step_heading", wordWrap=True)
         self.step_heading.setStyleSheet("font-weight: bold")
         self.step_text = QTextBrowser(objectName="lesson_step_text")
         self.step_text.setOpenExternalLinks(False)
-        self.step_text.setMaximumHeight(STEP_TEXT_HEIGHT)  # a step is a few short sentences: results get the room
         self.hints = QLabel(objectName="lesson_hints", wordWrap=True)
         self.hints.setStyleSheet("color: #1f5fa8")
         self.hint_button = QPushButton(objectName="lesson_hint")
@@ -73,6 +73,7 @@ class LessonsDock(QDockWidget):
         self.verdict = QLabel(objectName="lesson_verdict", wordWrap=True)
         self.results = QListWidget(objectName="lesson_results")
         self.results.setWordWrap(True)
+        self.results.setMinimumHeight(RESULTS_HEIGHT)
         self.next_lesson_button = QPushButton(objectName="lesson_next_lesson")
         self.next_lesson_button.clicked.connect(self._open_next)
         self.setWidget(self._layout())
@@ -81,7 +82,7 @@ class LessonsDock(QDockWidget):
     def _layout(self) -> QWidget:
         page = QWidget(self)
         column = QVBoxLayout(page)
-        column.addWidget(self.lesson_list, 2)
+        column.addWidget(self.lesson_list, 1)
         column.addWidget(self.start_button)
         column.addWidget(self.title)
         column.addWidget(self.step_heading)
@@ -173,6 +174,7 @@ class LessonsDock(QDockWidget):
                                      title=step.title) if step else "")
         self.step_text.setMarkdown(step.text if step else "")
         self.step_text.setVisible(step is not None)
+        self._fit_step_text()
         self._show_hints(step)
         self.back_button.setEnabled(step is not None and self.step_index > 0)
         self.next_button.setEnabled(step is not None and self.step_index < len(steps) - 1)
@@ -184,6 +186,18 @@ class LessonsDock(QDockWidget):
             return tr("lessons_choose", self.language)
         title = self.lesson.title(self.language)
         return tr("lessons_challenge", self.language, title=title) if self.challenge else title
+
+    def _fit_step_text(self):
+        """As tall as the step's few sentences (at most STEP_TEXT_HEIGHT): the rest is the results' room."""
+        document = self.step_text.document()
+        document.setTextWidth(self.step_text.viewport().width())
+        frame = 2 * self.step_text.frameWidth() + int(document.documentMargin())
+        self.step_text.setFixedHeight(min(STEP_TEXT_HEIGHT, int(document.size().height()) + frame))
+
+    def resizeEvent(self, event):
+        """Qt override: the step's text fits its new width."""
+        super().resizeEvent(event)
+        self._fit_step_text()
 
     def _step(self):
         steps = self.lesson.steps(self.language) if self.lesson is not None else []
