@@ -39,7 +39,10 @@ def lesson_item(dock, lesson_id):
 
 
 def start_lesson(qtbot, dock, lesson_id):
-    """Choose the lesson in the list and click "Start lesson", as a person does."""
+    """Choose the lesson in the list and click "Start lesson", as a person does (after "All lessons" when a
+    lesson is open)."""
+    if dock.all_button.isVisible() and not dock.all_button.isChecked():
+        qtbot.mouseClick(dock.all_button, Qt.MouseButton.LeftButton)
     item = lesson_item(dock, lesson_id)
     dock.lesson_list.scrollToItem(item)
     rect = dock.lesson_list.visualItemRect(item)
@@ -143,6 +146,10 @@ def test_lessons_listed_by_level_with_steps_hints_marks_and_a_restricted_toolbox
     qtbot.waitUntil(lambda: marked_types(qtbot, window) == {"blocks": [], "categories": 0}, timeout=15000)
     qtbot.mouseClick(dock.back_button, Qt.MouseButton.LeftButton)
     assert dock.step_heading.text() == "Step 1 of 2: Only two blocks"
+
+    assert not dock.lesson_list.isVisible()  # an open lesson has the dock's room; "All lessons" gives the list back
+    qtbot.mouseClick(dock.all_button, Qt.MouseButton.LeftButton)
+    assert dock.lesson_list.isVisible() and dock.start_button.isVisible()
 
 
 def test_a_step_narrows_the_teachers_level_and_never_widens_it(qtbot, window, user_lesson):

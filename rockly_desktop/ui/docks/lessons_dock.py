@@ -6,15 +6,17 @@ asks ``sig_open(lesson)``; ``begin(lesson)`` then shows its first step. Each ste
 ``sig_step(step)`` (the window marks its blocks and limits the toolbox); Check asks ``sig_check(lesson)``
 and ``show_result`` / ``show_problem`` say how it went; "Next lesson" asks ``sig_open`` for the next one.
 """
-from PySide6.QtCore import Qt, Signal
+from PySide6.QtCore import Qt, QTimer, Signal
 from PySide6.QtGui import QBrush, QColor
 from PySide6.QtWidgets import (
     QDockWidget,
+    QFrame,
     QHBoxLayout,
     QLabel,
     QListWidget,
     QListWidgetItem,
     QPushButton,
+    QScrollArea,
     QTextBrowser,
     QTreeWidget,
     QTreeWidgetItem,
@@ -53,6 +55,10 @@ class LessonsDock(QDockWidget):
         self.lesson_list.currentItemChanged.connect(lambda *_: self._follow_choice())
         self.start_button = QPushButton(objectName="lesson_start")
         self.start_button.clicked.connect(lambda: self._open_item(self.lesson_list.currentItem()))
+        self.all_button = QPushButton(objectName="lesson_all", checkable=True)  # the list again, over an open lesson
+        self.all_button.toggled.connect(self._show_list)
+        self.prompt = QLabel(objectName="lesson_prompt", wordWrap=True)  # what to do while no lesson is open
+        self.lesson_part = QWidget(objectName="lesson_part")  # the open lesson: its steps, Check and the results
         self.title = QLabel(objectName="lesson_title", wordWrap=True)
         self.title.setStyleSheet("font-weight: bold; font-size: 13pt")
         self.step_heading = QLabel(objectName="lesson_step_heading", wordWrap=True)
@@ -76,26 +82,35 @@ class LessonsDock(QDockWidget):
         self.results.setMinimumHeight(RESULTS_HEIGHT)
         self.next_lesson_button = QPushButton(objectName="lesson_next_lesson")
         self.next_lesson_button.clicked.connect(self._open_next)
-        self.setWidget(self._layout())
+        scroller = QScrollArea(self, widgetResizable=True, frameShape=QFrame.Shape.NoFrame)
+        scroller.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)  # the texts wrap instead
+        scroller.setWidget(self._layout())  # its own minimum is small: the docks it shares tabs with keep their sizes
+        self.setWidget(scroller)
+        self.all_button.hide()
         self.show_lessons([], self._passed)
 
     def _layout(self) -> QWidget:
         page = QWidget(self)
         column = QVBoxLayout(page)
+        column.addWidget(self.prompt)
+        column.addWidget(self.all_button)
         column.addWidget(self.lesson_list, 1)
         column.addWidget(self.start_button)
-        column.addWidget(self.title)
-        column.addWidget(self.step_heading)
-        column.addWidget(self.step_text, 1)
-        column.addWidget(self.hints)
+        column.addWidget(self.lesson_part, 3)
+        lesson = QVBoxLayout(self.lesson_part)
+        lesson.setContentsMargins(0, 0, 0, 0)
+        lesson.addWidget(self.title)
+        lesson.addWidget(self.step_heading)
+        lesson.addWidget(self.step_text, 1)
+        lesson.addWidget(self.hints)
         steps = QHBoxLayout()
         for button in (self.back_button, self.hint_button, self.next_button):
             steps.addWidget(button)
-        column.addLayout(steps)
-        column.addWidget(self.check_button)
-        column.addWidget(self.verdict)
-        column.addWidget(self.results, 3)
-        column.addWidget(self.next_lesson_button)
+        lesson.addLayout(steps)
+        lesson.addWidget(self.check_button)
+        lesson.addWidget(self.verdict)
+        lesson.addWidget(self.results, 3)
+        lesson.addWidget(self.next_lesson_button)
         return page
 
     # --- the list -------------------------------------------------------------------------
@@ -135,6 +150,10 @@ class LessonsDock(QDockWidget):
     def _follow_choice(self):
         self.start_button.setEnabled(self._chosen() is not None)
 
+    def _show_list(self, shown: bool):
+        self.lesson_list.setVisible(shown)
+        self.start_button.setVisible(shown)
+
     def _open_item(self, item):
         lesson = item.data(0, Qt.ItemDataRole.UserRole) if item is not None else None
         if lesson is not None:
@@ -159,6 +178,10 @@ class LessonsDock(QDockWidget):
         """Show ``lesson`` (None: none) from its first step, no results yet; a kiosk's ``challenge`` of the day
         says so in its title."""
         self.lesson, self.challenge = lesson, challenge
+        self.all_button.setVisible(lesson is not None)
+        self.all_button.setChecked(False)
+        self._show_list(lesson is None)  # an open lesson has the room; "All lessons" shows the list again
+        self.widget().verticalScrollBar().setValue(0)
         self.clear_result()
         self.show_lessons(self._lessons, self._passed)
         self.show_step(0)
@@ -170,6 +193,9 @@ class LessonsDock(QDockWidget):
         self._hints_shown = 0
         step = steps[self.step_index] if steps else None
         self.title.setText(self._title())
+        self.prompt.setText(tr("lessons_choose", self.language))
+        self.prompt.setVisible(self.lesson is None)
+        self.lesson_part.setVisible(self.lesson is not None)
         self.step_heading.setText(tr("lessons_step", self.language, number=self.step_index + 1, steps=len(steps),
                                      title=step.title) if step else "")
         self.step_text.setMarkdown(step.text if step else "")
@@ -183,7 +209,7 @@ class LessonsDock(QDockWidget):
 
     def _title(self) -> str:
         if self.lesson is None:
-            return tr("lessons_choose", self.language)
+            return ""
         title = self.lesson.title(self.language)
         return tr("lessons_challenge", self.language, title=title) if self.challenge else title
 
@@ -258,6 +284,12 @@ class LessonsDock(QDockWidget):
             self.next_lesson_button.setText(tr("lessons_next_lesson", self.language,
                                                title=following.title(self.language)))
         self.show_lessons(self._lessons, self._passed)
+        self._bring_results_in_sight()
+
+    def _bring_results_in_sight(self):
+        """Scroll the dock to the verdict and its results (once they are laid out)."""
+        shown = self.next_lesson_button if self.next_lesson_button.isVisibleTo(self) else self.results
+        QTimer.singleShot(0, self, lambda: self.widget().ensureWidgetVisible(shown, 0, 0))
 
     def show_problem(self, text: str):
         """Say why the check could not run."""
@@ -273,6 +305,7 @@ class LessonsDock(QDockWidget):
         """Say everything in ``language`` (the title comes with the other docks')."""
         self.language = language
         self.start_button.setText(tr("lessons_start", language))
+        self.all_button.setText(tr("lessons_all", language))
         self.hint_button.setText(tr("lessons_show_hint", language))
         self.back_button.setText(tr("lessons_back", language))
         self.next_button.setText(tr("lessons_next", language))
