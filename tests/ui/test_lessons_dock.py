@@ -70,6 +70,16 @@ def marked_types(qtbot, window) -> list:
     })()""")
 
 
+def flyout_marked(qtbot, window) -> list:
+    """The types of the blocks the open drawer (flyout) shows marked as the step's."""
+    return run_js(qtbot, window.editor, """(() => {
+        const flyout = Blockly.getMainWorkspace().getFlyout();
+        if (!flyout || !flyout.isVisible()) return [];
+        return [...new Set(flyout.getWorkspace().getAllBlocks(false)
+            .filter(b => b.getSvgRoot().classList.contains('rocklyLesson')).map(b => b.type))].sort();
+    })()""")
+
+
 def toolbox_types(qtbot, window) -> list:
     """Every block type the toolbox offers now."""
     return run_js(qtbot, window.editor, """(() => {
@@ -139,6 +149,10 @@ def test_lessons_listed_by_level_with_steps_hints_marks_and_a_restricted_toolbox
                     timeout=15000)
     marks = marked_types(qtbot, window)
     assert marks["categories"] >= 1 and marks["blocks"] and set(marks["blocks"]) == {"turtlebot_drive"}
+    # a drawer opened: its blocks of the step glow there too
+    run_js(qtbot, window.editor, "(() => { const tb = Blockly.getMainWorkspace().getToolbox(); "
+                                 "tb.setSelectedItem(tb.getToolboxItems()[0]); return true; })()")
+    qtbot.waitUntil(lambda: flyout_marked(qtbot, window) == ["turtlebot_drive"], timeout=15000)
 
     qtbot.mouseClick(dock.next_button, Qt.MouseButton.LeftButton)
     assert dock.step_heading.text() == "Step 2 of 2: Two" and not dock.next_button.isEnabled()
@@ -247,3 +261,23 @@ def test_the_dock_in_german(qtbot, german_window):
     assert dock.check_button.text() == "Prüfen"
     start_lesson(qtbot, dock, "turtlebot-square")
     assert dock.step_heading.text().startswith("Schritt 1 von ")
+
+
+def test_a_check_that_cannot_run_says_why_and_changes_nothing(qtbot, window):
+    choose_robot(qtbot, window, "hobbit")
+    dock = show_lessons(qtbot, window)
+    start_lesson(qtbot, dock, "hobbit-smile")
+    open_program(qtbot, window, PROGRAMS / "hobbit-smile" / "solution.rockly")
+    before = state(qtbot, window)["workspace"]
+    folder = Path(window.lessons._folder.name)  # where the checks' recordings go: a file now, so none can begin
+    shutil.rmtree(folder)
+    folder.write_text("not a folder")
+    try:
+        qtbot.mouseClick(dock.check_button, Qt.MouseButton.LeftButton)
+        qtbot.waitUntil(lambda: dock.verdict.text().startswith("The check could not run: "), timeout=CHECK_MS)
+        assert dock.check_button.isEnabled() and not dock.results.isVisible()
+        assert window.lessons.last_result is None and not window.replay_bar.isVisible()
+        assert state(qtbot, window)["workspace"] == before
+    finally:
+        folder.unlink()
+        folder.mkdir()
