@@ -150,6 +150,9 @@ class LessonGuide(QObject):
         if result.passed:
             self.progress.mark_passed(result.lesson)
         self.dock.set_checking(False)
+        if self.dock.lesson is None or self.dock.lesson.id != result.lesson:  # another lesson opened meanwhile
+            self.dock.show_lessons(self.library.for_robot(self._profile().id), self.progress.passed)
+            return
         self.dock.show_result(result)
         if not result.passed and result.failing is not None:
             self._failing = result.failing
