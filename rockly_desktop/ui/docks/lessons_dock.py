@@ -6,7 +6,7 @@ asks ``sig_open(lesson)``; ``begin(lesson)`` then shows its first step. Each ste
 ``sig_step(step)`` (the window marks its blocks and limits the toolbox); Check asks ``sig_check(lesson)``
 and ``show_result`` / ``show_problem`` say how it went; "Next lesson" asks ``sig_open`` for the next one.
 """
-from PySide6.QtCore import Qt, QTimer, Signal
+from PySide6.QtCore import QRect, Qt, QTimer, Signal
 from PySide6.QtGui import QBrush, QColor
 from PySide6.QtWidgets import (
     QDockWidget,
@@ -17,6 +17,7 @@ from PySide6.QtWidgets import (
     QListWidgetItem,
     QPushButton,
     QScrollArea,
+    QSizePolicy,
     QTextBrowser,
     QTreeWidget,
     QTreeWidgetItem,
@@ -29,7 +30,8 @@ from rockly_desktop.ui.texts import tr
 
 PASSED, FAILED = "#2e7d32", "#c62828"
 STEP_TEXT_HEIGHT = 110  # px
-RESULTS_HEIGHT = 100  # px: four or five goals' words in sight
+RESULTS_HEIGHT = 100  # px: the results' height, between half this and twice this
+LIST_HEIGHT = 120  # px
 
 
 class LessonsDock(QDockWidget):
@@ -51,6 +53,8 @@ class LessonsDock(QDockWidget):
         self._passed = lambda _lesson_id: False
         self.lesson_list = QTreeWidget(objectName="lesson_list")
         self.lesson_list.setHeaderHidden(True)
+        self.lesson_list.setMinimumHeight(LIST_HEIGHT)  # the leftover room, at least this: Start stays in sight
+        self.lesson_list.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Ignored)
         self.lesson_list.itemDoubleClicked.connect(lambda item: self._open_item(item))
         self.lesson_list.currentItemChanged.connect(lambda *_: self._follow_choice())
         self.start_button = QPushButton(objectName="lesson_start")
@@ -79,7 +83,6 @@ class LessonsDock(QDockWidget):
         self.verdict = QLabel(objectName="lesson_verdict", wordWrap=True)
         self.results = QListWidget(objectName="lesson_results")
         self.results.setWordWrap(True)
-        self.results.setMinimumHeight(RESULTS_HEIGHT)
         self.next_lesson_button = QPushButton(objectName="lesson_next_lesson")
         self.next_lesson_button.clicked.connect(self._open_next)
         scroller = QScrollArea(self, widgetResizable=True, frameShape=QFrame.Shape.NoFrame)
@@ -96,21 +99,23 @@ class LessonsDock(QDockWidget):
         column.addWidget(self.all_button)
         column.addWidget(self.lesson_list, 1)
         column.addWidget(self.start_button)
-        column.addWidget(self.lesson_part, 3)
+        column.addWidget(self.lesson_part, 1)
         lesson = QVBoxLayout(self.lesson_part)
         lesson.setContentsMargins(0, 0, 0, 0)
         lesson.addWidget(self.title)
         lesson.addWidget(self.step_heading)
         lesson.addWidget(self.step_text, 1)
         lesson.addWidget(self.hints)
-        steps = QHBoxLayout()
-        for button in (self.back_button, self.hint_button, self.next_button):
-            steps.addWidget(button)
+        steps = QHBoxLayout()  # two a row: a narrow dock (German words) keeps them whole
+        steps.addWidget(self.back_button)
+        steps.addWidget(self.next_button)
         lesson.addLayout(steps)
+        lesson.addWidget(self.hint_button)
         lesson.addWidget(self.check_button)
         lesson.addWidget(self.verdict)
-        lesson.addWidget(self.results, 3)
+        lesson.addWidget(self.results)
         lesson.addWidget(self.next_lesson_button)
+        lesson.addStretch(1)
         return page
 
     # --- the list -------------------------------------------------------------------------
@@ -221,9 +226,11 @@ class LessonsDock(QDockWidget):
         self.step_text.setFixedHeight(min(STEP_TEXT_HEIGHT, int(document.size().height()) + frame))
 
     def resizeEvent(self, event):
-        """Qt override: the step's text fits its new width."""
+        """Qt override: the step's text and the results fit their new width."""
         super().resizeEvent(event)
         self._fit_step_text()
+        if self.results.count():
+            self._fit_results()
 
     def _step(self):
         steps = self.lesson.steps(self.language) if self.lesson is not None else []
@@ -272,6 +279,7 @@ class LessonsDock(QDockWidget):
             item.setForeground(QBrush(QColor(FAILED)))
             self.results.addItem(item)
         self.results.show()
+        self._fit_results()
         if result.passed:
             self.verdict.setText(tr("lessons_passed", self.language))
             self.verdict.setStyleSheet(f"color: {PASSED}; font-weight: bold; font-size: 13pt")
@@ -286,10 +294,28 @@ class LessonsDock(QDockWidget):
         self.show_lessons(self._lessons, self._passed)
         self._bring_results_in_sight()
 
+    def _fit_results(self):
+        """As tall as the goals' words (RESULTS_HEIGHT to twice that): the verdict, the results and the next
+        lesson's button fit in sight together."""
+        metrics, width = self.results.fontMetrics(), max(40, self.results.viewport().width() - 8)
+        rows = sum(metrics.boundingRect(QRect(0, 0, width, 10000), Qt.TextFlag.TextWordWrap,
+                                        self.results.item(row).text()).height() + 2
+                   for row in range(self.results.count()))
+        wanted = rows + 2 * self.results.frameWidth() + 4
+        self.results.setFixedHeight(max(RESULTS_HEIGHT // 2, min(2 * RESULTS_HEIGHT, wanted)))
+
     def _bring_results_in_sight(self):
         """Scroll the dock to the verdict and its results (once they are laid out)."""
-        shown = self.next_lesson_button if self.next_lesson_button.isVisibleTo(self) else self.results
-        QTimer.singleShot(0, self, lambda: self.widget().ensureWidgetVisible(shown, 0, 0))
+        last = self.next_lesson_button if self.next_lesson_button.isVisibleTo(self) else self.results
+        def in_sight():
+            self.widget().ensureWidgetVisible(last, 0, 0)
+            self.widget().ensureWidgetVisible(self.verdict, 0, 0)
+
+        def fitted():  # the results' words wrap at their laid-out width: fit them, then scroll once laid out again
+            self._fit_results()
+            QTimer.singleShot(0, self, in_sight)
+
+        QTimer.singleShot(0, self, fitted)
 
     def show_problem(self, text: str):
         """Say why the check could not run."""
