@@ -537,6 +537,7 @@
       workspace.addChangeListener(onWorkspaceEvent);
       RocklyKeyNames.watch();
       workspace.addChangeListener(afterPlacing);
+      RocklyLessonMarks.watch(workspace);
       RocklyStage.install(workspace);
       window.addEventListener('resize', keepViewCorner);  // added after inject's own: runs after it
       makeHint(texts && texts.emptyHint);
@@ -595,6 +596,7 @@
     },
     setToolbox({toolbox}) {
       workspace.updateToolbox(toolbox);
+      RocklyLessonMarks.refresh(workspace);
       return true;
     },
     clear() {
@@ -616,6 +618,10 @@
       const block = id && workspace.getBlockById(id);
       if (block) workspace.scrollBoundsIntoView(block.getBoundingRectangleWithoutChildren());
       return true;
+    },
+    /** A lesson step's blocks marked in the toolbox, its flyout and on the canvas ([]: none); the types marked. */
+    markLessonBlocks({types}) {
+      return RocklyLessonMarks.set(workspace, types);
     },
     setBreakpoints({ids}) {
       setBreakpoints(ids);

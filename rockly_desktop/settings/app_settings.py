@@ -12,6 +12,7 @@ from PySide6.QtCore import QSettings
 from rockly_desktop.core.paths import recordings_dir
 from rockly_desktop.settings.kiosk import KioskSettings
 from rockly_desktop.settings.language import CurrentLanguage
+from rockly_desktop.settings.lessons import LessonProgress
 from rockly_desktop.settings.teacher import TeacherSettings
 
 MAX_RECENT = 8
@@ -33,6 +34,7 @@ class AppSettings:
         keep_private(Path(self._store.fileName()), own_folder=path is None)
         self.current_language = CurrentLanguage(self._store)  # the language's one owner
         self.kiosk_mode = False
+        self._lessons = None  # made when first asked for: kiosk mode is known by then
 
     def _get(self, key, default=None):
         value = self._store.value(key)
@@ -153,6 +155,13 @@ class AppSettings:
     def stage_share(self, share: float):
         if not self.kiosk_mode:
             self._store.setValue("window/stage_share", share)
+
+    @property
+    def lessons(self) -> LessonProgress:
+        """The lessons passed: the computer user's, or (in kiosk mode) the visitor's, never written."""
+        if self._lessons is None:
+            self._lessons = LessonProgress(self._store, kept=not self.kiosk_mode)
+        return self._lessons
 
     @property
     def kiosk(self) -> KioskSettings:

@@ -63,3 +63,12 @@ class KioskSettings(SettingsGroup):
     @quit_chord.setter
     def quit_chord(self, chord: str):
         self._set("quit_chord", chord or "")
+
+    @property
+    def challenge(self) -> str:
+        """The id of the lesson ("challenge of the day") the kiosk opens for every visitor; "" for none."""
+        return str(self._get("challenge", ""))
+
+    @challenge.setter
+    def challenge(self, lesson_id: str):
+        self._set("challenge", lesson_id or "")

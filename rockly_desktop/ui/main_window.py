@@ -11,6 +11,7 @@ from rockly_desktop.robot.links import link_kind
 from rockly_desktop.runtime.agent.protocol import DEFAULT_PORT
 from rockly_desktop.ui.agent.agent_bar import AgentBar, AgentWay, agent_address
 from rockly_desktop.ui.agent.attached_run import AttachedRun
+from rockly_desktop.ui.docks.lesson_guide import LessonGuide
 from rockly_desktop.ui.docks.registry import Docks
 from rockly_desktop.ui.docks.stage_layout import BottomTabSizes, StageLayout, keep_side_docks_full_height
 from rockly_desktop.ui.docks.state_panels import StatePanels
@@ -69,7 +70,7 @@ class MainWindow(QMainWindow):
         self.simulator_dock, self.code_dock = self.docks["simulator_dock"], self.docks["code_dock"]
         self.variables, self.state_dock = self.docks["variables_dock"], self.docks["state_dock"]
         self.console, self.monitor_dock = self.docks["console_dock"], self.docks["monitor_dock"]
-        self.plot_dock = self.docks["plot_dock"]
+        self.plot_dock, self.lessons_dock = self.docks["plot_dock"], self.docks["lessons_dock"]
         # the plot is made when its tab first shows (once a robot's store is there to plot from)
         self.plot_dock.visibilityChanged.connect(
             lambda visible: visible and self._plot_store is not None and self.plot_panel())
@@ -142,6 +143,12 @@ class MainWindow(QMainWindow):
         self.editor.sig_page_error.connect(
             lambda message: self.statusBar().showMessage(tr("editor_error", self.language, message=message), 15000))
 
+        self.lessons = LessonGuide(self.lessons_dock, self.editor, self.files, self.replay, settings.lessons,
+                                   registry.profiles, lambda: self.profile,
+                                   lambda: self.profile.toolbox(self.language, *self._toolbox_choice()),
+                                   lambda: self.language, self)
+        self.lessons_dock.visibilityChanged.connect(lambda visible: visible and self.lessons.follow_robot())
+        self.document.sig_profile_changed.connect(lambda _profile: self.lessons.follow_robot())
         self.stage = StageLayout(self, settings, self.editor, self.robots, self.docks)
         self._build_menus()
         self.document.sig_profile_changed.connect(self._on_profile_changed)
@@ -218,7 +225,8 @@ class MainWindow(QMainWindow):
 
         kiosk = Kiosk(self, start_program, settings=self.settings, language=lambda: self.language, stage=self.stage,
                       docks=self.docks, editor=self.editor, document=self.document, files=self.files,
-                      replay=self.replay, runs=self.runs, robots=self.robots, run_toolbar=lambda: self.run_toolbar)
+                      replay=self.replay, runs=self.runs, robots=self.robots, run_toolbar=lambda: self.run_toolbar,
+                      lessons=self.lessons)
         self.teacher_gate = kiosk.ask_teacher
         self.gate_asks_pin = True
         return kiosk
@@ -492,7 +500,9 @@ class MainWindow(QMainWindow):
         dialog = PreferencesDialog(self.language, self, self.profile, self.settings.teacher,
                                    reset_before_run=self.settings.reset_before_run, kiosk=self.settings.kiosk,
                                    kiosk_mode=self.settings.kiosk_mode, block_look=self.settings.block_look,
-                                   pin_given=self.gate_asks_pin)
+                                   pin_given=self.gate_asks_pin, challenges=[
+                                       (lesson.id, lesson.title(self.language))
+                                       for lesson in self.lessons.library.for_robot(self.profile.id)])
         if dialog.exec():
             self.settings.reset_before_run = dialog.reset_before_run
             self.settings.block_look = dialog.block_look
@@ -500,7 +510,7 @@ class MainWindow(QMainWindow):
             if dialog.kiosk_tab is not None:
                 dialog.kiosk_tab.apply()
             if dialog.teacher_tab is not None and dialog.teacher_tab.apply():  # the program stays; only the toolbox
-                self.editor.set_toolbox(self.profile.toolbox(self.language, *self._toolbox_choice()))
+                self.lessons.apply_toolbox()
             self._follow_robot_lock()
             self.set_language(dialog.language)
 
@@ -739,6 +749,7 @@ class MainWindow(QMainWindow):
         self.agent_bar.stop()
         self.attached.detach()
         self.runs.shutdown()
+        self.lessons.shutdown()
         self.replay.wait_for_reading()
         self.simulator_dock.stop()
         self.health.stop()

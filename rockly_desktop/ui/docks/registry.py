@@ -11,6 +11,7 @@ from PySide6.QtWidgets import QDockWidget, QMainWindow, QWidget
 
 from rockly_desktop.ui.docks.code_dock import CodeDock
 from rockly_desktop.ui.docks.console_dock import ConsoleDock
+from rockly_desktop.ui.docks.lessons_dock import LessonsDock
 from rockly_desktop.ui.docks.simulator_dock import SimulatorDock
 from rockly_desktop.ui.docks.variables_dock import VariablesDock
 from rockly_desktop.ui.texts import tr
@@ -83,6 +84,8 @@ DOCKS = (
              lambda language, parent: VariablesDock("", _variable_headers(language), parent),
              retranslate=lambda dock, language: dock.table.setHorizontalHeaderLabels(_variable_headers(language))),
     DockSpec("state_dock", "state_dock", RIGHT, "program", _plain_dock, on_stage=OnStage.BIG_REAL),
+    DockSpec("lessons_dock", "lessons_dock", RIGHT, "program", _titled_only(LessonsDock),
+             retranslate=lambda dock, language: dock.retranslate(language)),
     DockSpec("console_dock", "console_dock", BOTTOM, "bottom", _titled_only(ConsoleDock),
              on_stage=OnStage.STRIP, first_height=130),
     DockSpec("monitor_dock", "monitor_dock", BOTTOM, "bottom", _plain_dock, in_kiosk=InKiosk.CLOSED, roomy=True),

@@ -47,11 +47,12 @@ class Kiosk(QObject):
     ``language()`` (the window's, which may change behind the PIN), the window's ``stage``
     (StageLayout), ``docks`` (registry.Docks), the block ``editor``, the ``document`` on screen, the
     program ``files`` (ProgramFiles), the ``replay``, the run session ``runs``, the robot choice
-    ``robots`` and ``run_toolbar()`` (the run toolbar of the moment, with STOP).
+    ``robots``, ``run_toolbar()`` (the run toolbar of the moment, with STOP) and the ``lessons``
+    (``ui.docks.lesson_guide.LessonGuide``: every visitor gets the challenge of the day afresh).
     """
 
     def __init__(self, frame, start_program=None, *, settings, language, stage, docks, editor, document, files,
-                 replay, runs, robots, run_toolbar):
+                 replay, runs, robots, run_toolbar, lessons):
         super().__init__(frame)
         self.frame = frame
         self._app_settings = settings
@@ -60,6 +61,7 @@ class Kiosk(QObject):
         self._stage = stage
         self._docks, self._editor, self._document, self._files = docks, editor, document, files
         self._replay, self._runs, self._robots, self._run_toolbar = replay, runs, robots, run_toolbar
+        self._lessons = lessons
         self.start_program = str(start_program) if start_program else None
         self._may_close = False
         self._starting_over = False
@@ -87,6 +89,7 @@ class Kiosk(QObject):
             self.chord.activated.connect(self.leave)
         self.idle = IdleWatch(self.settings.idle_minutes * 60, frame, self)
         self.idle.sig_idle.connect(self._on_idle)
+        lessons.start_challenge(self.settings.challenge)
 
     # --- leaving ------------------------------------------------------------------------
 
@@ -226,6 +229,7 @@ class Kiosk(QObject):
         self._editor.call("clearMarks")
         self._run_toolbar().show()
         self._stage.arrange()
+        self._lessons.start_challenge(self.settings.challenge)  # the stage's docks, and the challenge's
         self.to_the_front()
 
     def _keep_programs_safe(self):

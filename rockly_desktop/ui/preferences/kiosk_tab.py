@@ -1,6 +1,8 @@
-"""The Preferences dialog's Kiosk tab: folders, idle minutes and the key chord that leaves kiosk mode.
+"""The Preferences dialog's Kiosk tab: folders, idle minutes, the key chord that leaves kiosk mode and the
+lesson every visitor gets as the challenge of the day.
 It can be changed only once the Teacher tab is unlocked with the PIN."""
 from PySide6.QtWidgets import (
+    QComboBox,
     QFileDialog,
     QFormLayout,
     QHBoxLayout,
@@ -16,9 +18,10 @@ from rockly_desktop.ui.texts import tr
 
 
 class KioskTab(QWidget):
-    """The ``kiosk`` settings (KioskSettings), enabled while ``teacher_tab`` is unlocked; ``apply()`` keeps them."""
+    """The ``kiosk`` settings (KioskSettings), enabled while ``teacher_tab`` is unlocked; ``apply()`` keeps them.
+    ``challenges``: the lessons offered as the challenge of the day, [(id, title)]."""
 
-    def __init__(self, kiosk, teacher_tab, language: str, parent=None):
+    def __init__(self, kiosk, teacher_tab, language: str, parent=None, challenges=()):
         super().__init__(parent)
         self.setObjectName("kiosk_tab")
         self._kiosk, self._teacher_tab, self._language = kiosk, teacher_tab, language
@@ -35,6 +38,14 @@ class KioskTab(QWidget):
         self.quit_chord.setClearButtonEnabled(True)
         self.quit_chord.setKeySequence(kiosk.quit_chord)
         form.addRow(tr("kiosk_chord", language), self.quit_chord)
+        self.challenge = QComboBox(self, objectName="kiosk_challenge")
+        self.challenge.addItem(tr("kiosk_no_challenge", language), "")
+        for lesson_id, title in challenges:
+            self.challenge.addItem(title, lesson_id)
+        if self.challenge.findData(kiosk.challenge) < 0:  # a lesson of another robot: kept, shown by its id
+            self.challenge.addItem(kiosk.challenge, kiosk.challenge)
+        self.challenge.setCurrentIndex(self.challenge.findData(kiosk.challenge))
+        form.addRow(tr("kiosk_challenge", language), self.challenge)
         teacher_tab.currentChanged.connect(lambda _page: self._follow_lock())
         self._follow_lock()
 
@@ -71,3 +82,4 @@ class KioskTab(QWidget):
         kiosk.visitors_folder = self.visitors_folder.text().strip()
         kiosk.idle_minutes = self.idle_minutes.value()
         kiosk.quit_chord = self.quit_chord.keySequence().toString()
+        kiosk.challenge = self.challenge.currentData()

@@ -26,11 +26,13 @@ class PreferencesDialog(QDialog):
     behind a PIN; the caller calls ``teacher_tab.apply()`` when the dialog is accepted. With the
     ``kiosk`` settings it has a Kiosk tab (``kiosk_tab``, ``apply()`` too), unlocked with the Teacher
     tab; in ``kiosk_mode`` the toolbox level cannot be changed. ``pin_given``: the teacher's PIN was
-    checked just before opening (a kiosk's gate), so both tabs open unlocked.
+    checked just before opening (a kiosk's gate), so both tabs open unlocked. ``challenges``: the
+    lessons the Kiosk tab offers as the challenge of the day, [(id, title)].
     """
 
     def __init__(self, language: str, parent=None, profile=None, teacher=None, reset_before_run: bool = False,
-                 kiosk=None, kiosk_mode: bool = False, block_look=None, pin_given: bool = False):
+                 kiosk=None, kiosk_mode: bool = False, block_look=None, pin_given: bool = False,
+                 challenges=()):
         super().__init__(parent)
         self.setWindowTitle(tr("preferences_title", language))
         self.language_box = QComboBox(self)
@@ -68,7 +70,7 @@ class PreferencesDialog(QDialog):
                 self.teacher_tab.level_box.setToolTip(tr("kiosk_level_fixed", language))
         self.kiosk_tab = None
         if kiosk is not None and self.teacher_tab is not None:
-            self.kiosk_tab = KioskTab(kiosk, self.teacher_tab, language, self)
+            self.kiosk_tab = KioskTab(kiosk, self.teacher_tab, language, self, challenges)
             self.tabs.addTab(self.kiosk_tab, tr("kiosk_tab", language))
         outer = QVBoxLayout(self)
         outer.addWidget(self.tabs)
