@@ -43,8 +43,6 @@ def make_runner(profile, robot, run_code: dict, control, emit, language: str = "
     backend = limited if recording is None else RecordedBackend(limited, recording.command)
     if notes is not None:
         backend = RecordedBackend(backend, notes)
-    commands = profile.create("api", backend)
-    ros = RosCommands(backend, types=profile.ros_types)
 
     def on_end():
         failures = robot.safe_stop()
@@ -55,12 +53,25 @@ def make_runner(profile, robot, run_code: dict, control, emit, language: str = "
 
     if recording is not None:
         emit = _both(recording.emit, emit)
-    runner = ProgramRunner(run_code["code"], {"robot": commands, "ros": ros}, control, emit,
-                           run_code.get("variables"), on_end, language,
-                           entered=None if recording is None else recording.recorder.blocks)
-    ros.say = limited.note = runner.show_output
+    runner = program_runner(profile, backend, run_code, control, emit, language, on_end,
+                            entered=None if recording is None else recording.recorder.blocks)
+    limited.note = runner.show_output
     if recording is not None:
         recording.follow(runner)
+    return runner
+
+
+def program_runner(profile, backend, run_code: dict, control, emit, language: str = "en", on_end=None,
+                   entered=None) -> ProgramRunner:
+    """A ProgramRunner for ``run_code`` whose ``robot`` (the profile's commands) and ``ros`` speak to ``backend``
+    as it is: the program's side of a run, wherever the link and its wrappers are (``make_runner`` stacks them
+    here; a program in a process of its own gets a backend that asks the link's process). ``on_end``: what runs
+    when the program ends (the safe stop); ``entered``: as ``ProgramRunner``'s."""
+    commands = profile.create("api", backend)
+    ros = RosCommands(backend, types=profile.ros_types)
+    runner = ProgramRunner(run_code["code"], {"robot": commands, "ros": ros}, control, emit,
+                           run_code.get("variables"), on_end, language, entered=entered)
+    ros.say = runner.show_output
     return runner
 
 
