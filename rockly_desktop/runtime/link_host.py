@@ -118,18 +118,24 @@ class HostControl:
         self.delay = max(0.0, delay)
         self.on_stop = None  # the host's safe stop, set while it serves a run
         self._send = None
+        self._waiting = []  # requests made before the program's process was connected, in order
         self._lock = threading.Lock()
 
     def connect(self, send):
-        """From now on, requests go to ``send(record)``."""
+        """From now on, requests go to ``send(record)`` (those made before go first); None: nowhere."""
         with self._lock:
             self._send = send
+            waiting, self._waiting = self._waiting, []
+            if send is not None:
+                for record in waiting:
+                    send(record)
 
     def _request(self, record: dict):
         with self._lock:
-            send = self._send
-        if send is not None:
-            send({"op": "control", **record})
+            if self._send is None:
+                self._waiting.append({"op": "control", **record})
+            else:
+                self._send({"op": "control", **record})
 
     def request_stop(self):
         """Make the robot safe at once, refuse the program's commands from now on, and tell the program to stop."""
