@@ -49,18 +49,20 @@ def _profile_record(profile) -> dict:
 
 
 class ProgramProcess:
-    """A program's process, started (and its profile's commands imported) before it is needed: a run
-    hands it its program at once. ``start`` it while the link opens, or keep one waiting."""
+    """A program's process, started (Rockly imported, and the profile's commands once ``prepare``d) before it
+    is needed: a run hands it its program at once. Start one early (before the program is read, while the
+    link opens), or keep one waiting."""
 
     def __init__(self, process: subprocess.Popen, sock: socket.socket):
         self.process = process
         self.sock = sock
         self.reader = LineReader(sock)
+        self.profile = None
         self._send_lock = threading.Lock()
 
     @classmethod
-    def start(cls, profile) -> "ProgramProcess":
-        """Start a program's process for ``profile``'s robot (on this Python)."""
+    def start(cls, profile=None) -> "ProgramProcess":
+        """Start a program's process (on this Python), for ``profile``'s robot when it is known already."""
         mine, theirs = socket.socketpair()
         environment = dict(os.environ)
         environment["PYTHONPATH"] = os.pathsep.join(
@@ -74,8 +76,15 @@ class ProgramProcess:
                                    stdout=output, env=environment, close_fds=True)
         theirs.close()
         started = cls(process, mine)
-        started.send(_profile_record(profile))
+        if profile is not None:
+            started.prepare(profile)
         return started
+
+    def prepare(self, profile):
+        """Have the process make ``profile``'s commands ready (imported) now; once, before its run."""
+        if self.profile is None:
+            self.profile = profile
+            self.send(_profile_record(profile))
 
     def send(self, record: dict) -> bool:
         """Send one record to the program's process; False when it is gone."""

@@ -84,7 +84,8 @@ class Run:
         ``record``: an MCAP file to record the run to (``program_name``, ``program_bytes``: what it keeps
         of the program); ``print_blocks``: a line on ``out`` for every block entered."""
         language = self.language
-        process = self.process or ProgramProcess.start(self.profile)  # it starts while the link opens
+        process = self.process or ProgramProcess.start()  # it starts while the link opens
+        process.prepare(self.profile)
         try:
             robot = open_link(backend, self.profile, connection,
                               tablet=AnswerList(answers, self.out, language=language), speed=speed)
