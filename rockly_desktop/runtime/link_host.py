@@ -38,8 +38,13 @@ MOVES = frozenset({"publish", "send_goal", "call_service", "set_param"})  # afte
 WAITING = frozenset({"wait_for_message", "call_service", "send_goal", "goal_wait"})
 
 
-def _package_root() -> str:
-    return str(Path(rockly_desktop.__file__).resolve().parent.parent)
+def _python_path() -> str:
+    """The child's PYTHONPATH: where this Rockly is, before the caller's (a checkout is not on the child's path
+    by itself; an installed runtime is, and its site folder is not put before the standard library)."""
+    root = Path(rockly_desktop.__file__).resolve().parent.parent
+    given = [os.environ["PYTHONPATH"]] if os.environ.get("PYTHONPATH") else []
+    installed = root.name in ("site-packages", "dist-packages")
+    return os.pathsep.join(given if installed else [str(root)] + given)
 
 
 def _profile_record(profile) -> dict:
@@ -64,9 +69,7 @@ class ProgramProcess:
     def start(cls, profile=None) -> "ProgramProcess":
         """Start a program's process (on this Python), for ``profile``'s robot when it is known already."""
         mine, theirs = socket.socketpair()
-        environment = dict(os.environ)
-        environment["PYTHONPATH"] = os.pathsep.join(
-            [_package_root()] + ([environment["PYTHONPATH"]] if environment.get("PYTHONPATH") else []))
+        environment = dict(os.environ, PYTHONPATH=_python_path())
         try:
             output = sys.stderr.fileno()  # its stray prints never mix with an event stream on standard output
         except (AttributeError, OSError, ValueError):
