@@ -47,12 +47,6 @@ def _python_path() -> str:
     return os.pathsep.join(given if installed else [str(root)] + given)
 
 
-def _profile_record(profile) -> dict:
-    return {"op": "profile", "id": profile.id, "version": profile.version, "root": str(profile.root),
-            "source": profile.source, "manifest": profile.manifest,
-            "message_folders": [str(folder) for folder in profile.message_folders]}
-
-
 class ProgramProcess:
     """A program's process, started (Rockly imported, and the profile's commands once ``prepare``d) before it
     is needed: a run hands it its program at once. Start one early (before the program is read, while the
@@ -87,7 +81,7 @@ class ProgramProcess:
         """Have the process make ``profile``'s commands ready (imported) now; once, before its run."""
         if self.profile is None:
             self.profile = profile
-            self.send(_profile_record(profile))
+            self.send({"op": "profile", "profile": profile.command_side()})
 
     def send(self, record: dict) -> bool:
         """Send one record to the program's process; False when it is gone."""

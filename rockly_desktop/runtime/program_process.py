@@ -19,10 +19,8 @@ import queue
 import socket
 import sys
 import threading
-from pathlib import Path
 
 from rockly_desktop.core.errors import RocklyError
-from rockly_desktop.core.ros_definitions import DefinitionCatalog
 from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import RunFinished
 from rockly_desktop.executor.run_setup import program_runner
@@ -68,13 +66,6 @@ def apply_control(control: RunControl, record: dict):
         control.set_delay(float(record.get("seconds") or 0.0))
 
 
-def _profile(record: dict):
-    """The profile's command side as the host described it (its folder, manifest and ROS definitions)."""
-    profile = Profile(record["id"], record["id"], record["version"], Path(record["root"]), record["source"],
-                      record["manifest"], (), [])
-    return profile, DefinitionCatalog([Path(folder) for folder in record["message_folders"]])
-
-
 def _sample(host: HostConnection, runner, ended: threading.Event):
     shown = None
     while not ended.wait(SAMPLE_SECONDS):
@@ -98,12 +89,15 @@ def _emit(host: HostConnection):
 def run(host: HostConnection, inbox: queue.Queue, control: RunControl, isolated: bool):
     """Take the profile and the program from the host, run it, say how it ended."""
     host.send({"op": "ready", "isolated": isolated})
-    profile = types = None
+    profile = None
     while True:
         record = inbox.get()
         if record.get("op") == "profile":
-            profile, types = _profile(record)
-            profile.load_object("api")  # imported while the host still opens the link
+            profile = Profile.from_command_side(record["profile"])
+            try:
+                profile.load_object("api")  # imported while the host still opens the link
+            except RocklyError:  # said when the run makes the commands
+                pass
         elif record.get("op") == "start":
             break
     language = record.get("language", "en")
@@ -118,7 +112,7 @@ def run(host: HostConnection, inbox: queue.Queue, control: RunControl, isolated:
             raise RuntimeError("; ".join(failures))
 
     try:
-        runner = program_runner(_with_types(profile, types), backend, record["run_code"], control, _emit(host),
+        runner = program_runner(profile, backend, record["run_code"], control, _emit(host),
                                 language, on_end)
     except RocklyError as error:
         host.send({"op": "refused", "text": error.in_language(language)})
@@ -129,11 +123,6 @@ def run(host: HostConnection, inbox: queue.Queue, control: RunControl, isolated:
         runner.run()
     finally:
         ended.set()
-
-
-def _with_types(profile, types):
-    profile.__dict__["ros_types"] = types  # the host's definitions, not this folder's packs (there are none here)
-    return profile
 
 
 def main(argv=None) -> int:
