@@ -144,11 +144,12 @@ class HostControl:
                 self._send({"op": "control", **record})
 
     def request_stop(self):
-        """Make the robot safe at once, refuse the program's commands from now on, and tell the program to stop."""
+        """Tell the program to stop, make the robot safe at once and refuse the program's commands from now on (the
+        program hears of the stop before the robot answers the safe stop: a halted motion is not taken as done)."""
         self.interrupt.request_stop()
+        self._request({"do": "stop"})
         if self.on_stop is not None:
             self.on_stop()
-        self._request({"do": "stop"})
 
     def request_pause(self):
         """Pause the program before its next block (or inside a motion that halts)."""
@@ -427,6 +428,9 @@ class LinkHost:
     def _serve_type_for(self, name, msg_type=None):
         ask = getattr(self.backend, "type_for", None)
         return msg_type if ask is None else ask(str(name), msg_type)
+
+    def _serve_watch(self, waited):
+        self.backend.watch(float(waited))
 
     def _serve_safe_stop(self):
         return self._safe_stop()

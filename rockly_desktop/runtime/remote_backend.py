@@ -10,11 +10,13 @@ import itertools
 import os
 import queue
 import threading
+import time
 
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
 from rockly_desktop.runtime.link_wire import LineReader, encoded, raised_error
 
 REPLY_POLL_SECONDS = 0.05  # how often a call waiting for the host looks whether the run was stopped
+WATCH_SECONDS = 0.2  # how often a wait here asks the host whether the robot is still there
 
 
 class HostConnection:
@@ -153,9 +155,28 @@ class RemoteBackend(RobotBackend):
             self.ask("unsubscribe", key)
         return unsubscribe
 
+    def _watcher(self):
+        """What a wait here calls at each step: every ``WATCH_SECONDS`` it asks the host whether the robot is still
+        there (the host's link raises RobotConnectionLost for a lost master or node, as its own waits do)."""
+        started = time.monotonic()
+        asked = [started]
+
+        def watch():
+            now = time.monotonic()
+            if now - asked[0] >= WATCH_SECONDS:
+                asked[0] = now
+                self.ask("watch", now - started)
+        return watch
+
     def wait_until(self, predicate, timeout: float) -> bool:
-        """Wait here until ``predicate()`` is true (True) or ``timeout`` passes (False); a stop raises."""
-        return self.interrupt.wait_until(predicate, timeout)
+        """Wait here until ``predicate()`` is true (True) or ``timeout`` passes (False); a stop or a lost robot
+        raises."""
+        watch = self._watcher()
+
+        def watched():
+            watch()
+            return predicate()
+        return self.interrupt.wait_until(watched, timeout)
 
     def latest(self, topic: str, msg_type: str):
         """The last message the robot sent on ``topic``, or None."""
@@ -189,8 +210,8 @@ class RemoteBackend(RobotBackend):
         self.ask("set_param", name, value)
 
     def sleep(self, seconds: float) -> None:
-        """Wait ``seconds`` here (a pause holds the clock, a stop raises)."""
-        self.interrupt.sleep(seconds)
+        """Wait ``seconds`` here (a pause holds the clock, a stop or a lost robot raises)."""
+        self.interrupt.sleep(seconds, watch=self._watcher())
 
     def allowed_speed(self, own_speed: float, turning: bool = False) -> float:
         """How fast a motion at the robot's own speed may go under the host's limits."""
