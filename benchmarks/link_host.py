@@ -5,6 +5,8 @@ as runs were before (``executor.run_setup.make_runner`` on the link).
 
 (a) per command: 1,000 ``ros.publish`` and 1,000 ``ros.latest`` on HOBBIT's simulator, timed inside the
     program: in-process vs through the host;
+(a') per block: a 10,000-block loop, each block reported (as ``rockly run`` and the agent do), timed inside
+    the program: in-process vs through the host;
 (b) Run -> first block: from ``Run.run`` (the link opens) to the first block entered, with the program's
     process started as the link opens (cold) and started beforehand (warm); baseline: the link opened and
     the runner made in-process;
@@ -14,13 +16,13 @@ as runs were before (``executor.run_setup.make_runner`` on the link).
     python benchmarks/link_host.py
 """
 import statistics
-import sys
 import threading
 import time
 
 import _paths  # noqa: F401 - its set-up: Rockly importable
 
 CALLS = 1000
+BLOCKS = 10_000
 TRIALS = 7
 STOP_TRIALS = 15
 FIRST_BLOCK_AIM, STOP_AIM = 0.100, 0.010
@@ -87,6 +89,21 @@ def per_command(profile):
         base, host = statistics.median(before), statistics.median(after)
         print(f"    {name}: in-process {base / CALLS * 1e6:.1f} µs a call, through the host "
               f"{host / CALLS * 1e6:.1f} µs a call, ratio {host / base:.1f}")
+
+
+def per_block(profile):
+    code = TIMED.format(calls=BLOCKS, call="__rockly__.block('b')")
+    before, after = [], []
+    for _ in range(TRIALS):
+        events = []
+        in_process(profile, code, events.append)
+        before.append(printed_seconds(events))
+        events = []
+        through_host(profile, code, events.append)
+        after.append(printed_seconds(events))
+    base, host = statistics.median(before), statistics.median(after)
+    print(f"(a') {BLOCKS:,} blocks, each reported: in-process {base / BLOCKS * 1e6:.1f} µs a block, through the "
+          f"host {host / BLOCKS * 1e6:.1f} µs a block, ratio {host / base:.1f}")
 
 
 def first_block_seconds(run, started_at) -> float:
@@ -193,6 +210,7 @@ def stop_latency(profile):
 
 if __name__ == "__main__":
     profile = hobbit()
-    per_command(profile) if "--skip-a" not in sys.argv else None
+    per_command(profile)
+    per_block(profile)
     first_block(profile)
     stop_latency(profile)
