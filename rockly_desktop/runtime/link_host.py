@@ -363,8 +363,8 @@ class LinkHost:
             record["value"] = value
         try:
             self.process.send(record)
-        except ValueError as too_long:  # an answer too big for the wire: said as the call's error
-            self.process.send({"op": "reply", "id": call_id, "error": error_record(too_long, self.language)})
+        except (ValueError, TypeError) as unsendable:  # too big for the wire, or no JSON: said as the call's error
+            self.process.send({"op": "reply", "id": call_id, "error": error_record(unsendable, self.language)})
 
     # --- the calls a program's process may make: nothing else reaches the link -------------------
 
@@ -374,9 +374,16 @@ class LinkHost:
     def _serve_publish(self, topic, msg_type, message):
         self.backend.publish(str(topic), msg_type, message)
 
+    def _push(self, record: dict):
+        """A message or feedback for the program, from the link's thread: one the wire cannot carry is left out."""
+        try:
+            self.process.send(record)
+        except (ValueError, TypeError):
+            pass
+
     def _serve_subscribe(self, key, topic, msg_type):
         def forward(message):
-            self.process.send({"op": "message", "key": key, "message": message})
+            self._push({"op": "message", "key": key, "message": message})
         self._subscriptions[key] = self.backend.subscribe(str(topic), msg_type, forward)
 
     def _serve_unsubscribe(self, key):
@@ -397,7 +404,7 @@ class LinkHost:
         goal_id = next(self._goal_ids)
 
         def feedback(message):
-            self.process.send({"op": "feedback", "key": goal_id, "message": message})
+            self._push({"op": "feedback", "key": goal_id, "message": message})
         self._goals[goal_id] = self.backend.send_goal(str(action), action_type, goal,
                                                       feedback if wants_feedback else None)
         return goal_id

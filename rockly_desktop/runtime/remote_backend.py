@@ -9,6 +9,7 @@ messages, called on a thread of their own (so a callback may command the robot).
 import itertools
 import os
 import queue
+import sys
 import threading
 import time
 
@@ -87,8 +88,8 @@ class HostConnection:
                     self._pushed.put(record)
                 else:
                     self._on_record(record)
-        except (OSError, ValueError):
-            pass
+        except (OSError, ValueError) as broken:  # never from Rockly's own host: say it, for whoever looks
+            print(f"rockly: the link host's wire broke: {broken}", file=sys.stderr, flush=True)
         os._exit(1)  # the host is gone: the robot is its to stop, and nothing here may drive on
 
     def _dispatch(self):
