@@ -12,6 +12,7 @@ commands, and tells the child to stop; a child that has not ended ``STOP_GRACE``
 The child ending for any reason (finished, crashed, killed) ends with the safe stop here too, unless the
 robot was made safe after its last command.
 """
+import fcntl
 import os
 import socket
 import subprocess
@@ -62,16 +63,23 @@ class ProgramProcess:
     @classmethod
     def start(cls, profile=None) -> "ProgramProcess":
         """Start a program's process (on this Python), for ``profile``'s robot when it is known already."""
-        mine, theirs = socket.socketpair()
+        mine, pair_end = socket.socketpair()
+        mine.settimeout(None)  # blocking, whatever default another library set (rospy sets 60 s for every socket)
+        # above the standard streams: where this process has one closed, the child's end could get its number, and
+        # the child's own standard input (/dev/null) would take it
+        theirs = fcntl.fcntl(pair_end.fileno(), fcntl.F_DUPFD_CLOEXEC, 3)
+        pair_end.close()
         environment = dict(os.environ, PYTHONPATH=_python_path())
         try:
             output = sys.stderr.fileno()  # its stray prints never mix with an event stream on standard output
         except (AttributeError, OSError, ValueError):
             output = subprocess.DEVNULL
-        process = subprocess.Popen([sys.executable, "-m", "rockly_desktop.runtime.program_process",
-                                    str(theirs.fileno())], pass_fds=(theirs.fileno(),), stdin=subprocess.DEVNULL,
-                                   stdout=output, env=environment, close_fds=True)
-        theirs.close()
+        try:
+            process = subprocess.Popen([sys.executable, "-m", "rockly_desktop.runtime.program_process", str(theirs)],
+                                       pass_fds=(theirs,), stdin=subprocess.DEVNULL, stdout=output, env=environment,
+                                       close_fds=True)
+        finally:
+            os.close(theirs)
         started = cls(process, mine)
         if profile is not None:
             started.prepare(profile)

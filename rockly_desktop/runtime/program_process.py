@@ -130,6 +130,7 @@ def main(argv=None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     isolated = leave_network()  # first, while this process has one thread
     sock = socket.socket(fileno=int(argv[0]))
+    sock.settimeout(None)
     inbox = queue.Queue()
     control = RunControl()
 
