@@ -17,6 +17,7 @@ from pathlib import Path
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.workspace_blocks import block_types_by_id
 from rockly_desktop.robot.links import DEFAULT_KIND
+from rockly_desktop.runtime.link_host import ProgramProcess
 from rockly_desktop.runtime.run import Run, failed
 
 COMMAND = "rockly run"
@@ -32,17 +33,22 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
     from rockly_desktop.app import generate_headless
     from rockly_desktop.profiles.opening import opening_warnings
 
+    process = ProgramProcess.start()  # the program's own process starts while the page generates its code
     try:
-        program, _python, run_code, workspace = generate_headless(program_path, language)
-    except RocklyError as error:
-        return failed(COMMAND, error, language)
-    run = Run(program.profile, run_code, block_types_by_id(workspace), language, COMMAND, out=out)
-    for warning in opening_warnings(program, language):
-        run.warn(warning)
-    program_path = Path(program_path)
-    kept = program_path.read_bytes() if record is not None and program_path.suffix == ".rockly" else None
-    return run.run(backend, connection, answers, speed, teacher_limits(program.profile.id, teacher), record,
-                   program_path.name, kept)
+        try:
+            program, _python, run_code, workspace = generate_headless(program_path, language)
+        except RocklyError as error:
+            return failed(COMMAND, error, language)
+        run = Run(program.profile, run_code, block_types_by_id(workspace), language, COMMAND, out=out,
+                  process=process)
+        for warning in opening_warnings(program, language):
+            run.warn(warning)
+        program_path = Path(program_path)
+        kept = program_path.read_bytes() if record is not None and program_path.suffix == ".rockly" else None
+        return run.run(backend, connection, answers, speed, teacher_limits(program.profile.id, teacher), record,
+                       program_path.name, kept)
+    finally:
+        process.close()
 
 
 def teacher_limits(profile_id: str, teacher=None):

@@ -1,4 +1,6 @@
 """Putting a run together: the profile's commands on a robot, the runner, the safe stop."""
+import time
+
 from rockly_desktop.executor.runner import ProgramRunner
 from rockly_desktop.robot.ros_commands import RosCommands
 from rockly_desktop.robot.wrappers.limits import Capability, LimitedBackend, Limits, limits_text
@@ -43,8 +45,6 @@ def make_runner(profile, robot, run_code: dict, control, emit, language: str = "
     backend = limited if recording is None else RecordedBackend(limited, recording.command)
     if notes is not None:
         backend = RecordedBackend(backend, notes)
-    commands = profile.create("api", backend)
-    ros = RosCommands(backend, types=profile.ros_types)
 
     def on_end():
         failures = robot.safe_stop()
@@ -55,13 +55,26 @@ def make_runner(profile, robot, run_code: dict, control, emit, language: str = "
 
     if recording is not None:
         emit = _both(recording.emit, emit)
-    runner = ProgramRunner(run_code["code"], {"robot": commands, "ros": ros}, control, emit,
-                           run_code.get("variables"), on_end, language,
-                           entered=None if recording is None else recording.recorder.blocks,
-                           entered_stamp=None if recording is None else recording.recorder.block_clock)
-    ros.say = limited.note = runner.show_output
+    runner = program_runner(profile, backend, run_code, control, emit, language, on_end,
+                            entered=None if recording is None else recording.recorder.blocks,
+                            entered_stamp=time.monotonic_ns if recording is None else recording.recorder.block_clock)
+    limited.note = runner.show_output
     if recording is not None:
         recording.follow(runner)
+    return runner
+
+
+def program_runner(profile, backend, run_code: dict, control, emit, language: str = "en", on_end=None,
+                   entered=None, entered_stamp=time.monotonic_ns) -> ProgramRunner:
+    """A ProgramRunner for ``run_code`` whose ``robot`` (the profile's commands) and ``ros`` speak to ``backend``
+    as it is: the program's side of a run, wherever the link and its wrappers are (``make_runner`` stacks them
+    here; a program in a process of its own gets a backend that asks the link's process). ``on_end``: what runs
+    when the program ends (the safe stop); ``entered`` and ``entered_stamp``: as ``ProgramRunner``'s."""
+    commands = profile.create("api", backend)
+    ros = RosCommands(backend, types=profile.ros_types)
+    runner = ProgramRunner(run_code["code"], {"robot": commands, "ros": ros}, control, emit,
+                           run_code.get("variables"), on_end, language, entered=entered, entered_stamp=entered_stamp)
+    ros.say = runner.show_output
     return runner
 
 

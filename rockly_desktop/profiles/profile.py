@@ -194,6 +194,20 @@ class Profile:
             "madeBlocks": sorted(block for pack in self.packs for block in pack.interfaces),  # "Edit this block…"
         }
 
+    def command_side(self) -> dict:
+        """What a process of its own needs to make this profile's commands (``from_command_side``), as plain data:
+        its id, version, folder, source, manifest and ROS definition folders (its packs' too)."""
+        return {"id": self.id, "version": self.version, "root": str(self.root), "source": self.source,
+                "manifest": self.manifest, "message_folders": [str(folder) for folder in self.message_folders]}
+
+    @classmethod
+    def from_command_side(cls, data: dict) -> "Profile":
+        """The profile ``command_side`` described: its commands (``create('api', ...)``) and ROS types; no blocks."""
+        profile = cls(data["id"], data["id"], data["version"], Path(data["root"]), data["source"], data["manifest"],
+                      (), [])
+        profile.__dict__["ros_types"] = DefinitionCatalog([Path(folder) for folder in data["message_folders"]])
+        return profile
+
     def load_object(self, field_name: str, target: str = None):
         """Import and return the object a manifest field names as ``module:Name`` (``target``: the name it gives
         inside, e.g. ``program_menu``'s ``hook``).

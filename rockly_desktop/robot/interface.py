@@ -73,6 +73,13 @@ class RobotBackend(ABC):
         """
         return "/" + str(name).strip("/")
 
+    def watch(self, waited: float) -> None:
+        """Raise (RobotConnectionLost) when the robot cannot serve a wait that has lasted ``waited`` seconds: its
+        master or helper is gone, or a node it listens to. A wait made elsewhere (the program's own process, whose
+        waits are its own) asks this now and then; this backend's own waits watch the same by themselves. A robot
+        in this process (the simulator) has nothing to lose."""
+        return None
+
     @abstractmethod
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
         """Publish ``message`` (a dict shaped like ``msg_type``) on ``topic``."""

@@ -87,3 +87,24 @@ class EventStream:
                 self._stream.flush()
             except (OSError, ValueError):  # the reader closed its end (EPIPE), or the file was closed
                 self.open = False
+
+
+def record_event(record: dict):
+    """The executor event one of the stream's records says (``event_record``'s inverse); None for a record of
+    another kind (``started``, ``exit``) or one it does not know."""
+    kind = record.get("event")
+    if kind == "block":
+        return BlockEntered(str(record.get("id")))
+    if kind == "print":
+        return OutputPrinted(str(record.get("text")))
+    if kind == "paused":
+        return RunPaused(record.get("block"), str(record.get("reason")))
+    if kind == "resumed":
+        return RunResumed()
+    if kind == "variables":
+        values = record.get("values")
+        return VariablesChanged(dict(values) if isinstance(values, dict) else {})
+    if kind == "finished":
+        return RunFinished(str(record.get("outcome")), record.get("block"), record.get("message"),
+                           record.get("details"), bool(record.get("by_robot")))
+    return None

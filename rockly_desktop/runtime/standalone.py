@@ -23,6 +23,7 @@ from rockly_desktop.recording.mcap_file import problem_text
 from rockly_desktop.robot import links
 from rockly_desktop.robot.wrappers.limits import Limits
 from rockly_desktop.runtime.event_stream import EventStream, event_record, started_record
+from rockly_desktop.runtime.link_host import ProgramProcess
 from rockly_desktop.runtime.options import add_connection_options, connection
 from rockly_desktop.runtime.robot_limits import RobotLimitsError, read_robot_limits
 from rockly_desktop.runtime.robot_limits import default_path as default_limits_path
@@ -82,7 +83,15 @@ def main(program: dict, run_code: str, argv=None, on_event=None) -> int:
                        rockly=program.get("rockly", "?")), file=sys.stderr)
         return EXIT_PROFILE
     args = parser(program, language).parse_args(argv)
-    language = args.language or language
+    process = ProgramProcess.start()  # the program's own process starts while the profiles are read
+    try:
+        return _run(program, run_code, args, on_event, process)
+    finally:
+        process.close()
+
+
+def _run(program: dict, run_code: str, args, on_event, process) -> int:
+    language = args.language or program.get("language", "en")
     command = program.get("source") or "rockly-program"
     profile = _installed_profile(program["profile"], args.any_profile_version, language, command)
     if profile is None:
@@ -110,7 +119,8 @@ def main(program: dict, run_code: str, argv=None, on_event=None) -> int:
         print(f"{command}: {error.in_language(language)}", file=sys.stderr)
         return EXIT_ERROR
     run = Run(profile, {"code": run_code, "variables": program.get("variables")}, types, language, command,
-              out=out, on_event=_each(writers, types) if writers else None, trace=bool(writers), end_out=out)
+              out=out, on_event=_each(writers, types) if writers else None, trace=bool(writers), end_out=out,
+              process=process)
     try:
         status = run.run(args.backend, connection(args.backend, args), args.answer, args.speed, limits, args.record,
                          program.get("source"), print_blocks=False)

@@ -208,6 +208,10 @@ class Ros1Backend(RobotBackend):
             if topic is not None:
                 raise RobotConnectionLost(app_local_text("ros_node_gone", topic=topic))
 
+    def watch(self, waited: float) -> None:
+        """Raise when the master is lost or, for a wait of ``waited`` s, a node listened to is gone."""
+        self._check_waiting(time.monotonic() - waited)
+
     def wait_until(self, predicate, timeout: float, depends=()) -> bool:
         """Poll ``predicate`` until true (True) or ``timeout`` (False); stop, a lost master or a
         lost node this wait depends on (``depends`` and the topics listened to) raises."""

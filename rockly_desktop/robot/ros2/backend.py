@@ -164,6 +164,10 @@ class Ros2Backend(RobotBackend):
         self.interrupt.check()
         self._helper.check()
 
+    def watch(self, waited: float) -> None:
+        """Raise when the helper is lost (or the run stopped)."""
+        self._check()
+
     def wait_until(self, predicate, timeout: float) -> bool:
         """Poll ``predicate`` until true (True) or ``timeout`` (False); a stop or a lost helper raises."""
         deadline = time.monotonic() + timeout

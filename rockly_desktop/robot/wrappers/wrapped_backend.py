@@ -20,6 +20,10 @@ class WrappedBackend(RobotBackend):
         """``name`` as the inner backend's middleware resolves it."""
         return self._inner.resolve_name(name, kind)
 
+    def watch(self, waited: float) -> None:
+        """Raise when the inner backend's robot cannot serve a wait that has lasted ``waited`` s."""
+        self._inner.watch(waited)
+
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
         """Publish on ``topic``."""
         self._inner.publish(topic, msg_type, message)

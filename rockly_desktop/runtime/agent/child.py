@@ -2,7 +2,9 @@
 
     python3 -m rockly_desktop.runtime.agent.child STANDALONE.py --backend KIND [connection options] ...
 
-It runs the standalone file's program (read as data) with the runtime's ``Run``: its events go to standard
+It is the run's link host: the program's code runs in a process of its own below it (``runtime/link_host.py``),
+which it starts first thing. It runs the standalone file's program (read as data) with the runtime's ``Run``: its
+events go to standard
 output as JSON lines (``runtime.event_stream``), and it takes the agent's requests on standard input, one a
 line: ``pause``, ``step``, ``continue``, ``stop``, ``breakpoints ["ID", ...]`` (the blocks to pause before from now
 on: the attached editor's). The end of standard input means the agent is gone (killed,
@@ -18,6 +20,7 @@ from rockly_desktop.core.app_texts import app_text
 from rockly_desktop.profiles.registry import ProfileRegistry
 from rockly_desktop.runtime.agent.library import standalone_program
 from rockly_desktop.runtime.event_stream import EventStream, started_record
+from rockly_desktop.runtime.link_host import ProgramProcess
 from rockly_desktop.runtime.options import connection
 from rockly_desktop.runtime.robot_limits import RobotLimitsError
 from rockly_desktop.runtime.run import EXIT_ERROR, Run
@@ -69,6 +72,14 @@ def _block_ids(text: str) -> list:
 def main(argv=None) -> int:
     """Run the standalone file named first in ``argv``; its other arguments are the file's own."""
     argv = list(sys.argv[1:] if argv is None else argv)
+    process = ProgramProcess.start()  # the program's own process starts while the profiles are read
+    try:
+        return _run(argv, process)
+    finally:
+        process.close()
+
+
+def _run(argv: list, process) -> int:
     program, run_code = standalone_program(Path(argv[0]).read_text(encoding="utf-8"))
     language = program.get("language", "en")
     args = parser(program, language).parse_args(argv[1:])
@@ -91,7 +102,7 @@ def main(argv=None) -> int:
         return EXIT_ERROR
     run = Run(profile, {"code": run_code, "variables": program.get("variables")}, types, language,
               program.get("source") or "rockly-program", out=_to_standard_error, on_event=stream.event, trace=True,
-              end_out=_to_standard_error)
+              end_out=_to_standard_error, process=process)
     threading.Thread(target=follow_requests, args=(run.control,), daemon=True, name="agent-requests").start()
     ended = threading.Event()
     sampler = threading.Thread(target=sample_variables, args=(run, stream, ended), daemon=True,

@@ -1,0 +1,151 @@
+"""The program's own process: it runs a program's code and owns no robot link.
+
+    python3 -m rockly_desktop.runtime.program_process FD
+
+``FD`` is its end of a socket pair with the link host (``runtime/link_host.py``), which owns the robot
+link, keeps the limits and does the safe stop. The wire (``runtime/link_wire.py``) carries, from the host:
+``profile`` (the robot's commands to make, sent at once so a waiting process is ready), ``start`` (the
+code, its variables, the language, the controls), ``control`` (pause, step, continue, stop, breakpoints,
+delay), answers to calls and pushed messages; to the host: ``ready``, ``call`` (each robot command, see
+``remote_backend.py``), ``event`` (each run event, as ``runtime/event_stream.py`` writes it), ``sample``
+(the variables and values, when they changed) and ``refused`` (the profile's commands could not be made).
+
+Before anything else it leaves the network (a network namespace of its own, where Linux allows it): the
+program's only way to the robot is the host. The host closing its end ends this process at once.
+"""
+import ctypes
+import errno
+import queue
+import socket
+import sys
+import threading
+
+from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.executor.control import RunControl
+from rockly_desktop.executor.events import RunFinished
+from rockly_desktop.executor.run_setup import program_runner
+from rockly_desktop.profiles.profile import Profile
+from rockly_desktop.runtime.event_stream import event_record
+from rockly_desktop.runtime.remote_backend import HostConnection, RemoteBackend
+
+SAMPLE_SECONDS = 0.1  # how often the variables are looked at (as often as a window's own run shows them)
+CLONE_NEWUSER, CLONE_NEWNET = 0x10000000, 0x40000000
+
+
+def leave_network() -> bool:
+    """Move this process into a network namespace of its own (no interface but a down loopback), as root or
+    in a user namespace of its own; False where Linux refuses both. Call it while the process has one thread."""
+    if not sys.platform.startswith("linux"):
+        return False
+    try:
+        libc = ctypes.CDLL(None, use_errno=True)
+    except OSError:
+        return False
+    for flags in (CLONE_NEWNET, CLONE_NEWUSER | CLONE_NEWNET):
+        if libc.unshare(flags) == 0:
+            return True
+        if ctypes.get_errno() not in (errno.EPERM, errno.EINVAL, errno.ENOSPC, errno.EUSERS):
+            break
+    return False
+
+
+def apply_control(control: RunControl, record: dict):
+    """One of the host's control requests, applied to the run's ``control``."""
+    request = record.get("do")
+    if request == "pause":
+        control.request_pause()
+    elif request == "step":
+        control.step()
+    elif request == "continue":
+        control.resume()
+    elif request == "stop":
+        control.request_stop()
+    elif request == "breakpoints":
+        control.set_breakpoints(block for block in record.get("ids") or () if isinstance(block, str))
+    elif request == "delay":
+        control.set_delay(float(record.get("seconds") or 0.0))
+
+
+def _sample(host: HostConnection, runner, ended: threading.Event):
+    shown = None
+    while not ended.wait(SAMPLE_SECONDS):
+        sample = {"variables": runner.variables_snapshot(), "values": runner.values_snapshot()}
+        if sample != shown:
+            shown = sample
+            host.send({"op": "sample", **sample})
+
+
+def _emit(host: HostConnection):
+    def emit(event):
+        record = event_record(event, {})
+        if record is None:
+            return
+        if isinstance(event, RunFinished):
+            record["details"] = event.details
+        host.send({"op": "event", **record})
+    return emit
+
+
+def run(host: HostConnection, inbox: queue.Queue, control: RunControl, isolated: bool):
+    """Take the profile and the program from the host, run it, say how it ended."""
+    host.send({"op": "ready", "isolated": isolated})
+    profile = None
+    while True:
+        record = inbox.get()
+        if record.get("op") == "profile":
+            profile = Profile.from_command_side(record["profile"])
+            try:
+                profile.load_object("api")  # imported while the host still opens the link
+            except RocklyError:  # said when the run makes the commands
+                pass
+        elif record.get("op") == "start":
+            break
+    language = record.get("language", "en")
+    control.trace = bool(record.get("trace"))
+    control.set_breakpoints(record.get("breakpoints") or ())
+    control.set_delay(float(record.get("delay") or 0.0))
+    backend = RemoteBackend(host, control.interrupt)
+
+    def on_end():  # the host's safe stop, before the run says it ended
+        failures = host.call("safe_stop")
+        if failures:
+            raise RuntimeError("; ".join(failures))
+
+    try:
+        runner = program_runner(profile, backend, record["run_code"], control, _emit(host),
+                                language, on_end)
+    except RocklyError as error:
+        host.send({"op": "refused", "text": error.in_language(language)})
+        return
+    ended = threading.Event()
+    threading.Thread(target=_sample, args=(host, runner, ended), name="rockly-sample", daemon=True).start()
+    try:
+        runner.run()
+    finally:
+        ended.set()
+
+
+def main(argv=None) -> int:
+    """Serve the host on the socket pair whose end ``argv[0]`` names."""
+    argv = list(sys.argv[1:] if argv is None else argv)
+    isolated = leave_network()  # first, while this process has one thread
+    sock = socket.socket(fileno=int(argv[0]))
+    sock.settimeout(None)
+    inbox = queue.Queue()
+    control = RunControl()
+
+    def on_record(record):
+        if record.get("op") == "control":
+            apply_control(control, record)
+        else:
+            inbox.put(record)
+
+    host = HostConnection(sock, on_record)
+    host.start()
+    run(host, inbox, control, isolated)
+    host.send({"op": "end"})
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
