@@ -274,3 +274,16 @@ def test_pairings_in_memory_expire_on_their_clock_and_the_guesses_cap_opens_afte
     assert pairings.pair(kiosk.code, "kiosk", role="student").role == "student"  # less than the code gives
     pupil = pairings.new_code("student")
     assert pairings.pair(pupil.code, "pupil", role="teacher").role == "student"  # never more
+
+
+def test_every_answer_arrives_over_tls_while_both_sides_read_and_write_at_once(agent):
+    """Each side reads on one thread while another writes (the client's calls and heartbeats, the agent's answers
+    and beats): OpenSSL's connection must not be used by both at once, and when it was, an answer in some
+    hundred never came."""
+    client = AgentClient("127.0.0.1", agent.port, timeout=5)
+    try:
+        client.attach(control=True)  # its heartbeats go out meanwhile
+        for _ in range(3000):
+            assert client.programs() == {"programs": [], "run": None}
+    finally:
+        client.close()
