@@ -378,8 +378,8 @@ class AgentServer(socketserver.ThreadingTCPServer):
 
 
     def secured(self, connection):
-        """``connection`` inside TLS, its handshake done within ``FIRST_LINE_SECONDS``; None when it is not TLS
-        (a plain JSON client is told it needs TLS) or its handshake fails."""
+        """``connection`` inside TLS (a ``LockedTls``), its handshake done within ``FIRST_LINE_SECONDS``; None when
+        it is not TLS (a plain JSON client is told it needs TLS) or its handshake fails."""
         connection.settimeout(FIRST_LINE_SECONDS)
         try:
             first = connection.recv(1, socket.MSG_PEEK)

@@ -91,9 +91,9 @@ def short_fingerprint(hex_fingerprint: str) -> str:
 
 class LockedTls:
     """One TLS connection that a reading and a writing thread use at once. OpenSSL's connection object must not be
-    used by two threads at a time (an answer was lost in some hundred when they did), so every read and write
-    holds a lock for the moment it takes, never while it waits: the socket is non-blocking, and a thread waits
-    for it (``select``) without the lock."""
+    used by two threads at a time (a plain SSLSocket read and written so lost an answer in some thousand), so every
+    read and write holds a lock for the moment it takes, never while it waits: the socket is non-blocking, and a
+    thread waits for it (``poll``) without the lock."""
 
     def __init__(self, secured: ssl.SSLSocket):
         secured.setblocking(False)
