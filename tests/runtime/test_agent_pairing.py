@@ -298,3 +298,15 @@ def test_every_answer_arrives_over_tls_while_both_sides_read_and_write_at_once(a
         assert answered == [True] * 4000
     finally:
         client.close()
+
+
+@pytest.mark.skipif(os.geteuid() != 0, reason="giving a folder to another user needs root")
+def test_rockly_agent_pair_as_another_user_than_the_agents_is_refused(tmp_path):
+    """root making a code for a service's agent (its own user): the agent could not read the code file."""
+    library = tmp_path / "library"
+    library.mkdir()
+    os.chown(library, 65534, 65534)
+    made = subprocess.run([sys.executable, "-m", "rockly_desktop", "agent", "--library", str(library), "--language",
+                           "en", "pair"], capture_output=True, text=True, timeout=120, cwd=REPO)
+    assert made.returncode == 1 and "run this command as that user ('sudo -u " in made.stderr, made.stderr
+    assert not agent_folder(library).exists()
