@@ -1,4 +1,4 @@
-"""Install the editor page, shared toolboxes, built-in profiles and examples as data files.
+"""Install the editor page, shared toolboxes, built-in profiles, examples and lessons as data files.
 
 Metadata lives in pyproject.toml; this file only lists the data folders, which
 setuptools cannot glob recursively on its own. They land in
@@ -9,7 +9,7 @@ import os
 
 from setuptools import setup
 
-DATA_FOLDERS = ("resources", "toolboxes", "profiles", "examples")
+DATA_FOLDERS = ("resources", "toolboxes", "profiles", "examples", "lessons")
 
 
 def data_files():

@@ -20,6 +20,8 @@
     rockly blocks make --profile P --pack K --id ID --kind KIND ...  make a block without code into a block pack
     rockly blocks list [PACK]           list a block pack's blocks (without PACK: the installed packs)
     rockly blocks export PACK -o F.zip  write a block pack to one file; rockly blocks import F.zip installs one
+    rockly lessons list|validate|check|export|import|reference  lessons, checked on the simulator
+                                        (check LESSON PROGRAM...: each goal's result; --csv; exit 0: all passed)
     rockly agent --backend ros1|ros2|sim  the agent on the robot: keeps programs, runs them (runtime/agent/)
     rockly robot list|send|start|stop|delete|attach  talk to a robot's agent (--host ROBOT)
 
@@ -34,7 +36,8 @@ from pathlib import Path
 
 from rockly_desktop import __version__
 
-SUBCOMMANDS = ("profiles", "plugins", "export", "run", "sim", "replay", "recordings", "blocks", "agent", "robot")
+SUBCOMMANDS = ("profiles", "plugins", "export", "run", "sim", "replay", "recordings", "blocks", "lessons", "agent",
+               "robot")
 
 
 def _tool_parser() -> argparse.ArgumentParser:
@@ -86,6 +89,9 @@ def _tool_parser() -> argparse.ArgumentParser:
     from rockly_desktop.blocks_command import add_blocks_parser
 
     add_blocks_parser(commands, _language_option)
+    from rockly_desktop.lessons_command import add_lessons_parser
+
+    add_lessons_parser(commands, _language_option)
 
     from rockly_desktop.runtime.agent.commands import add_agent_parser, add_robot_parser
 
@@ -327,6 +333,10 @@ def main(argv=None) -> int:
             from rockly_desktop.blocks_command import run_blocks_command
 
             return run_blocks_command(args, args.language or _app_language())
+        if args.command == "lessons":
+            from rockly_desktop.lessons_command import run_lessons_command
+
+            return run_lessons_command(args, args.language or _app_language())
         if args.command == "agent":
             from rockly_desktop.runtime.agent.commands import agent_command
 

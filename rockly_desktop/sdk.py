@@ -9,6 +9,9 @@ simulator declares its solid world as data (``World``, ``load_world``: walls and
 footprint cannot enter, which its laser sees) and restores its start with ``reset()``. What a
 laser sees in a direction ("ahead": a sector, ``AHEAD_HALF_WIDTH`` each side) is ``nearest_in_scan``
 (``nearest_reading`` for bare ranges), the same for commands, views and the Robot state panel.
+A profile adds goal kinds to lessons by subclassing ``LessonGoal`` (its ``fields`` are ``LessonField``s, its
+``verdict`` a ``Verdict``; ``option_words`` names a dropdown's value as the block shows it) and naming the list in
+the manifest's ``lesson_goals`` (``docs/lessons.md``).
 A profile that can offer the agent's programs on the robot's own UI (``rockly agent --offer-on-robot-ui``)
 subclasses ``ProgramMenu`` (its ``choose`` returns a ``MenuChoice``) and names it in the manifest's ``program_menu``.
 Its words are its own gettext catalogue (``profile_texts(__file__)``: ``locale/messages.pot`` in
@@ -22,6 +25,8 @@ from rockly_desktop.core.catalogue import Catalogue as Texts
 from rockly_desktop.core.catalogue import LocalText
 from rockly_desktop.core.errors import RobotCommandError, RobotTimeout
 from rockly_desktop.core.state_store import field_value
+from rockly_desktop.lessons.goals import LessonGoal, Verdict, option_words
+from rockly_desktop.lessons.schema import Field as LessonField
 from rockly_desktop.profiles.manifest import MANIFEST_NAME
 from rockly_desktop.robot.commands import RobotCommands
 from rockly_desktop.robot.interface import GoalHandle, GoalOutcome, GoalStatus, RobotBackend
@@ -33,7 +38,8 @@ from rockly_desktop.robot.sim.tablet import TabletQuestion
 from rockly_desktop.robot.sim.world_map import Obstacle, World, load_world
 
 __all__ = [
-    "AHEAD_HALF_WIDTH", "GoalHandle", "GoalOutcome", "GoalStatus", "LocalText", "MenuChoice", "Obstacle",
+    "AHEAD_HALF_WIDTH", "GoalHandle", "GoalOutcome", "GoalStatus", "LessonField", "LessonGoal", "LocalText",
+    "MenuChoice", "Obstacle", "Verdict", "option_words",
     "ProgramMenu", "RobotBackend",
     "RobotCommandError", "World", "RobotCommands", "RobotSimulator", "RobotTimeout", "TabletQuestion", "Texts",
     "as_number", "as_point", "as_points", "field_value", "load_world", "nearest_in_scan", "nearest_reading",

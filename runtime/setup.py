@@ -14,7 +14,7 @@ from setuptools import setup
 from setuptools.command.build_py import build_py
 
 SOURCE = os.path.join("..", "rockly_desktop")
-RUNTIME_TOPS = ["core", "executor", "profiles", "recording", "robot", "runtime"]  # each with its sub-packages
+RUNTIME_TOPS = ["core", "executor", "lessons", "profiles", "recording", "robot", "runtime"]  # and sub-packages
 TOP_MODULES = {"__init__", "sdk"}  # of rockly_desktop itself; the rest of it is the window's
 LEFT_OUT = {("rockly_desktop.executor", "qt_adapter")}  # the runner's Qt adapter
 DATA_FOLDERS = (os.path.join("resources", "locale"), "toolboxes", "profiles")

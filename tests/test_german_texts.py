@@ -26,6 +26,7 @@ ALLOWED = {
     "app", "ball", "code", "computer", "element", "info", "navigation", "parameter", "person", "pose", "position",
     "problem", "sofa", "text", "variable", "version", "pins",
     "min", "ms",  # minutes, milliseconds
+    "cm", "sensor",  # centimetres; der Sensor
     "make", "setup",  # the set-up command, „make setup“, typed as it is
     "tab", "enter",  # keys, as German keyboards and manuals name them
     "distribution", "distributionen", "jazzy", "twiststamped",  # ROS 2's own names

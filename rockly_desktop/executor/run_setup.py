@@ -57,7 +57,8 @@ def make_runner(profile, robot, run_code: dict, control, emit, language: str = "
         emit = _both(recording.emit, emit)
     runner = ProgramRunner(run_code["code"], {"robot": commands, "ros": ros}, control, emit,
                            run_code.get("variables"), on_end, language,
-                           entered=None if recording is None else recording.recorder.blocks)
+                           entered=None if recording is None else recording.recorder.blocks,
+                           entered_stamp=None if recording is None else recording.recorder.block_clock)
     ros.say = limited.note = runner.show_output
     if recording is not None:
         recording.follow(runner)

@@ -24,13 +24,16 @@ class RunRecording:
     maps block ids to their types, ``topic_rate`` caps each robot topic (messages a second).
     Raises OSError when the recording cannot be begun (``mcap_file.RecordingHeld``: another run
     records to ``path``); ``on_stopped(error)`` is called once if a write fails later (a full disk),
-    from the recording's thread: the run goes on unrecorded from then.
+    from the recording's thread: the run goes on unrecorded from then. ``clock()`` (nanoseconds since the
+    epoch) stamps everything (a lesson's check: simulated time); with ``snapshots=False`` the recording
+    samples no simulator snapshots itself (the check notes them as simulated time passes).
     """
 
     def __init__(self, path, profile, robot, program_name: str, program: bytes = None, block_types=None,
-                 topic_rate: float = 10.0, on_stopped=None):
+                 topic_rate: float = 10.0, on_stopped=None, clock=None, snapshots: bool = True):
         self.path = path
-        self.recorder = Recorder(path, robot.recording_encoder(), topic_rate, on_stopped=on_stopped)
+        self.recorder = Recorder(path, robot.recording_encoder(), topic_rate, clock=clock, on_stopped=on_stopped)
+        self._snapshots = snapshots
         self._robot = robot
         self._block_types = block_types or {}
         self._hooks = None
@@ -48,8 +51,8 @@ class RunRecording:
     def follow(self, runner):
         """Record ``runner``'s blocks and variables (and the simulator's state), from the start."""
         self._hooks = runner.hooks
-        self.recorder.follow(runner.hooks, runner.variables_snapshot, self._robot.snapshot, self._block_types,
-                             runner.values_snapshot)
+        self.recorder.follow(runner.hooks, runner.variables_snapshot, self._robot.snapshot if self._snapshots else None,
+                             self._block_types, runner.values_snapshot)
         self.recorder.note(channels.RUN, {"event": "start"})
 
     def command(self, entry: dict):

@@ -83,12 +83,13 @@ class BlockHooks:
 
 
 class RecordedBlockHooks(BlockHooks):
-    """``BlockHooks`` that also note each block entered, with its ``time.monotonic_ns()``, in
+    """``BlockHooks`` that also note each block entered, with its ``stamp()`` (``time.monotonic_ns()``), in
     ``entered`` while ``block_budget`` lasts (a recorder refills it, so a tight loop costs one test)."""
 
-    def __init__(self, control, emit, variables, entered):
+    def __init__(self, control, emit, variables, entered, stamp=time.monotonic_ns):
         super().__init__(control, emit, variables)
         self.entered = entered
+        self._stamp = stamp
         self.block_budget = 0
 
     def block(self, block_id: str):
@@ -96,7 +97,7 @@ class RecordedBlockHooks(BlockHooks):
         self.current_block = block_id
         if self.block_budget:
             self.block_budget -= 1
-            self.entered.append((time.monotonic_ns(), block_id))
+            self.entered.append((self._stamp(), block_id))
         if self._control.attention:
             self._at_block(block_id)
 
@@ -108,11 +109,12 @@ class ProgramRunner:
     Blockly variable names to their Python names; ``on_end()`` (the robot's safe stop)
     runs whenever the run ends, for any reason. ``language`` ('en' or 'de') is the
     language of the messages a run reports (an error, a failed safe stop). With ``entered`` (a deque),
-    the blocks entered are noted there for a recording (see ``RecordedBlockHooks``).
+    the blocks entered are noted there for a recording (see ``RecordedBlockHooks``), stamped by
+    ``entered_stamp()`` (``time.monotonic_ns``; a lesson's check records in simulated time).
     """
 
     def __init__(self, code: str, namespace: dict, control, emit, variables=None, on_end=None, language: str = "en",
-                 entered=None):
+                 entered=None, entered_stamp=time.monotonic_ns):
         self._code = code
         self.language = language
         self._control = control
@@ -120,7 +122,7 @@ class ProgramRunner:
         self._variable_names = dict(variables or {})
         self._on_end = on_end
         self.hooks = (BlockHooks(control, emit, self.variables_event) if entered is None
-                      else RecordedBlockHooks(control, emit, self.variables_event, entered))
+                      else RecordedBlockHooks(control, emit, self.variables_event, entered, entered_stamp))
         control.on_hold = self.hooks.hold_inside_block
         self.globals = {"__builtins__": builtins, "__name__": "__rockly__",
                         **namespace, "__rockly__": self.hooks, "print": self._print}

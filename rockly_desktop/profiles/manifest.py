@@ -52,6 +52,9 @@ MANIFEST_FIELDS = (
               "How `rockly agent --offer-on-robot-ui` offers the robot's programs on its own UI: {hook: "
               "module:Class (an SDK ProgramMenu), stop: true (offer Stop while one runs), answer_seconds: N (how "
               "long one question waits before it is asked anew; default 60)}."),
+    FieldSpec("lesson_goals", "import", False,
+              "module:NAME of a list of the goal kinds the robot adds to lessons (SDK LessonGoal classes; "
+              "docs/lessons.md)."),
     FieldSpec("messages", "folder", False, "Folder with ROS definitions the robot needs: <package>/msg|srv|action/*."),
     FieldSpec("ros_interface", "ros_interface", False,
               "The robot's ROS interface: {subscribes: {TOPIC: TYPE}, publishes: {...}, services: {NAME: TYPE}, "

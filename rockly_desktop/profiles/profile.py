@@ -161,6 +161,16 @@ class Profile:
         """
         return self.load_object("simulator_view") if self.manifest.get("simulator_view") else None
 
+    @property
+    def has_simulator(self) -> bool:
+        """True when the profile names a built-in simulator."""
+        return bool(self.manifest.get("simulator"))
+
+    def lesson_goals(self) -> list:
+        """The goal kinds the profile adds to lessons (its ``lesson_goals``, imported now); [] without.
+        Raises ManifestError when they are named but cannot be imported."""
+        return list(self.load_object("lesson_goals")) if self.manifest.get("lesson_goals") else []
+
     @cached_property
     def ros_types(self) -> DefinitionCatalog:
         """The ROS types typed blocks offer: the common installed packages and the profile's own."""

@@ -57,8 +57,10 @@ class Recorder:
         self._on_stopped = on_stopped
         self._encoder = encoder
         self._gap = int(1e9 / topic_rate) if topic_rate > 0 else None
-        self._offset = time.time_ns() - time.monotonic_ns()  # block hooks stamp with monotonic_ns
+        # block hooks stamp with block_clock: monotonic_ns, or the given clock itself (a lesson's simulated time)
+        self._offset = time.time_ns() - time.monotonic_ns() if clock is None else 0
         self._clock = clock or (lambda: time.monotonic_ns() + self._offset)
+        self.block_clock = time.monotonic_ns if clock is None else clock
         self._queue = queue.Queue(QUEUE_SIZE)
         self._last_sent = {}
         self._capped = {}

@@ -8,6 +8,7 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[2]
 VERMIN = Path(sys.executable).with_name("vermin")
 ON_THE_ROBOT = ["rockly_desktop/__init__.py", "rockly_desktop/sdk.py", "rockly_desktop/core", "rockly_desktop/executor",
+                "rockly_desktop/lessons",
                 "rockly_desktop/profiles", "rockly_desktop/recording", "rockly_desktop/robot", "rockly_desktop/runtime",
                 *sorted(str(path.relative_to(REPO)) for path in REPO.glob("profiles/*/rockly_*/*.py"))]
 

@@ -25,7 +25,6 @@ from .world import CONTACT_TOPIC, TEXTS, WORLD, blocked_on_the_way, goal_problem
 log = logging.getLogger(__name__)
 
 TICK_SECONDS = 1 / 30
-POLL_SECONDS = 0.01          # how often a goal's thread looks at the simulation
 LINEAR_SPEED = MOVE_SPEED     # m/s, for discrete motions and navigation
 ANGULAR_SPEED = TURN_SPEED    # rad/s
 ARRIVED = 0.001              # m: a navigation goal closer than this is reached
@@ -258,6 +257,7 @@ class SimHobbit(RobotSimulator):
     NAME = "simulated HOBBIT"
     solid_world = WORLD
     TICK_SECONDS = TICK_SECONDS
+    WORLD_ID = "house"
 
     def __init__(self, world, tablet=None, speed=1.0):
         super().__init__(world, tablet, speed)
@@ -272,6 +272,17 @@ class SimHobbit(RobotSimulator):
         self.flush()
         self.world.cancel_goals(ARM_ACTION)
         self.world.cancel_goals(NAV_ACTION)
+
+    def place(self, x, y, theta):
+        """Put HOBBIT at (x, y) facing ``theta`` (radians), standing still; ValueError where it does not fit."""
+        x, y, theta = float(x), float(y), float(theta)
+        if not (WORLD.in_area(x, y) and WORLD.fits(x, y)):
+            raise ValueError(f"HOBBIT does not fit at ({x:g}, {y:g})")
+        with self.lock:
+            self._x, self._y, self._theta = x, y, math.remainder(theta, math.tau)
+            self._trail = deque([(x, y)], maxlen=TRAIL_POINTS)
+            self.queue_sensors()
+        self.flush()
 
     def _set_start(self):
         self._x = self._y = self._theta = 0.0
@@ -543,7 +554,7 @@ class SimHobbit(RobotSimulator):
                 feedback(message)
             if status is not None:
                 return status
-            cancelled.wait(POLL_SECONDS)
+            self.next_tick(cancelled)
 
     # --- tablet -------------------------------------------------------------------------
 

@@ -61,6 +61,7 @@ class SimTurtleBot(RobotSimulator):
 
     NAME = "simulated TurtleBot"
     TICK_SECONDS = TICK_SECONDS
+    WORLD_ID = "room"
 
     def __init__(self, world, tablet=None, speed=1.0, boxes=BOXES, start=(0.0, 0.0, 0.0), room=ROOM):
         super().__init__(world, tablet, speed)
@@ -82,6 +83,18 @@ class SimTurtleBot(RobotSimulator):
         self._battery = 100.0
         self._trail = deque([(self._x, self._y)], maxlen=TRAIL_POINTS)
         self._scan = self._cast()
+
+    def place(self, x, y, theta):
+        """Put the TurtleBot at (x, y) facing ``theta`` (radians), standing still; ValueError where it does not fit."""
+        x, y, theta = float(x), float(y), float(theta)
+        if not self._arena.fits(x, y):
+            raise ValueError(f"the TurtleBot does not fit at ({x:g}, {y:g}): it would overlap a wall or a box")
+        with self.lock:
+            self._x, self._y, self._theta = x, y, math.remainder(theta, math.tau)
+            self._trail = deque([(x, y)], maxlen=TRAIL_POINTS)
+            self._scan = self._cast()
+            self.queue_sensors()
+        self.flush()
 
     def reset(self):
         """Put the TurtleBot back at its start, standing still, battery full, no trail, no bumps."""

@@ -22,19 +22,20 @@ def listened_types(profile) -> dict:
 class SimulatedRobot:
     """A profile's simulator running in this process for the whole session.
 
-    ``tablet`` answers the robot's tablet dialogs (a window, or the CLI's --answer list).
+    ``tablet`` answers the robot's tablet dialogs (a window, or the CLI's --answer list); with
+    ``clock=False`` simulated time passes only when something calls ``simulator.step(dt)`` (a lesson's check).
     """
 
     kind = "sim"
     ros_distribution = None  # the ROS 2 distribution the robot plays (robot/wrappers/ros_versions.py); None: none
 
-    def __init__(self, profile, tablet=None, speed: float = 1.0):
+    def __init__(self, profile, tablet=None, speed: float = 1.0, clock: bool = True):
         self.profile = profile
         self.world = SimWorld()
         self.state = StateStore()
         self.world.tap(self.state.record)
         self.simulator = profile.create("simulator", self.world, tablet=tablet, speed=speed)
-        self.simulator.start()
+        self.simulator.start(clock=clock)
         self._encoder = None
         self._listens = listened_types(profile)
         self._published = set()  # the topics programs published on (the simulated robot's commands, made blocks')

@@ -20,6 +20,23 @@ from rockly_desktop.robot.wrappers.ros_versions import ros_name, short_type
 log = logging.getLogger(__name__)
 
 POLL_SECONDS = 0.01
+_SCALARS = frozenset((int, float, str, bool, type(None)))
+
+
+def message_copy(value):
+    """A deep copy of a message (dicts, lists, numbers, texts), as if it had crossed the wire: a
+    quick walk for that plain data (a laser scan's 360 ranges: ~20x quicker than ``copy.deepcopy``),
+    ``copy.deepcopy`` for anything else."""
+    kind = type(value)
+    if kind in _SCALARS:
+        return value
+    if kind is dict:
+        return {key: message_copy(item) for key, item in value.items()}
+    if kind is list:
+        if _SCALARS.issuperset(map(type, value)):
+            return value.copy()
+        return [message_copy(item) for item in value]
+    return copy.deepcopy(value)
 
 
 # actionlib_msgs/GoalStatus codes, as the real robot's action servers report them.
@@ -52,28 +69,34 @@ class SimWorld:
         self._taps = []
         self.params = {}  # the parameter server of the simulated robot
 
-    def tap(self, callback):
-        """Also show ``callback(topic, msg_type, message)`` everything that happens in the world.
+    def tap(self, callback, skip=()):
+        """Also show ``callback(topic, msg_type, message)`` everything that happens in the world, but for
+        the topics in ``skip``.
 
         Topics as they are published; a service call as ``<service>`` with its request and
         response; an action goal as ``<action>/goal`` and its end as ``<action>/result``
         (the topics actionlib uses on ROS), so state panels read both the same way.
         """
-        self._taps.append(callback)
+        self._taps.append((callback, frozenset(skip)))
+
+    def untap(self, callback):
+        """Show ``callback`` nothing more."""
+        self._taps = [(tapped, skip) for tapped, skip in self._taps if tapped != callback]
 
     def _show_taps(self, topic, msg_type, message):
-        for callback in list(self._taps):
-            callback(topic, msg_type, copy.deepcopy(message))
+        for callback, skip in list(self._taps):
+            if topic not in skip:
+                callback(topic, msg_type, message_copy(message))
 
     # --- topics -----------------------------------------------------------------------
 
     def publish(self, topic: str, msg_type: str, message: dict) -> None:
         """Make ``message`` the topic's latest, hand it to every subscriber, wake waiters."""
         with self._changed:
-            self._latest[topic] = (msg_type, copy.deepcopy(message))
+            self._latest[topic] = (msg_type, message_copy(message))
             callbacks = list(self._subscribers[topic])
         for callback in callbacks:
-            callback(copy.deepcopy(message))
+            callback(message_copy(message))
         self._show_taps(topic, msg_type, message)
         with self._changed:
             self._changed.notify_all()
@@ -93,7 +116,7 @@ class SimWorld:
         """A copy of the last message published on ``topic``, or None."""
         with self._changed:
             entry = self._latest.get(topic)
-            return copy.deepcopy(entry[1]) if entry else None
+            return message_copy(entry[1]) if entry else None
 
     def topics(self) -> list:
         """Every topic that has had a message, as sorted ``(topic, msg_type)`` pairs."""
@@ -129,13 +152,13 @@ class SimWorld:
         if handler is None:
             raise RobotCommandError(app_local_text("sim_no_service", name=name))
         try:
-            response = handler(copy.deepcopy(request), interrupt)
+            response = handler(message_copy(request), interrupt)
         except RocklyError:
             raise
         except Exception as error:
             raise RobotCommandError(app_local_text("sim_service_failed", name=name, error=error)) from error
         self._show_taps(name, "service", {"request": request, "response": response})
-        return copy.deepcopy(response)
+        return message_copy(response)
 
     # --- actions ------------------------------------------------------------------------
 
@@ -169,10 +192,15 @@ class SimWorld:
             sim_goal = SimGoal(action)
             self._goals.add(sim_goal)
         self._show_taps(f"/{action.strip('/')}/goal", "action goal", {"goal": goal})
-        thread = threading.Thread(target=self._run_goal, args=(handler, sim_goal, copy.deepcopy(goal), feedback),
+        thread = threading.Thread(target=self._run_goal, args=(handler, sim_goal, message_copy(goal), feedback),
                                   name=f"sim goal {action}", daemon=True)
         thread.start()
         return sim_goal
+
+    def running_goals(self) -> int:
+        """How many goals are running now (sent and not yet ended)."""
+        with self._changed:
+            return len(self._goals)
 
     def cancel_goals(self, action: str) -> None:
         """Cancel every active goal on the action server ``action``."""
@@ -184,7 +212,7 @@ class SimWorld:
     def _run_goal(self, handler, sim_goal: SimGoal, goal: dict, feedback):
         def send_feedback(message):
             if feedback is not None:
-                feedback(copy.deepcopy(message))
+                feedback(message_copy(message))
 
         try:
             status, result, *reason = handler(goal, send_feedback, sim_goal.cancelled)
@@ -192,7 +220,7 @@ class SimWorld:
             log.exception("the action server '%s' failed", sim_goal.action)
             status, result, reason = GoalStatus.ABORTED, {}, []
         with self._changed:
-            sim_goal.outcome = GoalOutcome(status, copy.deepcopy(result), str(reason[0]) if reason else "")
+            sim_goal.outcome = GoalOutcome(status, message_copy(result), str(reason[0]) if reason else "")
             self._goals.discard(sim_goal)
             self._changed.notify_all()
         status_message = {"status": _ACTIONLIB_CODES[status], "text": sim_goal.outcome.text}

@@ -16,10 +16,16 @@ parts that are the same for every robot:
   ``queue_sensors()`` under the lock, then flushes;
 * the **life cycle**: ``start()`` calls ``connect()``, publishes the first sensor messages
   and starts the clock (once only); ``shutdown()`` stops the clock, waits for its thread and
-  ends the subscriptions made with ``subscribe()``.
+  ends the subscriptions made with ``subscribe()``;
+* **stepped time**: ``start(clock=False)`` starts no clock thread; whoever drives the simulator
+  (a lesson's check, ``rockly_desktop/lessons/stepping.py``) calls ``step(dt)``, which ticks at
+  once and returns when every action goal's thread has looked at the tick (a goal's thread
+  follows the simulation with ``next_tick(cancelled)``, never with a fixed sleep), so simulated
+  time runs as fast as the machine allows and a goal ends at the tick its task ended.
 
 A subclass overrides the hooks ``connect()``, ``advance(dt)``, ``queue_sensors()``,
-``snapshot()`` and ``reset()``, and sets ``NAME`` and ``TICK_SECONDS``. A robot with a solid
+``snapshot()``, ``reset()`` and ``place(x, y, theta)`` (a lesson's start pose), and sets ``NAME``,
+``TICK_SECONDS`` and ``WORLD_ID`` (the name lessons give its world). A robot with a solid
 world declares it as data (``robot/sim/world_map.py``) and lets it stop the robot's motions.
 """
 import math
@@ -71,6 +77,10 @@ class RobotSimulator:
     NAME = "simulated robot"  # names the clock thread and the simulator in messages
     solid_world = None  # the World (robot/sim/world_map.py) it moves in, if it has a solid one: recordings name it
     TICK_SECONDS = 0.1        # real seconds between two ticks of the clock
+    WORLD_ID = "world"      # the name a lesson gives the world it moves in
+    FOLLOW_SECONDS = 0.01     # real seconds a goal's thread waits for the next tick at most
+    STEP_WAIT_SECONDS = 0.25  # real seconds a step waits at most for the goal threads (a loaded machine's
+                              # scheduling; a goal that does not follow with next_tick costs this a tick)
 
     def __init__(self, world, tablet=None, speed=1.0):
         self.speed = checked_speed(speed)
@@ -84,6 +94,9 @@ class RobotSimulator:
         self._stopping = threading.Event()
         self._thread = None
         self._unsubscribe = []
+        self._ticked = threading.Condition()   # a tick happened; a goal's thread waits for the next
+        self._ticks = 0
+        self._looking = {}                     # tick number -> goal threads waiting after it
 
     # --- the hooks a robot overrides ----------------------------------------------------
 
@@ -108,10 +121,16 @@ class RobotSimulator:
         """
         raise NotImplementedError(f"the {self.NAME} cannot be put back")
 
+    def place(self, x: float, y: float, theta: float):
+        """Put the robot at (x, y) (map metres) facing ``theta`` (radians), standing still, before a run
+        starts (a lesson's start pose); ValueError when it does not fit there."""
+        raise NotImplementedError(f"the {self.NAME} cannot be placed")
+
     # --- life cycle -------------------------------------------------------------------
 
-    def start(self):
-        """Connect, publish the first sensor messages, start the clock. A second start is refused."""
+    def start(self, clock: bool = True):
+        """Connect, publish the first sensor messages, start the clock (none with ``clock=False``:
+        simulated time then passes only by ``step(dt)``). A second start is refused."""
         if self._thread is not None:
             raise RuntimeError(f"the {self.NAME} was already started")
         self._thread = threading.Thread(target=self._run, name=self.NAME, daemon=True)
@@ -119,7 +138,8 @@ class RobotSimulator:
         with self.lock:
             self.queue_sensors()
         self.flush()
-        self._thread.start()
+        if clock:
+            self._thread.start()
 
     def shutdown(self):
         """Stop the clock, wait for its thread, and end the subscriptions made with ``subscribe()``."""
@@ -158,6 +178,34 @@ class RobotSimulator:
             self.advance(dt)
             self.queue_sensors()
         self.flush()
+        with self._ticked:
+            self._ticks += 1
+            self._ticked.notify_all()
+
+    def step(self, dt: float, goals_running=lambda: 0):
+        """Let ``dt`` simulated seconds pass now (a simulator started with ``clock=False``), then wait
+        until ``goals_running()`` goal threads (SimWorld.running_goals) look at the new state again."""
+        self._tick(dt)
+        deadline = time.monotonic() + self.STEP_WAIT_SECONDS
+        with self._ticked:
+            tick = self._ticks
+            # goals_running() changes without telling this condition: look again every 0.5 ms
+            while self._looking.get(tick, 0) < goals_running() and time.monotonic() < deadline:
+                self._ticked.wait(0.0005)
+
+    def next_tick(self, cancelled: threading.Event):
+        """For an action goal's thread following the simulation: wait for the next tick (at most
+        ``FOLLOW_SECONDS``) or until ``cancelled`` is set. A stepped clock waits for it to get here."""
+        with self._ticked:
+            tick = self._ticks
+            self._looking[tick] = self._looking.get(tick, 0) + 1
+            self._ticked.notify_all()
+            try:
+                self._ticked.wait_for(lambda: self._ticks != tick or cancelled.is_set(), self.FOLLOW_SECONDS)
+            finally:
+                self._looking[tick] -= 1
+                if not self._looking[tick]:
+                    del self._looking[tick]
 
     # --- publishing: queued under the lock, sent outside it, in order -----------------------
 

@@ -19,7 +19,7 @@ and calls ``on_closed``; so does an agent that said it beats (its ``hello``) and
 An agent that does not answer within ``timeout`` ends the call with ``AgentError("agent_no_answer")``.
 
 A client proves it is paired with the key this laptop keeps for the agent's address (``RobotKeys``; over TCP in
-its ``hello``, over ROS in every message); without one it can say hello and ``pair(code)``, which keeps the key.
+its ``hello``, over ROS by sealing every message); without one it can say hello and ``pair(code)``, which keeps the key.
 Anything else an agent refuses with ``AgentError("agent_not_paired", ...)``, saying how to pair.
 
 ``via`` picks the transport (one module each): ``tcp`` (``agent.tcp_transport``: ``host``:``port``), ``ros``
@@ -45,7 +45,7 @@ from rockly_desktop.runtime.agent.protocol import (
     HEARTBEAT_SECONDS,
     AgentError,
 )
-from rockly_desktop.runtime.agent.robot_keys import RobotKey, RobotKeys, ros_address, tcp_address
+from rockly_desktop.runtime.agent.robot_keys import RobotKey, RobotKeys, tcp_address
 
 VIAS = ("auto", "tcp", "ros")
 
@@ -99,10 +99,8 @@ class AgentClient:
         if self.via == "ros":
             from rockly_desktop.runtime.agent.ros_transport import RosLine
 
-            self.address = ros_address(self.kind, where, namespace)
-            self.robot_key = self.keys.get(self.address)
-            self._line = RosLine(self.kind, where, namespace, language, timeout, self._take, self._gone,
-                                 self.robot_key)
+            self._line = RosLine(self.kind, where, namespace, language, timeout, self._take, self._gone, self.keys)
+            self.address, self.robot_key = self._line.address, self._line.key  # of the graph the line found
         else:
             from rockly_desktop.runtime.agent.tcp_transport import TcpLine
 
@@ -144,7 +142,7 @@ class AgentClient:
         for address in also_for:
             self.keys.save(RobotKey(address, key.agent, key.client, key.key, key.role, ""))
         self.robot_key = key
-        self._line.key = key  # over ROS, every later message proves it
+        self._line.key = key  # (a ROS line seals with it already: it opened the answer)
         self.paired = {"client": key.client, "role": key.role}
         return key
 

@@ -345,11 +345,10 @@ def robot_command(args, language: str, standalone_of=None) -> int:
         if event.get("event") == "run" and event.get("state") == "ended":
             done.set()
 
-    pairing = args.robot_command == "pair"
     try:
         client = AgentClient(args.host, args.port, language,
                              on_event=show if args.robot_command == "attach" else None,
-                             on_closed=done.set, name="rockly robot", via="tcp" if pairing else args.via,
+                             on_closed=done.set, name="rockly robot", via=args.via,
                              master=args.master, namespace=args.namespace, domain=args.domain)
     except AgentError as error:
         print(f"rockly robot: {error.message}", file=sys.stderr)
@@ -429,17 +428,21 @@ def _act(client, args, language, standalone_of, done) -> int:
 
 
 def _pair(client, args, language) -> int:
-    """``rockly robot pair CODE``: over TCP (TLS); with ``--master`` or ``--domain`` the key serves that ROS
-    graph's agent too."""
+    """``rockly robot pair CODE``: over TCP (TLS), where with ``--master`` or ``--domain`` the key serves that ROS
+    graph's agent too; or over ROS (the code and the key sealed, ``agent.ros_transport``)."""
     from rockly_desktop.runtime.agent.robot_keys import ros_address
     from rockly_desktop.runtime.agent.tls import short_fingerprint
 
     also = []
-    if args.domain is not None:
+    if client.via == "tcp" and args.domain is not None:
         also.append(ros_address("ros2", args.domain, args.namespace))
-    elif args.master:
+    elif client.via == "tcp" and args.master:
         also.append(ros_address("ros1", args.master, args.namespace))
     key = client.pair(args.code, args.name, also)
+    if client.via == "ros":
+        print(app_text("robot_paired_ros", language, agent=key.agent, role=app_text("role_" + key.role, language),
+                       path=client.keys.path))
+        return 0
     print(app_text("robot_paired", language, agent=key.agent, role=app_text("role_" + key.role, language),
                    fingerprint=short_fingerprint(key.fingerprint), path=client.keys.path))
     return 0

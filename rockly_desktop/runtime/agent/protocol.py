@@ -7,7 +7,7 @@ language the client named in its ``hello``). An attached client also gets the ru
 the lines of ``runtime.event_stream`` (``{"event": "block", ...}``) and the agent's own
 ``{"event": "run", "state": ...}``, ``{"event": "control", "controller": BOOL}``.
 
-Every ``ALIVE_SECONDS`` the agent says ``{"alive": true}`` to every client (over ROS once, to all): neither an
+Every ``ALIVE_SECONDS`` the agent says ``{"alive": true}`` to every client (over ROS sealed per line): neither an
 answer nor an event, so a client older than it drops it unread (its ``reply`` names no request it waits for). The
 agent's ``hello`` answer says ``"alive_seconds"``; a client that got it ends its line as lost after
 ``AGENT_SILENT_SECONDS`` without a word from the agent (a hung or frozen agent, a cut network close nothing: a TCP

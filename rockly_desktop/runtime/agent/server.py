@@ -26,7 +26,7 @@ Requests (each answered; refusals say why in the client's language):
                                                                      client's say the editor is there
 
 Before a client is paired (``client.paired``: a ``PairedClient``, set by its transport: over TCP by a ``hello``
-that proves the key, ``pairings.hello_data``; over ROS by each message's proof) only ``hello`` and ``pair`` are
+that proves the key, ``pairings.hello_data``; over ROS by the key each line seals with) only ``hello`` and ``pair`` are
 answered; anything else is refused with ``agent_not_paired``. A teacher may do everything; a student may send,
 replace and delete its own programs, start its own and the teacher's, attach and watch, control a run it started,
 and stop any run (``agent_teacher_only``, ``agent_not_yours``). Who may do what: docs/agent.md.
