@@ -10,6 +10,7 @@
 """
 import json
 import os
+import socket
 import statistics
 import sys
 import tempfile
@@ -22,6 +23,7 @@ from agent_tools import AgentProcess
 from agent_wire import hello, tls_connection
 
 from rockly_desktop.runtime.agent.tcp_transport import MAX_CONNECTIONS_PER_ADDRESS
+from rockly_desktop.runtime.agent.tls import LockedTls
 
 STOPS = 40
 
@@ -31,7 +33,8 @@ class Line:
     as the paired laptop (a paired client turned hostile: the bounds hold for it too)."""
 
     def __init__(self, agent, source="127.0.0.1"):
-        self.socket, nonce = tls_connection(agent.port, source)
+        connection, nonce = tls_connection(agent.port, source)
+        self.socket = LockedTls(connection)  # read and written by two threads
         self.answers, self.beats = {}, []
         self._arrived = threading.Condition()
         threading.Thread(target=self._read, daemon=True).start()
@@ -66,6 +69,10 @@ class Line:
         return self.answers[request["id"]] - started
 
     def close(self):
+        try:
+            self.socket.shutdown(socket.SHUT_RDWR)
+        except OSError:
+            pass
         self.socket.close()
 
 

@@ -6,6 +6,7 @@ import os
 import stat
 import subprocess
 import sys
+import threading
 import time
 
 import pytest
@@ -274,3 +275,38 @@ def test_pairings_in_memory_expire_on_their_clock_and_the_guesses_cap_opens_afte
     assert pairings.pair(kiosk.code, "kiosk", role="student").role == "student"  # less than the code gives
     pupil = pairings.new_code("student")
     assert pairings.pair(pupil.code, "pupil", role="teacher").role == "student"  # never more
+
+
+def test_every_answer_arrives_over_tls_while_both_sides_read_and_write_at_once(agent):
+    """Each side reads on one thread while others write (four threads' calls and the heartbeats; the agent's
+    answers and beats). OpenSSL's connection object must not be used by two threads at once: a plain SSLSocket
+    read and written so (benchmarks/agent_under_attack.py's client) lost an answer in some thousand; AgentClient
+    and the agent take turns on it (tls.LockedTls)."""
+    client = AgentClient("127.0.0.1", agent.port, timeout=5)
+    answered = []
+
+    def ask_many():
+        for _ in range(1000):
+            answered.append(client.programs() == {"programs": [], "run": None})
+    try:
+        client.attach(control=True)  # its heartbeats go out meanwhile
+        askers = [threading.Thread(target=ask_many) for _ in range(4)]
+        for asker in askers:
+            asker.start()
+        for asker in askers:
+            asker.join(120)
+        assert answered == [True] * 4000
+    finally:
+        client.close()
+
+
+@pytest.mark.skipif(os.geteuid() != 0, reason="giving a folder to another user needs root")
+def test_rockly_agent_pair_as_another_user_than_the_agents_is_refused(tmp_path):
+    """root making a code for a service's agent (its own user): the agent could not read the code file."""
+    library = tmp_path / "library"
+    library.mkdir()
+    os.chown(library, 65534, 65534)
+    made = subprocess.run([sys.executable, "-m", "rockly_desktop", "agent", "--library", str(library), "--language",
+                           "en", "pair"], capture_output=True, text=True, timeout=120, cwd=REPO)
+    assert made.returncode == 1 and "run this command as that user ('sudo -u " in made.stderr, made.stderr
+    assert not agent_folder(library).exists()

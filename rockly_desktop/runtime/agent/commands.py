@@ -152,6 +152,10 @@ def pairing_command(args, language: str) -> int:
 
     folder = agent_folder(args.library or default_library())
     pairings = Pairings(folder)
+    owner = _other_owner(folder)
+    if owner is not None:  # what this command wrote, the agent's own user could not read
+        print(app_text("agent_pair_other_user", language, folder=folder, owner=owner), file=sys.stderr)
+        return 1
     try:
         if args.agent_action == "pair":
             code = pairings.new_code(args.role)
@@ -174,6 +178,25 @@ def pairing_command(args, language: str) -> int:
         print(app_text("agent_pairings_unusable", language, folder=folder, reason=error.strerror or str(error)),
               file=sys.stderr)
         return 1
+
+
+def _other_owner(folder: Path):
+    """The name of the user owning the agent's ``folder`` (or its library) when that is not this process's user
+    (root running ``rockly agent pair`` for a service's agent); None when it is, or there is no folder yet."""
+    for path in (folder, folder.parent):
+        try:
+            owner = path.stat().st_uid
+        except OSError:
+            continue
+        if owner == os.geteuid():
+            return None
+        import pwd
+
+        try:
+            return pwd.getpwuid(owner).pw_name
+        except KeyError:
+            return str(owner)
+    return None
 
 
 def limits_command(args, language: str) -> int:

@@ -25,7 +25,6 @@ import binascii
 import collections
 import hashlib
 import hmac
-import json
 import os
 import secrets
 import threading
@@ -101,13 +100,6 @@ def hello_data(nonce: str, client_id: str) -> bytes:
     """What a TCP client proves its key over in its ``hello``: the nonce the agent sent that connection, and the
     client's id."""
     return b"rockly-hello\n" + nonce.encode("ascii") + b"\n" + client_id.encode("utf-8")
-
-
-def message_data(message: dict) -> bytes:
-    """What a ROS message's ``proof`` is over: the whole message but its proof, as canonical JSON (the agent
-    decodes and encodes it again: keys sorted, no spaces, ASCII)."""
-    return json.dumps({key: value for key, value in message.items() if key != "proof"}, sort_keys=True,
-                      separators=(",", ":"), ensure_ascii=True).encode("ascii")
 
 
 class _OpenCode:

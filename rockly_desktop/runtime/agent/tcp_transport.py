@@ -17,7 +17,6 @@ import select
 import socket
 import socketserver
 import ssl
-import struct
 import threading
 import time
 
@@ -30,7 +29,7 @@ from rockly_desktop.runtime.agent.protocol import (
     encode,
     refusal_text,
 )
-from rockly_desktop.runtime.agent.tls import TLS_HANDSHAKE, client_context, fingerprint, short_fingerprint
+from rockly_desktop.runtime.agent.tls import TLS_HANDSHAKE, LockedTls, client_context, fingerprint, short_fingerprint
 
 
 class TcpLine:
@@ -67,9 +66,10 @@ class TcpLine:
             raise AgentError("agent_other_certificate", app_text(
                 "agent_other_certificate", language, where=self.where, seen=short_fingerprint(self.fingerprint),
                 paired=short_fingerprint(pinned)))
-        self._lines = self._socket.makefile("rb")
+        self._tls = LockedTls(self._socket)
+        self._rest = b""  # read, not yet a whole line
         try:
-            greeting = decode(self._lines.readline(4096)) or {}
+            greeting = decode(self._next_line(timeout) or b"") or {}
         except socket.timeout:
             self._socket.close()
             raise no_answer from None
@@ -80,7 +80,6 @@ class TcpLine:
             self._socket.close()
             raise AgentError("agent_no_tls", app_text("agent_no_tls", language, host=host, port=port,
                                                       reason="no greeting"))
-        self._socket.settimeout(None)
         self._send_lock = threading.Lock()
         self._take, self._gone = take, gone
         self._reader = threading.Thread(target=self._read, daemon=True, name="agent-client")
@@ -89,8 +88,8 @@ class TcpLine:
     def write(self, message: dict) -> bool:
         """Send ``message``; False when the connection is gone."""
         try:
-            with self._send_lock:
-                self._socket.sendall(encode(message))
+            with self._send_lock:  # two threads' messages never interleave
+                self._tls.sendall(encode(message))
             return True
         except OSError:
             return False
@@ -98,19 +97,29 @@ class TcpLine:
     def lose(self):
         """End the connection as lost (the agent fell silent): ``gone`` follows on the reader thread."""
         try:
-            self._socket.shutdown(socket.SHUT_RDWR)
+            self._tls.shutdown(socket.SHUT_RDWR)
         except OSError:
             pass
 
     def close(self):
         """End the connection (``gone`` follows on the reader thread) and wait for the reader."""
         self.lose()
-        self._socket.close()
         self._reader.join(5)
+        self._tls.close()
+
+    def _next_line(self, timeout: float = None):
+        """The agent's next line (None: the connection has ended)."""
+        while b"\n" not in self._rest:
+            data = self._tls.recv(1 << 16, timeout)
+            if not data:
+                return None
+            self._rest += data
+        line, self._rest = self._rest.split(b"\n", 1)
+        return line
 
     def _read(self):
         try:
-            for line in self._lines:
+            while (line := self._next_line()) is not None:
                 message = decode(line)
                 if message is not None:
                     self._take(message)
@@ -144,8 +153,6 @@ class _Client:
         self._sending = False
         self._changed = threading.Condition()
         self._dropped = False
-        whole, part = divmod(SEND_SECONDS, 1)
-        connection.setsockopt(socket.SOL_SOCKET, socket.SO_SNDTIMEO, struct.pack("ll", int(whole), int(part * 1e6)))
         self._writer = threading.Thread(target=self._write, name="rockly-agent-client-send", daemon=True)
         self._writer.start()
 
@@ -190,7 +197,7 @@ class _Client:
             poll = select.poll()
             poll.register(self.connection, select.POLLIN)
             while (left := until - time.monotonic()) > 0 and poll.poll(left * 1000):
-                if not self.connection.recv(1 << 16):
+                if self.connection.recv_available(1 << 16) == b"":
                     break
         except OSError:
             pass
@@ -207,7 +214,7 @@ class _Client:
                 self._outbox_bytes -= len(data)
                 self._sending = True
             try:
-                self.connection.sendall(data)
+                self.connection.sendall(data, SEND_SECONDS)
             except OSError:  # closed, or SEND_SECONDS without taking a byte: a line cut mid-message is no line
                 with self._changed:
                     self._drop()
@@ -256,7 +263,6 @@ class LineReader:
 
     def __init__(self, connection):
         self._connection = connection
-        self._pending = getattr(connection, "pending", lambda: 0)  # TLS: bytes already read and decrypted
         self._poll = select.poll()
         self._poll.register(connection, select.POLLIN)
         self._buffer = bytearray()
@@ -280,13 +286,13 @@ class LineReader:
             if begun is None and self._buffer:
                 begun = time.monotonic()
             wait = self._wait(begun)
-            if wait is not None and wait <= 0 or not self._pending() and not self._poll.poll(
+            if wait is not None and wait <= 0 or not self._connection.pending() and not self._poll.poll(
                     None if wait is None else wait * 1000):
                 raise LineRefused("agent_line_too_slow")
-            data = self._connection.recv(1 << 16)
-            if not data:
+            data = self._connection.recv_available(1 << 16)
+            if data == b"":
                 return None
-            self._buffer += data
+            self._buffer += data or b""
 
     def _wait(self, begun):
         """Seconds to wait for more (None: as long as it takes: a client between requests)."""
@@ -372,8 +378,8 @@ class AgentServer(socketserver.ThreadingTCPServer):
 
 
     def secured(self, connection):
-        """``connection`` inside TLS, its handshake done within ``FIRST_LINE_SECONDS``; None when it is not TLS
-        (a plain JSON client is told it needs TLS) or its handshake fails."""
+        """``connection`` inside TLS (a ``LockedTls``), its handshake done within ``FIRST_LINE_SECONDS``; None when
+        it is not TLS (a plain JSON client is told it needs TLS) or its handshake fails."""
         connection.settimeout(FIRST_LINE_SECONDS)
         try:
             first = connection.recv(1, socket.MSG_PEEK)
@@ -383,9 +389,10 @@ class AgentServer(socketserver.ThreadingTCPServer):
             secured = self.context.wrap_socket(connection, server_side=True) if first else None
         except OSError:  # ssl.SSLError too: not TLS 1.3, a broken handshake, the time up
             return None
-        if secured is not None:
-            secured.settimeout(None)
-        return secured
+        if secured is None:
+            return None
+        secured.settimeout(None)
+        return LockedTls(secured)
 
 
 def _refuse_plain(connection):

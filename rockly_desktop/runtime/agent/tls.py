@@ -7,8 +7,11 @@ SHA-256 (``fingerprint``) with its key; from then on a certificate with another 
 what that does not protect: docs/agent.md, "Who may use the agent", and docs/decisions/035.
 """
 import hashlib
+import select
 import socket
 import ssl
+import threading
+import time
 from datetime import datetime, timedelta, timezone
 from pathlib import Path
 
@@ -84,3 +87,71 @@ def short_fingerprint(hex_fingerprint: str) -> str:
     the robot and the laptop show."""
     head = hex_fingerprint[:16].upper()
     return " ".join(head[i:i + 4] for i in range(0, len(head), 4))
+
+
+class LockedTls:
+    """One TLS connection that a reading and a writing thread use at once. OpenSSL's connection object must not be
+    used by two threads at a time (a plain SSLSocket read and written so lost an answer in some thousand), so every
+    read and write holds a lock for the moment it takes, never while it waits: the socket is non-blocking, and a
+    thread waits for it (``poll``) without the lock."""
+
+    def __init__(self, secured: ssl.SSLSocket):
+        secured.setblocking(False)
+        self._tls = secured
+        self._lock = threading.Lock()
+
+    def fileno(self) -> int:
+        return self._tls.fileno()
+
+    def pending(self) -> int:
+        """Bytes already read and decrypted, waiting to be taken."""
+        with self._lock:
+            return self._tls.pending()
+
+    def recv_available(self, size: int):
+        """Up to ``size`` bytes without waiting: ``b""`` once the connection has ended, None when nothing is there
+        yet (wait until the socket is readable, then ask again)."""
+        with self._lock:
+            try:
+                return self._tls.recv(size)
+            except (ssl.SSLWantReadError, ssl.SSLWantWriteError):
+                return None
+
+    def recv(self, size: int, timeout: float = None) -> bytes:
+        """Up to ``size`` bytes, waiting up to ``timeout`` seconds (None: as long as it takes; ``socket.timeout``
+        after it); ``b""`` once the connection has ended."""
+        until = None if timeout is None else time.monotonic() + timeout
+        while True:
+            data = self.recv_available(size)
+            if data is not None:
+                return data
+            self._wait(until, readable=True)
+
+    def sendall(self, data: bytes, stalled_seconds: float = None):
+        """Send all of ``data``; ``socket.timeout`` when the other side takes nothing for ``stalled_seconds``."""
+        left = memoryview(data)
+        while left:
+            with self._lock:
+                try:
+                    sent = self._tls.send(left)
+                except (ssl.SSLWantWriteError, ssl.SSLWantReadError):
+                    sent = 0
+            left = left[sent:]
+            if left and not sent:
+                self._wait(None if stalled_seconds is None else time.monotonic() + stalled_seconds, readable=False)
+
+    def _wait(self, until, readable: bool):
+        left = None if until is None else until - time.monotonic()
+        if left is not None and left <= 0:
+            raise socket.timeout("timed out")
+        poll = select.poll()
+        poll.register(self._tls.fileno(), select.POLLIN if readable else select.POLLOUT)
+        if not poll.poll(None if left is None else left * 1000):
+            raise socket.timeout("timed out")
+
+    def shutdown(self, how: int):
+        """Shut the connection's socket (the TLS object is left to the threads still using it: they see it end)."""
+        socket.socket.shutdown(self._tls, how)
+
+    def close(self):
+        self._tls.close()
