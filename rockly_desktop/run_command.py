@@ -18,6 +18,7 @@ from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.workspace_blocks import block_types_by_id
 from rockly_desktop.robot.links import DEFAULT_KIND
 from rockly_desktop.runtime.link_host import ProgramProcess
+from rockly_desktop.runtime.robot_limits import default_path as default_limits_path
 from rockly_desktop.runtime.run import Run, failed
 
 COMMAND = "rockly run"
@@ -33,7 +34,9 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
     from rockly_desktop.app import generate_headless
     from rockly_desktop.profiles.opening import opening_warnings
 
-    process = ProgramProcess.start()  # the program's own process starts while the page generates its code
+    # the program's own process starts while the page generates its code; the teacher's settings (its limits)
+    # and the robot's own limits are out of its reach
+    process = ProgramProcess.start(hidden=[settings_folder(), default_limits_path().parent])
     try:
         try:
             program, _python, run_code, workspace = generate_headless(program_path, language)
@@ -49,6 +52,13 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
                        program_path.name, kept)
     finally:
         process.close()
+
+
+def settings_folder() -> Path:
+    """The folder of the window's settings file (the teacher's limits among them)."""
+    from rockly_desktop.settings.app_settings import AppSettings
+
+    return AppSettings().folder
 
 
 def teacher_limits(profile_id: str, teacher=None):

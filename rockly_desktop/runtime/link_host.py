@@ -61,8 +61,9 @@ class ProgramProcess:
         self._send_lock = threading.Lock()
 
     @classmethod
-    def start(cls, profile=None) -> "ProgramProcess":
-        """Start a program's process (on this Python), for ``profile``'s robot when it is known already."""
+    def start(cls, profile=None, hidden=()) -> "ProgramProcess":
+        """Start a program's process (on this Python), for ``profile``'s robot when it is known already; it
+        neither sees nor changes the ``hidden`` folders (``program_process.isolate``)."""
         mine, pair_end = socket.socketpair()
         mine.settimeout(None)  # blocking, whatever default another library set (rospy sets 60 s for every socket)
         # above the standard streams: where this process has one closed, the child's end could get its number, and
@@ -75,7 +76,8 @@ class ProgramProcess:
         except (AttributeError, OSError, ValueError):
             output = subprocess.DEVNULL
         try:
-            process = subprocess.Popen([sys.executable, "-m", "rockly_desktop.runtime.program_process", str(theirs)],
+            process = subprocess.Popen([sys.executable, "-m", "rockly_desktop.runtime.program_process", str(theirs),
+                                        *(str(Path(folder).resolve()) for folder in hidden)],
                                        pass_fds=(theirs,), stdin=subprocess.DEVNULL, stdout=output, env=environment,
                                        close_fds=True)
         finally:

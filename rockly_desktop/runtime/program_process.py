@@ -1,6 +1,6 @@
 """The program's own process: it runs a program's code and owns no robot link.
 
-    python3 -m rockly_desktop.runtime.program_process FD
+    python3 -m rockly_desktop.runtime.program_process FD [FOLDER ...]
 
 ``FD`` is its end of a socket pair with the link host (``runtime/link_host.py``), which owns the robot
 link, keeps the limits and does the safe stop. The wire (``runtime/link_wire.py``) carries, from the host:
@@ -11,10 +11,13 @@ delay), answers to calls and pushed messages; to the host: ``ready``, ``call`` (
 (the variables and values, when they changed) and ``refused`` (the profile's commands could not be made).
 
 Before anything else it leaves the network (a network namespace of its own, where Linux allows it): the
-program's only way to the robot is the host. The host closing its end ends this process at once.
+program's only way to the robot is the host. Each ``FOLDER`` (the agent's library with its keys and pairings,
+the folder of the robot's own limits) it neither sees nor changes: in a mount namespace of its own, an empty
+read-only folder lies over it. The host closing its end ends this process at once.
 """
 import ctypes
 import errno
+import os
 import queue
 import socket
 import sys
@@ -29,24 +32,43 @@ from rockly_desktop.runtime.event_stream import event_record
 from rockly_desktop.runtime.remote_backend import HostConnection, RemoteBackend
 
 SAMPLE_SECONDS = 0.1  # how often the variables are looked at (as often as a window's own run shows them)
-CLONE_NEWUSER, CLONE_NEWNET = 0x10000000, 0x40000000
+CLONE_NEWUSER, CLONE_NEWNET, CLONE_NEWNS = 0x10000000, 0x40000000, 0x00020000
+MS_RDONLY, MS_NOSUID, MS_NODEV, MS_NOEXEC, MS_REC, MS_PRIVATE = 0x1, 0x2, 0x4, 0x8, 0x4000, 0x40000
 
 
-def leave_network() -> bool:
-    """Move this process into a network namespace of its own (no interface but a down loopback), as root or
-    in a user namespace of its own; False where Linux refuses both. Call it while the process has one thread."""
+def isolate(hidden=()) -> bool:
+    """Move this process into a network namespace of its own (no interface but a down loopback) and, with
+    ``hidden`` folders, a mount namespace of its own with each of them covered by an empty read-only tmpfs; as
+    root or in a user namespace of its own. False where Linux refuses (then nothing is hidden either). Call it
+    while the process has one thread."""
     if not sys.platform.startswith("linux"):
         return False
     try:
         libc = ctypes.CDLL(None, use_errno=True)
     except OSError:
         return False
-    for flags in (CLONE_NEWNET, CLONE_NEWUSER | CLONE_NEWNET):
+    namespaces = CLONE_NEWNET | (CLONE_NEWNS if hidden else 0)
+    for flags in (namespaces, CLONE_NEWUSER | namespaces):
         if libc.unshare(flags) == 0:
-            return True
+            return _hide(libc, hidden)
         if ctypes.get_errno() not in (errno.EPERM, errno.EINVAL, errno.ENOSPC, errno.EUSERS):
             break
     return False
+
+
+def _hide(libc, hidden) -> bool:
+    """Cover each folder of ``hidden`` that exists (in this process's own mount namespace); whether all are."""
+    if not hidden:
+        return True
+    if libc.mount(b"none", b"/", None, MS_REC | MS_PRIVATE, None) != 0:  # nothing done here reaches the host
+        return False
+    covered = True
+    for folder in hidden:
+        if not os.path.isdir(folder):
+            continue
+        flags = MS_RDONLY | MS_NOSUID | MS_NODEV | MS_NOEXEC
+        covered = libc.mount(b"tmpfs", os.fsencode(folder), b"tmpfs", flags, b"size=4k,mode=0555") == 0 and covered
+    return covered
 
 
 def apply_control(control: RunControl, record: dict):
@@ -128,7 +150,7 @@ def run(host: HostConnection, inbox: queue.Queue, control: RunControl, isolated:
 def main(argv=None) -> int:
     """Serve the host on the socket pair whose end ``argv[0]`` names."""
     argv = list(sys.argv[1:] if argv is None else argv)
-    isolated = leave_network()  # first, while this process has one thread
+    isolated = isolate(argv[1:])  # first, while this process has one thread
     sock = socket.socket(fileno=int(argv[0]))
     sock.settimeout(None)
     inbox = queue.Queue()

@@ -41,10 +41,13 @@ class HostConnection:
         threading.Thread(target=self._dispatch, name="rockly-host-pushes", daemon=True).start()
 
     def send(self, record: dict):
-        """Send one record to the host."""
+        """Send one record to the host; a host that is gone ends this process at once (as its reader does)."""
         line = encoded(record)
         with self._send_lock:
-            self._sock.sendall(line)
+            try:
+                self._sock.sendall(line)
+            except OSError:  # closed before it took this (it ended before the run began, or was killed)
+                os._exit(1)
 
     def call(self, name: str, args=(), interrupt=None):
         """Ask the host's backend ``name(*args)`` and return its answer (its error raised here); while waiting,

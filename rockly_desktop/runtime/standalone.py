@@ -16,6 +16,7 @@ stopped it. However it ends, the robot's safe stop has run.
 """
 import argparse
 import sys
+from pathlib import Path
 
 from rockly_desktop.core.app_texts import app_text, languages
 from rockly_desktop.profiles.registry import ProfileRegistry
@@ -83,7 +84,8 @@ def main(program: dict, run_code: str, argv=None, on_event=None) -> int:
                        rockly=program.get("rockly", "?")), file=sys.stderr)
         return EXIT_PROFILE
     args = parser(program, language).parse_args(argv)
-    process = ProgramProcess.start()  # the program's own process starts while the profiles are read
+    # the program's own process starts while the profiles are read; the robot's limits are out of its reach
+    process = ProgramProcess.start(hidden=[Path(args.robot_limits or default_limits_path()).parent])
     try:
         return _run(program, run_code, args, on_event, process)
     finally:

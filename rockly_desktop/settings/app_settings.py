@@ -36,6 +36,11 @@ class AppSettings:
         self.kiosk_mode = False
         self._lessons = None  # made when first asked for: kiosk mode is known by then
 
+    @property
+    def folder(self) -> Path:
+        """The folder the settings file is in."""
+        return Path(self._store.fileName()).parent
+
     def _get(self, key, default=None):
         value = self._store.value(key)
         return default if value is None else value

@@ -23,6 +23,7 @@ from rockly_desktop.runtime.event_stream import EventStream, started_record
 from rockly_desktop.runtime.link_host import ProgramProcess
 from rockly_desktop.runtime.options import connection
 from rockly_desktop.runtime.robot_limits import RobotLimitsError
+from rockly_desktop.runtime.robot_limits import default_path as default_limits_path
 from rockly_desktop.runtime.run import EXIT_ERROR, Run
 from rockly_desktop.runtime.standalone import parser, run_limits
 
@@ -69,10 +70,18 @@ def _block_ids(text: str) -> list:
     return [block for block in ids if isinstance(block, str)] if isinstance(ids, list) else []
 
 
+def _limits_folder(argv: list) -> Path:
+    """The folder of the robot's limits file the agent gave this run (``--robot-limits``), else the default's."""
+    given = argv[argv.index("--robot-limits") + 1] if "--robot-limits" in argv[:-1] else None
+    return Path(given or default_limits_path()).parent
+
+
 def main(argv=None) -> int:
     """Run the standalone file named first in ``argv``; its other arguments are the file's own."""
     argv = list(sys.argv[1:] if argv is None else argv)
-    process = ProgramProcess.start()  # the program's own process starts while the profiles are read
+    # the program's own process starts while the profiles are read; it sees neither the agent's library (its
+    # programs, keys and pairings) nor the robot's own limits
+    process = ProgramProcess.start(hidden=[Path(argv[0]).resolve().parent.parent, _limits_folder(argv)])
     try:
         return _run(argv, process)
     finally:
