@@ -492,7 +492,7 @@ class MainWindow(QMainWindow):
         dialog = PreferencesDialog(self.language, self, self.profile, self.settings.teacher,
                                    reset_before_run=self.settings.reset_before_run, kiosk=self.settings.kiosk,
                                    kiosk_mode=self.settings.kiosk_mode, block_look=self.settings.block_look,
-                                   pin_given=self.gate_asks_pin)
+                                   pin_given=self.gate_asks_pin, robot_limits=self._robot_limits_way())
         if dialog.exec():
             self.settings.reset_before_run = dialog.reset_before_run
             self.settings.block_look = dialog.block_look
@@ -503,6 +503,15 @@ class MainWindow(QMainWindow):
                 self.editor.set_toolbox(self.profile.toolbox(self.language, *self._toolbox_choice()))
             self._follow_robot_lock()
             self.set_language(dialog.language)
+
+    def _robot_limits_way(self):
+        """How the Teacher tab asks the chosen robot's agent for the robot's own limits (None: no agent known)."""
+        way = self._agent_way()
+        if way is None:
+            return None
+        from rockly_desktop.ui.agent.robot_limits_calls import RobotLimitsOnRobot  # not needed to start
+
+        return lambda owner: RobotLimitsOnRobot(owner, way, self.language)
 
     def show_robot_programs(self):
         """Robot → Programs on the robot…: the agent's programs, sending, starting and attaching."""

@@ -185,6 +185,7 @@ def serve(args, language: str) -> int:
             options += [setting.option, str(value)]
     agent = Agent(Library(folder, ProfileRegistry.discover().profiles, args.library_quota * 2**20), args.backend,
                   options)
+    agent.robot_limits_path = args.robot_limits or default_limits_path()  # a paired teacher may set them
     close_offer = _offer_on_robot_ui(agent, args, language)
     if close_offer is False:
         return 2

@@ -20,6 +20,9 @@ Requests (each answered; refusals say why in the client's language):
                                                                      and one it starts, pause before these blocks)
     heartbeat                                                     (no answer without an "id"); the controlling
                                                                      client's say the editor is there
+    robot_limits {"set"?: {"max_speed", "max_turn", "switched_off"}}  -> {"limits": {...}} (a paired teacher only:
+                                                                     the robot's own limits, ``runtime.robot_limits``;
+                                                                     with ``set`` they are kept first)
 
 An attached client gets every event of the run as it happens (see ``agent.protocol``). One attached client
 controls the run (the first that asked to); when it goes, the next attached client that asked to control takes
@@ -32,6 +35,13 @@ from rockly_desktop import __version__
 from rockly_desktop.runtime.agent.library import Library
 from rockly_desktop.runtime.agent.protocol import ALIVE, ALIVE_SECONDS, FORMAT, AgentRefusal, refusal_text
 from rockly_desktop.runtime.agent.running import ProgramRun
+from rockly_desktop.runtime.robot_limits import (
+    RobotLimitsError,
+    read_robot_limits,
+    robot_limits_data,
+    robot_limits_from_data,
+    write_robot_limits,
+)
 
 
 class Agent:
@@ -47,6 +57,7 @@ class Agent:
         self.breakpoints = []  # the controlling client's: a run started while it is attached pauses there too
         self.clients = []
         self.listeners = []  # called (no arguments) when the library changes or a run starts or ends
+        self.robot_limits_path = None  # the robot's own limits file (None: ``robot_limits.default_path()``)
         self._lock = threading.RLock()
 
     # -- requests
@@ -165,6 +176,22 @@ class Agent:
             run.heartbeat()
         return {}
 
+    def _op_robot_limits(self, client, request):
+        _teacher_only(client)
+        wanted = request.get("set")
+        try:
+            if wanted is not None:
+                try:
+                    limits = robot_limits_from_data(wanted, "set")
+                except RobotLimitsError:
+                    raise AgentRefusal("agent_bad_request") from None
+                write_robot_limits(limits, self.robot_limits_path)
+            return {"limits": robot_limits_data(read_robot_limits(self.robot_limits_path))}
+        except RobotLimitsError as error:  # the file on the robot is broken: said as the robot says it
+            raise AgentRefusal(error.text.key, **error.text.values) from None
+        except OSError as error:
+            raise AgentRefusal("agent_limits_cannot_write", reason=error.strerror or str(error)) from None
+
     # -- events and clients
 
     def publish(self, record: dict):
@@ -245,6 +272,13 @@ class Agent:
         run = self.run
         if run is not None:
             run.end()
+
+
+def _teacher_only(client):
+    """Refuses a client that is not paired as a teacher."""
+    paired = getattr(client, "paired", None)
+    if paired is None or paired.role != "teacher":
+        raise AgentRefusal("agent_teacher_only")
 
 
 def _block_ids(value) -> list:
