@@ -524,7 +524,8 @@ class MainWindow(QMainWindow):
                             open_copy=lambda path, name: self.files.open_copy(path, name), document=self.document,
                             limits=lambda: self.settings.teacher.limits(self.profile.id),
                             reached=self._remember_agent,
-                            via="auto" if on_ros else "tcp", graph_kind=self.robots.kind if on_ros else None).show()
+                            via="auto" if on_ros else "tcp", graph_kind=self.robots.kind if on_ros else None,
+                            pair_as_student=self.settings.kiosk_mode).show()  # a kiosk laptop is a student
 
     def make_block(self, chosen: str = "", kind: str = ""):
         """Open the block maker (Tools → Make a block…), with the topic, service or action ``chosen`` (of

@@ -1,7 +1,9 @@
 """Robot → "Programs on the robot…": the agent's address, the programs it keeps and what it runs now, with
 Send (the open program, exported standalone as ``rockly export --standalone`` does), Start, Stop and Attach
 (``AttachedRun``); once attached, whether the robot's program is the one open here; and, at a click, how to put
-the agent on a robot. While it is open the agent is asked again each second, so what it says stays true."""
+the agent on a robot. While it is open the agent is asked again each second, so what it says stays true. A robot
+this laptop is not paired with (or no longer: a revoked key, another certificate) is paired there
+(``PairingPanel``)."""
 import tempfile
 from pathlib import Path
 
@@ -29,6 +31,7 @@ from rockly_desktop.runtime.agent.client import AgentClient
 from rockly_desktop.runtime.agent.protocol import DEFAULT_PORT
 from rockly_desktop.runtime.standalone_file import standalone_text
 from rockly_desktop.ui.agent.agent_calls import AgentCalls
+from rockly_desktop.ui.agent.pairing_panel import PAIRING_NEEDED, PairingPanel
 from rockly_desktop.ui.agent.program_difference import same_program
 from rockly_desktop.ui.texts import tr
 
@@ -44,11 +47,12 @@ class RobotProgramsDialog(QDialog):
     off the window's thread (``calls``): while an answer is on its way, ``status`` says so and the buttons that
     would ask again wait; answers that come after the dialog was closed are dropped. ``via`` is how the agent
     is reached (``AgentClient``'s: ``auto`` for a ROS robot: over ROS when its agent is in the graph of
-    ``graph_kind``, the chosen robot's link kind)."""
+    ``graph_kind``, the chosen robot's link kind). ``pair_as_student``: this laptop pairs as a student whatever
+    the code says (a kiosk)."""
 
     def __init__(self, attached, language: str, parent=None, host: str = "localhost", port: int = DEFAULT_PORT,
                  open_copy=None, document=None, limits=None, reached=None, via: str = "tcp",
-                 graph_kind: str = None):
+                 graph_kind: str = None, pair_as_student: bool = False):
         super().__init__(parent)
         self.via, self.graph_kind = via, graph_kind
         self.attached, self.language, self._open_copy = attached, language, open_copy
@@ -77,6 +81,9 @@ class RobotProgramsDialog(QDialog):
             note = QLabel(tr("robot_programs_via_ros", language))
             note.setWordWrap(True)
             form.addRow(note)
+        self.pairing = PairingPanel(language, self._client_maker, self, student_only=pair_as_student,
+                                    paired=self.refresh)
+        self.pairing.hide()  # until the agent says whether this laptop is paired
         self.programs = QListWidget()
         self.running = QLabel()
         self.status = QLabel()
@@ -109,6 +116,7 @@ class RobotProgramsDialog(QDialog):
         self.help_button.toggled.connect(self._show_help)
         layout = QVBoxLayout(self)
         layout.addLayout(form)
+        layout.addWidget(self.pairing)
         layout.addWidget(self.programs, 1)
         layout.addWidget(self.keep_going)
         layout.addWidget(self.running)
@@ -156,18 +164,11 @@ class RobotProgramsDialog(QDialog):
         """Ask the agent quietly for its programs and what runs (not while another question is on its way)."""
         if self._enabled_before is not None or self.calls.busy:
             return
-        host, port, language = self.host.text().strip(), self.port.value(), self.language
-
-        def work():
-            client = AgentClient(host, port, language, name="rockly window", via=self.via, graph_kind=self.graph_kind)
-            try:
-                return client.programs()
-            finally:
-                client.close()
+        work = self._on_a_client(lambda client: client.programs())
 
         def answered(answer, error):
             if self._enabled_before is None:  # a question asked meanwhile answers for itself
-                self._show_programs(answer, "")
+                self._show_programs(self._follow_pairing(answer, error), "")
                 if error is not None:
                     self.status.setText(error.message)
         self.calls.run(work, answered)
@@ -301,16 +302,11 @@ class RobotProgramsDialog(QDialog):
     def _with_client(self, call, then=None, refresh=True):
         """``call(client)`` on a short connection to the agent, off the window's thread; on the window's thread
         ``then(answer)`` follows (None when refused: the refusal is said in ``status``), then a refresh."""
-        host, port, language = self.host.text().strip(), self.port.value(), self.language
-
-        def work():
-            client = AgentClient(host, port, language, name="rockly window", via=self.via, graph_kind=self.graph_kind)
-            try:
-                return call(client)
-            finally:
-                client.close()
+        host, port = self.host.text().strip(), self.port.value()
+        work = self._on_a_client(call)
 
         def answered(answer, error):
+            answer = self._follow_pairing(answer, error)
             self.status.setText(error.message if error is not None else "")
             if error is None and self._reached is not None:
                 self._reached(host, port)
@@ -320,6 +316,37 @@ class RobotProgramsDialog(QDialog):
                 self.refresh()
 
         self._ask(work, answered)
+
+    def _client_maker(self):
+        """A function that makes a new client of the agent at the address shown now (called off the window's
+        thread)."""
+        host, port, language, via, graph_kind = (self.host.text().strip(), self.port.value(), self.language,
+                                                 self.via, self.graph_kind)
+        return lambda: AgentClient(host, port, language, name="rockly window", via=via, graph_kind=graph_kind)
+
+    def _on_a_client(self, call):
+        """The work of ``call(client)`` on a short connection to the agent: it returns ``(call's answer, the key
+        the client used)``."""
+        make = self._client_maker()
+
+        def work():
+            client = make()
+            try:
+                return call(client), client.robot_key
+            finally:
+                client.close()
+        return work
+
+    def _follow_pairing(self, answer, error):
+        """The pairing panel follows an answer of ``_on_a_client``'s work (or the ``error`` that came instead):
+        returns the call's own answer."""
+        if error is not None:
+            if error.key in PAIRING_NEEDED:
+                self.pairing.needed(error.message, getattr(error, "robot_key", None))
+            return None
+        answer, key = answer
+        self.pairing.show_paired(key)
+        return answer
 
     def _forget_calls(self):
         """The dialog closed: answers on their way are dropped, and the buttons wait no more."""

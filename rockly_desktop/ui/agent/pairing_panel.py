@@ -1,0 +1,202 @@
+"""The Programs dialog's pairing: why this laptop cannot use the robot yet (no key for it, a key the robot no
+longer knows, a certificate other than the one paired with), a field for the one-time code the robot shows
+(``rockly agent pair`` prints one; HOBBIT's tablet may show one) and Pair; once paired, the robot's name, this
+laptop's role there and the certificate's short fingerprint; a teacher makes a code for another laptop; and Forget
+this robot deletes the key. The agent is asked off the window's thread (``AgentCalls``); a wrong, expired or
+over-guessed code is said and the code typed stays."""
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import (
+    QComboBox,
+    QGroupBox,
+    QHBoxLayout,
+    QLabel,
+    QLineEdit,
+    QPushButton,
+    QVBoxLayout,
+    QWidget,
+)
+
+from rockly_desktop.runtime.agent.robot_keys import RobotKeys
+from rockly_desktop.ui.agent.agent_calls import AgentCalls
+from rockly_desktop.ui.texts import tr
+
+# the refusals that pairing (again) mends
+PAIRING_NEEDED = frozenset({"agent_not_paired", "agent_key_unknown", "agent_certificate_changed"})
+ROLES = ("student", "teacher")
+
+
+def short_fingerprint(fingerprint: str) -> str:
+    """The first 16 hex digits of a certificate's SHA-256, in groups of four (what a person compares)."""
+    digits = fingerprint.replace(":", "").lower()[:16]
+    return " ".join(digits[start:start + 4] for start in range(0, len(digits), 4))
+
+
+class PairingPanel(QGroupBox):
+    """Pairing with the robot whose agent ``connect()`` reaches (called on the window's thread, it returns a
+    function that makes a new ``AgentClient`` off it). ``student_only``: this laptop pairs as a student whatever the code says (a kiosk). ``paired()`` is
+    called on the window's thread once a pairing succeeded or a key was forgotten (the dialog asks again)."""
+
+    def __init__(self, language: str, connect, parent=None, student_only: bool = False, paired=None,
+                 keys: RobotKeys = None):
+        super().__init__(tr("pairing_title", language), parent)
+        self.setObjectName("pairing_panel")
+        self._language, self._connect, self._student_only, self._paired = language, connect, student_only, paired
+        self._keys = keys if keys is not None else RobotKeys()
+        self.key = None  # the RobotKey this laptop holds for the robot, when known
+        self.calls = AgentCalls(self)
+        self.reason = self._label("pairing_reason")
+        self.how = self._label("pairing_how")
+        self.how.setText(tr("pairing_how", language) + (" " + tr("pairing_kiosk_student", language)
+                                                         if student_only else ""))
+        self.code = QLineEdit(self, objectName="pairing_code")
+        self.code.setPlaceholderText(tr("pairing_code_hint", language))
+        self.code.returnPressed.connect(self.pair)
+        self.code.textChanged.connect(lambda text: self.pair_button.setEnabled(bool(text.strip())))
+        self.pair_button = QPushButton(tr("pairing_pair", language), self, objectName="pairing_pair")
+        self.pair_button.setAutoDefault(False)
+        self.pair_button.setEnabled(False)
+        self.pair_button.clicked.connect(self.pair)
+        self.asking = QWidget(self)
+        entry = QHBoxLayout(self.asking)
+        entry.setContentsMargins(0, 0, 0, 0)
+        entry.addWidget(QLabel(tr("pairing_code_label", language), self))
+        entry.addWidget(self.code, 1)
+        entry.addWidget(self.pair_button)
+        self.about = self._label("pairing_about")
+        self.another_button = QPushButton(tr("pairing_another", language), self, objectName="pairing_another")
+        self.another_role = QComboBox(self, objectName="pairing_another_role")
+        for role in ROLES:
+            self.another_role.addItem(tr(f"pairing_as_{role}", language), role)
+        self.forget_button = QPushButton(tr("pairing_forget", language), self, objectName="pairing_forget")
+        for button in (self.another_button, self.forget_button):
+            button.setAutoDefault(False)
+        self.another_button.clicked.connect(self.make_code)
+        self.forget_button.clicked.connect(self.forget)
+        self.actions = QWidget(self)
+        row = QHBoxLayout(self.actions)
+        row.setContentsMargins(0, 0, 0, 0)
+        row.addWidget(self.another_button)
+        row.addWidget(self.another_role)
+        row.addStretch(1)
+        row.addWidget(self.forget_button)
+        self.other_code = self._label("pairing_other_code")
+        self.other_code.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        self.problem = self._label("pairing_problem")
+        layout = QVBoxLayout(self)
+        for widget in (self.reason, self.how, self.asking, self.about, self.actions, self.other_code, self.problem):
+            layout.addWidget(widget)
+        self.needed("")
+
+    def _label(self, name: str) -> QLabel:
+        label = QLabel(self, objectName=name, wordWrap=True)
+        label.setTextFormat(Qt.TextFormat.PlainText)
+        return label
+
+    @property
+    def pairing_needed(self) -> bool:
+        """True while the panel asks for a code."""
+        return not self.asking.isHidden()
+
+    def needed(self, reason: str, key=None):
+        """This laptop cannot use the robot without pairing: ``reason`` says why (the agent's or the client's
+        words); ``key``: the key it holds all the same (one the robot no longer knows), which Forget deletes."""
+        self.show()
+        self.key = key
+        self.reason.setText(reason)
+        self.reason.setVisible(bool(reason))
+        for widget in (self.how, self.asking):
+            widget.show()
+        self.about.hide()
+        self.another_button.hide()
+        self.another_role.hide()
+        self.forget_button.setVisible(key is not None)
+        self.actions.setVisible(key is not None)
+        self.other_code.hide()
+
+    def show_paired(self, key):
+        """The robot answered this laptop, which holds ``key`` for it (a ``RobotKey``; None: none is needed)."""
+        if key is None:
+            self.hide()
+            return
+        self.show()
+        changed = key != self.key
+        self.key = key
+        self.about.setText(tr("pairing_about", self._language, agent=key.agent,
+                              role=tr(f"pairing_role_{key.role}", self._language),
+                              fingerprint=short_fingerprint(key.fingerprint) if key.fingerprint
+                              else tr("pairing_no_certificate", self._language)))
+        for widget in (self.reason, self.how, self.asking):
+            widget.hide()
+        self.about.show()
+        self.actions.show()
+        teacher = key.role == "teacher"
+        self.another_button.setVisible(teacher)
+        self.another_role.setVisible(teacher)
+        self.forget_button.show()
+        if changed:
+            self.other_code.hide()
+            self.problem.setText("")
+
+    def pair(self):
+        """Pair with the code typed (off the window's thread); the code stays when it is refused."""
+        code = self.code.text().strip()
+        if not code or self.calls.busy:
+            return
+        role = "student" if self._student_only else None
+        connect = self._connect()
+
+        def work():
+            client = connect()
+            try:
+                return client.pair(code, role=role)
+            finally:
+                client.close()
+
+        self.pair_button.setEnabled(False)
+        self.problem.setText(tr("robot_programs_asking", self._language))
+        self.calls.run(work, self._pair_answered)
+
+    def _pair_answered(self, key, error):
+        self.pair_button.setEnabled(bool(self.code.text().strip()))
+        if error is not None:
+            self.problem.setText(error.message)
+            return
+        self.code.clear()
+        self.problem.setText(tr("pairing_done", self._language, agent=key.agent))
+        self.show_paired(key)
+        if self._paired is not None:
+            self._paired()
+
+    def make_code(self):
+        """Ask the robot for a one-time code another laptop pairs with, in the role chosen (a teacher only)."""
+        role, connect = self.another_role.currentData(), self._connect()
+
+        def work():
+            client = connect()
+            try:
+                return client.pairing_code(role)
+            finally:
+                client.close()
+
+        self.another_button.setEnabled(False)
+        self.problem.setText(tr("robot_programs_asking", self._language))
+        self.calls.run(work, self._code_answered)
+
+    def _code_answered(self, answer, error):
+        self.another_button.setEnabled(True)
+        if error is not None:
+            self.problem.setText(error.message)
+            return
+        self.problem.setText("")
+        self.other_code.setText(tr("pairing_other_code", self._language, code=answer["code"],
+                                   seconds=answer["seconds"]))
+        self.other_code.show()
+
+    def forget(self):
+        """Delete this laptop's key for the robot: it must pair again to use it."""
+        if self.key is not None:
+            self._keys.forget(self.key.address)
+        self.needed(tr("pairing_forgotten", self._language))
+        self.problem.setText("")
+        if self._paired is not None:
+            self._paired()
