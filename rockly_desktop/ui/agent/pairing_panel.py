@@ -17,23 +17,19 @@ from PySide6.QtWidgets import (
 )
 
 from rockly_desktop.runtime.agent.robot_keys import RobotKeys
+from rockly_desktop.runtime.agent.tls import short_fingerprint
 from rockly_desktop.ui.agent.agent_calls import AgentCalls
 from rockly_desktop.ui.texts import tr
 
-# the refusals that pairing (again) mends
-PAIRING_NEEDED = frozenset({"agent_not_paired", "agent_key_unknown", "agent_certificate_changed"})
+# what pairing (again) mends: no key the agent knows (none, or revoked), a certificate other than the one paired with
+PAIRING_NEEDED = frozenset({"agent_not_paired", "agent_other_certificate"})
 ROLES = ("student", "teacher")
 
 
-def short_fingerprint(fingerprint: str) -> str:
-    """The first 16 hex digits of a certificate's SHA-256, in groups of four (what a person compares)."""
-    digits = fingerprint.replace(":", "").lower()[:16]
-    return " ".join(digits[start:start + 4] for start in range(0, len(digits), 4))
-
-
 class PairingPanel(QGroupBox):
-    """Pairing with the robot whose agent ``connect()`` reaches (called on the window's thread, it returns a
-    function that makes a new ``AgentClient`` off it). ``student_only``: this laptop pairs as a student whatever the code says (a kiosk). ``paired()`` is
+    """Pairing with the robot whose agent ``connect()`` reaches (called on the window's thread, it returns
+    ``(make, also_for)``: ``make()`` makes a new ``AgentClient`` off it, over TCP, and ``also_for`` the addresses
+    of the same agent over ROS the key serves too). ``student_only``: this laptop pairs as a student whatever the code says (a kiosk). ``paired()`` is
     called on the window's thread once a pairing succeeded or a key was forgotten (the dialog asks again)."""
 
     def __init__(self, language: str, connect, parent=None, student_only: bool = False, paired=None,
@@ -143,12 +139,12 @@ class PairingPanel(QGroupBox):
         if not code or self.calls.busy:
             return
         role = "student" if self._student_only else None
-        connect = self._connect()
+        make, also_for = self._connect()
 
         def work():
-            client = connect()
+            client = make()
             try:
-                return client.pair(code, role=role)
+                return client.pair(code, also_for=also_for, role=role)
             finally:
                 client.close()
 
@@ -169,10 +165,10 @@ class PairingPanel(QGroupBox):
 
     def make_code(self):
         """Ask the robot for a one-time code another laptop pairs with, in the role chosen (a teacher only)."""
-        role, connect = self.another_role.currentData(), self._connect()
+        role, (make, _also_for) = self.another_role.currentData(), self._connect()
 
         def work():
-            client = connect()
+            client = make()
             try:
                 return client.pairing_code(role)
             finally:
@@ -193,9 +189,12 @@ class PairingPanel(QGroupBox):
         self.other_code.show()
 
     def forget(self):
-        """Delete this laptop's key for the robot: it must pair again to use it."""
+        """Delete this laptop's key for the robot (for each way it is reached: TCP, its ROS graph): it must pair
+        again to use it."""
         if self.key is not None:
-            self._keys.forget(self.key.address)
+            for kept in self._keys.all():
+                if kept.address == self.key.address or kept.client == self.key.client:
+                    self._keys.forget(kept.address)
         self.needed(tr("pairing_forgotten", self._language))
         self.problem.setText("")
         if self._paired is not None:

@@ -27,8 +27,9 @@ from PySide6.QtWidgets import (
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.program import Program, write_text_atomically
 from rockly_desktop.core.workspace_blocks import block_types_by_id
-from rockly_desktop.runtime.agent.client import AgentClient
-from rockly_desktop.runtime.agent.protocol import DEFAULT_PORT
+from rockly_desktop.runtime.agent.client import AgentClient, AgentError, chosen_via
+from rockly_desktop.runtime.agent.protocol import DEFAULT_NAMESPACE, DEFAULT_PORT
+from rockly_desktop.runtime.agent.robot_keys import RobotKeys, ros_address, tcp_address
 from rockly_desktop.runtime.standalone_file import standalone_text
 from rockly_desktop.ui.agent.agent_calls import AgentCalls
 from rockly_desktop.ui.agent.pairing_panel import PAIRING_NEEDED, PairingPanel
@@ -81,7 +82,7 @@ class RobotProgramsDialog(QDialog):
             note = QLabel(tr("robot_programs_via_ros", language))
             note.setWordWrap(True)
             form.addRow(note)
-        self.pairing = PairingPanel(language, self._client_maker, self, student_only=pair_as_student,
+        self.pairing = PairingPanel(language, self._pairing_way, self, student_only=pair_as_student,
                                     paired=self.refresh)
         self.pairing.hide()  # until the agent says whether this laptop is paired
         self.programs = QListWidget()
@@ -324,15 +325,34 @@ class RobotProgramsDialog(QDialog):
                                                  self.via, self.graph_kind)
         return lambda: AgentClient(host, port, language, name="rockly window", via=via, graph_kind=graph_kind)
 
+    def _pairing_way(self):
+        """``(make, also_for)`` for the pairing panel: pairing goes over TCP (TLS: the key never travels in clear),
+        and on a robot reached over ROS the key serves its agent there too (the graph this window is on)."""
+        host, port, language = self.host.text().strip(), self.port.value(), self.language
+        also_for = []
+        if self.via != "tcp":
+            _via, kind, where = chosen_via("ros", graph_kind=self.graph_kind)
+            if where is not None:
+                also_for.append(ros_address(kind, where, DEFAULT_NAMESPACE))
+        return lambda: AgentClient(host, port, language, name="rockly window"), also_for
+
     def _on_a_client(self, call):
         """The work of ``call(client)`` on a short connection to the agent: it returns ``(call's answer, the key
-        the client used)``."""
-        make = self._client_maker()
+        the client used)``; an AgentError it raises carries ``robot_key`` too: the key this laptop holds for the
+        agent (None when it holds none), which a refusal for lack of pairing makes worth forgetting."""
+        make, tcp_key = self._client_maker(), tcp_address(self.host.text().strip(), self.port.value())
 
         def work():
-            client = make()
+            try:
+                client = make()
+            except AgentError as error:  # a certificate other than the one paired with is refused before hello
+                error.robot_key = RobotKeys().get(tcp_key)
+                raise
             try:
                 return call(client), client.robot_key
+            except AgentError as error:
+                error.robot_key = client.robot_key
+                raise
             finally:
                 client.close()
         return work
@@ -342,7 +362,13 @@ class RobotProgramsDialog(QDialog):
         returns the call's own answer."""
         if error is not None:
             if error.key in PAIRING_NEEDED:
-                self.pairing.needed(error.message, getattr(error, "robot_key", None))
+                key = getattr(error, "robot_key", None)
+                reason = error.message
+                if error.key == "agent_not_paired" and key is not None:  # it held a key: revoked, or a new agent
+                    reason = tr("pairing_revoked", self.language)
+                elif error.key == "agent_other_certificate":
+                    reason += " " + tr("pairing_other_certificate", self.language)
+                self.pairing.needed(reason, key)
             return None
         answer, key = answer
         self.pairing.show_paired(key)
