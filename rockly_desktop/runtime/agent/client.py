@@ -18,11 +18,16 @@ and calls ``on_closed``; so does an agent that said it beats (its ``hello``) and
 ``AGENT_SILENT_SECONDS`` (hung, frozen, or the network cut: no transport says so soon, see ``agent.protocol``).
 An agent that does not answer within ``timeout`` ends the call with ``AgentError("agent_no_answer")``.
 
+A client proves it is paired with the key this laptop keeps for the agent's address (``RobotKeys``; over TCP in
+its ``hello``, over ROS in every message); without one it can say hello and ``pair(code)``, which keeps the key.
+Anything else an agent refuses with ``AgentError("agent_not_paired", ...)``, saying how to pair.
+
 ``via`` picks the transport (one module each): ``tcp`` (``agent.tcp_transport``: ``host``:``port``), ``ros``
 (``agent.ros_transport``: the agent's topics in ``namespace`` on ROS 2 domain ``domain`` when it is given, through
 this process's ROS 2 helper; else on ROS 1 ``master``, this process's one ROS 1 node), or ``auto``: ROS when that
 graph is given (or this process already has its ROS 1 node or ROS 2 helper) and an agent is in it, TCP otherwise.
 """
+import base64
 import getpass
 import itertools
 import socket
@@ -31,6 +36,7 @@ import time
 
 from rockly_desktop import __version__
 from rockly_desktop.core.app_texts import app_text
+from rockly_desktop.runtime.agent.pairings import hello_data, proof_of_key
 from rockly_desktop.runtime.agent.protocol import (
     AGENT_SILENT_SECONDS,
     DEFAULT_NAMESPACE,
@@ -39,6 +45,7 @@ from rockly_desktop.runtime.agent.protocol import (
     HEARTBEAT_SECONDS,
     AgentError,
 )
+from rockly_desktop.runtime.agent.robot_keys import RobotKey, RobotKeys, ros_address, tcp_address
 
 VIAS = ("auto", "tcp", "ros")
 
@@ -66,16 +73,19 @@ def chosen_via(via: str, master: str = None, namespace: str = DEFAULT_NAMESPACE,
 
 class AgentClient:
     """A connection to the agent: at ``host``:``port`` over TCP, or in ``namespace`` on ROS 1 ``master`` or ROS 2
-    ``domain`` (``via``, see above; ``self.via`` says which was taken, ``self.kind`` which ROS)."""
+    ``domain`` (``via``, see above; ``self.via`` says which was taken, ``self.kind`` which ROS), paired with the
+    key ``keys`` (this laptop's ``RobotKeys`` when None) holds for its ``address``: ``self.robot_key``, None when
+    it has none; ``self.paired``: the agent's word on it (``{"client", "role"}`` or None)."""
 
     def __init__(self, host: str = "localhost", port: int = DEFAULT_PORT, language: str = "en",
                  on_event=None, on_closed=None, name: str = "rockly", timeout: float = 10.0, via: str = "tcp",
-                 master: str = None, namespace: str = DEFAULT_NAMESPACE, domain=None, graph_kind: str = None):
+                 master: str = None, namespace: str = DEFAULT_NAMESPACE, domain=None, graph_kind: str = None,
+                 keys: RobotKeys = None):
         self.language = language
         self.on_event = on_event
         self.on_closed = on_closed
         self.timeout = timeout
-        self.address = (host, port)
+        self.keys = keys if keys is not None else RobotKeys()
         self.controller = False
         self._ids = itertools.count(1)
         self._waiting = {}
@@ -89,17 +99,27 @@ class AgentClient:
         if self.via == "ros":
             from rockly_desktop.runtime.agent.ros_transport import RosLine
 
-            self._line = RosLine(self.kind, where, namespace, language, timeout, self._take, self._gone)
+            self.address = ros_address(self.kind, where, namespace)
+            self.robot_key = self.keys.get(self.address)
+            self._line = RosLine(self.kind, where, namespace, language, timeout, self._take, self._gone,
+                                 self.robot_key)
         else:
             from rockly_desktop.runtime.agent.tcp_transport import TcpLine
 
-            self._line = TcpLine(host, port, language, timeout, self._take, self._gone)
+            self.address = tcp_address(host, port)
+            self.robot_key = self.keys.get(self.address)
+            self._line = TcpLine(host, port, language, timeout, self._take, self._gone,
+                                 self.robot_key.fingerprint if self.robot_key else None)
         self.where = self._line.where  # the agent's host, or its ROS graph and namespace: what a window names
         self._heart = threading.Thread(target=self._beat, daemon=True, name="agent-heartbeat")
         self._heart.start()
+        proof = {}
+        if self.robot_key is not None and getattr(self._line, "nonce", None):
+            proof = {"client_id": self.robot_key.client, "proof": proof_of_key(
+                self.robot_key.key, hello_data(self._line.nonce, self.robot_key.client))}
         try:
             self.hello = self.request("hello", rockly=__version__, format=FORMAT, language=language,
-                                      client=f"{name} ({_who()})")
+                                      client=f"{name} ({_who()})", **proof)
         except AgentError:
             self.on_event = self.on_closed = None  # nobody was told of a client that never was
             self.close()  # an agent that never answers (or refuses) keeps no socket or thread of this client
@@ -110,6 +130,28 @@ class AgentClient:
             raise AgentError("agent_other_format", app_text("agent_other_format", language,
                                                             agent=self.hello.get("agent", "?"), client=__version__))
         self._agent_beats = bool(self.hello.get("alive_seconds"))
+        self.paired = self.hello.get("paired")
+
+    def pair(self, code: str, name: str = None, also_for=(), role: str = None) -> RobotKey:
+        """Pair this laptop with the agent with the one-time ``code`` the robot showed, as ``name`` (``user@host``
+        when None); keeps the key (for this address, and for the addresses ``also_for``: the same agent over ROS)
+        and returns it. ``role`` "student": as a student whatever the code gives (a kiosk). AgentError when the
+        agent refuses the code."""
+        answer = self.request("pair", code=code, name=name or _who(), **({"role": role} if role else {}))
+        key = RobotKey(self.address, str(answer["agent"]), str(answer["client"]), base64.b64decode(answer["key"]),
+                       str(answer["role"]), getattr(self._line, "fingerprint", "") or "")
+        self.keys.save(key)
+        for address in also_for:
+            self.keys.save(RobotKey(address, key.agent, key.client, key.key, key.role, ""))
+        self.robot_key = key
+        self._line.key = key  # over ROS, every later message proves it
+        self.paired = {"client": key.client, "role": key.role}
+        return key
+
+    def pairing_code(self, role: str = None) -> dict:
+        """A one-time code pairing another laptop (as ``role``: "student" or "teacher"; a teacher's client only):
+        ``{"code", "seconds", "role"}``."""
+        return self.request("pairing_code", **({"role": role} if role else {}))
 
     def request(self, op: str, **fields) -> dict:
         """Send request ``op`` and return the agent's answer (its fields, without ``reply`` and ``ok``); raises

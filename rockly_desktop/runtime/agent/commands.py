@@ -79,7 +79,12 @@ def _agent_options(agent):
                        help=app_text("agent_quota_help", "en", megabytes=DEFAULT_QUOTA_BYTES // 2**20))
     agent.add_argument("--robot-limits", metavar="FILE", type=Path,
                        help=app_text("standalone_robot_limits_help", "en", default=default_limits_path()))
-    actions = agent.add_subparsers(dest="agent_action", metavar="limits")
+    actions = agent.add_subparsers(dest="agent_action", metavar="limits|pair|clients|revoke")
+    pair = actions.add_parser("pair", help=app_text("agent_pair_help", "en"))
+    pair.add_argument("--role", choices=("teacher", "student"), help=app_text("agent_pair_role_help", "en"))
+    actions.add_parser("clients", help=app_text("agent_clients_help", "en"))
+    revoke = actions.add_parser("revoke", help=app_text("agent_revoke_help", "en"))
+    revoke.add_argument("name", metavar="NAME")
     limits = actions.add_parser("limits", help=app_text("agent_limits_help", "en"))
     limits.add_argument("--max-speed", type=float, metavar="M/S", help=app_text("agent_limits_speed_help", "en"))
     limits.add_argument("--max-turn", type=float, metavar="DEG/S", help=app_text("agent_limits_turn_help", "en"))
@@ -107,6 +112,9 @@ def _robot_options(robot):
     robot.add_argument("--namespace", default=DEFAULT_NAMESPACE,
                        help=app_text("agent_namespace_help", "en", namespace=DEFAULT_NAMESPACE))
     actions = robot.add_subparsers(dest="robot_command", required=True)
+    pair = actions.add_parser("pair", help=app_text("robot_pair_help", "en"))
+    pair.add_argument("code")
+    pair.add_argument("--name", help=app_text("robot_pair_name_help", "en"))
     actions.add_parser("list", help=app_text("robot_list_help", "en"))
     send = actions.add_parser("send", help=app_text("robot_send_help", "en"))
     send.add_argument("program", type=Path)
@@ -125,9 +133,45 @@ def _robot_options(robot):
 
 def agent_command(args, language: str) -> int:
     """``rockly agent``: serve, or ``rockly agent limits``: show or set the robot's own limits."""
-    if getattr(args, "agent_action", None) == "limits":
+    action = getattr(args, "agent_action", None)
+    if action == "limits":
         return limits_command(args, language)
+    if action in ("pair", "clients", "revoke"):
+        return pairing_command(args, language)
     return serve(args, language)
+
+
+def pairing_command(args, language: str) -> int:
+    """``rockly agent pair``: a one-time code (and the certificate's fingerprint to compare); ``clients``: the
+    paired laptops; ``revoke NAME``: forget one. They work on the agent's folder, also while the agent runs
+    (docs/decisions/035)."""
+    from rockly_desktop.runtime.agent.pairings import Pairings, agent_folder
+    from rockly_desktop.runtime.agent.tls import folder_fingerprint, short_fingerprint
+
+    folder = agent_folder(args.library or default_library())
+    pairings = Pairings(folder)
+    try:
+        if args.agent_action == "pair":
+            code = pairings.new_code(args.role)
+            print(app_text("agent_pair_code", language, code=code.shown, role=app_text("role_" + code.role, language),
+                           minutes=2, fingerprint=short_fingerprint(folder_fingerprint(folder))))
+            return 0
+        if args.agent_action == "clients":
+            for client in pairings.clients():
+                print(app_text("agent_client_line", language, name=client.name, id=client.id,
+                               role=app_text("role_" + client.role, language), paired=client.paired_at))
+            if not pairings.clients():
+                print(app_text("agent_no_clients", language))
+            return 0
+        if not pairings.revoke(args.name):
+            print(app_text("agent_revoke_none", language, name=args.name), file=sys.stderr)
+            return 1
+        print(app_text("agent_revoked", language, name=args.name))
+        return 0
+    except OSError as error:
+        print(app_text("agent_pairings_unusable", language, folder=folder, reason=error.strerror or str(error)),
+              file=sys.stderr)
+        return 1
 
 
 def limits_command(args, language: str) -> int:
@@ -167,8 +211,10 @@ def serve(args, language: str) -> int:
     from rockly_desktop.profiles.registry import ProfileRegistry
     from rockly_desktop.robot import links
     from rockly_desktop.runtime.agent.library import Library
+    from rockly_desktop.runtime.agent.pairings import Pairings, agent_folder
     from rockly_desktop.runtime.agent.server import Agent
     from rockly_desktop.runtime.agent.tcp_transport import AgentServer
+    from rockly_desktop.runtime.agent.tls import server_context
     from rockly_desktop.runtime.options import connection
 
     folder = args.library or default_library()
@@ -183,14 +229,20 @@ def serve(args, language: str) -> int:
         value = connection(args.backend, args).get(setting.name)
         if setting.option and value is not None:
             options += [setting.option, str(value)]
+    try:
+        context = server_context(agent_folder(folder))
+    except OSError as error:
+        print(app_text("agent_pairings_unusable", language, folder=agent_folder(folder),
+                       reason=error.strerror or str(error)), file=sys.stderr)
+        return 1
     agent = Agent(Library(folder, ProfileRegistry.discover().profiles, args.library_quota * 2**20), args.backend,
-                  options)
+                  options, Pairings(agent_folder(folder)))
     agent.robot_limits_path = args.robot_limits or default_limits_path()  # a paired teacher may set them
     close_offer = _offer_on_robot_ui(agent, args, language)
     if close_offer is False:
         return 2
     try:
-        server = AgentServer(agent, args.host, args.port)
+        server = AgentServer(agent, args.host, args.port, context)
     except OSError as error:
         print(app_text("agent_cannot_listen", language, host=args.host, port=args.port, reason=error.strerror),
               file=sys.stderr)
@@ -223,6 +275,7 @@ def serve(args, language: str) -> int:
 def _say_alive(agent, ending):
     while not ending.wait(ALIVE_SECONDS):
         agent.say_alive()
+        agent.check_pairings()  # a client revoked meanwhile (``rockly agent revoke``) is cut off
 
 
 def _offer_on_ros(agent, args, language: str):
@@ -266,11 +319,12 @@ def robot_command(args, language: str, standalone_of=None) -> int:
         if event.get("event") == "run" and event.get("state") == "ended":
             done.set()
 
+    pairing = args.robot_command == "pair"
     try:
         client = AgentClient(args.host, args.port, language,
                              on_event=show if args.robot_command == "attach" else None,
-                             on_closed=done.set, name="rockly robot", via=args.via, master=args.master,
-                             namespace=args.namespace, domain=args.domain)
+                             on_closed=done.set, name="rockly robot", via="tcp" if pairing else args.via,
+                             master=args.master, namespace=args.namespace, domain=args.domain)
     except AgentError as error:
         print(f"rockly robot: {error.message}", file=sys.stderr)
         return 1
@@ -285,6 +339,8 @@ def robot_command(args, language: str, standalone_of=None) -> int:
 
 def _act(client, args, language, standalone_of, done) -> int:
     action = args.robot_command
+    if action == "pair":
+        return _pair(client, args, language)
     if action == "list":
         answer = client.programs()
         for about in answer["programs"]:
@@ -328,4 +384,21 @@ def _act(client, args, language, standalone_of, done) -> int:
         done.wait()
     except KeyboardInterrupt:
         return 130
+    return 0
+
+
+def _pair(client, args, language) -> int:
+    """``rockly robot pair CODE``: over TCP (TLS); with ``--master`` or ``--domain`` the key serves that ROS
+    graph's agent too."""
+    from rockly_desktop.runtime.agent.robot_keys import ros_address
+    from rockly_desktop.runtime.agent.tls import short_fingerprint
+
+    also = []
+    if args.domain is not None:
+        also.append(ros_address("ros2", args.domain, args.namespace))
+    elif args.master:
+        also.append(ros_address("ros1", args.master, args.namespace))
+    key = client.pair(args.code, args.name, also)
+    print(app_text("robot_paired", language, agent=key.agent, role=app_text("role_" + key.role, language),
+                   fingerprint=short_fingerprint(key.fingerprint), path=client.keys.path))
     return 0

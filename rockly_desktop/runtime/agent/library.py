@@ -116,10 +116,13 @@ class Library:
                  "has_source": source_text is not None}
         return {"about": about, STANDALONE: standalone_text, SOURCE: source_text}
 
-    def store(self, checked: dict, sender: str = "?") -> dict:
+    def store(self, checked: dict, sender: str = "?", owner: dict = None) -> dict:
         """Keep a program ``check`` gave (replacing one of the same name: its ``about.json`` then says whose it
-        replaced and when, ``replaced``), within the library's quota; returns its ``about.json``."""
+        replaced and when, ``replaced``), within the library's quota; returns its ``about.json``. ``owner``: the
+        paired client that sent it (``{"client": id, "role": role}``), whom the agent lets replace it."""
         about = dict(checked["about"], sender=str(sender)[:80])
+        if owner is not None:
+            about["owner"] = owner
         folder = self._folder_of(about["name"])
         try:
             previous = self.about(about["name"])

@@ -13,6 +13,11 @@ incoming topic losing its publisher for ``LOST_AGENT_SECONDS`` (fast: a process 
 ``ALIVE`` (broadcast to all clients) not heard for ``AGENT_SILENT_SECONDS`` (``AgentClient``: a hung or frozen
 agent, a cut network, which leave the publisher in the graph: ROS 2 until the DDS lease ends, ROS 1 for ever).
 
+A paired client proves every message: ``client_id`` and ``proof`` (``pairings.proof_of_key`` of
+``pairings.message_data``); the agent takes the message as that client's, or as an unpaired client's. (Not yet:
+replay protection, and pairing over ROS itself: ``pair`` and ``pairing_code`` would carry the key or a code in
+clear, so they are refused here; a laptop pairs over TCP and keeps the key for the ROS address too.)
+
 ``RosOffer`` is the agent's side, ``RosLine`` a client's; the middleware is reached only when one is made.
 """
 import os
@@ -22,12 +27,14 @@ import uuid
 
 from rockly_desktop.core.app_texts import app_text
 from rockly_desktop.core.errors import RocklyError
-from rockly_desktop.runtime.agent.protocol import AgentError
+from rockly_desktop.runtime.agent.pairings import message_data, proof_of_key
+from rockly_desktop.runtime.agent.protocol import AgentError, AgentRefusal, refusal_text
 
 KINDS = ("ros1", "ros2")  # the robot links whose middleware carries these topics
 # the texts naming each: (cannot reach it, no agent in the graph, the agent offers its calls there)
 TEXTS = {"ros1": ("agent_no_ros", "agent_not_in_graph", "agent_ready_ros"),
          "ros2": ("agent_no_ros2", "agent_not_in_graph_ros2", "agent_ready_ros2")}
+NOT_OVER_ROS = ("pair", "pairing_code")  # their answers carry a key or a code: over TLS only (see above)
 SILENT_CLIENT_SECONDS = 5.0  # a ROS client not heard from this long is gone (it beats every 0.2 s)
 LOST_AGENT_SECONDS = 1.0  # a client's incoming topic without the agent's publisher this long: the agent is gone
 
@@ -72,12 +79,17 @@ class _RosClient:
         self.name = "?"
         self.attached = False
         self.wants_control = False
+        self.paired = None  # the PairedClient its latest message proved
         self.heard = time.monotonic()
         self.deliver = offer.broadcast
         self._offer = offer
 
     def send(self, message: dict) -> bool:
         return self._offer.topics.publish({**message, "to": self.who})
+
+    def cut(self):
+        """Its pairing was revoked: its messages are an unpaired client's from now (each proves itself anew)."""
+        self.paired = None
 
 
 class RosOffer:
@@ -112,6 +124,13 @@ class RosOffer:
                 client = self._clients[who] = _RosClient(self, who)
                 self.agent.join(client)
         client.heard = time.monotonic()
+        client.paired = self.agent.pairings.verify(request.get("client_id"), request.get("proof"),
+                                                   message_data(request))
+        if request.get("op") in NOT_OVER_ROS:
+            refusal = AgentRefusal("agent_pair_over_tcp")
+            client.send({"reply": request.get("id"), "ok": False, "error": refusal.key,
+                         "message": refusal_text(refusal, client.language)})
+            return
         answer = self.agent.answer(client, request)
         if answer is not None:
             client.send(answer)
@@ -143,7 +162,8 @@ class RosLine:
 
     beats_always = True  # the agent has no closed connection to hear: a client falling silent is gone
 
-    def __init__(self, kind: str, where, namespace: str, language: str, timeout: float, take, gone):
+    def __init__(self, kind: str, where, namespace: str, language: str, timeout: float, take, gone, key=None):
+        self.key = key  # the RobotKey whose proof every message carries (None: not paired)
         node, master = _node(kind, where, language)
         not_there = AgentError(TEXTS[kind][1], app_text(TEXTS[kind][1], language, namespace=namespace,
                                                         master=master))
@@ -176,7 +196,11 @@ class RosLine:
 
     def write(self, message: dict) -> bool:
         """Send ``message`` to the agent; False once the line has ended."""
-        return not self._ended.is_set() and self.topics.publish({**message, "from": self.who})
+        message = {**message, "from": self.who}
+        if self.key is not None:
+            message["client_id"] = self.key.client
+            message["proof"] = proof_of_key(self.key.key, message_data(message))
+        return not self._ended.is_set() and self.topics.publish(message)
 
     def close(self):
         """Say goodbye to the agent and end the line (``gone`` follows)."""

@@ -3,8 +3,12 @@
 
 Requests (each answered; refusals say why in the client's language):
 
-    hello    {"rockly", "format", "language", "client"}        -> {"agent", "format", "backend", "profiles",
-                                                                     "alive_seconds"}
+    hello    {"rockly", "format", "language", "client", "client_id"?, "proof"?}
+                                                                  -> {"agent", "format", "backend", "profiles",
+                                                                     "alive_seconds", "paired", "name"}
+    pair     {"code", "name", "role"?}                             -> {"client", "key", "role", "agent"}  (role
+                                                                     "student": less than the code gives)
+    pairing_code {"role"?}  (a teacher)                           -> {"code", "seconds"}
     list                                                          -> {"programs": [about...], "run": snapshot|null}
     send     {"name", "standalone", "source"?, "on_lost_editor"?, "decide_seconds"?} -> {"program": about}
     source   {"name"}                                             -> {"source": .rockly text|null}
@@ -24,15 +28,24 @@ Requests (each answered; refusals say why in the client's language):
                                                                      the robot's own limits, ``runtime.robot_limits``;
                                                                      with ``set`` they are kept first)
 
+Before a client is paired (``client.paired``: a ``PairedClient``, set by its transport: over TCP by a ``hello``
+that proves the key, ``pairings.hello_data``; over ROS by each message's proof) only ``hello`` and ``pair`` are
+answered; anything else is refused with ``agent_not_paired``. A teacher may do everything; a student may send,
+replace and delete its own programs, start its own and the teacher's, attach and watch, control a run it started,
+and stop any run (``agent_teacher_only``, ``agent_not_yours``). Who may do what: docs/agent.md.
+
 An attached client gets every event of the run as it happens (see ``agent.protocol``). One attached client
 controls the run (the first that asked to); when it goes, the next attached client that asked to control takes
 over and is told ``{"event": "control", "controller": true}``. The breakpoints are the controlling client's: they
 are cleared when it goes (a run must not pause where nobody watches), and the next controller sends its own.
 """
+import base64
+import socket
 import threading
 
 from rockly_desktop import __version__
 from rockly_desktop.runtime.agent.library import Library
+from rockly_desktop.runtime.agent.pairings import CODE_SECONDS, ROLES, TEACHER, Pairings, hello_data
 from rockly_desktop.runtime.agent.protocol import ALIVE, ALIVE_SECONDS, FORMAT, AgentRefusal, refusal_text
 from rockly_desktop.runtime.agent.running import ProgramRun
 from rockly_desktop.runtime.robot_limits import (
@@ -43,16 +56,22 @@ from rockly_desktop.runtime.robot_limits import (
     write_robot_limits,
 )
 
+OPEN_BEFORE_PAIRING = ("hello", "pair")
+TEACHER_ONLY = ("pairing_code", "robot_limits")  # pairing others, changing the robot's limits
+
 
 class Agent:
     """The agent: ``library`` (a Library), programs run with ``backend`` and the child's ``options``
-    (connection options, ``--speed``)."""
+    (connection options, ``--speed``), for the clients paired in ``pairings``."""
 
-    def __init__(self, library: Library, backend: str, options: list):
+    def __init__(self, library: Library, backend: str, options: list, pairings: Pairings):
         self.library = library
         self.backend = backend
         self.options = options
+        self.pairings = pairings
+        self.name = socket.gethostname()  # what a laptop calls this agent
         self.run = None
+        self.started_by = None  # the id of the client that started the run
         self.controller = None
         self.breakpoints = []  # the controlling client's: a run started while it is attached pauses there too
         self.clients = []
@@ -65,6 +84,12 @@ class Agent:
     def handle(self, client, request: dict) -> dict:
         """The answer to one ``request`` from ``client`` (without its ``reply`` id); refusals raise AgentRefusal."""
         op = request.get("op")
+        if op not in OPEN_BEFORE_PAIRING:
+            paired = self._still_paired(client)
+            if paired is None:
+                raise AgentRefusal("agent_not_paired")
+            if op in TEACHER_ONLY and paired.role != TEACHER:
+                raise AgentRefusal("agent_teacher_only")
         handler = getattr(self, "_op_" + op, None) if isinstance(op, str) and op.isidentifier() else None
         if handler is None:
             raise AgentRefusal("agent_unknown_request", op=str(op)[:40])
@@ -75,8 +100,33 @@ class Agent:
         client.name = str(request.get("client", "?"))[:80]
         if request.get("format") != FORMAT:
             raise AgentRefusal("agent_other_format", agent=__version__, client=request.get("rockly", "?"))
+        nonce = getattr(client, "nonce", None)
+        if nonce is not None:  # TCP: the hello proves the key over the connection's nonce (ROS: every message)
+            client_id = request.get("client_id")
+            client.paired = self.pairings.verify(client_id, request.get("proof"), hello_data(nonce, client_id)) if (
+                isinstance(client_id, str)) else None
+        paired = client.paired
         return {"agent": __version__, "format": FORMAT, "backend": self.backend,
-                "profiles": {p.id: p.version for p in self.library.profiles.values()}, "alive_seconds": ALIVE_SECONDS}
+                "profiles": {p.id: p.version for p in self.library.profiles.values()}, "alive_seconds": ALIVE_SECONDS,
+                "name": self.name, "paired": None if paired is None else {"client": paired.id, "role": paired.role}}
+
+    def _op_pair(self, client, request):
+        name = request.get("name")
+        role = request.get("role")  # "student": a laptop may ask for less than its code gives (a kiosk)
+        if role is not None and role not in ROLES:
+            raise AgentRefusal("agent_bad_request")
+        paired = self.pairings.pair(request.get("code"), name if isinstance(name, str) and name else client.name,
+                                    role)
+        client.paired = paired
+        return {"client": paired.id, "key": base64.b64encode(paired.key).decode("ascii"), "role": paired.role,
+                "agent": self.name}
+
+    def _op_pairing_code(self, client, request):
+        role = request.get("role")
+        if role is not None and role not in ROLES:
+            raise AgentRefusal("agent_bad_request")
+        code = self.pairings.new_code(role)
+        return {"code": code.shown, "seconds": int(CODE_SECONDS), "role": code.role}
 
     def _op_list(self, client, request):
         return {"programs": self.library.entries(), "run": self._snapshot()}
@@ -89,7 +139,8 @@ class Agent:
         with self._lock:
             if self.run is not None and self.run.about["name"] == name:
                 raise AgentRefusal("agent_program_running", name=name)
-            about = self.library.store(checked, client.name)
+            self._may_change(client, name)
+            about = self.library.store(checked, client.name, {"client": client.paired.id, "role": client.paired.role})
         self._changed()
         return {"program": about}
 
@@ -103,11 +154,16 @@ class Agent:
             if self.run is not None:
                 raise AgentRefusal("agent_busy", name=self.run.about["name"])
             about = self.library.about(name)
+            if not self._is_teacher(client) and _owner(about) not in (client.paired.id, TEACHER):
+                raise AgentRefusal("agent_not_yours", name=name)
             path = self.library.standalone_path(name)
             options = ["--backend", self.backend, *self.options, "--any-profile-version"]
             for answer in answers:
                 options += ["--answer", answer]
             self.run = ProgramRun(about, path, options, self.publish, self._ended, self.breakpoints)
+            self.started_by = client.paired.id
+            if self.controller is not None and not self._may_control(self.controller):
+                self._hand_control_on()
             self.publish({"event": "run", "state": "started", "program": name})
             self._changed()
             return {"run": self.run.snapshot()}
@@ -124,6 +180,7 @@ class Agent:
         with self._lock:
             if self.run is not None and self.run.about["name"] == name:
                 raise AgentRefusal("agent_program_running", name=name)
+            self._may_change(client, name)
             self.library.delete(name)
         self._changed()
         return {}
@@ -133,7 +190,7 @@ class Agent:
         with self._lock:
             client.attached = True
             client.wants_control = bool(request.get("control", True))
-            if client.wants_control and self.controller is None:
+            if client.wants_control and self.controller is None and self._may_control(client):
                 self.controller = client
             if self.controller is client:
                 self._set_breakpoints(breakpoints)
@@ -150,16 +207,21 @@ class Agent:
         what = request.get("what")
         if what not in ("pause", "step", "continue"):
             raise AgentRefusal("agent_unknown_request", op=str(what)[:40])
+        run = self.run
+        if run is None:
+            raise AgentRefusal("agent_nothing_running")
+        if not self._may_control(client):
+            raise AgentRefusal("agent_not_yours", name=run.about["name"])
         if self.controller is not client:
             raise AgentRefusal("agent_not_controller")
-        if self.run is None:
-            raise AgentRefusal("agent_nothing_running")
-        self.run.request(what)
+        run.request(what)
         return {}
 
     def _op_breakpoints(self, client, request):
         blocks = _block_ids(request.get("blocks"))
         with self._lock:
+            if not self._may_control(client):
+                raise AgentRefusal("agent_not_yours", name=self.run.about["name"] if self.run else "?")
             if self.controller is not client:
                 raise AgentRefusal("agent_not_controller")
             self._set_breakpoints(blocks)
@@ -177,7 +239,6 @@ class Agent:
         return {}
 
     def _op_robot_limits(self, client, request):
-        _teacher_only(client)
         wanted = request.get("set")
         try:
             if wanted is not None:
@@ -191,6 +252,45 @@ class Agent:
             raise AgentRefusal(error.text.key, **error.text.values) from None
         except OSError as error:
             raise AgentRefusal("agent_limits_cannot_write", reason=error.strerror or str(error)) from None
+
+    # -- who may do what
+
+    def _still_paired(self, client):
+        """``client``'s pairing, None when it has none or it was revoked since (``rockly agent revoke``)."""
+        if client.paired is not None:
+            client.paired = self.pairings.find(client.paired.id)
+        return client.paired
+
+    @staticmethod
+    def _is_teacher(client) -> bool:
+        return client.paired is not None and client.paired.role == TEACHER
+
+    def _may_change(self, client, name: str):
+        """Refuse a student replacing or deleting program ``name`` that it did not send."""
+        if self._is_teacher(client):
+            return
+        try:
+            about = self.library.about(name)
+        except AgentRefusal:
+            return  # a new name
+        if _owner(about) != client.paired.id:
+            raise AgentRefusal("agent_not_yours", name=name)
+
+    def _may_control(self, client) -> bool:
+        """A teacher controls any run, a student only one it started (or whatever it starts next)."""
+        return self._is_teacher(client) or self.run is None or (
+            client.paired is not None and self.started_by == client.paired.id)
+
+    def check_pairings(self):
+        """Close the connections of clients revoked since the last look (call it now and then: the alive beat)."""
+        version = self.pairings.version()
+        if version == getattr(self, "_pairings_version", None):
+            return
+        self._pairings_version = version
+        for client in list(self.clients):
+            if client.paired is not None and self._still_paired(client) is None:
+                self._forget(client)
+                client.cut()
 
     # -- events and clients
 
@@ -222,6 +322,7 @@ class Agent:
         with self._lock:
             if self.run is run:
                 self.run = None
+                self.started_by = None
         self._changed()
 
     def _changed(self):
@@ -233,15 +334,20 @@ class Agent:
             client.attached = False
             if self.controller is not client:
                 return
-            self.controller = next((other for other in self.clients if other.attached and other.wants_control), None)
-            self._set_breakpoints([])  # the next controller sends its own
-            successor = self.controller
-        if successor is not None:
-            successor.send({"event": "control", "controller": True})
+            self._hand_control_on()
+
+    def _hand_control_on(self):
+        """(holding the lock) Control passes to the next attached client that asked for it and may have it; it is
+        told."""
+        self.controller = next((other for other in self.clients if other.attached and other.wants_control
+                                and other is not self.controller and self._may_control(other)), None)
+        self._set_breakpoints([])  # the next controller sends its own
+        if self.controller is not None:
+            self.controller.send({"event": "control", "controller": True})
 
     def join(self, client):
-        """A transport's new ``client`` (``language``, ``name``, ``attached``, ``wants_control``,
-        ``send(message)``, ``deliver(event)``)."""
+        """A transport's new ``client`` (``language``, ``name``, ``attached``, ``wants_control``, ``paired``,
+        ``send(message)``, ``deliver(event)``, ``cut()``: end it, revoked; over TCP ``nonce``)."""
         with self._lock:
             self.clients.append(client)
 
@@ -274,11 +380,11 @@ class Agent:
             run.end()
 
 
-def _teacher_only(client):
-    """Refuses a client that is not paired as a teacher."""
-    paired = getattr(client, "paired", None)
-    if paired is None or paired.role != "teacher":
-        raise AgentRefusal("agent_teacher_only")
+def _owner(about: dict) -> str:
+    """The id of the client that sent a kept program; ``TEACHER`` for a teacher's, and for one kept before
+    pairing existed (put there by whoever ran the robot)."""
+    owner = about.get("owner") or {}
+    return TEACHER if owner.get("role", TEACHER) == TEACHER else owner.get("client")
 
 
 def _block_ids(value) -> list:

@@ -1,4 +1,9 @@
-"""The agent's TCP transport: JSON lines (``agent.protocol``) on one connection per client.
+"""The agent's TCP transport: JSON lines (``agent.protocol``) on one connection per client, inside TLS 1.3
+(``agent.tls``).
+
+The agent's first line on a connection is its greeting ``{"nonce": HEX}``, new for each connection: a paired
+client's ``hello`` proves its key over it (``pairings.hello_data``). A client that speaks plain JSON (a Rockly
+older than pairing) is answered, in plain JSON, that the agent needs an encrypted connection, and closed.
 
 ``AgentServer`` offers an ``Agent`` on a TCP port (the agent's side); ``TcpLine`` is a client's connection to
 it (``AgentClient``'s side). A connection that closes is a client gone, and so is one that takes nothing the
@@ -6,9 +11,12 @@ agent sends for ``SEND_SECONDS`` or falls ``OUTBOX_BYTES`` behind, one that send
 ``MAX_LINE_BYTES`` or too slowly (``LineReader``), and one more than the server holds (``AgentServer``).
 """
 import collections
+import hmac
+import secrets
 import select
 import socket
 import socketserver
+import ssl
 import struct
 import threading
 import time
@@ -22,23 +30,49 @@ from rockly_desktop.runtime.agent.protocol import (
     encode,
     refusal_text,
 )
+from rockly_desktop.runtime.agent.tls import TLS_HANDSHAKE, client_context, fingerprint, short_fingerprint
 
 
 class TcpLine:
-    """A client's connection to the agent at ``host``:``port``: ``take(message)`` gets every message the agent
-    sends (on the reader thread, in order); ``gone()`` is called once when the connection has ended."""
+    """A client's TLS connection to the agent at ``host``:``port``: ``take(message)`` gets every message the agent
+    sends (on the reader thread, in order); ``gone()`` is called once when the connection has ended. ``pinned``:
+    the fingerprint of the agent's certificate this laptop paired with (None: not paired; any is taken and said
+    in ``fingerprint``); another one is refused before a byte of the client's is sent. ``nonce``: the agent's
+    greeting, for the hello's proof."""
 
     beats_always = False  # the agent hears a closed connection; heartbeats only say the editor is there
 
-    def __init__(self, host: str, port: int, language: str, timeout: float, take, gone):
+    def __init__(self, host: str, port: int, language: str, timeout: float, take, gone, pinned: str = None):
         self.where = f"{host}:{port}"  # what a window names
         try:
-            self._socket = socket.create_connection((host, port), timeout)
+            raw = socket.create_connection((host, port), timeout)
         except OSError as error:
             raise AgentError("agent_unreachable", app_text("agent_unreachable", language, host=host, port=port,
                                                            reason=error.strerror or str(error))) from None
+        raw.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+        try:
+            self._socket = client_context().wrap_socket(raw)  # the handshake, within ``timeout``
+        except OSError as error:
+            raw.close()
+            raise AgentError("agent_no_tls", app_text("agent_no_tls", language, host=host, port=port,
+                                                      reason=getattr(error, "reason", None) or str(error))) from None
+        self.fingerprint = fingerprint(self._socket.getpeercert(binary_form=True))
+        if pinned and not hmac.compare_digest(pinned, self.fingerprint):
+            self._socket.close()
+            raise AgentError("agent_other_certificate", app_text(
+                "agent_other_certificate", language, where=self.where, seen=short_fingerprint(self.fingerprint),
+                paired=short_fingerprint(pinned)))
+        self._lines = self._socket.makefile("rb")
+        try:
+            greeting = decode(self._lines.readline(4096)) or {}
+        except OSError:
+            greeting = {}
+        self.nonce = greeting.get("nonce")
+        if not isinstance(self.nonce, str):
+            self._socket.close()
+            raise AgentError("agent_no_tls", app_text("agent_no_tls", language, host=host, port=port,
+                                                      reason="no greeting"))
         self._socket.settimeout(None)
-        self._socket.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
         self._send_lock = threading.Lock()
         self._take, self._gone = take, gone
         self._reader = threading.Thread(target=self._read, daemon=True, name="agent-client")
@@ -68,7 +102,7 @@ class TcpLine:
 
     def _read(self):
         try:
-            for line in self._socket.makefile("rb"):
+            for line in self._lines:
                 message = decode(line)
                 if message is not None:
                     self._take(message)
@@ -95,6 +129,8 @@ class _Client:
         self.name = "?"
         self.attached = False
         self.wants_control = False
+        self.paired = None  # its PairedClient, once its hello proved its key (or it paired)
+        self.nonce = secrets.token_hex(16)  # what its hello proves the key over: new for every connection
         self._outbox = collections.deque()
         self._outbox_bytes = 0
         self._sending = False
@@ -120,6 +156,11 @@ class _Client:
         return True
 
     deliver = send  # the run's events: each TCP client gets its own copy
+
+    def cut(self):
+        """End the connection (its client was revoked): its reader ends, and so its place among the clients."""
+        with self._changed:
+            self._drop()
 
     def close(self):
         """The client has gone: its writer ends (what it had not taken is dropped)."""
@@ -207,6 +248,7 @@ class LineReader:
 
     def __init__(self, connection):
         self._connection = connection
+        self._pending = getattr(connection, "pending", lambda: 0)  # TLS: bytes already read and decrypted
         self._poll = select.poll()
         self._poll.register(connection, select.POLLIN)
         self._buffer = bytearray()
@@ -230,7 +272,8 @@ class LineReader:
             if begun is None and self._buffer:
                 begun = time.monotonic()
             wait = self._wait(begun)
-            if wait is not None and wait <= 0 or not self._poll.poll(None if wait is None else wait * 1000):
+            if wait is not None and wait <= 0 or not self._pending() and not self._poll.poll(
+                    None if wait is None else wait * 1000):
                 raise LineRefused("agent_line_too_slow")
             data = self._connection.recv(1 << 16)
             if not data:
@@ -251,6 +294,7 @@ def serve_connection(agent, connection):
     """Read and answer ``connection``'s requests to ``agent`` until it closes (or breaks a bound: it is told why
     and closed)."""
     client = _Client(connection)
+    client.send({"nonce": client.nonce})
     agent.join(client)
     lines = LineReader(connection)
     refusal = None
@@ -284,14 +328,16 @@ def serve_connection(agent, connection):
 
 
 class AgentServer(socketserver.ThreadingTCPServer):
-    """The agent's TCP server on ``(host, port)``, holding at most ``MAX_CONNECTIONS`` connections
-    (``MAX_CONNECTIONS_PER_ADDRESS`` from one address); one more is told so and closed at once."""
+    """The agent's TCP server on ``(host, port)`` with TLS ``context`` (``tls.server_context``), holding at most
+    ``MAX_CONNECTIONS`` connections (``MAX_CONNECTIONS_PER_ADDRESS`` from one address); one more is told so and
+    closed at once."""
 
     daemon_threads = True
     allow_reuse_address = True
 
-    def __init__(self, agent, host: str, port: int):
+    def __init__(self, agent, host: str, port: int, context: ssl.SSLContext):
         self.agent = agent
+        self.context = context
         self._open = {}  # accepted connection -> its address
         self._open_lock = threading.Lock()
         super().__init__((host, port), _Handler)
@@ -317,7 +363,51 @@ class AgentServer(socketserver.ThreadingTCPServer):
         super().shutdown_request(request)
 
 
+    def secured(self, connection):
+        """``connection`` inside TLS, its handshake done within ``FIRST_LINE_SECONDS``; None when it is not TLS
+        (a plain JSON client is told it needs TLS) or its handshake fails."""
+        connection.settimeout(FIRST_LINE_SECONDS)
+        try:
+            first = connection.recv(1, socket.MSG_PEEK)
+            if first and first[0] != TLS_HANDSHAKE:
+                _refuse_plain(connection)
+                return None
+            secured = self.context.wrap_socket(connection, server_side=True) if first else None
+        except OSError:  # ssl.SSLError too: not TLS 1.3, a broken handshake, the time up
+            return None
+        if secured is not None:
+            secured.settimeout(None)
+        return secured
+
+
+def _refuse_plain(connection):
+    """Tell a client speaking plain JSON (an older Rockly) that the agent needs TLS, answering its first request
+    (its hello: so the client shows the message at once) in the language it names, and end the connection."""
+    data = b""
+    until = time.monotonic() + LINGER_SECONDS
+    while b"\n" not in data and len(data) < 65536 and time.monotonic() < until:
+        connection.settimeout(max(0.01, until - time.monotonic()))
+        chunk = connection.recv(4096)
+        if not chunk:
+            break
+        data += chunk
+    request = decode(data.split(b"\n", 1)[0]) or {}
+    language = request.get("language") if request.get("language") in ("en", "de") else "en"
+    connection.settimeout(LINGER_SECONDS)
+    connection.sendall(encode({"reply": request.get("id"), "ok": False, "error": "agent_needs_tls",
+                               "message": app_text("agent_needs_tls", language)}))
+    connection.shutdown(socket.SHUT_WR)
+    while time.monotonic() < until and connection.recv(4096):
+        pass
+
+
 class _Handler(socketserver.BaseRequestHandler):
     def handle(self):
         self.request.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
-        serve_connection(self.server.agent, self.request)
+        secured = self.server.secured(self.request)
+        if secured is None:
+            return
+        try:
+            serve_connection(self.server.agent, secured)
+        finally:
+            secured.close()

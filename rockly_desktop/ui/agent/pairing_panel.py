@@ -29,8 +29,9 @@ ROLES = ("student", "teacher")
 class PairingPanel(QGroupBox):
     """Pairing with the robot whose agent ``connect()`` reaches (called on the window's thread, it returns
     ``(make, also_for)``: ``make()`` makes a new ``AgentClient`` off it, over TCP, and ``also_for`` the addresses
-    of the same agent over ROS the key serves too). ``student_only``: this laptop pairs as a student whatever the code says (a kiosk). ``paired()`` is
-    called on the window's thread once a pairing succeeded or a key was forgotten (the dialog asks again)."""
+    of the same agent over ROS the key serves too). ``student_only``: this laptop pairs as a student whatever the
+    code says (a kiosk). ``paired()`` is called on the window's thread once a pairing succeeded or a key was
+    forgotten (the dialog asks again)."""
 
     def __init__(self, language: str, connect, parent=None, student_only: bool = False, paired=None,
                  keys: RobotKeys = None):
