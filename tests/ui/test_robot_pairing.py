@@ -28,10 +28,15 @@ CODE = re.compile(r"\b[2-9A-Z]{3}-[2-9A-Z]{3}\b")
 
 def code_from_the_robot(library, *options) -> str:
     """The code ``rockly agent pair`` prints on the robot (as its admin runs it there)."""
+    return robot_says_pair(library, *options)[0]
+
+
+def robot_says_pair(library, *options) -> tuple:
+    """``(code, the certificate's fingerprint)`` as ``rockly agent pair`` prints them on the robot."""
     done = subprocess.run([sys.executable, "-m", "rockly_desktop", "agent", "--library", str(library), "pair",
                            *options], capture_output=True, text=True, cwd=REPO, timeout=120)
     assert done.returncode == 0, done.stderr
-    return CODE.search(done.stdout).group(0)
+    return CODE.search(done.stdout).group(0), done.stdout.split("certificate: ")[1].split(" (")[0]
 
 
 @pytest.fixture
@@ -73,6 +78,11 @@ def type_code_and_pair(qtbot, dialog, code: str):
     QTest.mouseClick(dialog.pairing.pair_button, Qt.MouseButton.LeftButton)
 
 
+def whole(qtbot, label):
+    """Wait until ``label`` shows its wrapped text whole (as high as the text needs: the dialog grew for it)."""
+    qtbot.waitUntil(lambda: label.height() >= label.heightForWidth(label.width()), timeout=5000)
+
+
 def asked_to_pair(dialog) -> bool:
     return dialog.pairing.isVisible() and dialog.pairing.pairing_needed and dialog.pairing.reason.text() != ""
 
@@ -82,20 +92,18 @@ def test_the_right_code_pairs_the_window_as_a_teacher_and_then_send_and_start_wo
     call_page(qtbot, window.editor, "load", {"workspace": workspace(greet_and_drive())})
     dialog = programs_dialog(agent.port)
     qtbot.waitUntil(lambda: asked_to_pair(dialog), timeout=20000)
-    assert "pair" in dialog.pairing.reason.text().lower()
     assert not dialog.pairing.forget_button.isVisible()  # no key to forget yet
-    screenshot(dialog, "pairing_needed_en")
-    dialog.grab().save(os.path.join(SHOTS, "pairing_needed_en.png"))
-    type_code_and_pair(qtbot, dialog, code_from_the_robot(agent.library))
+    code, fingerprint = robot_says_pair(agent.library)
+    type_code_and_pair(qtbot, dialog, code)
     qtbot.waitUntil(lambda: dialog.pairing.about.isVisible(), timeout=20000)
     about = dialog.pairing.about.text()
-    assert "this computer is a teacher there" in about and "Certificate: " in about, about
+    assert about.endswith(f"this computer is a teacher there.\nCertificate: {fingerprint}"), about  # as the robot says
     key = RobotKeys().get(tcp_address("127.0.0.1", agent.port))
     assert key is not None and key.role == "teacher" and len(key.fingerprint) == 64
-    assert " ".join(key.fingerprint[i:i + 4] for i in range(0, 16, 4)) in about
     assert stat.S_IMODE(os.stat(RobotKeys().path).st_mode) == 0o600
     assert dialog.pairing.another_button.isVisible() and dialog.pairing.forget_button.isVisible()
-    dialog.send_button.click()   # an unsaved program: the name is asked
+    qtbot.waitUntil(dialog.send_button.isEnabled, timeout=20000)   # once the dialog has asked the robot again
+    QTest.mouseClick(dialog.send_button, Qt.MouseButton.LeftButton)   # an unsaved program: the name is asked
     qtbot.waitUntil(lambda: dialog.findChild(QInputDialog) is not None
                     and dialog.findChild(QInputDialog).isVisible(), timeout=5000)
     asked = dialog.findChild(QInputDialog)
@@ -104,10 +112,29 @@ def test_the_right_code_pairs_the_window_as_a_teacher_and_then_send_and_start_wo
     qtbot.waitUntil(lambda: dialog.programs.count() == 1, timeout=20000)
     row = dialog.programs.visualItemRect(dialog.programs.item(0)).center()
     QTest.mouseClick(dialog.programs.viewport(), Qt.MouseButton.LeftButton, pos=row)
+    qtbot.waitUntil(dialog.start_button.isEnabled, timeout=20000)
     QTest.mouseClick(dialog.start_button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: dialog.running.text().startswith("Running on the robot now: greeting"), timeout=30000)
+    qtbot.waitUntil(dialog.stop_button.isEnabled, timeout=20000)
     QTest.mouseClick(dialog.stop_button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: dialog.running.text() == "Nothing runs on the robot now.", timeout=60000)
+
+
+@pytest.mark.parametrize("language, reason", [
+    ("en", "This computer is not paired with this robot yet"),
+    ("de", "Dieser Rechner ist noch nicht mit diesem Roboter gekoppelt")])
+def test_the_dialog_says_in_plain_words_that_this_computer_must_pair_first(qtbot, window, agent, programs_dialog,
+                                                                          language, reason):
+    dialog = programs_dialog(agent.port, language)
+    qtbot.waitUntil(lambda: asked_to_pair(dialog), timeout=20000)
+    assert dialog.pairing.reason.text().startswith(reason)
+    assert "rockly agent pair" in dialog.pairing.how.text()
+    assert dialog.status.text() == ""   # said once, in the panel
+    assert not dialog.programs.isVisible() and not dialog.pairing.pair_button.isEnabled()   # no code typed yet
+    for label in (dialog.pairing.reason, dialog.pairing.how):
+        whole(qtbot, label)
+    screenshot(dialog, f"pairing_needed_{language}")
+    dialog.grab().save(os.path.join(SHOTS, f"pairing_needed_{language}.png"))
 
 
 def test_a_wrong_code_is_said_and_the_code_typed_stays_and_the_right_one_then_pairs(qtbot, window, agent,
@@ -118,6 +145,8 @@ def test_a_wrong_code_is_said_and_the_code_typed_stays_and_the_right_one_then_pa
     type_code_and_pair(qtbot, dialog, wrong)
     qtbot.waitUntil(lambda: dialog.pairing.problem.text() not in ("", "Asking the robot…"), timeout=20000)
     assert "code" in dialog.pairing.problem.text().lower()
+    whole(qtbot, dialog.pairing.problem)
+    dialog.grab().save(os.path.join(SHOTS, "pairing_wrong_code_en.png"))
     assert dialog.pairing.code.text() == wrong and dialog.pairing.pair_button.isEnabled()
     assert dialog.pairing.pairing_needed and RobotKeys().all() == []
     type_code_and_pair(qtbot, dialog, right)
@@ -162,7 +191,10 @@ def test_a_teacher_makes_a_code_another_laptop_pairs_with(qtbot, window, agent, 
     qtbot.waitUntil(lambda: dialog.pairing.about.isVisible(), timeout=20000)
     QTest.mouseClick(dialog.pairing.another_button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: dialog.pairing.other_code.isVisible(), timeout=20000)
-    code = CODE.search(dialog.pairing.other_code.text()).group(0)
+    code = dialog.pairing.other_code.text()
+    assert CODE.fullmatch(code)
+    for label in (dialog.pairing.about, dialog.pairing.other_code_hint):
+        whole(qtbot, label)
     dialog.grab().save(os.path.join(SHOTS, f"pairing_paired_{language}.png"))
     other = AgentClient("127.0.0.1", agent.port, keys=RobotKeys(tmp_path / "other-laptop.json"))
     try:

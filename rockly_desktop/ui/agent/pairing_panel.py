@@ -4,7 +4,7 @@ longer knows, a certificate other than the one paired with), a field for the one
 laptop's role there and the certificate's short fingerprint; a teacher makes a code for another laptop; and Forget
 this robot deletes the key. The agent is asked off the window's thread (``AgentCalls``); a wrong, expired or
 over-guessed code is said and the code typed stays."""
-from PySide6.QtCore import Qt
+from PySide6.QtCore import Qt, Signal
 from PySide6.QtWidgets import (
     QComboBox,
     QGroupBox,
@@ -31,7 +31,9 @@ class PairingPanel(QGroupBox):
     ``(make, also_for)``: ``make()`` makes a new ``AgentClient`` off it, over TCP, and ``also_for`` the addresses
     of the same agent over ROS the key serves too). ``student_only``: this laptop pairs as a student whatever the
     code says (a kiosk). ``paired()`` is called on the window's thread once a pairing succeeded or a key was
-    forgotten (the dialog asks again)."""
+    forgotten (the dialog asks again). ``sig_changed``: what it shows changed (texts, rows shown)."""
+
+    sig_changed = Signal()
 
     def __init__(self, language: str, connect, parent=None, student_only: bool = False, paired=None,
                  keys: RobotKeys = None):
@@ -76,12 +78,23 @@ class PairingPanel(QGroupBox):
         row.addWidget(self.another_role)
         row.addStretch(1)
         row.addWidget(self.forget_button)
+        self.other_code_hint = self._label("pairing_other_code_hint")
         self.other_code = self._label("pairing_other_code")
         self.other_code.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        big = self.other_code.font()
+        big.setPointSizeF(big.pointSizeF() * 2)
+        big.setBold(True)
+        self.other_code.setFont(big)
+        self.other = QWidget(self)
+        other = QVBoxLayout(self.other)
+        other.setContentsMargins(0, 0, 0, 0)
+        other.addWidget(self.other_code_hint)
+        other.addWidget(self.other_code)
         self.problem = self._label("pairing_problem")
         layout = QVBoxLayout(self)
-        for widget in (self.reason, self.how, self.asking, self.about, self.actions, self.other_code, self.problem):
+        for widget in (self.reason, self.how, self.asking, self.about, self.actions, self.other, self.problem):
             layout.addWidget(widget)
+        layout.addStretch(1)  # room the dialog gives it stays below its rows
         self.needed("")
 
     def _label(self, name: str) -> QLabel:
@@ -108,12 +121,14 @@ class PairingPanel(QGroupBox):
         self.another_role.hide()
         self.forget_button.setVisible(key is not None)
         self.actions.setVisible(key is not None)
-        self.other_code.hide()
+        self.other.hide()
+        self.sig_changed.emit()
 
     def show_paired(self, key):
         """The robot answered this laptop, which holds ``key`` for it (a ``RobotKey``; None: none is needed)."""
         if key is None:
             self.hide()
+            self.sig_changed.emit()
             return
         self.show()
         changed = key != self.key
@@ -131,8 +146,9 @@ class PairingPanel(QGroupBox):
         self.another_role.setVisible(teacher)
         self.forget_button.show()
         if changed:
-            self.other_code.hide()
+            self.other.hide()
             self.problem.setText("")
+        self.sig_changed.emit()
 
     def pair(self):
         """Pair with the code typed (off the window's thread); the code stays when it is refused."""
@@ -157,6 +173,7 @@ class PairingPanel(QGroupBox):
         self.pair_button.setEnabled(bool(self.code.text().strip()))
         if error is not None:
             self.problem.setText(error.message)
+            self.sig_changed.emit()
             return
         self.code.clear()
         self.problem.setText(tr("pairing_done", self._language, agent=key.agent))
@@ -185,9 +202,11 @@ class PairingPanel(QGroupBox):
             self.problem.setText(error.message)
             return
         self.problem.setText("")
-        self.other_code.setText(tr("pairing_other_code", self._language, code=answer["code"],
-                                   seconds=answer["seconds"]))
-        self.other_code.show()
+        self.other_code_hint.setText(tr("pairing_other_code", self._language, seconds=answer["seconds"],
+                                        role=tr(f"pairing_role_{answer['role']}", self._language)))
+        self.other_code.setText(answer["code"])
+        self.other.show()
+        self.sig_changed.emit()
 
     def forget(self):
         """Delete this laptop's key for the robot (for each way it is reached: TCP, its ROS graph): it must pair

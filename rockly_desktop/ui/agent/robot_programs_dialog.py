@@ -85,6 +85,7 @@ class RobotProgramsDialog(QDialog):
         self.pairing = PairingPanel(language, self._pairing_way, self, student_only=pair_as_student,
                                     paired=self.refresh)
         self.pairing.hide()  # until the agent says whether this laptop is paired
+        self.pairing.sig_changed.connect(self._follow_pairing_panel)
         self.programs = QListWidget()
         self.running = QLabel()
         self.status = QLabel()
@@ -147,11 +148,15 @@ class RobotProgramsDialog(QDialog):
         self._poll_timer.start()
 
     def _show_help(self, shown: bool):
-        """Show or hide the steps; the dialog grows to show them whole (a wrapped text's height is not in its
-        layout's minimum), as far as its screen allows, moved up to stay on it."""
+        """Show or hide the steps; the dialog grows to show them whole."""
         self.help.setVisible(shown)
-        if not shown:
-            return
+        if shown:
+            self._fit_height()
+
+    def _fit_height(self):
+        """Grow to show every wrapped text whole (a wrapped text's height is not in its layout's minimum), as far
+        as the screen allows, moved up to stay on it."""
+        self.layout().activate()
         area, frame = self.screen().availableGeometry(), self.frameGeometry()
         extra = frame.height() - self.height()  # the window's title bar and borders
         height = min(max(self.height(), self.layout().totalHeightForWidth(self.width())), area.height() - extra)
@@ -171,7 +176,7 @@ class RobotProgramsDialog(QDialog):
             if self._enabled_before is None:  # a question asked meanwhile answers for itself
                 self._show_programs(self._follow_pairing(answer, error), "")
                 if error is not None:
-                    self.status.setText(error.message)
+                    self.status.setText("" if error.key in PAIRING_NEEDED else error.message)
         self.calls.run(work, answered)
 
     def refresh(self, said: str = ""):
@@ -308,7 +313,7 @@ class RobotProgramsDialog(QDialog):
 
         def answered(answer, error):
             answer = self._follow_pairing(answer, error)
-            self.status.setText(error.message if error is not None else "")
+            self.status.setText(error.message if error is not None and error.key not in PAIRING_NEEDED else "")
             if error is None and self._reached is not None:
                 self._reached(host, port)
             if then is not None:
@@ -317,6 +322,17 @@ class RobotProgramsDialog(QDialog):
                 self.refresh()
 
         self._ask(work, answered)
+
+    def _follow_pairing_panel(self):
+        """While this laptop must pair, the robot's programs are not shown (it cannot see them); the dialog grows
+        to show the panel's texts whole."""
+        unpaired = self.pairing.pairing_needed and not self.pairing.isHidden()
+        self.programs.setVisible(not unpaired)
+        self.keep_going.setVisible(not unpaired)
+        self.layout().setStretchFactor(self.pairing, 1 if unpaired else 0)  # it takes the list's room
+        if unpaired:
+            self.status.setText("")  # the panel says why
+        self._fit_height()
 
     def _client_maker(self):
         """A function that makes a new client of the agent at the address shown now (called off the window's
@@ -364,8 +380,9 @@ class RobotProgramsDialog(QDialog):
             if error.key in PAIRING_NEEDED:
                 key = getattr(error, "robot_key", None)
                 reason = error.message
-                if error.key == "agent_not_paired" and key is not None:  # it held a key: revoked, or a new agent
-                    reason = tr("pairing_revoked", self.language)
+                if error.key == "agent_not_paired":  # the agent's words name the command line: here, the dialog's
+                    # a key held all the same: revoked there, or a new agent
+                    reason = tr("pairing_revoked" if key is not None else "pairing_not_yet", self.language)
                 elif error.key == "agent_other_certificate":
                     reason += " " + tr("pairing_other_certificate", self.language)
                 self.pairing.needed(reason, key)
