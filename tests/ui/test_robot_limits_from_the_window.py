@@ -9,7 +9,7 @@ import re
 import pytest
 from agent_tools import AgentProcess, hobbit_on_ros_with_wire
 from program_builder import block, number, rockly_document
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QPoint, Qt
 from PySide6.QtTest import QTest
 from ros_helpers import ros_environment
 from standalone_tools import export_standalone
@@ -102,11 +102,14 @@ def test_a_teacher_sets_the_robots_limits_in_the_teacher_tab_and_a_run_on_the_ro
     assert paired(agent).role == "teacher"   # the first laptop on a fresh agent
     dialog, box = teacher_tab(agent.port)
     qtbot.waitUntil(lambda: box.status.text() == "These are the limits the robot keeps now.", timeout=20000)
+    qtbot.waitUntil(lambda: box.values.isVisible() and box.capability_boxes["arm"].height() > 0)   # laid out
     assert box.max_speed.value() == 0 and box.max_turn.value() == 0   # "no limit": the robot has none yet
     assert box.max_speed.text() == "no limit"
     type_into(box.max_speed, "0.2")
     type_into(box.max_turn, "30")
-    QTest.mouseClick(box.capability_boxes["arm"], Qt.MouseButton.LeftButton)   # the arm switched off
+    arm = box.capability_boxes["arm"]
+    QTest.mouseClick(arm, Qt.MouseButton.LeftButton, pos=QPoint(arm.height() // 2, arm.height() // 2))  # its tick
+    assert not arm.isChecked()   # the arm switched off
     dialog.grab().save(os.path.join(SHOTS, "teacher_tab_robot_limits_en.png"))
     QTest.mouseClick(box.keep_button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: box.status.text() == "The robot keeps these limits now; its next run holds to them.",
@@ -133,7 +136,7 @@ def test_a_student_is_refused_and_the_robots_limits_stay(qtbot, window, agent, t
     qtbot.waitUntil(lambda: box.status.text() not in ("", "Ich frage den Roboter…") and box.read_button.isEnabled(),
                     timeout=20000)
     assert "Lehrkraft" in box.status.text(), box.status.text()
-    assert not box.keep_button.isEnabled() and not box.max_speed.isEnabled()
+    assert not box.keep_button.isEnabled() and not box.values.isVisible()   # nothing shown it did not say
     dialog.grab().save(os.path.join(SHOTS, "teacher_tab_robot_limits_student_de.png"))
     assert json.loads(agent.limits_file.read_text())["max_speed"] == 0.3
     client = AgentClient("127.0.0.1", agent.port)
