@@ -3,6 +3,7 @@ keys and clicks where a person types and clicks: the right code pairs (as a teac
 student: test_kiosk_pairing) and then sending and starting work; a wrong code is said and the code typed stays; a
 revoked key is said and Forget deletes it, after which a new code pairs again; a teacher makes a code another
 laptop pairs with."""
+import dataclasses
 import os
 import re
 import stat
@@ -192,3 +193,22 @@ def test_a_teacher_makes_a_code_another_laptop_pairs_with(qtbot, window, agent, 
     finally:
         other.close()
     assert key.role == "student"   # the role chosen first
+
+
+def test_a_certificate_other_than_the_one_paired_with_is_said_and_forget_lets_the_laptop_pair_anew(
+        qtbot, window, agent, programs_dialog):
+    client = AgentClient("127.0.0.1", agent.port)
+    try:
+        key = client.pair(code_from_the_robot(agent.library))
+    finally:
+        client.close()
+    RobotKeys().save(dataclasses.replace(key, fingerprint="0" * 64))   # as if the robot's agent were another one
+    dialog = programs_dialog(agent.port)
+    qtbot.waitUntil(lambda: asked_to_pair(dialog) and dialog.pairing.forget_button.isVisible(), timeout=20000)
+    assert "compare the fingerprint 'rockly agent pair' shows there" in dialog.pairing.reason.text()
+    assert dialog.programs.count() == 0 and not dialog.programs.isVisible()
+    QTest.mouseClick(dialog.pairing.forget_button, Qt.MouseButton.LeftButton)
+    assert RobotKeys().all() == []
+    type_code_and_pair(qtbot, dialog, code_from_the_robot(agent.library))
+    qtbot.waitUntil(lambda: dialog.pairing.about.isVisible(), timeout=20000)
+    assert RobotKeys().get(tcp_address("127.0.0.1", agent.port)).fingerprint == key.fingerprint
