@@ -11,6 +11,7 @@ from pathlib import Path
 from rockly_desktop.core.app_texts import app_text
 from rockly_desktop.runtime.agent.client import VIAS, AgentClient, AgentError
 from rockly_desktop.runtime.agent.protocol import ALIVE_SECONDS, DEFAULT_NAMESPACE, DEFAULT_PORT
+from rockly_desktop.runtime.agent.source_match import REASONS
 from rockly_desktop.runtime.robot_limits import default_path as default_limits_path
 
 
@@ -94,6 +95,7 @@ def _agent_options(agent):
     agent.add_argument("--namespace", default=DEFAULT_NAMESPACE,
                        help=app_text("agent_namespace_help", "en", namespace=DEFAULT_NAMESPACE))
     agent.add_argument("--offer-on-robot-ui", metavar="PROFILE", help=app_text("agent_offer_help", "en"))
+    agent.add_argument("--no-source-check", action="store_true", help=app_text("agent_no_source_check_help", "en"))
 
 
 def add_robot_parser(commands, language_option):
@@ -213,6 +215,7 @@ def serve(args, language: str) -> int:
     from rockly_desktop.runtime.agent.library import Library
     from rockly_desktop.runtime.agent.pairings import Pairings, agent_folder
     from rockly_desktop.runtime.agent.server import Agent
+    from rockly_desktop.runtime.agent.source_match import SourceChecks
     from rockly_desktop.runtime.agent.tcp_transport import AgentServer
     from rockly_desktop.runtime.agent.tls import server_context
     from rockly_desktop.runtime.options import connection
@@ -238,6 +241,7 @@ def serve(args, language: str) -> int:
     agent = Agent(Library(folder, ProfileRegistry.discover().profiles, args.library_quota * 2**20), args.backend,
                   options, Pairings(agent_folder(folder)))
     agent.robot_limits_path = args.robot_limits or default_limits_path()  # a paired teacher may set them
+    agent.source_checks = SourceChecks(agent.library, agent.changed, enabled=not args.no_source_check)
     close_offer = _offer_on_robot_ui(agent, args, language)
     if close_offer is False:
         return 2
@@ -337,6 +341,20 @@ def robot_command(args, language: str, standalone_of=None) -> int:
         client.close()
 
 
+def code_state_text(about: dict, language: str) -> str:
+    """What a kept program's ``about.json`` says of its code against its blocks (``agent.source_match``), in
+    ``language``."""
+    state = about.get("code", "unchecked")  # kept by an agent older than the check
+    if state not in ("same", "differs", "unchecked", "no_source", "checking"):
+        state = "unchecked"
+    reason = str(about.get("code_reason", "-"))
+    if reason in REASONS:
+        reason = app_text("robot_code_reason_" + reason, language)
+    part = about.get("code_part", "code")
+    part = app_text("robot_code_part_" + part, language) if part in ("code", "blocks", "variables") else "-"
+    return app_text("robot_code_" + state, language, part=part, reason=reason)
+
+
 def _act(client, args, language, standalone_of, done) -> int:
     action = args.robot_command
     if action == "pair":
@@ -348,6 +366,7 @@ def _act(client, args, language, standalone_of, done) -> int:
                            version=about["profile_version"], received=about["received"],
                            lost=app_text("robot_lost_" + about["on_lost_editor"], language,
                                          seconds=about["decide_seconds"])))
+            print("  " + code_state_text(about, language))
         if not answer["programs"]:
             print(app_text("robot_no_programs", language))
         if answer["run"]:

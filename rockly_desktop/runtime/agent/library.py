@@ -2,7 +2,8 @@
 
     LIBRARY/NAME/program.py      the standalone export that runs (``rockly export --standalone``)
     LIBRARY/NAME/program.rockly  the program as the window opens it (when the sender had it)
-    LIBRARY/NAME/about.json      name, profile and its version, when it came, what a lost editor means
+    LIBRARY/NAME/about.json      name, profile and its version, when it came, what a lost editor means, who sent it,
+                                 whether its code is what its blocks generate (``agent.source_match``)
 
 A program is checked before it is kept, as a file Rockly opens is: its ``.rockly`` text must parse and name
 the same profile; the standalone file must hold a program of a profile installed here, in a version not
@@ -12,8 +13,10 @@ import ast
 import json
 import os
 import re
+import secrets
 import shutil
 import tempfile
+import threading
 from datetime import datetime, timezone
 from pathlib import Path
 
@@ -24,6 +27,7 @@ from rockly_desktop.recording.mcap_file import disk_full
 from rockly_desktop.runtime import standalone
 from rockly_desktop.runtime.agent.program_check import standalone_parts
 from rockly_desktop.runtime.agent.protocol import DEFAULT_DECIDE_SECONDS, LOST_EDITOR_CHOICES, AgentRefusal
+from rockly_desktop.runtime.agent.source_match import first_state
 
 NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_.\- ]{0,63}$")
 STANDALONE, SOURCE, ABOUT = "program.py", "program.rockly", "about.json"
@@ -62,6 +66,7 @@ class Library:
         self.folder = Path(folder)
         self.profiles = profiles
         self.quota_bytes = quota_bytes
+        self._writing = threading.Lock()  # a program replaced and a note on it written never cross
 
     def entries(self) -> list:
         """What is known of each kept program (its ``about.json``), by name."""
@@ -120,7 +125,8 @@ class Library:
         """Keep a program ``check`` gave (replacing one of the same name: its ``about.json`` then says whose it
         replaced and when, ``replaced``), within the library's quota; returns its ``about.json``. ``owner``: the
         paired client that sent it (``{"client": id, "role": role}``), whom the agent lets replace it."""
-        about = dict(checked["about"], sender=str(sender)[:80])
+        about = dict(checked["about"], sender=str(sender)[:80], kept=secrets.token_hex(8),
+                     **first_state(checked[SOURCE] is not None))
         if owner is not None:
             about["owner"] = owner
         folder = self._folder_of(about["name"])
@@ -134,8 +140,40 @@ class Library:
         incoming = sum(len(text.encode("utf-8", "surrogatepass")) for text in texts.values() if text is not None)
         if self._bytes_kept(besides=folder) + incoming > self.quota_bytes:
             raise AgentRefusal("agent_library_full", name=about["name"], megabytes=self.quota_bytes // 2**20)
-        self._replace(folder, texts)
+        with self._writing:
+            self._replace(folder, texts)
         return about
+
+    def texts(self, name: str, kept: str):
+        """``(standalone text, .rockly text)`` of program ``name`` as it was kept as ``kept`` (its ``about.json``'s
+        id of that keeping); None when it was replaced or deleted since, or came without a source."""
+        try:
+            if self.about(name).get("kept") != kept:
+                return None
+            folder = self._folder_of(name)
+            return ((folder / STANDALONE).read_text(encoding="utf-8"), (folder / SOURCE).read_text(encoding="utf-8"))
+        except (AgentRefusal, OSError, ValueError):
+            return None
+
+    def note(self, name: str, kept: str, fields: dict) -> bool:
+        """Add ``fields`` to the ``about.json`` of program ``name`` if it is still the one kept as ``kept``;
+        whether it was."""
+        with self._writing:
+            try:
+                about = self.about(name)
+            except AgentRefusal:
+                return False
+            if about.get("kept") != kept:
+                return False
+            about.update(fields)
+            path = self._folder_of(name) / ABOUT
+            incoming = path.with_name("." + ABOUT + ".incoming")
+            try:
+                incoming.write_text(json.dumps(about, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
+                os.replace(incoming, path)
+            except OSError:
+                return False
+            return True
 
     def _bytes_kept(self, besides: Path) -> int:
         """The bytes of every file in the library but those of ``besides`` (the folder a program replaces)."""

@@ -77,6 +77,7 @@ class Agent:
         self.clients = []
         self.listeners = []  # called (no arguments) when the library changes or a run starts or ends
         self.robot_limits_path = None  # the robot's own limits file (None: ``robot_limits.default_path()``)
+        self.source_checks = None  # agent.source_match's SourceChecks: whether a kept program's code is its blocks'
         self._lock = threading.RLock()
 
     # -- requests
@@ -141,7 +142,9 @@ class Agent:
                 raise AgentRefusal("agent_program_running", name=name)
             self._may_change(client, name)
             about = self.library.store(checked, client.name, {"client": client.paired.id, "role": client.paired.role})
-        self._changed()
+        if self.source_checks is not None:
+            self.source_checks.check_later(about)
+        self.changed()
         return {"program": about}
 
     def _op_source(self, client, request):
@@ -165,7 +168,7 @@ class Agent:
             if self.controller is not None and not self._may_control(self.controller):
                 self._hand_control_on()
             self.publish({"event": "run", "state": "started", "program": name})
-            self._changed()
+            self.changed()
             return {"run": self.run.snapshot()}
 
     def _op_stop(self, client, request):
@@ -182,7 +185,7 @@ class Agent:
                 raise AgentRefusal("agent_program_running", name=name)
             self._may_change(client, name)
             self.library.delete(name)
-        self._changed()
+        self.changed()
         return {}
 
     def _op_attach(self, client, request):
@@ -323,9 +326,10 @@ class Agent:
             if self.run is run:
                 self.run = None
                 self.started_by = None
-        self._changed()
+        self.changed()
 
-    def _changed(self):
+    def changed(self):
+        """Tell the listeners the library, the run or a program's check changed."""
         for listener in list(self.listeners):
             listener()
 
@@ -378,6 +382,8 @@ class Agent:
         run = self.run
         if run is not None:
             run.end()
+        if self.source_checks is not None:
+            self.source_checks.close()
 
 
 def _owner(about: dict) -> str:
