@@ -91,11 +91,17 @@ class PairingPanel(QGroupBox):
         other.addWidget(self.other_code_hint)
         other.addWidget(self.other_code)
         self.problem = self._label("pairing_problem")
+        self.problem.hide()
         layout = QVBoxLayout(self)
         for widget in (self.reason, self.how, self.asking, self.about, self.actions, self.other, self.problem):
             layout.addWidget(widget)
         layout.addStretch(1)  # room the dialog gives it stays below its rows
         self.needed("")
+
+    def _tell(self, text: str):
+        """``text`` under the panel's rows (how a pairing or a code went); no row at all when there is none."""
+        self.problem.setText(text)
+        self.problem.setVisible(bool(text))
 
     def _label(self, name: str) -> QLabel:
         label = QLabel(self, objectName=name, wordWrap=True)
@@ -147,7 +153,7 @@ class PairingPanel(QGroupBox):
         self.forget_button.show()
         if changed:
             self.other.hide()
-            self.problem.setText("")
+            self._tell("")
         self.sig_changed.emit()
 
     def pair(self):
@@ -166,17 +172,17 @@ class PairingPanel(QGroupBox):
                 client.close()
 
         self.pair_button.setEnabled(False)
-        self.problem.setText(tr("robot_programs_asking", self._language))
+        self._tell(tr("robot_programs_asking", self._language))
         self.calls.run(work, self._pair_answered)
 
     def _pair_answered(self, key, error):
         self.pair_button.setEnabled(bool(self.code.text().strip()))
         if error is not None:
-            self.problem.setText(error.message)
+            self._tell(error.message)
             self.sig_changed.emit()
             return
         self.code.clear()
-        self.problem.setText(tr("pairing_done", self._language, agent=key.agent))
+        self._tell(tr("pairing_done", self._language, agent=key.agent))
         self.show_paired(key)
         if self._paired is not None:
             self._paired()
@@ -193,15 +199,15 @@ class PairingPanel(QGroupBox):
                 client.close()
 
         self.another_button.setEnabled(False)
-        self.problem.setText(tr("robot_programs_asking", self._language))
+        self._tell(tr("robot_programs_asking", self._language))
         self.calls.run(work, self._code_answered)
 
     def _code_answered(self, answer, error):
         self.another_button.setEnabled(True)
         if error is not None:
-            self.problem.setText(error.message)
+            self._tell(error.message)
             return
-        self.problem.setText("")
+        self._tell("")
         self.other_code_hint.setText(tr("pairing_other_code", self._language, seconds=answer["seconds"],
                                         role=tr(f"pairing_role_{answer['role']}", self._language)))
         self.other_code.setText(answer["code"])
@@ -216,6 +222,6 @@ class PairingPanel(QGroupBox):
                 if kept.address == self.key.address or kept.client == self.key.client:
                     self._keys.forget(kept.address)
         self.needed(tr("pairing_forgotten", self._language))
-        self.problem.setText("")
+        self._tell("")
         if self._paired is not None:
             self._paired()

@@ -1,7 +1,8 @@
 """Robot → "Programs on the robot…": the agent's address, the programs it keeps and what it runs now, with
 Send (the open program, exported standalone as ``rockly export --standalone`` does), Start, Stop and Attach
 (``AttachedRun``); once attached, whether the robot's program is the one open here; and, at a click, how to put
-the agent on a robot. While it is open the agent is asked again each second, so what it says stays true. A robot
+the agent on a robot; for the program chosen, whether its code is what its blocks make (the agent checks it).
+While it is open the agent is asked again each second, so what it says stays true. A robot
 this laptop is not paired with (or no longer: a revoked key, another certificate) is paired there
 (``PairingPanel``)."""
 import tempfile
@@ -21,6 +22,7 @@ from PySide6.QtWidgets import (
     QListWidgetItem,
     QPushButton,
     QSpinBox,
+    QStyle,
     QVBoxLayout,
 )
 
@@ -28,6 +30,7 @@ from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.program import Program, write_text_atomically
 from rockly_desktop.core.workspace_blocks import block_types_by_id
 from rockly_desktop.runtime.agent.client import AgentClient, AgentError, chosen_via
+from rockly_desktop.runtime.agent.commands import code_state_text
 from rockly_desktop.runtime.agent.protocol import DEFAULT_NAMESPACE, DEFAULT_PORT
 from rockly_desktop.runtime.agent.robot_keys import RobotKeys, ros_address, tcp_address
 from rockly_desktop.runtime.standalone_file import standalone_text
@@ -87,6 +90,16 @@ class RobotProgramsDialog(QDialog):
         self.pairing.hide()  # until the agent says whether this laptop is paired
         self.pairing.sig_changed.connect(self._follow_pairing_panel)
         self.programs = QListWidget()
+        self._abouts = {}  # name -> what the agent says of each program it keeps
+        self.code_state = QLabel(objectName="robot_code_state", wordWrap=True)  # the chosen program's code
+        self.code_state.setTextFormat(Qt.TextFormat.PlainText)
+        self.code_warning = QLabel(objectName="robot_code_warning")
+        self._warning_icon = self.style().standardIcon(QStyle.StandardPixmap.SP_MessageBoxWarning)
+        self.code_warning.setPixmap(self._warning_icon.pixmap(24))
+        self.code_warning.hide()
+        code = QHBoxLayout()
+        code.addWidget(self.code_warning, 0, Qt.AlignmentFlag.AlignTop)
+        code.addWidget(self.code_state, 1)
         self.running = QLabel()
         self.status = QLabel()
         self.status.setWordWrap(True)
@@ -120,6 +133,7 @@ class RobotProgramsDialog(QDialog):
         layout.addLayout(form)
         layout.addWidget(self.pairing)
         layout.addWidget(self.programs, 1)
+        layout.addLayout(code)
         layout.addWidget(self.keep_going)
         layout.addWidget(self.running)
         layout.addWidget(self.status)
@@ -135,6 +149,7 @@ class RobotProgramsDialog(QDialog):
         attached.sig_state_changed.connect(self._follow_attachment)
         self.finished.connect(self._forget_calls)
         self.programs.itemSelectionChanged.connect(self._enable_start)
+        self.programs.itemSelectionChanged.connect(self._show_code_state)
         self._enable_start()
         self._poll_timer = QTimer(self)
         self._poll_timer.setInterval(POLL_MS)
@@ -188,6 +203,8 @@ class RobotProgramsDialog(QDialog):
         """Show the agent's ``answer`` to ``programs()``; None (it was not reached): nothing is known, nothing shown."""
         if answer is None:
             self.programs.clear()
+            self._abouts = {}
+            self._show_code_state()
             self.running.setText("")
             self._runs = False
             self._enable_start()
@@ -195,12 +212,16 @@ class RobotProgramsDialog(QDialog):
             return
         chosen = self.chosen()
         self.programs.clear()
+        self._abouts = {about["name"]: about for about in answer["programs"]}
         for about in answer["programs"]:
             item = QListWidgetItem(tr("robot_programs_line", self.language, name=about["name"],
                                       profile=about["profile"], version=about["profile_version"]))
             item.setData(256, about["name"])
+            if about.get("code") == "differs":  # seen in the list before it is chosen
+                item.setIcon(self._warning_icon)
             self.programs.addItem(item)
             item.setSelected(about["name"] == chosen)
+        self._show_code_state()
         if not answer["programs"]:
             self.status.setText(tr("robot_no_programs", self.language))
         run = answer["run"]
@@ -214,6 +235,19 @@ class RobotProgramsDialog(QDialog):
             self.running.setText(tr("robot_programs_nothing", self.language))
         if said:
             self.status.setText(said)
+
+    def _show_code_state(self):
+        """Say whether the chosen program's code is what its blocks make (the agent checks it); a program whose
+        code differs is warned of with an icon and in bold."""
+        about = self._abouts.get(self.chosen())
+        differs = about is not None and about.get("code") == "differs"
+        said = code_state_text(about, self.language) if about is not None else ""
+        self.code_state.setText(said[:1].upper() + said[1:])  # a sentence of its own here
+        self.code_state.setVisible(about is not None)
+        self.code_warning.setVisible(differs)
+        font = self.code_state.font()
+        font.setBold(differs)
+        self.code_state.setFont(font)
 
     def _follow_attachment(self, state: str):
         if self._enabled_before is not None:  # asking: the button follows once the answer is in
