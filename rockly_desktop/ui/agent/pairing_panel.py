@@ -1,6 +1,6 @@
 """The Programs dialog's pairing: why this laptop cannot use the robot yet (no key for it, a key the robot no
 longer knows, a certificate other than the one paired with), a field for the one-time code the robot shows
-(``rockly agent pair`` prints one; HOBBIT's tablet may show one) and Pair; once paired, the robot's name, this
+(``rockly agent pair`` prints one; a robot's own screen may show one) and Pair; once paired, the robot's name, this
 laptop's role there and the certificate's short fingerprint; a teacher makes a code for another laptop; and Forget
 this robot deletes the key. The agent is asked off the window's thread (``AgentCalls``); a wrong, expired or
 over-guessed code is said and the code typed stays."""
@@ -48,7 +48,7 @@ class PairingPanel(QGroupBox):
         self.how.setText(tr("pairing_how", language) + (" " + tr("pairing_kiosk_student", language)
                                                          if student_only else ""))
         self.code = QLineEdit(self, objectName="pairing_code")
-        self.code.setPlaceholderText(tr("pairing_code_hint", language))
+        self.code.setPlaceholderText(tr("pairing_code_hint", language, example="K7Q-M2X"))
         self.code.returnPressed.connect(self.pair)
         self.code.textChanged.connect(lambda text: self.pair_button.setEnabled(bool(text.strip())))
         self.pair_button = QPushButton(tr("pairing_pair", language), self, objectName="pairing_pair")
