@@ -13,16 +13,23 @@ from ros_helpers import hobbit_on_own_master, ros_environment
 from waiting import eventually
 from wire_recorder import WireRecorder
 
-from rockly_desktop.runtime.agent.protocol import AGENT_SILENT_SECONDS
+from rockly_desktop.runtime.agent.pairings import Pairings, agent_folder
+from rockly_desktop.runtime.agent.protocol import AGENT_SILENT_SECONDS, DEFAULT_NAMESPACE
+from rockly_desktop.runtime.agent.robot_keys import RobotKeys, ros_address
 
 REPO = Path(__file__).resolve().parents[1]
 
 
 class AgentProcess:
     """``rockly agent --backend BACKEND`` on a free localhost port, its programs in ``library``; on ROS 1 (its
-    ``--master`` among ``options``), returns once the master lists the agent's own node on its topics."""
+    ``--master`` among ``options``), returns once the master lists the agent's own node on its topics.
 
-    def __init__(self, library: Path, *options, backend="sim", env=None):
+    With ``paired`` (the default) this test's laptop is paired with it first, as a teacher (the first laptop on a
+    fresh agent): its key is in the test's robot keys (``RobotKeys()``, the test's config folder) for
+    ``tcp:127.0.0.1:PORT``, and for the agent's ROS address where it has one; ``self.key`` is that key."""
+
+    def __init__(self, library: Path, *options, backend="sim", env=None, paired=True):
+        self.library = Path(library)
         self.process = subprocess.Popen(
             [sys.executable, "-m", "rockly_desktop", "agent", "--backend", backend, "--host", "127.0.0.1",
              "--port", "0", "--library", str(library), "--language", "en", *map(str, options)],
@@ -32,12 +39,26 @@ class AgentProcess:
         self.port = int(ready.split("listening on 127.0.0.1:")[1].split(",")[0])
         if backend == "ros1":  # it says it listens on TCP before its node is up: a ROS client then finds no agent
             self._wait_on_ros1(str(options[options.index("--master") + 1]))
+        self.key = self.pair(_ros_addresses(options)) if paired else None
+
+    def new_code(self, role: str = None) -> str:
+        """A one-time pairing code of this agent, made as ``rockly agent pair`` makes it (in the agent's folder)."""
+        return Pairings(agent_folder(self.library)).new_code(role).shown
+
+    def pair(self, also_for=(), role: str = None, keys: RobotKeys = None):
+        """Pair a laptop (its keys: ``keys``, else the test's) as ``role``; returns its RobotKey."""
+        from rockly_desktop.runtime.agent.client import AgentClient
+
+        client = AgentClient("127.0.0.1", self.port, keys=keys)
+        try:
+            return client.pair(self.new_code(role), "test laptop", also_for)
+        finally:
+            client.close()
 
     def _wait_on_ros1(self, master_uri: str):
         """Return once the master lists this agent's node (``rockly_PID_...``) as a subscriber of its requests."""
         from rockly_desktop.robot.ros1.agent_topics import topics
         from rockly_desktop.robot.ros1.connection import ask_master
-        from rockly_desktop.runtime.agent.protocol import DEFAULT_NAMESPACE
 
         def listed():
             subscribers = dict(ask_master(master_uri, "getSystemState")[1]).get(topics(DEFAULT_NAMESPACE)[0], [])
@@ -52,8 +73,8 @@ class AgentProcess:
                               timeout=timeout, cwd=REPO, env=env)
 
     def robot_command(self, *args, language="en") -> list:
-        return [sys.executable, "-m", "rockly_desktop", "robot", "--port", str(self.port), "--language", language,
-                *map(str, args)]
+        return [sys.executable, "-m", "rockly_desktop", "robot", "--host", "127.0.0.1", "--port", str(self.port),
+                "--language", language, *map(str, args)]
 
     def stop(self):
         """End the agent as systemd does (SIGTERM); kill it only if it does not end."""
@@ -66,6 +87,16 @@ class AgentProcess:
                 self.process.wait(10)
         self.process.stdout.close()
         self.process.stderr.close()
+
+
+def _ros_addresses(options) -> list:
+    """The ROS addresses of an agent started with ``options`` (``--master URI``, ``--domain N``)."""
+    options = [str(option) for option in options]
+    if "--domain" in options:
+        return [ros_address("ros2", int(options[options.index("--domain") + 1]), DEFAULT_NAMESPACE)]
+    if "--master" in options:
+        return [ros_address("ros1", options[options.index("--master") + 1], DEFAULT_NAMESPACE)]
+    return []
 
 
 @contextmanager
@@ -127,10 +158,14 @@ def installed_agent(bin_folder: Path, library: Path, *options, env: dict):
         port = ready.split("127.0.0.1:")[1].split(",")[0]
 
         def robot(*args):
-            result = subprocess.run([str(bin_folder / "rockly-robot"), "--port", port, *map(str, args)], cwd="/",
-                                    env=env, capture_output=True, text=True, timeout=120)
+            result = subprocess.run([str(bin_folder / "rockly-robot"), "--host", "127.0.0.1", "--port", port,
+                                     *map(str, args)], cwd="/", env=env, capture_output=True, text=True, timeout=120)
             assert result.returncode == 0, result.stderr
             return result.stdout
+        made = subprocess.run([str(bin_folder / "rockly-agent"), "--library", str(library), "pair"], cwd="/", env=env,
+                              capture_output=True, text=True, timeout=120)
+        assert made.returncode == 0, made.stderr
+        assert "paired" in robot("pair", made.stdout.split("code: ")[1].split(" ")[0]).lower()
         yield robot
     finally:
         agent.terminate()

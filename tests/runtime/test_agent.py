@@ -9,6 +9,7 @@ import subprocess
 
 import pytest
 from agent_tools import REPO, AgentProcess, AttachedClient, seconds_until_ended_while_frozen
+from agent_wire import answers, say, tls_connection
 from program_builder import block, number, rockly_document, stack
 from standalone_tools import environment, exported_program
 from tiny_disk import fill, tiny_disk
@@ -16,6 +17,7 @@ from waiting import eventually
 
 from rockly_desktop.runtime.agent.client import AgentClient, AgentError
 from rockly_desktop.runtime.agent.protocol import AGENT_SILENT_SECONDS
+from rockly_desktop.runtime.agent.robot_keys import RobotKeys
 
 
 def drive_and_tell():
@@ -214,7 +216,7 @@ def test_an_unreachable_agent_is_said(tmp_path):
     result = subprocess.run(AgentProcess.robot_command(type("A", (), {"port": 9})(), "list"), cwd=REPO,
                             capture_output=True, text=True, timeout=60)
     assert result.returncode == 1
-    assert result.stderr.startswith("rockly robot: the robot's agent at localhost:9 cannot be reached")
+    assert result.stderr.startswith("rockly robot: the robot's agent at 127.0.0.1:9 cannot be reached")
 
 
 def test_a_host_that_never_answers_hello_is_said_and_the_client_keeps_no_thread(tmp_path):
@@ -363,10 +365,10 @@ def test_a_full_disk_on_the_robot_is_said_and_loses_nothing(program, tmp_path, l
 ])
 def test_a_client_of_another_rockly_version_is_told(agent_at, language, expected):
     agent = agent_at()
-    with socket.create_connection(("127.0.0.1", agent.port), 30) as raw:
-        raw.sendall(json.dumps({"op": "hello", "id": 1, "rockly": "9.0.0", "format": 2,
-                                "language": language}).encode() + b"\n")
-        answer = json.loads(raw.makefile("rb").readline())
+    connection, _ = tls_connection(agent.port)
+    with connection:
+        say(connection, {"op": "hello", "id": 1, "rockly": "9.0.0", "format": 2, "language": language})
+        answer = answers(connection, 1)[0]
     assert answer["reply"] == 1 and answer["ok"] is False and answer["error"] == "agent_other_format"
     assert answer["message"].startswith(expected)
 
@@ -389,6 +391,7 @@ def test_rockly_robot_sends_a_rockly_file_exported_and_checked(agent_at, program
     """The laptop's ``rockly robot send PROGRAM.rockly`` exports it as ``--standalone`` does and sends both texts."""
     agent = agent_at()
     env = environment(XDG_CONFIG_HOME=str(tmp_path / "config"), XDG_DATA_HOME=str(tmp_path / "data"))
+    RobotKeys(tmp_path / "config" / "rockly" / "robot-keys.json").save(agent.key)  # the laptop's key, in its config
     sent = agent.robot("send", program[1], "--decide-seconds", "3", env=env)
     assert sent.returncode == 0 and sent.stdout == "'drive' is on the robot now\n", sent.stderr
     listed = agent.robot("list", language="de")

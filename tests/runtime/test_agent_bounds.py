@@ -2,14 +2,14 @@
 protocol directly: ill-typed requests, a program text that would take gigabytes to parse, a line without end, a
 slowloris, a connection that says nothing, more connections than it holds and a library filled to the brim. Each
 is refused or cut, the agent stays small, and a paired editor's STOP still ends the run (issue 30)."""
-import json
-import socket
 import subprocess
 import threading
 import time
 
 import pytest
 from agent_tools import REPO, AgentProcess
+from agent_wire import answers, closed_by_agent, plain_connection, say, tls_connection
+from agent_wire import hello as hello_request
 from program_builder import block, rockly_document, text
 from standalone_tools import environment, export_standalone
 from waiting import eventually
@@ -17,8 +17,6 @@ from waiting import eventually
 from rockly_desktop.runtime.agent.client import AgentClient, AgentError
 from rockly_desktop.runtime.agent.protocol import MAX_LINE_BYTES
 from rockly_desktop.runtime.agent.tcp_transport import FIRST_LINE_SECONDS, MAX_CONNECTIONS_PER_ADDRESS
-
-HELLO = {"op": "hello", "id": 0, "format": 1, "language": "en", "client": "stranger"}
 
 
 @pytest.fixture(scope="module")
@@ -46,42 +44,14 @@ def agent(tmp_path):
     agent.stop()
 
 
-def stranger(port: int, source_address: str = "127.0.0.1", hello: bool = True) -> socket.socket:
-    connection = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
-    connection.bind((source_address, 0))
-    connection.connect(("127.0.0.1", port))
-    connection.settimeout(60)
+def stranger(agent, source_address: str = "127.0.0.1", hello: bool = True):
+    """A TLS connection to ``agent`` from ``source_address``; with ``hello``, it says hello as the paired laptop
+    (a paired client turned hostile: the bounds hold for it too)."""
+    connection, nonce = tls_connection(agent.port, source_address)
     if hello:
-        say(connection, HELLO)
-        assert answers(connection, 1)[0]["ok"]
+        say(connection, hello_request(nonce, agent.key))
+        assert answers(connection, 1)[0]["paired"]
     return connection
-
-
-def say(connection, message):
-    connection.sendall((json.dumps(message) + "\n").encode() if isinstance(message, dict) else message)
-
-
-def answers(connection, count: int) -> list:
-    """The next ``count`` answers (alive beats skipped); fewer when the agent closed the connection."""
-    found, buffer = [], b""
-    while len(found) < count:
-        data = connection.recv(1 << 16)
-        if not data:
-            break
-        buffer += data
-        *lines, buffer = buffer.split(b"\n")
-        found += [message for message in map(json.loads, lines) if "alive" not in message]
-    return found
-
-
-def closed_by_agent(connection) -> bool:
-    """True once the agent has closed ``connection`` (what it said before is read and dropped)."""
-    try:
-        while connection.recv(1 << 16):
-            pass
-    except OSError:
-        pass
-    return True
 
 
 def peak_memory_bytes(pid: int) -> int:
@@ -107,7 +77,7 @@ ILL_TYPED = [
 
 
 def test_ill_typed_requests_are_each_answered_and_the_connection_goes_on(agent):
-    connection = stranger(agent.port)
+    connection = stranger(agent)
     for number, request in enumerate(ILL_TYPED, start=1):
         say(connection, {**request, "id": request.get("id", number)})
         answer = answers(connection, 1)
@@ -120,7 +90,7 @@ def test_ill_typed_requests_are_each_answered_and_the_connection_goes_on(agent):
 
 
 def test_a_program_text_that_takes_gigabytes_to_parse_is_refused_and_the_agent_stays_small(agent):
-    connection = stranger(agent.port)
+    connection = stranger(agent)
     say(connection, {"op": "send", "id": 1, "name": "lines", "standalone": "a\n" * 2_000_000})
     answer = answers(connection, 1)[0]
     assert (answer["ok"], answer["error"]) == (False, "agent_not_standalone")
@@ -130,14 +100,14 @@ def test_a_program_text_that_takes_gigabytes_to_parse_is_refused_and_the_agent_s
 def test_a_program_of_profile_version_none_is_refused(agent, programs):
     standalone = programs["forever"][0]
     assert "'version': '1.0.0'" in standalone
-    connection = stranger(agent.port)
+    connection = stranger(agent)
     say(connection, {"op": "send", "id": 1, "name": "none", "standalone": standalone.replace(
         "'version': '1.0.0'", "'version': None")})
     assert answers(connection, 1)[0]["error"] == "agent_not_standalone"
 
 
 def test_a_line_longer_than_the_agent_takes_is_refused_and_the_connection_closed(agent):
-    connection = stranger(agent.port)
+    connection = stranger(agent)
     heard = []
     reader = threading.Thread(target=lambda: heard.extend(answers(connection, 1)) or closed_by_agent(connection))
     reader.start()  # as a client reads: on a thread of its own, while it sends
@@ -154,7 +124,7 @@ def test_a_line_longer_than_the_agent_takes_is_refused_and_the_connection_closed
 
 def test_a_line_sent_a_byte_at_a_time_is_cut(agent):
     """A slowloris: one byte every half second, a line that never ends."""
-    connection = stranger(agent.port)
+    connection = stranger(agent)
     started = time.monotonic()
     try:
         for _ in range(200):
@@ -169,7 +139,7 @@ def test_a_line_sent_a_byte_at_a_time_is_cut(agent):
 
 
 def test_a_connection_that_says_nothing_is_closed(agent):
-    connection = stranger(agent.port, hello=False)
+    connection = stranger(agent, hello=False)
     connection.settimeout(FIRST_LINE_SECONDS + 30)
     assert answers(connection, 1)[0]["error"] == "agent_line_too_slow"
     assert closed_by_agent(connection)
@@ -181,8 +151,8 @@ def test_connections_are_capped_per_address_and_an_editor_from_another_still_sto
     try:
         editor.send("forever", programs["forever"][0])
         editor.start("forever")
-        crowd = [stranger(agent.port, "127.0.0.2") for _ in range(MAX_CONNECTIONS_PER_ADDRESS)]
-        one_more = stranger(agent.port, "127.0.0.2", hello=False)
+        crowd = [stranger(agent, "127.0.0.2") for _ in range(MAX_CONNECTIONS_PER_ADDRESS)]
+        one_more = plain_connection(agent.port, "127.0.0.2")  # told before TLS, which it does not wait for
         assert answers(one_more, 1)[0]["error"] == "agent_too_many_connections"
         assert closed_by_agent(one_more)
         assert editor.stop()

@@ -8,6 +8,7 @@ import sys
 from agent_tools import REPO
 
 from rockly_desktop.runtime.agent.client import AgentClient
+from rockly_desktop.runtime.agent.pairings import Pairings, agent_folder
 
 DOCS = REPO / "docs" / "agent"
 
@@ -26,6 +27,7 @@ def test_the_ros1_node_script_starts_the_agent_without_roslaunchs_arguments(tmp_
         ready = node.stdout.readline()
         assert "listening on 127.0.0.1:" in ready, node.stderr.read()
         client = AgentClient("127.0.0.1", int(ready.split("127.0.0.1:")[1].split(",")[0]))
+        client.pair(Pairings(agent_folder(tmp_path / "library")).new_code().shown)
         assert client.programs() == {"programs": [], "run": None}
         client.close()
     finally:

@@ -101,11 +101,10 @@ class Agent:
         client.name = str(request.get("client", "?"))[:80]
         if request.get("format") != FORMAT:
             raise AgentRefusal("agent_other_format", agent=__version__, client=request.get("rockly", "?"))
-        nonce = getattr(client, "nonce", None)
-        if nonce is not None:  # TCP: the hello proves the key over the connection's nonce (ROS: every message)
-            client_id = request.get("client_id")
-            client.paired = self.pairings.verify(client_id, request.get("proof"), hello_data(nonce, client_id)) if (
-                isinstance(client_id, str)) else None
+        nonce, client_id = getattr(client, "nonce", None), request.get("client_id")
+        if nonce is not None and isinstance(client_id, str):  # TCP: a hello proves the key over the connection's
+            # nonce (ROS: every message proves itself); a hello naming no client changes nothing
+            client.paired = self.pairings.verify(client_id, request.get("proof"), hello_data(nonce, client_id))
         paired = client.paired
         return {"agent": __version__, "format": FORMAT, "backend": self.backend,
                 "profiles": {p.id: p.version for p in self.library.profiles.values()}, "alive_seconds": ALIVE_SECONDS,

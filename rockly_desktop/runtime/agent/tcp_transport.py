@@ -50,8 +50,13 @@ class TcpLine:
             raise AgentError("agent_unreachable", app_text("agent_unreachable", language, host=host, port=port,
                                                            reason=error.strerror or str(error))) from None
         raw.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+        no_answer = AgentError("agent_no_answer", app_text("agent_no_answer", language, where=self.where,
+                                                          seconds=f"{timeout:g}"))
         try:
             self._socket = client_context().wrap_socket(raw)  # the handshake, within ``timeout``
+        except socket.timeout:
+            raw.close()
+            raise no_answer from None
         except OSError as error:
             raw.close()
             raise AgentError("agent_no_tls", app_text("agent_no_tls", language, host=host, port=port,
@@ -65,6 +70,9 @@ class TcpLine:
         self._lines = self._socket.makefile("rb")
         try:
             greeting = decode(self._lines.readline(4096)) or {}
+        except socket.timeout:
+            self._socket.close()
+            raise no_answer from None
         except OSError:
             greeting = {}
         self.nonce = greeting.get("nonce")
