@@ -41,7 +41,7 @@ def paired_clients(agent, library, folder) -> list:
 def robot(tmp_path):
     """``(agent, its limits file, a teacher's client, a student's client)``."""
     limits_file = tmp_path / "limits" / "robot-limits.json"
-    agent = AgentProcess(tmp_path / "library", "--robot-limits", limits_file)
+    agent = AgentProcess(tmp_path / "library", "--robot-limits", limits_file, paired=False)
     clients = []
     try:
         clients = paired_clients(agent, tmp_path / "library", tmp_path)
@@ -99,7 +99,8 @@ def test_ill_typed_limits_are_refused_and_change_nothing(robot, wanted):
 
 def test_a_limits_file_the_agent_may_not_write_is_said(tmp_path):
     (tmp_path / "not-a-folder").write_text("")   # no user, root neither, writes a file under a file
-    agent = AgentProcess(tmp_path / "library", "--robot-limits", tmp_path / "not-a-folder" / "robot-limits.json")
+    agent = AgentProcess(tmp_path / "library", "--robot-limits", tmp_path / "not-a-folder" / "robot-limits.json",
+                         paired=False)
     clients = []
     try:
         clients = paired_clients(agent, tmp_path / "library", tmp_path)

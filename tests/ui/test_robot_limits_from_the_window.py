@@ -40,12 +40,12 @@ def robot(tmp_path_factory):
 
 @pytest.fixture
 def agent(robot, tmp_path):
-    """The robot's agent on the test's master, its limits in ``agent.limits_file`` (none yet)."""
+    """The robot's agent on the test's master (nobody paired yet), its limits in ``agent.limits_file`` (none)."""
     master = robot[0]
     limits_file = tmp_path / "robot-limits.json"
     process = AgentProcess(tmp_path / "library", "--master", master.uri, "--robot-limits", limits_file,
-                           backend="ros1", env=ros_environment(master.uri, master.home))
-    process.library, process.limits_file = tmp_path / "library", limits_file
+                           backend="ros1", env=ros_environment(master.uri, master.home), paired=False)
+    process.limits_file = limits_file
     yield process
     process.stop()
 

@@ -43,9 +43,8 @@ def robot_says_pair(library, *options) -> tuple:
 
 @pytest.fixture
 def agent(tmp_path):
-    """A fresh agent (nobody paired) with slow simulated time; ``agent.library``: its programs' folder."""
-    robot = AgentProcess(tmp_path / "library", "--speed", 0.05)
-    robot.library = tmp_path / "library"
+    """A fresh agent (nobody paired) with slow simulated time."""
+    robot = AgentProcess(tmp_path / "library", "--speed", 0.05, paired=False)
     yield robot
     robot.stop()
 

@@ -9,7 +9,7 @@ from agent_tools import AgentProcess
 from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 from test_attach_window import exported  # noqa: F401 (fixture)
-from test_robot_pairing import SHOTS, code_from_the_robot
+from test_robot_pairing import SHOTS
 from waiting import eventually
 
 from rockly_desktop.runtime.agent.client import AgentClient
@@ -20,10 +20,9 @@ from rockly_desktop.ui.agent.robot_programs_dialog import RobotProgramsDialog
 def robot(tmp_path, exported):  # noqa: F811
     """An agent keeping "honest" (as exported) and "changed" (code put in beside its blocks), both checked; this
     laptop paired with it."""
-    agent = AgentProcess(tmp_path / "library", "--speed", 20)
+    agent = AgentProcess(tmp_path / "library", "--speed", 20)   # this laptop paired with it, as a teacher
     client = AgentClient("127.0.0.1", agent.port)
     try:
-        client.pair(code_from_the_robot(tmp_path / "library"))
         standalone, source = exported
         changed = standalone.replace('RUN_CODE = """', 'RUN_CODE = """import os\nos.system("true")\n', 1)
         assert changed != standalone
