@@ -10,6 +10,10 @@ from pathlib import Path
 
 from _paths import REPO
 from _twist_echo import TwistEcho
+from agent_tools import pair_with_agent
+
+from rockly_desktop.runtime.agent.protocol import DEFAULT_NAMESPACE
+from rockly_desktop.runtime.agent.robot_keys import ros_address
 
 ROS2_PYTHON = REPO / ".venv-ros2" / "bin" / "python"
 DRIVE = "robot.drive_for(0.1, 120)\n"  # drives until stopped (each trial stops it)
@@ -69,6 +73,7 @@ def ros2_figures(stop_times, attach_times):
                              "--library", str(library)], env, "listening on")
     port = int(ready.split("127.0.0.1:")[1].split(",")[0])
     try:
+        pair_with_agent(port, library, [ros_address("ros2", domain, DEFAULT_NAMESPACE)], name="benchmark")
         events = []
         client = AgentClient("127.0.0.1", port, on_event=events.append)
         try:

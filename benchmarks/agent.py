@@ -3,21 +3,21 @@
   - stop on the wire: a STOP request (``AgentClient.stop()``) -> the zero Twist of the robot's safe stop
     received by a separate plain rospy node, while the program drives under the agent (aim <= 50 ms);
     baseline: the same stop of the same program run in this process (the laptop's run, as benchmarks/ros1.py);
-  - attach: a new client connecting, saying hello and attaching to a running program until the run's state is
-    in hand (aim <= 1 s); baseline: one bare TCP request/answer with the same agent (connect, a line, a line);
+  - attach: a new (paired) client connecting, saying hello and attaching to a running program until the run's
+    state is in hand (aim <= 1 s); baseline: one bare TLS request/answer with the same agent (connect and the
+    TLS handshake, its greeting, a line, a line);
   - both again over ROS 1 (the agent's topics, ``AgentClient(via="ros")``), each with its ratio to the TCP figure
     of the same run;
   - both over TCP and over ROS 2 with ``rockly agent --backend ros2`` driving ``rockly sim turtlebot --ros2``
     (``_agent_ros2.py``), the ROS 2 figures each with its ratio to that agent's TCP figure of the same run.
 
 A real rosmaster on a free port, a ROS 2 domain of the run's own; the agents, the simulator and the echo nodes are
-processes of their own.
+processes of their own. Each agent pairs this process first (its key in a config folder of the run's own).
 
     python benchmarks/agent.py
 """
 import json
 import os
-import socket
 import statistics
 import subprocess
 import sys
@@ -30,7 +30,11 @@ from _agent_ros2 import ros2_figures
 from _paths import REPO  # its set-up: Rockly and the tests' helpers importable
 from _stop_on_the_wire import DRIVE_AND_WAIT, stop_latencies
 from _twist_echo import TwistEcho
+from agent_tools import pair_with_agent
 from ros_helpers import RosMaster, ros_environment
+
+from rockly_desktop.runtime.agent.protocol import DEFAULT_NAMESPACE
+from rockly_desktop.runtime.agent.robot_keys import ros_address
 
 STOP_TRIALS = 10
 ATTACH_TRIALS = 20
@@ -70,13 +74,16 @@ def agent_process(master, home, library):
                                 master.uri, "--host", "127.0.0.1", "--port", "0", "--library", str(library)],
                                cwd=REPO, env=ros_environment(master.uri, home), stdout=subprocess.PIPE, text=True)
     ready = process.stdout.readline()
-    return process, int(ready.split("127.0.0.1:")[1].split(",")[0])
+    port = int(ready.split("127.0.0.1:")[1].split(",")[0])
+    pair_with_agent(port, library, [ros_address("ros1", master.uri, DEFAULT_NAMESPACE)], name="benchmark")
+    return process, port
 
 
 def main():
     from rockly_desktop.profiles.registry import ProfileRegistry
 
     home = Path(tempfile.mkdtemp(prefix="rockly-bench-agent-"))
+    os.environ["XDG_CONFIG_HOME"] = str(home / "config")  # the pairings' keys: not the user's
     master = RosMaster(home).start()
     os.environ.update(ros_environment(master.uri, home))
     echo = TwistEcho("/usr/bin/python3", ECHO_NODE, ros_environment(master.uri, home))
@@ -93,7 +100,7 @@ def main():
     report("STOP -> zero Twist on the wire, program under the agent", agent_stops, local,
            "the same run on the laptop", "50 ms")
     report("attach to a running program (connect, hello, attach)", attaches, bare,
-           "a bare TCP request to the agent", "1000 ms")
+           "a bare TLS request to the agent", "1000 ms")
     report("over ROS 1: STOP -> zero Twist on the wire, program under the agent", ros_stops, agent_stops,
            "the same over TCP", "50 ms")
     report("over ROS 1: attach to a running program (connect, hello, attach)", ros_attaches, attaches,
@@ -148,9 +155,12 @@ def stop_times(client, events, echo):
 
 
 def bare_request(port):
-    with socket.create_connection(("127.0.0.1", port)) as raw:
-        raw.sendall(json.dumps({"op": "list", "id": 1}).encode() + b"\n")
-        raw.makefile("rb").readline()
+    from agent_wire import tls_connection
+
+    connection, _ = tls_connection(port)
+    with connection:
+        connection.sendall(json.dumps({"op": "list", "id": 1}).encode() + b"\n")
+        connection.makefile("rb").readline()
 
 
 def attach_times(client, new_client, baseline):

@@ -9,7 +9,7 @@
     python benchmarks/agent_under_attack.py
 """
 import json
-import socket
+import os
 import statistics
 import sys
 import tempfile
@@ -19,25 +19,23 @@ from pathlib import Path
 
 from _paths import REPO  # noqa: F401  (its set-up: Rockly and the tests' helpers importable)
 from agent_tools import AgentProcess
+from agent_wire import hello, tls_connection
 
 from rockly_desktop.runtime.agent.tcp_transport import MAX_CONNECTIONS_PER_ADDRESS
 
 STOPS = 40
-HELLO = {"op": "hello", "id": 0, "format": 1, "language": "en", "client": "bench"}
 
 
 class Line:
-    """A raw connection to the agent that reads answers and alive beats on a thread of its own."""
+    """A raw TLS connection to the agent that reads answers and alive beats on a thread of its own; it says hello
+    as the paired laptop (a paired client turned hostile: the bounds hold for it too)."""
 
-    def __init__(self, port, source="127.0.0.1", hello=True):
-        self.socket = socket.socket()
-        self.socket.bind((source, 0))
-        self.socket.connect(("127.0.0.1", port))
+    def __init__(self, agent, source="127.0.0.1"):
+        self.socket, nonce = tls_connection(agent.port, source)
         self.answers, self.beats = {}, []
         self._arrived = threading.Condition()
         threading.Thread(target=self._read, daemon=True).start()
-        if hello:
-            self.ask(HELLO)
+        self.ask(hello(nonce, agent.key))
 
     def _read(self):
         buffer = b""
@@ -71,9 +69,9 @@ class Line:
         self.socket.close()
 
 
-def measure(port):
+def measure(agent):
     """``(STOP answer seconds, alive beat gaps)`` on a fresh connection."""
-    line = Line(port)
+    line = Line(agent)
     first_id = 1000
     times = []
     for number in range(STOPS):
@@ -84,8 +82,8 @@ def measure(port):
     return times, [later - earlier for earlier, later in zip(beats, beats[1:], strict=False)]
 
 
-def huge_sends(port, stop):
-    line = Line(port, "127.0.0.3")
+def huge_sends(agent, stop):
+    line = Line(agent, "127.0.0.3")
     text = "a\n" * 2_000_000
     number = 0
     while not stop.is_set():
@@ -94,26 +92,26 @@ def huge_sends(port, stop):
     line.close()
 
 
-def idle_crowd(port, stop):
-    crowd = [Line(port, f"127.0.0.{4 + index // MAX_CONNECTIONS_PER_ADDRESS}")
+def idle_crowd(agent, stop):
+    crowd = [Line(agent, f"127.0.0.{4 + index // MAX_CONNECTIONS_PER_ADDRESS}")
              for index in range(3 * MAX_CONNECTIONS_PER_ADDRESS)]
     stop.wait()
     for line in crowd:
         line.close()
 
 
-def slowloris(port, stop):
-    line = Line(port, "127.0.0.9")
+def slowloris(agent, stop):
+    line = Line(agent, "127.0.0.9")
     while not stop.wait(0.5):
         try:
             line.send(b"{")
         except OSError:
-            line = Line(port, "127.0.0.9")
+            line = Line(agent, "127.0.0.9")
     line.close()
 
 
-def ill_typed_flood(port, stop):
-    line = Line(port, "127.0.0.10")
+def ill_typed_flood(agent, stop):
+    line = Line(agent, "127.0.0.10")
     number = 0
     while not stop.is_set():
         number += 1
@@ -130,17 +128,18 @@ def report(name, stops, gaps, baseline):
 
 def main():
     with tempfile.TemporaryDirectory(prefix="rockly-bench-attack-") as folder:
+        os.environ["XDG_CONFIG_HOME"] = str(Path(folder) / "config")  # the pairing's key: not the user's
         agent = AgentProcess(Path(folder) / "library")
         try:
-            baseline, gaps = measure(agent.port)
+            baseline, gaps = measure(agent)
             report("no attack", baseline, gaps, baseline)
             for name, attack in (("4 MB program texts", huge_sends), ("idle connections", idle_crowd),
                                  ("slowloris", slowloris), ("ill-typed flood", ill_typed_flood)):
                 stop = threading.Event()
-                attacker = threading.Thread(target=attack, args=(agent.port, stop), daemon=True)
+                attacker = threading.Thread(target=attack, args=(agent, stop), daemon=True)
                 attacker.start()
                 time.sleep(1.0)  # the attack under way
-                stops, gaps = measure(agent.port)
+                stops, gaps = measure(agent)
                 stop.set()
                 attacker.join(60)
                 report(name, stops, gaps, baseline)

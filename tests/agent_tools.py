@@ -47,13 +47,7 @@ class AgentProcess:
 
     def pair(self, also_for=(), role: str = None, keys: RobotKeys = None):
         """Pair a laptop (its keys: ``keys``, else the test's) as ``role``; returns its RobotKey."""
-        from rockly_desktop.runtime.agent.client import AgentClient
-
-        client = AgentClient("127.0.0.1", self.port, keys=keys)
-        try:
-            return client.pair(self.new_code(role), "test laptop", also_for)
-        finally:
-            client.close()
+        return pair_with_agent(self.port, self.library, also_for, role, keys)
 
     def _wait_on_ros1(self, master_uri: str):
         """Return once the master lists this agent's node (``rockly_PID_...``) as a subscriber of its requests."""
@@ -87,6 +81,19 @@ class AgentProcess:
                 self.process.wait(10)
         self.process.stdout.close()
         self.process.stderr.close()
+
+
+def pair_with_agent(port: int, library: Path, also_for=(), role: str = None, keys: RobotKeys = None,
+                    name: str = "test laptop"):
+    """Pair a laptop (its keys: ``keys``, else this process's ``RobotKeys()``) with the agent on 127.0.0.1:``port``
+    whose programs are in ``library``, as ``role``, also for the addresses ``also_for``; returns its RobotKey."""
+    from rockly_desktop.runtime.agent.client import AgentClient
+
+    client = AgentClient("127.0.0.1", port, keys=keys)
+    try:
+        return client.pair(Pairings(agent_folder(library)).new_code(role).shown, name, also_for)
+    finally:
+        client.close()
 
 
 def _ros_addresses(options) -> list:

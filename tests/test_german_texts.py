@@ -44,7 +44,7 @@ will with without would yes you your
 """.split())
 GERMAN_TOO = {"die", "hat", "was", "will", "so", "an", "in", "also", "bald", "rate", "man", "war", "fast", "kind",
               "gift", "hell", "rock", "bad", "bitte", "wand", "arm", "hand", "name", "end", "still", "neutral",
-              "ding", "kiosk", "agent", "listen"}
+              "ding", "kiosk", "agent", "listen", "laptop", "laptops", "minute", "codes"}
 
 
 def _german_and_english(catalogue: Catalogue):

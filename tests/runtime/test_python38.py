@@ -6,9 +6,9 @@ its client run there.
 The interpreter: ``ROCKLY_PYTHON38``, else ``python3.8`` on the PATH, else pyenv's; without one the tests skip
 and say so. No network: the runtime's pure-Python dependencies (PyYAML without its C part, mcap and its ROS
 supports) are linked in from this test's Python, and the venv sees Debian's own rospy (pure Python) as a Noetic
-robot's venv made with ``--system-site-packages`` does. numpy, lz4 and zstandard are binary and exist here only for this
-Python, so a program cannot run on 3.8 here (the SDK's simulated world needs numpy when a profile loads): on a
-robot, pip installs their 3.8 builds."""
+robot's venv made with ``--system-site-packages`` does. numpy, lz4, zstandard and cryptography are binary and exist
+here only for this Python, so a program cannot run on 3.8 here (the SDK's simulated world needs numpy when a
+profile loads): on a robot, pip installs their 3.8 builds."""
 import json
 import os
 import shutil
@@ -20,6 +20,9 @@ from agent_tools import installed_agent
 from program_builder import block, number, rockly_document
 from standalone_tools import environment, export_standalone
 from test_runtime_install import build_wheel
+
+from rockly_desktop.runtime.agent.pairings import agent_folder
+from rockly_desktop.runtime.agent.tls import agent_certificate
 
 # binary distributions with no 3.8 build on this machine, and ROS 2's (on a robot: the helper's own Python)
 NOT_HERE = {"numpy", "lz4", "zstandard", "rclpy", "rosidl_parser"}
@@ -110,6 +113,9 @@ def test_the_agent_keeps_a_program_and_its_client_lists_it_on_python_3_8(venv38,
     source.write_text(rockly_document([block("hobbit_move", {"direction": "+"}, {"speed": number(0.5)}, id="ahead")]))
     exported = export_standalone(source, tmp_path / "ahead.py", "--language", "en")
     env = environment(PYTHONPATH="", ROCKLY_DATA_DIR="", PATH=f"{venv38}:/usr/bin:/bin")
+    # cryptography (binary, no 3.8 build here) only makes the agent's TLS certificate on its first start: made
+    # here by this Python, the 3.8 agent serves TLS with its own ssl, and pairs
+    agent_certificate(agent_folder(tmp_path / "library"))
     with installed_agent(venv38, tmp_path / "library", "--backend", "ros1", env=env) as robot:
         assert robot("send", exported) == "'ahead' is on the robot now\n"
         assert robot("list").startswith("ahead  hobbit 1.0.0  came ")

@@ -36,7 +36,7 @@ from pathlib import Path
 from typing import Optional
 
 from rockly_desktop.runtime.agent.private_files import held as lock_held
-from rockly_desktop.runtime.agent.private_files import read_json, write_private_json
+from rockly_desktop.runtime.agent.private_files import private_folder, read_json, write_private_json
 from rockly_desktop.runtime.agent.protocol import AgentRefusal
 
 TEACHER, STUDENT = "teacher", "student"
@@ -141,6 +141,7 @@ class Pairings:
             raise ValueError(role)
         code = PairingCode("".join(secrets.choice(CODE_ALPHABET) for _ in range(CODE_LENGTH)),
                            self._clock() + CODE_SECONDS, role)
+        private_folder(self.folder)
         write_private_json(self.folder / CODES / (secrets.token_hex(8) + ".json"),
                            {"code": code.code, "expires": code.expires, "role": code.role, "made": time.time()})
         return code
@@ -262,7 +263,7 @@ class Pairings:
 
     def _change(self, change):
         """Rewrite pairings.json with ``change(clients)``, holding its lock against another process's change."""
-        with lock_held(self.folder / LOCK):
+        with lock_held(private_folder(self.folder) / LOCK):
             clients = list(_clients_of(read_json(self.folder / PAIRINGS, {})))
             write_private_json(self.folder / PAIRINGS, {"clients": [_stored(client) for client in change(clients)]})
 

@@ -27,6 +27,14 @@ def write_private(path: Path, data: bytes):
         raise
 
 
+def private_folder(folder: Path) -> Path:
+    """``folder``, made (with its parents) when missing; itself readable by its owner only."""
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    os.chmod(str(folder), 0o700)
+    return folder
+
+
 def write_private_json(path: Path, value):
     """``write_private`` of ``value`` as JSON."""
     write_private(path, (json.dumps(value, indent=1, ensure_ascii=False) + "\n").encode("utf-8"))
@@ -49,9 +57,9 @@ def held(lock_path: Path):
 
     lock_path = Path(lock_path)
     lock_path.parent.mkdir(parents=True, exist_ok=True, mode=0o700)
-    with open(str(lock_path), "a") as lock:
-        fcntl.flock(lock.fileno(), fcntl.LOCK_EX)
-        try:
-            yield
-        finally:
-            fcntl.flock(lock.fileno(), fcntl.LOCK_UN)
+    descriptor = os.open(str(lock_path), os.O_RDWR | os.O_CREAT, 0o600)
+    try:
+        fcntl.flock(descriptor, fcntl.LOCK_EX)
+        yield
+    finally:
+        os.close(descriptor)  # and so the lock

@@ -12,6 +12,7 @@ from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.program_menu import MenuChoice
 from rockly_desktop.runtime.agent.protocol import AgentRefusal, refusal_text
+from rockly_desktop.runtime.agent.server import ON_THE_ROBOT
 
 RETRY_SECONDS = 5.0  # after the robot's UI could not be reached
 
@@ -138,11 +139,11 @@ class RobotMenu:
         """Do ``choice``; True when it started or stopped a run (whose start or end is offered anew)."""
         try:
             if choice.action == MenuChoice.START:
-                self.agent.handle(None, {"op": "start", "name": choice.name})
+                self.agent.handle(ON_THE_ROBOT, {"op": "start", "name": choice.name})
                 return True
             run = self.agent.run
             if choice.action == MenuChoice.STOP and run is not None and run.about["name"] == running:
-                return self.agent.handle(None, {"op": "stop"})["stopped"]  # not another started since
+                return self.agent.handle(ON_THE_ROBOT, {"op": "stop"})["stopped"]  # not another started since
         except AgentRefusal as refusal:
             self._problem(refusal_text(refusal, self.menu.language))
         return False

@@ -45,7 +45,7 @@ import threading
 
 from rockly_desktop import __version__
 from rockly_desktop.runtime.agent.library import Library
-from rockly_desktop.runtime.agent.pairings import CODE_SECONDS, ROLES, TEACHER, Pairings, hello_data
+from rockly_desktop.runtime.agent.pairings import CODE_SECONDS, ROLES, TEACHER, PairedClient, Pairings, hello_data
 from rockly_desktop.runtime.agent.protocol import ALIVE, ALIVE_SECONDS, FORMAT, AgentRefusal, refusal_text
 from rockly_desktop.runtime.agent.running import ProgramRun
 from rockly_desktop.runtime.robot_limits import (
@@ -56,6 +56,18 @@ from rockly_desktop.runtime.robot_limits import (
     write_robot_limits,
 )
 
+
+class _OnTheRobot:
+    """Whoever uses the robot's own UI (``robot_menu``): a person at the robot, who may start and stop any program
+    as a teacher may (the robot's owner put that UI there); never a network client."""
+
+    paired = PairedClient("on-the-robot", "the robot's own UI", TEACHER, b"", "")
+    name = "the robot's own UI"
+    language = "en"
+    attached = wants_control = False
+
+
+ON_THE_ROBOT = _OnTheRobot()
 OPEN_BEFORE_PAIRING = ("hello", "pair")
 TEACHER_ONLY = ("pairing_code", "robot_limits")  # pairing others, changing the robot's limits
 
@@ -259,7 +271,7 @@ class Agent:
 
     def _still_paired(self, client):
         """``client``'s pairing, None when it has none or it was revoked since (``rockly agent revoke``)."""
-        if client.paired is not None:
+        if client.paired is not None and client is not ON_THE_ROBOT:
             client.paired = self.pairings.find(client.paired.id)
         return client.paired
 

@@ -12,7 +12,7 @@ import ssl
 from datetime import datetime, timedelta, timezone
 from pathlib import Path
 
-from rockly_desktop.runtime.agent.private_files import held, write_private
+from rockly_desktop.runtime.agent.private_files import held, private_folder, write_private
 
 CERTIFICATE, PRIVATE_KEY, LOCK = "tls-certificate.pem", "tls-key.pem", "tls.lock"
 VALID_DAYS = 20 * 365  # a robot's certificate outlives the robot: pinned, it needs no renewal
@@ -22,7 +22,7 @@ TLS_HANDSHAKE = 0x16  # the first byte a TLS client sends; a plain JSON line sta
 def agent_certificate(folder: Path) -> tuple:
     """``(certificate path, key path)`` of the agent's own, made on the first call (by the agent or by
     ``rockly agent pair``, whichever comes first: the two never both make one)."""
-    folder = Path(folder)
+    folder = private_folder(folder)
     certificate, key = folder / CERTIFICATE, folder / PRIVATE_KEY
     with held(folder / LOCK):
         if not (certificate.exists() and key.exists()):

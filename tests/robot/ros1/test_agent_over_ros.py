@@ -24,7 +24,8 @@ from ros_helpers import ros_environment
 from standalone_tools import export_standalone
 from waiting import eventually
 
-from rockly_desktop.runtime.agent.protocol import AGENT_SILENT_SECONDS
+from rockly_desktop.runtime.agent.protocol import AGENT_SILENT_SECONDS, DEFAULT_NAMESPACE
+from rockly_desktop.runtime.agent.robot_keys import RobotKey, RobotKeys, ros_address
 
 NO_TCP = ("--port", "1")  # nothing listens there: a call that works went over ROS
 
@@ -214,3 +215,25 @@ def test_an_editor_gone_silent_over_ros_leaves_control_to_the_next(robot, agent)
         watcher.wait_for(ended)
     finally:
         watcher.end()
+
+
+def test_over_ros_an_unpaired_or_forged_client_is_refused(robot, agent, tmp_path):
+    """A node on the master that is not paired (no key, or a key the agent never gave) sends ``list`` and
+    ``send``: each is refused, and nothing is kept."""
+    master, programs, _ = robot
+    stranger_config = tmp_path / "stranger-config"
+    env = dict(ros_environment(master.uri, master.home), XDG_CONFIG_HOME=str(stranger_config))
+
+    def as_stranger(*args):
+        return subprocess.run(robot_command(master, *args), capture_output=True, text=True, timeout=120, cwd=REPO,
+                              env=env)
+    for args in (("list",), ("send", programs["far"], "--name", "innocent")):
+        refused = as_stranger(*args)
+        assert refused.returncode == 1 and "is not paired with the robot's agent" in refused.stderr, refused.stderr
+    RobotKeys(stranger_config / "rockly" / "robot-keys.json").save(RobotKey(
+        ros_address("ros1", master.uri, DEFAULT_NAMESPACE), agent.key.agent, agent.key.client, b"x" * 32, "teacher",
+        ""))  # the teacher's id, a key of its own making
+    forged = as_stranger("send", programs["far"], "--name", "innocent")
+    assert forged.returncode == 1 and "is not paired with the robot's agent" in forged.stderr, forged.stderr
+    listed = run_robot(master, "list")
+    assert listed.returncode == 0 and "innocent" not in listed.stdout and "no programs" in listed.stdout, listed.stderr
