@@ -110,6 +110,7 @@ def test_a_teacher_sets_the_robots_limits_in_the_teacher_tab_and_a_run_on_the_ro
     arm = box.capability_boxes["arm"]
     QTest.mouseClick(arm, Qt.MouseButton.LeftButton, pos=QPoint(arm.height() // 2, arm.height() // 2))  # its tick
     assert not arm.isChecked()   # the arm switched off
+    assert box.status.text() == "Changed here, not yet on the robot: click Set on the robot."
     dialog.grab().save(os.path.join(SHOTS, "teacher_tab_robot_limits_en.png"))
     QTest.mouseClick(box.keep_button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: box.status.text() == "The robot keeps these limits now; its next run holds to them.",

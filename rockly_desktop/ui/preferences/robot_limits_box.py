@@ -55,6 +55,11 @@ class RobotLimitsBox(QGroupBox):
             self.capability_boxes[capability["id"]] = box
             form.addRow(tr("teacher_allowed", language) if len(self.capability_boxes) == 1 else "", box)
         self.values.hide()
+        self._showing = False  # while the robot's answer is put into the boxes (no edit of the teacher's)
+        self.max_speed.valueChanged.connect(self._edited)
+        self.max_turn.valueChanged.connect(self._edited)
+        for box in self.capability_boxes.values():
+            box.toggled.connect(self._edited)
         self.read_button = QPushButton(tr("teacher_robot_limits_read", language), self, objectName="robot_limits_read")
         self.keep_button = QPushButton(tr("teacher_robot_limits_keep", language), self, objectName="robot_limits_keep")
         for button in (self.read_button, self.keep_button):
@@ -112,15 +117,22 @@ class RobotLimitsBox(QGroupBox):
         if limits is None:
             self._say(problem or "")
             return
+        self._showing = True
         self.max_speed.setValue(limits.get("max_speed") or 0.0)
         self.max_turn.setValue(round(limits.get("max_turn") or 0))
         off = limits.get("switched_off") or []
         for capability, box in self.capability_boxes.items():
             box.setChecked(capability not in off)
+        self._showing = False
         self._other_switched_off = [capability for capability in off if capability not in self.capability_boxes]
         self._set_enabled(True)
         self.values.show()
         self._say(tr(said, self._language))
+
+    def _edited(self):
+        """The teacher changed a value: the robot does not keep it yet."""
+        if not self._showing:
+            self._say(tr("teacher_robot_limits_not_kept", self._language))
 
     def _say(self, text: str):
         """``text`` in the status line, whole: the Preferences dialog takes its size from its contents' hints,
