@@ -6,6 +6,7 @@ laptop pairs with."""
 import dataclasses
 import os
 import re
+import socket
 import stat
 import subprocess
 import sys
@@ -14,7 +15,7 @@ import pytest
 from agent_tools import REPO, AgentProcess
 from page_tools import call_page
 from program_builder import workspace
-from PySide6.QtCore import Qt
+from PySide6.QtCore import Qt, QTimer
 from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QInputDialog, QLineEdit
 from screenshots import screenshot
@@ -211,3 +212,29 @@ def test_a_certificate_other_than_the_one_paired_with_is_said_and_forget_lets_th
     type_code_and_pair(qtbot, dialog, code_from_the_robot(agent.library))
     qtbot.waitUntil(lambda: dialog.pairing.about.isVisible(), timeout=20000)
     assert RobotKeys().get(tcp_address("127.0.0.1", agent.port)).fingerprint == key.fingerprint
+
+
+def test_pairing_with_an_agent_that_never_answers_leaves_the_window_responsive(qtbot, window, agent,
+                                                                               programs_dialog):
+    dialog = programs_dialog(agent.port)
+    qtbot.waitUntil(lambda: asked_to_pair(dialog), timeout=20000)
+    silent = socket.socket()   # takes the connection and never answers: the pairing waits for the agent
+    silent.bind(("127.0.0.1", 0))
+    silent.listen(0)
+    dialog.port.setValue(silent.getsockname()[1])
+    ticks = []
+    timer = QTimer()
+    timer.timeout.connect(lambda: ticks.append(1))
+    timer.start(10)
+    try:
+        type_code_and_pair(qtbot, dialog, "K7Q-M2X")
+        assert dialog.pairing.problem.text() == "Asking the robot…" and not dialog.pairing.pair_button.isEnabled()
+        qtbot.waitUntil(lambda: len(ticks) >= 20, timeout=3000)   # the window's event loop goes on meanwhile
+        assert dialog.pairing.calls.busy and dialog.pairing.code.text() == "K7Q-M2X"
+    finally:
+        timer.stop()
+        silent.close()   # the waiting connection is reset: the pairing ends
+    qtbot.waitUntil(lambda: not dialog.pairing.calls.busy, timeout=30000)
+    assert dialog.pairing.problem.text() not in ("", "Asking the robot…")   # why it did not pair, said
+    assert dialog.pairing.code.text() == "K7Q-M2X" and dialog.pairing.pair_button.isEnabled()
+    assert RobotKeys().all() == []
