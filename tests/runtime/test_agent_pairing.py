@@ -270,3 +270,7 @@ def test_pairings_in_memory_expire_on_their_clock_and_the_guesses_cap_opens_afte
     assert capped.value.key == "agent_pair_too_many_guesses"
     now[0] += 61
     assert pairings.pair(fresh.code, "teacher").role == "teacher"
+    kiosk = pairings.new_code("teacher")
+    assert pairings.pair(kiosk.code, "kiosk", role="student").role == "student"  # less than the code gives
+    pupil = pairings.new_code("student")
+    assert pairings.pair(pupil.code, "pupil", role="teacher").role == "student"  # never more

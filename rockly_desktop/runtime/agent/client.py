@@ -134,9 +134,9 @@ class AgentClient:
 
     def pair(self, code: str, name: str = None, also_for=(), role: str = None) -> RobotKey:
         """Pair this laptop with the agent with the one-time ``code`` the robot showed, as ``name`` (``user@host``
-        when None); keeps the key (for this address, and for the addresses ``also_for``: the same agent over ROS)
-        and returns it. ``role`` "student": as a student whatever the code gives (a kiosk). AgentError when the
-        agent refuses the code."""
+        when None) and in the code's role (``role="student"``: as a student whatever the code gives, a kiosk);
+        keeps the key (for this address, and for the addresses ``also_for``: the same agent over ROS) and returns
+        it. AgentError when the agent refuses the code."""
         answer = self.request("pair", code=code, name=name or _who(), **({"role": role} if role else {}))
         key = RobotKey(self.address, str(answer["agent"]), str(answer["client"]), base64.b64decode(answer["key"]),
                        str(answer["role"]), getattr(self._line, "fingerprint", "") or "")

@@ -147,9 +147,9 @@ class Pairings:
         return code
 
     def pair(self, code, name, role: str = None) -> PairedClient:
-        """Pair a laptop called ``name`` with ``code`` (as typed); AgentRefusal when the code is not one the agent
-        gave, was used, has expired, or guessing has gone on too long. ``role`` STUDENT: the laptop pairs as a
-        student whatever the code says (a kiosk: a laptop may ask for less than the code gives, never more)."""
+        """Pair a laptop called ``name`` with ``code`` (as typed), in the code's role, or as a student when it asks
+        for that (``role``: a kiosk asks for less than a teacher's code gives, never more); AgentRefusal when the
+        code is not one the agent gave, was used, has expired, or guessing has gone on too long."""
         typed = typed_code(code) if isinstance(code, str) else ""
         with self._lock:
             self._take_new_codes()
@@ -169,8 +169,8 @@ class Pairings:
             if now > held.code.expires:
                 raise AgentRefusal("agent_pair_code_expired")
             held.state = "used"
-            client = PairedClient(secrets.token_hex(8), _plain_name(name),
-                                  STUDENT if role == STUDENT else held.code.role, secrets.token_bytes(32),
+            granted = STUDENT if role == STUDENT else held.code.role
+            client = PairedClient(secrets.token_hex(8), _plain_name(name), granted, secrets.token_bytes(32),
                                   datetime.now(timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ"))
             self._change(lambda clients: clients + [client])
             return client

@@ -6,9 +6,9 @@ Requests (each answered; refusals say why in the client's language):
     hello    {"rockly", "format", "language", "client", "client_id"?, "proof"?}
                                                                   -> {"agent", "format", "backend", "profiles",
                                                                      "alive_seconds", "paired", "name"}
-    pair     {"code", "name", "role"?}                             -> {"client", "key", "role", "agent"}  (role
-                                                                     "student": less than the code gives)
-    pairing_code {"role"?}  (a teacher)                           -> {"code", "seconds"}
+    pair     {"code", "name", "role"?}                            -> {"client", "key", "role", "agent"}
+                                                                     ("role": "student" asks for less than the code)
+    pairing_code {"role"?}  (a teacher)                           -> {"code", "seconds", "role"}
     list                                                          -> {"programs": [about...], "run": snapshot|null}
     send     {"name", "standalone", "source"?, "on_lost_editor"?, "decide_seconds"?} -> {"program": about}
     source   {"name"}                                             -> {"source": .rockly text|null}
@@ -84,6 +84,7 @@ class Agent:
         self.name = socket.gethostname()  # what a laptop calls this agent
         self.run = None
         self.started_by = None  # the id of the client that started the run
+        self._pairings_version = None  # of the paired clients, when revoked ones were last looked for
         self.controller = None
         self.breakpoints = []  # the controlling client's: a run started while it is attached pauses there too
         self.clients = []
@@ -124,11 +125,8 @@ class Agent:
 
     def _op_pair(self, client, request):
         name = request.get("name")
-        role = request.get("role")  # "student": a laptop may ask for less than its code gives (a kiosk)
-        if role is not None and role not in ROLES:
-            raise AgentRefusal("agent_bad_request")
         paired = self.pairings.pair(request.get("code"), name if isinstance(name, str) and name else client.name,
-                                    role)
+                                    request.get("role"))
         client.paired = paired
         return {"client": paired.id, "key": base64.b64encode(paired.key).decode("ascii"), "role": paired.role,
                 "agent": self.name}
@@ -298,7 +296,7 @@ class Agent:
     def check_pairings(self):
         """Close the connections of clients revoked since the last look (call it now and then: the alive beat)."""
         version = self.pairings.version()
-        if version == getattr(self, "_pairings_version", None):
+        if version == self._pairings_version:
             return
         self._pairings_version = version
         for client in list(self.clients):
