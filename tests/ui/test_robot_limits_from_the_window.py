@@ -1,7 +1,8 @@
 """The robot's own limits set from the window (issue 30): a laptop paired as a teacher reads them in Preferences →
 Teacher, types new ones and sets them on the robot; the robot's agent (its own process, on a ROS 1 master with the
 simulated HOBBIT) then holds a stranger's program (``limits: {}``, 3 m/s in its code) to them, as an independent
-rospy node sees on /cmd_vel. A laptop paired as a student is refused and changes nothing."""
+rospy node sees on /cmd_vel. A laptop paired as a student is refused and changes nothing. Preferences is the
+window's own (Edit → Preferences), the PIN typed."""
 import json
 import os
 import re
@@ -17,8 +18,6 @@ from test_robot_pairing import SHOTS, code_from_the_robot
 from waiting import eventually
 
 from rockly_desktop.runtime.agent.client import AgentClient
-from rockly_desktop.ui.agent.agent_bar import AgentWay
-from rockly_desktop.ui.agent.robot_limits_calls import RobotLimitsOnRobot
 from rockly_desktop.ui.preferences.preferences import PreferencesDialog
 
 FAST = ("ros.publish_message('/cmd_vel', 'geometry_msgs/Twist', {'linear': {'x': 3.0}, 'angular': {'z': 2.0}})\n"
@@ -60,25 +59,30 @@ def paired(agent, *options):
 
 
 @pytest.fixture
-def teacher_tab(qtbot, window):
-    """Opens Preferences on its Teacher tab (the PIN given) for the agent at a port, as a person clicks there."""
-    made = []
+def teacher_tab(qtbot, window, monkeypatch):
+    """Opens the window's Preferences (Edit → Preferences, shown without waiting in it) on its Teacher tab for the
+    agent at a port (the address the Programs dialog last reached), and unlocks it with a new PIN typed twice."""
+    opened = []
+    monkeypatch.setattr(PreferencesDialog, "exec", lambda dialog: opened.append(dialog) or dialog.show() or 0)
 
     def open_tab(port, language="en"):
-        dialog = PreferencesDialog(language, window, window.profile, window.settings.teacher, pin_given=True,
-                                   robot_limits=lambda owner: RobotLimitsOnRobot(owner, AgentWay("127.0.0.1", port),
-                                                                                 language))
-        qtbot.addWidget(dialog)
-        made.append(dialog)
-        dialog.show()
+        window.settings.agent_address = f"127.0.0.1:{port}"
+        window.set_language(language)
+        qtbot.waitUntil(lambda: window.language == language, timeout=15000)
+        window.show_preferences()
+        dialog = opened[-1]
         tabs = dialog.tabs
         QTest.mouseClick(tabs.tabBar(), Qt.MouseButton.LeftButton,
                          pos=tabs.tabBar().tabRect(tabs.indexOf(dialog.teacher_tab)).center())
         assert tabs.currentWidget() is dialog.teacher_tab
+        QTest.keyClicks(dialog.teacher_tab.pin, "4711")
+        QTest.keyClicks(dialog.teacher_tab.pin_again, "4711")
+        QTest.mouseClick(dialog.teacher_tab.unlock_button, Qt.MouseButton.LeftButton)
+        assert dialog.teacher_tab.unlocked
         return dialog, dialog.teacher_tab.robot_limits_box
 
     yield open_tab
-    for dialog in made:
+    for dialog in opened:
         dialog.reject()
         dialog.teacher_tab.robot_limits_box._robot.calls.wait(30)
 
