@@ -63,6 +63,12 @@ def read_robot_limits(path=None) -> Limits:
         data = json.loads(text)
     except ValueError as error:
         raise RobotLimitsError(path, str(error)) from None
+    return robot_limits_from_data(data, path)
+
+
+def robot_limits_from_data(data, path) -> Limits:
+    """The ``Limits`` a limits file's ``data`` (or the agent's ``robot_limits`` request) holds; RobotLimitsError
+    (naming ``path``: where the data came from) when it holds anything else."""
     if not isinstance(data, dict) or set(data) - {"max_speed", "max_turn", "switched_off"}:
         raise RobotLimitsError(path, "it must hold max_speed, max_turn and switched_off only")
     off = data.get("switched_off", [])
@@ -72,11 +78,16 @@ def read_robot_limits(path=None) -> Limits:
                   frozenset(off))
 
 
+def robot_limits_data(limits: Limits) -> dict:
+    """``limits`` as the file (and the agent's ``robot_limits`` answer) holds them."""
+    return {"max_speed": limits.max_speed, "max_turn": limits.max_turn, "switched_off": sorted(limits.switched_off)}
+
+
 def write_robot_limits(limits: Limits, path=None) -> Path:
     """Keep ``limits`` as the robot's (all or nothing); returns the file's path."""
     path = Path(path) if path is not None else default_path()
     path.parent.mkdir(parents=True, exist_ok=True)
-    data = {"max_speed": limits.max_speed, "max_turn": limits.max_turn, "switched_off": sorted(limits.switched_off)}
+    data = robot_limits_data(limits)
     with tempfile.NamedTemporaryFile("w", encoding="utf-8", dir=path.parent, prefix=".robot-limits-",
                                      delete=False) as stream:
         stream.write(json.dumps(data, indent=1) + "\n")

@@ -500,7 +500,7 @@ class MainWindow(QMainWindow):
         dialog = PreferencesDialog(self.language, self, self.profile, self.settings.teacher,
                                    reset_before_run=self.settings.reset_before_run, kiosk=self.settings.kiosk,
                                    kiosk_mode=self.settings.kiosk_mode, block_look=self.settings.block_look,
-                                   pin_given=self.gate_asks_pin, challenges=[
+                                   pin_given=self.gate_asks_pin, robot_limits=self._robot_limits_way(), challenges=[
                                        (lesson.id, lesson.title(self.language))
                                        for lesson in self.lessons.library.for_robot(self.profile.id)])
         if dialog.exec():
@@ -514,6 +514,15 @@ class MainWindow(QMainWindow):
             self._follow_robot_lock()
             self.set_language(dialog.language)
 
+    def _robot_limits_way(self):
+        """How the Teacher tab asks the chosen robot's agent for the robot's own limits (None: no agent known)."""
+        way = self._agent_way()
+        if way is None:
+            return None
+        from rockly_desktop.ui.agent.robot_limits_calls import RobotLimitsOnRobot  # not needed to start
+
+        return lambda owner: RobotLimitsOnRobot(owner, way, self.language)
+
     def show_robot_programs(self):
         """Robot → Programs on the robot…: the agent's programs, sending, starting and attaching."""
         # imported when first asked for: it brings the runtime's export (60 ms), which start-up does not need
@@ -525,7 +534,8 @@ class MainWindow(QMainWindow):
                             open_copy=lambda path, name: self.files.open_copy(path, name), document=self.document,
                             limits=lambda: self.settings.teacher.limits(self.profile.id),
                             reached=self._remember_agent,
-                            via="auto" if on_ros else "tcp", graph_kind=self.robots.kind if on_ros else None).show()
+                            via="auto" if on_ros else "tcp", graph_kind=self.robots.kind if on_ros else None,
+                            pair_as_student=self.settings.kiosk_mode).show()  # a kiosk laptop is a student
 
     def make_block(self, chosen: str = "", kind: str = ""):
         """Open the block maker (Tools → Make a block…), with the topic, service or action ``chosen`` (of

@@ -228,6 +228,12 @@ class AgentClient:
         """Pause the run before these blocks from now on (the controlling client only)."""
         self.request("breakpoints", blocks=list(block_ids))
 
+    def robot_limits(self, wanted: dict = None) -> dict:
+        """The robot's own limits (``{"max_speed", "max_turn", "switched_off"}``, as ``runtime.robot_limits``
+        keeps them), after keeping ``wanted`` as them when given (a paired teacher only)."""
+        fields = {} if wanted is None else {"set": wanted}
+        return self.request("robot_limits", **fields)["limits"]
+
     def close(self):
         """Close the connection (an attached client detaches)."""
         self._closed.set()

@@ -263,6 +263,7 @@ def serve(args, language: str) -> int:
         return 1
     agent = Agent(Library(folder, ProfileRegistry.discover().profiles, args.library_quota * 2**20), args.backend,
                   options, Pairings(agent_folder(folder)))
+    agent.robot_limits_path = args.robot_limits or default_limits_path()  # a paired teacher may set them
     agent.source_checks = SourceChecks(agent.library, agent.changed, enabled=not args.no_source_check)
     close_offer = _offer_on_robot_ui(agent, args, language)
     if close_offer is False:

@@ -24,6 +24,9 @@ Requests (each answered; refusals say why in the client's language):
                                                                      and one it starts, pause before these blocks)
     heartbeat                                                     (no answer without an "id"); the controlling
                                                                      client's say the editor is there
+    robot_limits {"set"?: {"max_speed", "max_turn", "switched_off"}}  -> {"limits": {...}} (a paired teacher only:
+                                                                     the robot's own limits, ``runtime.robot_limits``;
+                                                                     with ``set`` they are kept first)
 
 Before a client is paired (``client.paired``: a ``PairedClient``, set by its transport: over TCP by a ``hello``
 that proves the key, ``pairings.hello_data``; over ROS by the key each line seals with) only ``hello`` and ``pair`` are
@@ -45,6 +48,13 @@ from rockly_desktop.runtime.agent.library import Library
 from rockly_desktop.runtime.agent.pairings import CODE_SECONDS, ROLES, TEACHER, PairedClient, Pairings, hello_data
 from rockly_desktop.runtime.agent.protocol import ALIVE, ALIVE_SECONDS, FORMAT, AgentRefusal, refusal_text
 from rockly_desktop.runtime.agent.running import ProgramRun
+from rockly_desktop.runtime.robot_limits import (
+    RobotLimitsError,
+    read_robot_limits,
+    robot_limits_data,
+    robot_limits_from_data,
+    write_robot_limits,
+)
 
 
 class _OnTheRobot:
@@ -79,6 +89,7 @@ class Agent:
         self.breakpoints = []  # the controlling client's: a run started while it is attached pauses there too
         self.clients = []
         self.listeners = []  # called (no arguments) when the library changes or a run starts or ends
+        self.robot_limits_path = None  # the robot's own limits file (None: ``robot_limits.default_path()``)
         self.source_checks = None  # agent.source_match's SourceChecks: whether a kept program's code is its blocks'
         self._lock = threading.RLock()
 
@@ -238,6 +249,21 @@ class Agent:
         if client is self.controller and run is not None:  # the editor is the controlling client; watchers are not
             run.heartbeat()
         return {}
+
+    def _op_robot_limits(self, client, request):
+        wanted = request.get("set")
+        try:
+            if wanted is not None:
+                try:
+                    limits = robot_limits_from_data(wanted, "set")
+                except RobotLimitsError:
+                    raise AgentRefusal("agent_bad_request") from None
+                write_robot_limits(limits, self.robot_limits_path)
+            return {"limits": robot_limits_data(read_robot_limits(self.robot_limits_path))}
+        except RobotLimitsError as error:  # the file on the robot is broken: said as the robot says it
+            raise AgentRefusal(error.text.key, **error.text.values) from None
+        except OSError as error:
+            raise AgentRefusal("agent_limits_cannot_write", reason=error.strerror or str(error)) from None
 
     # -- who may do what
 

@@ -1,7 +1,10 @@
 """Robot → "Programs on the robot…": the agent's address, the programs it keeps and what it runs now, with
 Send (the open program, exported standalone as ``rockly export --standalone`` does), Start, Stop and Attach
 (``AttachedRun``); once attached, whether the robot's program is the one open here; and, at a click, how to put
-the agent on a robot. While it is open the agent is asked again each second, so what it says stays true."""
+the agent on a robot; for the program chosen, whether its code is what its blocks make (the agent checks it).
+While it is open the agent is asked again each second, so what it says stays true. A robot
+this laptop is not paired with (or no longer: a revoked key, another certificate) is paired there
+(``PairingPanel``)."""
 import tempfile
 from pathlib import Path
 
@@ -19,16 +22,20 @@ from PySide6.QtWidgets import (
     QListWidgetItem,
     QPushButton,
     QSpinBox,
+    QStyle,
     QVBoxLayout,
 )
 
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.program import Program, write_text_atomically
 from rockly_desktop.core.workspace_blocks import block_types_by_id
-from rockly_desktop.runtime.agent.client import AgentClient
-from rockly_desktop.runtime.agent.protocol import DEFAULT_PORT
+from rockly_desktop.runtime.agent.client import AgentClient, AgentError, chosen_via
+from rockly_desktop.runtime.agent.commands import code_state_text
+from rockly_desktop.runtime.agent.protocol import DEFAULT_NAMESPACE, DEFAULT_PORT
+from rockly_desktop.runtime.agent.robot_keys import RobotKeys, ros_address, tcp_address
 from rockly_desktop.runtime.standalone_file import standalone_text
 from rockly_desktop.ui.agent.agent_calls import AgentCalls
+from rockly_desktop.ui.agent.pairing_panel import PAIRING_NEEDED, PairingPanel
 from rockly_desktop.ui.agent.program_difference import same_program
 from rockly_desktop.ui.texts import tr
 
@@ -44,11 +51,12 @@ class RobotProgramsDialog(QDialog):
     off the window's thread (``calls``): while an answer is on its way, ``status`` says so and the buttons that
     would ask again wait; answers that come after the dialog was closed are dropped. ``via`` is how the agent
     is reached (``AgentClient``'s: ``auto`` for a ROS robot: over ROS when its agent is in the graph of
-    ``graph_kind``, the chosen robot's link kind)."""
+    ``graph_kind``, the chosen robot's link kind). ``pair_as_student``: this laptop pairs as a student whatever
+    the code says (a kiosk)."""
 
     def __init__(self, attached, language: str, parent=None, host: str = "localhost", port: int = DEFAULT_PORT,
                  open_copy=None, document=None, limits=None, reached=None, via: str = "tcp",
-                 graph_kind: str = None):
+                 graph_kind: str = None, pair_as_student: bool = False):
         super().__init__(parent)
         self.via, self.graph_kind = via, graph_kind
         self.attached, self.language, self._open_copy = attached, language, open_copy
@@ -77,7 +85,21 @@ class RobotProgramsDialog(QDialog):
             note = QLabel(tr("robot_programs_via_ros", language))
             note.setWordWrap(True)
             form.addRow(note)
+        self.pairing = PairingPanel(language, self._pairing_way, self, student_only=pair_as_student,
+                                    paired=self.refresh)
+        self.pairing.hide()  # until the agent says whether this laptop is paired
+        self.pairing.sig_changed.connect(self._follow_pairing_panel)
         self.programs = QListWidget()
+        self._abouts = {}  # name -> what the agent says of each program it keeps
+        self.code_state = QLabel(objectName="robot_code_state", wordWrap=True)  # the chosen program's code
+        self.code_state.setTextFormat(Qt.TextFormat.PlainText)
+        self.code_warning = QLabel(objectName="robot_code_warning")
+        self._warning_icon = self.style().standardIcon(QStyle.StandardPixmap.SP_MessageBoxWarning)
+        self.code_warning.setPixmap(self._warning_icon.pixmap(24))
+        self.code_warning.hide()
+        code = QHBoxLayout()
+        code.addWidget(self.code_warning, 0, Qt.AlignmentFlag.AlignTop)
+        code.addWidget(self.code_state, 1)
         self.running = QLabel()
         self.status = QLabel()
         self.status.setWordWrap(True)
@@ -109,7 +131,9 @@ class RobotProgramsDialog(QDialog):
         self.help_button.toggled.connect(self._show_help)
         layout = QVBoxLayout(self)
         layout.addLayout(form)
+        layout.addWidget(self.pairing)
         layout.addWidget(self.programs, 1)
+        layout.addLayout(code)
         layout.addWidget(self.keep_going)
         layout.addWidget(self.running)
         layout.addWidget(self.status)
@@ -125,6 +149,7 @@ class RobotProgramsDialog(QDialog):
         attached.sig_state_changed.connect(self._follow_attachment)
         self.finished.connect(self._forget_calls)
         self.programs.itemSelectionChanged.connect(self._enable_start)
+        self.programs.itemSelectionChanged.connect(self._show_code_state)
         self._enable_start()
         self._poll_timer = QTimer(self)
         self._poll_timer.setInterval(POLL_MS)
@@ -138,11 +163,15 @@ class RobotProgramsDialog(QDialog):
         self._poll_timer.start()
 
     def _show_help(self, shown: bool):
-        """Show or hide the steps; the dialog grows to show them whole (a wrapped text's height is not in its
-        layout's minimum), as far as its screen allows, moved up to stay on it."""
+        """Show or hide the steps; the dialog grows to show them whole."""
         self.help.setVisible(shown)
-        if not shown:
-            return
+        if shown:
+            self._fit_height()
+
+    def _fit_height(self):
+        """Grow to show every wrapped text whole (a wrapped text's height is not in its layout's minimum), as far
+        as the screen allows, moved up to stay on it."""
+        self.layout().activate()
         area, frame = self.screen().availableGeometry(), self.frameGeometry()
         extra = frame.height() - self.height()  # the window's title bar and borders
         height = min(max(self.height(), self.layout().totalHeightForWidth(self.width())), area.height() - extra)
@@ -156,20 +185,13 @@ class RobotProgramsDialog(QDialog):
         """Ask the agent quietly for its programs and what runs (not while another question is on its way)."""
         if self._enabled_before is not None or self.calls.busy:
             return
-        host, port, language = self.host.text().strip(), self.port.value(), self.language
-
-        def work():
-            client = AgentClient(host, port, language, name="rockly window", via=self.via, graph_kind=self.graph_kind)
-            try:
-                return client.programs()
-            finally:
-                client.close()
+        work = self._on_a_client(lambda client: client.programs())
 
         def answered(answer, error):
             if self._enabled_before is None:  # a question asked meanwhile answers for itself
-                self._show_programs(answer, "")
+                self._show_programs(self._follow_pairing(answer, error), "")
                 if error is not None:
-                    self.status.setText(error.message)
+                    self.status.setText("" if error.key in PAIRING_NEEDED else error.message)
         self.calls.run(work, answered)
 
     def refresh(self, said: str = ""):
@@ -181,6 +203,8 @@ class RobotProgramsDialog(QDialog):
         """Show the agent's ``answer`` to ``programs()``; None (it was not reached): nothing is known, nothing shown."""
         if answer is None:
             self.programs.clear()
+            self._abouts = {}
+            self._show_code_state()
             self.running.setText("")
             self._runs = False
             self._enable_start()
@@ -188,12 +212,16 @@ class RobotProgramsDialog(QDialog):
             return
         chosen = self.chosen()
         self.programs.clear()
+        self._abouts = {about["name"]: about for about in answer["programs"]}
         for about in answer["programs"]:
             item = QListWidgetItem(tr("robot_programs_line", self.language, name=about["name"],
                                       profile=about["profile"], version=about["profile_version"]))
             item.setData(256, about["name"])
+            if about.get("code") == "differs":  # seen in the list before it is chosen
+                item.setIcon(self._warning_icon)
             self.programs.addItem(item)
             item.setSelected(about["name"] == chosen)
+        self._show_code_state()
         if not answer["programs"]:
             self.status.setText(tr("robot_no_programs", self.language))
         run = answer["run"]
@@ -207,6 +235,19 @@ class RobotProgramsDialog(QDialog):
             self.running.setText(tr("robot_programs_nothing", self.language))
         if said:
             self.status.setText(said)
+
+    def _show_code_state(self):
+        """Say whether the chosen program's code is what its blocks make (the agent checks it); a program whose
+        code differs is warned of with an icon and in bold."""
+        about = self._abouts.get(self.chosen())
+        differs = about is not None and about.get("code") == "differs"
+        said = code_state_text(about, self.language) if about is not None else ""
+        self.code_state.setText(said[:1].upper() + said[1:])  # a sentence of its own here
+        self.code_state.setVisible(about is not None)
+        self.code_warning.setVisible(differs)
+        font = self.code_state.font()
+        font.setBold(differs)
+        self.code_state.setFont(font)
 
     def _follow_attachment(self, state: str):
         if self._enabled_before is not None:  # asking: the button follows once the answer is in
@@ -301,17 +342,12 @@ class RobotProgramsDialog(QDialog):
     def _with_client(self, call, then=None, refresh=True):
         """``call(client)`` on a short connection to the agent, off the window's thread; on the window's thread
         ``then(answer)`` follows (None when refused: the refusal is said in ``status``), then a refresh."""
-        host, port, language = self.host.text().strip(), self.port.value(), self.language
-
-        def work():
-            client = AgentClient(host, port, language, name="rockly window", via=self.via, graph_kind=self.graph_kind)
-            try:
-                return call(client)
-            finally:
-                client.close()
+        host, port = self.host.text().strip(), self.port.value()
+        work = self._on_a_client(call)
 
         def answered(answer, error):
-            self.status.setText(error.message if error is not None else "")
+            answer = self._follow_pairing(answer, error)
+            self.status.setText(error.message if error is not None and error.key not in PAIRING_NEEDED else "")
             if error is None and self._reached is not None:
                 self._reached(host, port)
             if then is not None:
@@ -320,6 +356,74 @@ class RobotProgramsDialog(QDialog):
                 self.refresh()
 
         self._ask(work, answered)
+
+    def _follow_pairing_panel(self):
+        """While this laptop must pair, the robot's programs are not shown (it cannot see them); the dialog grows
+        to show the panel's texts whole."""
+        unpaired = self.pairing.pairing_needed and not self.pairing.isHidden()
+        self.programs.setVisible(not unpaired)
+        self.keep_going.setVisible(not unpaired)
+        self.layout().setStretchFactor(self.pairing, 1 if unpaired else 0)  # it takes the list's room
+        if unpaired:
+            self.status.setText("")  # the panel says why
+        self._fit_height()
+
+    def _client_maker(self):
+        """A function that makes a new client of the agent at the address shown now (called off the window's
+        thread)."""
+        host, port, language, via, graph_kind = (self.host.text().strip(), self.port.value(), self.language,
+                                                 self.via, self.graph_kind)
+        return lambda: AgentClient(host, port, language, name="rockly window", via=via, graph_kind=graph_kind)
+
+    def _pairing_way(self):
+        """``(make, also_for)`` for the pairing panel: pairing goes over TCP (TLS: the key never travels in clear),
+        and on a robot reached over ROS the key serves its agent there too (the graph this window is on)."""
+        host, port, language = self.host.text().strip(), self.port.value(), self.language
+        also_for = []
+        if self.via != "tcp":
+            _via, kind, where = chosen_via("ros", graph_kind=self.graph_kind)
+            if where is not None:
+                also_for.append(ros_address(kind, where, DEFAULT_NAMESPACE))
+        return lambda: AgentClient(host, port, language, name="rockly window"), also_for
+
+    def _on_a_client(self, call):
+        """The work of ``call(client)`` on a short connection to the agent: it returns ``(call's answer, the key
+        the client used)``; an AgentError it raises carries ``robot_key`` too: the key this laptop holds for the
+        agent (None when it holds none), which a refusal for lack of pairing makes worth forgetting."""
+        make, tcp_key = self._client_maker(), tcp_address(self.host.text().strip(), self.port.value())
+
+        def work():
+            try:
+                client = make()
+            except AgentError as error:  # a certificate other than the one paired with is refused before hello
+                error.robot_key = RobotKeys().get(tcp_key)
+                raise
+            try:
+                return call(client), client.robot_key
+            except AgentError as error:
+                error.robot_key = client.robot_key
+                raise
+            finally:
+                client.close()
+        return work
+
+    def _follow_pairing(self, answer, error):
+        """The pairing panel follows an answer of ``_on_a_client``'s work (or the ``error`` that came instead):
+        returns the call's own answer."""
+        if error is not None:
+            if error.key in PAIRING_NEEDED:
+                key = getattr(error, "robot_key", None)
+                reason = error.message
+                if error.key == "agent_not_paired":  # the agent's words name the command line: here, the dialog's
+                    # a key held all the same: revoked there, or a new agent
+                    reason = tr("pairing_revoked" if key is not None else "pairing_not_yet", self.language)
+                elif error.key == "agent_other_certificate":
+                    reason += " " + tr("pairing_other_certificate", self.language)
+                self.pairing.needed(reason, key)
+            return None
+        answer, key = answer
+        self.pairing.show_paired(key)
+        return answer
 
     def _forget_calls(self):
         """The dialog closed: answers on their way are dropped, and the buttons wait no more."""

@@ -27,12 +27,13 @@ class PreferencesDialog(QDialog):
     ``kiosk`` settings it has a Kiosk tab (``kiosk_tab``, ``apply()`` too), unlocked with the Teacher
     tab; in ``kiosk_mode`` the toolbox level cannot be changed. ``pin_given``: the teacher's PIN was
     checked just before opening (a kiosk's gate), so both tabs open unlocked. ``challenges``: the
-    lessons the Kiosk tab offers as the challenge of the day, [(id, title)].
+    lessons the Kiosk tab offers as the challenge of the day, [(id, title)]. ``robot_limits``: how the
+    Teacher tab asks the robot's agent for the robot's own limits (``RobotLimitsBox``).
     """
 
     def __init__(self, language: str, parent=None, profile=None, teacher=None, reset_before_run: bool = False,
                  kiosk=None, kiosk_mode: bool = False, block_look=None, pin_given: bool = False,
-                 challenges=()):
+                 challenges=(), robot_limits=None):
         super().__init__(parent)
         self.setWindowTitle(tr("preferences_title", language))
         self.language_box = QComboBox(self)
@@ -63,7 +64,8 @@ class PreferencesDialog(QDialog):
         self.teacher_tab = None
         if profile is not None and teacher is not None and (teacher.has_pin or not kiosk_mode):
             # (a visitor must not set the first PIN: with it they could leave the kiosk)
-            self.teacher_tab = TeacherTab(profile, teacher, language, self, unlocked=pin_given)
+            self.teacher_tab = TeacherTab(profile, teacher, language, self, unlocked=pin_given,
+                                          robot_limits=robot_limits)
             self.tabs.addTab(self.teacher_tab, tr("teacher_tab", language))
             if kiosk_mode:
                 self.teacher_tab.level_box.setEnabled(False)

@@ -1,5 +1,5 @@
 """The Preferences dialog's Teacher tab: toolbox level, maximum speeds and capabilities of the robot
-on screen, and a lock on the robot choice, behind a PIN."""
+on screen, a lock on the robot choice, and the robot's own limits (kept on the robot), behind a PIN."""
 from PySide6.QtCore import QEvent, Qt
 from PySide6.QtWidgets import (
     QCheckBox,
@@ -17,18 +17,21 @@ from PySide6.QtWidgets import (
 from rockly_desktop.settings.teacher import MIN_PIN_LENGTH, wait_text
 from rockly_desktop.ui.number_box import NumberBox
 from rockly_desktop.ui.plain_text import mnemonic_free, plain_label
+from rockly_desktop.ui.preferences.robot_limits_box import RobotLimitsBox
 from rockly_desktop.ui.texts import tr
 
 
 class TeacherTab(QStackedWidget):
     """Locked (asks for the PIN, or for a new one the first time) until the right PIN is given;
     then the settings for ``profile`` from ``teacher`` (TeacherSettings). ``apply()`` keeps them.
-    ``unlocked``: the PIN was given just before (a kiosk asks it to open Preferences), not asked again."""
+    ``unlocked``: the PIN was given just before (a kiosk asks it to open Preferences), not asked again.
+    ``robot_limits``: how the robot's own limits are asked of its agent (``RobotLimitsBox``'s ``robot``)."""
 
-    def __init__(self, profile, teacher, language: str, parent=None, unlocked: bool = False):
+    def __init__(self, profile, teacher, language: str, parent=None, unlocked: bool = False, robot_limits=None):
         super().__init__(parent)
         self.setObjectName("teacher_tab")
         self._profile, self._teacher, self._language = profile, teacher, language
+        self._robot_limits = robot_limits
         self.addWidget(self._lock_page())
         self.addWidget(self._settings_page())
         if unlocked:
@@ -138,6 +141,8 @@ class TeacherTab(QStackedWidget):
         self.lock_robot.setToolTip(tr("teacher_lock_robot_tip", language))
         self.lock_robot.setChecked(teacher.robot_locked)
         outer.addWidget(self.lock_robot)
+        self.robot_limits_box = RobotLimitsBox(profile, language, self._robot_limits, page)
+        outer.addWidget(self.robot_limits_box)
         outer.addStretch(1)
         return page
 
