@@ -9,7 +9,6 @@ import threading
 from PySide6.QtCore import QObject, Signal
 
 from rockly_desktop.core.errors import RocklyError
-from rockly_desktop.lessons.check import check_program
 from rockly_desktop.ui.texts import tr
 
 
@@ -41,6 +40,8 @@ class LessonCheck(QObject):
     def _check(self, lesson, program, record: str):
         language = self._language()
         try:
+            from rockly_desktop.lessons.check import check_program  # the simulator, recordings: when checked
+
             result = check_program(lesson, program, language, record=record)
         except (RocklyError, OSError) as error:
             text = error.in_language(language) if isinstance(error, RocklyError) else str(error)

@@ -14,8 +14,6 @@ from pathlib import Path
 from PySide6.QtCore import QObject
 
 from rockly_desktop.core.workspace_blocks import block_types_by_id
-from rockly_desktop.lessons.check import GeneratedProgram
-from rockly_desktop.lessons.library import LessonLibrary
 from rockly_desktop.ui.docks.lesson_check import LessonCheck
 from rockly_desktop.ui.texts import tr
 
@@ -69,9 +67,11 @@ class LessonGuide(QObject):
         editor.sig_ready.connect(lambda: self._step is not None and self._show_step(self._step))  # a new page
 
     @property
-    def library(self) -> LessonLibrary:
+    def library(self):
         """Every lesson (read when first needed)."""
         if self._library is None:
+            from rockly_desktop.lessons.library import LessonLibrary  # YAML and the check: not at start-up
+
             self._library = LessonLibrary.discover(self._profiles)
         return self._library
 
@@ -141,6 +141,8 @@ class LessonGuide(QObject):
             self._check_failed(tr("lessons_cannot_check", self._language(), error=error))
             return
         workspace = state["workspace"]
+        from rockly_desktop.lessons.check import GeneratedProgram  # the simulator, recordings: when checked
+
         program = GeneratedProgram(self.files.document.display_name(self._language()), run_code, workspace,
                                    block_types_by_id(workspace))
         self.checker.start(lesson, program, Path(self._folder.name) / f"{lesson.id}.mcap")
