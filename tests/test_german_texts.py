@@ -10,6 +10,7 @@ import yaml
 
 from rockly_desktop.core.app_texts import app_catalogue
 from rockly_desktop.core.catalogue import Catalogue
+from rockly_desktop.core.python_syntax import parse_python
 from rockly_desktop.profiles.i18n import is_localized
 
 REPO = Path(__file__).resolve().parents[1]
@@ -70,7 +71,7 @@ def _localized(value, found):
 def _view_texts(profile):
     """The simulator view's words (``view/texts.py``'s TEXTS), read without importing Qt: (English, German) pairs."""
     source = (REPO / "profiles" / profile / f"rockly_{profile}" / "view" / "texts.py").read_text(encoding="utf-8")
-    for node in ast.parse(source).body:
+    for node in parse_python(source).body:
         if isinstance(node, ast.Assign) and any(getattr(target, "id", None) == "TEXTS" for target in node.targets):
             texts = ast.literal_eval(node.value)
             return list(zip(_leaves(texts["en"]), _leaves(texts["de"]), strict=True))
@@ -145,7 +146,7 @@ def test_the_check_finds_english_in_german():
 def _profile_code(profile):
     """The profile's commands and what they say about its world (sim.py's own tablet errors are not yet here)."""
     package = REPO / "profiles" / profile / f"rockly_{profile}"
-    return [(path, ast.parse(path.read_text(encoding="utf-8"))) for path in sorted(package.glob("*.py"))
+    return [(path, parse_python(path.read_text(encoding="utf-8"))) for path in sorted(package.glob("*.py"))
             if path.name != "sim.py"]
 
 

@@ -7,6 +7,8 @@ from pathlib import Path
 
 import pytest
 
+from rockly_desktop.core.python_syntax import parse_python
+
 REPO = Path(__file__).resolve().parents[1]
 LINT_IMPORTS = Path(sys.executable).with_name("lint-imports")
 
@@ -188,7 +190,7 @@ def python_files(folder: Path, skip=()):
 def rockly_imports(source: str) -> set:
     """The ``rockly_desktop`` modules ``source`` imports, by absolute name."""
     found = set()
-    for node in ast.walk(ast.parse(source)):
+    for node in ast.walk(parse_python(source)):
         if isinstance(node, ast.Import):
             found |= {alias.name for alias in node.names}
         elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
@@ -201,7 +203,7 @@ def test_only_the_profiles_package_reads_a_profiles_manifest():
     """Everything else asks the Profile's typed properties (safe_stop, ros_interface, state_panels, ...)."""
     readers = []
     for path in python_files(REPO / "rockly_desktop", skip=("profiles",)):
-        tree = ast.parse(path.read_text(encoding="utf-8"))
+        tree = parse_python(path.read_text(encoding="utf-8"))
         if any(isinstance(node, ast.Attribute) and node.attr == "manifest" for node in ast.walk(tree)):
             readers.append(str(path.relative_to(REPO)))
     assert readers == []

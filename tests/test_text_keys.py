@@ -4,6 +4,7 @@ import ast
 from pathlib import Path
 
 from rockly_desktop.core.app_texts import app_catalogue
+from rockly_desktop.core.python_syntax import parse_python
 
 REPO = Path(__file__).resolve().parents[1]
 # function -> the prefix its keys have in the catalogue
@@ -16,7 +17,7 @@ def named_keys():
     found = []
     for path in sorted((REPO / "rockly_desktop").rglob("*.py")):
         relative = str(path.relative_to(REPO / "rockly_desktop"))
-        for call in (node for node in ast.walk(ast.parse(path.read_text(encoding="utf-8")))
+        for call in (node for node in ast.walk(parse_python(path.read_text(encoding="utf-8")))
                      if isinstance(node, ast.Call)):
             name = getattr(call.func, "id", None) or getattr(call.func, "attr", None)
             if name not in LOOKUPS or name in PREFIXED_IN and PREFIXED_IN[name] != relative:

@@ -4,6 +4,7 @@ import ast
 import pytest
 from program_builder import block, number, stack, text, workspace
 
+from rockly_desktop.core.python_syntax import parse_python
 from rockly_desktop.profiles.opening import ProgramToOpen
 
 
@@ -193,7 +194,7 @@ def _as_statement(block_type, input_name, value):
 def test_user_text_reaches_python_as_the_exact_string_never_as_code(headless_editor, hobbit, block_type, input_name):
     for value in NASTY_TEXTS:
         code = generate(headless_editor, hobbit, _as_statement(block_type, input_name, value))
-        tree = ast.parse(code)
+        tree = parse_python(code)
         strings = [node.value for node in ast.walk(tree)
                    if isinstance(node, ast.Constant) and isinstance(node.value, str)]
         assert value in strings, f"{value!r} not carried exactly by {code!r}"
@@ -216,7 +217,7 @@ def test_block_comments_never_become_code(headless_editor, hobbit):
     for comment in HOSTILE_COMMENTS:
         program = block("hobbit_sos", icons={"comment": {"text": comment, "pinned": False, "height": 80, "width": 160}})
         for code in (generate(headless_editor, hobbit, program), headless_editor.call_and_wait("getRunCode")["code"]):
-            tree = ast.parse(code)
+            tree = parse_python(code)
             calls = [node.func.attr if isinstance(node.func, ast.Attribute) else node.func.id
                      for node in ast.walk(tree) if isinstance(node, ast.Call)]
             assert "print" not in calls, (comment, code)

@@ -1,9 +1,9 @@
 """Typed ROS blocks in the real editor: inputs per field of the chosen type, checks, saving, handlers."""
-import ast
 
 from page_tools import add_block_as_user, call_page, print_value, run_js
 from program_builder import block, number, stack, text, workspace
 
+from rockly_desktop.core.python_syntax import parse_python
 from rockly_desktop.profiles.opening import ProgramToOpen
 
 FIELD_INPUTS = """(() => {
@@ -89,7 +89,7 @@ def test_a_goal_with_a_while_waiting_handler_becomes_a_function_the_command_call
     ws["variables"] = [{"name": "feedback", "id": "fb"}, {"name": "seen", "id": "seen"},
                        {"name": "outcome", "id": "outcome"}]
     code = headless_editor.python_for(ProgramToOpen(path=None, profile=hobbit, workspace=ws))
-    ast.parse(code)
+    parse_python(code)
     assert ("def while_waiting(received):\n"
             "  global outcome, feedback, seen\n"
             "  feedback = received\n"
@@ -107,6 +107,6 @@ def test_two_handlers_get_two_functions(headless_editor, hobbit):
                          block("text_print", inputs={"TEXT": goal("MoveToTray")})))
     ws["variables"] = [{"name": "feedback", "id": "fb"}]
     code = headless_editor.python_for(ProgramToOpen(path=None, profile=hobbit, workspace=ws))
-    ast.parse(code)
+    parse_python(code)
     assert "def while_waiting(received):" in code and "def while_waiting2(received2):" in code
     assert "while_waiting=while_waiting)" in code and "while_waiting=while_waiting2)" in code

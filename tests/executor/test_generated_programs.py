@@ -4,6 +4,7 @@ import ast
 from program_builder import block, number, stack, text, workspace
 from test_runner import step_through as step_through_code
 
+from rockly_desktop.core.python_syntax import parse_python
 from rockly_desktop.executor.events import OutputPrinted, RunFinished
 
 
@@ -62,7 +63,7 @@ def test_block_ids_full_of_quotes_stay_data(headless_editor):
     run = run_code(headless_editor, workspace(printing(nasty, "hi")))
     visited, recorder = step_through(run)
     assert visited == [nasty]
-    tree = ast.parse(run["code"])
+    tree = parse_python(run["code"])
     assert not [node for node in ast.walk(tree) if isinstance(node, (ast.Import, ast.ImportFrom))]
 
 

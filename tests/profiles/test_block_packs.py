@@ -15,6 +15,7 @@ from program_builder import block, number, workspace
 
 from rockly_desktop.core.errors import ManifestError
 from rockly_desktop.core.program import Program, parse_program
+from rockly_desktop.core.python_syntax import parse_python
 from rockly_desktop.profiles.blocks import block_spec
 from rockly_desktop.profiles.opening import ProgramToOpen, opening_warnings, read_program_to_open, unknown_blocks_error
 from rockly_desktop.profiles.packs import making
@@ -299,7 +300,7 @@ def test_any_fixed_text_and_sentence_make_a_block_whose_python_sends_exactly_tha
                      fixed={"data": value}, sentence={"en": sentence + "!"}, category={"en": "Made"},
                      colour="#4c97ff")
     spec = block_spec(block_definition(made), Path("fuzz.yaml"))  # the template reads back as a profile's would
-    call = ast.parse(python_preview(made), mode="eval").body
+    call = parse_python(python_preview(made), mode="eval").body
     assert spec.type == "say_fixed" and ast.literal_eval(call.args[2]) == {"data": value}
     folder = Path(tempfile.mkdtemp(dir=tmp_path))
     pack = save_block(made, fresh_registry.get("hobbit"), PACK, folder=folder)  # and YAML keeps it exactly

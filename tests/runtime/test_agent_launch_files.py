@@ -7,6 +7,7 @@ import sys
 
 from agent_tools import REPO
 
+from rockly_desktop.core.python_syntax import parse_python
 from rockly_desktop.runtime.agent.client import AgentClient
 from rockly_desktop.runtime.agent.pairings import Pairings, agent_folder
 
@@ -40,7 +41,7 @@ def test_the_launch_files_name_the_agent():
     launch = (DOCS / "rockly_agent" / "launch" / "rockly_agent.launch").read_text()
     assert 'pkg="rockly_agent" type="rockly_agent"' in launch and "--backend ros1" in launch
     assert '<arg name="options" default=""/>' in launch and "$(arg options)" in launch  # e.g. --offer-on-robot-ui
-    ros2 = ast.parse((DOCS / "rockly_agent.launch.py").read_text())
+    ros2 = parse_python((DOCS / "rockly_agent.launch.py").read_text())
     assert "generate_launch_description" in [node.name for node in ros2.body if isinstance(node, ast.FunctionDef)]
     unit = (DOCS / "rockly-agent.service").read_text()
     assert "rockly-agent --backend ros1" in unit and "KillSignal=SIGTERM" in unit

@@ -9,6 +9,7 @@ from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from rockly_desktop.core.export import python_module_text
+from rockly_desktop.core.python_syntax import parse_python
 from rockly_desktop.profiles.packs.generate import block_definition, python_preview
 from rockly_desktop.profiles.packs.spec import BlockInput, MadeBlock
 from rockly_desktop.profiles.packs.template_check import check_template
@@ -22,7 +23,7 @@ RUN_CODE = "__rockly__.block('a')\nrobot.say('hi')\n"
 
 
 def top_level(text: str) -> list:
-    return [type(node).__name__ for node in ast.parse(text).body]
+    return [type(node).__name__ for node in parse_python(text).body]
 
 
 @settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -66,7 +67,7 @@ def test_a_made_blocks_texts_stay_quoted_in_its_template(sentence, tooltip, inte
     python = block_definition(block)["python"]
     check_template(python["code"], {"words": "value"})
     preview = python_preview(block)
-    call = ast.parse(preview, mode="eval").body
+    call = parse_python(preview, mode="eval").body
     assert ast.unparse(call.func) == "ros.field"
     assert [ast.literal_eval(argument) for argument in call.args[0].args[:2]] == [interface, "hobbit_msgs/Request"]
     assert ast.literal_eval(call.args[1]) == result

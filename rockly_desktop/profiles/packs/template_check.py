@@ -15,6 +15,8 @@ import ast
 import re
 import string
 
+from rockly_desktop.core.python_syntax import parse_python
+
 COMMAND_OBJECTS = ("robot", "ros")
 _PUBLIC = re.compile(r"^[a-z][a-z0-9_]*$")
 _SLOT_PREFIX = "__slot_"
@@ -58,7 +60,7 @@ def check_template(code: str, slots: dict = None, handlers: dict = None) -> None
     filled = _filled(code, slots or {}, handlers or {})
     source = filled if "\n" in filled.strip() else filled.strip()
     try:
-        tree = ast.parse(source)
+        tree = parse_python(source)
     except SyntaxError as error:
         raise TemplateRefused(error.lineno or 1, f"this is not Python ({error.msg})") from None
     checker = _Checker(source)

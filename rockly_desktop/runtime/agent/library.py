@@ -22,6 +22,7 @@ from pathlib import Path
 
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.core.program import parse_program
+from rockly_desktop.core.python_syntax import parse_python
 from rockly_desktop.core.workspace_checks import workspace_problem
 from rockly_desktop.recording.mcap_file import disk_full
 from rockly_desktop.runtime import standalone
@@ -38,7 +39,7 @@ DEFAULT_QUOTA_BYTES = 256 * 1024 * 1024  # the library's programs in all: some 8
 def standalone_program(text: str) -> tuple:
     """``(PROGRAM, RUN_CODE)`` of a standalone file's text, read as data (nothing in it runs)."""
     try:
-        tree = ast.parse(text)
+        tree = parse_python(text)
     except (SyntaxError, ValueError):
         raise AgentRefusal("agent_not_standalone") from None
     found = {}
