@@ -1,6 +1,5 @@
 """The check engine: simulated time as fast as the machine allows, a time limit, a program that lets no time
 pass, a program that raises, blocks beyond the level; and the lessons found and shared as packs."""
-import time
 import zipfile
 
 import pytest
@@ -17,19 +16,15 @@ from rockly_desktop.lessons.library import LessonLibrary
 NO_BUMP = [{"kind": "no_bump"}]
 
 
-def test_a_twenty_second_drive_takes_well_under_a_second(tmp_path, profiles):
-    started = time.monotonic()
+def test_a_twenty_second_drive_is_checked_in_simulated_time(tmp_path, profiles):
+    # how fast a check runs is benchmarks/lessons_check.py's figure (about 0.5 s for this drive)
     result = check(tmp_path, profiles, ["robot.drive(3.0)"], goals=NO_BUMP, robot="turtlebot", start=[0, -1, 0])
-    took = time.monotonic() - started
     assert result.ending == "finished" and 19.5 < result.time < 21.5   # 3 m at 0.15 m/s, slowing at the end
-    assert took < 5, took   # about 0.5 s on an idle core; generous for a loaded machine
 
 
 def test_hobbit_waits_in_simulated_time(tmp_path, profiles):
-    started = time.monotonic()
     result = check(tmp_path, profiles, ["robot.wait(30)", "robot.move_arm('table')"], goals=NO_BUMP, robot="hobbit")
     assert result.ending == "finished" and result.time == pytest.approx(34.0, abs=0.1)
-    assert time.monotonic() - started < 5
 
 
 def test_a_program_that_never_ends_is_stopped_at_the_time_limit(tmp_path, profiles):
@@ -127,12 +122,10 @@ def test_a_recorded_check_replays_in_simulated_time_at_its_failing_moment(tmp_pa
     from rockly_desktop.recording.reading import read_recording
 
     lesson = load_lesson(write_lesson(tmp_path / "lesson", goals=NO_BUMP, start=[0, 0, 0]), profiles)
-    started = time.monotonic()
     result = check_program(lesson, program("robot.drive(1.0)", "robot.drive(1.0)"), record=tmp_path / "try.mcap",
                            program_bytes=b"{}")
-    took = time.monotonic() - started
     failing_time, failing_block = result.failing
-    assert failing_block == "b2" and 9 < failing_time < 12.5 and took < failing_time / 2
+    assert failing_block == "b2" and 9 < failing_time < 12.5
     recording = read_recording(tmp_path / "try.mcap")
     assert recording.complete and recording.metadata["world"] and recording.program == b"{}"
     moments = Moments(recording)
