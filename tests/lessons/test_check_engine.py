@@ -113,8 +113,9 @@ def test_the_readmes_example_lesson_is_valid_and_its_first_try_passes(tmp_path, 
     (tmp_path / "lesson.de.md").write_text(steps, encoding="utf-8")
     lesson = load_lesson(tmp_path, profiles)
     assert check_program(lesson, program("robot.drive(3)")).passed
-    too_far = check_program(lesson, program("robot.drive(3.5)"))
-    assert [goal.passed for goal in too_far.goals] == [True, False]
+    into_the_wall = check_program(lesson, program("robot.drive(3.5)"))   # 0 cm from the wall: too close, a bump
+    assert [goal.passed for goal in into_the_wall.goals] == [False, False]
+    assert "too close" in into_the_wall.goals[0].words("en")
 
 
 def test_a_recorded_check_replays_in_simulated_time_at_its_failing_moment(tmp_path, profiles):
