@@ -71,6 +71,7 @@ def test_the_library_lists_lessons_by_robot_and_level_and_keeps_broken_ones(tmp_
     write_lesson(tmp_path / "pack" / "h", robot="hobbit", goals=NO_BUMP, id="h", level="explorer")
     write_lesson(tmp_path / "pack" / "twice", goals=NO_BUMP, id="a")
     write_lesson(tmp_path / "pack" / "broken", goals=[{"kind": "flies"}], id="broken")
+    write_lesson(tmp_path / "pack" / ".import-x1" / "c", goals=NO_BUMP, id="c")  # a pack being imported: not yet
     library = LessonLibrary.discover(profiles, [tmp_path / "pack"])
     listing = library.by_robot_and_level()
     assert {robot: {level: [lesson.id for lesson in lessons] for level, lessons in levels.items()}
