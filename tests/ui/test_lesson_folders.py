@@ -68,6 +68,7 @@ def broken_lesson(user_lessons):
 
 def test_a_broken_lesson_is_said_to_the_teacher_under_the_childs_list(qtbot, window, broken_lesson):
     folder, line = broken_lesson
+    window.resize(1280, 800)
     choose_robot(qtbot, window, "turtlebot")
     dock = show_lessons(qtbot, window)
     assert "turtlebot-square" in listed(dock) and "stop-early" not in listed(dock)  # the others are all there
@@ -81,6 +82,9 @@ def test_a_broken_lesson_is_said_to_the_teacher_under_the_childs_list(qtbot, win
     qtbot.waitUntil(dock.problems_text.isVisible, timeout=5000)
     text = dock.problems_text.toPlainText()
     assert said in text and "The other lessons work." in text
+    scroller = dock.widget()   # the dock is short at 1280×800: it scrolls to the problems opened
+    qtbot.waitUntil(lambda: dock.problems_text.geometry().bottom() - scroller.verticalScrollBar().value()
+                    <= scroller.viewport().height(), timeout=5000)
     assert dock.problems_line.text().endswith("▾ 1 lesson could not be read</a>")
     assert dock.lesson_list.isVisible() and dock.start_button.isVisible()
 

@@ -214,6 +214,15 @@ class LessonsDock(QDockWidget):
     def _open_problems(self, shown: bool):
         self._problems_open = shown
         self.show_problems(self._problems)
+        if shown:  # in sight once laid out (the dock may be short): the layout comes after the next turn
+            QTimer.singleShot(0, self, lambda: QTimer.singleShot(0, self, self._bring_problems_in_sight))
+
+    def _bring_problems_in_sight(self):
+        """Scroll the dock to the problems' end, keeping their line in sight (a text browser's own "visible"
+        is its cursor's, at its top)."""
+        scroller = self.widget()
+        scroller.ensureVisible(0, self.problems_text.geometry().bottom(), 0, 0)
+        scroller.ensureWidgetVisible(self.problems_line, 0, 0)
 
     def _fit_problems(self):
         """As tall as the problems' words, at most PROBLEMS_HEIGHT."""
