@@ -96,8 +96,9 @@ class ThingName:
 
 class LessonGoal:
     """One kind of goal. Subclasses set ``kind`` (the ``kind:`` a lesson writes), ``fields`` (schema
-    ``Field``s), ``meaning`` (one sentence for the reference) and override what they need of ``see``,
-    ``heard``, ``printed`` and ``verdict``. ``self.spec`` is the goal's data, already validated."""
+    ``Field``s), ``meaning`` (one sentence for the reference) and override what they need of ``spec_problem``
+    (fields that must fit together), ``see``, ``heard``, ``printed`` and ``verdict``. ``self.spec`` is the
+    goal's data, already validated."""
 
     kind = ""
     fields = ()
@@ -115,6 +116,12 @@ class LessonGoal:
         """(time, order) of the first moment the goal was met, to put two goals in order; None if never met."""
         moment = self.met_moment
         return None if moment is None else (moment.time, moment.order)
+
+    @classmethod
+    def spec_problem(cls, spec: dict):
+        """None when the goal's fields, each already fine, fit together; else (the field to point at, what was
+        expected: a LocalText), e.g. a lower bound above the upper one. ``spec`` holds the fields given."""
+        return None
 
     def see(self, moment: Moment):
         """Look at the run after a tick."""
@@ -147,6 +154,9 @@ class LessonGoal:
 
 
 # --- where the robot is or passed --------------------------------------------------------
+
+
+NEAR_AT_LEAST = 0.02  # metres: an ``ends_near`` goal's lower bound when the lesson gives none
 
 
 class EndsIn(LessonGoal):
@@ -183,8 +193,19 @@ class Passes(LessonGoal):
 class EndsNear(LessonGoal):
     kind = "ends_near"
     fields = (Field("thing", "thing", True, "The thing."),
-              Field("within", "positive", True, "Metres between the robot's edge and the thing at most."))
-    meaning = "When the program ends, the robot's edge is at most `within` metres from the thing."
+              Field("within", "positive", True, "Metres between the robot's edge and the thing at most."),
+              Field("at_least", "not_negative", False, "Metres between the robot's edge and the thing at least."))
+    meaning = (f"When the program ends, the robot's edge is at most `within` and at least `at_least` metres "
+               f"from the thing (`at_least` below `within`; default {NEAR_AT_LEAST}: touching it is not near, "
+               f"it is a bump; 0 lets the robot touch it).")
+
+    @classmethod
+    def spec_problem(cls, spec):
+        at_least, within = spec.get("at_least", NEAR_AT_LEAST), spec["within"]
+        if at_least >= within:
+            field = "at_least" if "at_least" in spec else "within"
+            return field, app_local_text("lesson_expect_apart", at_least=at_least, within=within)
+        return None
 
     def gap(self, moment) -> float:
         world = self.context.world
@@ -192,12 +213,15 @@ class EndsNear(LessonGoal):
 
     def verdict(self, end):
         gap, within = self.gap(end), float(self.spec["within"])
+        at_least = float(self.spec.get("at_least", NEAR_AT_LEAST))
         values = dict(robot=self.context.robot, thing=self.thing(self.spec["thing"]), gap=gap * 100,
-                      within=within * 100)
-        if gap <= within + 1e-6:
-            self.met(end)
-            return Verdict(True, app_local_text("lesson_ends_near_passed", **values))
-        return Verdict(False, app_local_text("lesson_ends_near_failed", **values), end.time, end.block)
+                      within=within * 100, at_least=at_least * 100)
+        if gap > within + 1e-6:
+            return Verdict(False, app_local_text("lesson_ends_near_failed", **values), end.time, end.block)
+        if gap < at_least - 1e-6:
+            return Verdict(False, app_local_text("lesson_ends_near_too_close", **values), end.time, end.block)
+        self.met(end)
+        return Verdict(True, app_local_text("lesson_ends_near_passed", **values))
 
 
 # --- what the robot must not do -----------------------------------------------------------

@@ -196,6 +196,11 @@ def _goals(located, data, kinds: dict, names: dict) -> list:
             if problem:
                 raise located.error(app_local_text("lesson_problem_goal_value", number=index + 1, kind=kind.kind,
                                                    field=spec.name, expected=problem), *where, spec.name)
+        mismatch = kind.spec_problem(entry)
+        if mismatch:
+            field, expected = mismatch
+            raise located.error(app_local_text("lesson_problem_goal_value", number=index + 1, kind=kind.kind,
+                                               field=field, expected=expected), *where, field)
         if entry.get("id") is not None and entry["id"] in seen:
             raise located.error(app_local_text("lesson_problem_goal_twice", number=index + 1, id=entry["id"]),
                                 *where, "id")

@@ -28,8 +28,12 @@ class LessonError(RocklyError):
 
     def in_language(self, language: str) -> str:
         """``path:line: problem`` with the problem in ``language``."""
+        return f"{self.where}: {self.problem_in(language)}"
+
+    def problem_in(self, language: str) -> str:
+        """What was expected (the problem alone, without the file and line), in ``language``."""
         problem = self._problem
-        return f"{self.where}: {problem.in_language(language) if hasattr(problem, 'in_language') else problem}"
+        return problem.in_language(language) if hasattr(problem, "in_language") else str(problem)
 
 
 class Located:

@@ -26,14 +26,21 @@ def user_lessons_dir() -> Path:
     return paths.user_data_dir() / "lessons"
 
 
+def lesson_roots() -> tuple:
+    """The folders lessons are found in, in order: the shipped lessons, then the user's."""
+    return builtin_lessons_dir(), user_lessons_dir()
+
+
 def lesson_folders(folder) -> list:
-    """Every folder holding a lesson.yaml in ``folder`` or below it (at most DEPTH deep), sorted."""
+    """Every folder holding a lesson.yaml in ``folder`` or below it (at most DEPTH deep; hidden folders, such as
+    a pack being imported, left out), sorted."""
     folder = Path(folder)
     if (folder / LESSON_FILE).is_file():
         return [folder]
     found = []
     for depth in range(1, DEPTH + 1):
-        found += [path.parent for path in folder.glob("/".join(["*"] * depth) + "/" + LESSON_FILE)]
+        found += [path.parent for path in folder.glob("/".join(["*"] * depth) + "/" + LESSON_FILE)
+                  if not any(part.startswith(".") for part in path.relative_to(folder).parts)]
     return sorted(found)
 
 
@@ -49,7 +56,7 @@ class LessonLibrary:
         """Every lesson in ``folders`` (by default the shipped lessons, then the user's); ``profiles`` is
         {id: Profile}. A lesson whose id an earlier one has is a problem, not a replacement."""
         lessons, problems = {}, []
-        for root in folders if folders is not None else (builtin_lessons_dir(), user_lessons_dir()):
+        for root in folders if folders is not None else lesson_roots():
             for folder in lesson_folders(root) if Path(root).is_dir() else ():
                 try:
                     lesson = load_lesson(folder, profiles)

@@ -17,6 +17,7 @@ KIND_EXPECTED = {
     "identifier": app_local_text("lesson_expect_identifier"),
     "number": app_local_text("lesson_expect_number"),
     "positive": app_local_text("lesson_expect_positive"),
+    "not_negative": app_local_text("lesson_expect_not_negative"),
     "count": app_local_text("lesson_expect_count"),
     "level": app_local_text("lesson_expect_level", levels=", ".join(LEVELS)),
     "pose": app_local_text("lesson_expect_pose"),
@@ -85,10 +86,11 @@ def check_value(field: Field, value, names: dict):
         return None if isinstance(value, str) and IDENTIFIER.match(value) else field.expected
     if kind == "bool":
         return None if isinstance(value, bool) else field.expected
-    if kind in ("number", "positive", "count"):
+    if kind in ("number", "positive", "not_negative", "count"):
         if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
             return field.expected
-        if kind == "positive" and value <= 0 or kind == "count" and (value < 0 or int(value) != value):
+        if (kind == "positive" and value <= 0 or kind == "not_negative" and value < 0
+                or kind == "count" and (value < 0 or int(value) != value)):
             return field.expected
         return None
     if kind == "level":

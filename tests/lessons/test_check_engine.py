@@ -71,6 +71,7 @@ def test_the_library_lists_lessons_by_robot_and_level_and_keeps_broken_ones(tmp_
     write_lesson(tmp_path / "pack" / "h", robot="hobbit", goals=NO_BUMP, id="h", level="explorer")
     write_lesson(tmp_path / "pack" / "twice", goals=NO_BUMP, id="a")
     write_lesson(tmp_path / "pack" / "broken", goals=[{"kind": "flies"}], id="broken")
+    write_lesson(tmp_path / "pack" / ".import-x1" / "c", goals=NO_BUMP, id="c")  # a pack being imported: not yet
     library = LessonLibrary.discover(profiles, [tmp_path / "pack"])
     listing = library.by_robot_and_level()
     assert {robot: {level: [lesson.id for lesson in lessons] for level, lessons in levels.items()}
@@ -113,8 +114,9 @@ def test_the_readmes_example_lesson_is_valid_and_its_first_try_passes(tmp_path, 
     (tmp_path / "lesson.de.md").write_text(steps, encoding="utf-8")
     lesson = load_lesson(tmp_path, profiles)
     assert check_program(lesson, program("robot.drive(3)")).passed
-    too_far = check_program(lesson, program("robot.drive(3.5)"))
-    assert [goal.passed for goal in too_far.goals] == [True, False]
+    into_the_wall = check_program(lesson, program("robot.drive(3.5)"))   # 0 cm from the wall: too close, a bump
+    assert [goal.passed for goal in into_the_wall.goals] == [False, False]
+    assert "too close" in into_the_wall.goals[0].words("en")
 
 
 def test_a_recorded_check_replays_in_simulated_time_at_its_failing_moment(tmp_path, profiles):

@@ -40,12 +40,30 @@ def test_passes_an_area_on_the_way(tmp_path, profiles, back, passed):
     assert goal.passed is passed
 
 
-@pytest.mark.parametrize("metres, passed", [(3.2, True), (2.5, False)])
-def test_ends_near_a_thing(tmp_path, profiles, metres, passed):
-    goal = only(check(tmp_path, profiles, [f"robot.drive({metres})"],
-                      goals=[{"kind": "ends_near", "thing": "wall_front", "within": 0.25}], **TURTLE))
+@pytest.mark.parametrize("metres, at_least, passed, said", [
+    (3.2, 0.15, True, "TurtleBot stopped 20 cm from the wall."),
+    (2.5, 0.15, False, "TurtleBot stopped 90 cm from the wall. It should be 25 cm or closer."),
+    (3.2, 0.22, False, "TurtleBot stopped 20 cm from the wall. That is too close: it should be 22 cm or more."),
+])
+def test_ends_near_a_thing_neither_too_far_nor_too_close(tmp_path, profiles, metres, at_least, passed, said):
+    goal = only(check(tmp_path, profiles, [f"robot.drive({metres})"], goals=[
+        {"kind": "ends_near", "thing": "wall_front", "within": 0.25, "at_least": at_least}], **TURTLE))
     assert goal.passed is passed
-    assert ("20 cm" if passed else "90 cm") in goal.words("en")
+    assert goal.words("en") == said
+    assert goal.words("de").startswith("TurtleBot hat angehalten: ")
+    assert (goal.block, goal.time is not None) == ((None, False) if passed else ("b1", True))
+
+
+def test_ends_near_touching_the_thing_is_not_near_unless_the_lesson_allows_it(tmp_path, profiles):
+    """A robot at the wall (the drive stopped by the contact) is 0 cm from it: not "near" by default."""
+    touching = ["robot.drive_for(0.2, 30)"]   # further than the wall: the simulator stops the robot at it
+    near = {"kind": "ends_near", "thing": "wall_front", "within": 0.25}
+    result = check(tmp_path / "a", profiles, touching, goals=[near, {"kind": "no_bump"}], **TURTLE)
+    assert [goal.passed for goal in result.goals] == [False, False]
+    assert result.goals[0].words("en") == ("TurtleBot stopped 0 cm from the wall. That is too close: it should "
+                                           "be 2 cm or more.")
+    allowed = check(tmp_path / "b", profiles, touching, goals=[dict(near, at_least=0)], **TURTLE)
+    assert allowed.goals[0].passed
 
 
 def test_no_bump_passes_a_careful_drive_and_names_what_was_hit(tmp_path, profiles):

@@ -51,6 +51,12 @@ def test_broken_yaml_names_its_line(tmp_path, profiles):
     ({"goals": [{"kind": "ends_near", "thing": "sofa", "within": 0.2}]}, "thing", "the id of a wall or piece"),
     ({"goals": [{"kind": "ends_near", "thing": "box_1", "within": -1}]}, "within", "expected a number above 0"),
     ({"goals": [{"kind": "within", "goal": "nothing", "seconds": 3}]}, "goal", "the id of another goal"),
+    ({"goals": [{"kind": "ends_near", "thing": "box_1", "within": 0.2, "at_least": -0.1}]}, "at_least",
+     "expected a number, 0 or more"),
+    ({"goals": [{"kind": "ends_near", "thing": "box_1", "within": 0.2, "at_least": 0.3}]}, "at_least",
+     "expected 'at_least' (0.3 m) below 'within' (0.2 m)"),
+    ({"goals": [{"kind": "ends_near", "thing": "box_1", "within": 0.01}]}, "within",
+     "expected 'at_least' (0.02 m) below 'within' (0.01 m)"),
     ({"goals": [{"kind": "no_bump", "speed": 3}]}, "speed", "'speed' is not one of its fields"),
     ({"goals": [{"kind": "uses_block", "block": "hobbit_emo"}]}, "block", "a block type of the lesson's robot"),
 ])

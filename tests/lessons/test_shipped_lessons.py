@@ -14,7 +14,7 @@ PROGRAMS = Path(__file__).with_name("programs")
 WRONG = {
     "hobbit-smile": ([0], "finished"),
     "hobbit-look-around": ([2], "finished"),
-    "hobbit-drive-to-sofa": ([1], "error"),          # it bumps into the sofa
+    "hobbit-drive-to-sofa": ([0, 1], "error"),       # it bumps into the sofa (0 cm from it: too close)
     "hobbit-square": ([1], "finished"),              # three sides: not home
     "hobbit-kitchen": ([0, 1, 2], "error"),          # drives into the wall, past the kitchen
     "hobbit-greet": ([3], "finished"),               # asks before it smiles
@@ -23,7 +23,7 @@ WRONG = {
     "turtlebot-there-and-back": ([1], "finished"),
     "turtlebot-slow": ([1], "finished"),             # too fast
     "turtlebot-around-the-box": ([0, 1], "error"),   # straight into the box
-    "turtlebot-stop-at-wall": ([1, 2], "error"),     # no laser: into the wall
+    "turtlebot-stop-at-wall": ([0, 1, 2], "error"),  # no laser: into the wall (0 cm from it: too close)
     "turtlebot-follow-wall": ([0, 2, 3], "finished"),
 }
 

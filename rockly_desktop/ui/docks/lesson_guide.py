@@ -15,6 +15,7 @@ from PySide6.QtCore import QObject
 
 from rockly_desktop.core.workspace_blocks import block_types_by_id
 from rockly_desktop.ui.docks.lesson_check import LessonCheck
+from rockly_desktop.ui.docks.lesson_watch import LessonWatch
 from rockly_desktop.ui.texts import tr
 
 PAGE_TIMEOUT_MS = 10000
@@ -53,6 +54,7 @@ class LessonGuide(QObject):
         self.progress, self._profiles, self._profile = progress, profiles, profile
         self._toolbox, self._language = toolbox, language
         self._library = None
+        self.watch = None  # the lesson folders' LessonWatch, once the lessons are read
         self._step = None
         self._failing = None  # (seconds, block) to show once the check's recording is read
         self._folder = tempfile.TemporaryDirectory(prefix="rockly-lessons-")
@@ -68,12 +70,26 @@ class LessonGuide(QObject):
 
     @property
     def library(self):
-        """Every lesson (read when first needed)."""
+        """Every lesson (read when first needed, then again whenever the lesson folders change)."""
         if self._library is None:
-            from rockly_desktop.lessons.library import LessonLibrary  # YAML and the check: not at start-up
+            from rockly_desktop.lessons.library import DEPTH, LessonLibrary, lesson_roots  # YAML: not at start-up
 
+            self.watch = LessonWatch(lambda: LessonLibrary.discover(self._profiles), lesson_roots(), DEPTH, self)
+            self.watch.sig_read.connect(self._lessons_read)  # watched first: a change while reading is not missed
             self._library = LessonLibrary.discover(self._profiles)
+            self.dock.show_problems(self._library.problems)
         return self._library
+
+    def _lessons_read(self, library):
+        """The lessons read again: the list and the broken ones follow; the open lesson stays open at its step
+        (its new text shown when it changed; kept as it was when it is gone), the progress is untouched."""
+        self._library = library
+        self.dock.show_problems(library.problems)
+        opened = self.dock.lesson
+        renewed = library.get(opened.id) if opened is not None else None
+        if renewed is not None and renewed.robot == opened.robot:
+            self.dock.renew(renewed)
+        self.follow_robot()
 
     def follow_robot(self):
         """Close a lesson of another robot than the chosen one, and list the chosen robot's lessons when the dock
@@ -174,7 +190,10 @@ class LessonGuide(QObject):
             self.editor.call("highlight", {"id": block})
 
     def shutdown(self):
-        """Wait for a running check, then remove the checks' recordings (the window closes)."""
+        """Wait for a running check and a reading of the lessons, then remove the checks' recordings (the
+        window closes)."""
+        if self.watch is not None:
+            self.watch.stop()
         self.checker.wait()
         self.replay.close()
         self._folder.cleanup()

@@ -5,9 +5,14 @@ lists lessons (``lessons.Lesson``) with ``passed(lesson_id)`` marking those pass
 asks ``sig_open(lesson)``; ``begin(lesson)`` then shows its first step. Each step shown is said with
 ``sig_step(step)`` (the window marks its blocks and limits the toolbox); Check asks ``sig_check(lesson)``
 and ``show_result`` / ``show_problem`` say how it went; "Next lesson" asks ``sig_open`` for the next one.
+``show_problems`` says, under the list, which lessons could not be read and why (for the teacher: a line
+that opens); ``renew`` takes the open lesson read again.
 """
+import html
+from pathlib import Path
+
 from PySide6.QtCore import QRect, Qt, QTimer, Signal
-from PySide6.QtGui import QBrush, QColor
+from PySide6.QtGui import QBrush, QColor, QTextOption
 from PySide6.QtWidgets import (
     QDockWidget,
     QFrame,
@@ -29,6 +34,8 @@ from rockly_desktop.lessons.schema import LEVELS
 from rockly_desktop.ui.texts import tr
 
 PASSED, FAILED = "#2e7d32", "#c62828"
+BROKEN = "#8a5a00"  # the line saying which lessons could not be read: seen, but no alarm for a child
+PROBLEMS_HEIGHT = 160  # px: the broken lessons' details at most (they scroll beyond)
 STEP_TEXT_HEIGHT = 110  # px
 RESULTS_HEIGHT = 100  # px: the results' height, between half this and twice this
 LIST_HEIGHT = 120  # px
@@ -59,6 +66,14 @@ class LessonsDock(QDockWidget):
         self.lesson_list.currentItemChanged.connect(lambda *_: self._follow_choice())
         self.start_button = QPushButton(objectName="lesson_start")
         self.start_button.clicked.connect(lambda: self._open_item(self.lesson_list.currentItem()))
+        self.problems_line = QLabel(objectName="lesson_problems", wordWrap=True)  # "2 lessons could not be read"
+        self.problems_line.setTextInteractionFlags(Qt.TextInteractionFlag.LinksAccessibleByMouse
+                                                   | Qt.TextInteractionFlag.LinksAccessibleByKeyboard)
+        self.problems_line.linkActivated.connect(lambda _link: self._open_problems(not self.problems_text.isVisible()))
+        self.problems_text = QTextBrowser(objectName="lesson_problems_text")  # which file, which line, what is wrong
+        self.problems_text.setWordWrapMode(QTextOption.WrapMode.WrapAtWordBoundaryOrAnywhere)  # long folder paths
+        self._problems = []
+        self._problems_open = False
         self.all_button = QPushButton(objectName="lesson_all", checkable=True)  # the list again, over an open lesson
         self.all_button.toggled.connect(self._show_list)
         self.prompt = QLabel(objectName="lesson_prompt", wordWrap=True)  # what to do while no lesson is open
@@ -90,6 +105,7 @@ class LessonsDock(QDockWidget):
         scroller.setWidget(self._layout())  # its own minimum is small: the docks it shares tabs with keep their sizes
         self.setWidget(scroller)
         self.all_button.hide()
+        self.show_problems([])
         self.show_lessons([], self._passed)
 
     def _layout(self) -> QWidget:
@@ -99,6 +115,8 @@ class LessonsDock(QDockWidget):
         column.addWidget(self.all_button)
         column.addWidget(self.lesson_list, 1)
         column.addWidget(self.start_button)
+        column.addWidget(self.problems_line)
+        column.addWidget(self.problems_text)
         column.addWidget(self.lesson_part, 1)
         lesson = QVBoxLayout(self.lesson_part)
         lesson.setContentsMargins(0, 0, 0, 0)
@@ -158,6 +176,60 @@ class LessonsDock(QDockWidget):
     def _show_list(self, shown: bool):
         self.lesson_list.setVisible(shown)
         self.start_button.setVisible(shown)
+        self.problems_line.setVisible(shown and bool(self._problems))
+        self.problems_text.setVisible(shown and bool(self._problems) and self._problems_open)
+
+    # --- the lessons that could not be read ---------------------------------------------------
+
+    def show_problems(self, problems):
+        """Say under the list which lessons could not be read (``problems``: LessonErrors, with their file, line
+        and what was expected): a line for the teacher that opens to each lesson's folder, file, line and problem."""
+        self._problems = list(problems)
+        count = len(self._problems)
+        said = tr("lessons_problems_one", self.language) if count == 1 else tr("lessons_problems_many",
+                                                                              self.language, count=count)
+        arrow = "▾" if self._problems_open else "▸"
+        self.problems_line.setText(f'<a href="problems" style="color: {BROKEN}; text-decoration: none">'
+                                   f'{arrow} {html.escape(said)}</a>')
+        details = "".join(self._problem_html(problem) for problem in self._problems)
+        after = html.escape(tr("lessons_problems_after", self.language))
+        self.problems_text.setHtml(f"{details}<p><i>{after}</i></p>")
+        self.problems_line.setToolTip(self.problems_text.toPlainText())
+        self._show_list(self.lesson_list.isVisibleTo(self))
+        self._fit_problems()
+
+    def _problem_html(self, problem) -> str:
+        path = Path(problem.path)
+        folder = path if path.is_dir() else path.parent
+        said = problem.problem_in(self.language)
+        where = tr("lessons_problem_folder", self.language, folder=folder.parent)
+        if path == folder:
+            what = said
+        elif problem.line:
+            what = tr("lessons_problem_line", self.language, file=path.name, line=problem.line, problem=said)
+        else:
+            what = tr("lessons_problem_file", self.language, file=path.name, problem=said)
+        return f"<p><b>{html.escape(folder.name)}</b> ({html.escape(where)})<br>{html.escape(what)}</p>"
+
+    def _open_problems(self, shown: bool):
+        self._problems_open = shown
+        self.show_problems(self._problems)
+        if shown:  # in sight once laid out (the dock may be short): the layout comes after the next turn
+            QTimer.singleShot(0, self, lambda: QTimer.singleShot(0, self, self._bring_problems_in_sight))
+
+    def _bring_problems_in_sight(self):
+        """Scroll the dock to the problems' end, keeping their line in sight (a text browser's own "visible"
+        is its cursor's, at its top)."""
+        scroller = self.widget()
+        scroller.ensureVisible(0, self.problems_text.geometry().bottom(), 0, 0)
+        scroller.ensureWidgetVisible(self.problems_line, 0, 0)
+
+    def _fit_problems(self):
+        """As tall as the problems' words, at most PROBLEMS_HEIGHT."""
+        document = self.problems_text.document()
+        document.setTextWidth(self.problems_text.viewport().width())
+        frame = 2 * self.problems_text.frameWidth() + int(document.documentMargin())
+        self.problems_text.setFixedHeight(min(PROBLEMS_HEIGHT, int(document.size().height()) + frame))
 
     def _open_item(self, item):
         lesson = item.data(0, Qt.ItemDataRole.UserRole) if item is not None else None
@@ -212,6 +284,17 @@ class LessonsDock(QDockWidget):
         self.check_button.setEnabled(self.lesson is not None)
         self.sig_step.emit(step)
 
+    def renew(self, lesson):
+        """``lesson``, the open one read again (its files changed): it stays at its step, its new text shown when
+        its steps or title changed."""
+        if self.lesson is None or lesson.id != self.lesson.id:
+            return
+        changed = (lesson.steps(self.language) != self.lesson.steps(self.language)
+                   or lesson.title(self.language) != self.lesson.title(self.language))
+        self.lesson = lesson
+        if changed:
+            self.show_step(self.step_index)
+
     def _title(self) -> str:
         if self.lesson is None:
             return ""
@@ -229,6 +312,7 @@ class LessonsDock(QDockWidget):
         """Qt override: the step's text and the results fit their new width."""
         super().resizeEvent(event)
         self._fit_step_text()
+        self._fit_problems()
         if self.results.count():
             self._fit_results()
 
@@ -337,6 +421,7 @@ class LessonsDock(QDockWidget):
         self.next_button.setText(tr("lessons_next", language))
         self.check_button.setText(tr("lessons_check", language))
         shown = self._shown
+        self.show_problems(self._problems)
         self.show_lessons(self._lessons, self._passed)
         self.show_step(self.step_index)
         if isinstance(shown, str):

@@ -13,6 +13,7 @@ from rockly_desktop.ui.docks.code_dock import CodeDock
 from rockly_desktop.ui.docks.console_dock import ConsoleDock
 from rockly_desktop.ui.docks.lessons_dock import LessonsDock
 from rockly_desktop.ui.docks.simulator_dock import SimulatorDock
+from rockly_desktop.ui.docks.tab_room import give_tabs_room
 from rockly_desktop.ui.docks.variables_dock import VariablesDock
 from rockly_desktop.ui.texts import tr
 
@@ -144,7 +145,8 @@ class Docks(Mapping):
                                         Qt.Orientation.Vertical)
 
     def retitle(self, language: str):
-        """Name every dock (and what it shows) in ``language``."""
+        """Name every dock (and what it shows) in ``language``; docks sharing tabs at a side get the room for their
+        titles."""
         for spec in self.specs:
             title = tr(spec.title, language)
             if spec.key in self._past:
@@ -152,6 +154,14 @@ class Docks(Mapping):
             self[spec.key].setWindowTitle(title)
             if spec.retranslate is not None:
                 spec.retranslate(self[spec.key], language)
+        side_groups = {}
+        for spec in self.specs:
+            if spec.area in (RIGHT, Qt.DockWidgetArea.LeftDockWidgetArea):
+                side_groups.setdefault(spec.group, []).append(self[spec.key])
+        screen_width = self._frame.screen().availableGeometry().width()
+        for docks in side_groups.values():
+            if len(docks) > 1:  # its tabs' titles whole, as far as the screen allows
+                give_tabs_room(docks, screen_width)
 
     def mark_past(self, keys, language: str):
         """Mark the docks ``keys`` name as showing the past (a replay drives them), and only those; say it in
