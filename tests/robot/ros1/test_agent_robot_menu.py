@@ -130,3 +130,19 @@ def test_a_person_at_the_tablet_asks_for_a_pairing_code_and_one_laptop_pairs_wit
     assert "rockly agent: a pairing code was shown on the robot's own UI, as a person there asked (valid 2 minutes, " \
            "once; the laptop pairs as teacher)\n" in err
     assert code not in out + err and code.replace("-", "") not in out + err
+
+
+def test_with_no_pairing_on_robot_ui_the_tablet_offers_the_programs_only(own_master, programs, simulator, tmp_path):
+    """A fair, where visitors use the tablet: no code is offered there."""
+    Library(tmp_path / "library", ProfileRegistry.discover().profiles).keep("long", programs["long"])
+    agent = AgentProcess(tmp_path / "library", "--master", own_master.uri, "--offer-on-robot-ui", "hobbit",
+                         "--no-pairing-on-robot-ui", backend="ros1", env=ros_environment(own_master.uri,
+                                                                                          own_master.home))
+    try:
+        assert simulator.dialog(60) == ("text", "Which program shall I run?\n1. long\nType its number or its name.")
+        simulator.send("type 0")  # not a program: asked anew, nothing shown
+        simulator.send("click OK")
+        assert simulator.dialog(60) == ("text", "Which program shall I run?\n1. long\nType its number or its name.")
+    finally:
+        agent.stop()
+    assert agent.process.returncode == 0
