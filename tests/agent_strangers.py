@@ -16,6 +16,7 @@ from agent_tools import REPO, AttachedClient
 from json_line_node import JsonLineNode
 from waiting import eventually
 
+from rockly_desktop.runtime.agent.protocol import FORMAT
 from rockly_desktop.runtime.agent.robot_keys import RobotKeys
 
 NAMESPACE = "/rockly_agent"
@@ -78,7 +79,7 @@ class Stranger(JsonLineNode):
     def handled(self):
         self._marks += 1
         mark = f"mark-{self._marks}"
-        self.publish({"op": "hello", "id": mark, "from": "stranger-mark", "format": 1})
+        self.publish({"op": "hello", "id": mark, "from": "stranger-mark", "format": FORMAT})
         eventually(lambda: any(message.get("reply") == mark for message in self.heard("from_agent")), 60)
 
     def answers_to(self, name: str) -> list:
@@ -99,6 +100,23 @@ def requests_in_clear_are_refused_and_nothing_runs(laptop: Laptop, stranger: Str
     assert [answer["reply"] for answer in answers] == [1, 2, 3, 4]
     assert {(answer["ok"], answer["error"]) for answer in answers} == {(False, "agent_not_paired")}
     assert laptop.ok("list") == "no programs on the robot yet\n" and not ran.exists()
+
+
+def a_client_from_before_pairing_is_told_to_update_and_pair(stranger: Stranger):
+    """What a Rockly of protocol format 1 (before pairing; its ``RosLine`` at git 5b5bd36^) says over ROS: a
+    heartbeat with an id until the agent answers it (its line's handshake), then its hello. Before, the agent left
+    that heartbeat unanswered, and the old laptop said no agent was there."""
+    old = "/rockly_old_laptop/4242-0a1b2c3d"
+    stranger.publish({"op": "heartbeat", "id": old, "from": old})
+    stranger.handled()
+    assert [answer["reply"] for answer in stranger.answers_to(old)] == [old]
+    stranger.publish({"op": "hello", "id": 1, "from": old, "format": 1, "rockly": "0.0.9", "language": "de",
+                      "client": "rockly (old@laptop)"})
+    stranger.handled()
+    told = [answer for answer in stranger.answers_to(old) if answer["reply"] == 1]
+    assert [(answer["ok"], answer["error"]) for answer in told] == [(False, "agent_client_before_pairing")]
+    assert told[0]["message"].startswith("dieses Rockly (0.0.9) ist älter als der Agent des Roboters (Rockly ")
+    assert "aktualisiere Rockly auf diesem Laptop und kopple ihn dann mit dem Roboter" in told[0]["message"]
 
 
 def a_listener_reads_nothing(laptop: Laptop, stranger: Stranger, program: Path, block_type: str):

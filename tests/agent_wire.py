@@ -4,22 +4,28 @@ import json
 import socket
 
 from rockly_desktop.runtime.agent.pairings import hello_data, proof_of_key
+from rockly_desktop.runtime.agent.protocol import FORMAT
 from rockly_desktop.runtime.agent.tls import client_context
 
 
-def plain_connection(port: int, source_address: str = "127.0.0.1", timeout: float = 60) -> socket.socket:
-    """A plain TCP connection to the agent on 127.0.0.1 from ``source_address``."""
+def plain_connection(port: int, source_address: str = "127.0.0.1", timeout: float = 60,
+                     receive_buffer: int = None) -> socket.socket:
+    """A plain TCP connection to the agent on 127.0.0.1 from ``source_address`` (with a kernel receive buffer of
+    ``receive_buffer`` bytes where given: a client that takes little is soon full)."""
     connection = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+    if receive_buffer is not None:
+        connection.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, receive_buffer)
     connection.bind((source_address, 0))
     connection.connect(("127.0.0.1", port))
     connection.settimeout(timeout)
     return connection
 
 
-def tls_connection(port: int, source_address: str = "127.0.0.1", timeout: float = 60) -> tuple:
+def tls_connection(port: int, source_address: str = "127.0.0.1", timeout: float = 60,
+                   receive_buffer: int = None) -> tuple:
     """``(connection, nonce)``: a TLS connection to the agent (any certificate taken) and the nonce of its
     greeting, read to its line's end and no further."""
-    connection = client_context().wrap_socket(plain_connection(port, source_address, timeout))
+    connection = client_context().wrap_socket(plain_connection(port, source_address, timeout, receive_buffer))
     line = b""
     while not line.endswith(b"\n"):
         byte = connection.recv(1)
@@ -30,7 +36,7 @@ def tls_connection(port: int, source_address: str = "127.0.0.1", timeout: float 
 
 def hello(nonce: str = None, key=None, language: str = "en", **fields) -> dict:
     """A hello request; with a RobotKey ``key``, proving it over ``nonce``."""
-    request = {"op": "hello", "id": 0, "format": 1, "language": language, "client": "stranger", **fields}
+    request = {"op": "hello", "id": 0, "format": FORMAT, "language": language, "client": "stranger", **fields}
     if key is not None:
         request.update(client_id=key.client, proof=proof_of_key(key.key, hello_data(nonce, key.client)))
     return request

@@ -51,7 +51,8 @@ MANIFEST_FIELDS = (
     FieldSpec("program_menu", "program_menu", False,
               "How `rockly agent --offer-on-robot-ui` offers the robot's programs on its own UI: {hook: "
               "module:Class (an SDK ProgramMenu), stop: true (offer Stop while one runs), answer_seconds: N (how "
-              "long one question waits before it is asked anew; default 60)}."),
+              "long one question waits before it is asked anew; default 60), pairing: true (a person at the robot "
+              "may ask it for a one-time pairing code, shown there)}."),
     FieldSpec("lesson_goals", "import", False,
               "module:NAME of a list of the goal kinds the robot adds to lessons (SDK LessonGoal classes; "
               "docs/lessons.md)."),
@@ -299,12 +300,14 @@ def _check_levels(value):
 def _check_program_menu(value):
     if not isinstance(value, dict) or not isinstance(value.get("hook"), str) \
             or not _IMPORT_PATH.fullmatch(value["hook"]):
-        return "must say its hook: {hook: 'package.module:Class', stop: true|false, answer_seconds: N}"
-    unknown = set(value) - {"hook", "stop", "answer_seconds"}
+        return "must say its hook: {hook: 'package.module:Class', stop: true|false, answer_seconds: N, pairing: " \
+               "true|false}"
+    unknown = set(value) - {"hook", "stop", "answer_seconds", "pairing"}
     if unknown:
-        return f"unknown key(s) {sorted(unknown)} (use hook, stop, answer_seconds)"
-    if not isinstance(value.get("stop", False), bool):
-        return "'stop' must be true or false"
+        return f"unknown key(s) {sorted(unknown)} (use hook, stop, answer_seconds, pairing)"
+    for flag in ("stop", "pairing"):
+        if not isinstance(value.get(flag, False), bool):
+            return f"'{flag}' must be true or false"
     seconds = value.get("answer_seconds", 60)
     if isinstance(seconds, bool) or not isinstance(seconds, (int, float)) or not 0 < seconds <= 3600:
         return "'answer_seconds' must be a number of seconds above 0 and at most 3600"

@@ -253,7 +253,8 @@ class Profile:
             return None
         return self._make("program_menu", menu["hook"], (language,),
                           {"offers_stop": menu.get("stop", False),
-                           "answer_seconds": float(menu.get("answer_seconds", 60))})
+                           "answer_seconds": float(menu.get("answer_seconds", 60)),
+                           "offers_pairing": menu.get("pairing", False)})
 
     def _make(self, field_name: str, target: str, args, kwargs):
         found = self.load_object(field_name, target)

@@ -16,7 +16,7 @@ from tiny_disk import fill, tiny_disk
 from waiting import eventually
 
 from rockly_desktop.runtime.agent.client import AgentClient, AgentError
-from rockly_desktop.runtime.agent.protocol import AGENT_SILENT_SECONDS
+from rockly_desktop.runtime.agent.protocol import AGENT_SILENT_SECONDS, FORMAT
 from rockly_desktop.runtime.agent.robot_keys import RobotKeys
 
 
@@ -367,9 +367,29 @@ def test_a_client_of_another_rockly_version_is_told(agent_at, language, expected
     agent = agent_at()
     connection, _ = tls_connection(agent.port)
     with connection:
-        say(connection, {"op": "hello", "id": 1, "rockly": "9.0.0", "format": 2, "language": language})
+        say(connection, {"op": "hello", "id": 1, "rockly": "9.0.0", "format": FORMAT + 1, "language": language})
         answer = answers(connection, 1)[0]
     assert answer["reply"] == 1 and answer["ok"] is False and answer["error"] == "agent_other_format"
+    assert answer["message"].startswith(expected)
+
+
+@pytest.mark.parametrize("language, expected", [
+    ("en", "this Rockly (0.0.9) is older than the robot's agent (Rockly 0.1.0), which answers only laptops paired "
+           "with it, over encrypted or sealed messages: update Rockly on this laptop, then pair it"),
+    ("de", "dieses Rockly (0.0.9) ist älter als der Agent des Roboters (Rockly 0.1.0), der nur mit ihm gekoppelte "
+           "Laptops beantwortet, über verschlüsselte oder versiegelte Nachrichten: aktualisiere Rockly auf diesem "
+           "Laptop und kopple ihn dann"),
+])
+def test_a_client_of_the_format_before_pairing_is_told_to_update_and_pair(agent_at, language, expected):
+    """A format-1 hello inside TLS (a hand-made client; a format-1 Rockly speaks plain TCP:
+    tests/runtime/test_agent_pairing.py)."""
+    assert FORMAT == 2
+    agent = agent_at()
+    connection, _ = tls_connection(agent.port)
+    with connection:
+        say(connection, {"op": "hello", "id": 1, "rockly": "0.0.9", "format": 1, "language": language})
+        answer = answers(connection, 1)[0]
+    assert (answer["reply"], answer["ok"], answer["error"]) == (1, False, "agent_client_before_pairing")
     assert answer["message"].startswith(expected)
 
 

@@ -15,7 +15,7 @@ from standalone_tools import environment, export_standalone
 from waiting import eventually
 
 from rockly_desktop.runtime.agent.client import AgentClient, AgentError
-from rockly_desktop.runtime.agent.protocol import MAX_LINE_BYTES
+from rockly_desktop.runtime.agent.protocol import FORMAT, MAX_LINE_BYTES
 from rockly_desktop.runtime.agent.tcp_transport import FIRST_LINE_SECONDS, MAX_CONNECTIONS_PER_ADDRESS
 
 
@@ -71,7 +71,7 @@ ILL_TYPED = [
     {"op": "source", "name": {"a": 1}}, {"op": "delete", "name": None}, {"op": "delete", "name": ["a"]},
     {"op": "attach", "breakpoints": "x"}, {"op": "attach", "breakpoints": [1, 2]}, {"op": "attach", "control": {}},
     {"op": "control", "what": ["pause"]}, {"op": "breakpoints", "blocks": None},
-    {"op": "hello", "language": ["en"], "client": {"a": 1}, "format": 1}, {"op": "hello", "format": "1"},
+    {"op": "hello", "language": ["en"], "client": {"a": 1}, "format": FORMAT}, {"op": "hello", "format": "1"},
     {"op": "send", "name": "a" * 10_000, "standalone": "x"}, {"op": "heartbeat", "id": [1]},
 ]
 

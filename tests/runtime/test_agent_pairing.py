@@ -194,13 +194,15 @@ def test_a_student_cannot_replace_the_teachers_demo_nor_pair_others_nor_lift_lim
         teacher.close()
 
 
-def test_a_plain_tcp_client_is_told_it_needs_tls(agent):
+def test_a_plain_tcp_client_from_before_pairing_is_told_to_update_and_pair(agent):
+    """What a format-1 Rockly sends first: its hello in plain JSON."""
     connection = plain_connection(agent.port)
     with connection:
-        say(connection, hello(language="de", id=1))
+        say(connection, hello(language="de", id=1, format=1, rockly="0.0.9"))
         answer = answers(connection, 1)
-        assert answer and (answer[0]["reply"], answer[0]["error"]) == (1, "agent_needs_tls")
-        assert answer[0]["message"].startswith("der Agent dieses Roboters nimmt nur verschlüsselte Verbindungen an")
+        assert answer and (answer[0]["reply"], answer[0]["error"]) == (1, "agent_client_before_pairing")
+        assert answer[0]["message"].startswith("dieses Rockly (0.0.9) ist älter als der Agent des Roboters (Rockly ")
+        assert "aktualisiere Rockly auf diesem Laptop und kopple ihn dann mit dem Roboter" in answer[0]["message"]
         assert closed_by_agent(connection)
 
 

@@ -95,6 +95,8 @@ def _agent_options(agent):
     agent.add_argument("--namespace", default=DEFAULT_NAMESPACE,
                        help=app_text("agent_namespace_help", "en", namespace=DEFAULT_NAMESPACE))
     agent.add_argument("--offer-on-robot-ui", metavar="PROFILE", help=app_text("agent_offer_help", "en"))
+    agent.add_argument("--no-pairing-on-robot-ui", action="store_true",
+                       help=app_text("agent_no_robot_ui_pairing_help", "en"))
     agent.add_argument("--no-source-check", action="store_true", help=app_text("agent_no_source_check_help", "en"))
 
 
@@ -330,7 +332,7 @@ def _offer_on_robot_ui(agent, args, language):
 
     try:
         return offer_on_robot_ui(agent, agent.library.profiles, args.offer_on_robot_ui, args.backend,
-                                 connection(args.backend, args), language)
+                                 connection(args.backend, args), language, pairing=not args.no_pairing_on_robot_ui)
     except NotOffered as reason:
         print(f"rockly agent: {reason}", file=sys.stderr, flush=True)
         return False

@@ -16,7 +16,9 @@ keeps hearing a lost agent only from its transport.
 """
 import json
 
-FORMAT = 1  # of this protocol; an agent and a client of other formats say so and stop
+# Of this protocol: 2 since pairing (TLS over TCP, sealed messages over ROS); 1 before it. An agent and a client of
+# other formats say so and stop; a client of an older format is told to update and pair (``client_before_pairing``).
+FORMAT = 2
 DEFAULT_PORT = 11411
 HEARTBEAT_SECONDS = 0.2  # how often an attached client says it is there (well inside any time to decide)
 ALIVE = {"alive": True}
@@ -64,6 +66,18 @@ class AgentRefusal(Exception):
         super().__init__(key)
         self.key = key
         self.values = values
+
+
+def older_format(value) -> bool:
+    """Whether a client saying ``format`` ``value`` speaks a format older than this one (from before pairing)."""
+    return isinstance(value, int) and not isinstance(value, bool) and value < FORMAT
+
+
+def client_before_pairing(client_version) -> AgentRefusal:
+    """The refusal for a client from before pairing (Rockly ``client_version``): update it, then pair it."""
+    from rockly_desktop import __version__
+
+    return AgentRefusal("agent_client_before_pairing", agent=__version__, client=str(client_version)[:40])
 
 
 def refusal_text(refusal: AgentRefusal, language: str) -> str:

@@ -3,6 +3,11 @@
 The profile's ``program_menu`` hook (an SDK ``ProgramMenu``) asks the person; this offers it the programs kept
 for that profile, again after each answer, when the library changes and when a run starts or ends, and does
 what the person chose through the agent, as a client's request would (a start while one runs is refused).
+
+Where the profile's menu offers pairing (its manifest's ``pairing``) and the agent allows it, a person at the robot
+may ask it for a one-time pairing code (``Pairings.new_code``, as ``rockly agent pair`` on the robot's console): the
+code is shown on the robot's UI only; the agent's log says that one was shown, never the code. Nobody on the network
+can ask for one this way: only the person answering the robot's own question.
 """
 import sys
 import threading
@@ -11,6 +16,7 @@ from rockly_desktop.core.app_texts import app_catalogue, app_text
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.robot.interrupt import Interrupt
 from rockly_desktop.robot.program_menu import MenuChoice
+from rockly_desktop.runtime.agent.pairings import CODE_SECONDS
 from rockly_desktop.runtime.agent.protocol import AgentRefusal, refusal_text
 from rockly_desktop.runtime.agent.server import ON_THE_ROBOT
 
@@ -21,9 +27,11 @@ class NotOffered(Exception):
     """The programs cannot be offered on this robot's UI; the message says why, in the agent's language."""
 
 
-def offer_on_robot_ui(agent, profiles: dict, profile_id: str, kind: str, connection: dict, language: str):
+def offer_on_robot_ui(agent, profiles: dict, profile_id: str, kind: str, connection: dict, language: str,
+                      pairing: bool = True):
     """Start offering ``agent``'s programs for ``profile_id`` (one of ``profiles``) on the robot's own UI, through a
-    link of ``kind`` with its ``connection`` settings. Returns ``close()``: the offer ends and the link is shut.
+    link of ``kind`` with its ``connection`` settings; with ``pairing``, pairing codes too where the profile's menu
+    can show them. Returns ``close()``: the offer ends and the link is shut.
     Raises NotOffered: no such profile, the built-in simulator (nobody sees its UI), a profile that declares no
     ``program_menu``, a robot that cannot be reached."""
     from rockly_desktop.robot import links
@@ -38,6 +46,7 @@ def offer_on_robot_ui(agent, profiles: dict, profile_id: str, kind: str, connect
         menu = profile.program_menu(language)
         if menu is None:
             raise NotOffered(app_text("agent_menu_not_offered", language, robot=profile.display_name(language)))
+        menu.offers_pairing = menu.offers_pairing and pairing
         link = links.open_link(kind, profile, connection)
     except RocklyError as error:
         raise NotOffered(app_text("agent_menu_cannot_start", language, reason=_said(error, language))) from None
@@ -102,21 +111,41 @@ class RobotMenu:
                 return
             self._changed.clear()
             programs, running = self._offer_now()
-            if (running is None and not programs) or (running is not None and not self.menu.offers_stop):
+            if running is None and not programs and not self.menu.offers_pairing \
+                    or running is not None and not self.menu.offers_stop:
                 continue  # offered again when the library changes or the run ends
-            choice = self._ask(programs, running)
-            if choice is None or not self._act(choice, running):
+            choice = self._ask(self.menu.choose, programs, running)
+            if choice is not None and choice.action == MenuChoice.PAIR:
+                self._show_code()
+                self._changed.set()  # then the programs again
+            elif choice is None or not self._act(choice, running):
                 self._changed.set()  # asked again at once (a start or a stop done is a change of its own)
 
-    def _ask(self, programs, running):
-        """The person's choice, or None (also when the question was abandoned or failed; then asked anew)."""
+    def _show_code(self):
+        """A new one-time pairing code (its role: ``Pairings.new_code``'s default), shown on the robot's UI; the
+        agent's log says one was shown, not the code."""
+        def show(backend):
+            try:
+                code = self.agent.pairings.new_code()
+            except OSError as error:  # the agent's folder cannot be written
+                self._problem(app_text("agent_menu_no_code", self.menu.language, reason=error.strerror or str(error)))
+                return
+            self._say("rockly agent: " + app_text("agent_menu_code_shown", self.menu.language,
+                                                  role=app_text("role_" + code.role, self.menu.language),
+                                                  minutes=int(CODE_SECONDS) // 60))
+            self.menu.show_pairing_code(backend, code.shown, int(CODE_SECONDS))
+        self._ask(show)
+
+    def _ask(self, question, *args):
+        """``question(backend, *args)``'s answer (the person's choice), or None (also when the question was abandoned or
+        failed; then asked anew)."""
         asking = Interrupt()
         with self._lock:
             if self._changed.is_set():  # changed meanwhile: offer the new state
                 return None
             self._asking = asking
         try:
-            choice = self.menu.choose(self._backend_for(asking), programs, running)
+            choice = question(self._backend_for(asking), *args)
         except RocklyError as error:
             if asking.stop_requested:
                 return None

@@ -16,7 +16,9 @@ In clear, with ``"from": NAME`` (a name unique to the line) and answered ``"to":
 a key: ``hello`` (its answer names the agent's ``session`` and its X25519 ``agent_key``: the line's first exchange,
 the handshake) and ``pair``, whose code and answer (the pair's key) travel sealed with a one-time key agreed by
 X25519 with ``agent_key`` (``sealed.PairingExchange``); anything else in clear gets the agent's refusal (not
-paired), and a line that is not paired hears nothing but its answers and ``ALIVE``.
+paired), and a line that is not paired hears nothing but its answers and ``ALIVE``. A client from before pairing
+(protocol format 1) began its line with a heartbeat with an id: it is answered, and its hello refused, so that it
+says it must be updated and paired.
 
 A topic has no "connection closed", so a ROS client says it is there with a heartbeat every
 ``HEARTBEAT_SECONDS`` (attached or not) and ``bye`` when it closes; the agent forgets a client not heard from for
@@ -39,7 +41,7 @@ import uuid
 from rockly_desktop import __version__
 from rockly_desktop.core.app_texts import app_text
 from rockly_desktop.core.errors import RocklyError
-from rockly_desktop.runtime.agent.protocol import ALIVE, FORMAT, AgentError
+from rockly_desktop.runtime.agent.protocol import ALIVE, FORMAT, AgentError, client_before_pairing, refusal_text
 from rockly_desktop.runtime.agent.robot_keys import ros_address
 from rockly_desktop.runtime.agent.sealed import (
     FROM_AGENT,
@@ -229,6 +231,8 @@ class RosOffer:
             client = self._clients.get(("", who))
             if client is None and op not in CLEAR_OPS:
                 if op == "heartbeat":
+                    if "id" in request:  # the handshake of a client from before pairing (format 1): it is told
+                        self._tell_before_pairing(who, request)
                     return  # a line the agent does not know (any more): its hello comes first
                 self.dropped["in_clear"] += 1
                 client = _RosClient(self, who)  # told it is not paired; not kept
@@ -253,6 +257,13 @@ class RosOffer:
                               known=_short_text(asked) and self.agent.pairings.find(asked) is not None)
         if answer is not None:
             client.send(answer)
+
+    def _tell_before_pairing(self, who: str, request: dict):
+        """Answer a format-1 client's handshake (a heartbeat with an id, answered as its line's first exchange) in
+        clear: it must be updated and paired. Its hello, which follows, is refused so in its own language."""
+        refusal = client_before_pairing("?")
+        self.topics.publish({"reply": request["id"], "ok": False, "error": refusal.key,
+                             "message": refusal_text(refusal, self._language), "to": who})
 
     def _pair(self, client, request: dict):
         """The agent's answer to a clear ``pair`` request: its code and name opened with the one-time key agreed

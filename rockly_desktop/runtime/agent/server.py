@@ -46,7 +46,15 @@ import threading
 from rockly_desktop import __version__
 from rockly_desktop.runtime.agent.library import Library
 from rockly_desktop.runtime.agent.pairings import CODE_SECONDS, ROLES, TEACHER, PairedClient, Pairings, hello_data
-from rockly_desktop.runtime.agent.protocol import ALIVE, ALIVE_SECONDS, FORMAT, AgentRefusal, refusal_text
+from rockly_desktop.runtime.agent.protocol import (
+    ALIVE,
+    ALIVE_SECONDS,
+    FORMAT,
+    AgentRefusal,
+    client_before_pairing,
+    older_format,
+    refusal_text,
+)
 from rockly_desktop.runtime.agent.running import ProgramRun
 from rockly_desktop.runtime.robot_limits import (
     RobotLimitsError,
@@ -112,6 +120,8 @@ class Agent:
     def _op_hello(self, client, request):
         client.language = request.get("language") if request.get("language") in ("en", "de") else "en"
         client.name = str(request.get("client", "?"))[:80]
+        if older_format(request.get("format")):
+            raise client_before_pairing(request.get("rockly", "?"))
         if request.get("format") != FORMAT:
             raise AgentRefusal("agent_other_format", agent=__version__, client=request.get("rockly", "?"))
         nonce, client_id = getattr(client, "nonce", None), request.get("client_id")

@@ -3,7 +3,7 @@
 
 The agent's first line on a connection is its greeting ``{"nonce": HEX}``, new for each connection: a paired
 client's ``hello`` proves its key over it (``pairings.hello_data``). A client that speaks plain JSON (a Rockly
-older than pairing) is answered, in plain JSON, that the agent needs an encrypted connection, and closed.
+from before pairing, protocol format 1) is answered, in plain JSON, that it must be updated and paired, and closed.
 
 ``AgentServer`` offers an ``Agent`` on a TCP port (the agent's side); ``TcpLine`` is a client's connection to
 it (``AgentClient``'s side). A connection that closes is a client gone, and so is one that takes nothing the
@@ -25,6 +25,7 @@ from rockly_desktop.runtime.agent.protocol import (
     MAX_LINE_BYTES,
     AgentError,
     AgentRefusal,
+    client_before_pairing,
     decode,
     encode,
     refusal_text,
@@ -379,7 +380,7 @@ class AgentServer(socketserver.ThreadingTCPServer):
 
     def secured(self, connection):
         """``connection`` inside TLS (a ``LockedTls``), its handshake done within ``FIRST_LINE_SECONDS``; None when
-        it is not TLS (a plain JSON client is told it needs TLS) or its handshake fails."""
+        it is not TLS (a plain JSON client is told to update and pair) or its handshake fails."""
         connection.settimeout(FIRST_LINE_SECONDS)
         try:
             first = connection.recv(1, socket.MSG_PEEK)
@@ -396,7 +397,7 @@ class AgentServer(socketserver.ThreadingTCPServer):
 
 
 def _refuse_plain(connection):
-    """Tell a client speaking plain JSON (an older Rockly) that the agent needs TLS, answering its first request
+    """Tell a client speaking plain JSON (a Rockly from before pairing) to update and pair, answering its first request
     (its hello: so the client shows the message at once) in the language it names, and end the connection."""
     data = b""
     until = time.monotonic() + LINGER_SECONDS
@@ -409,8 +410,9 @@ def _refuse_plain(connection):
     request = decode(data.split(b"\n", 1)[0]) or {}
     language = request.get("language") if request.get("language") in ("en", "de") else "en"
     connection.settimeout(LINGER_SECONDS)
-    connection.sendall(encode({"reply": request.get("id"), "ok": False, "error": "agent_needs_tls",
-                               "message": app_text("agent_needs_tls", language)}))
+    refusal = client_before_pairing(request.get("rockly", "?"))
+    connection.sendall(encode({"reply": request.get("id"), "ok": False, "error": refusal.key,
+                               "message": refusal_text(refusal, language)}))
     connection.shutdown(socket.SHUT_WR)
     while time.monotonic() < until and connection.recv(4096):
         pass

@@ -13,7 +13,7 @@ import time
 import rospy
 from std_msgs.msg import String
 
-HELLO = {"op": "hello", "id": "stranger-ready", "format": 1, "language": "en"}
+HELLO = {"op": "hello", "id": "stranger-ready", "format": 2, "language": "en"}  # the agent protocol's FORMAT
 heard = []
 saying = threading.Lock()  # rospy calls back on a thread per connection: one line at a time, "ready" first
 

@@ -165,7 +165,7 @@ def test_a_lost_editor_over_ros_lets_a_keep_going_program_finish(robot, agent):
 OTHER_VERSION = """
 import sys
 import rockly_desktop.runtime.agent.client as client
-client.FORMAT, client.__version__ = 2, "9.0.0"
+client.FORMAT, client.__version__ = client.FORMAT + 1, "9.0.0"
 from rockly_desktop.runtime.agent.commands import robot_main
 sys.exit(robot_main(sys.argv[1:]))
 """

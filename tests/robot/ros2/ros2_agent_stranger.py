@@ -14,7 +14,7 @@ import rclpy
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from std_msgs.msg import String
 
-HELLO = {"op": "hello", "id": "stranger-ready", "format": 1, "language": "en"}
+HELLO = {"op": "hello", "id": "stranger-ready", "format": 2, "language": "en"}  # the agent protocol's FORMAT
 QOS = QoSProfile(depth=1000, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.VOLATILE)
 heard = []
 saying = threading.Lock()  # one line at a time, "ready" first

@@ -7,6 +7,7 @@ import pytest
 from agent_strangers import (
     Laptop,
     Stranger,
+    a_client_from_before_pairing_is_told_to_update_and_pair,
     a_forged_name_or_box_leaves_the_editor_in_control,
     a_listener_reads_nothing,
     recorded_boxes_of_a_start_and_a_stop_are_ignored,
@@ -66,3 +67,8 @@ def test_recorded_boxes_of_a_start_and_a_stop_are_ignored(scene):
 
 def test_a_forged_name_or_box_leaves_the_editor_in_control(scene):
     a_forged_name_or_box_leaves_the_editor_in_control(*scene)
+
+
+def test_a_client_from_before_pairing_is_told_to_update_and_pair(scene):
+    _, stranger, _ = scene
+    a_client_from_before_pairing_is_told_to_update_and_pair(stranger)
