@@ -1,0 +1,7 @@
+"""Python back to blocks: Python text (what Rockly's generators write, and edits of it) turned into a
+Rockly workspace, with what blocks cannot say kept verbatim in Python blocks. No Qt; uses profiles and core.
+
+``convert.python_to_program`` is the entry; ``source`` reads and refuses bad input, ``templates`` matches
+the profile's and the packs' block templates, ``standard`` Blockly's own blocks, ``comments`` keeps the
+text's comments, ``workspace`` builds the block JSON.
+"""
