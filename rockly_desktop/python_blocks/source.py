@@ -46,6 +46,8 @@ def parse_source(text: str, path="<text>") -> PythonSource:
         raise ProgramFileError(path, app_local_text("file_not_text"))
     if len(text.encode("utf-8", "surrogatepass")) > MAX_SOURCE_BYTES:
         raise ProgramFileError(path, app_local_text("file_too_large", megabytes=MAX_SOURCE_BYTES // (1024 * 1024)))
+    if _is_json(text):
+        raise ProgramFileError(path, app_local_text("import_other_language"))
     try:
         tree = parse_python(text)
     except SyntaxError as error:
@@ -72,15 +74,20 @@ def _syntax_error(path, text: str, error: SyntaxError) -> ProgramFileError:
 def _other_language(path, text: str) -> bool:
     """True for a file that is plainly no Python: JSON (a ``.rockly`` program), XML, or a name ending in another
     language's suffix."""
-    stripped = text.lstrip()
-    if stripped.startswith("<"):
+    if text.lstrip().startswith("<"):
         return True
+    return Path(str(path)).suffix.lower() not in ("", ".py", ".pyw")
+
+
+def _is_json(text: str) -> bool:
+    """True for a JSON document of objects or lists (a ``.rockly`` program): Python would take it as a literal."""
+    if not text.lstrip().startswith(("{", "[")):
+        return False
     try:
         json.loads(text)
-        return True
-    except ValueError:
-        pass
-    return Path(str(path)).suffix.lower() not in ("", ".py", ".pyw")
+    except (ValueError, RecursionError):
+        return False
+    return True
 
 
 def _too_deep_line(tree: ast.AST):
