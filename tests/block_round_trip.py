@@ -15,7 +15,8 @@ def generated(editor, registry, path):
 
 def normalized(workspace: dict) -> str:
     """The block tree as JSON without ids and positions: variables by name, an input's block (else its shadow),
-    a comment's text, typed fields' paths and checks."""
+    a comment's text, typed fields' paths and checks. A variable no block uses is not in the Python: it
+    does not count."""
     names = {variable["id"]: variable["name"] for variable in workspace.get("variables", [])}
 
     def clean(value):
@@ -36,8 +37,7 @@ def normalized(workspace: dict) -> str:
             out["params"] = [param["name"] if isinstance(param, dict) else param for param in out["params"]]
         return out
 
-    tree = {"blocks": clean(workspace.get("blocks", {})), "variables": sorted(names.values())}
-    return json.dumps(tree, sort_keys=True)
+    return json.dumps(clean(workspace.get("blocks", {})), sort_keys=True)
 
 
 def round_trip(editor, registry, path, folder) -> tuple:

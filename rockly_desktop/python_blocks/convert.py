@@ -67,14 +67,15 @@ class _Converter:
         imports = []
         while body and isinstance(body[0], (ast.Import, ast.ImportFrom)) and _source_of(body[0]) == NUMBER_IMPORT:
             imports.append(body.pop(0))
-        declared = []
+        declared, declarations = [], []
         while body and _is_declaration(body[0], declared):
-            declared.append(body.pop(0).targets[0].id)
+            declarations.append(body.pop(0))
+            declared.append(declarations[-1].targets[0].id)
         self.handler_defs = {node.name: node for node in body if _is_handler_shape(node)
                              and node.name in _keyword_names(self.source.tree)}
         self.names = _names(self.source.tree, declared, set(self.handler_defs))
         for name in declared + sorted(self.names.variables - set(declared)):
-            self.builder.variable(name)
+            self.builder.declare(name)
         templates = TemplateIndex(self.specs.values())
         self.expressions = ExpressionConverter(self.builder, templates, self.names, self._fill_template)
         self.statements = StatementConverter(self.builder, templates, self.names, self.expressions,
@@ -96,6 +97,9 @@ class _Converter:
         for position, node in reversed(handlers_waiting):
             if node.name not in self._used_handlers:
                 main_blocks[position:position] = self._body([node], _first_line(node) - 1)
+        unreferenced = [node for node in declarations if node.targets[0].id not in self.builder.referenced]
+        if unreferenced and self.kept:  # a Python block may read it: Blockly declares only what blocks use
+            main_blocks[:0] = [self._kept_block(node) for node in unreferenced]
         if self.statements.uses_number_import is False:
             main_blocks[:0] = [self._kept_block(node) for node in imports]
         stacks = stacks + [main_blocks]

@@ -115,6 +115,13 @@ class ExpressionConverter:
                                   extra_state={"itemCount": len(items)})
 
     def _call(self, node):
+        items = _joined_items(node)
+        if items is not None:
+            blocks = [self.block(item) for item in items]
+            if None in blocks or len(blocks) < 3:
+                return None
+            return self.builder.block("text_join", inputs={f"ADD{index}": item for index, item in enumerate(blocks)},
+                                      extra_state={"itemCount": len(blocks)})
         if _is_str_call(node) and not (isinstance(node.args[0], ast.Constant) and isinstance(node.args[0].value, str)):
             return self._text_join_one(node.args[0])
         if isinstance(node.func, ast.Name) and self.names.procedures.get(node.func.id) is True and not node.keywords:
@@ -151,6 +158,24 @@ class ExpressionConverter:
         if None in blocks:
             return None
         return self.builder.block(block_type, inputs=dict(zip(names, blocks, strict=False)))
+
+
+def _joined_items(node):
+    """The items of Blockly's text join of three or more: ``''.join([str(x) for x in [a, b, c]])``, else None."""
+    function = node.func
+    if not (isinstance(function, ast.Attribute) and function.attr == "join" and isinstance(function.value, ast.Constant)
+            and function.value.value == "" and len(node.args) == 1 and not node.keywords):
+        return None
+    comprehension = node.args[0]
+    if not (isinstance(comprehension, ast.ListComp) and len(comprehension.generators) == 1):
+        return None
+    loop = comprehension.generators[0]
+    element = comprehension.elt
+    if (loop.ifs or loop.is_async or not isinstance(loop.target, ast.Name) or not isinstance(loop.iter, ast.List)
+            or not _is_str_call(element) or not isinstance(element.args[0], ast.Name)
+            or element.args[0].id != loop.target.id):
+        return None
+    return loop.iter.elts
 
 
 def _is_str_call(node) -> bool:

@@ -9,6 +9,7 @@ class WorkspaceBuilder:
     def __init__(self):
         self._count = 0
         self.variables = {}  # name -> id
+        self.referenced = set()  # the names a block's field names
 
     def block(self, block_type: str, fields=None, inputs=None, extra_state=None) -> dict:
         """A new block of ``block_type`` (``inputs``: name -> block, wrapped as Blockly's JSON wants)."""
@@ -25,7 +26,12 @@ class WorkspaceBuilder:
 
     def variable(self, name: str) -> dict:
         """The value of a variable field naming ``name`` (the variable is added to the workspace)."""
-        return {"id": self.variables.setdefault(name, f"var_{name}")}
+        self.referenced.add(name)
+        return {"id": self.declare(name)}
+
+    def declare(self, name: str) -> str:
+        """Add the variable ``name`` to the workspace (if new); its id."""
+        return self.variables.setdefault(name, f"var_{name}")
 
     def python_block(self, code: str) -> dict:
         """A Python block holding ``code`` as it is."""
@@ -42,8 +48,9 @@ class WorkspaceBuilder:
             tops.append(top)
             y += 60 * (1 + sum(1 for _ in _stack_blocks(top)))
         workspace = {"blocks": {"languageVersion": 0, "blocks": tops}}
-        if self.variables:
-            workspace["variables"] = [{"name": name, "id": ident} for name, ident in self.variables.items()]
+        used = {name: ident for name, ident in self.variables.items() if name in self.referenced}
+        if used:
+            workspace["variables"] = [{"name": name, "id": ident} for name, ident in used.items()]
         return workspace
 
 
