@@ -3,7 +3,10 @@ one a Python block holding its text; comments become block comments where they s
 import ast
 from dataclasses import dataclass, field
 
+from rockly_desktop.core.app_texts import app_local_text
+from rockly_desktop.core.errors import ProgramFileError
 from rockly_desktop.core.program import Program
+from rockly_desktop.core.workspace_blocks import MAX_BLOCK_DEPTH, block_depth
 from rockly_desktop.python_blocks.expressions import ExpressionConverter
 from rockly_desktop.python_blocks.literals import NOT_CONVERTED, RESERVED, literal_value, plain_name
 from rockly_desktop.python_blocks.statements import NUMBER_IMPORT, StatementConverter
@@ -45,7 +48,8 @@ class Names:
 
 
 def python_to_program(source, profile) -> Conversion:
-    """Convert a parsed ``source.PythonSource`` to a Program for ``profile`` (a ``profiles.profile.Profile``)."""
+    """Convert a parsed ``source.PythonSource`` to a Program for ``profile`` (a ``profiles.profile.Profile``);
+    ProgramFileError when its blocks would nest deeper than a program may (a stack counts one per block)."""
     return _Converter(source, profile).run()
 
 
@@ -107,6 +111,10 @@ class _Converter:
         if left_over:
             main_blocks.append(self._comment_block(left_over))
         workspace = self.builder.workspace([stack for stack in stacks if stack])
+        depth = block_depth(workspace)
+        if depth > MAX_BLOCK_DEPTH:
+            raise ProgramFileError(self.source.path, app_local_text("file_too_deep", depth=depth,
+                                                                    limit=MAX_BLOCK_DEPTH))
         program = Program(self.profile.id, workspace, packs=self.profile.packs_used(workspace))
         return Conversion(program, sorted(self.kept, key=lambda part: part.first_line))
 

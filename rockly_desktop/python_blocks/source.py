@@ -28,6 +28,7 @@ class PythonSource:
     comments: dict  # line number -> (column, comment text without '#')
     header_lines: frozenset  # the lines of Rockly's export header
     profile_id: str = None
+    path: str = "<text>"
 
     @property
     def lines(self) -> list:
@@ -59,7 +60,7 @@ def parse_source(text: str, path="<text>") -> PythonSource:
         raise ProgramFileError(path, app_local_text("import_too_deep_on_line", line=deep_line, limit=MAX_NESTING))
     comments = _comments(text)
     header, profile_id = _header(comments)
-    return PythonSource(text, tree, comments, header, profile_id)
+    return PythonSource(text, tree, comments, header, profile_id, str(path))
 
 
 def _syntax_error(path, text: str, error: SyntaxError) -> ProgramFileError:
