@@ -278,6 +278,7 @@ def _import(args, language: str) -> int:
     from rockly_desktop.profiles.registry import ProfileRegistry
     from rockly_desktop.python_blocks.convert import python_to_program
     from rockly_desktop.python_blocks.source import read_python_file
+    from rockly_desktop.python_blocks.templates import written_for
 
     def refuse(key, **values):
         print(f"rockly import: {args.program}: {app_text(key, language, **values)}", file=sys.stderr)
@@ -295,7 +296,11 @@ def _import(args, language: str) -> int:
         wanted = args.profile or written
         if wanted and wanted not in registry.profiles:
             return refuse("import_unknown_robot", written=wanted)
-        conversion = python_to_program(source, registry.get(wanted) if wanted else registry.default())
+        profile = registry.get(wanted) if wanted else registry.default()
+        other = None if written else written_for(source.tree, profile, registry.profiles.values())
+        if other is not None:
+            return refuse("import_other_robot", written=other, wanted=profile.id)
+        conversion = python_to_program(source, profile)
         write_text_atomically(args.output, conversion.program.to_json())
     except RocklyError as error:
         print(f"rockly import: {error.in_language(language)}", file=sys.stderr)

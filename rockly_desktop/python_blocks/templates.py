@@ -130,3 +130,29 @@ class TemplateIndex:
     def statement_templates(self, node) -> list:
         """The statement templates that may match ``node``."""
         return self._statements.get(_key(node), [])
+
+
+def robot_commands(tree) -> set:
+    """The names of the ``robot.NAME(...)`` calls in a syntax tree."""
+    return {node.func.attr for node in ast.walk(tree)
+            if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+            and isinstance(node.func.value, ast.Name) and node.func.value.id == "robot"}
+
+
+def profile_commands(specs) -> set:
+    """The ``robot`` commands a profile's block templates call."""
+    commands = set()
+    for spec in specs:
+        template = template_of(spec)
+        if template is not None:
+            commands |= robot_commands(template.pattern)
+    return commands
+
+
+def written_for(tree, profile, profiles) -> str:
+    """The id of another of ``profiles`` whose commands the program calls when ``profile`` lacks some, else None."""
+    used = robot_commands(tree)
+    if used <= profile_commands(profile.blocks):
+        return None
+    return next((other.id for other in profiles if other.id != profile.id
+                 and used <= profile_commands(other.blocks)), None)
