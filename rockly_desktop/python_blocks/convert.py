@@ -7,11 +7,14 @@ from rockly_desktop.core.app_texts import app_local_text
 from rockly_desktop.core.errors import ProgramFileError
 from rockly_desktop.core.program import Program
 from rockly_desktop.core.workspace_blocks import MAX_BLOCK_DEPTH, block_depth
-from rockly_desktop.python_blocks.expressions import ExpressionConverter
+from rockly_desktop.python_blocks.expressions import IMPORT_MATH, IMPORT_RANDOM, ExpressionConverter
 from rockly_desktop.python_blocks.literals import NOT_CONVERTED, RESERVED, literal_value, plain_name
 from rockly_desktop.python_blocks.statements import NUMBER_IMPORT, StatementConverter
 from rockly_desktop.python_blocks.templates import TemplateIndex
 from rockly_desktop.python_blocks.workspace import WorkspaceBuilder, comment_icon
+
+BLOCKLY_IMPORTS = (NUMBER_IMPORT, IMPORT_MATH, IMPORT_RANDOM)
+"""The imports Blockly's generator writes for the blocks that need them."""
 
 
 @dataclass(frozen=True)
@@ -69,7 +72,7 @@ class _Converter:
     def run(self) -> Conversion:
         body = list(self.source.tree.body)
         imports = []
-        while body and isinstance(body[0], (ast.Import, ast.ImportFrom)) and _source_of(body[0]) == NUMBER_IMPORT:
+        while body and isinstance(body[0], (ast.Import, ast.ImportFrom)) and _source_of(body[0]) in BLOCKLY_IMPORTS:
             imports.append(body.pop(0))
         declared, declarations = [], []
         while body and _is_declaration(body[0], declared):
@@ -104,8 +107,8 @@ class _Converter:
         unreferenced = [node for node in declarations if node.targets[0].id not in self.builder.referenced]
         if unreferenced and self.kept:  # a Python block may read it: Blockly declares only what blocks use
             main_blocks[:0] = [self._kept_block(node) for node in unreferenced]
-        if self.statements.uses_number_import is False:
-            main_blocks[:0] = [self._kept_block(node) for node in imports]
+        needed = self.expressions.imports | ({NUMBER_IMPORT} if self.statements.uses_number_import else set())
+        main_blocks[:0] = [self._kept_block(node) for node in imports if _source_of(node) not in needed]
         stacks = stacks + [main_blocks]
         left_over = self._unclaimed_comments()
         if left_over:

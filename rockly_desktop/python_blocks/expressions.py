@@ -8,6 +8,13 @@ from rockly_desktop.python_blocks.literals import NOT_CONVERTED, literal_value, 
 COMPARE = {ast.Eq: "EQ", ast.NotEq: "NEQ", ast.Lt: "LT", ast.LtE: "LTE", ast.Gt: "GT", ast.GtE: "GTE"}
 ARITHMETIC = {ast.Add: "ADD", ast.Sub: "MINUS", ast.Mult: "MULTIPLY", ast.Div: "DIVIDE", ast.Pow: "POWER"}
 BOOLEAN = {ast.And: "AND", ast.Or: "OR"}
+# math.NAME(x) -> (block type, its OP): Blockly's math_single, math_round (all import math)
+MATH_CALLS = {"sqrt": ("math_single", "ROOT"), "fabs": ("math_single", "ABS"), "log": ("math_single", "LN"),
+              "log10": ("math_single", "LOG10"), "exp": ("math_single", "EXP"),
+              "ceil": ("math_round", "ROUNDUP"), "floor": ("math_round", "ROUNDDOWN")}
+TRIGONOMETRY = {"sin": "SIN", "cos": "COS", "tan": "TAN"}
+MATH_CONSTANTS = {"pi": "PI", "e": "E"}
+IMPORT_MATH, IMPORT_RANDOM = "import math", "import random"
 
 
 class ExpressionConverter:
@@ -18,6 +25,7 @@ class ExpressionConverter:
         self.templates = templates
         self.names = names  # the program's Names: .variables, .procedures (name -> has a return), .reserved
         self.fill_template = fill_template
+        self.imports = set()  # the imports the blocks made need (Blockly writes them again)
 
     def block(self, node):
         """The value block saying ``node``, or None."""
@@ -61,6 +69,9 @@ class ExpressionConverter:
             if None in parts:
                 return None
             return make("logic_ternary", inputs=dict(zip(("IF", "THEN", "ELSE"), parts, strict=False)))
+        if isinstance(node, ast.Attribute) and _is_module(node.value, "math") and node.attr in MATH_CONSTANTS:
+            self.imports.add(IMPORT_MATH)
+            return make("math_constant", {"CONSTANT": MATH_CONSTANTS[node.attr]})
         if isinstance(node, ast.List):
             items = [self.block(item) for item in node.elts]
             if None in items:
@@ -92,6 +103,9 @@ class ExpressionConverter:
             joined = self._text_join([node.left, node.right])
             if joined is not None:
                 return joined
+        if (isinstance(node.op, ast.Mult) and isinstance(node.left, ast.List) and len(node.left.elts) == 1
+                and not isinstance(node.left.elts[0], ast.Starred)):
+            return self._two_inputs("lists_repeat", node.left.elts[0], node.right, ("ITEM", "NUM"))
         if isinstance(node.op, ast.Mod):
             return self._two_inputs("math_modulo", node.left, node.right, ("DIVIDEND", "DIVISOR"))
         if type(node.op) in ARITHMETIC:
@@ -124,9 +138,44 @@ class ExpressionConverter:
                                       extra_state={"itemCount": len(blocks)})
         if _is_str_call(node) and not (isinstance(node.args[0], ast.Constant) and isinstance(node.args[0].value, str)):
             return self._text_join_one(node.args[0])
+        if node.keywords or any(isinstance(argument, ast.Starred) for argument in node.args):
+            return None
+        function, arguments = node.func, node.args
+        if isinstance(function, ast.Name) and function.id == "round" and len(arguments) == 1:
+            return self._math("math_round", "ROUND", arguments[0])
+        if isinstance(function, ast.Attribute) and _is_module(function.value, "math"):
+            return self._math_call(function.attr, arguments)
+        if isinstance(function, ast.Attribute) and _is_module(function.value, "random"):
+            if function.attr == "random" and not arguments:
+                self.imports.add(IMPORT_RANDOM)
+                return self.builder.block("math_random_float")
+            if function.attr == "randint" and len(arguments) == 2:
+                block = self._two_inputs("math_random_int", arguments[0], arguments[1], ("FROM", "TO"))
+                if block is not None:
+                    self.imports.add(IMPORT_RANDOM)
+                return block
+            return None
         if isinstance(node.func, ast.Name) and self.names.procedures.get(node.func.id) is True and not node.keywords:
             return self.procedure_call("procedures_callreturn", node)
         return None
+
+    def _math_call(self, name: str, arguments):
+        if name in MATH_CALLS and len(arguments) == 1:
+            return self._math(*MATH_CALLS[name], arguments[0])
+        if (name == "pow" and len(arguments) == 2 and isinstance(arguments[0], ast.Constant)
+                and type(arguments[0].value) is int and arguments[0].value == 10):
+            return self._math("math_single", "POW10", arguments[1])
+        if name in TRIGONOMETRY and len(arguments) == 1:
+            degrees = _degrees(arguments[0])
+            return self._math("math_trig", TRIGONOMETRY[name], degrees) if degrees is not None else None
+        return None
+
+    def _math(self, block_type: str, operator: str, argument):
+        inner = self.block(argument)
+        if inner is None:
+            return None
+        self.imports.add(IMPORT_MATH)
+        return self.builder.block(block_type, {"OP": operator}, {"NUM": inner})
 
     def _text_join_one(self, inner):
         block = self.block(inner)
@@ -158,6 +207,23 @@ class ExpressionConverter:
         if None in blocks:
             return None
         return self.builder.block(block_type, inputs=dict(zip(names, blocks, strict=False)))
+
+
+def _is_module(node, name: str) -> bool:
+    return isinstance(node, ast.Name) and node.id == name
+
+
+def _degrees(node):
+    """``x`` of Blockly's ``x / 180.0 * math.pi`` (degrees to radians), else None."""
+    if not (isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult) and isinstance(node.right, ast.Attribute)
+            and _is_module(node.right.value, "math") and node.right.attr == "pi"):
+        return None
+    division = node.left
+    if not (isinstance(division, ast.BinOp) and isinstance(division.op, ast.Div)
+            and isinstance(division.right, ast.Constant) and type(division.right.value) is float
+            and division.right.value == 180.0):
+        return None
+    return division.left
 
 
 def _joined_items(node):

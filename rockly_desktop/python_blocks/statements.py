@@ -36,6 +36,10 @@ class StatementConverter:
 
     def _expr(self, node):
         call = node.value
+        if (isinstance(call, ast.Call) and isinstance(call.func, ast.Name) and call.func.id == "print"
+                and len(call.args) == 1 and not call.keywords and not isinstance(call.args[0], ast.Starred)):
+            text = self._value(call.args[0])
+            return self.builder.block("text_print", inputs={"TEXT": text}) if text is not None else None
         if (isinstance(call, ast.Call) and isinstance(call.func, ast.Name) and not call.keywords
                 and self.names.procedures.get(call.func.id) is False):
             return self.expressions.procedure_call("procedures_callnoreturn", call)

@@ -77,6 +77,8 @@ def test_every_made_block_kind_round_trips(made_registry, tmp_path):
 
 STANDARD = """\
 from numbers import Number
+import math
+import random
 
 x = None
 y = None
@@ -116,6 +118,9 @@ for count in range(int(add(1, 2))):
 robot.show_info(str((add(2, 3) * 2) / 4 ** 2))
 x = None
 y = 'a' + 'b'
+print(''.join([str(x2) for x2 in [round(math.sqrt(2)), math.ceil(math.pi), math.floor(math.e)]]))
+print([random.randint(1, 6)] * 3)
+print(math.sin(random.random() / 180.0 * math.pi) + math.pow(10,math.fabs(-2)))
 """
 
 
