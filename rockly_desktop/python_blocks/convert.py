@@ -439,6 +439,7 @@ def _names(tree, declared: list, handlers: set) -> Names:
             procedures[node.name] = isinstance(last, ast.Return) and last.value is not None
             parameters[node.name] = params
             variables.update(params)
+    variables |= range_targets & loaded  # a count's variable read in its body: Blockly's "count with"
     variables = {name for name in variables if plain_name(name) is not None and name not in procedures}
     return Names(variables, procedures, parameters, loaded)
 

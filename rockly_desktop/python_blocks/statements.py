@@ -3,7 +3,7 @@ and function calls as its Python generator writes them. ``None``: no block says 
 import ast
 
 from rockly_desktop.core.python_syntax import parse_python
-from rockly_desktop.python_blocks.literals import plain_name
+from rockly_desktop.python_blocks.literals import literal_value, plain_name
 
 NUMBER_IMPORT = "from numbers import Number"
 
@@ -112,6 +112,11 @@ class StatementConverter:
         name = plain_name(target, self.names.reserved)
         if name is None or name not in self.names.variables:
             return None
+        counted = _counted_range(node.iter)
+        if counted is not None:
+            inputs = {key: self.builder.block("math_number", {"NUM": value}) for key, value in counted.items()}
+            return self.builder.block("controls_for", {"VAR": self.builder.variable(name)},
+                                      {**inputs, "DO": self._stack(node.body)})
         items = self._value(node.iter)
         if items is None:
             return None
@@ -144,6 +149,37 @@ def _range_count(node):
             and len(count.args) == 1 and not count.keywords and not isinstance(count.args[0], ast.Starred)):
         return count.args[0]
     return None
+
+
+def _counted_range(node):
+    """``{FROM, TO, BY}`` of Blockly's "count with" over whole numbers as it writes it (``range(5)``,
+    ``range(1, 11)``, ``range(1, 11, 2)``, ``range(10, 0, -1)``), else None."""
+    if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "range"
+            and not node.keywords and 1 <= len(node.args) <= 3):
+        return None
+    values = [literal_value(argument) for argument in node.args]
+    if not all(type(value) is int for value in values):
+        return None
+    if len(values) == 1:
+        start, stop, step = 0, values[0], 1
+    else:
+        start, stop, step = values[0], values[1], values[2] if len(values) == 3 else 1
+    if step > 0 and start <= stop - 1:
+        counted = {"FROM": start, "TO": stop - 1, "BY": step}
+    elif step < 0 and start > stop + 1:
+        counted = {"FROM": start, "TO": stop + 1, "BY": -step}
+    else:
+        return None
+    written = _written_range(counted["FROM"], counted["TO"], counted["BY"])
+    return counted if written == values else None
+
+
+def _written_range(start: int, end: int, step: int) -> list:
+    """The arguments of ``range(...)`` Blockly writes for counting from ``start`` to ``end`` by ``step``."""
+    if start <= end:
+        arguments = [end + 1] if start == 0 and step == 1 else [start, end + 1]
+        return arguments + ([step] if step != 1 else [])
+    return [start, end - 1, -step]
 
 
 def _change_delta(name: str, value):

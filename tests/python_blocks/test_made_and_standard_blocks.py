@@ -85,16 +85,19 @@ y = None
 total = None
 items = None
 item = None
+i = None
+j = None
+k = None
 
 # Describe this function...
 def add(x, y):
-  global total, items, item
+  global total, items, item, i, j, k
   total = x + y
   return total
 
 # Move a little.
 def step():
-  global x, y, total, items, item
+  global x, y, total, items, item, i, j, k
   robot.drive(0.5, 'forward')
 
 
@@ -120,6 +123,10 @@ x = None
 y = 'a' + 'b'
 print(''.join([str(x2) for x2 in [round(math.sqrt(2)), math.ceil(math.pi), math.floor(math.e)]]))
 print([random.randint(1, 6)] * 3)
+for i in range(5):
+  for j in range(1, 11, 2):
+    for k in range(10, 0, -1):
+      print(i + j * k)
 print(math.sin(random.random() / 180.0 * math.pi) + math.pow(10,math.fabs(-2)))
 """
 
