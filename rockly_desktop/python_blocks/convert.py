@@ -65,19 +65,13 @@ class _Converter:
         self.builder = WorkspaceBuilder()
         self.kept = []
         self.claimed_comments = set(source.header_lines)
-        self.kept_lines = set()
         self.handler_defs = {}
         self._used_handlers = set()
 
     def run(self) -> Conversion:
         body = list(self.source.tree.body)
-        imports = []
-        while body and isinstance(body[0], (ast.Import, ast.ImportFrom)) and _source_of(body[0]) in BLOCKLY_IMPORTS:
-            imports.append(body.pop(0))
-        declared, declarations = [], []
-        while body and _is_declaration(body[0], declared):
-            declarations.append(body.pop(0))
-            declared.append(declarations[-1].targets[0].id)
+        imports, declarations = _leading_imports(body), _leading_declarations(body)
+        declared = [node.targets[0].id for node in declarations]
         self.handler_defs = {node.name: node for node in body if _is_handler_shape(node)
                              and node.name in _keyword_names(self.source.tree)}
         self.names = _names(self.source.tree, declared, set(self.handler_defs))
@@ -389,6 +383,23 @@ def _default_variable(definition: dict, name: str) -> str:
 
 def _source_of(node) -> str:
     return ast.unparse(node)
+
+
+def _leading_imports(body: list) -> list:
+    """The imports Blockly writes, taken off the start of ``body``."""
+    imports = []
+    while body and isinstance(body[0], (ast.Import, ast.ImportFrom)) and _source_of(body[0]) in BLOCKLY_IMPORTS:
+        imports.append(body.pop(0))
+    return imports
+
+
+def _leading_declarations(body: list) -> list:
+    """Blockly's variable declarations (``x = None``, each name once), taken off the start of ``body``."""
+    declarations, declared = [], []
+    while body and _is_declaration(body[0], declared):
+        declarations.append(body.pop(0))
+        declared.append(declarations[-1].targets[0].id)
+    return declarations
 
 
 def _is_declaration(node, declared: list) -> bool:

@@ -4,6 +4,7 @@ import ast
 
 from rockly_desktop.core.python_syntax import parse_python
 from rockly_desktop.python_blocks.literals import literal_value, plain_name
+from rockly_desktop.python_blocks.workspace import chain
 
 NUMBER_IMPORT = "from numbers import Number"
 
@@ -131,10 +132,7 @@ class StatementConverter:
 
     def _stack(self, statements):
         """The first block of the stack saying ``statements`` (``pass`` alone: empty), or None."""
-        blocks = self.body(statements)
-        for before, after in zip(blocks, blocks[1:], strict=False):
-            before["next"] = {"block": after}
-        return blocks[0] if blocks else None
+        return chain(self.body(statements))
 
 
 def _range_count(node):
