@@ -8,6 +8,7 @@
     rockly profiles reference           print the profile.yaml reference (Markdown)
     (``rockly plugins ...`` is the older name of ``rockly profiles ...`` and still works)
     rockly export PROGRAM -o OUT.py     write the Python generated from a program (-o -: to standard output)
+    rockly import PROGRAM.py -o OUT.rockly  Python back to blocks; what blocks cannot say stays in Python blocks
     rockly export PROGRAM --standalone -o OUT.py  ... as a file that runs without the window where Rockly's
                                         runtime is installed (runtime/: rockly-runtime; see runtime/standalone.py)
     rockly run PROGRAM [--answer A]...  run a program on the simulator (or --backend KIND), without a window
@@ -36,8 +37,9 @@ from pathlib import Path
 
 from rockly_desktop import __version__
 
-SUBCOMMANDS = ("profiles", "plugins", "export", "run", "sim", "replay", "recordings", "blocks", "lessons", "agent",
-               "robot")
+SUBCOMMANDS = ("profiles", "plugins", "export", "import", "run", "sim", "replay", "recordings", "blocks", "lessons",
+               "agent", "robot")
+IMPORT_KEPT_PYTHON = 3  # `rockly import`'s exit code when parts stayed Python (1: an error, 0: lossless)
 
 
 def _tool_parser() -> argparse.ArgumentParser:
@@ -64,6 +66,13 @@ def _tool_parser() -> argparse.ArgumentParser:
                         help="the .py file to write (- for standard output)")
     export.add_argument("--standalone", action="store_true", help=_text("cli_standalone_help"))
     _language_option(export)
+
+    converting = commands.add_parser("import", help=_text("cli_import_help"))
+    converting.add_argument("program", type=Path, help="a Python program (.py)")
+    converting.add_argument("-o", "--output", type=Path, required=True, help="the .rockly file to write")
+    converting.add_argument("--profile", help="the robot profile (default: the one the file's header names)")
+    converting.add_argument("--force", action="store_true", help="replace OUT if it exists")
+    _language_option(converting)
 
     run = commands.add_parser("run", help="run a program without a window")
     run.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
@@ -261,6 +270,52 @@ def _export(program_path: Path, output: Path, language: str, standalone: bool = 
     return 0
 
 
+def _import(args, language: str) -> int:
+    """``rockly import``: a Python program turned into blocks; says what stayed Python."""
+    from rockly_desktop.core.app_texts import app_text
+    from rockly_desktop.core.errors import RocklyError
+    from rockly_desktop.core.program import write_text_atomically
+    from rockly_desktop.profiles.registry import ProfileRegistry
+    from rockly_desktop.python_blocks.convert import python_to_program
+    from rockly_desktop.python_blocks.source import read_python_file
+    from rockly_desktop.python_blocks.templates import written_for
+
+    def refuse(key, **values):
+        print(f"rockly import: {args.program}: {app_text(key, language, **values)}", file=sys.stderr)
+        return 1
+
+    if args.output.exists() and not args.force:
+        print(f"rockly import: {app_text('import_exists', language, path=args.output)}", file=sys.stderr)
+        return 1
+    try:
+        source = read_python_file(args.program)
+        registry = ProfileRegistry.discover()
+        written = source.profile_id
+        if written and args.profile and written != args.profile:
+            return refuse("import_other_robot", written=written, wanted=args.profile)
+        wanted = args.profile or written
+        if wanted and wanted not in registry.profiles:
+            return refuse("import_unknown_robot", written=wanted)
+        profile = registry.get(wanted) if wanted else registry.default()
+        other = None if written else written_for(source.tree, profile, registry.profiles.values())
+        if other is not None:
+            return refuse("import_other_robot", written=other, wanted=profile.id)
+        conversion = python_to_program(source, profile)
+        write_text_atomically(args.output, conversion.program.to_json())
+    except RocklyError as error:
+        print(f"rockly import: {error.in_language(language)}", file=sys.stderr)
+        return 1
+    print(app_text("cli_wrote", language, path=args.output))
+    if conversion.lossless:
+        print(app_text("import_lossless", language))
+        return 0
+    print(app_text("import_kept_python", language, count=len(conversion.kept_python)))
+    for part in conversion.kept_python:
+        print(app_text("import_kept_line", language, line=part.first_line) if part.first_line == part.last_line
+              else app_text("import_kept_lines", language, first=part.first_line, last=part.last_line))
+    return IMPORT_KEPT_PYTHON
+
+
 def _standalone_text(program_path: Path, profile, run_code: dict, workspace: dict, language: str) -> str:
     """The standalone file (``runtime.standalone_file``), with the teacher's limits the window keeps now."""
     from rockly_desktop.core.workspace_blocks import block_types_by_id
@@ -317,6 +372,8 @@ def main(argv=None) -> int:
             if args.profile_command == "reference":
                 return _profiles_reference()
             return _profiles_list() if args.profile_command == "list" else _profiles_validate(args.path)
+        if args.command == "import":
+            return _import(args, args.language or _app_language())
         if args.command == "run":
             from rockly_desktop.run_command import run_program
 

@@ -32,6 +32,7 @@ ALLOWED = {
     "tab", "enter",  # keys, as German keyboards and manuals name them
     "distribution", "distributionen", "jazzy", "twiststamped",  # ROS 2's own names
     "debian", "ubuntu", "noetic", "firewall",  # a robot computer's system, ROS 1's distribution; German says Firewall
+    "force",  # the command line's option --force, typed as it is
 }
 # Common English words and this app's own English vocabulary (the English texts, below) that are not German.
 COMMON_ENGLISH = set("""
