@@ -193,7 +193,8 @@ def start_kiosk(window, start_program=None):
 
 
 def generate_headless(program_path, language: str = "en"):
-    """Read a program file and let a windowless editor generate its Python.
+    """Read a program file and let a windowless editor generate its Python (a ``.py`` program is first turned
+    into blocks in memory, ``python_blocks.program_file``).
 
     Returns (ProgramToOpen, plain Python, instrumented run code, workspace JSON). Raises
     RocklyError with a message for people: a bad file, no profile, unknown blocks, or a
@@ -217,6 +218,7 @@ def generate_many(program_paths, language: str = "en"):
     from rockly_desktop.core.errors import RocklyError
     from rockly_desktop.profiles.opening import read_program_to_open, unknown_blocks_error
     from rockly_desktop.profiles.registry import ProfileRegistry
+    from rockly_desktop.python_blocks.program_file import is_python_program, read_python_program_to_open
 
     create_application()
     registry = ProfileRegistry.discover()
@@ -226,7 +228,8 @@ def generate_many(program_paths, language: str = "en"):
     try:
         for program_path in program_paths:
             try:
-                program = read_program_to_open(program_path, registry, registry.default())
+                program = (read_python_program_to_open(program_path, registry) if is_python_program(program_path)
+                           else read_program_to_open(program_path, registry, registry.default()))
                 python = editor.python_for(program)
                 run_code = editor.call_and_wait("getRunCode")
                 workspace = editor.call_and_wait("getState")["workspace"]

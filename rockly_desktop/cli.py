@@ -276,31 +276,13 @@ def _import(args, language: str) -> int:
     from rockly_desktop.core.errors import RocklyError
     from rockly_desktop.core.program import write_text_atomically
     from rockly_desktop.profiles.registry import ProfileRegistry
-    from rockly_desktop.python_blocks.convert import python_to_program
-    from rockly_desktop.python_blocks.source import read_python_file
-    from rockly_desktop.python_blocks.templates import written_for
-
-    def refuse(key, **values):
-        print(f"rockly import: {args.program}: {app_text(key, language, **values)}", file=sys.stderr)
-        return 1
+    from rockly_desktop.python_blocks.program_file import convert_python_file
 
     if args.output.exists() and not args.force:
         print(f"rockly import: {app_text('import_exists', language, path=args.output)}", file=sys.stderr)
         return 1
     try:
-        source = read_python_file(args.program)
-        registry = ProfileRegistry.discover()
-        written = source.profile_id
-        if written and args.profile and written != args.profile:
-            return refuse("import_other_robot", written=written, wanted=args.profile)
-        wanted = args.profile or written
-        if wanted and wanted not in registry.profiles:
-            return refuse("import_unknown_robot", written=wanted)
-        profile = registry.get(wanted) if wanted else registry.default()
-        other = None if written else written_for(source.tree, profile, registry.profiles.values())
-        if other is not None:
-            return refuse("import_other_robot", written=other, wanted=profile.id)
-        conversion = python_to_program(source, profile)
+        conversion = convert_python_file(args.program, ProfileRegistry.discover(), args.profile)
         write_text_atomically(args.output, conversion.program.to_json())
     except RocklyError as error:
         print(f"rockly import: {error.in_language(language)}", file=sys.stderr)
