@@ -39,6 +39,7 @@ from rockly_desktop import __version__
 
 SUBCOMMANDS = ("profiles", "plugins", "export", "import", "run", "sim", "replay", "recordings", "blocks", "lessons",
                "agent", "robot")
+PROGRAM_HELP = "a .rockly file, a first-Rockly .xml file or a Python program (.py), turned into blocks in memory"
 IMPORT_KEPT_PYTHON = 3  # `rockly import`'s exit code when parts stayed Python (1: an error, 0: lossless)
 
 
@@ -61,10 +62,11 @@ def _tool_parser() -> argparse.ArgumentParser:
     profile_commands.add_parser("reference", help="print the profile.yaml reference (Markdown)")
 
     export = commands.add_parser("export", help="write the Python generated from a program")
-    export.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
+    export.add_argument("program", type=Path, help=PROGRAM_HELP)
     export.add_argument("-o", "--output", type=Path, required=True,
                         help="the .py file to write (- for standard output)")
     export.add_argument("--standalone", action="store_true", help=_text("cli_standalone_help"))
+    _python_profile_option(export)
     _language_option(export)
 
     converting = commands.add_parser("import", help=_text("cli_import_help"))
@@ -75,7 +77,7 @@ def _tool_parser() -> argparse.ArgumentParser:
     _language_option(converting)
 
     run = commands.add_parser("run", help="run a program without a window")
-    run.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
+    run.add_argument("program", type=Path, help=PROGRAM_HELP)
     run.add_argument("--backend", default=links.DEFAULT_KIND, choices=[entry.kind for entry in links.link_kinds()],
                      help="the robot to run on: " + ", ".join(f"{entry.kind} ({entry.title})" for entry in
                                                               links.link_kinds()) + f"; default: {links.DEFAULT_KIND}")
@@ -84,6 +86,7 @@ def _tool_parser() -> argparse.ArgumentParser:
                      help="an answer for the next tablet question (repeatable)")
     run.add_argument("--speed", type=float, default=1.0, help="simulated time runs this many times faster")
     run.add_argument("--record", type=Path, metavar="OUT.mcap", help="record the run to this MCAP file")
+    _python_profile_option(run)
     _language_option(run)
 
     replay = commands.add_parser("replay", help="print a recorded run's timeline")
@@ -240,7 +243,20 @@ def _profiles_reference() -> int:
     return 0
 
 
-def _export(program_path: Path, output: Path, language: str, standalone: bool = False) -> int:
+def _python_profile_option(command):
+    command.add_argument("--profile", help="for a .py program: the robot profile (default: the one the file's header "
+                                           "names); a .rockly or .xml program names its own")
+
+
+def _refuse_profile_option(parser, args) -> None:
+    """``--profile`` is for a ``.py`` program only: a program file names its robot itself (argparse's error)."""
+    from rockly_desktop.python_blocks.program_file import is_python_program
+
+    if args.profile and not is_python_program(args.program):
+        parser.error("--profile is for a .py program only: a .rockly or .xml program names its robot itself")
+
+
+def _export(program_path: Path, output: Path, language: str, standalone: bool = False, profile: str = None) -> int:
     from rockly_desktop.app import generate_headless
     from rockly_desktop.core.app_texts import app_text
     from rockly_desktop.core.errors import RocklyError
@@ -250,7 +266,7 @@ def _export(program_path: Path, output: Path, language: str, standalone: bool = 
 
     to_stdout = str(output) == "-" or _is_standard_output(output)
     try:
-        program, python, run_code, workspace = generate_headless(program_path, language)
+        program, python, run_code, workspace = generate_headless(program_path, language, profile)
         for warning in opening_warnings(program, language):
             print(app_text("cli_warning", language, command="rockly export", warning=warning), file=sys.stderr)
         if standalone:
@@ -347,7 +363,10 @@ def main(argv=None) -> int:
     if argv and argv[0] in SUBCOMMANDS:
         from rockly_desktop.runtime.options import connection
 
-        args = _tool_parser().parse_args(argv)
+        parser = _tool_parser()
+        args = parser.parse_args(argv)
+        if args.command in ("run", "export"):
+            _refuse_profile_option(parser, args)
         if args.command in ("profiles", "plugins"):
             if args.profile_command == "new":
                 return _profiles_new(args.name, args.dir)
@@ -361,7 +380,8 @@ def main(argv=None) -> int:
 
             return run_program(args.program, args.answer, args.speed, args.language or _app_language(),
                                backend=args.backend,
-                               connection=connection(args.backend, args), record=args.record)
+                               connection=connection(args.backend, args), record=args.record,
+                               python_profile=args.profile)
         if args.command in ("replay", "recordings"):
             from rockly_desktop.recording_command import list_recordings, replay
 
@@ -389,7 +409,7 @@ def main(argv=None) -> int:
 
             return serve_simulator(args.profile, args.serve_on, connection(args.serve_on, args), args.speed,
                                    args.answer, window=args.window)
-        return _export(args.program, args.output, args.language or _app_language(), args.standalone)
+        return _export(args.program, args.output, args.language or _app_language(), args.standalone, args.profile)
     args = _gui_parser().parse_args(argv)
     from rockly_desktop.app import run_gui
 

@@ -25,12 +25,14 @@ COMMAND = "rockly run"
 
 
 def run_program(program_path, answers=(), speed: float = 1.0, language: str = "en", out=print,
-                backend: str = DEFAULT_KIND, connection: dict = None, record=None, teacher=None) -> int:
+                backend: str = DEFAULT_KIND, connection: dict = None, record=None, teacher=None,
+                python_profile: str = None) -> int:
     """Run ``program_path`` headless on its profile's robot over the ``backend`` kind of robot link
     (the built-in simulator by default; ``connection``: that link's settings); returns the exit status.
 
     ``record``: the MCAP file to record the run to (none without it); ``teacher`` (TeacherSettings)
-    gives the limits the run keeps, by default the window's."""
+    gives the limits the run keeps, by default the window's. A ``.py`` program is turned into blocks in memory
+    first, for ``python_profile`` (by default the robot its header names), and runs as those blocks."""
     from rockly_desktop.app import generate_headless
     from rockly_desktop.profiles.opening import opening_warnings
 
@@ -39,7 +41,7 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
     process = ProgramProcess.start(hidden=[settings_folder(), default_limits_path().parent])
     try:
         try:
-            program, _python, run_code, workspace = generate_headless(program_path, language)
+            program, _python, run_code, workspace = generate_headless(program_path, language, python_profile)
         except RocklyError as error:
             return failed(COMMAND, error, language)
         run = Run(program.profile, run_code, block_types_by_id(workspace), language, COMMAND, out=out,

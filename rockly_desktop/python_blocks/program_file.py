@@ -33,9 +33,10 @@ def convert_python_file(path, registry, profile_id: str = None) -> Conversion:
     return python_to_program(source, profile)
 
 
-def read_python_program_to_open(path, registry) -> ProgramToOpen:
-    """The Python program at ``path`` as blocks to generate and run, checked as a ``.rockly`` file is; its
-    ``python_blocks`` name the lines that stayed Python. ProgramFileError as ``convert_python_file`` raises it."""
-    conversion = convert_python_file(path, registry)
+def read_python_program_to_open(path, registry, profile_id: str = None) -> ProgramToOpen:
+    """The Python program at ``path`` (for ``profile_id``, as ``convert_python_file`` chooses it) as blocks to
+    generate and run, checked as a ``.rockly`` file is; its ``python_blocks`` name the lines that stayed Python.
+    ProgramFileError as ``convert_python_file`` raises it."""
+    conversion = convert_python_file(path, registry, profile_id)
     return program_to_open(path, conversion.program, registry, registry.default(),
                            [(part.first_line, part.last_line) for part in conversion.kept_python])
