@@ -1,12 +1,15 @@
 """``rockly run`` and ``rockly export`` of a ``.py`` program: turned into blocks in memory and run or exported as
 the same ``.rockly`` would be (real processes, the built-in simulator); bad input refused as ``rockly import``
 refuses it, with nothing written."""
+import json
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 from standalone_tools import environment, run_file
+
+from rockly_desktop.recording.reading import read_recording
 
 REPO = Path(__file__).resolve().parents[2]
 EXAMPLES = sorted((REPO / "examples").rglob("*.rockly"))
@@ -132,3 +135,17 @@ def test_profile_chooses_the_robot_of_a_py_program_and_is_refused_for_a_rockly_f
     assert ran.returncode == 0 and ran.stdout.splitlines()[-2:] == ["print   hi", "finished"], ran.stderr
     for_a_file = rockly(tmp_path, "run", EXAMPLES[0], "--profile", "hobbit")
     assert for_a_file.returncode == 2 and "--profile is for a .py program only" in for_a_file.stderr
+
+
+def test_a_recorded_run_of_a_py_program_keeps_the_blocks_it_became(tmp_path):
+    program = tmp_path / "mixed.py"
+    program.write_text(PYTHON_BLOCKS)
+    recording = tmp_path / "run.mcap"
+    result = rockly(tmp_path, "run", program, "--speed", "50", "--record", recording)
+    assert result.returncode == 0, result.stderr
+    recorded = read_recording(recording)
+    assert recorded.metadata["program"] == "mixed.py"
+    document = json.loads(recorded.program)
+    assert document["profile"] == "hobbit"
+    top = document["workspace"]["blocks"]["blocks"][0]
+    assert (top["type"], top["next"]["block"]["type"]) == ("rockly_python", "hobbit_move")
