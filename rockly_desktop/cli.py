@@ -244,16 +244,17 @@ def _profiles_reference() -> int:
 
 
 def _python_profile_option(command):
-    command.add_argument("--profile", help="for a .py program: the robot profile (default: the one the file's header "
-                                           "names); a .rockly or .xml program names its own")
+    command.add_argument("--profile", help=_text("cli_python_profile_help"))
 
 
 def _refuse_profile_option(parser, args) -> None:
-    """``--profile`` is for a ``.py`` program only: a program file names its robot itself (argparse's error)."""
+    """``--profile`` is for a ``.py`` program only: a program file names its robot itself (argparse's error, in the
+    command's language)."""
+    from rockly_desktop.core.app_texts import app_text
     from rockly_desktop.python_blocks.program_file import is_python_program
 
     if args.profile and not is_python_program(args.program):
-        parser.error("--profile is for a .py program only: a .rockly or .xml program names its robot itself")
+        parser.error(app_text("cli_profile_for_python_only", args.language or _app_language()))
 
 
 def _export(program_path: Path, output: Path, language: str, standalone: bool = False, profile: str = None) -> int:
