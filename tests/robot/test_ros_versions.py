@@ -94,6 +94,7 @@ def test_a_profile_declaring_nothing_per_version_keeps_its_backend(hobbit):
 
     class Link:
         profile = hobbit
+        ros_version = None
 
         @staticmethod
         def backend(interrupt):
