@@ -360,6 +360,8 @@ class LinkHost:
                 if self._stopped and name not in AFTER_STOP:
                     raise ProgramStopped("the program was stopped")
                 value = getattr(self, "_serve_" + name)(*args)
+            if self._stopped and name in WAITING:  # the stop ended the wait: a halted motion is not done
+                raise ProgramStopped("the program was stopped")
         except Exception as error:
             self._reply(call_id, error=error_record(error, self.language))
             return
