@@ -176,7 +176,7 @@ def test_stop_ends_the_run_anywhere_and_the_robot_stops(qtbot, driver, name, pro
     assert window.runs.state == "running", window.runs.last_result
     with qtbot.waitSignal(window.runs.sig_finished, timeout=5000) as blocker:
         qtbot.keyClick(QApplication.activeWindow() or window, Qt.Key.Key_Escape)  # Esc where the person is
-    assert blocker.args[0].outcome == "stopped"
+    assert blocker.args[0].outcome == "stopped", blocker.args[0]
     snapshot = window.robot().snapshot()
     assert snapshot["linear"] == 0 and snapshot["angular"] == 0 and snapshot["motion"] == "idle"
     assert tablet_dialogs(window) == []
