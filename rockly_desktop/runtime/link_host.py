@@ -356,6 +356,8 @@ class LinkHost:
 
     def _call(self, record: dict):
         name, args, call_id = record.get("name"), record.get("args"), record.get("id")
+        if isinstance(record.get("block"), str):  # where the program is: a recording puts the command there
+            self.mirror.entering(record["block"])
         if not isinstance(args, list) or not hasattr(self, "_serve_" + str(name)):
             self._reply(call_id, error=error_record(ValueError(f"no robot call {name!r}"), self.language))
         elif name in WAITING:

@@ -29,7 +29,7 @@ from collections import deque
 
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.executor.control import RunControl
-from rockly_desktop.executor.events import RunFinished
+from rockly_desktop.executor.events import RunFinished, RunPaused
 from rockly_desktop.executor.run_setup import program_runner
 from rockly_desktop.profiles.profile import Profile
 from rockly_desktop.runtime.event_stream import event_record
@@ -93,36 +93,66 @@ def apply_control(control: RunControl, record: dict):
         control.set_delay(float(record.get("seconds") or 0.0))
 
 
-def _sample(host: HostConnection, runner, ended: threading.Event, entered=None):
-    """Say, every ``SAMPLE_SECONDS`` until ``ended`` and once more then, what changed of where the program is,
-    its variables and values, and (``entered``: the runner's deque of blocks entered) the blocks entered since."""
-    shown = {}
-    if entered is not None:
-        runner.hooks.block_budget = BLOCKS_PER_SAMPLE
-    while True:
-        last = ended.wait(SAMPLE_SECONDS)
-        sample = {"block": runner.hooks.current_block, "variables": runner.variables_snapshot(),
-                  "values": runner.values_snapshot()}
-        changed = {key: value for key, value in sample.items() if shown.get(key, ()) != value}
-        if entered is not None:
-            batch = [entered.popleft() for _ in range(len(entered))]
-            if not runner.hooks.block_budget and sample["block"] is not None:  # a tight loop: where it is now
-                batch.append((time.monotonic_ns(), sample["block"]))
+class _Sampler:
+    """Says, every ``SAMPLE_SECONDS`` and before a pause or the end (``flush``), what changed of where the program
+    is, its variables and values, and (``entered``: the runner's deque of blocks entered, for a recording) the
+    blocks entered since the last time."""
+
+    def __init__(self, host: HostConnection, entered=None):
+        self.host = host
+        self.entered = entered
+        self.runner = None
+        self._shown = {}
+        self._lock = threading.Lock()
+        self._ended = threading.Event()
+
+    def follow(self, runner):
+        """Sample ``runner`` from now on, on a thread of its own, until ``end``."""
+        self.runner = runner
+        if self.entered is not None:
             runner.hooks.block_budget = BLOCKS_PER_SAMPLE
-            if batch:
-                changed["entered"] = batch
-        if changed:
-            shown.update(sample)
-            host.send({"op": "sample", **changed})
-        if last:
+        thread = threading.Thread(target=self._loop, name="rockly-sample", daemon=True)
+        thread.start()
+        return thread
+
+    def _loop(self):
+        while not self._ended.wait(SAMPLE_SECONDS):
+            self.flush()
+
+    def end(self, thread):
+        """Stop sampling; a last sample is said."""
+        self._ended.set()
+        thread.join()
+        self.flush()
+
+    def flush(self):
+        """Say what changed since the last sample."""
+        runner = self.runner
+        if runner is None:
             return
+        with self._lock:
+            sample = {"block": runner.hooks.current_block, "variables": runner.variables_snapshot(),
+                      "values": runner.values_snapshot()}
+            changed = {key: value for key, value in sample.items() if self._shown.get(key, ()) != value}
+            if self.entered is not None:
+                batch = [self.entered.popleft() for _ in range(len(self.entered))]
+                if not runner.hooks.block_budget and sample["block"] is not None:  # a tight loop: where it is now
+                    batch.append((time.monotonic_ns(), sample["block"]))
+                runner.hooks.block_budget = BLOCKS_PER_SAMPLE
+                if batch:
+                    changed["entered"] = batch
+            if changed:
+                self._shown.update(sample)
+                self.host.send({"op": "sample", **changed})
 
 
-def _emit(host: HostConnection):
+def _emit(host: HostConnection, sampler: _Sampler):
     def emit(event):
         record = event_record(event, {})
         if record is None:
             return
+        if isinstance(event, (RunPaused, RunFinished)):
+            sampler.flush()  # the blocks entered before it, in its order (a recording keeps both)
         if isinstance(event, RunFinished):
             record["details"] = event.details
         host.send({"op": "event", **record})
@@ -155,20 +185,19 @@ def run(host: HostConnection, inbox: queue.Queue, control: RunControl, isolated:
             raise RuntimeError("; ".join(failures))
 
     entered = deque() if record.get("entered") else None  # the host records the run: it wants the blocks entered
+    sampler = _Sampler(host, entered)
     try:
-        runner = program_runner(profile, backend, record["run_code"], control, _emit(host),
+        runner = program_runner(profile, backend, record["run_code"], control, _emit(host, sampler),
                                 language, on_end, entered=entered)
     except RocklyError as error:
         host.send({"op": "refused", "text": error.in_language(language)})
         return
-    ended = threading.Event()
-    sampler = threading.Thread(target=_sample, args=(host, runner, ended, entered), name="rockly-sample", daemon=True)
-    sampler.start()
+    backend.hooks = runner.hooks
+    sampling = sampler.follow(runner)
     try:
         runner.run()
     finally:
-        ended.set()
-        sampler.join()
+        sampler.end(sampling)
 
 
 def main(argv=None) -> int:
