@@ -154,10 +154,11 @@ class HostControl:
                 self._send({"op": "control", **record})
 
     def request_stop(self):
-        """Tell the program to stop, make the robot safe at once and refuse the program's commands from now on (the
-        program hears of the stop before the robot answers the safe stop: a halted motion is not taken as done)."""
+        """Tell the program to stop, make the robot safe at once and refuse the program's commands from now on (a
+        wait served here that the stop or the safe stop ended answers ProgramStopped: a halted motion is not taken
+        as done, nor as the robot's refusal)."""
+        self.interrupt.request_stop()  # first: the waits served here end as stopped, before the safe stop ends them
         self._request({"do": "stop"})
-        self.interrupt.request_stop()  # after: an answer the stop ends here reaches the program after the stop
         if self.on_stop is not None:
             self.on_stop()
 
