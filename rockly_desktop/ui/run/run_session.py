@@ -150,8 +150,8 @@ class RunSession(QObject):
         self.console.append(tr("run_started", language), "info")
         self._shown_block = None
         self._set_state("running")
-        # A program in a tight loop holds the GIL; hand it over more often so the window
-        # keeps drawing (Python's default is every 5 ms).
+        # The run's threads here (the program's lines read and served, a printing loop's many) take the GIL in
+        # turns with the window; hand it over more often so the window keeps drawing (Python's default: 5 ms).
         self._switch_interval = sys.getswitchinterval()
         sys.setswitchinterval(RUN_SWITCH_INTERVAL)
         thread.start()
