@@ -3,7 +3,8 @@ the program's code runs in a process of its own, and the window's thread serves 
 limits. A program that walks Python's object graph (``gc.get_objects()``, every thread's frames, closures,
 ``robot._backend._inner...``) for the link, the backends and the Limits, lifts every Limits it finds and publishes
 0.5 m/s through each, drives no faster than the teacher's 0.2 m/s: the simulator's own state and, over ROS 1, an
-independent rospy node on the wire see so. Killing the program's process (SIGKILL) mid-drive ends in the safe stop.
+independent rospy node on the wire see so. Killing the program's process (SIGKILL) or closing the window mid-drive
+ends in the safe stop.
 """
 import os
 import signal
@@ -134,6 +135,23 @@ def test_killing_the_programs_process_mid_drive_stops_the_simulated_robot(qtbot,
     assert result.outcome == "error", result
     snapshot = window.robot().snapshot()
     assert snapshot["linear"] == 0 and snapshot["angular"] == 0
+
+
+def test_closing_the_window_mid_drive_stops_the_robot_and_ends_the_programs_process(qtbot, driver, monkeypatch):
+    window = driver.open_window()
+    page_answers(window, monkeypatch, DRIVE_ON)
+    robot = window.robot()
+    twists = []
+    robot.world.subscribe("/cmd_vel", lambda message: twists.append((message.get("linear") or {}).get("x", 0.0)))
+    assert window.runs.run()
+    qtbot.waitUntil(lambda: window.robot().snapshot()["linear"] > 0, timeout=30000)
+    program = window.runs.thread.runner.host.process.process
+    seen = len(twists)
+    window.document.modified = False
+    window.close()
+    assert window.runs.thread is None
+    assert 0.0 in twists[seen:]  # the safe stop's zero, before the window let go of the robot
+    assert program.poll() is not None  # the program's process ended (and was waited for)
 
 
 @pytest.fixture
