@@ -1,4 +1,4 @@
-"""The window's own runs with the program in a process of its own (decision 040), against the same runs in the
+"""The window's own runs with the program in a process of its own (decision 041), against the same runs in the
 window's process as before (``executor.run_setup.make_runner``), measured in the same run on HOBBIT's simulator.
 
 The window's program thread runs ``runtime.hosted_run.HostedRunner``; this measures that runner on a plain

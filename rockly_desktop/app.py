@@ -172,7 +172,7 @@ def run_gui(open_path=None, kiosk: bool = False) -> int:
         window.show()
     from PySide6.QtCore import QTimer
 
-    QTimer.singleShot(WARM_UP_MS, window.runs.warm_up)  # the program's process of the first run (decision 040)
+    QTimer.singleShot(WARM_UP_MS, window.runs.warm_up)  # the program's process of the first run (decision 041)
     return app.exec()
 
 

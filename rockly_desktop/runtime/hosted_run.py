@@ -1,7 +1,7 @@
 """A run whose program is in a process of its own, as a runner: what the window's program thread runs.
 
 The window owns the robot link; the program's code runs in a child (``runtime/program_process.py``) without
-the link, the limits or the network (decision 040, following 039). ``HostedRunner`` offers what a
+the link, the limits or the network (decision 041, following 039). ``HostedRunner`` offers what a
 ``ProgramRunner`` offers the window (``run()``, ``hooks.current_block``, ``variables_snapshot()``,
 ``values_snapshot()``), so the window's 33 ms poll, highlighting, badges, values and recording follow it as
 they follow a runner in the window's process; its ``run()`` serves the child on the link (``LinkHost.serve``).

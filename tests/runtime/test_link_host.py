@@ -125,7 +125,7 @@ def test_a_run_that_finishes_says_so_after_the_safe_stop(hobbit, simulated):
 
 
 def test_a_tight_loop_costs_the_host_a_line_a_sample_and_a_recording_gets_its_blocks_in_order(hobbit, simulated):
-    # The window's run (decision 040): no block reported one by one; the program's process says where it is, and
+    # The window's run (decision 041): no block reported one by one; the program's process says where it is, and
     # for a recording the blocks entered with their times, in samples.
     records = []
 

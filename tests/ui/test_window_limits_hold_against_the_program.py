@@ -1,4 +1,4 @@
-"""The teacher's limits hold in the window's own runs against any code the program runs (issue 30, decision 040):
+"""The teacher's limits hold in the window's own runs against any code the program runs (issue 30, decision 041):
 the program's code runs in a process of its own, and the window's thread serves it on the robot link under the
 limits. A program that walks Python's object graph (``gc.get_objects()``, every thread's frames, closures,
 ``robot._backend._inner...``) for the link, the backends and the Limits, lifts every Limits it finds and publishes

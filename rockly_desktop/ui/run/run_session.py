@@ -2,7 +2,7 @@
 
 The program's code runs in a process of its own (``runtime/program_process.py``), which has no robot link,
 no limits and no network; a ProgramThread serves it here on the robot link, under the teacher's limits, with
-the recording and the safe stop (``runtime/hosted_run.py``, decision 040). Its events arrive as queued signals;
+the recording and the safe stop (``runtime/hosted_run.py``, decision 041). Its events arrive as queued signals;
 the block it is at, its variables and what it printed are polled every 33 ms, so a tight loop at full
 speed never floods the GUI, while a pause shows the exact block and values. A program's process is kept
 started (``WarmProcess``) for the next run, so Run → first block does not wait for Python to start.
