@@ -123,7 +123,7 @@ class RemoteGoal(GoalHandle):
 
     def wait(self, timeout: float) -> GoalOutcome:
         """Wait for the goal's end (the host waits; a stop ends it); RobotTimeout after ``timeout``."""
-        outcome = self._backend.wait_for("goal_wait", self._id, timeout)
+        outcome = self._backend.ask("goal_wait", self._id, timeout)
         return GoalOutcome(GoalStatus(outcome["status"]), outcome.get("result") or {}, outcome.get("text") or "")
 
     def cancel(self) -> None:
@@ -147,14 +147,6 @@ class RemoteBackend(RobotBackend):
     def ask(self, name: str, *args):
         """One call of the host's backend."""
         return self._host.call(name, args, self.interrupt, self._block())
-
-    def wait_for(self, name: str, *args):
-        """One call of the host's backend that waits on the robot: a stop said meanwhile ends it (the host tells
-        the stop before its answers, so a motion its safe stop halted is not taken as done)."""
-        try:
-            return self._host.call(name, args, self.interrupt, self._block())
-        finally:
-            self.interrupt.check()
 
     def resolve_name(self, name: str, kind: str = "topics") -> str:
         """``name`` as the robot's middleware resolves it (the host asks it)."""
@@ -204,11 +196,11 @@ class RemoteBackend(RobotBackend):
 
     def wait_for_message(self, topic: str, msg_type: str, timeout: float) -> dict:
         """The next message on ``topic`` (the host waits); RobotTimeout after ``timeout``."""
-        return self.wait_for("wait_for_message", topic, msg_type, timeout)
+        return self.ask("wait_for_message", topic, msg_type, timeout)
 
     def call_service(self, name: str, srv_type: str, request: dict, timeout: float) -> dict:
         """Call a service through the host."""
-        return self.wait_for("call_service", name, srv_type, request, timeout)
+        return self.ask("call_service", name, srv_type, request, timeout)
 
     def send_goal(self, action: str, action_type: str, goal: dict, feedback=None) -> GoalHandle:
         """Send a goal through the host; ``feedback(message)`` is called here for each feedback."""
