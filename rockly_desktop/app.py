@@ -7,6 +7,7 @@ import sys
 from rockly_desktop.core import paths
 
 START_SWITCH_INTERVAL = 0.0005  # seconds; the GUI thread waits at most this long for the worker's GIL
+WARM_UP_MS = 1000  # after the window shows, the first run's program process starts (Run -> first block is quick)
 
 
 def prepare_qt_environment():
@@ -169,6 +170,9 @@ def run_gui(open_path=None, kiosk: bool = False) -> int:
     window.start(open_path)
     if not kiosk:  # after start(): the page loads the program before Chromium draws an empty editor (decision 017)
         window.show()
+    from PySide6.QtCore import QTimer
+
+    QTimer.singleShot(WARM_UP_MS, window.runs.warm_up)  # the program's process of the first run (decision 041)
     return app.exec()
 
 

@@ -37,8 +37,11 @@ from pathlib import Path
 
 from rockly_desktop import __version__
 
-SUBCOMMANDS = ("profiles", "plugins", "export", "import", "run", "sim", "replay", "recordings", "blocks", "lessons",
-               "agent", "robot")
+COMMANDS = {"profiles": "cli_command_profiles", "export": "cli_command_export", "import": "cli_command_import",
+            "run": "cli_command_run", "sim": "cli_command_sim", "replay": "cli_command_replay",
+            "recordings": "cli_command_recordings", "blocks": "cli_command_blocks", "lessons": "cli_command_lessons",
+            "agent": "cli_command_agent", "robot": "cli_command_robot"}  # each tool command: its line in --help
+SUBCOMMANDS = (*COMMANDS, "plugins")  # "plugins": the older name of "profiles"
 PROGRAM_HELP = "a .rockly file, a first-Rockly .xml file or a Python program (.py), turned into blocks in memory"
 IMPORT_KEPT_PYTHON = 3  # `rockly import`'s exit code when parts stayed Python (1: an error, 0: lossless)
 
@@ -149,14 +152,20 @@ def _app_language() -> str:
 
 def _gui_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="rockly", description="Program ROS robots with blocks.",
-                                     epilog="Tools: rockly profiles list | rockly profiles validate PATH | "
-                                            "rockly export PROGRAM -o OUT.py")
+                                     epilog=_commands_overview(), formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--version", action="version", version=f"rockly {__version__}")
     parser.add_argument("program", nargs="?", type=Path, help="a program to open")
     parser.add_argument("--kiosk", action="store_true",
                         help="kiosk mode for a fair stand: full screen, the program (or an empty one) for each "
                              "visitor; leaving needs the teacher's PIN or key chord")
     return parser
+
+
+def _commands_overview() -> str:
+    """``rockly --help``'s list of the tool commands, one line each."""
+    width = max(map(len, COMMANDS))
+    lines = [f"  rockly {name:<{width}}  {_text(key)}" for name, key in COMMANDS.items()]
+    return "\n".join([_text("cli_commands_heading"), *lines])
 
 
 def _profiles_list() -> int:

@@ -16,7 +16,7 @@ from rockly_desktop.robot import links
 from rockly_desktop.robot.sim.answer_list import AnswerList
 
 
-def serve_simulator(profile_id: str, kind: str = "ros1", connection: dict = None, speed: float = 1.0, answers=(),
+def serve_simulator(profile_id: str, kind: str, connection: dict = None, speed: float = 1.0, answers=(),
                     out=lambda text: print(text, flush=True), window: bool = True) -> int:
     """``rockly sim PROFILE --ros``: the profile's simulator served on the ``kind`` of robot link (with
     its ``connection`` settings) until its window is closed or Ctrl+C (exit 0). ``window=False``: no

@@ -1,4 +1,5 @@
 """The ``rockly`` command, run as a user runs it (a real process)."""
+import argparse
 import json
 import os
 import shutil
@@ -308,3 +309,17 @@ def test_a_program_of_thousands_of_blocks_gets_the_time_it_needs_to_load(tmp_pat
 
     assert result.returncode == 0, result.stderr
     assert result.stdout.count("print(") == 6000
+
+
+def test_help_names_every_command_with_a_line_of_its_own():
+    from rockly_desktop.cli import SUBCOMMANDS, _tool_parser
+
+    commands = next(action for action in _tool_parser()._actions if isinstance(action, argparse._SubParsersAction))
+    assert set(commands.choices) == set(SUBCOMMANDS)  # main() hands every registered command to the tools
+    result = rockly("--help")
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    for choice in commands._choices_actions:  # one per command; its aliases are named in its own line
+        name = choice.dest.split()[0]
+        assert any(line.split()[:2] == ["rockly", name] for line in lines), f"rockly --help does not name {name}"
+    assert "older name: plugins" in result.stdout

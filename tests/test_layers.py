@@ -239,3 +239,39 @@ def test_the_import_check_sees_every_way_of_importing_rockly():
               "from rockly_desktop.sdk_view import card\nfrom . import palette\nimport math\n")
     assert rockly_imports(source) == {"rockly_desktop.robot.sim.sim_world", "rockly_desktop.sdk", "rockly_desktop.core",
                                       "rockly_desktop.sdk_view"}
+
+
+ROS_VERSION_NAMES = ("ros1", "ros2")
+ROS_VERSION_HOMES = ("rockly_desktop/robot/ros1/", "rockly_desktop/robot/ros2/", "rockly_desktop/robot/links.py")
+# {module: (how many it keeps, why)}: the places that still name a ROS version, each with its reason
+ROS_VERSION_EXCEPTIONS = {
+    "rockly_desktop/core/ros_distributions.py": (
+        2, "the profile format's vocabulary: the version keys a profile's ros_versions may use"),
+    "rockly_desktop/runtime/agent/client.py": (
+        3, "chosen_via's master (ROS 1) and domain (ROS 2) arguments name one version each; the agent's options "
+           "per registry entry are issue 34's one link contract, still to do"),
+    "rockly_desktop/runtime/agent/commands.py": (
+        3, "the agent command line's --master and --domain options, as client.py"),
+}
+
+
+def ros_version_literals(source: str) -> int:
+    """How many string literals in ``source`` are exactly a ROS version's name (docstrings and comments aside)."""
+    return sum(isinstance(node, ast.Constant) and node.value in ROS_VERSION_NAMES
+               for node in ast.walk(parse_python(source)))
+
+
+def test_a_ros_version_is_named_only_by_its_link_folder_and_the_registry():
+    """A link's ROS version, its agent's texts and where its agent runs are the registry's (robot/links.py) and
+    its link class's (RobotLink.ros_version); everything else asks them."""
+    found = {}
+    for path in (REPO / "rockly_desktop").rglob("*.py"):
+        name = path.relative_to(REPO).as_posix()
+        count = ros_version_literals(path.read_text(encoding="utf-8"))
+        if count and not name.startswith(ROS_VERSION_HOMES):
+            found[name] = count
+    assert found == {name: count for name, (count, _why) in ROS_VERSION_EXCEPTIONS.items()}
+
+
+def test_the_ros_version_check_sees_a_literal_and_not_a_docstring():
+    assert ros_version_literals('"""On ros1 or ros2."""\nif kind == "ros1":\n    pass  # ros2\n') == 1

@@ -58,6 +58,7 @@ class RobotLink(Protocol):
     """The robot a session runs programs on. Made by the registry (``links.open_link``)."""
 
     kind: str  # the registry's key for this link, e.g. "sim" or "ros1"
+    ros_version: "str | None"  # 'ros1', 'ros2': what of a profile's ``ros_versions`` its robot wants; None: either
     profile: object  # the robot profile it serves
     state: StateStore  # what the robot's topics, services and actions last said
 

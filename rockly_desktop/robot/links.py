@@ -62,7 +62,8 @@ class LinkKind:
     ``recording_encoder`` (``module:callable``, see ``recording_encoder``) encodes the robot's topics
     in a recording of a run on this link; None: they are recorded as JSON. ``agent_topics`` (a module, see
     ``agent_topics``) carries the robot's agent's messages on this link's middleware; None: the agent is reached
-    over TCP only.
+    over TCP only; ``agent_texts`` are its texts (cannot reach the middleware, no agent in the graph, the agent
+    offers its calls there), and ``agent_beside`` names the connection setting (a URL) whose host the agent runs on.
     """
 
     kind: str
@@ -77,6 +78,8 @@ class LinkKind:
     sim_server: str = None
     recording_encoder: str = None
     agent_topics: str = None
+    agent_texts: tuple = ()
+    agent_beside: str = None
 
     def link_class(self):
         """The link class (imported now, on first use)."""
@@ -124,11 +127,13 @@ LINKS = {entry.kind: entry for entry in (
              settings=ROS1_SETTINGS,
              settings_group="ros", explanation="connect_explanation",
              sim_option="--ros", sim_server="rockly_desktop.robot.ros1.sim_bridge:serve_simulator",
-             recording_encoder=ROS1_ENCODER, agent_topics="rockly_desktop.robot.ros1.agent_topics"),
+             recording_encoder=ROS1_ENCODER, agent_topics="rockly_desktop.robot.ros1.agent_topics",
+             agent_texts=("agent_no_ros", "agent_not_in_graph", "agent_ready_ros"), agent_beside="master"),
     LinkKind("ros2", "rockly_desktop.robot.ros2.link:Ros2Robot", "backend_ros2", "a robot over ROS 2",
              settings=ROS2_SETTINGS, settings_group="ros2", explanation="connect_explanation_ros2",
              sim_option="--ros2", sim_server="rockly_desktop.robot.ros2.sim_bridge:serve_simulator",
-             recording_encoder=ROS2_ENCODER, agent_topics="rockly_desktop.robot.ros2.agent_topics"),
+             recording_encoder=ROS2_ENCODER, agent_topics="rockly_desktop.robot.ros2.agent_topics",
+             agent_texts=("agent_no_ros2", "agent_not_in_graph_ros2", "agent_ready_ros2")),
 )}
 DEFAULT_KIND = "sim"
 
@@ -209,6 +214,11 @@ def agent_topics(kind: str):
     (``robot/ros1/agent_topics.py`` is the example), imported now; None when the entry names none."""
     target = link_kind(kind).agent_topics
     return importlib.import_module(target) if target is not None else None
+
+
+def agent_graph_kinds() -> list:
+    """The kinds whose middleware carries the robot's agent's messages (their entries name ``agent_topics``)."""
+    return [entry.kind for entry in LINKS.values() if entry.agent_topics]
 
 
 def _load(target: str):

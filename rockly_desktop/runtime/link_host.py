@@ -154,9 +154,10 @@ class HostControl:
                 self._send({"op": "control", **record})
 
     def request_stop(self):
-        """Tell the program to stop, make the robot safe at once and refuse the program's commands from now on (the
-        program hears of the stop before the robot answers the safe stop: a halted motion is not taken as done)."""
-        self.interrupt.request_stop()
+        """Tell the program to stop, make the robot safe at once and refuse the program's commands from now on (a
+        wait served here that the stop or the safe stop ended answers ProgramStopped: a halted motion is not taken
+        as done, nor as the robot's refusal)."""
+        self.interrupt.request_stop()  # first: the waits served here end as stopped, before the safe stop ends them
         self._request({"do": "stop"})
         if self.on_stop is not None:
             self.on_stop()
@@ -185,33 +186,48 @@ class HostControl:
 
 
 class _MirroredHooks:
-    """Where the program is, as its events say (what a recording asks of a runner's block hooks)."""
+    """Where the program is, as its process last said (what a recording asks of a runner's block hooks); the
+    blocks it entered come in batches (``ProgramMirror.sampled``), so a recorder's budget is never spent here."""
 
     def __init__(self, entered=None):
         self.current_block = None
         self.block_budget = 0
         self.entered = entered
 
-    def entering(self, block_id: str):
-        self.current_block = block_id
-        if self.block_budget and self.entered is not None:
-            self.block_budget -= 1
-            self.entered.append((time.monotonic_ns(), block_id))
-
 
 class ProgramMirror:
     """The program's runner as the host sees it: its current block, its variables and its blocks' values as
-    the program's process last said them (what ``ProgramRunner`` offers a recording, an agent or a window)."""
+    the program's process last said them (what ``ProgramRunner`` offers a recording, an agent or a window).
+    ``entered``: a deque the blocks entered go to, with their ``monotonic_ns`` (a recording's)."""
 
     def __init__(self, entered=None):
         self.hooks = _MirroredHooks(entered)
         self._variables = {}
         self._values = {}
 
-    def sampled(self, variables, values):
-        """The program's process said its variables and values."""
-        self._variables = dict(variables) if isinstance(variables, dict) else {}
-        self._values = dict(values) if isinstance(values, dict) else {}
+    @property
+    def wants_blocks(self) -> bool:
+        """Whether the program's process is to say each block it enters (a recording takes them)."""
+        return self.hooks.entered is not None
+
+    def entering(self, block_id):
+        """The program said it is at ``block_id`` (a BlockEntered event, when it says every block)."""
+        self.hooks.current_block = block_id
+
+    def sampled(self, record: dict):
+        """The program's process said what changed of its block, variables, values and blocks entered."""
+        if "block" in record:
+            block = record["block"]
+            self.hooks.current_block = block if isinstance(block, str) else None
+        if isinstance(record.get("variables"), dict):
+            self._variables = dict(record["variables"])
+        if isinstance(record.get("values"), dict):
+            self._values = dict(record["values"])
+        entered = record.get("entered")
+        if self.hooks.entered is not None and isinstance(entered, list):
+            self.hooks.entered.extend((stamp, block) for stamp, block in
+                                      (pair for pair in entered if isinstance(pair, list) and len(pair) == 2)
+                                      if isinstance(stamp, int) and isinstance(block, str))
 
     def variables_snapshot(self) -> dict:
         """The program's variables (Blockly names, values as people read them)."""
@@ -256,7 +272,7 @@ class LinkHost:
         self.control.connect(self.process.send)
         self.process.send({"op": "start", "run_code": run_code, "language": self.language,
                            "trace": self.control.trace, "breakpoints": sorted(self.control.breakpoints),
-                           "delay": self.control.delay})
+                           "delay": self.control.delay, "entered": self.mirror.wants_blocks})
         reader = threading.Thread(target=self._read, name="rockly-host-serve", daemon=True)
         reader.start()
         if self.control.interrupt.stop_requested:  # stopped while the link opened
@@ -327,13 +343,13 @@ class LinkHost:
         elif op == "event":
             event = record_event(record)
             if isinstance(event, BlockEntered):
-                self.mirror.hooks.entering(event.block_id)
+                self.mirror.entering(event.block_id)
             if isinstance(event, RunFinished):
                 self.result = event
             if event is not None:
                 self.emit(event)
         elif op == "sample":
-            self.mirror.sampled(record.get("variables"), record.get("values"))
+            self.mirror.sampled(record)
         elif op == "ready":
             self.isolated = bool(record.get("isolated"))
         elif op == "refused":
@@ -341,6 +357,8 @@ class LinkHost:
 
     def _call(self, record: dict):
         name, args, call_id = record.get("name"), record.get("args"), record.get("id")
+        if isinstance(record.get("block"), str):  # where the program is: a recording puts the command there
+            self.mirror.entering(record["block"])
         if not isinstance(args, list) or not hasattr(self, "_serve_" + str(name)):
             self._reply(call_id, error=error_record(ValueError(f"no robot call {name!r}"), self.language))
         elif name in WAITING:
@@ -360,6 +378,8 @@ class LinkHost:
                 if self._stopped and name not in AFTER_STOP:
                     raise ProgramStopped("the program was stopped")
                 value = getattr(self, "_serve_" + name)(*args)
+            if self._stopped and name in WAITING:  # the stop ended the wait: a halted motion is not done
+                raise ProgramStopped("the program was stopped")
         except Exception as error:
             self._reply(call_id, error=error_record(error, self.language))
             return

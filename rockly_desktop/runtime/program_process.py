@@ -8,7 +8,9 @@ link, keeps the limits and does the safe stop. The wire (``runtime/link_wire.py`
 code, its variables, the language, the controls), ``control`` (pause, step, continue, stop, breakpoints,
 delay), answers to calls and pushed messages; to the host: ``ready``, ``call`` (each robot command, see
 ``remote_backend.py``), ``event`` (each run event, as ``runtime/event_stream.py`` writes it), ``sample``
-(the variables and values, when they changed) and ``refused`` (the profile's commands could not be made).
+(every ``SAMPLE_SECONDS``, what changed of: the block it is at, the variables, the values, and for a recording the
+blocks entered since the last sample with their ``monotonic_ns``) and ``refused`` (the profile's commands could
+not be made). A tight loop so costs the host one line per sample, not one per block.
 
 Before anything else it leaves the network (a network namespace of its own, where Linux allows it): the
 program's only way to the robot is the host. Each ``FOLDER`` (the agent's library with its keys and pairings,
@@ -22,16 +24,19 @@ import queue
 import socket
 import sys
 import threading
+import time
+from collections import deque
 
 from rockly_desktop.core.errors import RocklyError
 from rockly_desktop.executor.control import RunControl
-from rockly_desktop.executor.events import RunFinished
+from rockly_desktop.executor.events import RunFinished, RunPaused
 from rockly_desktop.executor.run_setup import program_runner
 from rockly_desktop.profiles.profile import Profile
 from rockly_desktop.runtime.event_stream import event_record
 from rockly_desktop.runtime.remote_backend import HostConnection, RemoteBackend
 
-SAMPLE_SECONDS = 0.1  # how often the variables are looked at (as often as a window's own run shows them)
+SAMPLE_SECONDS = 0.033  # how often the block and the variables are looked at (as often as the window shows them)
+BLOCKS_PER_SAMPLE = 100  # blocks entered a recording gets per sample (a tight loop is then sampled)
 CLONE_NEWUSER, CLONE_NEWNET, CLONE_NEWNS = 0x10000000, 0x40000000, 0x00020000
 MS_RDONLY, MS_NOSUID, MS_NODEV, MS_NOEXEC, MS_REC, MS_PRIVATE = 0x1, 0x2, 0x4, 0x8, 0x4000, 0x40000
 
@@ -88,20 +93,66 @@ def apply_control(control: RunControl, record: dict):
         control.set_delay(float(record.get("seconds") or 0.0))
 
 
-def _sample(host: HostConnection, runner, ended: threading.Event):
-    shown = None
-    while not ended.wait(SAMPLE_SECONDS):
-        sample = {"variables": runner.variables_snapshot(), "values": runner.values_snapshot()}
-        if sample != shown:
-            shown = sample
-            host.send({"op": "sample", **sample})
+class _Sampler:
+    """Says, every ``SAMPLE_SECONDS`` and before a pause or the end (``flush``), what changed of where the program
+    is, its variables and values, and (``entered``: the runner's deque of blocks entered, for a recording) the
+    blocks entered since the last time."""
+
+    def __init__(self, host: HostConnection, entered=None):
+        self.host = host
+        self.entered = entered
+        self.runner = None
+        self._shown = {}
+        self._lock = threading.Lock()
+        self._ended = threading.Event()
+
+    def follow(self, runner):
+        """Sample ``runner`` from now on, on a thread of its own, until ``end``."""
+        self.runner = runner
+        if self.entered is not None:
+            runner.hooks.block_budget = BLOCKS_PER_SAMPLE
+        thread = threading.Thread(target=self._loop, name="rockly-sample", daemon=True)
+        thread.start()
+        return thread
+
+    def _loop(self):
+        while not self._ended.wait(SAMPLE_SECONDS):
+            self.flush()
+
+    def end(self, thread):
+        """Stop sampling; a last sample is said."""
+        self._ended.set()
+        thread.join()
+        self.flush()
+
+    def flush(self):
+        """Say what changed since the last sample."""
+        runner = self.runner
+        if runner is None:
+            return
+        with self._lock:
+            sample = {"block": runner.hooks.current_block, "variables": runner.variables_snapshot(),
+                      "values": runner.values_snapshot()}
+            changed = {key: value for key, value in sample.items() if self._shown.get(key, ()) != value}
+            if self.entered is not None:
+                batch = [self.entered.popleft() for _ in range(len(self.entered))]
+                if not runner.hooks.block_budget and sample["block"] is not None:  # a tight loop: where it is now
+                    batch.append((time.monotonic_ns(), sample["block"]))
+                runner.hooks.block_budget = BLOCKS_PER_SAMPLE
+                if batch:
+                    changed["entered"] = batch
+            if changed:
+                self._shown.update(sample)
+                self.host.send({"op": "sample", **changed})
 
 
-def _emit(host: HostConnection):
+def _emit(host: HostConnection, sampler: _Sampler):
     def emit(event):
         record = event_record(event, {})
         if record is None:
             return
+        if isinstance(event, (RunPaused, RunFinished)):
+            sampler.flush()  # the blocks entered before it, in its order (a recording keeps both)
         if isinstance(event, RunFinished):
             record["details"] = event.details
         host.send({"op": "event", **record})
@@ -133,18 +184,20 @@ def run(host: HostConnection, inbox: queue.Queue, control: RunControl, isolated:
         if failures:
             raise RuntimeError("; ".join(failures))
 
+    entered = deque() if record.get("entered") else None  # the host records the run: it wants the blocks entered
+    sampler = _Sampler(host, entered)
     try:
-        runner = program_runner(profile, backend, record["run_code"], control, _emit(host),
-                                language, on_end)
+        runner = program_runner(profile, backend, record["run_code"], control, _emit(host, sampler),
+                                language, on_end, entered=entered)
     except RocklyError as error:
         host.send({"op": "refused", "text": error.in_language(language)})
         return
-    ended = threading.Event()
-    threading.Thread(target=_sample, args=(host, runner, ended), name="rockly-sample", daemon=True).start()
+    backend.hooks = runner.hooks
+    sampling = sampler.follow(runner)
     try:
         runner.run()
     finally:
-        ended.set()
+        sampler.end(sampling)
 
 
 def main(argv=None) -> int:

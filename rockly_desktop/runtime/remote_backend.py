@@ -49,14 +49,18 @@ class HostConnection:
             except OSError:  # closed before it took this (it ended before the run began, or was killed)
                 os._exit(1)
 
-    def call(self, name: str, args=(), interrupt=None):
+    def call(self, name: str, args=(), interrupt=None, block=None):
         """Ask the host's backend ``name(*args)`` and return its answer (its error raised here); while waiting,
-        a stop of ``interrupt`` raises ProgramStopped (the host ends its side of the wait too)."""
+        a stop of ``interrupt`` raises ProgramStopped (the host ends its side of the wait too). ``block``: the
+        block the program is at (what a recording's badges put the command under)."""
         call_id = next(self._ids)
         waiting = [threading.Event(), None]
         self._pending[call_id] = waiting
+        record = {"op": "call", "id": call_id, "name": name, "args": list(args)}
+        if block is not None:
+            record["block"] = block
         try:
-            self.send({"op": "call", "id": call_id, "name": name, "args": list(args)})
+            self.send(record)
             while not waiting[0].wait(REPLY_POLL_SECONDS):
                 if interrupt is not None:
                     interrupt.check()
@@ -134,11 +138,15 @@ class RemoteBackend(RobotBackend):
     def __init__(self, host: HostConnection, interrupt):
         self._host = host
         self.interrupt = interrupt
+        self.hooks = None  # the runner's block hooks, once it runs: each call names the block the program is at
         self._subscriptions = itertools.count(1)
+
+    def _block(self):
+        return None if self.hooks is None else self.hooks.current_block
 
     def ask(self, name: str, *args):
         """One call of the host's backend."""
-        return self._host.call(name, args, self.interrupt)
+        return self._host.call(name, args, self.interrupt, self._block())
 
     def resolve_name(self, name: str, kind: str = "topics") -> str:
         """``name`` as the robot's middleware resolves it (the host asks it)."""

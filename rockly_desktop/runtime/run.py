@@ -127,7 +127,6 @@ class Run:
         emit = self._reporter(print_blocks)
         if recording is not None:
             emit = _both(recording.emit, emit)
-            self.control.trace = True  # the recording keeps the blocks entered
         limited = limited_backend(self.profile, link_backend(robot, self.control.interrupt), limits, self.language)
         backend = limited if recording is None else RecordedBackend(limited, recording.command)
 

@@ -32,9 +32,9 @@ VARIANTS = {"jazzy": STAMPED}
 
 
 @pytest.mark.parametrize(("version", "distribution", "wanted"), [
-    ("ros1", None, TWIST), ("ros2", None, TWIST), ("sim", None, TWIST), ("ros2", "humble", TWIST),
+    ("ros1", None, TWIST), ("ros2", None, TWIST), (None, None, TWIST), ("ros2", "humble", TWIST),
     ("ros2", "iron", TWIST), ("ros2", "jazzy", STAMPED), ("ros2", "kilted", STAMPED), ("ros2", "rolling", STAMPED),
-    ("sim", "jazzy", STAMPED), ("ros2", "a-distribution-after-rolling", STAMPED),
+    (None, "jazzy", STAMPED), ("ros2", "a-distribution-after-rolling", STAMPED),
 ])
 def test_a_distribution_key_counts_from_that_distribution_on(version, distribution, wanted):
     assert declared_type(TWIST, VARIANTS, version, distribution) == wanted
@@ -94,6 +94,7 @@ def test_a_profile_declaring_nothing_per_version_keeps_its_backend(hobbit):
 
     class Link:
         profile = hobbit
+        ros_version = None
 
         @staticmethod
         def backend(interrupt):

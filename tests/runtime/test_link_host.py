@@ -7,6 +7,7 @@ import subprocess
 import sys
 import threading
 import time
+from collections import deque
 from pathlib import Path
 
 import pytest
@@ -121,3 +122,29 @@ def test_a_run_that_finishes_says_so_after_the_safe_stop(hobbit, simulated):
                                  "print(type(x).__name__)\n", "variables": {}})
     assert result == RunFinished("finished") and events[-1] == result
     assert OutputPrinted("dict") in events
+
+
+def test_a_tight_loop_costs_the_host_a_line_a_sample_and_a_recording_gets_its_blocks_in_order(hobbit, simulated):
+    # The window's run (decision 041): no block reported one by one; the program's process says where it is, and
+    # for a recording the blocks entered with their times, in samples.
+    records = []
+
+    class Counting(LinkHost):
+        def _take(self, record):
+            records.append(record.get("op"))
+            super()._take(record)
+
+    entered = deque()
+    control = HostControl()
+    backend = limited_backend(hobbit, link_backend(simulated, control.interrupt), Limits(), "en")
+    mirror = ProgramMirror(entered)
+    host = Counting(ProgramProcess.start(hobbit), backend, simulated, control, lambda _event: None, "en", mirror)
+    result = host.serve({"code": "__rockly__.block('first')\nfor _ in range(20000):\n    __rockly__.block('loop')\n"
+                                 "__rockly__.block('last')\n", "variables": {}})
+    assert result == RunFinished("finished")
+    assert records.count("sample") < 1000 and len(records) < 1000, len(records)  # not one line per block (20,002)
+    assert mirror.hooks.current_block == "last"
+    blocks = [block for _stamp, block in entered]
+    assert blocks[0] == "first" and blocks[-1] == "last" and "loop" in blocks
+    stamps = [stamp for stamp, _block in entered]
+    assert stamps == sorted(stamps)

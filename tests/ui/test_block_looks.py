@@ -32,10 +32,10 @@ def test_a_block_ended_by_stop_says_stopped_in_its_own_colour_and_its_running_ba
     qtbot.waitUntil(lambda: (badge_look(qtbot, window, "arm") or {}).get("text") == "running…", timeout=10000)
     running = badge_look(qtbot, window, "arm")
     assert running["overrun"] <= 0, running  # the whole word inside its frame
-    with qtbot.waitSignal(window.runs.sig_finished, timeout=5000) as blocker:
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=20000) as blocker:
         qtbot.keyClick(QApplication.activeWindow() or window, Qt.Key.Key_Escape)
     assert blocker.args[0].outcome == "stopped"
-    qtbot.waitUntil(lambda: "running" not in badge_look(qtbot, window, "arm")["text"], timeout=5000)
+    qtbot.waitUntil(lambda: "running" not in badge_look(qtbot, window, "arm")["text"], timeout=20000)
     stopped = badge_look(qtbot, window, "arm")
     assert stopped["text"].startswith("■ stopped "), stopped
     assert "rocklyBadge-stopped" in stopped["classes"]

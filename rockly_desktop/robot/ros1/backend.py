@@ -188,8 +188,6 @@ class Ros1GoalHandle(GoalHandle):
 class Ros1Backend(RobotBackend):
     """A RobotBackend over a RosGraph; ``interrupt`` ends its waits."""
 
-    ros_version = "ros1"
-
     def __init__(self, graph: RosGraph, interrupt):
         self.graph = graph
         self.interrupt = interrupt

@@ -21,6 +21,7 @@ class RosRobot(link_parts.ReadsFollowedGraph):
     """
 
     kind = "ros1"
+    ros_version = "ros1"
 
     def __init__(self, profile, master_uri: str = None, host: str = None, timeout: float = 5.0):
         from rockly_desktop.robot.ros1.connection import RosConnection, RosUnavailable

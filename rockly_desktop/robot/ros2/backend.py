@@ -143,8 +143,6 @@ class Ros2Backend(RobotBackend):
     """A RobotBackend over a Ros2Graph; ``interrupt`` ends its waits. ``graph`` may be a function
     ``graph(interrupt)`` giving it at the first command (a link whose helper is being replaced)."""
 
-    ros_version = "ros2"
-
     def __init__(self, graph, interrupt):
         self._graph = graph
         self.interrupt = interrupt

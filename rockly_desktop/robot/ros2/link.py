@@ -81,6 +81,7 @@ class Ros2Robot(link_parts.ReadsFollowedGraph):
     """
 
     kind = "ros2"
+    ros_version = "ros2"
 
     def __init__(self, profile, settings: Ros2Settings = None, ros_distribution: str = None):
         self.profile = profile

@@ -27,6 +27,7 @@ class SimulatedRobot:
     """
 
     kind = "sim"
+    ros_version = None  # a simulator takes what a profile declares for either ROS version
     ros_distribution = None  # the ROS 2 distribution the robot plays (robot/wrappers/ros_versions.py); None: none
 
     def __init__(self, profile, tablet=None, speed: float = 1.0, clock: bool = True):

@@ -340,6 +340,7 @@ class SimBackend(RobotBackend):
             self.interrupt.check()
             remaining = deadline - time.monotonic()
             if self._world.wait_for(predicate, min(POLL_SECONDS, max(0.0, remaining))):
+                self.interrupt.check()  # a stop meanwhile wins: the safe stop that followed it ended the wait
                 return True
             if remaining <= 0:
                 return False

@@ -16,11 +16,12 @@ profile commands, the safe stop and a teacher's limits are written once.
 import time
 import weakref
 
-from rockly_desktop.core.ros_distributions import DISTRIBUTIONS
+from rockly_desktop.core.ros_distributions import DISTRIBUTIONS, VERSIONS
 from rockly_desktop.robot.interface import RobotBackend
 from rockly_desktop.robot.wrappers.wrapped_backend import WrappedBackend
 
 FRAME_ID = "base_link"   # the frame a stamped velocity command is given in: the robot's own
+ROS1, ROS2 = VERSIONS  # the version keys of a profile's ros_versions, and a link's ros_version
 RECHECK_SECONDS = 0.5    # while the graph lists no type for a name, look again at most this often
 
 # a stamped type -> (the type it stamps, its field holding that)
@@ -46,21 +47,21 @@ def ros_name(name) -> str:
 
 
 def declared_type(base: str, variants: dict, version: str, distribution: str = None) -> str:
-    """The type ``variants`` declare for a robot on ``version`` ('ros1', 'ros2', 'sim') and ``distribution``.
+    """The type ``variants`` declare for a robot on ``version`` ('ros1', 'ros2'; None: either) and ``distribution``.
 
     A distribution key counts from that distribution on (``jazzy`` also for kilted); one newer
     than Rockly knows counts as the newest. Without a matching key: ``ros2`` for ROS 2, ``ros1``
     for ROS 1, else ``base`` (the ros_interface type). A simulator with a distribution is ROS 2.
     """
-    if version == "ros1":
-        return variants.get("ros1", base)
+    if version == ROS1:
+        return variants.get(ROS1, base)
     if distribution:
         known = DISTRIBUTIONS.index(distribution) if distribution in DISTRIBUTIONS else len(DISTRIBUTIONS) - 1
         for key in reversed(DISTRIBUTIONS[:known + 1]):
             if key in variants:
                 return variants[key]
-        return variants.get("ros2", base)
-    return variants.get("ros2", base) if version == "ros2" else base
+        return variants.get(ROS2, base)
+    return variants.get(ROS2, base) if version == ROS2 else base
 
 
 def robot_type(base: str, variants: dict, version: str, distribution: str = None, graph_types=None) -> str:
@@ -113,8 +114,8 @@ class LearntTypes:
 class VersionedBackend(WrappedBackend):
     """A RobotBackend sending each message as the type the robot wants (see the module's docstring).
 
-    ``versions`` is the profile's ``ros_versions`` and ``ros_interface`` its interface; the
-    version is the inner backend's ``ros_version`` ('ros1', 'ros2'; the simulator 'sim'), its
+    ``versions`` is the profile's ``ros_versions`` and ``ros_interface`` its interface;
+    ``ros_version`` the link's (``RobotLink.ros_version``: 'ros1', 'ros2'; None: either, a simulator), its
     graph the inner backend's ``topic_types(name)`` where it has one; ``distribution`` the
     robot's declared ROS 2 distribution (None: not declared). ``learnt`` keeps what the graph
     said (a link's, shared by its runs and its safe stop); ``recheck`` False uses a type learnt
@@ -123,11 +124,11 @@ class VersionedBackend(WrappedBackend):
     """
 
     def __init__(self, inner: RobotBackend, versions: dict, ros_interface: dict, distribution: str = None,
-                 learnt: LearntTypes = None, recheck: bool = True):
+                 learnt: LearntTypes = None, recheck: bool = True, ros_version: str = None):
         super().__init__(inner)
         self._variants = {ros_name(name): dict(entry) for name, entry in (versions or {}).items()}
         self._base = base_types(ros_interface or {})
-        self.ros_version = getattr(inner, "ros_version", "sim")
+        self.ros_version = ros_version
         self.distribution = distribution
         learnt = learnt or LearntTypes()
         self._resolved, self._checked = learnt.resolved, learnt.checked
@@ -179,19 +180,20 @@ _LEARNT = weakref.WeakKeyDictionary()  # link -> LearntTypes
 
 def link_backend(link, interrupt, stopping: bool = False):
     """``link.backend(interrupt)`` sending what its profile declares per ROS version as its robot wants it
-    (``link.ros_distribution``, where a link has one, is the robot's declared ROS 2 distribution). The
-    link's backends share what its graph said; ``stopping`` (the safe stop) uses that as it is."""
+    (on ``link.ros_version``; ``link.ros_distribution``, where a link has one, is the robot's
+    declared ROS 2 distribution). The link's backends share what its graph said; ``stopping`` (the safe stop)
+    uses that as it is."""
     learnt = _LEARNT.setdefault(link, LearntTypes())
     return versioned_backend(link.profile, link.backend(interrupt), getattr(link, "ros_distribution", None),
-                             learnt, recheck=not stopping)
+                             learnt, recheck=not stopping, ros_version=link.ros_version)
 
 
 def versioned_backend(profile, backend, distribution: str = None, learnt: LearntTypes = None,
-                      recheck: bool = True):
-    """``backend`` sending what ``profile`` declares per ROS version as the robot wants it (see
+                      recheck: bool = True, ros_version: str = None):
+    """``backend`` sending what ``profile`` declares per ROS version as the robot on ``ros_version`` wants it (see
     VersionedBackend); ``backend`` itself when the profile declares nothing per version (or it is
     versioned already)."""
     versions = getattr(profile, "ros_versions", None)  # a stand-in profile (tests, tools) may have none
     if not versions or isinstance(backend, VersionedBackend):
         return backend
-    return VersionedBackend(backend, versions, profile.ros_interface, distribution, learnt, recheck)
+    return VersionedBackend(backend, versions, profile.ros_interface, distribution, learnt, recheck, ros_version)

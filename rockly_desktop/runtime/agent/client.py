@@ -56,14 +56,15 @@ def chosen_via(via: str, master: str = None, namespace: str = DEFAULT_NAMESPACE,
     ``master`` or ``domain``, only the graph of ``graph_kind`` (the chosen robot's) this process is on, if given."""
     if via == "tcp":
         return "tcp", None, None
-    from rockly_desktop.runtime.agent.ros_transport import KINDS, agent_in_graph, master_at_hand
+    from rockly_desktop.robot.links import agent_graph_kinds
+    from rockly_desktop.runtime.agent.ros_transport import agent_in_graph, master_at_hand
 
     if domain is not None:
         graphs = [("ros2", domain)]
     elif master:
         graphs = [("ros1", master)]
     else:
-        kinds = [graph_kind] if graph_kind else KINDS
+        kinds = [graph_kind] if graph_kind else agent_graph_kinds()
         graphs = [(kind, where) for kind, where in ((kind, master_at_hand(kind)) for kind in kinds) if where]
     if via == "ros":
         return ("ros", *graphs[0]) if graphs else ("ros", "ros1", None)

@@ -57,10 +57,6 @@ from rockly_desktop.runtime.agent.sealed import (
     unseal,
 )
 
-KINDS = ("ros1", "ros2")  # the robot links whose middleware carries these topics
-# the texts naming each: (cannot reach it, no agent in the graph, the agent offers its calls there)
-TEXTS = {"ros1": ("agent_no_ros", "agent_not_in_graph", "agent_ready_ros"),
-         "ros2": ("agent_no_ros2", "agent_not_in_graph_ros2", "agent_ready_ros2")}
 SILENT_CLIENT_SECONDS = 5.0  # a ROS client not heard from this long is gone (it beats every 0.2 s)
 LOST_AGENT_SECONDS = 1.0  # a client's incoming topic without the agent's publisher this long: the agent is gone
 CLEAR_OPS = ("hello", "pair")  # the requests that come before a key
@@ -72,6 +68,25 @@ def _carrier(kind: str):
     from rockly_desktop.robot import links
 
     return links.agent_topics(kind)
+
+
+def agent_host(kind: str, connection: dict):
+    """The host the robot link ``kind``'s agent runs on by its ``connection`` settings (the registry's
+    ``agent_beside``: ROS 1's master), or None when its entry names none or the setting has no host."""
+    from urllib.parse import urlsplit
+
+    from rockly_desktop.robot import links
+
+    beside = links.link_kind(kind).agent_beside
+    return urlsplit(connection.get(beside) or "").hostname if beside is not None else None
+
+
+def _texts(kind: str) -> tuple:
+    """The texts naming ``kind``'s graph: (cannot reach it, no agent in the graph, the agent offers its calls
+    there), from the robot-link registry."""
+    from rockly_desktop.robot import links
+
+    return links.link_kind(kind).agent_texts
 
 
 def agent_in_graph(kind: str, where, namespace: str) -> bool:
@@ -94,7 +109,7 @@ def _node(kind: str, where, language: str) -> tuple:
     try:
         node, graph = _carrier(kind).node_name(where)
     except (RocklyError, ImportError) as error:
-        raise AgentError(TEXTS[kind][0], app_text(TEXTS[kind][0], language, reason=str(error))) from None
+        raise AgentError(_texts(kind)[0], app_text(_texts(kind)[0], language, reason=str(error))) from None
     return node, graph.in_language(language) if hasattr(graph, "in_language") else graph  # ROS 2's: "domain 7"
 
 
@@ -163,7 +178,7 @@ class RosOffer:
             raise AgentError("agent_ros_needs_cryptography", app_text("agent_ros_needs_cryptography", language,
                                                                       reason=str(missing))) from None
         _, self.master = _node(kind, where, language)
-        self.ready = app_text(TEXTS[kind][2], language, master=self.master, namespace=namespace)
+        self.ready = app_text(_texts(kind)[2], language, master=self.master, namespace=namespace)
         self.agent = agent
         self.namespace = _namespace(namespace)
         self.session = new_session()
@@ -325,7 +340,7 @@ class RosLine:
 
     def __init__(self, kind: str, where, namespace: str, language: str, timeout: float, take, gone, keys=None):
         node, master = _node(kind, where, language)
-        not_there = AgentError(TEXTS[kind][1], app_text(TEXTS[kind][1], language, namespace=namespace,
+        not_there = AgentError(_texts(kind)[1], app_text(_texts(kind)[1], language, namespace=namespace,
                                                         master=master))
         if not agent_in_graph(kind, where, namespace):
             raise not_there

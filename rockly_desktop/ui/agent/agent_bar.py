@@ -6,13 +6,13 @@ ROS has its agent asked as the Programs dialog asks it (``AgentWay``): over ROS 
 helper is on the robot's graph and an agent is in it (one look at the graph; no node or helper is started for a
 look), else over TCP; Attach goes the way the look went."""
 from typing import NamedTuple
-from urllib.parse import urlsplit
 
 from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QPushButton, QWidget
 
 from rockly_desktop.runtime.agent.client import AgentClient, chosen_via
 from rockly_desktop.runtime.agent.protocol import DEFAULT_PORT
+from rockly_desktop.runtime.agent.ros_transport import agent_host
 from rockly_desktop.ui.agent.agent_calls import AgentCalls
 from rockly_desktop.ui.texts import tr
 
@@ -23,12 +23,11 @@ LOOK_TIMEOUT = 2.0  # seconds an agent has to take the connection and answer a l
 def agent_address(kind: str, connection: dict, remembered: str):
     """``(host, port)`` of the chosen robot's agent, or None when nowhere is known. ``kind``: the robot link's kind,
     ``connection``: its connection settings, ``remembered``: ``host:port`` where the Programs dialog last reached an
-    agent. A robot over ROS 1 has its agent beside its master (at the remembered port); any other robot's agent is
-    where the dialog last reached one."""
+    agent. A robot whose registry entry names ``agent_beside`` (ROS 1: its master) has its agent on that setting's
+    host (at the remembered port); any other robot's agent is where the dialog last reached one."""
     host, _, port = (remembered or "").rpartition(":")
     port = int(port) if port.isdigit() else DEFAULT_PORT
-    if kind == "ros1":
-        host = urlsplit(connection.get("master") or "").hostname or host
+    host = agent_host(kind, connection) or host
     return (host, port) if host else None
 
 

@@ -1,8 +1,11 @@
 """Running the program on screen: start/pause/step/continue/stop, highlighting, variables, errors.
 
-The program runs in a ProgramThread. Its events arrive as queued signals; the block it
-is at, its variables and what it printed are polled every 33 ms, so a tight loop at full
-speed never floods the GUI, while a pause shows the exact block and values.
+The program's code runs in a process of its own (``runtime/program_process.py``), which has no robot link,
+no limits and no network; a ProgramThread serves it here on the robot link, under the teacher's limits, with
+the recording and the safe stop (``runtime/hosted_run.py``, decision 041). Its events arrive as queued signals;
+the block it is at, its variables and what it printed are polled every 33 ms, so a tight loop at full
+speed never floods the GUI, while a pause shows the exact block and values. A program's process is kept
+started (``WarmProcess``) for the next run, so Run → first block does not wait for Python to start.
 """
 import sys
 
@@ -11,7 +14,6 @@ from PySide6.QtCore import QObject, QPoint, QRect, QSize, QTimer, Signal
 
 from rockly_desktop.bridge.editor_view import ANSWER_TIMEOUT_MS
 from rockly_desktop.core.errors import RocklyError
-from rockly_desktop.executor.control import RunControl
 from rockly_desktop.executor.events import RunFinished, RunPaused, RunResumed, VariablesChanged
 from rockly_desktop.executor.qt_adapter import ProgramThread
 from rockly_desktop.ui.run.block_badges import badge_texts, badges_shown
@@ -61,6 +63,17 @@ class RunSession(QObject):
         self._follow.setInterval(FOLLOW_MS)
         self._follow.timeout.connect(self._follow_run)
         self.sig_recording_problem.connect(lambda text: self.console.append(text, "error"))
+        self._closing = False  # shut down: no process is kept for a next run
+        self._warm = None  # the program's process waiting for the next run (a WarmProcess), from the first run on
+
+    def warm_up(self):
+        """Start the next run's program process now (for the document's profile), so Run → first block is quick."""
+        if self._warm is None:
+            from rockly_desktop.runtime.hosted_run import WarmProcess
+            from rockly_desktop.runtime.robot_limits import default_path
+
+            self._warm = WarmProcess(hidden=[self.settings.folder, default_path().parent])
+        self._warm.warm(self.document.profile)
 
     # --- commands -----------------------------------------------------------------------
 
@@ -97,13 +110,14 @@ class RunSession(QObject):
             self.console.append(tr("run_empty", language), "info")
             self._set_state("idle")
             return
-        from rockly_desktop.executor.run_setup import make_runner  # loaded at the first run, not at start-up
+        from rockly_desktop.runtime.hosted_run import hosted_runner  # loaded at the first run, not at start-up
+        from rockly_desktop.runtime.link_host import HostControl
         from rockly_desktop.ui.run.run_recordings import open_run_recording
 
         recording = None
         try:
             self.robots.reset_if_wanted()
-            control = RunControl(run_code["breakpoints"], self._delay)
+            control = HostControl(run_code["breakpoints"], self._delay)
             robot = self.robots.robot()
             profile = self.document.profile
             limits = self.settings.teacher.limits(profile.id)  # kept by the backend, on any robot
@@ -112,8 +126,15 @@ class RunSession(QObject):
             self.last_recording = recording.path if recording is not None else None
             self._recording = recording if badges_shown(self.settings, profile.id) else None
             self._badges_shown = None
-            thread = ProgramThread(lambda emit: make_runner(profile, robot, run_code, control, emit, language, limits,
-                                                            recording, notes), self)
+            self.warm_up()
+            process = self._warm.take(profile)
+            try:
+                thread = ProgramThread(lambda emit: hosted_runner(process, profile, robot, run_code, control, emit,
+                                                                  language, limits, recording, notes), self)
+            except BaseException:
+                process.kill()
+                process.close()
+                raise
         except (RocklyError, RuntimeError) as problem:
             if recording is not None:
                 recording.close()
@@ -129,8 +150,8 @@ class RunSession(QObject):
         self.console.append(tr("run_started", language), "info")
         self._shown_block = None
         self._set_state("running")
-        # A program in a tight loop holds the GIL; hand it over more often so the window
-        # keeps drawing (Python's default is every 5 ms).
+        # The run's threads here (the program's lines read and served, a printing loop's many) take the GIL in
+        # turns with the window; hand it over more often so the window keeps drawing (Python's default: 5 ms).
         self._switch_interval = sys.getswitchinterval()
         sys.setswitchinterval(RUN_SWITCH_INTERVAL)
         thread.start()
@@ -184,6 +205,9 @@ class RunSession(QObject):
         """
         if self.state == "starting":
             self._cancel_start()
+        self._closing = True
+        if self._warm is not None:
+            self._warm.close()
         if self.thread is None:
             return True
         self.stop()
@@ -290,4 +314,6 @@ class RunSession(QObject):
         self.control = None
         sys.setswitchinterval(self._switch_interval)
         self._set_state("idle")
+        if self._warm is not None and not self._closing:
+            self._warm.warm(self.document.profile)  # the next run's process, while the person looks
         self.sig_finished.emit(self.last_result)

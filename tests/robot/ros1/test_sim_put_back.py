@@ -1,6 +1,6 @@
 """The ROS-level simulator's put-back service (``/rockly_sim/reset``, std_srvs/Trigger): HOBBIT back at its
-start pose as a plain rospy node hears it on /odom; and the session's shared simulator put back before each
-test that uses it, whatever the test before did."""
+start pose as a plain rospy node hears it on /odom; and the session's shared simulator handed to each test
+that uses it put back, whatever was done to it before (here: by this test's own first fixture)."""
 import math
 
 import pytest
@@ -40,11 +40,14 @@ def test_a_reset_puts_hobbit_back_at_its_start_pose_on_the_wire(ros_master, ros_
     eventually(lambda: odometry_heard() == (0.0, 0.0, 0.0))
 
 
-def test_a_test_that_drives_hobbit_away(ros_robot, hobbit, odometry_heard):
-    drive_away(ros_robot, hobbit)
+@pytest.fixture
+def hobbit_driven_away(session_ros_robot, hobbit, odometry_heard):
+    """The session's simulated HOBBIT driven 0.5 m away, as a test before might have left it. Requested
+    before ``ros_robot`` (pytest sets up a test's fixtures of one scope in the order it names them)."""
+    drive_away(session_ros_robot, hobbit)
     eventually(lambda: odometry_heard()[0] == pytest.approx(0.5, abs=0.05))
 
 
-def test_the_next_test_finds_hobbit_at_its_start_pose(ros_robot, odometry_heard):
-    """(Runs after the one above: the shared simulator was put back in between.)"""
-    assert odometry_heard() == (0.0, 0.0, 0.0)
+def test_a_test_finds_the_shared_hobbit_at_its_start_pose_whatever_was_done_before(
+        hobbit_driven_away, ros_robot, odometry_heard):
+    eventually(lambda: odometry_heard() == (0.0, 0.0, 0.0))
