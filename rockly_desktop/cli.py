@@ -42,6 +42,7 @@ COMMANDS = {"profiles": "cli_command_profiles", "export": "cli_command_export", 
             "recordings": "cli_command_recordings", "blocks": "cli_command_blocks", "lessons": "cli_command_lessons",
             "agent": "cli_command_agent", "robot": "cli_command_robot"}  # each tool command: its line in --help
 SUBCOMMANDS = (*COMMANDS, "plugins")  # "plugins": the older name of "profiles"
+PROGRAM_HELP = "a .rockly file, a first-Rockly .xml file or a Python program (.py), turned into blocks in memory"
 IMPORT_KEPT_PYTHON = 3  # `rockly import`'s exit code when parts stayed Python (1: an error, 0: lossless)
 
 
@@ -64,10 +65,11 @@ def _tool_parser() -> argparse.ArgumentParser:
     profile_commands.add_parser("reference", help="print the profile.yaml reference (Markdown)")
 
     export = commands.add_parser("export", help="write the Python generated from a program")
-    export.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
+    export.add_argument("program", type=Path, help=PROGRAM_HELP)
     export.add_argument("-o", "--output", type=Path, required=True,
                         help="the .py file to write (- for standard output)")
     export.add_argument("--standalone", action="store_true", help=_text("cli_standalone_help"))
+    _python_profile_option(export)
     _language_option(export)
 
     converting = commands.add_parser("import", help=_text("cli_import_help"))
@@ -78,7 +80,7 @@ def _tool_parser() -> argparse.ArgumentParser:
     _language_option(converting)
 
     run = commands.add_parser("run", help="run a program without a window")
-    run.add_argument("program", type=Path, help="a .rockly file or a first-Rockly .xml file")
+    run.add_argument("program", type=Path, help=PROGRAM_HELP)
     run.add_argument("--backend", default=links.DEFAULT_KIND, choices=[entry.kind for entry in links.link_kinds()],
                      help="the robot to run on: " + ", ".join(f"{entry.kind} ({entry.title})" for entry in
                                                               links.link_kinds()) + f"; default: {links.DEFAULT_KIND}")
@@ -87,6 +89,7 @@ def _tool_parser() -> argparse.ArgumentParser:
                      help="an answer for the next tablet question (repeatable)")
     run.add_argument("--speed", type=float, default=1.0, help="simulated time runs this many times faster")
     run.add_argument("--record", type=Path, metavar="OUT.mcap", help="record the run to this MCAP file")
+    _python_profile_option(run)
     _language_option(run)
 
     replay = commands.add_parser("replay", help="print a recorded run's timeline")
@@ -249,7 +252,21 @@ def _profiles_reference() -> int:
     return 0
 
 
-def _export(program_path: Path, output: Path, language: str, standalone: bool = False) -> int:
+def _python_profile_option(command):
+    command.add_argument("--profile", help=_text("cli_python_profile_help"))
+
+
+def _refuse_profile_option(parser, args) -> None:
+    """``--profile`` is for a ``.py`` program only: a program file names its robot itself (argparse's error, in the
+    command's language)."""
+    from rockly_desktop.core.app_texts import app_text
+    from rockly_desktop.python_blocks.program_file import is_python_program
+
+    if args.profile and not is_python_program(args.program):
+        parser.error(app_text("cli_profile_for_python_only", args.language or _app_language()))
+
+
+def _export(program_path: Path, output: Path, language: str, standalone: bool = False, profile: str = None) -> int:
     from rockly_desktop.app import generate_headless
     from rockly_desktop.core.app_texts import app_text
     from rockly_desktop.core.errors import RocklyError
@@ -259,7 +276,7 @@ def _export(program_path: Path, output: Path, language: str, standalone: bool = 
 
     to_stdout = str(output) == "-" or _is_standard_output(output)
     try:
-        program, python, run_code, workspace = generate_headless(program_path, language)
+        program, python, run_code, workspace = generate_headless(program_path, language, profile)
         for warning in opening_warnings(program, language):
             print(app_text("cli_warning", language, command="rockly export", warning=warning), file=sys.stderr)
         if standalone:
@@ -285,31 +302,13 @@ def _import(args, language: str) -> int:
     from rockly_desktop.core.errors import RocklyError
     from rockly_desktop.core.program import write_text_atomically
     from rockly_desktop.profiles.registry import ProfileRegistry
-    from rockly_desktop.python_blocks.convert import python_to_program
-    from rockly_desktop.python_blocks.source import read_python_file
-    from rockly_desktop.python_blocks.templates import written_for
-
-    def refuse(key, **values):
-        print(f"rockly import: {args.program}: {app_text(key, language, **values)}", file=sys.stderr)
-        return 1
+    from rockly_desktop.python_blocks.program_file import convert_python_file
 
     if args.output.exists() and not args.force:
         print(f"rockly import: {app_text('import_exists', language, path=args.output)}", file=sys.stderr)
         return 1
     try:
-        source = read_python_file(args.program)
-        registry = ProfileRegistry.discover()
-        written = source.profile_id
-        if written and args.profile and written != args.profile:
-            return refuse("import_other_robot", written=written, wanted=args.profile)
-        wanted = args.profile or written
-        if wanted and wanted not in registry.profiles:
-            return refuse("import_unknown_robot", written=wanted)
-        profile = registry.get(wanted) if wanted else registry.default()
-        other = None if written else written_for(source.tree, profile, registry.profiles.values())
-        if other is not None:
-            return refuse("import_other_robot", written=other, wanted=profile.id)
-        conversion = python_to_program(source, profile)
+        conversion = convert_python_file(args.program, ProfileRegistry.discover(), args.profile)
         write_text_atomically(args.output, conversion.program.to_json())
     except RocklyError as error:
         print(f"rockly import: {error.in_language(language)}", file=sys.stderr)
@@ -374,7 +373,10 @@ def main(argv=None) -> int:
     if argv and argv[0] in SUBCOMMANDS:
         from rockly_desktop.runtime.options import connection
 
-        args = _tool_parser().parse_args(argv)
+        parser = _tool_parser()
+        args = parser.parse_args(argv)
+        if args.command in ("run", "export"):
+            _refuse_profile_option(parser, args)
         if args.command in ("profiles", "plugins"):
             if args.profile_command == "new":
                 return _profiles_new(args.name, args.dir)
@@ -388,7 +390,8 @@ def main(argv=None) -> int:
 
             return run_program(args.program, args.answer, args.speed, args.language or _app_language(),
                                backend=args.backend,
-                               connection=connection(args.backend, args), record=args.record)
+                               connection=connection(args.backend, args), record=args.record,
+                               python_profile=args.profile)
         if args.command in ("replay", "recordings"):
             from rockly_desktop.recording_command import list_recordings, replay
 
@@ -416,7 +419,7 @@ def main(argv=None) -> int:
 
             return serve_simulator(args.profile, args.serve_on, connection(args.serve_on, args), args.speed,
                                    args.answer, window=args.window)
-        return _export(args.program, args.output, args.language or _app_language(), args.standalone)
+        return _export(args.program, args.output, args.language or _app_language(), args.standalone, args.profile)
     args = _gui_parser().parse_args(argv)
     from rockly_desktop.app import run_gui
 

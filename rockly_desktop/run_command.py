@@ -15,6 +15,7 @@ runtime (``runtime.run``), which a robot's computer has without the window.
 from pathlib import Path
 
 from rockly_desktop.core.errors import RocklyError
+from rockly_desktop.core.program import Program
 from rockly_desktop.core.workspace_blocks import block_types_by_id
 from rockly_desktop.robot.links import DEFAULT_KIND
 from rockly_desktop.runtime.link_host import ProgramProcess
@@ -25,12 +26,14 @@ COMMAND = "rockly run"
 
 
 def run_program(program_path, answers=(), speed: float = 1.0, language: str = "en", out=print,
-                backend: str = DEFAULT_KIND, connection: dict = None, record=None, teacher=None) -> int:
+                backend: str = DEFAULT_KIND, connection: dict = None, record=None, teacher=None,
+                python_profile: str = None) -> int:
     """Run ``program_path`` headless on its profile's robot over the ``backend`` kind of robot link
     (the built-in simulator by default; ``connection``: that link's settings); returns the exit status.
 
     ``record``: the MCAP file to record the run to (none without it); ``teacher`` (TeacherSettings)
-    gives the limits the run keeps, by default the window's."""
+    gives the limits the run keeps, by default the window's. A ``.py`` program is turned into blocks in memory
+    first, for ``python_profile`` (by default the robot its header names), and runs as those blocks."""
     from rockly_desktop.app import generate_headless
     from rockly_desktop.profiles.opening import opening_warnings
 
@@ -39,7 +42,7 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
     process = ProgramProcess.start(hidden=[settings_folder(), default_limits_path().parent])
     try:
         try:
-            program, _python, run_code, workspace = generate_headless(program_path, language)
+            program, _python, run_code, workspace = generate_headless(program_path, language, python_profile)
         except RocklyError as error:
             return failed(COMMAND, error, language)
         run = Run(program.profile, run_code, block_types_by_id(workspace), language, COMMAND, out=out,
@@ -47,11 +50,22 @@ def run_program(program_path, answers=(), speed: float = 1.0, language: str = "e
         for warning in opening_warnings(program, language):
             run.warn(warning)
         program_path = Path(program_path)
-        kept = program_path.read_bytes() if record is not None and program_path.suffix == ".rockly" else None
+        kept = recorded_program(program_path, program) if record is not None else None
         return run.run(backend, connection, answers, speed, teacher_limits(program.profile.id, teacher), record,
                        program_path.name, kept)
     finally:
         process.close()
+
+
+def recorded_program(program_path: Path, program) -> bytes:
+    """What a recording keeps of the program it ran, to show its blocks at replay: a ``.rockly`` file's bytes, the
+    blocks a ``.py`` became as a ``.rockly`` document (``program``: its ProgramToOpen), nothing for an ``.xml``."""
+    if program_path.suffix == ".rockly":
+        return program_path.read_bytes()
+    if program.workspace is None:
+        return None
+    profile = program.profile
+    return Program(profile.id, program.workspace, packs=profile.packs_used(program.workspace)).to_json().encode()
 
 
 def settings_folder() -> Path:

@@ -52,6 +52,8 @@ class ProgramToOpen:
     replaced_fields: list = field(default_factory=list, compare=False)
     # Whole numbers too large for the editor to keep exactly, in the same form (known before the page).
     rounded_numbers: tuple = ()
+    # A Python program converted to blocks: the (first, last) lines of its text that became Python blocks.
+    python_blocks: tuple = ()
 
     def take_load_result(self, result: dict):
         """Keep what the page says it had to change while loading this program (and the numbers it rounds)."""
@@ -98,7 +100,12 @@ def read_program_to_open(path, registry: ProfileRegistry, fallback: Profile) -> 
         profile = _best_profile_for(set(block_types_in_xml(root)), registry, fallback)
         rename_legacy_fields(root, profile.legacy_fields)
         return ProgramToOpen(path, profile, xml=xml_to_text(root))
-    program = load_program(path)
+    return program_to_open(path, load_program(path), registry, fallback)
+
+
+def program_to_open(path, program, registry: ProfileRegistry, fallback: Profile, python_blocks=()) -> ProgramToOpen:
+    """A ``core.program.Program`` read from ``path`` (a ``.rockly`` file, or a ``.py`` converted in memory with
+    ``python_blocks``: the (first, last) lines that stayed Python) checked as ``read_program_to_open`` checks one."""
     _refuse_too_deep(path, block_depth(program.workspace))
     _refuse_untyped(path, untyped_block_number(program.workspace))
     _refuse_broken(path, workspace_problem(program.workspace))
@@ -113,7 +120,7 @@ def read_program_to_open(path, registry: ProfileRegistry, fallback: Profile) -> 
                          installed_profiles=tuple(registry.profiles) if missing else (),
                          missing_packs=tuple((pack_id, version) for pack_id, version in sorted(program.packs.items())
                                              if pack_id not in installed_packs),
-                         rounded_numbers=tuple(rounded_numbers(program.workspace)))
+                         rounded_numbers=tuple(rounded_numbers(program.workspace)), python_blocks=tuple(python_blocks))
 
 
 def _refuse_too_deep(path, depth: int):
@@ -160,4 +167,7 @@ def opening_warnings(program: ProgramToOpen, language: str = "en") -> list:
     warnings.extend(app_text("opening_missing_pack", language, pack=pack_id, version=version)
                     for pack_id, version in program.missing_packs)
     warnings.extend(describe_replaced_field(entry, language) for entry in program.replaced_fields)
+    if program.python_blocks:
+        lines = ", ".join(str(first) if first == last else f"{first}–{last}" for first, last in program.python_blocks)
+        warnings.append(app_text("opening_python_blocks", language, lines=lines))
     return warnings
