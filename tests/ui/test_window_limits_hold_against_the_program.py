@@ -188,3 +188,30 @@ def test_over_ros1_an_independent_node_sees_no_more_than_the_limit_on_the_wire(q
         assert any(linear > 0 for linear, _ in speeds), speeds  # it drove, held to the limit
     finally:
         wire.stop()
+
+
+def test_over_ros2_an_independent_node_sees_no_more_than_the_limit_on_the_wire(qtbot, driver, test_robot,
+                                                                              ros2_settings, monkeypatch):
+    from waiting import eventually
+
+    window = limited_window(driver)
+
+    def fill_in(dialog):  # as a person fills in the connection dialog
+        dialog.fields["domain_id"].setText(str(ros2_settings.domain_id))
+        dialog.fields["discovery"].setCurrentIndex(dialog.fields["discovery"].findData("localhost"))
+        return 1
+    monkeypatch.setattr(ConnectionDialog, "exec", fill_in)
+    backend = window.run_toolbar.backend
+    backend.setCurrentIndex(backend.findData("ros2"))
+    assert window.robots.kind == "ros2"
+    heard_before = len(test_robot.received("/cmd_vel"))
+    page_answers(window, monkeypatch, HOSTILE)
+    with qtbot.waitSignal(window.runs.sig_finished, timeout=60000) as blocker:
+        assert window.runs.run()
+    assert blocker.args[0].outcome == "finished", blocker.args[0]
+
+    def speeds():  # what the plain rclpy node heard on /cmd_vel during this run
+        return [line["message"]["linear"]["x"] for line in test_robot.received("/cmd_vel")[heard_before:]]
+    eventually(lambda: 0.0 in speeds(), 30)  # the safe stop's zero, at least
+    assert all(abs(speed) <= 0.2 + 1e-9 for speed in speeds()), speeds()
+    assert any(speed > 0 for speed in speeds()), speeds()  # it drove, held to the limit
